@@ -1,0 +1,27 @@
+// The discrete operators shared by the normal (4.2) and tangential (4.4) systems:
+// row m is the collocation point s_m, column k the nodal unknown at eta_k.
+//   Cauchy term:  (1/pi) w_k / (eta_k - s_m)           (exact for the interpolant)
+//   kernel term:  paper   w_k K(eta_k - s_m)            (4.2), (4.4)
+//                 product int l_k(eta) sqrt(1-eta^2) K(eta - s_m) d eta, l_k the
+//                 Lagrange basis of the nodes: (2/pi) w_k sum_j U_j(eta_k) I_j(s_m).
+#pragma once
+
+#include <gsl/gsl_matrix.h>
+
+#include "roughroll/kernel.hpp"
+#include "roughroll/method.hpp"
+#include "roughroll/quadrature.hpp"
+
+namespace roughroll {
+
+// Adds the Cauchy term into a(m, k), m <= n, k < n.
+void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule);
+
+// Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
+void add_kernel_term(gsl_matrix* a, const kernel& k, const gauss_chebyshev& rule, method how);
+
+// Throws resolution_error when `k` varies faster than `how` resolves with this n.
+// `what` names the kernel in the message ("K2* (normal)").
+void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what);
+
+}  // namespace roughroll

@@ -1,0 +1,45 @@
+// Typed errors of roughroll and the bridge from GSL status codes to them.
+//
+// GSL's default error handler aborts the process; roughroll turns it off once
+// (gsl_guard) and converts every non-zero status into a numerical_error that
+// carries gsl_strerror() and the context, so the CLI can exit 2 with one line.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace roughroll {
+
+// Base of every error roughroll reports to a user: the message is one line.
+class error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Bad input: a scene, a parameter, a command-line value.
+class input_error : public error {
+public:
+    using error::error;
+};
+
+// A case the chosen discretisation cannot resolve (it would return noise).
+class resolution_error : public error {
+public:
+    using error::error;
+};
+
+// A numerical fault: a GSL status, a singular system, a non-finite result,
+// a root search without a bracket.
+class numerical_error : public error {
+public:
+    using error::error;
+};
+
+// Throws numerical_error("<context>: <gsl_strerror(status)>") unless status is 0.
+void gsl_check(int status, const std::string& context);
+
+// Turns GSL's aborting error handler off for the lifetime of the process.
+// Idempotent; call before the first GSL routine (the solvers do).
+void gsl_guard();
+
+}  // namespace roughroll

@@ -1,0 +1,17 @@
+// The discretisations of the kernel terms of (4.2) and (4.4).
+//   paper:   the node sum  sum_k w_k phi_k K(eta_k - s_m)  of (4.2), (4.4) as printed.
+//   product: product integration, int phi_n(eta) sqrt(1-eta^2) K(eta - s_m) d eta with
+//            phi_n the interpolant of the nodal values and the jump of K at eta = s_m
+//            integrated exactly (kernel_moments). Same unknowns, same collocation.
+#pragma once
+
+#include <string>
+
+namespace roughroll {
+
+enum class method { paper, product };
+
+std::string to_string(method m);
+method method_from_string(const std::string& name);  // throws input_error naming the method
+
+}  // namespace roughroll

@@ -1,0 +1,45 @@
+// Gauss-Chebyshev quadrature of the second kind, (4.6)-(4.7), and the
+// Chebyshev-U series that interpolates a function known at its nodes.
+//
+// The unknowns of (4.1) are phi(r) = p(r)/sqrt(1 - r^2) at the nodes eta_k,
+// the zeros of U_n. Their interpolant is the degree n-1 polynomial
+//   phi(x) = sum_{j<n} b_j U_j(x),  b_j = (2/pi) sum_k w_k phi(eta_k) U_j(eta_k),
+// which the quadrature (exact to degree 2n-1 against sqrt(1 - x^2)) gives
+// without error. Everything that needs p between the nodes (the kernel
+// integrals of the product method, G of (3.25), the checks (3.3)-(3.4)) uses it.
+#pragma once
+
+#include <vector>
+
+namespace roughroll {
+
+// The documented range of n: at least 2 nodes, and no more than a dense
+// (n+2)x(n+2) system that solves in about a second.
+constexpr int min_nodes = 2;
+constexpr int max_nodes = 1000;
+
+struct gauss_chebyshev {
+    explicit gauss_chebyshev(int n);  // throws input_error outside [min_nodes, max_nodes]
+
+    int n;
+    std::vector<double> nodes;        // eta_k = cos(k pi/(n+1)), k = 1..n      (4.6)
+    std::vector<double> weights;      // w_k = pi/(n+1) sin^2(k pi/(n+1))       (4.6)
+    std::vector<double> collocation;  // s_m = cos((2m-1) pi/(2n+2)), m = 1..n+1 (4.7)
+};
+
+// U_j(eta_k) for j < n: the values that map nodal values to U coefficients.
+double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k);
+
+// Coefficients b_0..b_{n-1} of the interpolant of `values` (given at the nodes).
+std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values);
+
+// sum_j b_j U_j(x), by Clenshaw's recurrence.
+double u_series(const std::vector<double>& b, double x);
+
+// The finite Hilbert transform of the weighted series, for any x not +-1:
+//   (1/pi) int_{-1}^{1} sqrt(1-t^2) sum_j b_j U_j(t) / (t - x) dt
+//     = -sum_j b_j T_{j+1}(x)                        for |x| < 1 (principal value),
+//     = -sum_j b_j z^{j+1},  z = x - sgn(x) sqrt(x^2-1)  for |x| > 1.
+double cauchy_u_series(const std::vector<double>& b, double x);
+
+}  // namespace roughroll

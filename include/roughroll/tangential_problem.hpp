@@ -1,0 +1,90 @@
+// The tangential problem (3.21)-(3.22) with errata E4-E8. The stick zone is the
+// leading part [-1, c0] of the contact, r = rho (t + 1) - 1 with rho = (1 + c0)/2 (E4),
+// and p1 = f p + q0 there, p1 = f p on the slip zone (3.15). In the stick variable t:
+//   (1/pi) int q(tau)/(tau - t) d tau + int q(tau) rho K1*(rho (tau - t)) d tau = xi + f G(r(t))  (E5, E6)
+//   rho int q(tau) d tau = Q - f                                                           (3.22)
+//   G(r) = (2/pi) lambda r + int_{-1}^{1} p(eta) [K2* - K1*](eta - r) d eta                (3.25), E8
+// q = psi sqrt(1 - tau^2) (4.1). For a trial c0 the n + 1 collocation equations (4.4)
+// give psi(eta_k) and xi; Q(c0) then follows from (4.5), and c0 for a given Q is the
+// root of Q(c0) - Q found by gsl_root_fsolver_brent on [-1, 1].
+//
+// Q < 0 is the mirror case: p1, q0 and xi change sign, c0 does not. Q = 0 is full stick
+// (c0 = 1, xi = 0, q0 = -f p) and |Q| = f the onset of gross sliding (c0 = -1,
+// xi = -f G(-1)); neither needs a solve.
+#pragma once
+
+#include <vector>
+
+#include "roughroll/kernel.hpp"
+#include "roughroll/linear_system.hpp"
+#include "roughroll/normal_problem.hpp"
+
+namespace roughroll {
+
+// The paper's inequalities checked on interior grids of each zone.
+struct traction_checks {
+    double pressure_margin;  // min p on (-1, 1): p >= 0
+    double stick_margin;     // (3.3) min of (f p - |p1|)/f on the stick zone
+    double slip_margin;      // (3.4) min of v/f on the slip zone (v with the sign of Q)
+    bool pressure_holds;
+    bool stick_holds;
+    bool slip_holds;
+
+    bool hold() const { return pressure_holds && stick_holds && slip_holds; }
+};
+
+struct tangential_solution {
+    double Q;      // P1/P2
+    double f;      // friction coefficient
+    double c0;     // end of the stick zone
+    double xi;     // dimensionless creep
+    double sign;   // +1, or -1 for the mirror case Q < 0
+    std::vector<double> psi_b;  // U coefficients of psi(tau) for |Q| (multiply by sign)
+    int iterations;             // Brent iterations (0 without a root search)
+    double rcond;               // of the last tangential system (1 without a solve)
+    traction_checks checks;
+
+    double rho() const { return 0.5 * (1.0 + c0); }
+};
+
+class tangential_solver {
+public:
+    // The normal solution is shared by every point of a creep curve. When both kernels
+    // are empty, solve() takes Carter's closed form unless `closed_form` is false (the
+    // validation of the scheme itself).
+    tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
+                      bool closed_form = true);
+
+    tangential_solution solve(double Q);  // throws input_error for |Q| > f or non-finite Q
+
+    // The solution for a trial c0 in [-1, 1], Q = Q(c0) of (4.5): a creep curve swept
+    // in c0 needs no root search.
+    tangential_solution at_stick_end(double c0);
+    double load(double c0);  // Q(c0) alone, Q >= 0 branch
+
+    double G(double r);                                          // (3.25)
+    double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
+    double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
+
+    const normal_solution& normal() const { return normal_; }
+
+private:
+    tangential_solution solve_system(double c0);  // |Q| problem at c0 in (-1, 1]
+    tangential_solution full_stick();
+    tangential_solution gross_sliding();
+    tangential_solution carter_solution(double Q);
+    double q0(const tangential_solution& s, double r);  // corrective traction for |Q|
+    double slip_velocity_magnitude(const tangential_solution& s, double r, kernel_moments& stretched_k1);
+    traction_checks check(const tangential_solution& s);
+
+    const normal_solution& normal_;
+    kernel k1_, dk_;  // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
+    double f_;
+    int n_;
+    bool carter_;  // smooth in both directions, closed form allowed
+    matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
+    dense_system system_;
+    kernel_moments dk_moments_;
+};
+
+}  // namespace roughroll

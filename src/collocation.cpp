@@ -1,0 +1,65 @@
+#include "roughroll/collocation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/error.hpp"
+
+namespace roughroll {
+
+void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule) {
+    const int n = rule.n;
+    for (int m = 0; m <= n; ++m)
+        for (int k = 0; k < n; ++k)
+            *gsl_matrix_ptr(a, m, k) += M_1_PI * rule.weights[k] / (rule.nodes[k] - rule.collocation[m]);
+}
+
+void add_kernel_term(gsl_matrix* a, const kernel& kern, const gauss_chebyshev& rule, method how) {
+    if (kern.empty()) return;
+    const int n = rule.n;
+    if (how == method::paper) {
+        for (int m = 0; m <= n; ++m)
+            for (int k = 0; k < n; ++k)
+                *gsl_matrix_ptr(a, m, k) += rule.weights[k] * kern(rule.nodes[k] - rule.collocation[m]);
+        return;
+    }
+    // Product integration: the Lagrange basis in U coefficients, l_k = sum_j c_kj U_j
+    // with c_kj = (2/pi) w_k U_j(eta_k), against the moments I_j(s_m).
+    std::vector<double> c(static_cast<std::size_t>(n) * n);
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j) c[k * n + j] = M_2_PI * rule.weights[k] * chebyshev_u_at_node(rule, j, k);
+    kernel_moments moments(kern, n);
+    for (int m = 0; m <= n; ++m) {
+        const auto& I = moments.at(rule.collocation[m]);
+        for (int k = 0; k < n; ++k) {
+            double sum = 0.0;
+            for (int j = 0; j < n; ++j) sum += c[k * n + j] * I[j];
+            *gsl_matrix_ptr(a, m, k) += sum;
+        }
+    }
+}
+
+void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what) {
+    const double rate = k.max_rate();
+    if (rate == 0.0) return;
+    // Paper: the node sum samples exp(-A|z|) at the node spacing, about pi/(n+1) mid-contact;
+    // it needs a few nodes per decay length 1/A. Product: the kernel is integrated exactly,
+    // but the pressure has end layers of width 1/A that the nodes near +-1 (spacing about
+    // (pi/(n+1))^2/2 there) must resolve.
+    const double h = M_PI / (rule.n + 1);
+    const bool resolved = how == method::paper ? rate * h <= 0.5 : rate * 0.5 * h * h <= 0.05;
+    if (resolved) return;
+    const int n_needed = how == method::paper ? static_cast<int>(std::ceil(2.0 * M_PI * rate))
+                                              : static_cast<int>(std::ceil(M_PI * std::sqrt(10.0 * rate)));
+    std::ostringstream msg;
+    msg << what << ": decay rate A = " << rate << " (width 1/A = " << 1.0 / rate
+        << ") is below the resolution of method '" << to_string(how) << "' with n = " << rule.n
+        << "; it needs n >= " << n_needed;
+    if (n_needed > max_nodes) msg << ", beyond the largest supported n = " << max_nodes;
+    throw resolution_error(msg.str());
+}
+
+}  // namespace roughroll

@@ -1,0 +1,46 @@
+#include "roughroll/error.hpp"
+#include "roughroll/gsl_handles.hpp"
+
+#include <gsl/gsl_errno.h>
+
+namespace roughroll {
+
+void gsl_check(int status, const std::string& context) {
+    if (status != GSL_SUCCESS) {
+        throw numerical_error(context + ": " + gsl_strerror(status));
+    }
+}
+
+void gsl_guard() {
+    // A function-local static runs once and is thread-safe; it holds no state
+    // of roughroll's own, only the fact that GSL's handler is off.
+    static const bool off = [] {
+        gsl_set_error_handler_off();
+        return true;
+    }();
+    (void)off;
+}
+
+matrix_ptr make_matrix(std::size_t rows, std::size_t cols) {
+    gsl_guard();
+    matrix_ptr m(gsl_matrix_alloc(rows, cols));
+    if (!m) throw numerical_error("cannot allocate a " + std::to_string(rows) + "x" +
+                                  std::to_string(cols) + " matrix");
+    return m;
+}
+
+vector_ptr make_vector(std::size_t size) {
+    gsl_guard();
+    vector_ptr v(gsl_vector_alloc(size));
+    if (!v) throw numerical_error("cannot allocate a vector of " + std::to_string(size));
+    return v;
+}
+
+permutation_ptr make_permutation(std::size_t size) {
+    gsl_guard();
+    permutation_ptr p(gsl_permutation_alloc(size));
+    if (!p) throw numerical_error("cannot allocate a permutation of " + std::to_string(size));
+    return p;
+}
+
+}  // namespace roughroll

@@ -1,0 +1,142 @@
+#include "roughroll/kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/error.hpp"
+
+namespace roughroll {
+
+kernel::kernel(std::vector<exponential_term> terms) {
+    for (const auto& t : terms)
+        if (t.T != 0.0) terms_.push_back(t);
+}
+
+namespace {
+std::vector<exponential_term> terms_of(const roughness_term& a, const roughness_term& b) {
+    return {{a.T, a.A}, {b.T, b.A}};
+}
+}  // namespace
+
+kernel kernel::tangential(const roughness& r) {  // K1*, (3.23)
+    return kernel(terms_of(r.cylinder1.tangential, r.cylinder2.tangential));
+}
+
+kernel kernel::normal(const roughness& r) {  // K2*, (3.24)
+    return kernel(terms_of(r.cylinder1.normal, r.cylinder2.normal));
+}
+
+double kernel::max_rate() const {
+    double a = 0.0;
+    for (const auto& t : terms_) a = std::max(a, t.A);
+    return a;
+}
+
+double kernel::operator()(double z) const {
+    double sum = 0.0;
+    const double az = std::fabs(z);
+    for (const auto& t : terms_) sum += t.T * std::exp(-t.A * az);
+    return z > 0 ? sum : -sum;
+}
+
+kernel kernel::minus(const kernel& other) const {
+    std::vector<exponential_term> mine = terms_;
+    std::vector<exponential_term> result;
+    for (const auto& o : other.terms_) {
+        auto same = std::find_if(mine.begin(), mine.end(),
+                                 [&](const exponential_term& t) { return t.T == o.T && t.A == o.A; });
+        if (same != mine.end())
+            mine.erase(same);
+        else
+            result.push_back({-o.T, o.A});
+    }
+    result.insert(result.end(), mine.begin(), mine.end());
+    return kernel(result);
+}
+
+kernel kernel::stretched(double rho) const {
+    std::vector<exponential_term> s;
+    for (const auto& t : terms_) s.push_back({rho * t.T, rho * t.A});
+    return kernel(s);
+}
+
+bool kernel::operator==(const kernel& other) const { return minus(other).empty(); }
+
+namespace {
+// Gauss-Legendre order for `count` moments: sin((j+1) theta) has up to count/2
+// oscillations per half of [0, pi], and exp(-A |cos theta - r|) varies on 1/A.
+// The margins are set by the moment test against adaptive quadrature (QAG).
+int gauss_legendre_order(int count, double max_rate) {
+    return count + 24 + static_cast<int>(std::ceil(1.5 * max_rate));
+}
+
+struct glfixed_deleter {
+    void operator()(gsl_integration_glfixed_table* t) const { gsl_integration_glfixed_table_free(t); }
+};
+}  // namespace
+
+kernel_moments::kernel_moments(const kernel& k, int count)
+    : k_(k), count_(count), order_(gauss_legendre_order(count, k.max_rate())) {
+    gsl_guard();
+    std::unique_ptr<gsl_integration_glfixed_table, glfixed_deleter> table(
+        gsl_integration_glfixed_table_alloc(static_cast<size_t>(order_)));
+    if (!table) throw numerical_error("cannot allocate a Gauss-Legendre table of order " + std::to_string(order_));
+    gl_x_.resize(order_);
+    gl_w_.resize(order_);
+    for (int i = 0; i < order_; ++i)
+        gsl_check(gsl_integration_glfixed_point(-1.0, 1.0, static_cast<size_t>(i), &gl_x_[i], &gl_w_[i], table.get()),
+                  "Gauss-Legendre point");
+    moments_.resize(count_);
+}
+
+void kernel_moments::add_piece(double lo, double hi, double r, double side) {
+    // side = sgn(eta - r) on this piece: the kernel without its jump.
+    if (hi <= lo) return;
+    const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
+    for (int q = 0; q < order_; ++q) {
+        const double theta = mid + half * gl_x_[q];
+        const double s = std::sin(theta), c = std::cos(theta);
+        // The kernel with its sign fixed by the side: no sgn() evaluated at the jump.
+        double kv = 0.0;
+        const double d = std::fabs(c - r);
+        for (const auto& t : k_.terms()) kv += t.T * std::exp(-t.A * d);
+        const double weight = half * gl_w_[q] * s * side * kv;
+        // sin((j+1) theta) by the recurrence s_{j+1} = 2 cos(theta) s_j - s_{j-1}.
+        double sj_prev = 0.0, sj = s;
+        for (int j = 0; j < count_; ++j) {
+            moments_[j] += weight * sj;
+            const double next = 2.0 * c * sj - sj_prev;
+            sj_prev = sj;
+            sj = next;
+        }
+    }
+}
+
+const std::vector<double>& kernel_moments::at(double r) {
+    std::fill(moments_.begin(), moments_.end(), 0.0);
+    if (k_.empty()) return moments_;
+    if (r >= 1.0) {
+        add_piece(0.0, M_PI, r, -1.0);  // eta - r < 0 everywhere
+    } else if (r <= -1.0) {
+        add_piece(0.0, M_PI, r, +1.0);
+    } else {
+        const double theta_r = std::acos(r);
+        add_piece(0.0, theta_r, r, +1.0);   // eta = cos(theta) > r
+        add_piece(theta_r, M_PI, r, -1.0);  // eta < r
+    }
+    return moments_;
+}
+
+double kernel_moments::integrate(const std::vector<double>& b, double r) {
+    const auto& m = at(r);
+    double sum = 0.0;
+    const auto count = std::min(b.size(), m.size());
+    for (std::size_t j = 0; j < count; ++j) sum += b[j] * m[j];
+    return sum;
+}
+
+}  // namespace roughroll

@@ -1,0 +1,78 @@
+#include "roughroll/quadrature.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/error.hpp"
+
+namespace roughroll {
+
+gauss_chebyshev::gauss_chebyshev(int n_) : n(n_) {
+    if (n < min_nodes || n > max_nodes) {
+        throw input_error("n = " + std::to_string(n) + " is outside the supported range [" +
+                          std::to_string(min_nodes) + ", " + std::to_string(max_nodes) + "]");
+    }
+    nodes.resize(n);
+    weights.resize(n);
+    collocation.resize(n + 1);
+    const double h = M_PI / (n + 1);
+    for (int k = 1; k <= n; ++k) {
+        const double s = std::sin(k * h);
+        nodes[k - 1] = std::cos(k * h);
+        weights[k - 1] = h * s * s;
+    }
+    for (int m = 1; m <= n + 1; ++m) collocation[m - 1] = std::cos((2 * m - 1) * M_PI / (2.0 * n + 2.0));
+}
+
+double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k) {
+    // U_j(cos t) = sin((j+1) t)/sin t with t = (k+1) pi/(n+1) for the 0-based node k.
+    const double t = (k + 1) * M_PI / (rule.n + 1);
+    return std::sin((j + 1) * t) / std::sin(t);
+}
+
+std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values) {
+    std::vector<double> b(rule.n, 0.0);
+    for (int j = 0; j < rule.n; ++j) {
+        double sum = 0.0;
+        for (int k = 0; k < rule.n; ++k) sum += rule.weights[k] * values[k] * chebyshev_u_at_node(rule, j, k);
+        b[j] = M_2_PI * sum;
+    }
+    return b;
+}
+
+double u_series(const std::vector<double>& b, double x) {
+    // Clenshaw: y_j = b_j + 2x y_{j+1} - y_{j+2}; U-series sum is y_0.
+    double y1 = 0.0, y2 = 0.0;
+    for (auto j = b.size(); j-- > 0;) {
+        const double y0 = b[j] + 2.0 * x * y1 - y2;
+        y2 = y1;
+        y1 = y0;
+    }
+    return y1;
+}
+
+double cauchy_u_series(const std::vector<double>& b, double x) {
+    double sum = 0.0;
+    if (std::fabs(x) < 1.0) {
+        // T_{j+1}(x) by the three-term recurrence, stable on [-1, 1].
+        double t_prev = 1.0, t = x;  // T_0, T_1
+        for (double bj : b) {
+            sum += bj * t;
+            const double t_next = 2.0 * x * t - t_prev;
+            t_prev = t;
+            t = t_next;
+        }
+    } else {
+        const double z = x - std::copysign(std::sqrt(x * x - 1.0), x);
+        double zp = z;
+        for (double bj : b) {
+            sum += bj * zp;
+            zp *= z;
+        }
+    }
+    return -sum;
+}
+
+}  // namespace roughroll

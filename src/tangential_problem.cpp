@@ -1,0 +1,270 @@
+#include "roughroll/tangential_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <sstream>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_roots.h>
+
+#include "roughroll/carter.hpp"
+#include "roughroll/collocation.hpp"
+#include "roughroll/error.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4)
+constexpr int max_brent_iterations = 200;
+
+// Interior Chebyshev points of (lo, hi), clustered towards the ends where the
+// tractions have their square-root behaviour; the ends themselves are excluded.
+double grid_point(double lo, double hi, int i) {
+    const double x = std::cos(M_PI * (i + 0.5) / check_points);
+    return 0.5 * (lo + hi) + 0.5 * (hi - lo) * x;
+}
+}  // namespace
+
+tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2,
+                                     double f, bool closed_form)
+    : normal_(normal),
+      k1_(k1),
+      dk_(k2.minus(k1)),
+      f_(f),
+      n_(normal.rule.n),
+      carter_(closed_form && k1.empty() && k2.empty()),
+      cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
+      system_(static_cast<std::size_t>(n_) + 1),
+      dk_moments_(dk_, n_) {
+    if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
+    check_resolution(k1_, normal_.rule, normal_.how, "K1* (tangential kernel)");
+    gsl_matrix_set_zero(cauchy_.get());
+    add_cauchy_term(cauchy_.get(), normal_.rule);
+    // Column n: -xi moves to the left of (4.4).
+    for (int m = 0; m <= n_; ++m) gsl_matrix_set(cauchy_.get(), m, n_, -1.0);
+}
+
+double tangential_solver::G(double r) {
+    // (3.25): the kernel difference integrated on the interpolant of phi, split at its
+    // jump (E8), so that G, and with it Q(c0), is continuous in c0.
+    const double hertz = M_2_PI * normal_.lambda * r;
+    return dk_.empty() ? hertz : hertz + dk_moments_.integrate(normal_.b, r);
+}
+
+tangential_solution tangential_solver::solve_system(double c0) {
+    const double rho = 0.5 * (1.0 + c0);
+    const auto& rule = normal_.rule;
+    gsl_matrix* a = system_.matrix();
+    gsl_vector* rhs = system_.rhs();
+    gsl_matrix_memcpy(a, cauchy_.get());
+    add_kernel_term(a, k1_.stretched(rho), rule, normal_.how);  // E6
+    for (int m = 0; m <= n_; ++m) {
+        const double r = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
+        gsl_vector_set(rhs, m, f_ * G(r));                            // E5
+    }
+    std::ostringstream context;
+    context.precision(17);
+    context << "tangential problem (4.4) at c0 = " << c0;
+    const gsl_vector* x = system_.solve(context.str());
+
+    std::vector<double> psi(n_);
+    double load = 0.0;
+    for (int k = 0; k < n_; ++k) {
+        psi[k] = gsl_vector_get(x, k);
+        load += rule.weights[k] * psi[k];
+    }
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = c0;
+    s.xi = gsl_vector_get(x, n_);
+    s.Q = f_ + rho * load;  // (4.5)
+    s.sign = 1.0;
+    s.psi_b = u_coefficients(rule, psi);
+    s.rcond = system_.rcond();
+    return s;
+}
+
+tangential_solution tangential_solver::full_stick() {
+    // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = 1.0;
+    s.xi = 0.0;
+    s.Q = 0.0;
+    s.sign = 1.0;
+    s.psi_b = normal_.b;
+    for (double& bj : s.psi_b) bj *= -f_;
+    s.rcond = 1.0;
+    return s;
+}
+
+tangential_solution tangential_solver::gross_sliding() {
+    // c0 = -1: no stick zone, q0 = 0, and the stick equation shrinks to the point
+    // r = -1, where xi + f G(-1) = 0.
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = -1.0;
+    s.xi = -f_ * G(-1.0);
+    s.Q = f_;
+    s.sign = 1.0;
+    s.rcond = 1.0;
+    return s;
+}
+
+tangential_solution tangential_solver::at_stick_end(double c0) {
+    if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
+    tangential_solution s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
+    s.checks = check(s);
+    return s;
+}
+
+tangential_solution tangential_solver::carter_solution(double Q) {
+    // Smooth cylinders: q0 = -(2 f/pi) rho sqrt(1 - t^2), psi constant, no kernel, no solve.
+    const carter_point cp = carter(Q, f_);
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = cp.c0;
+    s.xi = cp.xi;
+    s.Q = Q;
+    s.sign = 1.0;
+    s.psi_b = {-M_2_PI * f_ * s.rho()};
+    s.rcond = 1.0;
+    return s;
+}
+
+double tangential_solver::load(double c0) { return c0 <= -1.0 ? f_ : solve_system(c0).Q; }
+
+namespace {
+struct brent_context {
+    tangential_solver* solver;
+    double target;
+    std::exception_ptr failure;
+};
+
+// GSL calls this through C frames: no exception may cross them, so a failure is
+// stored and reported as NaN, which stops the iteration with GSL_EBADFUNC.
+double load_residual(double c0, void* params) {
+    auto* ctx = static_cast<brent_context*>(params);
+    try {
+        return ctx->solver->load(c0) - ctx->target;
+    } catch (...) {
+        ctx->failure = std::current_exception();
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+}
+}  // namespace
+
+tangential_solution tangential_solver::solve(double Q) {
+    if (!std::isfinite(Q)) throw input_error("Q must be finite");
+    const double target = std::fabs(Q);
+    if (target > f_) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "|Q| = " << target << " exceeds the friction coefficient f = " << f_
+            << ": the cylinders slide (no rolling solution)";
+        throw input_error(msg.str());
+    }
+    tangential_solution s;
+    if (target == 0.0) {
+        s = full_stick();
+    } else if (carter_) {
+        s = carter_solution(target);
+    } else if (target == f_) {
+        s = gross_sliding();
+    } else {
+        // Bracket [-1, 1]: Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error.
+        const double at_full_stick = load(1.0);
+        if (!(at_full_stick < target)) {
+            std::ostringstream msg;
+            msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
+                << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
+            throw resolution_error(msg.str());
+        }
+        brent_context ctx{this, target, nullptr};
+        gsl_function fn{&load_residual, &ctx};
+        gsl_guard();
+        root_solver_ptr brent(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
+        if (!brent) throw numerical_error("cannot allocate the Brent root solver");
+        gsl_check(gsl_root_fsolver_set(brent.get(), &fn, -1.0, 1.0), "Brent search for c0: bracket [-1, 1]");
+        int status = GSL_CONTINUE;
+        int iter = 0;
+        while (status == GSL_CONTINUE && iter < max_brent_iterations) {
+            ++iter;
+            status = gsl_root_fsolver_iterate(brent.get());
+            if (ctx.failure) std::rethrow_exception(ctx.failure);
+            gsl_check(status, "Brent search for c0");
+            status = gsl_root_test_interval(gsl_root_fsolver_x_lower(brent.get()),
+                                            gsl_root_fsolver_x_upper(brent.get()), 1e-15, 0.0);
+        }
+        if (status != GSL_SUCCESS)
+            throw numerical_error("Brent search for c0 did not converge in " + std::to_string(iter) + " iterations");
+        s = solve_system(gsl_root_fsolver_root(brent.get()));
+        s.iterations = iter;
+    }
+    s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
+    if (Q < 0.0) {
+        s.sign = -1.0;
+        s.xi = -s.xi;
+    }
+    s.checks = check(s);
+    return s;
+}
+
+double tangential_solver::q0(const tangential_solution& s, double r) {
+    const double rho = s.rho();
+    if (r <= -1.0 || r >= s.c0 || s.psi_b.empty()) return 0.0;
+    const double t = (r + 1.0 - rho) / rho;
+    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
+}
+
+double tangential_solver::traction(const tangential_solution& s, double r) {
+    return s.sign * (f_ * normal_.pressure(r) + q0(s, r));  // (3.15)
+}
+
+double tangential_solver::slip_velocity_magnitude(const tangential_solution& s, double r,
+                                                 kernel_moments& stretched_k1) {
+    // v = xi + f G(r) - L1[q0](r) for the |Q| problem, (3.6) with (3.15); L1 is the
+    // stick-zone operator evaluated outside its interval (t > 1: no principal value, no jump).
+    double lq0 = 0.0;
+    if (!s.psi_b.empty()) {
+        const double rho = s.rho();
+        const double t = (r + 1.0 - rho) / rho;
+        lq0 = cauchy_u_series(s.psi_b, t) + stretched_k1.integrate(s.psi_b, t);
+    }
+    return s.sign * s.xi + f_ * G(r) - lq0;
+}
+
+double tangential_solver::slip_velocity(const tangential_solution& s, double r) {
+    if (r <= s.c0) return 0.0;
+    kernel_moments km(k1_.stretched(s.rho()), n_);
+    return s.sign * slip_velocity_magnitude(s, r, km);
+}
+
+traction_checks tangential_solver::check(const tangential_solution& s) {
+    traction_checks c{};
+    c.pressure_margin = std::numeric_limits<double>::infinity();
+    c.stick_margin = std::numeric_limits<double>::infinity();
+    c.slip_margin = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < check_points; ++i) c.pressure_margin = std::min(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+    if (s.c0 > -1.0) {
+        for (int i = 0; i < check_points; ++i) {
+            const double r = grid_point(-1.0, s.c0, i);
+            c.stick_margin = std::min(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
+        }
+    }
+    if (s.c0 < 1.0) {
+        // One moments workspace for the whole grid: the stretched kernel is fixed by c0.
+        kernel_moments km(k1_.stretched(s.rho()), n_);
+        for (int i = 0; i < check_points; ++i)
+            c.slip_margin = std::min(c.slip_margin, slip_velocity_magnitude(s, grid_point(s.c0, 1.0, i), km) / f_);
+    }
+    c.pressure_holds = c.pressure_margin >= 0.0;
+    c.stick_holds = c.stick_margin >= 0.0;
+    c.slip_holds = c.slip_margin > 0.0;
+    return c;
+}
+
+}  // namespace roughroll
