@@ -49,7 +49,7 @@ private:
 // Moments I_j(r) = int_{-1}^{1} U_j(eta) sqrt(1 - eta^2) K(eta - r) d eta, j < count,
 // for any real r. With eta = cos(theta) the integrand is sin((j+1) theta) sin(theta)
 // K(cos theta - r), analytic on each side of the jump at theta = acos(r); the
-// integral is split there and each piece done by Gauss-Legendre (gsl_integration_glfixed).
+// integral is split there and each piece done by Gauss-Legendre (gsl_integration_fixed).
 // A workspace keeps the Gauss-Legendre table of its order.
 class kernel_moments {
 public:

@@ -1,0 +1,45 @@
+// One scene's rolling contact: the normal problem solved once (Hertz's closed form
+// when the normal kernel is empty) and shared by every creep point of a curve.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "roughroll/carter.hpp"
+#include "roughroll/normal_problem.hpp"
+#include "roughroll/scene.hpp"
+#include "roughroll/tangential_problem.hpp"
+
+namespace roughroll {
+
+class contact {
+public:
+    contact(const roughness& surfaces, double f, const solver_options& options);
+
+    const normal_solution& normal() const { return *normal_; }
+    tangential_solver& tangential() { return *tangential_; }
+    double friction() const { return f_; }
+    double normal_seconds() const { return normal_seconds_; }
+
+    tangential_solution point(double Q) { return tangential_->solve(Q); }
+
+private:
+    double f_;
+    double normal_seconds_;
+    std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
+    std::unique_ptr<tangential_solver> tangential_;
+};
+
+// One row of a creep curve.
+struct curve_point {
+    tangential_solution solution;
+    carter_point smooth;  // Carter's curve at the same Q
+};
+
+// Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense
+// near Q = f where the creep curve steepens (there xi ~ sqrt(1 - Q/f)).
+std::vector<double> curve_loads(int points, double f);
+
+std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads);
+
+}  // namespace roughroll

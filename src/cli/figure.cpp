@@ -1,0 +1,139 @@
+// `roughroll figure 2a|2b`: the paper's Fig. 2, creep force-creep curves xi/f against Q/f
+// for the roughness parameters of its caption, with Carter's smooth curve for comparison.
+// With K1* = K2* (the caption's settings) G = (2/pi) lambda r and xi/f depends on Q/f
+// alone, so the curves do not depend on the friction coefficient used here.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "roughroll/contact.hpp"
+#include "roughroll/error.hpp"
+
+namespace roughroll::cli {
+
+namespace {
+
+constexpr double figure_friction = 0.3;  // any f > 0 gives the same xi/f against Q/f
+
+struct figure_curve {
+    std::string legend;  // gnuplot enhanced text
+    roughness surfaces;
+};
+
+// Fig. 2 caption: the second cylinder is smooth; T_1^(1) = T_1^(2), A_1^(1) = A_1^(2).
+roughness first_cylinder_rough(double T, double A) {
+    roughness r;
+    r.cylinder1.tangential = {T, A};
+    r.cylinder1.normal = {T, A};
+    return r;
+}
+
+std::vector<figure_curve> curves_of(const std::string& which) {
+    std::vector<figure_curve> curves;
+    const double values[] = {0.0, 0.5, 1.0};
+    for (int i = 0; i < 3; ++i) {
+        std::ostringstream legend;
+        legend << "curve " << i + 1 << ": ";
+        if (which == "2a") {
+            legend << "T_1^{(1)} = T_1^{(2)} = " << values[i] << ",  A_1^{(1)} = A_1^{(2)} = 0.5";
+            curves.push_back({legend.str(), first_cylinder_rough(values[i], 0.5)});
+        } else {
+            legend << "A_1^{(1)} = A_1^{(2)} = " << values[i] << ",  T_1^{(1)} = T_1^{(2)} = 0.5";
+            curves.push_back({legend.str(), first_cylinder_rough(0.5, values[i])});
+        }
+    }
+    return curves;
+}
+
+void write_gnuplot(const std::filesystem::path& script, const std::filesystem::path& csv,
+                   const std::filesystem::path& stem, const std::string& which,
+                   const std::vector<figure_curve>& curves) {
+    std::ofstream gp(script);
+    if (!gp) throw input_error("cannot write '" + script.string() + "'");
+    gp << "# Fig. " << which << " of Pauk & Wozniak, written by roughroll figure " << which << "\n"
+       << "set datafile separator ','\n"
+       << "set key top left box opaque font ',10'\n"
+       << "set grid\n"
+       << "set xlabel 'Q/f = P_1/(f P_2)  (dimensionless)'\n"
+       << "set ylabel '{/Symbol x}/f  (dimensionless creep / f)'\n"
+       << "set xrange [0:1]\nset yrange [0:*]\n"
+       << "set title 'Fig. " << which << ": creep force-creep curves, second cylinder smooth'\n";
+    const char* terminals[][2] = {{"svg size 900,640 enhanced font 'Helvetica,13'", ".svg"},
+                                  {"pngcairo size 1200,850 enhanced font 'Helvetica,13'", ".png"}};
+    for (const auto& t : terminals) {
+        gp << "set terminal " << t[0] << "\n"
+           << "set output '" << stem.string() << t[1] << "'\n"
+           << "plot '" << csv.string() << "' using 2:" << 4 + 2 * static_cast<int>(curves.size())
+           << " with lines lw 2 dt 2 lc rgb 'black' title 'Carter (smooth cylinders)'";
+        for (std::size_t i = 0; i < curves.size(); ++i)
+            gp << ", \\\n     '' using 2:" << 3 + 2 * i << " with lines lw 2 title '" << curves[i].legend << "'";
+        gp << "\n";
+    }
+    gp << "unset output\n";
+    if (!gp.flush()) throw input_error("cannot write '" + script.string() + "'");
+}
+
+}  // namespace
+
+void add_figure_options(CLI::App* cmd, figure_options& o) {
+    cmd->add_option("WHICH", o.which, "2a or 2b")->required()->check(CLI::IsMember({"2a", "2b"}));
+    cmd->add_option("--out", o.out, "output folder (created if missing)");
+    cmd->add_option("--points", o.points, "creep points per curve");
+    cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (default: 200 for paper, 96 for product)");
+    cmd->add_option("--method", o.method_name, "paper or product");
+    cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
+}
+
+int run_figure(const figure_options& o) {
+    solver_options options;
+    options.how = method_from_string(o.method_name);
+    options.n = o.n > 0 ? o.n : (options.how == method::paper ? 200 : 96);
+    const auto curves = curves_of(o.which);
+    const auto loads = curve_loads(o.points, figure_friction);
+
+    std::vector<std::vector<curve_point>> results;
+    for (const auto& c : curves) {
+        contact problem(c.surfaces, figure_friction, options);
+        results.push_back(creep_curve(problem, loads));
+    }
+
+    const std::filesystem::path dir(o.out);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw input_error("cannot create output folder '" + o.out + "': " + ec.message());
+    const auto stem = std::filesystem::absolute(dir / ("fig" + o.which));
+    const auto csv = std::filesystem::path(stem.string() + ".csv");
+    std::ofstream out(csv);
+    if (!out) throw input_error("cannot write '" + csv.string() + "'");
+    out << std::setprecision(std::numeric_limits<double>::max_digits10);
+    out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.n << "\n";
+    out << "Q,Q_over_f";
+    for (std::size_t i = 0; i < curves.size(); ++i) out << ",xi_over_f_" << i + 1 << ",c0_" << i + 1;
+    out << ",xi_carter_over_f,c0_carter,checks_hold\n";
+    for (std::size_t p = 0; p < loads.size(); ++p) {
+        out << loads[p] << ',' << loads[p] / figure_friction;
+        bool hold = true;
+        for (const auto& curve : results) {
+            out << ',' << curve[p].solution.xi / figure_friction << ',' << curve[p].solution.c0;
+            hold = hold && curve[p].solution.checks.hold();
+        }
+        out << ',' << results[0][p].smooth.xi / figure_friction << ',' << results[0][p].smooth.c0 << ','
+            << (hold ? 1 : 0) << '\n';
+    }
+    if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
+
+    const auto script = std::filesystem::path(stem.string() + ".gp");
+    write_gnuplot(script, csv, stem, o.which, curves);
+    if (!o.plot) return 0;
+    const std::string command = "gnuplot '" + script.string() + "'";
+    if (std::system(command.c_str()) != 0)
+        throw numerical_error("gnuplot failed on '" + script.string() + "' (is gnuplot installed?); the CSV is written");
+    return 0;
+}
+
+}  // namespace roughroll::cli

@@ -1,0 +1,125 @@
+// The roughroll command line: scene files in, creep points, curves and figures out.
+// Exit status: 0 success, 2 invalid input or a case beyond reach (one line on stderr).
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "roughroll/contact.hpp"
+#include "roughroll/error.hpp"
+#include "roughroll/output.hpp"
+#include "roughroll/scene.hpp"
+
+namespace roughroll::cli {
+
+namespace {
+
+struct scene_options {
+    std::string path;
+    std::optional<int> n;
+    std::optional<std::string> method_name;
+};
+
+void add_scene_options(CLI::App* cmd, scene_options& o) {
+    cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
+    cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
+    cmd->add_option("--method", o.method_name, "paper or product (overrides solver.method)");
+}
+
+scene load_scene(const scene_options& o) {
+    scene s = read_scene(o.path);
+    if (o.n) s.solver.n = *o.n;
+    if (o.method_name) s.solver.how = method_from_string(*o.method_name);
+    return s;
+}
+
+int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
+    const scene s = load_scene(o);
+    const double Q = load_of(s, Q_option);
+    const auto start = std::chrono::steady_clock::now();
+    contact c(s.surfaces, s.friction, s.solver);
+    const tangential_solution solution = c.point(Q);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const point_report report{s.label, c.normal(), solution, seconds};
+    if (json)
+        std::cout << to_json(report).dump(2) << "\n";
+    else
+        write_summary(std::cout, report);
+    return 0;
+}
+
+int run_curve(const scene_options& o, int points, const std::string& csv) {
+    const scene s = load_scene(o);
+    const auto loads = curve_loads(points, s.friction);
+    contact c(s.surfaces, s.friction, s.solver);
+    const auto curve = creep_curve(c, loads);
+    if (csv.empty()) {
+        write_curve_csv(std::cout, curve);
+        return 0;
+    }
+    std::ofstream out(csv);
+    if (!out) throw input_error("cannot write '" + csv + "'");
+    write_curve_csv(out, curve);
+    if (!out.flush()) throw input_error("cannot write '" + csv + "'");
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness\n"
+                 "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach."};
+    app.require_subcommand(1);
+
+    scene_options point_scene;
+    std::optional<double> Q;
+    bool json = false;
+    CLI::App* point = app.add_subcommand("point", "one creep point: c0, xi and P_H/P2 for a given Q");
+    add_scene_options(point, point_scene);
+    point->add_option("--Q", Q, "tangential load P1/P2 (overrides the scene's Q)");
+    point->add_flag("--json", json, "one JSON object on stdout");
+
+    scene_options curve_scene;
+    int points = 51;
+    std::string csv;
+    CLI::App* curve = app.add_subcommand("curve", "a creep curve, Q/f from 0 to 1, as CSV");
+    add_scene_options(curve, curve_scene);
+    curve->add_option("--points", points, "number of loads (Q/f dense near 1)");
+    curve->add_option("--csv", csv, "output file (default: stdout)");
+
+    figure_options fig;
+    CLI::App* figure = app.add_subcommand("figure", "reproduce the paper's Fig. 2a or 2b (CSV, SVG, PNG)");
+    add_figure_options(figure, fig);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help
+        std::cerr << "roughroll: error: " << e.what() << "\n";
+        return 2;
+    }
+
+    try {
+        if (*point) return run_point(point_scene, Q, json);
+        if (*curve) return run_curve(curve_scene, points, csv);
+        if (*figure) return run_figure(fig);
+    } catch (const roughroll::error& e) {
+        std::cerr << "roughroll: error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "roughroll: error: out of memory\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "roughroll: internal error: " << e.what() << "\n";
+        return 70;
+    }
+    return 2;
+}
+
+}  // namespace roughroll::cli
+
+int main(int argc, char** argv) { return roughroll::cli::main(argc, argv); }

@@ -1,0 +1,101 @@
+// Kernels (3.23)-(3.24) with errata E1, E2 and their moments against U_j sqrt(1 - x^2).
+#include <cmath>
+#include <functional>
+
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+#include <gtest/gtest.h>
+
+#include "roughroll/error.hpp"
+#include "roughroll/kernel.hpp"
+
+using namespace roughroll;
+
+namespace {
+roughness both_rough() {
+    roughness r;
+    r.cylinder1.tangential = {0.5, 2.0};
+    r.cylinder2.tangential = {0.25, 7.0};
+    r.cylinder1.normal = {1.0, 0.5};
+    return r;
+}
+
+// GSL's QAWS, adaptive with the algebraic end weights (1 + eta)^alpha (1 - eta)^beta
+// integrated exactly: an independent route to int g(eta) sqrt(1 - eta^2) d eta on [lo, hi].
+double adaptive(const std::function<double(double)>& g, double lo, double hi) {
+    if (hi <= lo) return 0.0;
+    const double alpha = lo == -1.0 ? 0.5 : 0.0, beta = hi == 1.0 ? 0.5 : 0.0;
+    // The part of sqrt(1 - eta^2) that the weight does not carry stays in the integrand.
+    std::function<double(double)> h = [&](double eta) {
+        const double rest = (alpha == 0.5 ? 1.0 : std::sqrt(1.0 + eta)) * (beta == 0.5 ? 1.0 : std::sqrt(1.0 - eta));
+        return g(eta) * rest;
+    };
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
+    gsl_integration_qaws_table* t = gsl_integration_qaws_table_alloc(alpha, beta, 0, 0);
+    gsl_function F{[](double x, void* p) { return (*static_cast<std::function<double(double)>*>(p))(x); }, &h};
+    double result = 0.0, err = 0.0;
+    const int status = gsl_integration_qaws(&F, lo, hi, t, 1e-15, 1e-13, 2000, w, &result, &err);
+    gsl_integration_qaws_table_free(t);
+    gsl_integration_workspace_free(w);
+    EXPECT_TRUE(status == 0 || err < 1e-13) << "QAWS status " << status << ", error " << err;
+    return result;
+}
+}  // namespace
+
+TEST(Kernel, BothCylindersPhysicalSignEachOwnRate) {
+    const kernel k1 = kernel::tangential(both_rough());
+    ASSERT_EQ(k1.terms().size(), 2u);
+    const double z = 0.1;
+    // E1: each term decays with its own A; E2: sign + for z > 0 (added compliance).
+    const double expected = 0.5 * std::exp(-2.0 * z) + 0.25 * std::exp(-7.0 * z);
+    EXPECT_NEAR(k1(z), expected, 1e-16);
+    EXPECT_NEAR(k1(-z), -expected, 1e-16);
+    EXPECT_GT(k1(z), 0.0);
+    EXPECT_DOUBLE_EQ(k1.max_rate(), 7.0);
+}
+
+TEST(Kernel, ZeroAmplitudeTermsAreLeftOut) {
+    const kernel k2 = kernel::normal(both_rough());
+    ASSERT_EQ(k2.terms().size(), 1u);  // cylinder 2 normal is smooth
+    EXPECT_TRUE(kernel::normal(roughness{}).empty());
+    EXPECT_TRUE(kernel::tangential(roughness{}).empty());
+}
+
+TEST(Kernel, DifferenceCancelsEqualKernels) {
+    roughness r;
+    r.cylinder1.tangential = r.cylinder1.normal = {0.5, 0.5};
+    EXPECT_TRUE(kernel::normal(r).minus(kernel::tangential(r)).empty());
+    const kernel d = kernel::normal(both_rough()).minus(kernel::tangential(both_rough()));
+    for (double z : {-0.7, 0.05, 0.4})
+        EXPECT_NEAR(d(z), kernel::normal(both_rough())(z) - kernel::tangential(both_rough())(z), 1e-16);
+}
+
+TEST(Kernel, StretchedIsRhoKOfRhoZ) {
+    const kernel k = kernel::tangential(both_rough());
+    const double rho = 0.37;
+    for (double z : {-0.9, 0.2, 1.7}) EXPECT_NEAR(k.stretched(rho)(z), rho * k(rho * z), 1e-16);
+}
+
+class Moments : public ::testing::TestWithParam<double> {};
+
+TEST_P(Moments, AgreeWithAdaptiveQuadratureSplitAtTheJump) {
+    const double A = GetParam();
+    const kernel k(std::vector<exponential_term>{{0.8, A}, {-0.3, 0.5 * A + 1.0}});
+    const int count = 40;
+    kernel_moments moments(k, count);
+    for (double r : {-2.0, -1.0, -0.999, -0.31, 0.0, 0.5, 0.9999, 1.0, 1.3}) {
+        const auto I = moments.at(r);
+        for (int j : {0, 1, 7, 20, 39}) {
+            auto g = [&](double eta) {
+                const double t = std::acos(eta);
+                const double u = std::fabs(std::sin(t)) < 1e-300 ? (j + 1) : std::sin((j + 1) * t) / std::sin(t);
+                return u * (eta == r ? 0.0 : k(eta - r));
+            };
+            const double lo = std::max(-1.0, std::min(1.0, r));
+            const double exact = adaptive(g, -1.0, lo) + adaptive(g, lo, 1.0);
+            EXPECT_NEAR(I[j], exact, 2e-13) << "A = " << A << ", r = " << r << ", j = " << j;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rates, Moments, ::testing::Values(0.0, 0.5, 5.0, 50.0));

@@ -1,0 +1,62 @@
+// Gauss-Chebyshev rule (4.6)-(4.7) and the U-series tools built on it.
+#include <cmath>
+
+#include <gsl/gsl_math.h>
+#include <gtest/gtest.h>
+
+#include "roughroll/error.hpp"
+#include "roughroll/quadrature.hpp"
+
+using namespace roughroll;
+
+TEST(GaussChebyshev, NodesWeightsAndCollocationPoints) {
+    const gauss_chebyshev rule(7);
+    ASSERT_EQ(rule.nodes.size(), 7u);
+    ASSERT_EQ(rule.collocation.size(), 8u);
+    double sum = 0.0;
+    for (int k = 0; k < 7; ++k) {
+        EXPECT_NEAR(rule.nodes[k], std::cos((k + 1) * M_PI / 8), 1e-15);
+        sum += rule.weights[k];
+    }
+    EXPECT_NEAR(sum, M_PI / 2, 1e-14);  // int sqrt(1 - x^2) dx
+    for (int m = 0; m < 8; ++m) EXPECT_NEAR(std::cos(8 * std::acos(rule.collocation[m])), 0.0, 1e-14);  // T_{n+1}
+}
+
+TEST(GaussChebyshev, RejectsNOutsideRange) {
+    EXPECT_THROW(gauss_chebyshev(min_nodes - 1), input_error);
+    EXPECT_THROW(gauss_chebyshev(max_nodes + 1), input_error);
+    EXPECT_NO_THROW(gauss_chebyshev{min_nodes});
+}
+
+TEST(GaussChebyshev, ExactToDegreeTwoNMinusOne) {
+    const int n = 6;
+    const gauss_chebyshev rule(n);
+    // int x^{2j} sqrt(1 - x^2) dx = pi (2j)! / (2^{2j+1} j! (j+1)!)
+    for (int j = 0; 2 * j <= 2 * n - 1; ++j) {
+        double q = 0.0;
+        for (int k = 0; k < n; ++k) q += rule.weights[k] * std::pow(rule.nodes[k], 2 * j);
+        const double exact = M_PI * std::tgamma(2 * j + 1) / (std::pow(2.0, 2 * j + 1) * std::tgamma(j + 1) * std::tgamma(j + 2));
+        EXPECT_NEAR(q, exact, 1e-14) << "degree " << 2 * j;
+    }
+}
+
+TEST(USeries, InterpolatesAPolynomialExactly) {
+    const gauss_chebyshev rule(9);
+    auto poly = [](double x) { return 1.0 - 2.0 * x + 3.0 * x * x * x - 0.5 * std::pow(x, 8); };
+    std::vector<double> values;
+    for (double x : rule.nodes) values.push_back(poly(x));
+    const auto b = u_coefficients(rule, values);
+    for (double x : {-1.0, -0.3, 0.0, 0.77, 1.0}) EXPECT_NEAR(u_series(b, x), poly(x), 1e-13);
+}
+
+TEST(USeries, CauchyTransformInsideAndOutside) {
+    // phi = 1: (1/pi) int sqrt(1-t^2)/(t - x) dt = -x inside, -(x - sgn x sqrt(x^2-1)) outside.
+    const std::vector<double> one{1.0};
+    EXPECT_NEAR(cauchy_u_series(one, 0.4), -0.4, 1e-15);
+    EXPECT_NEAR(cauchy_u_series(one, 2.0), -(2.0 - std::sqrt(3.0)), 1e-15);
+    EXPECT_NEAR(cauchy_u_series(one, -3.0), -(-3.0 + std::sqrt(8.0)), 1e-15);
+    // U_2 inside: -T_3(x).
+    const std::vector<double> u2{0.0, 0.0, 1.0};
+    const double x = 0.3;
+    EXPECT_NEAR(cauchy_u_series(u2, x), -(4 * x * x * x - 3 * x), 1e-15);
+}

@@ -1,0 +1,412 @@
+#include "roughroll/scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/error.hpp"
+
+namespace roughroll {
+namespace {
+
+const std::string source = "scene.toml";
+
+// The message parse_scene throws for `text`, checked to be one line that starts
+// with the source and contains every fragment.
+::testing::AssertionResult rejects(const std::string& text, std::initializer_list<std::string> fragments) {
+    try {
+        (void)parse_scene(text, source);
+    } catch (const input_error& e) {
+        const std::string message = e.what();
+        if (message.rfind(source + ":", 0) != 0) {
+            return ::testing::AssertionFailure() << "does not start with the source: " << message;
+        }
+        if (message.find('\n') != std::string::npos || message.find('\r') != std::string::npos) {
+            return ::testing::AssertionFailure() << "not one line: " << message;
+        }
+        for (const std::string& fragment : fragments) {
+            if (message.find(fragment) == std::string::npos) {
+                return ::testing::AssertionFailure() << "'" << fragment << "' not in: " << message;
+            }
+        }
+        return ::testing::AssertionSuccess() << message;
+    }
+    return ::testing::AssertionFailure() << "accepted:\n" << text;
+}
+
+// The message load_of throws, or "" when it returns.
+std::string load_error(const scene& s, std::optional<double> override) {
+    try {
+        (void)load_of(s, override);
+    } catch (const input_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const std::string full_scene = R"(
+label = "Fig. 2a, curve 2"
+friction = 0.3
+Q = 0.15
+[cylinder1.tangential]
+T = 0.5
+A = 0.25
+[cylinder1.normal]
+T = 0.75
+A = 1.5
+[cylinder2.tangential]
+T = 2.0
+A = 3.0
+[cylinder2.normal]
+T = 4.0
+A = 5.0
+[solver]
+n = 321
+method = "product"
+)";
+
+TEST(Scene, FullScene) {
+    const scene s = parse_scene(full_scene, source);
+    EXPECT_EQ(s.label, "Fig. 2a, curve 2");
+    EXPECT_DOUBLE_EQ(s.friction, 0.3);
+    ASSERT_TRUE(s.Q.has_value());
+    EXPECT_DOUBLE_EQ(*s.Q, 0.15);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.tangential.T, 0.5);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.tangential.A, 0.25);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.normal.T, 0.75);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.normal.A, 1.5);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder2.tangential.T, 2.0);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder2.tangential.A, 3.0);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder2.normal.T, 4.0);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder2.normal.A, 5.0);
+    EXPECT_FALSE(s.surfaces.smooth());
+    EXPECT_EQ(s.solver.n, 321);
+    EXPECT_EQ(s.solver.how, method::product);
+}
+
+TEST(Scene, Defaults) {
+    const scene s = parse_scene("friction = 0.3\n", source);
+    EXPECT_EQ(s.label, "");
+    EXPECT_DOUBLE_EQ(s.friction, 0.3);
+    EXPECT_FALSE(s.Q.has_value());
+    EXPECT_TRUE(s.surfaces.smooth());
+    EXPECT_EQ(s.surfaces.cylinder1.normal.A, 0.0);
+    EXPECT_EQ(s.solver.n, 200);
+    EXPECT_EQ(s.solver.how, method::paper);
+}
+
+TEST(Scene, EmptyTablesKeepDefaults) {
+    const scene s = parse_scene("friction = 0.3\n[cylinder1]\n[solver]\n", source);
+    EXPECT_TRUE(s.surfaces.smooth());
+    EXPECT_EQ(s.solver.n, 200);
+    EXPECT_EQ(s.solver.how, method::paper);
+}
+
+TEST(Scene, OnlyOneTermOfOneCylinder) {
+    const scene s = parse_scene("friction = 0.3\n[cylinder2.normal]\nT = 0.5\nA = 0.125\n", source);
+    EXPECT_FALSE(s.surfaces.cylinder1.tangential.present());
+    EXPECT_FALSE(s.surfaces.cylinder1.normal.present());
+    EXPECT_FALSE(s.surfaces.cylinder2.tangential.present());
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder2.normal.T, 0.5);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder2.normal.A, 0.125);
+}
+
+TEST(Scene, IntegersWhereNumbersAreExpected) {
+    const scene s = parse_scene("friction = 1\nQ = -1\n[cylinder1.normal]\nT = 1\nA = 0\n", source);
+    EXPECT_EQ(s.friction, 1.0);
+    ASSERT_TRUE(s.Q.has_value());
+    EXPECT_EQ(*s.Q, -1.0);
+    EXPECT_EQ(s.surfaces.cylinder1.normal.T, 1.0);
+    EXPECT_EQ(s.surfaces.cylinder1.normal.A, 0.0);
+}
+
+TEST(Scene, InlineTablesAreTables) {
+    const scene s = parse_scene("friction = 0.3\ncylinder1 = { tangential = { T = 2, A = 0.5 } }\n", source);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.tangential.T, 2.0);
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.tangential.A, 0.5);
+}
+
+TEST(Scene, NodeCountLimitsAccepted) {
+    EXPECT_EQ(parse_scene("friction = 0.3\n[solver]\nn = 2\n", source).solver.n, 2);
+    EXPECT_EQ(parse_scene("friction = 0.3\n[solver]\nn = 1000\n", source).solver.n, 1000);
+}
+
+TEST(Scene, LoadAtTheFrictionLimitAccepted) {
+    EXPECT_EQ(*parse_scene("friction = 0.3\nQ = 0.3\n", source).Q, 0.3);
+    EXPECT_EQ(*parse_scene("friction = 0.3\nQ = -0.3\n", source).Q, -0.3);
+    EXPECT_EQ(*parse_scene("friction = 0.3\nQ = 0\n", source).Q, 0.0);
+}
+
+TEST(Scene, MissingFriction) {
+    EXPECT_TRUE(rejects("Q = 0.1\n", {"scene.toml: missing key 'friction'"}));
+    EXPECT_TRUE(rejects("", {"missing key 'friction'"}));
+}
+
+TEST(Scene, NonNumbersWhereNumbersAreExpected) {
+    EXPECT_TRUE(rejects("friction = \"0.3\"\n", {"scene.toml: 'friction' must be a number, not a string"}));
+    EXPECT_TRUE(rejects("friction = true\n", {"'friction' must be a number, not a boolean"}));
+    EXPECT_TRUE(rejects("friction = [0.3]\n", {"'friction' must be a number, not an array"}));
+    EXPECT_TRUE(rejects("friction = {}\n", {"'friction' must be a number, not a table"}));
+    EXPECT_TRUE(rejects("friction = 1979-05-27\n", {"'friction' must be a number, not a date"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = \"0.1\"\n", {"'Q' must be a number, not a string"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.normal]\nT = \"1\"\nA = 1\n",
+                        {"'cylinder1.normal.T' must be a number, not a string"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.tangential]\nT = 1\nA = false\n",
+                        {"'cylinder2.tangential.A' must be a number, not a boolean"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.tangential]\nT = [1]\nA = 1\n",
+                        {"'cylinder1.tangential.T' must be a number, not an array"}));
+}
+
+TEST(Scene, FrictionMustBeFiniteAndPositive) {
+    EXPECT_TRUE(rejects("friction = 0\n", {"'friction' must be finite and > 0 (got 0)"}));
+    EXPECT_TRUE(rejects("friction = -0.0\n", {"'friction' must be finite and > 0 (got -0)"}));
+    EXPECT_TRUE(rejects("friction = -1\n", {"'friction' must be finite and > 0 (got -1)"}));
+    EXPECT_TRUE(rejects("friction = nan\n", {"'friction' must be finite and > 0 (got ", "nan)"}));
+    EXPECT_TRUE(rejects("friction = inf\n", {"'friction' must be finite and > 0 (got inf)"}));
+    EXPECT_TRUE(rejects("friction = -inf\n", {"'friction' must be finite and > 0 (got -inf)"}));
+}
+
+TEST(Scene, RoughnessMustBeFiniteAndNonNegative) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.normal]\nT = 1\nA = -1\n",
+                        {"scene.toml: 'cylinder1.normal.A' must be finite and >= 0 (got -1)"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.tangential]\nT = -0.5\nA = 1\n",
+                        {"'cylinder1.tangential.T' must be finite and >= 0 (got -0.5)"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.normal]\nT = nan\nA = 1\n",
+                        {"'cylinder2.normal.T' must be finite and >= 0 (got ", "nan)"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.tangential]\nT = 1\nA = inf\n",
+                        {"'cylinder2.tangential.A' must be finite and >= 0 (got inf)"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.tangential]\nT = -inf\nA = 1\n",
+                        {"'cylinder2.tangential.T' must be finite and >= 0 (got -inf)"}));
+}
+
+TEST(Scene, RoughnessZeroAccepted) {
+    const scene s = parse_scene("friction = 0.3\n[cylinder1.normal]\nT = 0\nA = -0.0\n", source);
+    EXPECT_FALSE(s.surfaces.cylinder1.normal.present());
+    EXPECT_TRUE(s.surfaces.smooth());
+}
+
+TEST(Scene, TermNeedsBothTAndA) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.normal]\nT = 1\n",
+                        {"scene.toml: table 'cylinder1.normal' needs both T and A (missing 'A')"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.tangential]\nA = 1\n",
+                        {"table 'cylinder2.tangential' needs both T and A (missing 'T')"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.tangential]\n",
+                        {"table 'cylinder1.tangential' needs both T and A (missing 'T')"}));
+}
+
+TEST(Scene, LoadMustBeFiniteAndCarriedByFriction) {
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = 0.4\n",
+                        {"scene.toml: 'Q'", "|Q| = 0.4 exceeds f = 0.3: the cylinders slide"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = -0.4\n", {"'Q'", "|Q| = 0.4 exceeds f = 0.3", "slide"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = nan\n", {"'Q' must be finite (got ", "nan)"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = inf\n", {"'Q' must be finite (got inf)"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = -inf\n", {"'Q' must be finite (got -inf)"}));
+}
+
+TEST(Scene, UnknownKeyAtTopLevel) {
+    EXPECT_TRUE(rejects("friction = 0.3\nfrction = 0.3\n", {"scene.toml: unknown key 'frction'", "friction"}));
+    // Case matters: q is not Q.
+    EXPECT_TRUE(rejects("friction = 0.3\nq = 0.1\n", {"unknown key 'q'"}));
+}
+
+TEST(Scene, UnknownKeyInsideCylinder) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1]\nrough = true\n", {"unknown key 'cylinder1.rough'"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.normals]\nT = 1\nA = 1\n",
+                        {"unknown table 'cylinder2.normals'"}));
+}
+
+TEST(Scene, UnknownKeyInsideTerm) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.normal]\nT = 1\nA = 1\nTx = 1\n",
+                        {"scene.toml: unknown key 'cylinder1.normal.Tx'"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.normal.extra]\n", {"unknown table 'cylinder1.normal.extra'"}));
+}
+
+TEST(Scene, UnknownKeyInsideSolver) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\ntolerance = 1e-9\n", {"unknown key 'solver.tolerance'"}));
+}
+
+TEST(Scene, UnknownTable) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder3.normal]\nT = 1\nA = 1\n", {"unknown table 'cylinder3'"}));
+}
+
+TEST(Scene, NonTableWhereTableIsExpected) {
+    EXPECT_TRUE(rejects("friction = 0.3\ncylinder1 = 3\n", {"'cylinder1' must be a table, not an integer"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2]\nnormal = 0.5\n",
+                        {"'cylinder2.normal' must be a table, not a floating-point number"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nsolver = \"fast\"\n", {"'solver' must be a table, not a string"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[[cylinder1]]\n", {"'cylinder1' must be a table, not an array"}));
+}
+
+TEST(Scene, NodeCountMustBeAnIntegerInRange) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = 200.0\n",
+                        {"scene.toml: 'solver.n' must be an integer", "floating-point"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = \"200\"\n", {"'solver.n' must be an integer, not a string"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = 5000\n", {"'solver.n' = 5000 is outside [2, 1000]"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = 1\n", {"'solver.n' = 1 is outside [2, 1000]"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = -3\n", {"'solver.n' = -3 is outside [2, 1000]"}));
+    // Beyond int: must not wrap around into the range when narrowed.
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = 4294967496\n",
+                        {"'solver.n' = 4294967496 is outside [2, 1000]"}));
+}
+
+TEST(Scene, MethodMustBeAKnownName) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = \"foo\"\n",
+                        {"scene.toml: 'solver.method'", "unknown method 'foo'"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = 1\n", {"'solver.method' must be a string, not an integer"}));
+    EXPECT_EQ(parse_scene("friction = 0.3\n[solver]\nmethod = \"paper\"\n", source).solver.how, method::paper);
+}
+
+TEST(Scene, LabelMustBeAString) {
+    EXPECT_TRUE(rejects("label = 3\nfriction = 0.3\n", {"'label' must be a string, not an integer"}));
+}
+
+TEST(Scene, MalformedToml) {
+    EXPECT_TRUE(rejects("friction = \n", {"scene.toml:1:", "malformed TOML"}));
+    EXPECT_TRUE(rejects("label = \"x\"\nfriction = \n", {"scene.toml:2:", "malformed TOML"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nfriction = 0.4\n", {"scene.toml:2:", "malformed TOML"}));
+    EXPECT_TRUE(rejects("friction = 0.3 0.4\n", {"scene.toml:1:", "malformed TOML"}));
+}
+
+TEST(Scene, TruncatedToml) {
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1.norm", {"scene.toml:2:", "malformed TOML"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nlabel = \"unterminated", {"scene.toml:2:", "malformed TOML"}));
+    EXPECT_TRUE(rejects("friction = 0.3\ncylinder1 = { normal = { T = 1", {"scene.toml:2:", "malformed TOML"}));
+}
+
+TEST(Scene, MessagesStayOnOneLine) {
+    // A quoted key may hold a newline; the message must still be one line.
+    EXPECT_TRUE(rejects("friction = 0.3\n\"a\\nb\" = 1\n", {"unknown key 'a\\x0ab'"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = \"pa\\nper\"\n", {"unknown method 'pa\\x0aper'"}));
+}
+
+// A file in the test's temporary directory, removed at the end of the test.
+class temp_file {
+public:
+    temp_file(const std::string& name, const std::string& text)
+        : path_(std::filesystem::path(::testing::TempDir()) / ("roughroll_" + std::to_string(::getpid()) + "_" + name)) {
+        std::ofstream(path_) << text;
+    }
+    ~temp_file() {
+        std::error_code ignored;
+        std::filesystem::permissions(path_, std::filesystem::perms::owner_all, ignored);
+        std::filesystem::remove(path_, ignored);
+    }
+    temp_file(const temp_file&) = delete;
+    temp_file& operator=(const temp_file&) = delete;
+    std::string path() const { return path_.string(); }
+
+private:
+    std::filesystem::path path_;
+};
+
+std::string read_error(const std::string& path) {
+    try {
+        (void)read_scene(path);
+    } catch (const input_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(ReadScene, ValidFile) {
+    const temp_file file("valid.toml", full_scene);
+    const scene s = read_scene(file.path());
+    EXPECT_EQ(s.label, "Fig. 2a, curve 2");
+    EXPECT_DOUBLE_EQ(s.surfaces.cylinder1.normal.A, 1.5);
+    EXPECT_EQ(s.solver.n, 321);
+}
+
+TEST(ReadScene, MessagesNameTheFile) {
+    const temp_file file("bad.toml", "friction = 0.3\nQ = 0.5\n");
+    const std::string message = read_error(file.path());
+    EXPECT_EQ(message.rfind(file.path() + ": 'Q'", 0), 0u) << message;
+    EXPECT_NE(message.find("the cylinders slide"), std::string::npos) << message;
+
+    const temp_file broken("broken.toml", "friction = \n");
+    const std::string syntax = read_error(broken.path());
+    EXPECT_EQ(syntax.rfind(broken.path() + ":1:", 0), 0u) << syntax;
+    EXPECT_NE(syntax.find("malformed TOML"), std::string::npos) << syntax;
+}
+
+TEST(ReadScene, MissingFile) {
+    const std::string path = ::testing::TempDir() + "/roughroll_no_such_scene.toml";
+    const std::string message = read_error(path);
+    EXPECT_EQ(message.rfind("cannot read scene file '" + path + "': ", 0), 0u) << message;
+    EXPECT_NE(message.find("No such file"), std::string::npos) << message;
+}
+
+TEST(ReadScene, Directory) {
+    const std::string path = ::testing::TempDir();
+    const std::string message = read_error(path);
+    EXPECT_EQ(message.rfind("cannot read scene file '" + path + "': ", 0), 0u) << message;
+    EXPECT_NE(message.find("directory"), std::string::npos) << message;
+}
+
+TEST(ReadScene, NotARegularFile) {
+    const std::string message = read_error("/dev/null");
+    EXPECT_EQ(message, "cannot read scene file '/dev/null': it is not a regular file");
+}
+
+TEST(ReadScene, UnreadableFile) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root reads files whatever their permissions";
+    const temp_file file("unreadable.toml", "friction = 0.3\n");
+    std::filesystem::permissions(file.path(), std::filesystem::perms::none);
+    const std::string message = read_error(file.path());
+    EXPECT_EQ(message.rfind("cannot read scene file '" + file.path() + "': ", 0), 0u) << message;
+    EXPECT_NE(message.find("ermission"), std::string::npos) << message;
+}
+
+scene with_friction(double f, std::optional<double> Q) {
+    scene s;
+    s.friction = f;
+    s.Q = Q;
+    return s;
+}
+
+TEST(LoadOf, OverrideWins) {
+    EXPECT_EQ(load_of(with_friction(0.3, 0.1), 0.2), 0.2);
+    EXPECT_EQ(load_of(with_friction(0.3, 0.1), -0.25), -0.25);
+}
+
+TEST(LoadOf, SceneLoadWithoutOverride) { EXPECT_EQ(load_of(with_friction(0.3, 0.1), std::nullopt), 0.1); }
+
+TEST(LoadOf, NoLoadGiven) {
+    EXPECT_EQ(load_error(with_friction(0.3, std::nullopt), std::nullopt),
+              "no load Q given: set Q in the scene or pass --Q");
+}
+
+TEST(LoadOf, LimitsAccepted) {
+    EXPECT_EQ(load_of(with_friction(0.3, std::nullopt), 0.0), 0.0);
+    EXPECT_EQ(load_of(with_friction(0.3, std::nullopt), 0.3), 0.3);
+    EXPECT_EQ(load_of(with_friction(0.3, std::nullopt), -0.3), -0.3);
+    EXPECT_EQ(load_of(with_friction(0.3, 0.3), std::nullopt), 0.3);
+}
+
+TEST(LoadOf, OverrideMustBeFinite) {
+    const scene s = with_friction(0.3, 0.1);
+    const std::string nan = load_error(s, std::numeric_limits<double>::quiet_NaN());
+    EXPECT_EQ(nan.rfind("Q must be finite (got ", 0), 0u) << nan;
+    EXPECT_NE(nan.find("nan"), std::string::npos) << nan;
+    EXPECT_EQ(load_error(s, std::numeric_limits<double>::infinity()), "Q must be finite (got inf)");
+    EXPECT_EQ(load_error(s, -std::numeric_limits<double>::infinity()), "Q must be finite (got -inf)");
+}
+
+TEST(LoadOf, CylindersSlide) {
+    const std::string over = load_error(with_friction(0.3, 0.1), 0.4);
+    EXPECT_NE(over.find("|Q| = 0.4 exceeds f = 0.3: the cylinders slide"), std::string::npos) << over;
+    const std::string under = load_error(with_friction(0.3, std::nullopt), -0.31);
+    EXPECT_NE(under.find("|Q| = 0.31 exceeds f = 0.3: the cylinders slide"), std::string::npos) << under;
+    // A scene built by hand is checked too, not only the command line.
+    const std::string from_scene = load_error(with_friction(0.3, 0.5), std::nullopt);
+    EXPECT_NE(from_scene.find("|Q| = 0.5 exceeds f = 0.3"), std::string::npos) << from_scene;
+}
+
+}  // namespace
+}  // namespace roughroll

@@ -1,0 +1,83 @@
+// Convergence of the rough solution as n grows. The reference comes from the other
+// discretisation (product integration at large n), not from the same scheme, and the
+// observed orders are measured: about 2 for the paper's node sums (the kernels jump at
+// z = 0), about 4 for product integration.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/contact.hpp"
+
+using namespace roughroll;
+
+namespace {
+struct values {
+    double lambda, c0, xi;
+};
+
+values solve(const roughness& r, method how, int n, double Q, double f = 0.3) {
+    contact c(r, f, solver_options{n, how});
+    const auto s = c.point(Q);
+    return {c.normal().lambda, s.c0, s.xi};
+}
+
+roughness equal_kernels() {
+    roughness r;
+    r.cylinder1.tangential = r.cylinder1.normal = {0.5, 0.5};
+    return r;
+}
+
+roughness unequal_kernels() {
+    roughness r;
+    r.cylinder1.tangential = {0.8, 1.5};
+    r.cylinder1.normal = {0.5, 0.5};
+    r.cylinder2.tangential = {0.3, 3.0};
+    return r;
+}
+
+// Observed order of convergence from errors at n and 2n.
+double order(double e_n, double e_2n) { return std::log2(std::fabs(e_n) / std::fabs(e_2n)); }
+
+void expect_order(const roughness& r, method how, const std::vector<int>& ns, double lo, double hi) {
+    const double Q = 0.15;
+    const values ref = solve(r, method::product, 480, Q);
+    std::vector<values> err;
+    for (int n : ns) {
+        const values v = solve(r, how, n, Q);
+        err.push_back({v.lambda - ref.lambda, v.c0 - ref.c0, v.xi - ref.xi});
+    }
+    for (std::size_t i = 0; i + 1 < ns.size(); ++i) {
+        for (auto [name, a, b] : {std::tuple{"lambda", err[i].lambda, err[i + 1].lambda},
+                                  std::tuple{"c0", err[i].c0, err[i + 1].c0},
+                                  std::tuple{"xi", err[i].xi, err[i + 1].xi}}) {
+            const double p = order(a, b);
+            EXPECT_GT(p, lo) << name << " n = " << ns[i] << ": errors " << a << " -> " << b;
+            EXPECT_LT(p, hi) << name << " n = " << ns[i] << ": errors " << a << " -> " << b;
+        }
+    }
+}
+}  // namespace
+
+TEST(Convergence, PaperSchemeIsSecondOrderEqualKernels) {
+    expect_order(equal_kernels(), method::paper, {20, 40, 80, 160}, 1.8, 2.2);
+}
+
+TEST(Convergence, PaperSchemeIsSecondOrderUnequalKernels) {
+    // G integrated on the interpolant split at its jump (E8): c0 converges too.
+    expect_order(unequal_kernels(), method::paper, {20, 40, 80, 160}, 1.7, 2.3);
+}
+
+TEST(Convergence, ProductIntegrationIsFourthOrder) {
+    expect_order(equal_kernels(), method::product, {15, 30, 60}, 3.5, 4.6);
+    expect_order(unequal_kernels(), method::product, {15, 30, 60}, 3.5, 4.6);
+}
+
+TEST(Convergence, GammaTendsToZero) {
+    // (4.8): gamma_0n -> 0. The problem is symmetric with an odd right side, so the
+    // consistency condition holds by itself and gamma_0n stays at rounding level.
+    for (int n : {10, 40, 160}) {
+        contact c(equal_kernels(), 0.3, solver_options{n, method::paper});
+        EXPECT_LT(std::fabs(c.normal().gamma), 1e-13) << "n = " << n;
+    }
+}
