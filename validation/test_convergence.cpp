@@ -39,9 +39,9 @@ roughness unequal_kernels() {
 // Observed order of convergence from errors at n and 2n.
 double order(double e_n, double e_2n) { return std::log2(std::fabs(e_n) / std::fabs(e_2n)); }
 
-void expect_order(const roughness& r, method how, const std::vector<int>& ns, double lo, double hi) {
+void expect_order(const roughness& r, method how, const std::vector<int>& ns, double lo, double hi, int ref_n = 320) {
     const double Q = 0.15;
-    const values ref = solve(r, method::product, 480, Q);
+    const values ref = solve(r, method::product, ref_n, Q);
     std::vector<values> err;
     for (int n : ns) {
         const values v = solve(r, how, n, Q);
@@ -69,8 +69,12 @@ TEST(Convergence, PaperSchemeIsSecondOrderUnequalKernels) {
 }
 
 TEST(Convergence, ProductIntegrationIsFourthOrder) {
-    expect_order(equal_kernels(), method::product, {15, 30, 60}, 3.5, 4.6);
-    expect_order(unequal_kernels(), method::product, {15, 30, 60}, 3.5, 4.6);
+    // The pressure's end behaviour (1 -+ r)^{3/2} log(1 -+ r) left by the kernels limits the
+    // order to 4. The unequal case's c0 error changes sign near n = 24, so the rate is read
+    // from n = 48 on, against the finest product solution (the paper's scheme is too coarse
+    // to serve as reference here).
+    expect_order(equal_kernels(), method::product, {48, 96, 192}, 3.5, 4.6, 480);
+    expect_order(unequal_kernels(), method::product, {48, 96, 192}, 3.5, 4.6, 480);
 }
 
 TEST(Convergence, GammaTendsToZero) {
