@@ -1,12 +1,14 @@
 #include "roughroll/collocation.hpp"
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <vector>
 
 #include <gsl/gsl_math.h>
 
 #include "roughroll/error.hpp"
+#include "roughroll/kernel_sweep.hpp"
 
 namespace roughroll {
 
@@ -26,20 +28,12 @@ void add_kernel_term(gsl_matrix* a, const kernel& kern, const gauss_chebyshev& r
                 *gsl_matrix_ptr(a, m, k) += rule.weights[k] * kern(rule.nodes[k] - rule.collocation[m]);
         return;
     }
-    // Product integration: the Lagrange basis in U coefficients, l_k = sum_j c_kj U_j
-    // with c_kj = (2/pi) w_k U_j(eta_k), against the moments I_j(s_m).
-    std::vector<double> c(static_cast<std::size_t>(n) * n);
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j) c[k * n + j] = M_2_PI * rule.weights[k] * chebyshev_u_at_node(rule, j, k);
-    kernel_moments moments(kern, n);
-    for (int m = 0; m <= n; ++m) {
-        const auto& I = moments.at(rule.collocation[m]);
-        for (int k = 0; k < n; ++k) {
-            double sum = 0.0;
-            for (int j = 0; j < n; ++j) sum += c[k * n + j] * I[j];
-            *gsl_matrix_ptr(a, m, k) += sum;
-        }
-    }
+    // Product integration: int l_k(eta) sqrt(1 - eta^2) K(eta - s_m) d eta for the Lagrange
+    // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
+    const lagrange_basis basis(rule);
+    const std::vector<double> m_k = kernel_sweep(kern, rule.collocation, n, n - 1, std::cref(basis));
+    for (int m = 0; m <= n; ++m)
+        for (int k = 0; k < n; ++k) *gsl_matrix_ptr(a, m, k) += m_k[static_cast<std::size_t>(m) * n + k];
 }
 
 void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what) {

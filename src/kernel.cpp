@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
-
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
 #include "roughroll/error.hpp"
@@ -74,36 +71,23 @@ int gauss_legendre_order(int count, double max_rate) {
     return count + 24 + static_cast<int>(std::ceil(1.5 * max_rate));
 }
 
-struct fixed_deleter {
-    void operator()(gsl_integration_fixed_workspace* w) const { gsl_integration_fixed_free(w); }
-};
 }  // namespace
 
 kernel_moments::kernel_moments(const kernel& k, int count)
-    : k_(k), count_(count), order_(gauss_legendre_order(count, k.max_rate())) {
-    // gsl_integration_fixed (Golub-Welsch) rather than gsl_integration_glfixed: the
-    // latter is exact only for its tabulated orders and loses 1e-11 on others (66, 200).
-    gsl_guard();
-    std::unique_ptr<gsl_integration_fixed_workspace, fixed_deleter> rule(
-        gsl_integration_fixed_alloc(gsl_integration_fixed_legendre, static_cast<size_t>(order_), -1.0, 1.0, 0.0, 0.0));
-    if (!rule) throw numerical_error("cannot build a Gauss-Legendre rule of order " + std::to_string(order_));
-    gl_x_.assign(gsl_integration_fixed_nodes(rule.get()), gsl_integration_fixed_nodes(rule.get()) + order_);
-    gl_w_.assign(gsl_integration_fixed_weights(rule.get()), gsl_integration_fixed_weights(rule.get()) + order_);
-    moments_.resize(count_);
-}
+    : k_(k), count_(count), rule_(gauss_legendre_order(count, k.max_rate())), moments_(count) {}
 
 void kernel_moments::add_piece(double lo, double hi, double r, double side) {
     // side = sgn(eta - r) on this piece: the kernel without its jump.
     if (hi <= lo) return;
     const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
-    for (int q = 0; q < order_; ++q) {
-        const double theta = mid + half * gl_x_[q];
+    for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
+        const double theta = mid + half * rule_.nodes[q];
         const double s = std::sin(theta), c = std::cos(theta);
         // The kernel with its sign fixed by the side: no sgn() evaluated at the jump.
         double kv = 0.0;
         const double d = std::fabs(c - r);
         for (const auto& t : k_.terms()) kv += t.T * std::exp(-t.A * d);
-        const double weight = half * gl_w_[q] * s * side * kv;
+        const double weight = half * rule_.weights[q] * s * side * kv;
         // sin((j+1) theta) by the recurrence s_{j+1} = 2 cos(theta) s_j - s_{j-1}.
         double sj_prev = 0.0, sj = s;
         for (int j = 0; j < count_; ++j) {

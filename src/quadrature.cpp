@@ -1,8 +1,10 @@
 #include "roughroll/quadrature.hpp"
 
 #include <cmath>
+#include <memory>
 #include <string>
 
+#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
 #include "roughroll/error.hpp"
@@ -24,6 +26,25 @@ gauss_chebyshev::gauss_chebyshev(int n_) : n(n_) {
         weights[k - 1] = h * s * s;
     }
     for (int m = 1; m <= n + 1; ++m) collocation[m - 1] = std::cos((2 * m - 1) * M_PI / (2.0 * n + 2.0));
+}
+
+namespace {
+struct fixed_deleter {
+    void operator()(gsl_integration_fixed_workspace* w) const { gsl_integration_fixed_free(w); }
+};
+}  // namespace
+
+gauss_legendre::gauss_legendre(int order) {
+    gsl_guard();
+    std::unique_ptr<gsl_integration_fixed_workspace, fixed_deleter> rule(
+        order > 0 ? gsl_integration_fixed_alloc(gsl_integration_fixed_legendre, static_cast<size_t>(order), -1.0, 1.0,
+                                                0.0, 0.0)
+                  : nullptr);
+    if (!rule) throw numerical_error("cannot build a Gauss-Legendre rule of order " + std::to_string(order));
+    const double* x = gsl_integration_fixed_nodes(rule.get());
+    const double* w = gsl_integration_fixed_weights(rule.get());
+    nodes.assign(x, x + order);
+    weights.assign(w, w + order);
 }
 
 double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k) {

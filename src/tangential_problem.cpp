@@ -13,6 +13,7 @@
 #include "roughroll/carter.hpp"
 #include "roughroll/collocation.hpp"
 #include "roughroll/error.hpp"
+#include "roughroll/kernel_sweep.hpp"
 
 namespace roughroll {
 
@@ -47,6 +48,19 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
     for (int m = 0; m <= n_; ++m) gsl_matrix_set(cauchy_.get(), m, n_, -1.0);
 }
 
+std::vector<double> tangential_solver::G(const std::vector<double>& r) {
+    // As G(r) below, for sorted points at once: one sweep over the kernel difference.
+    std::vector<double> g(r.size());
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
+    if (dk_.empty()) return g;
+    const auto& b = normal_.b;
+    const auto integrals = kernel_sweep(dk_, r, 1, n_ - 1, [&b](double theta, double* out) {
+        *out = u_series(b, std::cos(theta));
+    });
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] += integrals[m];
+    return g;
+}
+
 double tangential_solver::G(double r) {
     // (3.25): the kernel difference integrated on the interpolant of phi, split at its
     // jump (E8), so that G, and with it Q(c0), is continuous in c0.
@@ -61,10 +75,10 @@ tangential_solution tangential_solver::solve_system(double c0) {
     gsl_vector* rhs = system_.rhs();
     gsl_matrix_memcpy(a, cauchy_.get());
     add_kernel_term(a, k1_.stretched(rho), rule, normal_.how);  // E6
-    for (int m = 0; m <= n_; ++m) {
-        const double r = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
-        gsl_vector_set(rhs, m, f_ * G(r));                            // E5
-    }
+    std::vector<double> r(n_ + 1);
+    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
+    const std::vector<double> g = G(r);
+    for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
     std::ostringstream context;
     context.precision(17);
     context << "tangential problem (4.4) at c0 = " << c0;

@@ -8,6 +8,7 @@
 
 #include "roughroll/error.hpp"
 #include "roughroll/kernel.hpp"
+#include "roughroll/kernel_sweep.hpp"
 
 using namespace roughroll;
 
@@ -99,3 +100,40 @@ TEST_P(Moments, AgreeWithAdaptiveQuadratureSplitAtTheJump) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Rates, Moments, ::testing::Values(0.0, 0.5, 5.0, 50.0));
+
+TEST(KernelSweep, AgreesWithMomentsAtSortedPoints) {
+    // The two-sided recurrence (kernel_sweep) and the split moments (kernel_moments) are two
+    // routes to the same integrals: a U-series g against K at many points, some repeated,
+    // some at the ends, clustered like the stick-zone points of a small c0.
+    const kernel k(std::vector<exponential_term>{{0.7, 3.0}, {-0.2, 40.0}, {0.4, 0.0}});
+    const std::vector<double> b{0.3, -1.2, 0.5, 0.05, -0.3, 0.2, 0.01, -0.07};
+    const std::vector<double> points{1.0, 0.999, 0.5, 0.5, 0.1, -0.2, -0.9, -0.9001, -0.95, -1.0};
+    const int degree = static_cast<int>(b.size()) - 1;
+    const auto swept = kernel_sweep(k, points, 1, degree, [&](double theta, double* out) {
+        *out = u_series(b, std::cos(theta));
+    });
+    kernel_moments moments(k, static_cast<int>(b.size()));
+    for (std::size_t m = 0; m < points.size(); ++m)
+        EXPECT_NEAR(swept[m], moments.integrate(b, points[m]), 1e-14) << "x = " << points[m];
+}
+
+TEST(KernelSweep, LagrangeBasisReproducesNodalValues) {
+    const gauss_chebyshev rule(11);
+    const lagrange_basis basis(rule);
+    std::vector<double> l(rule.n);
+    for (int k = 0; k < rule.n; ++k) {
+        basis((k + 1) * M_PI / (rule.n + 1), l.data());  // on node k
+        for (int i = 0; i < rule.n; ++i) EXPECT_NEAR(l[i], i == k ? 1.0 : 0.0, 1e-14);
+    }
+    basis(0.3, l.data());  // partition of unity between nodes
+    double sum = 0.0;
+    for (double v : l) sum += v;
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+}
+
+TEST(KernelSweep, RejectsUnsortedPoints) {
+    const kernel k(std::vector<exponential_term>{{1.0, 1.0}});
+    auto one = [](double, double* out) { *out = 1.0; };
+    EXPECT_THROW(kernel_sweep(k, {0.1, 0.2}, 1, 0, one), numerical_error);
+    EXPECT_THROW(kernel_sweep(k, {1.5}, 1, 0, one), numerical_error);
+}

@@ -3,7 +3,7 @@
 //   Cauchy term:  (1/pi) w_k / (eta_k - s_m)           (exact for the interpolant)
 //   kernel term:  paper   w_k K(eta_k - s_m)            (4.2), (4.4)
 //                 product int l_k(eta) sqrt(1-eta^2) K(eta - s_m) d eta, l_k the
-//                 Lagrange basis of the nodes: (2/pi) w_k sum_j U_j(eta_k) I_j(s_m).
+//                 Lagrange basis of the nodes, by kernel_sweep.
 #pragma once
 
 #include <gsl/gsl_matrix.h>

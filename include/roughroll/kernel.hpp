@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "roughroll/quadrature.hpp"
 #include "roughroll/roughness.hpp"
 
 namespace roughroll {
@@ -50,7 +51,7 @@ private:
 // for any real r. With eta = cos(theta) the integrand is sin((j+1) theta) sin(theta)
 // K(cos theta - r), analytic on each side of the jump at theta = acos(r); the
 // integral is split there and each piece done by Gauss-Legendre (gsl_integration_fixed).
-// A workspace keeps the Gauss-Legendre table of its order.
+// A workspace keeps the Gauss-Legendre rule of its order.
 class kernel_moments {
 public:
     // `count` moments; the rule's order grows with count and with the kernel's max rate.
@@ -60,15 +61,12 @@ public:
     // int_{-1}^{1} (sum_j b_j U_j(eta)) sqrt(1 - eta^2) K(eta - r) d eta
     double integrate(const std::vector<double>& b, double r);
 
-    int order() const { return order_; }
-
 private:
     void add_piece(double theta_lo, double theta_hi, double r, double side);
 
     kernel k_;
     int count_;
-    int order_;
-    std::vector<double> gl_x_, gl_w_;  // Gauss-Legendre on [-1, 1]
+    gauss_legendre rule_;
     std::vector<double> moments_;
 };
 

@@ -27,6 +27,16 @@ struct gauss_chebyshev {
     std::vector<double> collocation;  // s_m = cos((2m-1) pi/(2n+2)), m = 1..n+1 (4.7)
 };
 
+// Gauss-Legendre nodes and weights on [-1, 1], by gsl_integration_fixed (Golub-Welsch).
+// Not gsl_integration_glfixed: that is exact only at its tabulated orders and loses
+// about 1e-11 at others (66, 200), which the kernel-moment test detects.
+struct gauss_legendre {
+    explicit gauss_legendre(int order);
+
+    std::vector<double> nodes;
+    std::vector<double> weights;
+};
+
 // U_j(eta_k) for j < n: the values that map nodal values to U coefficients.
 double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k);
 

@@ -63,6 +63,7 @@ public:
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
 
     double G(double r);                                          // (3.25)
+    std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ...
     double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
 

@@ -1,0 +1,113 @@
+#include "roughroll/kernel_sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/error.hpp"
+
+namespace roughroll {
+
+namespace {
+// Each piece between neighbouring points is cut into segments of at most pi/(degree+2)
+// in theta, over which g_v (degree <= `degree` in cos theta) turns by at most half a
+// period; 12 Gauss-Legendre points integrate that to rounding (error ~ (pi/2)^24/24!).
+// exp(-A |cos theta - x|) changes by at most A times the segment: more points for it.
+int segment_order(double rate, double length) { return 12 + static_cast<int>(std::ceil(1.5 * rate * length)); }
+}  // namespace
+
+std::vector<double> kernel_sweep(const kernel& k, const std::vector<double>& points, int width, int degree,
+                                 const basis_values& values) {
+    const std::size_t count = points.size();
+    std::vector<double> out(count * width, 0.0);
+    if (k.empty() || count == 0) return out;
+    for (std::size_t m = 0; m < count; ++m) {
+        if (!(points[m] >= -1.0 && points[m] <= 1.0) || (m > 0 && points[m] > points[m - 1]))
+            throw numerical_error("kernel_sweep: evaluation points must be sorted and lie in [-1, 1]");
+    }
+    // Breakpoints in theta: 0, acos(x_0), ..., acos(x_{M-1}), pi; piece i spans [b_i, b_{i+1}].
+    std::vector<double> b(count + 2);
+    b.front() = 0.0;
+    b.back() = M_PI;
+    for (std::size_t m = 0; m < count; ++m) b[m + 1] = std::acos(points[m]);
+    const std::size_t pieces = count + 1;
+    const double longest = M_PI / (degree + 2);
+    const gauss_legendre rule(segment_order(k.max_rate(), longest));
+    const std::size_t q = rule.nodes.size();
+
+    // Quadrature points of every piece: cos(theta), weight with sin^2 (sqrt(1 - eta^2) d eta
+    // = sin^2 theta d theta), and the basis values; piece i owns points [first[i], first[i+1]).
+    std::vector<std::size_t> first(pieces + 1, 0);
+    std::vector<double> c, w, g;
+    for (std::size_t i = 0; i < pieces; ++i) {
+        const double length = b[i + 1] - b[i];
+        const int segments = length > 0.0 ? static_cast<int>(std::ceil(length / longest)) : 0;
+        for (int sgm = 0; sgm < segments; ++sgm) {
+            const double lo = b[i] + length * sgm / segments, hi = b[i] + length * (sgm + 1) / segments;
+            const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
+            for (std::size_t j = 0; j < q; ++j) {
+                const double theta = mid + half * rule.nodes[j];
+                const double s = std::sin(theta);
+                c.push_back(std::cos(theta));
+                w.push_back(half * rule.weights[j] * s * s);
+                g.resize(g.size() + width);
+                values(theta, &g[g.size() - width]);
+            }
+        }
+        first[i + 1] = c.size();
+    }
+
+    std::vector<double> acc(width);
+    for (const auto& term : k.terms()) {
+        // Left of x_m (eta > x_m, theta < theta_m, pieces 0..m): + T exp(-A (eta - x_m)).
+        std::fill(acc.begin(), acc.end(), 0.0);
+        for (std::size_t m = 0; m < count; ++m) {
+            const double decay = m == 0 ? 0.0 : std::exp(-term.A * (points[m - 1] - points[m]));
+            for (int v = 0; v < width; ++v) acc[v] *= decay;
+            for (std::size_t p = first[m]; p < first[m + 1]; ++p) {
+                const double e = w[p] * std::exp(-term.A * (c[p] - points[m]));
+                for (int v = 0; v < width; ++v) acc[v] += e * g[p * width + v];
+            }
+            for (int v = 0; v < width; ++v) out[m * width + v] += term.T * acc[v];
+        }
+        // Right of x_m (eta < x_m, pieces m+1..M): - T exp(-A (x_m - eta)).
+        std::fill(acc.begin(), acc.end(), 0.0);
+        for (std::size_t m = count; m-- > 0;) {
+            const double decay = m + 1 == count ? 0.0 : std::exp(-term.A * (points[m] - points[m + 1]));
+            for (int v = 0; v < width; ++v) acc[v] *= decay;
+            for (std::size_t p = first[m + 1]; p < first[m + 2]; ++p) {
+                const double e = w[p] * std::exp(-term.A * (points[m] - c[p]));
+                for (int v = 0; v < width; ++v) acc[v] += e * g[p * width + v];
+            }
+            for (int v = 0; v < width; ++v) out[m * width + v] -= term.T * acc[v];
+        }
+    }
+    return out;
+}
+
+lagrange_basis::lagrange_basis(const gauss_chebyshev& rule) : rule_(rule), beta_(rule.n) {
+    for (int k = 0; k < rule.n; ++k) {
+        const double s = std::sin((k + 1) * M_PI / (rule.n + 1));
+        beta_[k] = (k % 2 == 0 ? 1.0 : -1.0) * s * s;
+    }
+}
+
+void lagrange_basis::operator()(double theta, double* out) const {
+    const double x = std::cos(theta);
+    const int n = rule_.n;
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        const double d = x - rule_.nodes[k];
+        if (d == 0.0) {  // on a node: the basis is the unit vector
+            std::fill(out, out + n, 0.0);
+            out[k] = 1.0;
+            return;
+        }
+        out[k] = beta_[k] / d;
+        sum += out[k];
+    }
+    for (int k = 0; k < n; ++k) out[k] /= sum;
+}
+
+}  // namespace roughroll
