@@ -38,24 +38,29 @@ std::vector<double> kernel_sweep(const kernel& k, const std::vector<double>& poi
 
     // Quadrature points of every piece: cos(theta), weight with sin^2 (sqrt(1 - eta^2) d eta
     // = sin^2 theta d theta), and the basis values; piece i owns points [first[i], first[i+1]).
+    // The pieces between collocation points are exactly `longest` long: the small slack
+    // keeps rounding from doubling their segments.
+    std::vector<int> segments(pieces);
     std::vector<std::size_t> first(pieces + 1, 0);
-    std::vector<double> c, w, g;
     for (std::size_t i = 0; i < pieces; ++i) {
+        segments[i] = static_cast<int>(std::ceil((b[i + 1] - b[i]) / longest - 1e-9));
+        first[i + 1] = first[i] + static_cast<std::size_t>(segments[i]) * q;
+    }
+    const std::size_t total = first.back();
+    std::vector<double> c(total), w(total), g(total * width);
+    for (std::size_t i = 0, p = 0; i < pieces; ++i) {
         const double length = b[i + 1] - b[i];
-        const int segments = length > 0.0 ? static_cast<int>(std::ceil(length / longest)) : 0;
-        for (int sgm = 0; sgm < segments; ++sgm) {
-            const double lo = b[i] + length * sgm / segments, hi = b[i] + length * (sgm + 1) / segments;
+        for (int sgm = 0; sgm < segments[i]; ++sgm) {
+            const double lo = b[i] + length * sgm / segments[i], hi = b[i] + length * (sgm + 1) / segments[i];
             const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
-            for (std::size_t j = 0; j < q; ++j) {
+            for (std::size_t j = 0; j < q; ++j, ++p) {
                 const double theta = mid + half * rule.nodes[j];
                 const double s = std::sin(theta);
-                c.push_back(std::cos(theta));
-                w.push_back(half * rule.weights[j] * s * s);
-                g.resize(g.size() + width);
-                values(theta, &g[g.size() - width]);
+                c[p] = std::cos(theta);
+                w[p] = half * rule.weights[j] * s * s;
+                values(theta, &g[p * width]);
             }
         }
-        first[i + 1] = c.size();
     }
 
     std::vector<double> acc(width);

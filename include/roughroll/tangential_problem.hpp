@@ -54,6 +54,8 @@ public:
     // validation of the scheme itself).
     tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
                       bool closed_form = true);
+    // The solver keeps a reference to the normal solution: a temporary would dangle.
+    tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
 
     tangential_solution solve(double Q);  // throws input_error for |Q| > f or non-finite Q
 
