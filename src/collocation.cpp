@@ -19,21 +19,32 @@ void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule) {
             *gsl_matrix_ptr(a, m, k) += M_1_PI * rule.weights[k] / (rule.nodes[k] - rule.collocation[m]);
 }
 
-void add_kernel_term(gsl_matrix* a, const kernel& kern, const gauss_chebyshev& rule, method how) {
-    if (kern.empty()) return;
-    const int n = rule.n;
-    if (how == method::paper) {
-        for (int m = 0; m <= n; ++m)
-            for (int k = 0; k < n; ++k)
-                *gsl_matrix_ptr(a, m, k) += rule.weights[k] * kern(rule.nodes[k] - rule.collocation[m]);
-        return;
-    }
+kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double max_rate)
+    : rule_(rule), how_(how) {
     // Product integration: int l_k(eta) sqrt(1 - eta^2) K(eta - s_m) d eta for the Lagrange
     // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
-    const lagrange_basis basis(rule);
-    const std::vector<double> m_k = kernel_sweep(kern, rule.collocation, n, n - 1, std::cref(basis));
+    if (how == method::product) {
+        const lagrange_basis basis(rule);
+        sweep_.emplace(rule.collocation, rule.n, rule.n - 1, max_rate, std::cref(basis));
+    }
+}
+
+void kernel_operator::add_to(gsl_matrix* a, const kernel& kern) const {
+    if (kern.empty()) return;
+    const int n = rule_.n;
+    if (how_ == method::paper) {
+        for (int m = 0; m <= n; ++m)
+            for (int k = 0; k < n; ++k)
+                *gsl_matrix_ptr(a, m, k) += rule_.weights[k] * kern(rule_.nodes[k] - rule_.collocation[m]);
+        return;
+    }
+    const std::vector<double> m_k = sweep_->apply(kern);
     for (int m = 0; m <= n; ++m)
         for (int k = 0; k < n; ++k) *gsl_matrix_ptr(a, m, k) += m_k[static_cast<std::size_t>(m) * n + k];
+}
+
+void add_kernel_term(gsl_matrix* a, const kernel& kern, const gauss_chebyshev& rule, method how) {
+    if (!kern.empty()) kernel_operator(rule, how, kern.max_rate()).add_to(a, kern);
 }
 
 void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what) {

@@ -10,7 +10,7 @@ namespace roughroll {
 contact::contact(const roughness& surfaces, double f, const solver_options& options) : f_(f) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     const auto start = std::chrono::steady_clock::now();
-    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), options.n, options.how));
+    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), options.nodes(), options.how));
     normal_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     tangential_ = std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces),
                                                       kernel::normal(surfaces), f);

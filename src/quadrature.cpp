@@ -11,11 +11,15 @@
 
 namespace roughroll {
 
-gauss_chebyshev::gauss_chebyshev(int n_) : n(n_) {
+void check_node_count(int n) {
     if (n < min_nodes || n > max_nodes) {
         throw input_error("n = " + std::to_string(n) + " is outside the supported range [" +
                           std::to_string(min_nodes) + ", " + std::to_string(max_nodes) + "]");
     }
+}
+
+gauss_chebyshev::gauss_chebyshev(int n_) : n(n_) {
+    check_node_count(n);
     nodes.resize(n);
     weights.resize(n);
     collocation.resize(n + 1);
@@ -54,11 +58,21 @@ double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k) {
 }
 
 std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values) {
-    std::vector<double> b(rule.n, 0.0);
-    for (int j = 0; j < rule.n; ++j) {
-        double sum = 0.0;
-        for (int k = 0; k < rule.n; ++k) sum += rule.weights[k] * values[k] * chebyshev_u_at_node(rule, j, k);
-        b[j] = M_2_PI * sum;
+    // b_j = (2/pi) sum_k w_k phi_k U_j(eta_k), with w_k U_j(eta_k) = h sin(t_k) sin((j+1) t_k),
+    // h = pi/(n+1): sin((j+1) t_k) by the recurrence s_{j+1} = 2 cos(t_k) s_j - s_{j-1}.
+    const int n = rule.n;
+    const double h = M_PI / (n + 1);
+    std::vector<double> b(n, 0.0);
+    for (int k = 0; k < n; ++k) {
+        const double t = (k + 1) * h, sin_t = std::sin(t), two_cos = 2.0 * rule.nodes[k];
+        const double scale = M_2_PI * h * sin_t * values[k];
+        double s_prev = 0.0, s = sin_t;
+        for (int j = 0; j < n; ++j) {
+            b[j] += scale * s;
+            const double next = two_cos * s - s_prev;
+            s_prev = s;
+            s = next;
+        }
     }
     return b;
 }

@@ -39,7 +39,8 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       carter_(closed_form && k1.empty() && k2.empty()),
       cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
       system_(static_cast<std::size_t>(n_) + 1),
-      dk_moments_(dk_, n_) {
+      dk_moments_(dk_, n_),
+      k1_operator_(normal.rule, normal.how, k1.max_rate()) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_resolution(k1_, normal_.rule, normal_.how, "K1* (tangential kernel)");
     gsl_matrix_set_zero(cauchy_.get());
@@ -54,7 +55,7 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
     for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
     if (dk_.empty()) return g;
     const auto& b = normal_.b;
-    const auto integrals = kernel_sweep(dk_, r, 1, n_ - 1, [&b](double theta, double* out) {
+    const auto integrals = sweep(dk_, r, 1, n_ - 1, [&b](double theta, double* out) {
         *out = u_series(b, std::cos(theta));
     });
     for (std::size_t m = 0; m < r.size(); ++m) g[m] += integrals[m];
@@ -74,7 +75,7 @@ tangential_solution tangential_solver::solve_system(double c0) {
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
     gsl_matrix_memcpy(a, cauchy_.get());
-    add_kernel_term(a, k1_.stretched(rho), rule, normal_.how);  // E6
+    k1_operator_.add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
     const std::vector<double> g = G(r);
@@ -238,23 +239,47 @@ double tangential_solver::traction(const tangential_solution& s, double r) {
     return s.sign * (f_ * normal_.pressure(r) + q0(s, r));  // (3.15)
 }
 
-double tangential_solver::slip_velocity_magnitude(const tangential_solution& s, double r,
-                                                 kernel_moments& stretched_k1) {
-    // v = xi + f G(r) - L1[q0](r) for the |Q| problem, (3.6) with (3.15); L1 is the
-    // stick-zone operator evaluated outside its interval (t > 1: no principal value, no jump).
-    double lq0 = 0.0;
-    if (!s.psi_b.empty()) {
-        const double rho = s.rho();
-        const double t = (r + 1.0 - rho) / rho;
-        lq0 = cauchy_u_series(s.psi_b, t) + stretched_k1.integrate(s.psi_b, t);
+namespace {
+// L1[q0] at a point of the slip zone, in the stick variable t > 1: the Cauchy transform of
+// the U-series, plus the kernel terms. Since tau - t < 0 on the whole stick zone, each term
+// T' exp(-A' (t - tau)) factors as exp(-A' (t - 1)) times its integral at t = 1, so the
+// kernel part costs one integral per term, whatever the number of points.
+class stick_operator_outside {
+public:
+    stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b) : psi_b_(psi_b) {
+        for (const auto& term : stretched_k1.terms()) {
+            kernel_moments one(kernel({term}), static_cast<int>(psi_b.size()));
+            at_one_.push_back({term.A, one.integrate(psi_b, 1.0)});
+        }
     }
-    return s.sign * s.xi + f_ * G(r) - lq0;
+
+    double operator()(double t) const {
+        double sum = cauchy_u_series(psi_b_, t);
+        for (const auto& [rate, value] : at_one_) sum += value * std::exp(-rate * (t - 1.0));
+        return sum;
+    }
+
+private:
+    const std::vector<double>& psi_b_;
+    std::vector<std::pair<double, double>> at_one_;  // (A', kernel integral at t = 1)
+};
+}  // namespace
+
+std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_solution& s,
+                                                               const std::vector<double>& r) {
+    // v = xi + f G(r) - L1[q0](r) for the |Q| problem, (3.6) with (3.15), at sorted points
+    // of the slip zone, where L1 is the stick-zone operator evaluated outside its interval.
+    std::vector<double> v = G(r);
+    const double rho = s.rho();
+    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b);
+    for (std::size_t i = 0; i < r.size(); ++i)
+        v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() ? 0.0 : lq0((r[i] + 1.0 - rho) / rho));
+    return v;
 }
 
 double tangential_solver::slip_velocity(const tangential_solution& s, double r) {
     if (r <= s.c0) return 0.0;
-    kernel_moments km(k1_.stretched(s.rho()), n_);
-    return s.sign * slip_velocity_magnitude(s, r, km);
+    return s.sign * slip_velocity_magnitude(s, {r}).front();
 }
 
 traction_checks tangential_solver::check(const tangential_solution& s) {
@@ -270,10 +295,9 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         }
     }
     if (s.c0 < 1.0) {
-        // One moments workspace for the whole grid: the stretched kernel is fixed by c0.
-        kernel_moments km(k1_.stretched(s.rho()), n_);
-        for (int i = 0; i < check_points; ++i)
-            c.slip_margin = std::min(c.slip_margin, slip_velocity_magnitude(s, grid_point(s.c0, 1.0, i), km) / f_);
+        std::vector<double> grid(check_points);
+        for (int i = 0; i < check_points; ++i) grid[i] = grid_point(s.c0, 1.0, i);  // descending
+        for (double v : slip_velocity_magnitude(s, grid)) c.slip_margin = std::min(c.slip_margin, v / f_);
     }
     c.pressure_holds = c.pressure_margin >= 0.0;
     c.stick_holds = c.stick_margin >= 0.0;

@@ -109,7 +109,7 @@ TEST(KernelSweep, AgreesWithMomentsAtSortedPoints) {
     const std::vector<double> b{0.3, -1.2, 0.5, 0.05, -0.3, 0.2, 0.01, -0.07};
     const std::vector<double> points{1.0, 0.999, 0.5, 0.5, 0.1, -0.2, -0.9, -0.9001, -0.95, -1.0};
     const int degree = static_cast<int>(b.size()) - 1;
-    const auto swept = kernel_sweep(k, points, 1, degree, [&](double theta, double* out) {
+    const auto swept = sweep(k, points, 1, degree, [&](double theta, double* out) {
         *out = u_series(b, std::cos(theta));
     });
     kernel_moments moments(k, static_cast<int>(b.size()));
@@ -134,6 +134,6 @@ TEST(KernelSweep, LagrangeBasisReproducesNodalValues) {
 TEST(KernelSweep, RejectsUnsortedPoints) {
     const kernel k(std::vector<exponential_term>{{1.0, 1.0}});
     auto one = [](double, double* out) { *out = 1.0; };
-    EXPECT_THROW(kernel_sweep(k, {0.1, 0.2}, 1, 0, one), numerical_error);
-    EXPECT_THROW(kernel_sweep(k, {1.5}, 1, 0, one), numerical_error);
+    EXPECT_THROW(sweep(k, {0.1, 0.2}, 1, 0, one), numerical_error);
+    EXPECT_THROW(sweep(k, {1.5}, 1, 0, one), numerical_error);
 }

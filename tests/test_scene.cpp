@@ -98,15 +98,17 @@ TEST(Scene, Defaults) {
     EXPECT_FALSE(s.Q.has_value());
     EXPECT_TRUE(s.surfaces.smooth());
     EXPECT_EQ(s.surfaces.cylinder1.normal.A, 0.0);
-    EXPECT_EQ(s.solver.n, 200);
-    EXPECT_EQ(s.solver.how, method::paper);
+    EXPECT_EQ(s.solver.n, 0);  // unset: the method's default
+    EXPECT_EQ(s.solver.how, method::product);
+    EXPECT_EQ(s.solver.nodes(), default_nodes(method::product));
 }
 
 TEST(Scene, EmptyTablesKeepDefaults) {
     const scene s = parse_scene("friction = 0.3\n[cylinder1]\n[solver]\n", source);
     EXPECT_TRUE(s.surfaces.smooth());
-    EXPECT_EQ(s.solver.n, 200);
-    EXPECT_EQ(s.solver.how, method::paper);
+    EXPECT_EQ(s.solver.n, 0);  // unset: the method's default
+    EXPECT_EQ(s.solver.how, method::product);
+    EXPECT_EQ(s.solver.nodes(), default_nodes(method::product));
 }
 
 TEST(Scene, OnlyOneTermOfOneCylinder) {

@@ -6,9 +6,12 @@
 //                 Lagrange basis of the nodes, by kernel_sweep.
 #pragma once
 
+#include <optional>
+
 #include <gsl/gsl_matrix.h>
 
 #include "roughroll/kernel.hpp"
+#include "roughroll/kernel_sweep.hpp"
 #include "roughroll/method.hpp"
 #include "roughroll/quadrature.hpp"
 
@@ -17,7 +20,23 @@ namespace roughroll {
 // Adds the Cauchy term into a(m, k), m <= n, k < n.
 void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule);
 
-// Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
+// The kernel term for one rule and method. For product integration it keeps the sweep
+// workspace, so the stretched kernels of successive trial c0 (rates up to max_rate) reuse
+// its quadrature points and basis values.
+class kernel_operator {
+public:
+    kernel_operator(const gauss_chebyshev& rule, method how, double max_rate);
+
+    // Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
+    void add_to(gsl_matrix* a, const kernel& k) const;
+
+private:
+    const gauss_chebyshev& rule_;
+    method how_;
+    std::optional<kernel_sweep> sweep_;
+};
+
+// One-off: kernel_operator(rule, how, k.max_rate()).add_to(a, k).
 void add_kernel_term(gsl_matrix* a, const kernel& k, const gauss_chebyshev& rule, method how);
 
 // Throws resolution_error when `k` varies faster than `how` resolves with this n.

@@ -22,11 +22,30 @@ namespace roughroll {
 // values(theta, out): writes g_v(cos theta), v < width, into out[0..width).
 using basis_values = std::function<void(double theta, double* out)>;
 
-// Returns points.size() x width values, row-major; `degree` bounds the degree of the g_v
-// in eta (it sets the quadrature). Throws numerical_error when the points are not sorted
-// or leave [-1, 1].
-std::vector<double> kernel_sweep(const kernel& k, const std::vector<double>& points, int width, int degree,
-                                 const basis_values& values);
+// A workspace for fixed points and functions: the quadrature points of every piece and
+// the basis values there are computed once, and apply() integrates any kernel whose rates
+// do not exceed max_rate (the tangential problem's stretched kernels rho K1*(rho z), one
+// per trial c0). `degree` bounds the degree of the g_v in eta (it sets the quadrature).
+// Throws numerical_error when the points are not sorted or leave [-1, 1].
+class kernel_sweep {
+public:
+    kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
+                 const basis_values& values);
+
+    // points.size() x width values, row-major.
+    std::vector<double> apply(const kernel& k) const;
+
+private:
+    std::vector<double> points_;
+    int width_;
+    double max_rate_;
+    std::vector<std::size_t> first_;  // piece i owns quadrature points [first_[i], first_[i+1])
+    std::vector<double> c_, w_, g_;   // cos(theta), weight, basis values at each quadrature point
+};
+
+// One-off: kernel_sweep(points, width, degree, k.max_rate(), values).apply(k).
+std::vector<double> sweep(const kernel& k, const std::vector<double>& points, int width, int degree,
+                          const basis_values& values);
 
 // The Lagrange basis of the nodes eta_k of a Gauss-Chebyshev rule, by the barycentric
 // formula with weights (-1)^k sin^2(theta_k) (the nodes are the zeros of U_n).

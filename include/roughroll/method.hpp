@@ -12,6 +12,11 @@ namespace roughroll {
 enum class method { paper, product };
 
 std::string to_string(method m);
+
+// Nodes used when a scene does not set n: about 1e-5 relative error in P_H/P2, c0 and xi
+// for Fig. 2's parameters with the paper's scheme at 200, about 1e-8 with product
+// integration at 96 (docs/performance.md).
+int default_nodes(method m);
 method method_from_string(const std::string& name);  // throws input_error naming the method
 
 }  // namespace roughroll

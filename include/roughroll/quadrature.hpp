@@ -18,6 +18,9 @@ namespace roughroll {
 constexpr int min_nodes = 2;
 constexpr int max_nodes = 1000;
 
+// Throws input_error naming n when it is outside [min_nodes, max_nodes].
+void check_node_count(int n);
+
 struct gauss_chebyshev {
     explicit gauss_chebyshev(int n);  // throws input_error outside [min_nodes, max_nodes]
 

@@ -11,8 +11,8 @@
 //   A = 0.5
 //   # [cylinder2.tangential], [cylinder2.normal] likewise; a missing table is smooth
 //   [solver]
-//   n = 200                      # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
-//   method = "paper"             # or "product"
+//   n = 96                       # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
+//   method = "product"           # or "paper"
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
 // a non-finite or negative T or A, a table with T or A missing, a non-positive f,
@@ -29,8 +29,10 @@
 namespace roughroll {
 
 struct solver_options {
-    int n = 200;
-    method how = method::paper;
+    int n = 0;  // 0: default_nodes(how)
+    method how = method::product;
+
+    int nodes() const { return n == 0 ? default_nodes(how) : n; }
 };
 
 struct scene {

@@ -15,6 +15,7 @@
 
 #include <vector>
 
+#include "roughroll/collocation.hpp"
 #include "roughroll/kernel.hpp"
 #include "roughroll/linear_system.hpp"
 #include "roughroll/normal_problem.hpp"
@@ -77,7 +78,7 @@ private:
     tangential_solution gross_sliding();
     tangential_solution carter_solution(double Q);
     double q0(const tangential_solution& s, double r);  // corrective traction for |Q|
-    double slip_velocity_magnitude(const tangential_solution& s, double r, kernel_moments& stretched_k1);
+    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
     traction_checks check(const tangential_solution& s);
 
     const normal_solution& normal_;
@@ -88,6 +89,7 @@ private:
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
     kernel_moments dk_moments_;
+    kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
 };
 
 }  // namespace roughroll

@@ -84,7 +84,7 @@ void add_figure_options(CLI::App* cmd, figure_options& o) {
     cmd->add_option("WHICH", o.which, "2a or 2b")->required()->check(CLI::IsMember({"2a", "2b"}));
     cmd->add_option("--out", o.out, "output folder (created if missing)");
     cmd->add_option("--points", o.points, "creep points per curve");
-    cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (default: 200 for paper, 96 for product)");
+    cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (default: the method's, see README)");
     cmd->add_option("--method", o.method_name, "paper or product");
     cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
 }
@@ -92,7 +92,7 @@ void add_figure_options(CLI::App* cmd, figure_options& o) {
 int run_figure(const figure_options& o) {
     solver_options options;
     options.how = method_from_string(o.method_name);
-    options.n = o.n > 0 ? o.n : (options.how == method::paper ? 200 : 96);
+    options.n = o.n;
     const auto curves = curves_of(o.which);
     const auto loads = curve_loads(o.points, figure_friction);
 
@@ -111,7 +111,7 @@ int run_figure(const figure_options& o) {
     std::ofstream out(csv);
     if (!out) throw input_error("cannot write '" + csv.string() + "'");
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
-    out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.n << "\n";
+    out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes() << "\n";
     out << "Q,Q_over_f";
     for (std::size_t i = 0; i < curves.size(); ++i) out << ",xi_over_f_" << i + 1 << ",c0_" << i + 1;
     out << ",xi_carter_over_f,c0_carter,checks_hold\n";

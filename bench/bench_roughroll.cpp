@@ -1,0 +1,75 @@
+// Timings of the solvers on Fig. 2's moderate scene (T = A = 0.5, equal kernels) and on
+// an unequal-kernel scene. Run: build/bench/bench_roughroll --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true   (medians are what docs/performance.md quotes)
+#include <benchmark/benchmark.h>
+
+#include "roughroll/contact.hpp"
+
+using namespace roughroll;
+
+namespace {
+roughness fig2() {
+    roughness r;
+    r.cylinder1.tangential = r.cylinder1.normal = {0.5, 0.5};
+    return r;
+}
+
+roughness unequal() {
+    roughness r;
+    r.cylinder1.tangential = {0.8, 1.5};
+    r.cylinder1.normal = {0.5, 0.5};
+    r.cylinder2.tangential = {0.3, 3.0};
+    return r;
+}
+
+method method_of(int64_t code) { return code == 0 ? method::paper : method::product; }
+
+// The normal problem alone (4.2)-(4.3).
+void bm_normal(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    const kernel k2 = kernel::normal(fig2());
+    for (auto _ : state) benchmark::DoNotOptimize(solve_normal(k2, o.n, o.how).lambda);
+}
+
+// One creep point at a given Q: normal solve, Brent search for c0, checks.
+void bm_point(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    for (auto _ : state) {
+        contact c(fig2(), 0.3, o);
+        benchmark::DoNotOptimize(c.point(0.15).xi);
+    }
+}
+
+// One point along a curve: the normal solution shared, a root search per point.
+void bm_curve_point(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    contact c(state.range(2) ? unequal() : fig2(), 0.3, o);
+    const auto loads = curve_loads(100, 0.3);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(c.point(loads[1 + i % 98]).xi);
+        ++i;
+    }
+}
+
+// A whole Fig. 2 panel: three curves of 100 points.
+void bm_figure_panel(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    const auto loads = curve_loads(100, 0.3);
+    for (auto _ : state) {
+        for (double T : {0.0, 0.5, 1.0}) {
+            roughness r;
+            r.cylinder1.tangential = r.cylinder1.normal = {T, 0.5};
+            contact c(r, 0.3, o);
+            benchmark::DoNotOptimize(creep_curve(c, loads).size());
+        }
+    }
+}
+}  // namespace
+
+BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {24, 48, 96, 192}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_point)->ArgsProduct({{0, 1}, {24, 48, 96, 192}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1}, {48, 96}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_figure_panel)->ArgsProduct({{0, 1}, {48, 96}})->Unit(benchmark::kMillisecond)->Iterations(1);
+
+BENCHMARK_MAIN();
