@@ -2,7 +2,11 @@
 // for the roughness parameters of its caption, with Carter's smooth curve for comparison.
 // With K1* = K2* (the caption's settings) G = (2/pi) lambda r and xi/f depends on Q/f
 // alone, so the curves do not depend on the friction coefficient used here.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -50,6 +54,39 @@ std::vector<figure_curve> curves_of(const std::string& which) {
     return curves;
 }
 
+// The tables of docs/reproduction.md: P_H/P2 and xi/f at four loads per curve, at n and
+// 2n; their difference is each value's convergence estimate.
+void write_table(const std::filesystem::path& file, const std::string& which, const std::vector<figure_curve>& curves,
+                 const solver_options& options) {
+    const double ratios[] = {0.1, 0.5, 0.9, 0.99};
+    solver_options fine = options;
+    fine.n = std::min(2 * options.nodes(), max_nodes);
+    std::ofstream md(file);
+    if (!md) throw input_error("cannot write '" + file.string() + "'");
+    md << "Fig. " << which << ", method " << to_string(options.how) << ": value at n = " << fine.nodes()
+       << ", and in brackets its difference from n = " << options.nodes() << ".\n\n"
+       << "| curve | P_H/P2 |";
+    for (double r : ratios) md << " xi/f at Q/f = " << r << " |";
+    md << "\n|---|---|";
+    for (std::size_t i = 0; i < std::size(ratios); ++i) md << "---|";
+    md << "\n";
+    auto cell = [&md](double fine_value, double coarse_value) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, " %.10f (%.1e) |", fine_value, std::fabs(fine_value - coarse_value));
+        md << buf;
+    };
+    for (const auto& c : curves) {
+        contact coarse(c.surfaces, figure_friction, options), precise(c.surfaces, figure_friction, fine);
+        md << "| " << c.legend << " |";
+        cell(precise.normal().lambda, coarse.normal().lambda);
+        for (double r : ratios)
+            cell(precise.point(r * figure_friction).xi / figure_friction,
+                 coarse.point(r * figure_friction).xi / figure_friction);
+        md << "\n";
+    }
+    if (!md.flush()) throw input_error("cannot write '" + file.string() + "'");
+}
+
 void write_gnuplot(const std::filesystem::path& script, const std::filesystem::path& csv,
                    const std::filesystem::path& stem, const std::string& which,
                    const std::vector<figure_curve>& curves) {
@@ -68,10 +105,12 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
     for (const auto& t : terminals) {
         gp << "set terminal " << t[0] << "\n"
            << "set output '" << stem.string() << t[1] << "'\n"
-           << "plot '" << csv.string() << "' using 2:" << 4 + 2 * static_cast<int>(curves.size())
-           << " with lines lw 2 dt 2 lc rgb 'black' title 'Carter (smooth cylinders)'";
-        for (std::size_t i = 0; i < curves.size(); ++i)
+           << "plot '" << csv.string() << "' using 2:3 with lines lw 2 title '" << curves[0].legend << "'";
+        for (std::size_t i = 1; i < curves.size(); ++i)
             gp << ", \\\n     '' using 2:" << 3 + 2 * i << " with lines lw 2 title '" << curves[i].legend << "'";
+        // Carter last and dashed, so that a curve lying on it (T = 0) stays visible.
+        gp << ", \\\n     '' using 2:" << 3 + 2 * curves.size()
+           << " with lines lw 1.5 dt 2 lc rgb 'black' title 'Carter (smooth cylinders)'";
         gp << "\n";
     }
     gp << "unset output\n";
@@ -127,6 +166,7 @@ int run_figure(const figure_options& o) {
     }
     if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
 
+    write_table(std::filesystem::path(stem.string() + "-table.md"), o.which, curves, options);
     const auto script = std::filesystem::path(stem.string() + ".gp");
     write_gnuplot(script, csv, stem, o.which, curves);
     if (!o.plot) return 0;
