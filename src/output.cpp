@@ -1,11 +1,16 @@
 #include "roughroll/output.hpp"
 
-#include <iomanip>
-#include <limits>
+#include <charconv>
 
 #include "roughroll/carter.hpp"
 
 namespace roughroll {
+
+std::string shortest(double x) {
+    char buffer[32];
+    const std::to_chars_result result = std::to_chars(buffer, buffer + sizeof buffer, x + 0.0);  // no -0
+    return std::string(buffer, result.ptr);
+}
 
 nlohmann::json to_json(const point_report& r) {
     const auto& s = r.solution;
@@ -18,8 +23,12 @@ nlohmann::json to_json(const point_report& r) {
         {"stick_margin", s.checks.stick_margin},
         {"slip_margin", s.checks.slip_margin},
     };
+    nlohmann::json estimate = nullptr;
+    if (r.estimate)
+        estimate = {{"hertz_load_ratio", r.estimate->lambda}, {"c0", r.estimate->c0}, {"xi", r.estimate->xi}};
     return {
         {"label", r.label},
+        {"error_estimate", estimate},
         {"Q", s.Q},
         {"f", s.f},
         {"c0", s.c0},
@@ -42,30 +51,33 @@ nlohmann::json to_json(const point_report& r) {
 void write_summary(std::ostream& out, const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
-    const auto old = out.precision(std::numeric_limits<double>::max_digits10);
     if (!r.label.empty()) out << r.label << "\n";
-    out << "  Q = P1/P2           " << s.Q << "   (f = " << s.f << ")\n"
-        << "  P_H/P2              " << r.normal.lambda << "\n"
-        << "  gamma_0n            " << r.normal.gamma << "\n"
-        << "  c0 = c/a            " << s.c0 << "   (Carter " << smooth.c0 << ")\n"
-        << "  xi (creep)          " << s.xi << "   (Carter " << smooth.xi << ")\n"
-        << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n"
-        << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "
-        << s.checks.pressure_margin << ", stick " << s.checks.stick_margin << ", slip " << s.checks.slip_margin
-        << ")\n"
-        << "  seconds             " << r.seconds << "\n";
-    out.precision(old);
+    out << "  Q = P1/P2           " << shortest(s.Q) << "   (f = " << shortest(s.f) << ")\n"
+        << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
+        << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
+        << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"
+        << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
+        << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
+    if (r.estimate)
+        out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
+            << ", xi " << shortest(r.estimate->xi) << "   (difference from n/2)\n";
+    out << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "
+        << shortest(s.checks.pressure_margin) << ", stick " << shortest(s.checks.stick_margin) << ", slip "
+        << shortest(s.checks.slip_margin) << ")\n"
+        << "  seconds             " << shortest(r.seconds) << "\n";
 }
 
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve) {
-    const auto old = out.precision(std::numeric_limits<double>::max_digits10);
-    out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold\n";
+    out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate\n";
     for (const auto& row : curve) {
         const auto& s = row.solution;
-        out << s.Q << ',' << s.Q / s.f << ',' << s.c0 << ',' << s.xi << ',' << s.xi / s.f << ',' << row.smooth.xi
-            << ',' << row.smooth.c0 << ',' << (s.checks.hold() ? 1 : 0) << '\n';
+        out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
+            << shortest(s.xi / s.f) << ',' << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ','
+            << (s.checks.hold() ? 1 : 0) << ',';
+        if (row.estimate) out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi);
+        else out << ',';
+        out << '\n';
     }
-    out.precision(old);
 }
 
 }  // namespace roughroll

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "roughroll/carter.hpp"
@@ -11,6 +12,15 @@
 #include "roughroll/tangential_problem.hpp"
 
 namespace roughroll {
+
+// The difference between a point at n and the same point at n/2, per quantity. For a method
+// of order p it exceeds the error at n by about 2^p - 1 once n is in the asymptotic range
+// (a conservative estimate); docs/performance.md checks it against finer solutions.
+struct error_estimate {
+    double lambda;  // P_H/P2
+    double c0;
+    double xi;
+};
 
 class contact {
 public:
@@ -23,7 +33,14 @@ public:
 
     tangential_solution point(double Q) { return tangential_->solve(Q); }
 
+    // The estimate for a solution s of this contact (solves the coarse problem once, lazily).
+    // Empty below 2 * min_nodes, where no coarser rule exists.
+    std::optional<error_estimate> estimate(const tangential_solution& s);
+
 private:
+    roughness surfaces_;
+    solver_options options_;
+    std::unique_ptr<contact> coarse_;
     double f_;
     double normal_seconds_;
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
@@ -33,7 +50,8 @@ private:
 // One row of a creep curve.
 struct curve_point {
     tangential_solution solution;
-    carter_point smooth;  // Carter's curve at the same Q
+    carter_point smooth;                      // Carter's curve at the same Q
+    std::optional<error_estimate> estimate;  // against n/2
 };
 
 // Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense

@@ -1,6 +1,7 @@
 // Results as the user reads them: one creep point as JSON or text, a creep curve as CSV.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -11,17 +12,22 @@
 
 namespace roughroll {
 
+// The shortest text that reads back as x (std::to_chars): exact and readable.
+std::string shortest(double x);
+
 struct point_report {
     std::string label;
     const normal_solution& normal;
     const tangential_solution& solution;
     double seconds;  // wall time of the normal and tangential solves
+    std::optional<error_estimate> estimate;
 };
 
 nlohmann::json to_json(const point_report& r);
 void write_summary(std::ostream& out, const point_report& r);
 
-// Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold; digits to round-trip.
+// Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,
+// xi_error_estimate (empty without an estimate); digits to round-trip.
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve);
 
 }  // namespace roughroll

@@ -1,22 +1,49 @@
-// Subcommands of the CLI that live in their own files.
+// Subcommands of the CLI that live in their own files, and the scene options they share.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "roughroll/scene.hpp"
+
 namespace roughroll::cli {
+
+// SCENE [--n N] [--method NAME]: a scene file and the solver overrides every
+// scene-based subcommand accepts (defined in main.cpp).
+struct scene_options {
+    std::string path;
+    std::optional<int> n;
+    std::optional<std::string> method_name;
+};
+
+void add_scene_options(CLI::App* cmd, scene_options& o);
+scene load_scene(const scene_options& o);  // the file, with the command line's overrides
 
 struct figure_options {
     std::string which;      // "2a" or "2b"
     std::string out = "figures";
     int points = 101;       // creep points per curve
-    int n = 0;              // 0: the method's default
+    std::optional<int> n;   // unset: the method's default
     std::string method_name = "product";
     bool plot = true;
 };
 
 void add_figure_options(CLI::App* cmd, figure_options& o);
 int run_figure(const figure_options& o);
+
+// `roughroll traction SCENE`: p, p1, +-f p and v on a grid of r, as CSV, gnuplot, SVG, PNG.
+struct traction_options {
+    scene_options scene;
+    std::optional<double> Q;  // overrides the scene's Q
+    int points = 401;         // grid points on [-1, 1]
+    std::string out = "figures";
+    std::string name;         // file stem after "traction-" (default: the scene file's stem)
+    bool plot = true;
+};
+
+void add_traction_options(CLI::App* cmd, traction_options& o);
+int run_traction(const traction_options& o);
 
 }  // namespace roughroll::cli

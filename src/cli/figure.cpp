@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "roughroll/contact.hpp"
 #include "roughroll/error.hpp"
+#include "roughroll/quadrature.hpp"
 
 namespace roughroll::cli {
 
@@ -131,7 +132,10 @@ void add_figure_options(CLI::App* cmd, figure_options& o) {
 int run_figure(const figure_options& o) {
     solver_options options;
     options.how = method_from_string(o.method_name);
-    options.n = o.n;
+    if (o.n) {
+        check_node_count(*o.n);
+        options.n = *o.n;
+    }
     const auto curves = curves_of(o.which);
     const auto loads = curve_loads(o.points, figure_friction);
 

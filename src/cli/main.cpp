@@ -11,18 +11,11 @@
 #include "cli/commands.hpp"
 #include "roughroll/contact.hpp"
 #include "roughroll/error.hpp"
+#include "roughroll/quadrature.hpp"
 #include "roughroll/output.hpp"
 #include "roughroll/scene.hpp"
 
 namespace roughroll::cli {
-
-namespace {
-
-struct scene_options {
-    std::string path;
-    std::optional<int> n;
-    std::optional<std::string> method_name;
-};
 
 void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
@@ -32,10 +25,15 @@ void add_scene_options(CLI::App* cmd, scene_options& o) {
 
 scene load_scene(const scene_options& o) {
     scene s = read_scene(o.path);
-    if (o.n) s.solver.n = *o.n;
+    if (o.n) {
+        check_node_count(*o.n);  // 0 would otherwise mean the method's default
+        s.solver.n = *o.n;
+    }
     if (o.method_name) s.solver.how = method_from_string(*o.method_name);
     return s;
 }
+
+namespace {
 
 int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
     const scene s = load_scene(o);
@@ -44,7 +42,7 @@ int run_point(const scene_options& o, std::optional<double> Q_option, bool json)
     contact c(s.surfaces, s.friction, s.solver);
     const tangential_solution solution = c.point(Q);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const point_report report{s.label, c.normal(), solution, seconds};
+    const point_report report{s.label, c.normal(), solution, seconds, c.estimate(solution)};
     if (json)
         std::cout << to_json(report).dump(2) << "\n";
     else
@@ -95,6 +93,11 @@ int main(int argc, char** argv) {
     CLI::App* figure = app.add_subcommand("figure", "reproduce the paper's Fig. 2a or 2b (CSV, SVG, PNG)");
     add_figure_options(figure, fig);
 
+    traction_options trac;
+    CLI::App* traction = app.add_subcommand(
+        "traction", "tractions p, p1 and the limits +-f p over the contact for one load (CSV, SVG, PNG)");
+    add_traction_options(traction, trac);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -107,6 +110,7 @@ int main(int argc, char** argv) {
         if (*point) return run_point(point_scene, Q, json);
         if (*curve) return run_curve(curve_scene, points, csv);
         if (*figure) return run_figure(fig);
+        if (*traction) return run_traction(trac);
     } catch (const roughroll::error& e) {
         std::cerr << "roughroll: error: " << e.what() << "\n";
         return 2;

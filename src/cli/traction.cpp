@@ -1,0 +1,281 @@
+// `roughroll traction SCENE`: the tractions of one creep point over the contact, for a
+// reader of the paper to see (3.2)-(3.5) at work. On a grid of r = x1/a over [-1, 1]:
+// the normal pressure p(r) = a p2/P2, the tangential traction p1(r) = a p1/P2 of (3.15),
+// the Coulomb limits +-f p, the zone (stick on [-1, c0), slip on [c0, 1]) and the slip
+// velocity v(r) of (3.6), zero on the stick zone and with the sign of Q on the slip zone.
+// Carter's smooth solution for the same Q and f is written beside them for comparison
+// (each solution on its own contact width: both integrate to 1 and to Q).
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "roughroll/carter.hpp"
+#include "roughroll/contact.hpp"
+#include "roughroll/output.hpp"
+#include "roughroll/error.hpp"
+
+namespace roughroll::cli {
+
+namespace {
+
+constexpr double two_over_pi = 0.636619772367581343076;
+
+struct traction_row {
+    double r, p, p1, v, p_smooth, p1_smooth;
+    bool stick;
+};
+
+// Carter's smooth tractions at r: Hertz's p = (2/pi) sqrt(1 - r^2) and
+// p1 = f p - (2 f/pi) sqrt(rho^2 - (r + 1 - rho)^2) on the stick zone [-1, c0],
+// rho = (1 + c0)/2, with the sign of Q.
+void smooth_tractions(double r, double Q, double f, double& p, double& p1) {
+    const carter_point cp = carter(Q, f);
+    const double rho = 0.5 * (1.0 + cp.c0);
+    p = two_over_pi * std::sqrt(std::max(0.0, 1.0 - r * r));
+    const double d = r + 1.0 - rho;
+    const double q0 = r < cp.c0 ? -two_over_pi * f * std::sqrt(std::max(0.0, rho * rho - d * d)) : 0.0;
+    p1 = (Q < 0.0 ? -1.0 : 1.0) * (f * p + q0);
+}
+
+// A label on one line: control characters (a TOML string may hold a newline) become spaces.
+std::string one_line(const std::string& text) {
+    std::string out = text;
+    for (char& c : out)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    return out;
+}
+
+// Text inside a double-quoted gnuplot string with enhanced text on: the enhanced-text
+// control characters are escaped (\\_ in the script reaches the text processor as \_),
+// so that "T_1^(1)" prints as written; " and \ are escaped for the string itself.
+std::string gnuplot_text(const std::string& text) {
+    std::string out;
+    for (const char c : one_line(text)) {
+        if (c == '"') {
+            out += "\\\"";
+        } else if (c == '\\') {
+            out += "\\\\\\\\";
+        } else {
+            if (std::string_view("^_@&~{}").find(c) != std::string_view::npos) out += "\\\\";
+            out += c;
+        }
+    }
+    return out;
+}
+
+// A path inside a single-quoted gnuplot string (no enhanced text applies to file names).
+std::string gnuplot_path(const std::filesystem::path& p) {
+    std::string out;
+    for (const char c : p.string()) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out;
+}
+
+// A path as one word for the shell of std::system.
+std::string shell_quoted(const std::string& text) {
+    std::string out = "'";
+    for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string number(double x, int digits) {
+    std::ostringstream s;
+    s << std::setprecision(digits) << x;
+    return s.str();
+}
+
+// " using 1:COLUMN ... title "TITLE"" of one curve (notitle when TITLE is empty). The
+// cairo terminals snap exactly horizontal segments wider than a pixel to the pixel grid,
+// which notches a curve at its flat top; a monotone cubic (no overshoot) through the
+// points, drawn on sub-pixel samples (set samples), avoids that and changes nothing else.
+std::string curve(int column, const std::string& style, const std::string& title) {
+    return " using 1:" + std::to_string(column) + " smooth mcsplines with lines " + style +
+           (title.empty() ? std::string(" notitle") : " title \"" + title + "\"");
+}
+
+struct plot_facts {
+    std::string title;  // first title line (gnuplot enhanced text, escaped)
+    double Q, f, c0, xi, lambda;
+    double p_max, v_max;
+    bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
+};
+
+void write_gnuplot(const std::filesystem::path& script, const std::filesystem::path& csv,
+                   const std::filesystem::path& stem, const plot_facts& k) {
+    std::ofstream gp(script);
+    if (!gp) throw input_error("cannot write '" + script.string() + "'");
+    const double f = k.f;
+    const bool negative = k.Q < 0.0;  // the mirror case: p1 follows -f p on the slip zone
+    // y range of the tractions: the pressure on top with room for the key, -f p below.
+    const double y_top = 1.45 * k.p_max;
+    const double y_bottom = -1.25 * f * k.p_max;
+    const bool has_stick = k.c0 > -1.0;
+    const bool has_slip = k.c0 < 1.0;
+    const std::string data = "'" + gnuplot_path(csv) + "'";
+    const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + number(k.Q / f, 3) + "),   f = " +
+                                 shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) + ",   {/Symbol x} = " +
+                                 number(k.xi, 3) + ",   P_H/P_2 = " + number(k.lambda, 4) +
+                                 (k.checks_hold ? "" : "   (checks (3.3), (3.4) VIOLATED)");
+    gp << "# Tractions over the contact, written by roughroll traction. Columns of the CSV:\n"
+       << "# 1 r, 2 p, 3 p1, 4 f p, 5 -f p, 6 zone, 7 slip velocity v, 8 p (Hertz), 9 p1 (Carter)\n"
+       << "set datafile separator ','\n"
+       << "c0 = " << shortest(k.c0) << "\n"
+       << "set xrange [-1:1]\n"
+       << "set samples 2000\n"  // sub-pixel steps for the monotone cubics of curve()
+       << "set grid back lc rgb '#d8d8d8'\n"
+       << "set border lw 1.2\n"
+       << "set lmargin at screen 0.13\nset rmargin at screen 0.975\n";
+    const char* terminals[][2] = {{"svg size 1000,760 enhanced font 'Helvetica,14' background '#ffffff'", ".svg"},
+                                  {"pngcairo size 1300,990 enhanced font 'Helvetica,15'", ".png"}};
+    for (const auto& t : terminals) {
+        gp << "\nset terminal " << t[0] << "\n"
+           << "set output '" << gnuplot_path(stem) << t[1] << "'\n"
+           << "set multiplot title \"" << k.title << "\\n" << subtitle << "\"\n";
+
+        // Upper panel: the tractions, the zones named above the frame.
+        gp << "set tmargin at screen 0.87\nset bmargin at screen 0.355\n"
+           << "unset xlabel\nset format x ''\nset format y '%g'\n"
+           << "set ylabel \"a p_2/P_2,   a p_1/P_2   (dimensionless)\" offset -1.5,0\n"
+           << "set yrange [" << shortest(y_bottom) << ":" << shortest(y_top) << "]\n"
+           << "set xzeroaxis lt 1 lw 1 lc rgb '#808080'\n"
+           // The key in the upper corner away from c0, so that it hides no zone boundary.
+           << "set key top " << (k.c0 > 0.0 ? "left" : "right")
+           << " box opaque samplen 2.5 spacing 1.1 font ',12' width 1\n";
+        if (has_stick)
+            gp << "set object 1 rect from -1, graph 0 to c0, graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
+               << "set label 1 \"stick zone\" at " << shortest(0.5 * (-1.0 + k.c0))
+               << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#1f4e79'\n";
+        if (has_slip)
+            gp << "set label 2 \"slip zone\" at " << shortest(0.5 * (k.c0 + 1.0))
+               << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#8c2d04'\n";
+        if (has_stick && has_slip)
+            gp << "set arrow 1 from c0, graph 0 to c0, graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
+        // Drawn in this order: the limits over p1 show p1 = f p on the slip zone (3.5).
+        // Columns 4 and 5 are f p and -f p; with Q < 0 the limit p1 follows is -f p.
+        const std::string limit = negative ? "-f p" : "f p";
+        const std::string other = negative ? "f p" : "-f p";
+        gp << "plot " << data << curve(2, "lw 3 lc rgb '#000000'", "normal pressure p") << ", \\\n     ''"
+           << curve(3, "lw 3.5 lc rgb '#1f77b4'", "tangential traction p_1") << ", \\\n     ''"
+           << curve(negative ? 5 : 4, "lw 1.5 lc rgb '#d62728'", "limit " + limit) << ", \\\n     ''"
+           << curve(negative ? 4 : 5, "lw 1.5 dt 2 lc rgb '#d62728'", other) << ", \\\n     ''"
+           << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth cylinders)") << ", \\\n     ''"
+           << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth cylinders)") << "\n";
+
+        // Lower panel: the slip velocity, zero on the stick zone (3.2), with the sign of Q
+        // on the slip zone (3.4); c0 named beside the dashed line, on the stick side.
+        gp << "unset label 1\nunset label 2\nunset key\n"
+           << "set tmargin at screen 0.325\nset bmargin at screen 0.085\n"
+           << "set format x '%g'\nset xlabel \"r = x_1/a\"\n"
+           << "set ylabel \"slip velocity v\\n(scaled as {/Symbol x})\" offset -1.5,0\n";
+        if (k.v_max > 0.0)
+            gp << "set yrange [" << shortest((negative ? -1.15 : -0.08) * k.v_max) << ":"
+               << shortest((negative ? 0.08 : 1.15) * k.v_max) << "]\n";
+        else
+            gp << "set yrange [-1:1]\n";
+        if (has_stick && has_slip) {
+            const bool left = k.c0 > -0.55;
+            gp << "set label 3 \"c_0 = " << number(k.c0, 3) << "\" at c0, graph " << (negative ? 0.25 : 0.6)
+               << (left ? " right offset -0.8,0" : " left offset 0.8,0") << " font ',14'\n";
+        }
+        gp << "plot " << data << curve(7, "lw 3 lc rgb '#2ca02c'", "") << "\n"
+           << "unset label 3\nunset object 1\nunset arrow 1\nunset multiplot\nset output\n";
+    }
+    if (!gp.flush()) throw input_error("cannot write '" + script.string() + "'");
+}
+
+}  // namespace
+
+void add_traction_options(CLI::App* cmd, traction_options& o) {
+    add_scene_options(cmd, o.scene);
+    cmd->add_option("--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
+    cmd->add_option("--points", o.points, "grid points on [-1, 1] (default 401)");
+    cmd->add_option("--out", o.out, "output folder, created if missing (default: figures)");
+    cmd->add_option("--name", o.name, "file stem after 'traction-' (default: the scene file's stem)");
+    cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
+}
+
+int run_traction(const traction_options& o) {
+    if (o.points < 3 || o.points > 100000) throw input_error("--points must lie in [3, 100000]");
+    const std::string name = o.name.empty() ? std::filesystem::path(o.scene.path).stem().string() : o.name;
+    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
+        throw input_error("--name '" + one_line(name) + "' is not a file name");
+
+    const scene s = load_scene(o.scene);
+    const double Q = load_of(s, o.Q);
+    contact c(s.surfaces, s.friction, s.solver);
+    const tangential_solution solution = c.point(Q);
+    const normal_solution& normal = c.normal();
+    tangential_solver& tangential = c.tangential();
+    const double f = s.friction;
+
+    std::vector<traction_row> rows(static_cast<std::size_t>(o.points));
+    double p_max = 0.0;
+    double v_max = 0.0;
+    for (int i = 0; i < o.points; ++i) {
+        traction_row& row = rows[i];
+        row.r = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
+        row.p = normal.pressure(row.r);
+        row.p1 = tangential.traction(solution, row.r);
+        row.stick = row.r < solution.c0;
+        row.v = row.stick ? 0.0 : tangential.slip_velocity(solution, row.r);
+        smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
+        if (!std::isfinite(row.p) || !std::isfinite(row.p1) || !std::isfinite(row.v))
+            throw numerical_error("non-finite traction at r = " + number(row.r, 17));
+        p_max = std::max(p_max, row.p);
+        v_max = std::max(v_max, std::fabs(row.v));
+    }
+
+    const std::filesystem::path dir(o.out);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw input_error("cannot create output folder '" + o.out + "': " + ec.message());
+    const auto stem = std::filesystem::absolute(dir / ("traction-" + name));
+    const auto csv = std::filesystem::path(stem.string() + ".csv");
+    std::ofstream out(csv);
+    if (!out) throw input_error("cannot write '" + csv.string() + "'");
+    out << "# roughroll traction " << one_line(o.scene.path) << (s.label.empty() ? "" : ": ") << one_line(s.label)
+        << "\n"
+        << "# Q = " << shortest(Q) << ", f = " << shortest(f) << ", c0 = " << shortest(solution.c0)
+        << ", xi = " << shortest(solution.xi) << ", P_H/P2 = " << shortest(normal.lambda)
+        << ", method = " << to_string(s.solver.how) << ", n = " << s.solver.n
+        << ", checks = " << (solution.checks.hold() ? "hold" : "VIOLATED") << "\n"
+        << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick on [-1, c0), slip on [c0, 1];"
+           " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
+    out << "r,p,p1,f_p,minus_f_p,zone,slip_velocity,p_hertz,p1_carter\n";
+    for (const auto& row : rows) {
+        out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p)
+            << ',' << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ',' << shortest(row.v) << ','
+            << shortest(row.p_smooth) << ',' << shortest(row.p1_smooth) << '\n';
+    }
+    if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
+
+    plot_facts facts{};
+    facts.title = "Tractions over the contact: " +
+                  gnuplot_text(s.label.empty() ? std::filesystem::path(o.scene.path).filename().string() : s.label);
+    facts.Q = Q;
+    facts.f = f;
+    facts.c0 = solution.c0;
+    facts.xi = solution.xi;
+    facts.lambda = normal.lambda;
+    facts.p_max = p_max;
+    facts.v_max = v_max;
+    facts.checks_hold = solution.checks.hold();
+    const auto script = std::filesystem::path(stem.string() + ".gp");
+    write_gnuplot(script, csv, stem, facts);
+    if (!o.plot) return 0;
+    const std::string command = "gnuplot " + shell_quoted(script.string());
+    if (std::system(command.c_str()) != 0) {
+        throw numerical_error("gnuplot failed on '" + script.string() +
+                              "' (is gnuplot installed?); the CSV is written");
+    }
+    return 0;
+}
+
+}  // namespace roughroll::cli
