@@ -1,7 +1,8 @@
 // `roughroll figure 2a|2b`: the paper's Fig. 2, creep force-creep curves xi/f against Q/f
 // for the roughness parameters of its caption, with Carter's smooth curve for comparison.
-// With K1* = K2* (the caption's settings) G = (2/pi) lambda r and xi/f depends on Q/f
-// alone, so the curves do not depend on the friction coefficient used here.
+// G of (3.25) does not involve f, so the stick problem divided by f depends on Q/f alone:
+// xi/f against Q/f does not depend on the friction coefficient used here (for any kernels;
+// with K1* = K2*, the caption's settings, G is moreover the linear (2/pi) lambda r).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
