@@ -39,6 +39,10 @@ private:
 // One-off: kernel_operator(rule, how, k.max_rate()).add_to(a, k).
 void add_kernel_term(gsl_matrix* a, const kernel& k, const gauss_chebyshev& rule, method how);
 
+// Whether n is fine enough for k that the error falls at the method's order (2 paper,
+// 4 product) from n on: the condition for n/2 to serve as the error estimate's companion.
+bool in_asymptotic_range(const kernel& k, int n, method how);
+
 // Throws resolution_error when `k` varies faster than `how` resolves with this n.
 // `what` names the kernel in the message ("K2* (normal)").
 void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what);

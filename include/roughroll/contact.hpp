@@ -15,7 +15,9 @@ namespace roughroll {
 
 // The difference between a point at n and the same point at n/2, per quantity. For a method
 // of order p it exceeds the error at n by about 2^p - 1 once n is in the asymptotic range
-// (a conservative estimate); docs/performance.md checks it against finer solutions.
+// (a conservative estimate); docs/performance.md checks it against finer solutions. Where
+// n/2 is below min_nodes or cannot resolve the kernel, the companion is 2n, and the
+// difference is then about the error at n itself.
 struct error_estimate {
     double lambda;  // P_H/P2
     double c0;
@@ -33,14 +35,14 @@ public:
 
     tangential_solution point(double Q) { return tangential_->solve(Q); }
 
-    // The estimate for a solution s of this contact (solves the coarse problem once, lazily).
-    // Empty below 2 * min_nodes, where no coarser rule exists.
+    // The estimate for a solution s of this contact (solves the companion problem once,
+    // lazily). Empty when neither n/2 nor 2n is available.
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
 private:
     roughness surfaces_;
     solver_options options_;
-    std::unique_ptr<contact> coarse_;
+    std::unique_ptr<contact> companion_;  // at n/2, or 2n
     double f_;
     double normal_seconds_;
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
