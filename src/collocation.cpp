@@ -23,7 +23,7 @@ kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double
     : rule_(rule), how_(how) {
     // Product integration: int l_k(eta) sqrt(1 - eta^2) K(eta - s_m) d eta for the Lagrange
     // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
-    if (how == method::product) {
+    if (how != method::paper) {  // product, and both levels of extrapolated
         const lagrange_basis basis(rule);
         sweep_.emplace(rule.collocation, rule.n, rule.n - 1, max_rate, std::cref(basis));
     }

@@ -1,6 +1,5 @@
 #include "roughroll/contact.hpp"
 
-#include <chrono>
 #include <algorithm>
 #include <cmath>
 
@@ -9,27 +8,67 @@
 
 namespace roughroll {
 
+namespace {
+// Richardson's rule for an error ~ C n^-4: levels n and n/2.
+double richardson(double fine, double coarse) { return (16.0 * fine - coarse) / 15.0; }
+
+kernel widest_kernel(const roughness& r) {
+    const double rate = std::max(kernel::normal(r).max_rate(), kernel::tangential(r).max_rate());
+    return kernel(std::vector<exponential_term>{{1.0, rate}});
+}
+}  // namespace
+
 contact::contact(const roughness& surfaces, double f, const solver_options& options)
     : surfaces_(surfaces), options_(options), f_(f) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
-    const auto start = std::chrono::steady_clock::now();
-    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), options.nodes(), options.how));
-    normal_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int n = options.nodes();
+    const bool extrapolate = options.how == method::extrapolated && !(kernel::normal(surfaces).empty() &&
+                                                                       kernel::tangential(surfaces).empty());
+    if (extrapolate) {
+        // Richardson's rule holds only where the error already falls like n^-4.
+        if (n / 2 < min_nodes || !in_asymptotic_range(widest_kernel(surfaces), n / 2, method::product))
+            throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
+                                   ": the coarse level n/2 is not in the asymptotic range of product integration "
+                                   "for these kernels; increase n or use method 'product'");
+        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product});
+    }
+    const method level = options.how == method::extrapolated ? method::product : options.how;
+    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level));
+    normal_->how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
+    if (extrapolate) {
+        reported_ = std::make_unique<normal_solution>(*normal_);
+        reported_->lambda = richardson(normal_->lambda, companion_->normal().lambda);
+    }
     tangential_ = std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces),
                                                       kernel::normal(surfaces), f);
 }
 
+tangential_solution contact::point(double Q) {
+    tangential_solution s = tangential_->solve(Q);
+    if (!reported_) return s;
+    last_fine_ = s;
+    const tangential_solution coarse = companion_->point(Q);
+    s.c0 = richardson(s.c0, coarse.c0);
+    s.xi = richardson(s.xi, coarse.xi);
+    return s;
+}
+
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    if (reported_) {
+        // Extrapolated: the difference from level n, which is 15/16 of level n's error and
+        // above the extrapolated error wherever Richardson's rule holds.
+        if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = tangential_->solve(s.Q);
+        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - last_fine_->c0),
+                              std::fabs(s.xi - last_fine_->xi)};
+    }
     if (!companion_) {
         // The same problem at n/2 when n/2 is in the asymptotic range of the method; else
         // at 2n, where the difference is (1 - 2^-p) of the error at n: it is doubled to stay
         // an upper estimate for every order p >= 1.
         const int n = options_.nodes();
-        const double rate = std::max(kernel::normal(surfaces_).max_rate(), kernel::tangential(surfaces_).max_rate());
-        const kernel widest(std::vector<exponential_term>{{1.0, rate}});
         for (int other : {n / 2, 2 * n}) {
             if (other < min_nodes || other > max_nodes) continue;
-            if (other < n && !in_asymptotic_range(widest, other, options_.how)) continue;
+            if (other < n && !in_asymptotic_range(widest_kernel(surfaces_), other, options_.how)) continue;
             try {
                 companion_ = std::make_unique<contact>(surfaces_, f_, solver_options{other, options_.how});
                 break;

@@ -4,14 +4,29 @@
 
 namespace roughroll {
 
-std::string to_string(method m) { return m == method::paper ? "paper" : "product"; }
+std::string to_string(method m) {
+    switch (m) {
+        case method::paper: return "paper";
+        case method::product: return "product";
+        case method::extrapolated: return "extrapolated";
+    }
+    return "unknown";
+}
 
-int default_nodes(method m) { return m == method::paper ? 200 : 96; }
+int default_nodes(method m) {
+    switch (m) {
+        case method::paper: return 200;
+        case method::product: return 96;
+        case method::extrapolated: return 128;
+    }
+    return 0;
+}
 
 method method_from_string(const std::string& name) {
     if (name == "paper") return method::paper;
     if (name == "product") return method::product;
-    throw input_error("unknown method '" + name + "' (known: paper, product)");
+    if (name == "extrapolated") return method::extrapolated;
+    throw input_error("unknown method '" + name + "' (known: paper, product, extrapolated)");
 }
 
 }  // namespace roughroll

@@ -91,6 +91,8 @@ INSTANTIATE_TEST_SUITE_P(
         extreme_case{"n2", equal(0.5, 0.5), 0.3, 0.5, 2, method::product, false},
         extreme_case{"n3", equal(0.5, 0.5), 0.3, 0.5, 3, method::product, false},
         extreme_case{"n500", equal(0.5, 0.5), 0.3, 0.5, 500, method::product, false},
+        extreme_case{"extrapolated_T5_A20", equal(5, 20), 0.3, 0.5, 128, method::extrapolated, false},
+        extreme_case{"extrapolated_A1000_refused", equal(1, 1000), 0.3, 0.5, 128, method::extrapolated, true},
         extreme_case{"paper_T100_A0_5", equal(100, 0.5), 0.3, 0.5, 96, method::paper, false},
         extreme_case{"paper_Qf_1e_9", equal(0.5, 0.5), 0.3, 1e-9, 96, method::paper, false},
         extreme_case{"paper_Qf_1_minus_1e_9", equal(0.5, 0.5), 0.3, 1 - 1e-9, 96, method::paper, false},

@@ -1,5 +1,9 @@
 // One scene's rolling contact: the normal problem solved once (Hertz's closed form
 // when the normal kernel is empty) and shared by every creep point of a curve.
+//
+// With method::extrapolated the contact holds two product-integration levels, n and n/2,
+// and reports P_H/P2, c0 and xi by Richardson's rule for order 4, (16 v_n - v_{n/2})/15;
+// the distributions (pressure, tractions, checks) are those of level n.
 #pragma once
 
 #include <memory>
@@ -28,12 +32,12 @@ class contact {
 public:
     contact(const roughness& surfaces, double f, const solver_options& options);
 
-    const normal_solution& normal() const { return *normal_; }
+    // The normal solution as reported (lambda extrapolated for method::extrapolated).
+    const normal_solution& normal() const { return reported_ ? *reported_ : *normal_; }
     tangential_solver& tangential() { return *tangential_; }
     double friction() const { return f_; }
-    double normal_seconds() const { return normal_seconds_; }
 
-    tangential_solution point(double Q) { return tangential_->solve(Q); }
+    tangential_solution point(double Q);
 
     // The estimate for a solution s of this contact (solves the companion problem once,
     // lazily). Empty when neither n/2 nor 2n is available.
@@ -42,11 +46,12 @@ public:
 private:
     roughness surfaces_;
     solver_options options_;
-    std::unique_ptr<contact> companion_;  // at n/2, or 2n
+    std::unique_ptr<contact> companion_;  // at n/2, or 2n; the coarse level when extrapolating
     double f_;
-    double normal_seconds_;
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
+    std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
+    std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
 };
 
 // One row of a creep curve.

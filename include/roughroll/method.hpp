@@ -2,20 +2,22 @@
 //   paper:   the node sum  sum_k w_k phi_k K(eta_k - s_m)  of (4.2), (4.4) as printed.
 //   product: product integration, int phi_n(eta) sqrt(1-eta^2) K(eta - s_m) d eta with
 //            phi_n the interpolant of the nodal values and the jump of K at eta = s_m
-//            integrated exactly (kernel_moments). Same unknowns, same collocation.
+//            integrated exactly (kernel_sweep). Same unknowns, same collocation.
+//   extrapolated: product integration at n/2 and n, combined by Richardson's rule for its
+//            order 4: v = (16 v_n - v_{n/2})/15 for P_H/P2, c0 and xi (contact.hpp).
 #pragma once
 
 #include <string>
 
 namespace roughroll {
 
-enum class method { paper, product };
+enum class method { paper, product, extrapolated };
 
 std::string to_string(method m);
 
-// Nodes used when a scene does not set n: about 1e-5 relative error in P_H/P2, c0 and xi
-// for Fig. 2's parameters with the paper's scheme at 200, about 1e-8 with product
-// integration at 96 (docs/performance.md).
+// Nodes used when a scene does not set n, for Fig. 2's parameters: relative error in
+// P_H/P2, c0 and xi about 1e-5 with the paper's scheme at 200, 5e-9 with product
+// integration at 96, 5e-11 extrapolated from 64 and 128 (docs/performance.md).
 int default_nodes(method m);
 method method_from_string(const std::string& name);  // throws input_error naming the method
 

@@ -20,7 +20,7 @@ namespace roughroll::cli {
 void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
     cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
-    cmd->add_option("--method", o.method_name, "paper or product (overrides solver.method)");
+    cmd->add_option("--method", o.method_name, "paper, product or extrapolated (overrides solver.method)");
 }
 
 scene load_scene(const scene_options& o) {
