@@ -46,4 +46,15 @@ struct traction_options {
 void add_traction_options(CLI::App* cmd, traction_options& o);
 int run_traction(const traction_options& o);
 
+struct convergence_options {
+    scene_options scene;
+    std::optional<double> Q;  // overrides the scene's Q
+    std::string out = "figures";
+    double max_seconds = 2.0;  // a method's ladder stops after a point slower than this
+    bool plot = true;
+};
+
+void add_convergence_options(CLI::App* cmd, convergence_options& o);
+int run_convergence(const convergence_options& o);
+
 }  // namespace roughroll::cli

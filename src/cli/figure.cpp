@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/output_files.hpp"
 #include "roughroll/contact.hpp"
 #include "roughroll/error.hpp"
 #include "roughroll/quadrature.hpp"
@@ -106,8 +107,8 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
                                   {"pngcairo size 1200,850 enhanced font 'Helvetica,13'", ".png"}};
     for (const auto& t : terminals) {
         gp << "set terminal " << t[0] << "\n"
-           << "set output '" << stem.string() << t[1] << "'\n"
-           << "plot '" << csv.string() << "' using 2:3 with lines lw 2 title '" << curves[0].legend << "'";
+           << "set output '" << gnuplot_path(stem.string() + t[1]) << "'\n"
+           << "plot '" << gnuplot_path(csv) << "' using 2:3 with lines lw 2 title '" << curves[0].legend << "'";
         for (std::size_t i = 1; i < curves.size(); ++i)
             gp << ", \\\n     '' using 2:" << 3 + 2 * i << " with lines lw 2 title '" << curves[i].legend << "'";
         // Carter last and dashed, so that a curve lying on it (T = 0) stays visible.
@@ -146,11 +147,7 @@ int run_figure(const figure_options& o) {
         results.push_back(creep_curve(problem, loads));
     }
 
-    const std::filesystem::path dir(o.out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw input_error("cannot create output folder '" + o.out + "': " + ec.message());
-    const auto stem = std::filesystem::absolute(dir / ("fig" + o.which));
+    const auto stem = output_stem(o.out, "fig" + o.which);
     const auto csv = std::filesystem::path(stem.string() + ".csv");
     std::ofstream out(csv);
     if (!out) throw input_error("cannot write '" + csv.string() + "'");
@@ -175,9 +172,7 @@ int run_figure(const figure_options& o) {
     const auto script = std::filesystem::path(stem.string() + ".gp");
     write_gnuplot(script, csv, stem, o.which, curves);
     if (!o.plot) return 0;
-    const std::string command = "gnuplot '" + script.string() + "'";
-    if (std::system(command.c_str()) != 0)
-        throw numerical_error("gnuplot failed on '" + script.string() + "' (is gnuplot installed?); the CSV is written");
+    run_gnuplot(script);
     return 0;
 }
 

@@ -98,6 +98,11 @@ int main(int argc, char** argv) {
         "traction", "tractions p, p1 and the limits +-f p over the contact for one load (CSV, SVG, PNG)");
     add_traction_options(traction, trac);
 
+    convergence_options conv;
+    CLI::App* convergence =
+        app.add_subcommand("convergence", "error against run time of every method for one point (CSV, SVG, PNG)");
+    add_convergence_options(convergence, conv);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -110,6 +115,7 @@ int main(int argc, char** argv) {
         if (*point) return run_point(point_scene, Q, json);
         if (*curve) return run_curve(curve_scene, points, csv);
         if (*figure) return run_figure(fig);
+        if (*convergence) return run_convergence(conv);
         if (*traction) return run_traction(trac);
     } catch (const roughroll::error& e) {
         std::cerr << "roughroll: error: " << e.what() << "\n";

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/output_files.hpp"
 #include "roughroll/carter.hpp"
 #include "roughroll/contact.hpp"
 #include "roughroll/output.hpp"
@@ -72,19 +73,6 @@ std::string gnuplot_text(const std::string& text) {
 }
 
 // A path inside a single-quoted gnuplot string (no enhanced text applies to file names).
-std::string gnuplot_path(const std::filesystem::path& p) {
-    std::string out;
-    for (const char c : p.string()) out += c == '\'' ? std::string("''") : std::string(1, c);
-    return out;
-}
-
-// A path as one word for the shell of std::system.
-std::string shell_quoted(const std::string& text) {
-    std::string out = "'";
-    for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 std::string number(double x, int digits) {
     std::ostringstream s;
     s << std::setprecision(digits) << x;
@@ -232,11 +220,7 @@ int run_traction(const traction_options& o) {
         v_max = std::max(v_max, std::fabs(row.v));
     }
 
-    const std::filesystem::path dir(o.out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw input_error("cannot create output folder '" + o.out + "': " + ec.message());
-    const auto stem = std::filesystem::absolute(dir / ("traction-" + name));
+    const auto stem = output_stem(o.out, "traction-" + name);
     const auto csv = std::filesystem::path(stem.string() + ".csv");
     std::ofstream out(csv);
     if (!out) throw input_error("cannot write '" + csv.string() + "'");
@@ -244,7 +228,7 @@ int run_traction(const traction_options& o) {
         << "\n"
         << "# Q = " << shortest(Q) << ", f = " << shortest(f) << ", c0 = " << shortest(solution.c0)
         << ", xi = " << shortest(solution.xi) << ", P_H/P2 = " << shortest(normal.lambda)
-        << ", method = " << to_string(s.solver.how) << ", n = " << s.solver.n
+        << ", method = " << to_string(normal.how) << ", n = " << normal.rule.n
         << ", checks = " << (solution.checks.hold() ? "hold" : "VIOLATED") << "\n"
         << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick on [-1, c0), slip on [c0, 1];"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
@@ -270,11 +254,7 @@ int run_traction(const traction_options& o) {
     const auto script = std::filesystem::path(stem.string() + ".gp");
     write_gnuplot(script, csv, stem, facts);
     if (!o.plot) return 0;
-    const std::string command = "gnuplot " + shell_quoted(script.string());
-    if (std::system(command.c_str()) != 0) {
-        throw numerical_error("gnuplot failed on '" + script.string() +
-                              "' (is gnuplot installed?); the CSV is written");
-    }
+    run_gnuplot(script);
     return 0;
 }
 
