@@ -22,7 +22,7 @@ roughness unequal() {
     return r;
 }
 
-method method_of(int64_t code) { return code == 0 ? method::paper : method::product; }
+method method_of(int64_t code) { return code == 0 ? method::paper : code == 1 ? method::product : method::extrapolated; }
 
 // The normal problem alone (4.2)-(4.3).
 void bm_normal(benchmark::State& state) {
@@ -40,7 +40,8 @@ void bm_point(benchmark::State& state) {
     }
 }
 
-// One point along a curve: the normal solution shared, a root search per point.
+// One point along a curve: the normal solution shared, a root search per point (args:
+// method 0 paper, 1 product, 2 extrapolated; n; 0 Fig. 2 scene, 1 unequal kernels).
 void bm_curve_point(benchmark::State& state) {
     const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
     contact c(state.range(2) ? unequal() : fig2(), 0.3, o);
@@ -67,9 +68,9 @@ void bm_figure_panel(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {24, 48, 96, 192}})->Unit(benchmark::kMillisecond);
-BENCHMARK(bm_point)->ArgsProduct({{0, 1}, {24, 48, 96, 192}})->Unit(benchmark::kMillisecond);
-BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1}, {48, 96}, {0, 1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(bm_figure_panel)->ArgsProduct({{0, 1}, {48, 96}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_point)->ArgsProduct({{0, 1, 2}, {64, 96, 128, 200}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1, 2}, {96, 128, 200}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_figure_panel)->ArgsProduct({{0, 1, 2}, {96, 128}})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();
