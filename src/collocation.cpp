@@ -65,8 +65,10 @@ void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, 
     const double h = M_PI / (rule.n + 1);
     const bool resolved = how == method::paper ? rate * h <= 0.5 : rate * 0.5 * h * h <= 1.0;
     if (resolved) return;
-    const int n_needed = how == method::paper ? static_cast<int>(std::ceil(2.0 * M_PI * rate)) - 1
-                                              : static_cast<int>(std::ceil(M_PI * std::sqrt(0.5 * rate))) - 1;
+    // In double: a rate up to the largest double must not overflow an int.
+    const double needed = how == method::paper ? std::ceil(2.0 * M_PI * rate) - 1.0
+                                               : std::ceil(M_PI * std::sqrt(0.5 * rate)) - 1.0;
+    const int n_needed = needed > max_nodes ? max_nodes + 1 : static_cast<int>(needed);
     std::ostringstream msg;
     msg << what << ": decay rate A = " << rate << " (width 1/A = " << 1.0 / rate
         << ") is below the resolution of method '" << to_string(how) << "' with n = " << rule.n

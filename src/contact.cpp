@@ -53,13 +53,19 @@ tangential_solution contact::point(double Q) {
     return s;
 }
 
+tangential_solution contact::distribution(const tangential_solution& s) {
+    if (!reported_) return s;
+    if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = tangential_->solve(s.Q);
+    return *last_fine_;
+}
+
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     if (reported_) {
         // Extrapolated: the difference from level n, which is 15/16 of level n's error and
         // above the extrapolated error wherever Richardson's rule holds.
-        if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = tangential_->solve(s.Q);
-        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - last_fine_->c0),
-                              std::fabs(s.xi - last_fine_->xi)};
+        const tangential_solution level = distribution(s);
+        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - level.c0),
+                              std::fabs(s.xi - level.xi)};
     }
     if (!companion_) {
         // The same problem at n/2 when n/2 is in the asymptotic range of the method; else

@@ -65,20 +65,24 @@ bool kernel::operator==(const kernel& other) const { return minus(other).empty()
 
 namespace {
 // Gauss-Legendre order for `count` moments: sin((j+1) theta) has up to count/2
-// oscillations per half of [0, pi], and exp(-A |cos theta - r|) varies on 1/A.
-// The margins are set by the moment test against adaptive quadrature (QAWS).
-int gauss_legendre_order(int count, double max_rate) {
-    return count + 24 + static_cast<int>(std::ceil(1.5 * max_rate));
-}
-
+// oscillations per half of [0, pi]; 36 more points integrate exp(-x) over x in [0, 24]
+// to rounding, so a piece is cut into segments over which A |cos theta - r| changes by at
+// most 24. The margins are set by the moment test against adaptive quadrature (QAWS).
+constexpr double segment_decay = 24.0;
 }  // namespace
 
-kernel_moments::kernel_moments(const kernel& k, int count)
-    : k_(k), count_(count), rule_(gauss_legendre_order(count, k.max_rate())), moments_(count) {}
+kernel_moments::kernel_moments(const kernel& k, int count) : k_(k), count_(count), rule_(count + 36), moments_(count) {}
 
 void kernel_moments::add_piece(double lo, double hi, double r, double side) {
     // side = sgn(eta - r) on this piece: the kernel without its jump.
     if (hi <= lo) return;
+    const double span = k_.max_rate() * (hi - lo) / segment_decay;
+    const int segments = span < 1.0 ? 1 : static_cast<int>(std::min(std::ceil(span), 1e7));
+    for (int sgm = 0; sgm < segments; ++sgm)
+        add_segment(lo + (hi - lo) * sgm / segments, lo + (hi - lo) * (sgm + 1) / segments, r, side);
+}
+
+void kernel_moments::add_segment(double lo, double hi, double r, double side) {
     const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
     for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
         const double theta = mid + half * rule_.nodes[q];

@@ -13,7 +13,8 @@ namespace {
 // Each piece between neighbouring points is cut into segments of at most pi/(degree+2)
 // in theta, over which g_v (degree <= `degree` in cos theta) turns by at most half a
 // period; 12 Gauss-Legendre points integrate that to rounding (error ~ (pi/2)^24/24!).
-// exp(-A |cos theta - x|) changes by at most A times the segment: more points for it.
+// exp(-A |cos theta - x|) changes by at most A times the segment: segments are also kept
+// below 24/A, and the order grows with A times the segment, to at most 48.
 int segment_order(double rate, double length) { return 12 + static_cast<int>(std::ceil(1.5 * rate * length)); }
 }  // namespace
 
@@ -31,7 +32,7 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
     b.back() = M_PI;
     for (std::size_t m = 0; m < count; ++m) b[m + 1] = std::acos(points[m]);
     const std::size_t pieces = count + 1;
-    const double longest = M_PI / (degree + 2);
+    const double longest = max_rate > 0.0 ? std::min(M_PI / (degree + 2), 24.0 / max_rate) : M_PI / (degree + 2);
     const gauss_legendre rule(segment_order(max_rate, longest));
     const std::size_t q = rule.nodes.size();
 

@@ -29,10 +29,18 @@ double grid_point(double lo, double hi, int i) {
 }
 }  // namespace
 
+namespace {
+// The resolution check before any workspace is sized by the kernel's rate.
+const kernel& resolved(const kernel& k, const normal_solution& normal) {
+    check_resolution(k, normal.rule, normal.how, "K1* (tangential kernel)");
+    return k;
+}
+}  // namespace
+
 tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2,
                                      double f, bool closed_form)
     : normal_(normal),
-      k1_(k1),
+      k1_(resolved(k1, normal)),
       dk_(k2.minus(k1)),
       f_(f),
       n_(normal.rule.n),
@@ -42,7 +50,6 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       dk_moments_(dk_, n_),
       k1_operator_(normal.rule, normal.how, k1.max_rate()) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
-    check_resolution(k1_, normal_.rule, normal_.how, "K1* (tangential kernel)");
     gsl_matrix_set_zero(cauchy_.get());
     add_cauchy_term(cauchy_.get(), normal_.rule);
     // Column n: -xi moves to the left of (4.4).
@@ -74,7 +81,7 @@ tangential_solution tangential_solver::solve_system(double c0) {
     const auto& rule = normal_.rule;
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
-    gsl_matrix_memcpy(a, cauchy_.get());
+    gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
     k1_operator_.add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
@@ -145,7 +152,7 @@ tangential_solution tangential_solver::carter_solution(double Q) {
     s.xi = cp.xi;
     s.Q = Q;
     s.sign = 1.0;
-    s.psi_b = {-M_2_PI * f_ * s.rho()};
+    if (s.rho() > 0.0) s.psi_b = {-M_2_PI * f_ * s.rho()};  // no stick zone at |Q| = f
     s.rcond = 1.0;
     return s;
 }
@@ -203,7 +210,9 @@ tangential_solution tangential_solver::solve(double Q) {
         gsl_guard();
         root_solver_ptr brent(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
         if (!brent) throw numerical_error("cannot allocate the Brent root solver");
-        gsl_check(gsl_root_fsolver_set(brent.get(), &fn, -1.0, 1.0), "Brent search for c0: bracket [-1, 1]");
+        const int set = gsl_root_fsolver_set(brent.get(), &fn, -1.0, 1.0);
+        if (ctx.failure) std::rethrow_exception(ctx.failure);
+        gsl_check(set, "Brent search for c0: bracket [-1, 1]");
         int status = GSL_CONTINUE;
         int iter = 0;
         while (status == GSL_CONTINUE && iter < max_brent_iterations) {
@@ -278,8 +287,21 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
 }
 
 double tangential_solver::slip_velocity(const tangential_solution& s, double r) {
-    if (r <= s.c0) return 0.0;
-    return s.sign * slip_velocity_magnitude(s, {r}).front();
+    return slip_velocity(s, std::vector<double>{r}).front();
+}
+
+std::vector<double> tangential_solver::slip_velocity(const tangential_solution& s, const std::vector<double>& r) {
+    // The sweep wants points in descending order: sort a copy, keep the way back.
+    std::vector<std::size_t> order(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&r](std::size_t a, std::size_t b) { return r[a] > r[b]; });
+    std::vector<double> slip;
+    for (std::size_t i : order)
+        if (r[i] > s.c0) slip.push_back(std::min(r[i], 1.0));
+    const std::vector<double> v = slip_velocity_magnitude(s, slip);
+    std::vector<double> out(r.size(), 0.0);  // 0 on the stick zone (3.2)
+    for (std::size_t k = 0; k < slip.size(); ++k) out[order[k]] = s.sign * v[k];
+    return out;
 }
 
 traction_checks tangential_solver::check(const tangential_solution& s) {
@@ -287,17 +309,21 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     c.pressure_margin = std::numeric_limits<double>::infinity();
     c.stick_margin = std::numeric_limits<double>::infinity();
     c.slip_margin = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < check_points; ++i) c.pressure_margin = std::min(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+    // A NaN margin must read as a failed check: min() would drop it.
+    auto lower = [](double& margin, double v) {
+        if (!(v >= margin)) margin = v;
+    };
+    for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
     if (s.c0 > -1.0) {
         for (int i = 0; i < check_points; ++i) {
             const double r = grid_point(-1.0, s.c0, i);
-            c.stick_margin = std::min(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
+            lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
         }
     }
     if (s.c0 < 1.0) {
         std::vector<double> grid(check_points);
         for (int i = 0; i < check_points; ++i) grid[i] = grid_point(s.c0, 1.0, i);  // descending
-        for (double v : slip_velocity_magnitude(s, grid)) c.slip_margin = std::min(c.slip_margin, v / f_);
+        for (double v : slip_velocity_magnitude(s, grid)) lower(c.slip_margin, v / f_);
     }
     c.pressure_holds = c.pressure_margin >= 0.0;
     c.stick_holds = c.stick_margin >= 0.0;

@@ -39,6 +39,11 @@ public:
 
     tangential_solution point(double Q);
 
+    // The solution whose distributions (tractions, slip velocity) belong with s: s itself,
+    // or for method::extrapolated the level-n solution at the same Q, whose c0 and xi are
+    // level n's (within the error estimate of the extrapolated ones).
+    tangential_solution distribution(const tangential_solution& s);
+
     // The estimate for a solution s of this contact (solves the companion problem once,
     // lazily). Empty when neither n/2 nor 2n is available.
     std::optional<error_estimate> estimate(const tangential_solution& s);

@@ -63,6 +63,7 @@ public:
 
 private:
     void add_piece(double theta_lo, double theta_hi, double r, double side);
+    void add_segment(double theta_lo, double theta_hi, double r, double side);
 
     kernel k_;
     int count_;

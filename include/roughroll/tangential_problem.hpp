@@ -69,6 +69,8 @@ public:
     std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ...
     double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
+    // v at many points of the slip zone (any order), in one sweep.
+    std::vector<double> slip_velocity(const tangential_solution& s, const std::vector<double>& r);
 
     const normal_solution& normal() const { return normal_; }
 

@@ -192,27 +192,34 @@ void add_traction_options(CLI::App* cmd, traction_options& o) {
 int run_traction(const traction_options& o) {
     if (o.points < 3 || o.points > 100000) throw input_error("--points must lie in [3, 100000]");
     const std::string name = o.name.empty() ? std::filesystem::path(o.scene.path).stem().string() : o.name;
-    if (name.empty() || name.find('/') != std::string::npos || name == "." || name == "..")
+    const bool control = std::any_of(name.begin(), name.end(), [](char ch) {
+        return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
+    });
+    if (name.empty() || control || name.find('/') != std::string::npos || name == "." || name == "..")
         throw input_error("--name '" + one_line(name) + "' is not a file name");
 
     const scene s = load_scene(o.scene);
     const double Q = load_of(s, o.Q);
     contact c(s.surfaces, s.friction, s.solver);
     const tangential_solution solution = c.point(Q);
+    const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi
     const normal_solution& normal = c.normal();
     tangential_solver& tangential = c.tangential();
     const double f = s.friction;
 
     std::vector<traction_row> rows(static_cast<std::size_t>(o.points));
+    std::vector<double> grid(rows.size());
+    for (int i = 0; i < o.points; ++i) grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
+    const std::vector<double> velocity = tangential.slip_velocity(level, grid);
     double p_max = 0.0;
     double v_max = 0.0;
     for (int i = 0; i < o.points; ++i) {
         traction_row& row = rows[i];
-        row.r = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
+        row.r = grid[i];
         row.p = normal.pressure(row.r);
-        row.p1 = tangential.traction(solution, row.r);
-        row.stick = row.r < solution.c0;
-        row.v = row.stick ? 0.0 : tangential.slip_velocity(solution, row.r);
+        row.p1 = tangential.traction(level, row.r);
+        row.stick = row.r < level.c0;
+        row.v = row.stick ? 0.0 : velocity[i];
         smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
         if (!std::isfinite(row.p) || !std::isfinite(row.p1) || !std::isfinite(row.v))
             throw numerical_error("non-finite traction at r = " + number(row.r, 17));
@@ -245,7 +252,7 @@ int run_traction(const traction_options& o) {
                   gnuplot_text(s.label.empty() ? std::filesystem::path(o.scene.path).filename().string() : s.label);
     facts.Q = Q;
     facts.f = f;
-    facts.c0 = solution.c0;
+    facts.c0 = level.c0;  // the stick zone the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;
