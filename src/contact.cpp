@@ -65,7 +65,7 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
         // above the extrapolated error wherever Richardson's rule holds.
         const tangential_solution level = distribution(s);
         return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - level.c0),
-                              std::fabs(s.xi - level.xi)};
+                              std::fabs(s.xi - level.xi), "level n"};
     }
     if (!companion_) {
         // The same problem at n/2 when n/2 is in the asymptotic range of the method; else
@@ -84,9 +84,10 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
         if (!companion_) return std::nullopt;
     }
     const tangential_solution c = companion_->point(s.Q);
-    const double scale = companion_->options_.nodes() > options_.nodes() ? 2.0 : 1.0;
+    const bool finer = companion_->options_.nodes() > options_.nodes();
+    const double scale = finer ? 2.0 : 1.0;
     return error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda),
-                          scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi)};
+                          scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi), finer ? "2n (doubled)" : "n/2"};
 }
 
 std::vector<double> curve_loads(int points, double f) {

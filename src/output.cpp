@@ -25,7 +25,10 @@ nlohmann::json to_json(const point_report& r) {
     };
     nlohmann::json estimate = nullptr;
     if (r.estimate)
-        estimate = {{"hertz_load_ratio", r.estimate->lambda}, {"c0", r.estimate->c0}, {"xi", r.estimate->xi}};
+        estimate = {{"hertz_load_ratio", r.estimate->lambda},
+                    {"c0", r.estimate->c0},
+                    {"xi", r.estimate->xi},
+                    {"against", r.estimate->against}};
     return {
         {"label", r.label},
         {"error_estimate", estimate},
@@ -60,7 +63,9 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
-            << ", xi " << shortest(r.estimate->xi) << "   (difference from n/2)\n";
+            << ", xi " << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
+    else
+        out << "  error estimate      unavailable (n/2 too coarse for the kernels, 2n above the largest n)\n";
     out << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "
         << shortest(s.checks.pressure_margin) << ", stick " << shortest(s.checks.stick_margin) << ", slip "
         << shortest(s.checks.slip_margin) << ")\n"

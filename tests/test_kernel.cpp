@@ -117,18 +117,24 @@ TEST(KernelSweep, AgreesWithMomentsAtSortedPoints) {
         EXPECT_NEAR(swept[m], moments.integrate(b, points[m]), 1e-14) << "x = " << points[m];
 }
 
-TEST(KernelSweep, LagrangeBasisReproducesNodalValues) {
+TEST(KernelSweep, LagrangeBasisMatchesTheProductFormula) {
+    // Off the nodes, l_k(x) = prod_{j != k} (x - eta_j)/(eta_k - eta_j): wrong barycentric
+    // weights would pass a test on the nodes or of the partition of unity, not this one.
     const gauss_chebyshev rule(11);
     const lagrange_basis basis(rule);
     std::vector<double> l(rule.n);
-    for (int k = 0; k < rule.n; ++k) {
-        basis((k + 1) * M_PI / (rule.n + 1), l.data());  // on node k
-        for (int i = 0; i < rule.n; ++i) EXPECT_NEAR(l[i], i == k ? 1.0 : 0.0, 1e-14);
+    for (double theta : {0.05, 0.3, 1.234, 2.0, 3.1}) {
+        basis(theta, l.data());
+        const double x = std::cos(theta);
+        for (int k = 0; k < rule.n; ++k) {
+            double product = 1.0;
+            for (int j = 0; j < rule.n; ++j)
+                if (j != k) product *= (x - rule.nodes[j]) / (rule.nodes[k] - rule.nodes[j]);
+            EXPECT_NEAR(l[k], product, 1e-13) << "theta = " << theta << ", k = " << k;
+        }
     }
-    basis(0.3, l.data());  // partition of unity between nodes
-    double sum = 0.0;
-    for (double v : l) sum += v;
-    EXPECT_NEAR(sum, 1.0, 1e-14);
+    basis(3 * M_PI / (rule.n + 1), l.data());  // on node 2: the unit vector
+    for (int i = 0; i < rule.n; ++i) EXPECT_EQ(l[i], i == 2 ? 1.0 : 0.0);
 }
 
 TEST(KernelSweep, RejectsUnsortedPoints) {

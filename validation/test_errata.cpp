@@ -1,4 +1,4 @@
-// The errata of formulation-notes.md that change a number, each shown by solving the
+// The errata of docs/formulation.md (section 4) that change a number, each shown by solving the
 // paper as printed next to the consistent formulation the library solves. The printed
 // variants live here only: the library never solves them.
 //
@@ -256,7 +256,7 @@ TEST(Errata, E6MissingJacobian) {
                     ns[i], ok.c0, printed.c0, smooth.c0, ok.xi, printed.xi, res_ok[i], res_printed[i]);
     }
     // Consistent: the residual is discretisation error of the paper's scheme (second order
-    // for kernels with a jump, formulation-notes section 5): it falls by about 4 from
+    // for kernels with a jump, docs/formulation.md, section 3): it falls by about 4 from
     // n = 48 to 96 (accept more than 3). Printed: the residual is the missing Jacobian,
     // a model error that does not fall with n (accept a change below 1.5x) and exceeds
     // the consistent one by orders of magnitude (accept more than 100x).
@@ -326,7 +326,7 @@ TEST(Errata, E8NodeSumG) {
         const double err_sum = solve_for(normal, k1, f, G_sum, Q, {}).c0 - c0_ref;
         std::printf("E8 n = %d: c0 error library %.3e, node sum %.3e\n", n, err_lib, err_sum);
         if (n > 40) {
-            // Second order (formulation-notes section 5): about 4 per doubling, accept 3 to 5.3.
+            // Second order (docs/formulation.md, section 3): about 4 per doubling, accept 3 to 5.3.
             EXPECT_GT(previous_lib / err_lib, 3.0) << "n = " << n << ": " << previous_lib << " -> " << err_lib;
             EXPECT_LT(previous_lib / err_lib, 5.3) << "n = " << n << ": " << previous_lib << " -> " << err_lib;
         }

@@ -1,4 +1,4 @@
-// Physical claims of the paper and of formulation-notes section 3, on every solution:
+// Physical claims of the paper and of docs/formulation.md (2(c), 2(h)), on every solution:
 // P_H/P2 > 1 (roughness adds compliance, E2), creep above Carter's (Sec. 4), the
 // inequalities (3.3)-(3.4), and the special loads Q = 0, |Q| = f, Q < 0.
 #include <cmath>
@@ -26,7 +26,6 @@ TEST_P(Physical, LoadRatioCreepAndInequalities) {
     const double f = 0.3;
     contact c(rough(T, A), f, solver_options{64, how});
     EXPECT_GT(c.normal().lambda, 1.0);
-    EXPECT_TRUE(c.normal().lambda > 1.0);
     for (double ratio : {0.001, 0.1, 0.5, 0.9, 0.99, 1.0}) {
         const auto s = c.point(ratio * f);
         EXPECT_GT(s.xi, carter(ratio * f, f).xi) << "Q/f = " << ratio;

@@ -29,6 +29,12 @@ roughness equal(double T, double A) {
     return r;
 }
 
+roughness tangential_only(double T, double A) {  // K2* empty: only the tangential check can refuse
+    roughness r;
+    r.cylinder1.tangential = {T, A};
+    return r;
+}
+
 roughness scales() {  // both cylinders rough, parameters four decades apart
     roughness r;
     r.cylinder1.tangential = {0.01, 0.1};
@@ -83,6 +89,9 @@ INSTANTIATE_TEST_SUITE_P(
         extreme_case{"T1_A1000", equal(1, 1000), 0.3, 0.5, 96, method::product, false},
         extreme_case{"T1e4_A1000", equal(1e4, 1000), 0.3, 0.5, 200, method::product, false},
         extreme_case{"T1_A1000_n32", equal(1, 1000), 0.3, 0.5, 32, method::product, true},
+        extreme_case{"tangential_A3e4_n20", tangential_only(1, 3e4), 0.3, 0.5, 20, method::product, true},
+        extreme_case{"tangential_A1e300_n20", tangential_only(1, 1e300), 0.3, 0.5, 20, method::product, true},
+        extreme_case{"tangential_A1000_n200", tangential_only(1, 1000), 0.3, 0.5, 200, method::product, false},
         extreme_case{"Qf_1e_9", equal(0.5, 0.5), 0.3, 1e-9, 96, method::product, false},
         extreme_case{"Qf_1_minus_1e_9", equal(0.5, 0.5), 0.3, 1 - 1e-9, 96, method::product, false},
         extreme_case{"f_1e_12", equal(0.5, 0.5), 1e-12, 0.5, 96, method::product, false},

@@ -23,9 +23,10 @@ namespace roughroll {
 // n/2 is below min_nodes or cannot resolve the kernel, the companion is 2n, and the
 // difference is then about the error at n itself.
 struct error_estimate {
-    double lambda;  // P_H/P2
+    double lambda;        // P_H/P2
     double c0;
     double xi;
+    const char* against;  // "n/2", "2n (doubled)" or "level n" (extrapolated)
 };
 
 class contact {

@@ -12,7 +12,7 @@
 //   # [cylinder2.tangential], [cylinder2.normal] likewise; a missing table is smooth
 //   [solver]
 //   n = 96                       # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
-//   method = "product"           # or "paper"
+//   method = "product"           # or "paper", "extrapolated"
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
 // a non-finite or negative T or A, a table with T or A missing, a non-positive f,

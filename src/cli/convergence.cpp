@@ -134,7 +134,7 @@ int run_convergence(const convergence_options& o) {
        << "set format y '10^{%L}'\n"
        << "set xlabel 'run time of one point (s): normal solve, Brent search for c_0, checks'\n"
        << "set ylabel 'largest error in P_H/P_2, c_0, {/Symbol x} (relative; c_0 absolute)'\n"
-       << "set title 'Error against run time: " << name << ", Q = " << shortest(Q) << "'\n";
+       << "set title 'Error against run time: " << gnuplot_path(name) << ", Q = " << shortest(Q) << "' noenhanced\n";
     const char* terminals[][2] = {{"svg size 900,640 enhanced font 'Helvetica,13'", ".svg"},
                                   {"pngcairo size 1200,850 enhanced font 'Helvetica,13'", ".png"}};
     for (const auto& t : terminals) {

@@ -63,7 +63,10 @@ void write_table(const std::filesystem::path& file, const std::string& which, co
                  const solver_options& options) {
     const double ratios[] = {0.1, 0.5, 0.9, 0.99};
     solver_options fine = options;
-    fine.n = std::min(2 * options.nodes(), max_nodes);
+    fine.n = 2 * options.nodes();
+    if (fine.n > max_nodes)
+        throw input_error("the figure's table needs 2n <= " + std::to_string(max_nodes) +
+                          " for its convergence estimates; use n <= " + std::to_string(max_nodes / 2));
     std::ofstream md(file);
     if (!md) throw input_error("cannot write '" + file.string() + "'");
     md << "Fig. " << which << ", method " << to_string(options.how) << ": value at n = " << fine.nodes()

@@ -72,7 +72,7 @@ std::string gnuplot_text(const std::string& text) {
     return out;
 }
 
-// A path inside a single-quoted gnuplot string (no enhanced text applies to file names).
+// x with `digits` significant digits, for the plot's labels.
 std::string number(double x, int digits) {
     std::ostringstream s;
     s << std::setprecision(digits) << x;
