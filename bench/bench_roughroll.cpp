@@ -1,6 +1,8 @@
 // Timings of the solvers on Fig. 2's moderate scene (T = A = 0.5, equal kernels) and on
 // an unequal-kernel scene. Run: build/bench/bench_roughroll --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true   (medians are what docs/performance.md quotes)
+#include <utility>
+
 #include <benchmark/benchmark.h>
 
 #include "roughroll/contact.hpp"
@@ -53,16 +55,27 @@ void bm_curve_point(benchmark::State& state) {
     }
 }
 
-// A whole Fig. 2 panel: three curves of 100 points.
-void bm_figure_panel(benchmark::State& state) {
+// One point of a curve swept in c0 (no root search), with its checks and estimate.
+void bm_swept_point(benchmark::State& state) {
     const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
-    const auto loads = curve_loads(100, 0.3);
+    contact c(state.range(2) ? unequal() : fig2(), 0.3, o);
+    std::size_t i = 0;
     for (auto _ : state) {
-        for (double T : {0.0, 0.5, 1.0}) {
+        benchmark::DoNotOptimize(c.at_stick_end(0.98 - 1.96 * static_cast<double>(i % 99) / 98).solution.xi);
+        ++i;
+    }
+}
+
+// The whole Fig. 2 as `roughroll figure` computes it (without writing files): six curves
+// of 100 points swept in c0, normal problems included.
+void bm_figure(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    for (auto _ : state) {
+        for (auto [T, A] : {std::pair{0.0, 0.5}, {0.5, 0.5}, {1.0, 0.5}, {0.5, 0.0}, {0.5, 0.5}, {0.5, 1.0}}) {
             roughness r;
-            r.cylinder1.tangential = r.cylinder1.normal = {T, 0.5};
+            r.cylinder1.tangential = r.cylinder1.normal = {T, A};
             contact c(r, 0.3, o);
-            benchmark::DoNotOptimize(creep_curve(c, loads).size());
+            benchmark::DoNotOptimize(swept_curve(c, 100).size());
         }
     }
 }
@@ -71,6 +84,7 @@ void bm_figure_panel(benchmark::State& state) {
 BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_point)->ArgsProduct({{0, 1, 2}, {64, 96, 128, 200}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1, 2}, {96, 128, 200}, {0, 1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(bm_figure_panel)->ArgsProduct({{0, 1, 2}, {96, 128}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(bm_swept_point)->ArgsProduct({{1, 2}, {96, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_figure)->ArgsProduct({{1, 2}, {96, 128}})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -44,10 +44,10 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
 }
 
 tangential_solution contact::point(double Q) {
-    tangential_solution s = tangential_->solve(Q);
-    if (!reported_) return s;
-    last_fine_ = s;
+    if (!reported_) return tangential_->solve(Q);
     const tangential_solution coarse = companion_->point(Q);
+    tangential_solution s = tangential_->solve(Q, coarse.c0);  // the coarse root brackets this one
+    last_fine_ = s;
     s.c0 = richardson(s.c0, coarse.c0);
     s.xi = richardson(s.xi, coarse.xi);
     return s;
@@ -65,8 +65,39 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
         // above the extrapolated error wherever Richardson's rule holds.
         const tangential_solution level = distribution(s);
         return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - level.c0),
-                              std::fabs(s.xi - level.xi), "level n"};
+                              std::fabs(s.xi - level.xi), 0.0, "level n"};
     }
+    if (!ensure_companion()) return std::nullopt;
+    const tangential_solution c = companion_->point(s.Q);
+    const bool finer = companion_->options_.nodes() > options_.nodes();
+    const double scale = finer ? 2.0 : 1.0;
+    return error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda),
+                          scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi), 0.0,
+                          finer ? "2n (doubled)" : "n/2"};
+}
+
+contact::swept_point contact::at_stick_end(double c0) {
+    tangential_solution s = tangential_->at_stick_end(c0);
+    if (reported_) {
+        // Richardson's rule on Q(c0) and xi(c0) at the same c0.
+        const tangential_solution coarse = companion_->tangential_->at_stick_end(c0, false);
+        const double Q = richardson(s.Q, coarse.Q), xi = richardson(s.xi, coarse.xi);
+        const error_estimate e{std::fabs(reported_->lambda - normal_->lambda), 0.0, std::fabs(xi - s.xi),
+                               std::fabs(Q - s.Q), "level n"};
+        s.Q = Q;
+        s.xi = xi;
+        return {s, e};
+    }
+    if (!ensure_companion()) return {s, std::nullopt};
+    const tangential_solution c = companion_->tangential_->at_stick_end(c0, false);
+    const bool finer = companion_->options_.nodes() > options_.nodes();
+    const double scale = finer ? 2.0 : 1.0;
+    return {s, error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda), 0.0,
+                              scale * std::fabs(s.xi - c.xi), scale * std::fabs(s.Q - c.Q),
+                              finer ? "2n (doubled)" : "n/2"}};
+}
+
+bool contact::ensure_companion() {
     if (!companion_) {
         // The same problem at n/2 when n/2 is in the asymptotic range of the method; else
         // at 2n, where the difference is (1 - 2^-p) of the error at n: it is doubled to stay
@@ -81,13 +112,8 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
             } catch (const resolution_error&) {
             }
         }
-        if (!companion_) return std::nullopt;
     }
-    const tangential_solution c = companion_->point(s.Q);
-    const bool finer = companion_->options_.nodes() > options_.nodes();
-    const double scale = finer ? 2.0 : 1.0;
-    return error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda),
-                          scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi), finer ? "2n (doubled)" : "n/2"};
+    return companion_ != nullptr;
 }
 
 std::vector<double> curve_loads(int points, double f) {
@@ -99,6 +125,21 @@ std::vector<double> curve_loads(int points, double f) {
     }
     loads.back() = f;  // exactly, so the last point is the onset of gross sliding
     return loads;
+}
+
+std::vector<curve_point> swept_curve(contact& c, int points) {
+    if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
+    std::vector<curve_point> rows;
+    rows.reserve(points);
+    for (int i = 0; i < points; ++i) {
+        // rho = (1 + c0)/2 uniform from 1 to 0: Carter's Q/f = 1 - rho^2, the loads of curve_loads.
+        const double rho = 1.0 - static_cast<double>(i) / (points - 1);
+        const double c0 = i + 1 == points ? -1.0 : 2.0 * rho - 1.0;
+        contact::swept_point p = c.at_stick_end(c0);
+        const carter_point smooth = carter(p.solution.Q, c.friction());
+        rows.push_back({std::move(p.solution), smooth, p.estimate});
+    }
+    return rows;
 }
 
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads) {

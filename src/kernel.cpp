@@ -71,7 +71,12 @@ namespace {
 constexpr double segment_decay = 24.0;
 }  // namespace
 
-kernel_moments::kernel_moments(const kernel& k, int count) : k_(k), count_(count), rule_(count + 36), moments_(count) {}
+gauss_legendre kernel_moments::moments_rule(int count) { return gauss_legendre(count + 36); }
+
+kernel_moments::kernel_moments(const kernel& k, int count) : kernel_moments(k, count, moments_rule(count)) {}
+
+kernel_moments::kernel_moments(const kernel& k, int count, const gauss_legendre& rule)
+    : k_(k), count_(count), rule_(rule), moments_(count) {}
 
 void kernel_moments::add_piece(double lo, double hi, double r, double side) {
     // side = sgn(eta - r) on this piece: the kernel without its jump.

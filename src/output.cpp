@@ -73,14 +73,17 @@ void write_summary(std::ostream& out, const point_report& r) {
 }
 
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve) {
-    out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate\n";
+    out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
+           "Q_error_estimate\n";
     for (const auto& row : curve) {
         const auto& s = row.solution;
         out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
             << shortest(s.xi / s.f) << ',' << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ','
             << (s.checks.hold() ? 1 : 0) << ',';
-        if (row.estimate) out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi);
-        else out << ',';
+        if (row.estimate)
+            out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
+        else
+            out << ",,";
         out << '\n';
     }
 }

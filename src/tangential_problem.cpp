@@ -47,7 +47,8 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       carter_(closed_form && k1.empty() && k2.empty()),
       cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
       system_(static_cast<std::size_t>(n_) + 1),
-      dk_moments_(dk_, n_),
+      moments_rule_(kernel_moments::moments_rule(n_)),
+      dk_moments_(dk_, n_, moments_rule_),
       k1_operator_(normal.rule, normal.how, k1.max_rate()) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     gsl_matrix_set_zero(cauchy_.get());
@@ -136,10 +137,23 @@ tangential_solution tangential_solver::gross_sliding() {
     return s;
 }
 
-tangential_solution tangential_solver::at_stick_end(double c0) {
+tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
     if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
-    tangential_solution s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
-    s.checks = check(s);
+    tangential_solution s;
+    if (c0 == 1.0) {
+        s = full_stick();
+    } else if (carter_) {
+        // Smooth: Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho), q0 = -(2 f/pi) rho sqrt(1 - t^2).
+        const double rho = 0.5 * (1.0 + c0);
+        s = carter_solution(f_ * (1.0 - rho) * (1.0 + rho));
+        s.c0 = c0;
+        s.xi = M_2_PI * f_ * (1.0 - rho);
+        s.psi_b.clear();
+        if (rho > 0.0) s.psi_b = {-M_2_PI * f_ * rho};
+    } else {
+        s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
+    }
+    if (checked) s.checks = check(s);
     return s;
 }
 
@@ -179,7 +193,7 @@ double load_residual(double c0, void* params) {
 }
 }  // namespace
 
-tangential_solution tangential_solver::solve(double Q) {
+tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
     if (!std::isfinite(Q)) throw input_error("Q must be finite");
     const double target = std::fabs(Q);
     if (target > f_) {
@@ -197,22 +211,34 @@ tangential_solution tangential_solver::solve(double Q) {
     } else if (target == f_) {
         s = gross_sliding();
     } else {
-        // Bracket [-1, 1]: Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error.
-        const double at_full_stick = load(1.0);
-        if (!(at_full_stick < target)) {
-            std::ostringstream msg;
-            msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
-                << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
-            throw resolution_error(msg.str());
-        }
         brent_context ctx{this, target, nullptr};
+        // A bracket of half-width 1e-5 around a guess (the coarse level's c0, which differs
+        // from this level's by the discretisation error) when it brackets, else [-1, 1]:
+        // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error.
+        double lo = -1.0, hi = 1.0;
+        if (guess && *guess > -1.0 && *guess < 1.0) {
+            const double a = std::max(-1.0, *guess - 1e-5), b = std::min(1.0, *guess + 1e-5);
+            if (load(a) - target > 0.0 && load(b) - target < 0.0) {
+                lo = a;
+                hi = b;
+            }
+        }
+        if (hi == 1.0) {
+            const double at_full_stick = load(1.0);
+            if (!(at_full_stick < target)) {
+                std::ostringstream msg;
+                msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
+                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
+                throw resolution_error(msg.str());
+            }
+        }
         gsl_function fn{&load_residual, &ctx};
         gsl_guard();
         root_solver_ptr brent(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
         if (!brent) throw numerical_error("cannot allocate the Brent root solver");
-        const int set = gsl_root_fsolver_set(brent.get(), &fn, -1.0, 1.0);
+        const int set = gsl_root_fsolver_set(brent.get(), &fn, lo, hi);
         if (ctx.failure) std::rethrow_exception(ctx.failure);
-        gsl_check(set, "Brent search for c0: bracket [-1, 1]");
+        gsl_check(set, "Brent search for c0: bracket");
         int status = GSL_CONTINUE;
         int iter = 0;
         while (status == GSL_CONTINUE && iter < max_brent_iterations) {
@@ -255,9 +281,10 @@ namespace {
 // kernel part costs one integral per term, whatever the number of points.
 class stick_operator_outside {
 public:
-    stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b) : psi_b_(psi_b) {
+    stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b, const gauss_legendre& rule)
+        : psi_b_(psi_b) {
         for (const auto& term : stretched_k1.terms()) {
-            kernel_moments one(kernel({term}), static_cast<int>(psi_b.size()));
+            kernel_moments one(kernel({term}), static_cast<int>(psi_b.size()), rule);
             at_one_.push_back({term.A, one.integrate(psi_b, 1.0)});
         }
     }
@@ -280,7 +307,7 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of the slip zone, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
-    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b);
+    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, moments_rule_);
     for (std::size_t i = 0; i < r.size(); ++i)
         v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() ? 0.0 : lq0((r[i] + 1.0 - rho) / rho));
     return v;

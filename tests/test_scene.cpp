@@ -99,16 +99,16 @@ TEST(Scene, Defaults) {
     EXPECT_TRUE(s.surfaces.smooth());
     EXPECT_EQ(s.surfaces.cylinder1.normal.A, 0.0);
     EXPECT_EQ(s.solver.n, 0);  // unset: the method's default
-    EXPECT_EQ(s.solver.how, method::product);
-    EXPECT_EQ(s.solver.nodes(), default_nodes(method::product));
+    EXPECT_EQ(s.solver.how, method::extrapolated);
+    EXPECT_EQ(s.solver.nodes(), default_nodes(method::extrapolated));
 }
 
 TEST(Scene, EmptyTablesKeepDefaults) {
     const scene s = parse_scene("friction = 0.3\n[cylinder1]\n[solver]\n", source);
     EXPECT_TRUE(s.surfaces.smooth());
     EXPECT_EQ(s.solver.n, 0);  // unset: the method's default
-    EXPECT_EQ(s.solver.how, method::product);
-    EXPECT_EQ(s.solver.nodes(), default_nodes(method::product));
+    EXPECT_EQ(s.solver.how, method::extrapolated);
+    EXPECT_EQ(s.solver.nodes(), default_nodes(method::extrapolated));
 }
 
 TEST(Scene, OnlyOneTermOfOneCylinder) {

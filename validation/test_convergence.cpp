@@ -105,3 +105,33 @@ TEST(Convergence, ExtrapolatedReaches1e10) {
         }
     }
 }
+
+TEST(Convergence, SweptCurveAgreesWithRootSearchAndReaches1e10) {
+    // A curve swept in c0 gives (Q(c0), xi(c0)) without a root search: solving for that Q
+    // by Brent returns the same c0 and xi, and the extrapolated sweep at 128 agrees with the
+    // product solution at 480 (same c0) to 1e-10 relative in Q and xi.
+    for (const roughness& r : {equal_kernels(), unequal_kernels()}) {
+        contact ext(r, 0.3, solver_options{128, method::extrapolated});
+        contact ref(r, 0.3, solver_options{480, method::product});
+        const auto curve = swept_curve(ext, 11);
+        ASSERT_EQ(curve.size(), 11u);
+        EXPECT_EQ(curve.front().solution.Q, 0.0);
+        EXPECT_EQ(curve.back().solution.Q, 0.3);
+        for (std::size_t i = 1; i + 1 < curve.size(); ++i) {
+            const auto& s = curve[i].solution;
+            const auto sr = ref.at_stick_end(s.c0).solution;
+            EXPECT_NEAR(s.Q / sr.Q, 1.0, 1e-10) << "c0 = " << s.c0;
+            EXPECT_NEAR(s.xi / sr.xi, 1.0, 1e-10) << "c0 = " << s.c0;
+            ASSERT_TRUE(curve[i].estimate.has_value());
+            EXPECT_GE(curve[i].estimate->xi, std::fabs(s.xi - sr.xi));
+            EXPECT_GE(curve[i].estimate->Q, std::fabs(s.Q - sr.Q));
+            EXPECT_TRUE(s.checks.hold());
+            // Round trip through the root search at the product level n = 128.
+            contact prod(r, 0.3, solver_options{128, method::product});
+            const auto level = prod.at_stick_end(s.c0).solution;
+            const auto back = prod.point(level.Q);
+            EXPECT_NEAR(back.c0, s.c0, 1e-13);
+            EXPECT_NEAR(back.xi, level.xi, 1e-13);
+        }
+    }
+}

@@ -24,8 +24,9 @@ namespace roughroll {
 // difference is then about the error at n itself.
 struct error_estimate {
     double lambda;        // P_H/P2
-    double c0;
+    double c0;            // 0 for a point of a curve swept in c0 (c0 is then the input)
     double xi;
+    double Q;             // 0 for a point at a given Q (Q is then the input)
     const char* against;  // "n/2", "2n (doubled)" or "level n" (extrapolated)
 };
 
@@ -45,11 +46,21 @@ public:
     // level n's (within the error estimate of the extrapolated ones).
     tangential_solution distribution(const tangential_solution& s);
 
+    // The point whose stick zone ends at c0 in [-1, 1], Q = Q(c0) of (4.5): no root search,
+    // a creep curve swept in c0. With its estimate (same companion rules as estimate()).
+    struct swept_point {
+        tangential_solution solution;
+        std::optional<error_estimate> estimate;
+    };
+    swept_point at_stick_end(double c0);
+
     // The estimate for a solution s of this contact (solves the companion problem once,
     // lazily). Empty when neither n/2 nor 2n is available.
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
 private:
+    bool ensure_companion();  // the companion of estimate(): n/2 or 2n; false when neither exists
+
     roughness surfaces_;
     solver_options options_;
     std::unique_ptr<contact> companion_;  // at n/2, or 2n; the coarse level when extrapolating
@@ -72,5 +83,9 @@ struct curve_point {
 std::vector<double> curve_loads(int points, double f);
 
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads);
+
+// A creep curve swept in c0 from 1 to -1 (rho = (1 + c0)/2 uniform): one linear solve per
+// point, no root search; the loads are Q(c0), dense near f as in curve_loads.
+std::vector<curve_point> swept_curve(contact& c, int points);
 
 }  // namespace roughroll

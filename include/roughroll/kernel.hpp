@@ -56,6 +56,9 @@ class kernel_moments {
 public:
     // `count` moments; the rule's order grows with count and with the kernel's max rate.
     kernel_moments(const kernel& k, int count);
+    // With the Gauss-Legendre rule of moments_rule(count), built once by the caller.
+    kernel_moments(const kernel& k, int count, const gauss_legendre& rule);
+    static gauss_legendre moments_rule(int count);
 
     const std::vector<double>& at(double r);  // I_0..I_{count-1} at r
     // int_{-1}^{1} (sum_j b_j U_j(eta)) sqrt(1 - eta^2) K(eta - r) d eta

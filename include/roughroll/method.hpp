@@ -15,6 +15,7 @@ enum class method { paper, product, extrapolated };
 
 std::string to_string(method m);
 
+// The default method is extrapolated (docs/performance.md: 1e-10 within the time goals).
 // Nodes used when a scene does not set n, for Fig. 2's parameters: relative error in
 // P_H/P2, c0 and xi about 1e-5 with the paper's scheme at 200, 5e-9 with product
 // integration at 96, 5e-11 extrapolated from 64 and 128 (docs/performance.md).

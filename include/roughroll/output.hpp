@@ -27,7 +27,8 @@ nlohmann::json to_json(const point_report& r);
 void write_summary(std::ostream& out, const point_report& r);
 
 // Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,
-// xi_error_estimate (empty without an estimate); digits to round-trip.
+// xi_error_estimate,Q_error_estimate (empty without an estimate; the c0 estimate is 0 on a
+// curve swept in c0, the Q estimate 0 on a curve at given loads); shortest round-trip digits.
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve);
 
 }  // namespace roughroll

@@ -11,8 +11,8 @@
 //   A = 0.5
 //   # [cylinder2.tangential], [cylinder2.normal] likewise; a missing table is smooth
 //   [solver]
-//   n = 96                       # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
-//   method = "product"           # or "paper", "extrapolated"
+//   n = 128                      # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
+//   method = "extrapolated"      # or "product", "paper"
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
 // a non-finite or negative T or A, a table with T or A missing, a non-positive f,
@@ -30,7 +30,7 @@ namespace roughroll {
 
 struct solver_options {
     int n = 0;  // 0: default_nodes(how)
-    method how = method::product;
+    method how = method::extrapolated;
 
     int nodes() const { return n == 0 ? default_nodes(how) : n; }
 };

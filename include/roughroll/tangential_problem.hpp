@@ -13,6 +13,7 @@
 // xi = -f G(-1)); neither needs a solve.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "roughroll/collocation.hpp"
@@ -58,11 +59,15 @@ public:
     // The solver keeps a reference to the normal solution: a temporary would dangle.
     tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
 
-    tangential_solution solve(double Q);  // throws input_error for |Q| > f or non-finite Q
+    // Throws input_error for |Q| > f or non-finite Q. `guess`: a c0 close to the root (the
+    // coarse level's, when extrapolating), tried first as a narrow bracket.
+    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt);
 
     // The solution for a trial c0 in [-1, 1], Q = Q(c0) of (4.5): a creep curve swept
     // in c0 needs no root search.
-    tangential_solution at_stick_end(double c0);
+    // `checked` = false skips the checks (3.3)-(3.4) (their fields are then zero): for the
+    // coarse level of an extrapolation, whose distributions are not reported.
+    tangential_solution at_stick_end(double c0, bool checked = true);
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
 
     double G(double r);                                          // (3.25)
@@ -90,6 +95,7 @@ private:
     bool carter_;  // smooth in both directions, closed form allowed
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
+    gauss_legendre moments_rule_;  // for kernel_moments of n coefficients, built once
     kernel_moments dk_moments_;
     kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
 };

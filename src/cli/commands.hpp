@@ -26,7 +26,7 @@ struct figure_options {
     std::string out = "figures";
     int points = 101;       // creep points per curve
     std::optional<int> n;   // unset: the method's default
-    std::string method_name = "product";
+    std::string method_name = "extrapolated";
     bool plot = true;
 };
 

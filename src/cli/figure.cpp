@@ -19,6 +19,7 @@
 #include "cli/output_files.hpp"
 #include "roughroll/contact.hpp"
 #include "roughroll/error.hpp"
+#include "roughroll/output.hpp"
 #include "roughroll/quadrature.hpp"
 
 namespace roughroll::cli {
@@ -113,9 +114,10 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
            << "set output '" << gnuplot_path(stem.string() + t[1]) << "'\n"
            << "plot '" << gnuplot_path(csv) << "' using 2:3 with lines lw 2 title '" << curves[0].legend << "'";
         for (std::size_t i = 1; i < curves.size(); ++i)
-            gp << ", \\\n     '' using 2:" << 3 + 2 * i << " with lines lw 2 title '" << curves[i].legend << "'";
+            gp << ", \\\n     '' using " << 2 + 2 * i << ":" << 3 + 2 * i << " with lines lw 2 title '"
+               << curves[i].legend << "'";
         // Carter last and dashed, so that a curve lying on it (T = 0) stays visible.
-        gp << ", \\\n     '' using 2:" << 3 + 2 * curves.size()
+        gp << ", \\\n     '' using " << 2 + 2 * curves.size() << ":" << 3 + 2 * curves.size()
            << " with lines lw 1.5 dt 2 lc rgb 'black' title 'Carter (smooth cylinders)'";
         gp << "\n";
     }
@@ -142,32 +144,36 @@ int run_figure(const figure_options& o) {
         options.n = *o.n;
     }
     const auto curves = curves_of(o.which);
-    const auto loads = curve_loads(o.points, figure_friction);
 
+    // Each curve swept in c0 (one linear solve per point, no root search): all curves and
+    // Carter's share the c0 grid, each has its own loads Q(c0).
     std::vector<std::vector<curve_point>> results;
     for (const auto& c : curves) {
         contact problem(c.surfaces, figure_friction, options);
-        results.push_back(creep_curve(problem, loads));
+        results.push_back(swept_curve(problem, o.points));
     }
 
     const auto stem = output_stem(o.out, "fig" + o.which);
     const auto csv = std::filesystem::path(stem.string() + ".csv");
     std::ofstream out(csv);
     if (!out) throw input_error("cannot write '" + csv.string() + "'");
-    out << std::setprecision(std::numeric_limits<double>::max_digits10);
-    out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes() << "\n";
-    out << "Q,Q_over_f";
-    for (std::size_t i = 0; i < curves.size(); ++i) out << ",xi_over_f_" << i + 1 << ",c0_" << i + 1;
-    out << ",xi_carter_over_f,c0_carter,checks_hold\n";
-    for (std::size_t p = 0; p < loads.size(); ++p) {
-        out << loads[p] << ',' << loads[p] / figure_friction;
+    out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes()
+        << "; curves swept in c0, each with its own Q(c0)\n";
+    out << "c0";
+    for (std::size_t i = 0; i < curves.size(); ++i) out << ",Q_over_f_" << i + 1 << ",xi_over_f_" << i + 1;
+    out << ",Q_over_f_carter,xi_carter_over_f,checks_hold\n";
+    for (std::size_t p = 0; p < results[0].size(); ++p) {
+        const double c0 = results[0][p].solution.c0, rho = 0.5 * (1.0 + c0);
+        out << shortest(c0);
         bool hold = true;
         for (const auto& curve : results) {
-            out << ',' << curve[p].solution.xi / figure_friction << ',' << curve[p].solution.c0;
-            hold = hold && curve[p].solution.checks.hold();
+            const auto& sol = curve[p].solution;
+            out << ',' << shortest(sol.Q / figure_friction) << ',' << shortest(sol.xi / figure_friction);
+            hold = hold && sol.checks.hold();
         }
-        out << ',' << results[0][p].smooth.xi / figure_friction << ',' << results[0][p].smooth.c0 << ','
-            << (hold ? 1 : 0) << '\n';
+        // Carter at the same c0: Q/f = 1 - rho^2, xi/f = (2/pi)(1 - rho).
+        out << ',' << shortest(1.0 - rho * rho) << ',' << shortest(M_2_PI * (1.0 - rho)) << ',' << (hold ? 1 : 0)
+            << '\n';
     }
     if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
 

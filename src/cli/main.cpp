@@ -50,11 +50,10 @@ int run_point(const scene_options& o, std::optional<double> Q_option, bool json)
     return 0;
 }
 
-int run_curve(const scene_options& o, int points, const std::string& csv) {
+int run_curve(const scene_options& o, int points, bool sweep, const std::string& csv) {
     const scene s = load_scene(o);
-    const auto loads = curve_loads(points, s.friction);
     contact c(s.surfaces, s.friction, s.solver);
-    const auto curve = creep_curve(c, loads);
+    const auto curve = sweep ? swept_curve(c, points) : creep_curve(c, curve_loads(points, s.friction));
     if (csv.empty()) {
         write_curve_csv(std::cout, curve);
         return 0;
@@ -88,6 +87,10 @@ int main(int argc, char** argv) {
     add_scene_options(curve, curve_scene);
     curve->add_option("--points", points, "number of loads (Q/f dense near 1)");
     curve->add_option("--csv", csv, "output file (default: stdout)");
+    bool sweep = false;
+    curve->add_flag("--sweep", sweep,
+                    "sweep the stick-zone end c0 instead of solving for given loads: one linear solve per point, "
+                    "no root search, loads Q(c0)");
 
     figure_options fig;
     CLI::App* figure = app.add_subcommand("figure", "reproduce the paper's Fig. 2a or 2b (CSV, SVG, PNG)");
@@ -113,7 +116,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*point) return run_point(point_scene, Q, json);
-        if (*curve) return run_curve(curve_scene, points, csv);
+        if (*curve) return run_curve(curve_scene, points, sweep, csv);
         if (*figure) return run_figure(fig);
         if (*convergence) return run_convergence(conv);
         if (*traction) return run_traction(trac);
