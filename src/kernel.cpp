@@ -61,7 +61,6 @@ kernel kernel::stretched(double rho) const {
     return kernel(s);
 }
 
-bool kernel::operator==(const kernel& other) const { return minus(other).empty(); }
 
 namespace {
 // Gauss-Legendre order for `count` moments: sin((j+1) theta) has up to count/2

@@ -1,16 +1,9 @@
 #include "roughroll/output.hpp"
 
-#include <charconv>
 
 #include "roughroll/carter.hpp"
 
 namespace roughroll {
-
-std::string shortest(double x) {
-    char buffer[32];
-    const std::to_chars_result result = std::to_chars(buffer, buffer + sizeof buffer, x + 0.0);  // no -0
-    return std::string(buffer, result.ptr);
-}
 
 nlohmann::json to_json(const point_report& r) {
     const auto& s = r.solution;

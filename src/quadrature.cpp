@@ -51,11 +51,6 @@ gauss_legendre::gauss_legendre(int order) {
     weights.assign(w, w + order);
 }
 
-double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k) {
-    // U_j(cos t) = sin((j+1) t)/sin t with t = (k+1) pi/(n+1) for the 0-based node k.
-    const double t = (k + 1) * M_PI / (rule.n + 1);
-    return std::sin((j + 1) * t) / std::sin(t);
-}
 
 std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values) {
     // b_j = (2/pi) sum_k w_k phi_k U_j(eta_k), with w_k U_j(eta_k) = h sin(t_k) sin((j+1) t_k),

@@ -1,8 +1,8 @@
 #include "roughroll/scene.hpp"
+#include "roughroll/text.hpp"
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -22,34 +22,8 @@ namespace {
 
 using key_list = std::initializer_list<std::string_view>;
 
-// Messages are one line (the CLI prints them as such), but a quoted TOML key, a
-// string value or a path may hold a newline or another control character:
-// show those as \xNN instead of letting them break the line.
-std::string one_line(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7f) {
-            char escape[5];
-            std::snprintf(escape, sizeof escape, "\\x%02x", byte);
-            out += escape;
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
-
 [[noreturn]] void fail(const std::string& source, const std::string& what) {
     throw input_error(one_line(source + ": " + what));
-}
-
-// The shortest text that reads back as x ("0.3", "-1", "nan", "inf"), so a
-// message shows the number the user wrote, not 0.29999999999999999.
-std::string format_number(double x) {
-    char buffer[32];
-    const std::to_chars_result result = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return std::string(buffer, result.ptr);
 }
 
 // The dotted path of `key` inside the table at `parent` ("" is the root).
@@ -124,7 +98,7 @@ double bounded_number(const toml::node& node, lower_bound bound, const std::stri
     const bool ok = std::isfinite(x) && (positive ? x > 0.0 : x >= 0.0);
     if (!ok) {
         fail(source, quoted(path) + " must be finite and " + (positive ? "> 0" : ">= 0") + " (got " +
-                         format_number(x) + ")");
+                         shortest(x) + ")");
     }
     return x;
 }
@@ -139,10 +113,10 @@ const std::string& string_at(const toml::node& node, const std::string& source, 
 // slide and the rolling-contact model does not apply. Written as !(|Q| <= f) so
 // that a NaN f (a scene built by hand) is refused too.
 std::string load_problem(double Q, double f) {
-    if (!std::isfinite(Q)) return "must be finite (got " + format_number(Q) + ")";
+    if (!std::isfinite(Q)) return "must be finite (got " + shortest(Q) + ")";
     if (!(std::fabs(Q) <= f)) {
-        return "must satisfy |Q| <= f, but |Q| = " + format_number(std::fabs(Q)) + " exceeds f = " +
-               format_number(f) + ": the cylinders slide";
+        return "must satisfy |Q| <= f, but |Q| = " + shortest(std::fabs(Q)) + " exceeds f = " +
+               shortest(f) + ": the cylinders slide";
     }
     return {};
 }

@@ -9,11 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "roughroll/contact.hpp"
+#include "roughroll/text.hpp"
 
 namespace roughroll {
-
-// The shortest text that reads back as x (std::to_chars): exact and readable.
-std::string shortest(double x);
 
 struct point_report {
     std::string label;

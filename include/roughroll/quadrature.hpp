@@ -40,9 +40,6 @@ struct gauss_legendre {
     std::vector<double> weights;
 };
 
-// U_j(eta_k) for j < n: the values that map nodal values to U coefficients.
-double chebyshev_u_at_node(const gauss_chebyshev& rule, int j, int k);
-
 // Coefficients b_0..b_{n-1} of the interpolant of `values` (given at the nodes).
 std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values);
 

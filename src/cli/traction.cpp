@@ -46,14 +46,6 @@ void smooth_tractions(double r, double Q, double f, double& p, double& p1) {
     p1 = (Q < 0.0 ? -1.0 : 1.0) * (f * p + q0);
 }
 
-// A label on one line: control characters (a TOML string may hold a newline) become spaces.
-std::string one_line(const std::string& text) {
-    std::string out = text;
-    for (char& c : out)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-    return out;
-}
-
 // Text inside a double-quoted gnuplot string with enhanced text on: the enhanced-text
 // control characters are escaped (\\_ in the script reaches the text processor as \_),
 // so that "T_1^(1)" prints as written; " and \ are escaped for the string itself.
