@@ -50,6 +50,8 @@ tangential_solution contact::point(double Q) {
     last_fine_ = s;
     s.c0 = richardson(s.c0, coarse.c0);
     s.xi = richardson(s.xi, coarse.xi);
+    if (!(std::isfinite(s.c0) && std::isfinite(s.xi)))
+        throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
     return s;
 }
 
@@ -82,6 +84,8 @@ contact::swept_point contact::at_stick_end(double c0) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
         const tangential_solution coarse = companion_->tangential_->at_stick_end(c0, false);
         const double Q = richardson(s.Q, coarse.Q), xi = richardson(s.xi, coarse.xi);
+        if (!(std::isfinite(Q) && std::isfinite(xi)))
+            throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
         const error_estimate e{std::fabs(reported_->lambda - normal_->lambda), 0.0, std::fabs(xi - s.xi),
                                std::fabs(Q - s.Q), "level n"};
         s.Q = Q;

@@ -20,6 +20,7 @@ namespace roughroll {
 namespace {
 constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4)
 constexpr int max_brent_iterations = 200;
+constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (see solve)
 
 // Interior Chebyshev points of (lo, hi), clustered towards the ends where the
 // tractions have their square-root behaviour; the ends themselves are excluded.
@@ -210,6 +211,14 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         s = carter_solution(target);
     } else if (target == f_) {
         s = gross_sliding();
+    } else if (target < min_load_ratio * f_) {
+        // Q(c0) of (4.5) is f + rho sum w psi, an O(f) sum that cancels to |Q|: below this
+        // ratio its rounding (1e-16 f) is no longer small against |Q|, and c0, xi would be noise.
+        std::ostringstream msg;
+        msg << "|Q|/f = " << target / f_ << " is below " << min_load_ratio
+            << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
+               "cannot be resolved (Q = 0 is solved exactly)";
+        throw resolution_error(msg.str());
     } else {
         brent_context ctx{this, target, nullptr};
         // A bracket of half-width 1e-5 around a guess (the coarse level's c0, which differs
@@ -254,6 +263,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         s = solve_system(gsl_root_fsolver_root(brent.get()));
         s.iterations = iter;
     }
+    if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
+        throw numerical_error("tangential problem: the creep is not finite (roughness parameters too large?)");
     s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
     if (Q < 0.0) {
         s.sign = -1.0;
