@@ -70,12 +70,18 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
                               std::fabs(s.xi - level.xi), 0.0, "level n"};
     }
     if (!ensure_companion()) return std::nullopt;
-    const tangential_solution c = companion_->point(s.Q);
+    return companion_difference(s, companion_->point(s.Q), false);
+}
+
+error_estimate contact::companion_difference(const tangential_solution& s, const tangential_solution& c,
+                                             bool swept) const {
+    // At 2n the difference is (1 - 2^-p) of the error at n: doubled, it stays an upper
+    // estimate for every order p >= 1. Swept in c0, c0 is the input and Q is estimated.
     const bool finer = companion_->options_.nodes() > options_.nodes();
     const double scale = finer ? 2.0 : 1.0;
     return error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda),
-                          scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi), 0.0,
-                          finer ? "2n (doubled)" : "n/2"};
+                          swept ? 0.0 : scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi),
+                          swept ? scale * std::fabs(s.Q - c.Q) : 0.0, finer ? "2n (doubled)" : "n/2"};
 }
 
 contact::swept_point contact::at_stick_end(double c0) {
@@ -93,19 +99,12 @@ contact::swept_point contact::at_stick_end(double c0) {
         return {s, e};
     }
     if (!ensure_companion()) return {s, std::nullopt};
-    const tangential_solution c = companion_->tangential_->at_stick_end(c0, false);
-    const bool finer = companion_->options_.nodes() > options_.nodes();
-    const double scale = finer ? 2.0 : 1.0;
-    return {s, error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda), 0.0,
-                              scale * std::fabs(s.xi - c.xi), scale * std::fabs(s.Q - c.Q),
-                              finer ? "2n (doubled)" : "n/2"}};
+    return {s, companion_difference(s, companion_->tangential_->at_stick_end(c0, false), true)};
 }
 
 bool contact::ensure_companion() {
     if (!companion_) {
-        // The same problem at n/2 when n/2 is in the asymptotic range of the method; else
-        // at 2n, where the difference is (1 - 2^-p) of the error at n: it is doubled to stay
-        // an upper estimate for every order p >= 1.
+        // The same problem at n/2 when n/2 is in the asymptotic range of the method; else at 2n.
         const int n = options_.nodes();
         for (int other : {n / 2, 2 * n}) {
             if (other < min_nodes || other > max_nodes) continue;
@@ -120,8 +119,14 @@ bool contact::ensure_companion() {
     return companion_ != nullptr;
 }
 
-std::vector<double> curve_loads(int points, double f) {
+namespace {
+void check_curve_points(int points) {
     if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
+}
+}  // namespace
+
+std::vector<double> curve_loads(int points, double f) {
+    check_curve_points(points);
     std::vector<double> loads(points);
     for (int i = 0; i < points; ++i) {
         const double v = 1.0 - static_cast<double>(i) / (points - 1);  // 1 - u
@@ -132,7 +137,7 @@ std::vector<double> curve_loads(int points, double f) {
 }
 
 std::vector<curve_point> swept_curve(contact& c, int points) {
-    if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
+    check_curve_points(points);
     std::vector<curve_point> rows;
     rows.reserve(points);
     for (int i = 0; i < points; ++i) {

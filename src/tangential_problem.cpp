@@ -49,7 +49,6 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
       system_(static_cast<std::size_t>(n_) + 1),
       moments_rule_(kernel_moments::moments_rule(n_)),
-      dk_moments_(dk_, n_, moments_rule_),
       k1_operator_(normal.rule, normal.how, k1.max_rate()) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     gsl_matrix_set_zero(cauchy_.get());
@@ -59,7 +58,8 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
 }
 
 std::vector<double> tangential_solver::G(const std::vector<double>& r) {
-    // As G(r) below, for sorted points at once: one sweep over the kernel difference.
+    // (3.25): the kernel difference integrated on the interpolant of phi, split at its jump
+    // (E8), so that G, and with it Q(c0), is continuous in c0; one sweep for all the points.
     std::vector<double> g(r.size());
     for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
     if (dk_.empty()) return g;
@@ -71,12 +71,7 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
     return g;
 }
 
-double tangential_solver::G(double r) {
-    // (3.25): the kernel difference integrated on the interpolant of phi, split at its
-    // jump (E8), so that G, and with it Q(c0), is continuous in c0.
-    const double hertz = M_2_PI * normal_.lambda * r;
-    return dk_.empty() ? hertz : hertz + dk_moments_.integrate(normal_.b, r);
-}
+double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
 tangential_solution tangential_solver::solve_system(double c0) {
     const double rho = 0.5 * (1.0 + c0);
@@ -144,13 +139,9 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
     if (c0 == 1.0) {
         s = full_stick();
     } else if (carter_) {
-        // Smooth: Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho), q0 = -(2 f/pi) rho sqrt(1 - t^2).
+        // Smooth: Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho).
         const double rho = 0.5 * (1.0 + c0);
-        s = carter_solution(f_ * (1.0 - rho) * (1.0 + rho));
-        s.c0 = c0;
-        s.xi = M_2_PI * f_ * (1.0 - rho);
-        s.psi_b.clear();
-        if (rho > 0.0) s.psi_b = {-M_2_PI * f_ * rho};
+        s = carter_solution(f_ * (1.0 - rho) * (1.0 + rho), c0, M_2_PI * f_ * (1.0 - rho));
     } else {
         s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
     }
@@ -158,13 +149,12 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
     return s;
 }
 
-tangential_solution tangential_solver::carter_solution(double Q) {
+tangential_solution tangential_solver::carter_solution(double Q, double c0, double xi) {
     // Smooth cylinders: q0 = -(2 f/pi) rho sqrt(1 - t^2), psi constant, no kernel, no solve.
-    const carter_point cp = carter(Q, f_);
     tangential_solution s{};
     s.f = f_;
-    s.c0 = cp.c0;
-    s.xi = cp.xi;
+    s.c0 = c0;
+    s.xi = xi;
     s.Q = Q;
     s.sign = 1.0;
     if (s.rho() > 0.0) s.psi_b = {-M_2_PI * f_ * s.rho()};  // no stick zone at |Q| = f
@@ -208,7 +198,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
     if (target == 0.0) {
         s = full_stick();
     } else if (carter_) {
-        s = carter_solution(target);
+        const carter_point cp = carter(target, f_);
+        s = carter_solution(target, cp.c0, cp.xi);
     } else if (target == f_) {
         s = gross_sliding();
     } else if (target < min_load_ratio * f_) {

@@ -60,6 +60,9 @@ public:
 
 private:
     bool ensure_companion();  // the companion of estimate(): n/2 or 2n; false when neither exists
+    // The estimate from s and the companion's solution c at the same Q (or the same c0, swept).
+    error_estimate companion_difference(const tangential_solution& s, const tangential_solution& c,
+                                        bool swept) const;
 
     roughness surfaces_;
     solver_options options_;

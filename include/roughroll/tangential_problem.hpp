@@ -71,7 +71,7 @@ public:
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
 
     double G(double r);                                          // (3.25)
-    std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ...
+    std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
     double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
     // v at many points of the slip zone (any order), in one sweep.
@@ -83,7 +83,7 @@ private:
     tangential_solution solve_system(double c0);  // |Q| problem at c0 in (-1, 1]
     tangential_solution full_stick();
     tangential_solution gross_sliding();
-    tangential_solution carter_solution(double Q);
+    tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
     double q0(const tangential_solution& s, double r);  // corrective traction for |Q|
     std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
     traction_checks check(const tangential_solution& s);
@@ -96,7 +96,6 @@ private:
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
     gauss_legendre moments_rule_;  // for kernel_moments of n coefficients, built once
-    kernel_moments dk_moments_;
     kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
 };
 
