@@ -22,8 +22,22 @@ nlohmann::json to_json(const point_report& r) {
                     {"c0", r.estimate->c0},
                     {"xi", r.estimate->xi},
                     {"against", r.estimate->against}};
+    nlohmann::json si = nullptr;
+    if (r.si)
+        si = {{"a_m", r.si->a},
+              {"a_hertz_m", r.si->a_hertz},
+              {"a_over_a_hertz", r.si->a / r.si->a_hertz},
+              {"c_m", r.si->c},
+              {"P_H_N_per_m", r.si->P_H},
+              {"P2_N_per_m", r.si->P2},
+              {"P1_N_per_m", r.si->P1},
+              {"xi1", r.si->xi1},
+              {"xi1_carter", r.si->xi1_carter},
+              {"p_centre_Pa", r.si->p_scale * r.normal.pressure(0.0)},
+              {"width_iterations", r.si->width_iterations}};
     return {
         {"label", r.label},
+        {"si", si},
         {"error_estimate", estimate},
         {"Q", s.Q},
         {"f", s.f},
@@ -63,11 +77,22 @@ void write_summary(std::ostream& out, const point_report& r) {
         << shortest(s.checks.pressure_margin) << ", stick " << shortest(s.checks.stick_margin) << ", slip "
         << shortest(s.checks.slip_margin) << ")\n"
         << "  seconds             " << shortest(r.seconds) << "\n";
+    if (!r.si) return;
+    const si_point& p = *r.si;
+    out << "  SI units\n"
+        << "  half-width a        " << shortest(p.a) << " m   (Hertz a_H " << shortest(p.a_hertz) << " m, a/a_H = "
+        << shortest(p.a / p.a_hertz) << ", " << p.width_iterations << " Brent iterations)\n"
+        << "  stick zone end c    " << shortest(p.c) << " m\n"
+        << "  loads P2, P1        " << shortest(p.P2) << " N/m, " << shortest(p.P1) << " N/m\n"
+        << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"
+        << "  pressure at centre  " << shortest(p.p_scale * r.normal.pressure(0.0)) << " Pa\n"
+        << "  creep xi1           " << shortest(p.xi1) << "   (Carter, smooth: " << shortest(p.xi1_carter) << ")\n";
 }
 
-void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve) {
+void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
-           "Q_error_estimate\n";
+           "Q_error_estimate"
+        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << "\n";
     for (const auto& row : curve) {
         const auto& s = row.solution;
         out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
@@ -77,6 +102,10 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve) {
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
+        if (si) {
+            const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
+            out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
+        }
         out << '\n';
     }
 }

@@ -1,6 +1,7 @@
 #include "roughroll/scene.hpp"
 #include "roughroll/text.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -47,34 +48,133 @@ method method_at(const toml::node& node, const std::string& source, const std::s
     }
 }
 
+// Dimensionless T, A of (3.26), or for a physical scene also the stiffness k, t of (2.10).
+struct term_input {
+    roughness_term dimensionless;
+    std::optional<stiffness> dimensional;
+};
+
 // One direction of one cylinder; an absent table is a smooth surface (T = 0).
-roughness_term read_term(const toml::table& cylinder, std::string_view key, const std::string& source,
-                         const std::string& cylinder_path) {
+term_input read_term(const toml::table& cylinder, std::string_view key, bool physical, const std::string& source,
+                     const std::string& cylinder_path) {
     const std::string path = join(cylinder_path, key);
     const toml::table* table = table_at(cylinder, key, source, path);
     if (table == nullptr) return {};
-    check_keys(*table, {"T", "A"}, source, path);
+    const bool by_stiffness = table->contains("k") || table->contains("t");
+    if (by_stiffness && !physical) {
+        fail(source, "table " + quoted(path) +
+                         ": k and t (Pa/m, Pa m) need a physical scene (E, nu, R1, R2, P2); give T and A otherwise");
+    }
+    if (physical)
+        check_keys(*table, by_stiffness ? key_list{"k", "t"} : key_list{"T", "A", "k", "t"}, source, path);
+    else
+        check_keys(*table, {"T", "A"}, source, path);
     // T alone or A alone is a half-written term; a default for the other would hide that.
-    for (const char* name : {"T", "A"}) {
+    const auto names = by_stiffness ? std::array<const char*, 2>{"k", "t"} : std::array<const char*, 2>{"T", "A"};
+    for (const char* name : names) {
         if (!table->contains(name)) {
-            fail(source, "table " + quoted(path) + " needs both T and A (missing '" + name + "')");
+            fail(source, "table " + quoted(path) + " needs both " + names[0] + " and " + names[1] + " (missing '" +
+                             name + "')");
         }
     }
-    roughness_term term;
-    term.T = bounded_number(*table->get("T"), lower_bound::non_negative, source, join(path, "T"));
-    term.A = bounded_number(*table->get("A"), lower_bound::non_negative, source, join(path, "A"));
+    term_input term;
+    if (by_stiffness) {
+        stiffness st;
+        st.k = bounded_number(*table->get("k"), lower_bound::non_negative, source, join(path, "k"));
+        const double t = number_at(*table->get("t"), source, join(path, "t"));
+        if (!(std::isfinite(t) && t > 0.0)) {
+            fail(source, quoted(join(path, "t")) + " must be finite and > 0 (got " + shortest(t) +
+                             "); the one-parameter model of [2], t -> 0, is method 'one-parameter', whose "
+                             "results do not depend on t");
+        }
+        st.t = t;
+        term.dimensional = st;
+        return term;
+    }
+    term.dimensionless.T = bounded_number(*table->get("T"), lower_bound::non_negative, source, join(path, "T"));
+    term.dimensionless.A = bounded_number(*table->get("A"), lower_bound::non_negative, source, join(path, "A"));
     return term;
 }
 
-cylinder_roughness read_cylinder(const toml::table& root, std::string_view key, const std::string& source) {
+struct cylinder_input {
+    term_input tangential, normal;
+};
+
+cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool physical,
+                             const std::string& source) {
     const std::string path(key);
     const toml::table* table = table_at(root, key, source, path);
     if (table == nullptr) return {};
     check_keys(*table, {"tangential", "normal"}, source, path);
-    cylinder_roughness cylinder;
-    cylinder.tangential = read_term(*table, "tangential", source, path);
-    cylinder.normal = read_term(*table, "normal", source, path);
-    return cylinder;
+    return {read_term(*table, "tangential", physical, source, path),
+            read_term(*table, "normal", physical, source, path)};
+}
+
+// A radius of a physical scene: > 0, and infinite for a plane.
+double radius_at(const toml::node& node, const std::string& source, const std::string& path) {
+    const double R = number_at(node, source, path);
+    if (!(R > 0.0)) fail(source, quoted(path) + " must be > 0 (got " + shortest(R) + "; inf is a plane)");
+    return R;
+}
+
+bool is_physical(const toml::table& root) {
+    for (const std::string_view key : {"E", "nu", "R1", "R2", "P2", "P1", "contact_width"})
+        if (root.contains(key)) return true;
+    return false;
+}
+
+// The materials, radii and loads of a physical scene (physical_scene.hpp); the surfaces
+// are filled in by the caller.
+physical_scene read_physical(const toml::table& root, double friction, const std::string& source) {
+    for (const char* key : {"E", "nu", "R1", "R2", "P2"}) {
+        if (!root.contains(key))
+            fail(source, std::string("a physical scene needs E, nu, R1, R2 and P2: missing '") + key + "'");
+    }
+    physical_scene p;
+    p.E = bounded_number(*root.get("E"), lower_bound::positive, source, "E");
+    p.nu = number_at(*root.get("nu"), source, "nu");
+    // (3.27) and (3.26) divide by 1 - nu and mu = E/(2(1 + nu)): -1 < nu <= 1/2 for an isotropic solid.
+    if (!(p.nu > -1.0 && p.nu <= 0.5)) fail(source, "'nu' must be in (-1, 0.5] (got " + shortest(p.nu) + ")");
+    p.R1 = radius_at(*root.get("R1"), source, "R1");
+    p.R2 = radius_at(*root.get("R2"), source, "R2");
+    if (std::isinf(p.R1) && std::isinf(p.R2)) fail(source, "'R1' and 'R2' are both infinite: two planes do not roll");
+    p.P2 = bounded_number(*root.get("P2"), lower_bound::positive, source, "P2");
+    if (const toml::node* width = root.get("contact_width")) {
+        const std::string& rule = string_at(*width, source, "contact_width");
+        if (rule == "given-load")
+            p.width = width_rule::given_load;
+        else if (rule == "hertz")
+            p.width = width_rule::hertz;
+        else
+            fail(source, "'contact_width' must be \"given-load\" or \"hertz\" (got \"" + rule + "\")");
+    }
+    if (const toml::node* load = root.get("P1")) {
+        if (root.contains("Q")) fail(source, "give 'P1' or 'Q', not both");
+        if (p.width == width_rule::hertz)
+            fail(source, "'P1' needs contact_width = \"given-load\": at the Hertz width the model carries P2/lambda, "
+                         "not P2; give Q = P1/P2 instead");
+        const double P1 = number_at(*load, source, "P1");
+        if (!std::isfinite(P1)) fail(source, "'P1' must be finite (got " + shortest(P1) + ")");
+        if (!(std::fabs(P1) <= friction * p.P2)) {
+            fail(source, "'P1' must satisfy |P1| <= f P2, but |P1| = " + shortest(std::fabs(P1)) + " N/m exceeds f P2 = " +
+                             shortest(friction * p.P2) + " N/m: the cylinders slide");
+        }
+        p.P1 = P1;
+    }
+    return p;
+}
+
+surface_stiffness stiffness_at_hertz(const physical_scene& p, const cylinder_input& c) {
+    // T, A in a physical scene are the paper's, at a = a_H(P2).
+    const double a_H = hertz_half_width(p, p.P2);
+    const auto one = [&](const term_input& t) {
+        return t.dimensional ? *t.dimensional : stiffness_of(p, t.dimensionless, a_H);
+    };
+    return {one(c.tangential), one(c.normal)};
+}
+
+cylinder_roughness dimensionless(const cylinder_input& c) {
+    return {c.tangential.dimensionless, c.normal.dimensionless};
 }
 
 solver_options read_solver(const toml::table& root, const std::string& source) {
@@ -91,7 +191,10 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
 
 scene parse_scene(std::string_view text, const std::string& source) {
     const toml::table root = parse_toml(text, source);
-    check_keys(root, {"label", "friction", "Q", "cylinder1", "cylinder2", "solver"}, source, "");
+    check_keys(root,
+               {"label", "friction", "Q", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
+                "contact_width"},
+               source, "");
 
     scene s;
     if (const toml::node* label = root.get("label")) s.label = string_at(*label, source, "label");
@@ -107,8 +210,19 @@ scene parse_scene(std::string_view text, const std::string& source) {
         s.Q = Q;
     }
 
-    s.surfaces.cylinder1 = read_cylinder(root, "cylinder1", source);
-    s.surfaces.cylinder2 = read_cylinder(root, "cylinder2", source);
+    const bool physical = is_physical(root);
+    const cylinder_input c1 = read_cylinder(root, "cylinder1", physical, source);
+    const cylinder_input c2 = read_cylinder(root, "cylinder2", physical, source);
+    if (physical) {
+        physical_scene p = read_physical(root, s.friction, source);
+        p.cylinder1 = stiffness_at_hertz(p, c1);
+        p.cylinder2 = stiffness_at_hertz(p, c2);
+        if (p.P1) s.Q = *p.P1 / p.P2;
+        s.surfaces = roughness_at(p, hertz_half_width(p, p.P2));  // until the width is known
+        s.physical = p;
+    } else {
+        s.surfaces = {dimensionless(c1), dimensionless(c2)};
+    }
     s.solver = read_solver(root, source);
     return s;
 }

@@ -2,18 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <sstream>
 
-#include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
-#include <gsl/gsl_roots.h>
 
 #include "roughroll/carter.hpp"
 #include "roughroll/collocation.hpp"
 #include "roughroll/error.hpp"
 #include "roughroll/kernel_sweep.hpp"
+#include "roughroll/root_search.hpp"
 
 namespace roughroll {
 
@@ -164,25 +162,6 @@ tangential_solution tangential_solver::carter_solution(double Q, double c0, doub
 
 double tangential_solver::load(double c0) { return c0 <= -1.0 ? f_ : solve_system(c0).Q; }
 
-namespace {
-struct brent_context {
-    tangential_solver* solver;
-    double target;
-    std::exception_ptr failure;
-};
-
-// GSL calls this through C frames: no exception may cross them, so a failure is
-// stored and reported as NaN, which stops the iteration with GSL_EBADFUNC.
-double load_residual(double c0, void* params) {
-    auto* ctx = static_cast<brent_context*>(params);
-    try {
-        return ctx->solver->load(c0) - ctx->target;
-    } catch (...) {
-        ctx->failure = std::current_exception();
-        return std::numeric_limits<double>::quiet_NaN();
-    }
-}
-}  // namespace
 
 tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
     if (!std::isfinite(Q)) throw input_error("Q must be finite");
@@ -211,7 +190,6 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
                "cannot be resolved (Q = 0 is solved exactly)";
         throw resolution_error(msg.str());
     } else {
-        brent_context ctx{this, target, nullptr};
         // A bracket of half-width 1e-5 around a guess (the coarse level's c0, which differs
         // from this level's by the discretisation error) when it brackets, else [-1, 1]:
         // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error.
@@ -232,27 +210,10 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
                 throw resolution_error(msg.str());
             }
         }
-        gsl_function fn{&load_residual, &ctx};
-        gsl_guard();
-        root_solver_ptr brent(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
-        if (!brent) throw numerical_error("cannot allocate the Brent root solver");
-        const int set = gsl_root_fsolver_set(brent.get(), &fn, lo, hi);
-        if (ctx.failure) std::rethrow_exception(ctx.failure);
-        gsl_check(set, "Brent search for c0: bracket");
-        int status = GSL_CONTINUE;
-        int iter = 0;
-        while (status == GSL_CONTINUE && iter < max_brent_iterations) {
-            ++iter;
-            status = gsl_root_fsolver_iterate(brent.get());
-            if (ctx.failure) std::rethrow_exception(ctx.failure);
-            gsl_check(status, "Brent search for c0");
-            status = gsl_root_test_interval(gsl_root_fsolver_x_lower(brent.get()),
-                                            gsl_root_fsolver_x_upper(brent.get()), 1e-15, 0.0);
-        }
-        if (status != GSL_SUCCESS)
-            throw numerical_error("Brent search for c0 did not converge in " + std::to_string(iter) + " iterations");
-        s = solve_system(gsl_root_fsolver_root(brent.get()));
-        s.iterations = iter;
+        const root c0 = brent_root([this, target](double c) { return load(c) - target; }, lo, hi, 1e-15, 0.0,
+                                   max_brent_iterations, "Brent search for c0");
+        s = solve_system(c0.x);
+        s.iterations = c0.iterations;
     }
     if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
         throw numerical_error("tangential problem: the creep is not finite (roughness parameters too large?)");

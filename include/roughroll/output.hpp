@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "roughroll/contact.hpp"
+#include "roughroll/physical_scene.hpp"
 #include "roughroll/text.hpp"
 
 namespace roughroll {
@@ -19,6 +20,7 @@ struct point_report {
     const tangential_solution& solution;
     double seconds;  // wall time of the normal and tangential solves
     std::optional<error_estimate> estimate;
+    std::optional<si_point> si;  // a physical scene's results in SI units
 };
 
 nlohmann::json to_json(const point_report& r);
@@ -27,6 +29,13 @@ void write_summary(std::ostream& out, const point_report& r);
 // Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,
 // xi_error_estimate,Q_error_estimate (empty without an estimate; the c0 estimate is 0 on a
 // curve swept in c0, the Q estimate 0 on a curve at given loads); shortest round-trip digits.
-void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve);
+// For a physical scene (`si` given: its scene and contact width) the columns
+// P1_N_per_m,xi1,xi1_carter follow.
+struct si_context {
+    physical_scene scene;
+    contact_width width;
+};
+void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve,
+                     const std::optional<si_context>& si = std::nullopt);
 
 }  // namespace roughroll

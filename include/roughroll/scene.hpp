@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "roughroll/method.hpp"
+#include "roughroll/physical_scene.hpp"
 #include "roughroll/roughness.hpp"
 
 namespace roughroll {
@@ -41,6 +42,9 @@ struct scene {
     std::optional<double> Q;
     roughness surfaces;
     solver_options solver;
+    // Set for a physical scene; `surfaces` are then those at a = a_H(P2) until the
+    // contact width is found (find_width), and Q is P1/P2 when P1 is given.
+    std::optional<physical_scene> physical;
 };
 
 // Parses scene text; `source` names it in messages ("data/fig2a-T0.5.toml").

@@ -72,7 +72,8 @@ void add_convergence_options(CLI::App* cmd, convergence_options& o) {
 }
 
 int run_convergence(const convergence_options& o) {
-    const scene s = load_scene(o.scene);
+    scene s = load_scene(o.scene);
+    settle_width(s);  // a physical scene: the roughness at the width for its load
     const double Q = load_of(s, o.Q);
     if (Q == 0.0) throw input_error("Q = 0 is solved exactly without a discretisation: nothing to converge");
 

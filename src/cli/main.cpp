@@ -33,16 +33,31 @@ scene load_scene(const scene_options& o) {
     return s;
 }
 
+std::optional<contact_width> settle_width(scene& s) {
+    if (!s.physical) return std::nullopt;
+    // lambda = P_H/P2 at a trial width, as the scene's method reports it.
+    const auto load_ratio = [&s](const roughness& r) { return contact(r, s.friction, s.solver).normal().lambda; };
+    const contact_width w = find_width(*s.physical, load_ratio);
+    s.surfaces = roughness_at(*s.physical, w.a);
+    return w;
+}
+
+std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t) {
+    if (!s.physical || !w) return std::nullopt;
+    return to_si(*s.physical, *w, t.Q, t.f, t.c0, t.xi);
+}
+
 namespace {
 
 int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
-    const scene s = load_scene(o);
+    scene s = load_scene(o);
     const double Q = load_of(s, Q_option);
     const auto start = std::chrono::steady_clock::now();
+    const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver);
     const tangential_solution solution = c.point(Q);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const point_report report{s.label, c.normal(), solution, seconds, c.estimate(solution)};
+    const point_report report{s.label, c.normal(), solution, seconds, c.estimate(solution), si_of(s, width, solution)};
     if (json)
         std::cout << to_json(report).dump(2) << "\n";
     else
@@ -51,16 +66,19 @@ int run_point(const scene_options& o, std::optional<double> Q_option, bool json)
 }
 
 int run_curve(const scene_options& o, int points, bool sweep, const std::string& csv) {
-    const scene s = load_scene(o);
+    scene s = load_scene(o);
+    const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver);
     const auto curve = sweep ? swept_curve(c, points) : creep_curve(c, curve_loads(points, s.friction));
+    std::optional<si_context> si;
+    if (width) si = si_context{*s.physical, *width};
     if (csv.empty()) {
-        write_curve_csv(std::cout, curve);
+        write_curve_csv(std::cout, curve, si);
         return 0;
     }
     std::ofstream out(csv);
     if (!out) throw input_error("cannot write '" + csv + "'");
-    write_curve_csv(out, curve);
+    write_curve_csv(out, curve, si);
     if (!out.flush()) throw input_error("cannot write '" + csv + "'");
     return 0;
 }

@@ -190,8 +190,9 @@ int run_traction(const traction_options& o) {
     if (name.empty() || control || name.find('/') != std::string::npos || name == "." || name == "..")
         throw input_error("--name '" + one_line(name) + "' is not a file name");
 
-    const scene s = load_scene(o.scene);
+    scene s = load_scene(o.scene);
     const double Q = load_of(s, o.Q);
+    const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver);
     const tangential_solution solution = c.point(Q);
     const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi
@@ -231,11 +232,19 @@ int run_traction(const traction_options& o) {
         << ", checks = " << (solution.checks.hold() ? "hold" : "VIOLATED") << "\n"
         << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick on [-1, c0), slip on [c0, 1];"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
-    out << "r,p,p1,f_p,minus_f_p,zone,slip_velocity,p_hertz,p1_carter\n";
+    const std::optional<si_point> si = si_of(s, width, solution);
+    if (si)
+        out << "# SI: a = " << shortest(si->a) << " m (Hertz " << shortest(si->a_hertz) << " m), P2 = "
+            << shortest(si->P2) << " N/m, xi1 = " << shortest(si->xi1) << "; x1_m = r a, p2_Pa = p P2/a, p1_Pa = p1 P2/a\n";
+    out << "r,p,p1,f_p,minus_f_p,zone,slip_velocity,p_hertz,p1_carter" << (si ? ",x1_m,p2_Pa,p1_Pa" : "") << "\n";
     for (const auto& row : rows) {
         out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p)
             << ',' << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ',' << shortest(row.v) << ','
-            << shortest(row.p_smooth) << ',' << shortest(row.p1_smooth) << '\n';
+            << shortest(row.p_smooth) << ',' << shortest(row.p1_smooth);
+        if (si)
+            out << ',' << shortest(row.r * si->a) << ',' << shortest(row.p * si->p_scale) << ','
+                << shortest(row.p1 * si->p_scale);
+        out << '\n';
     }
     if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
 
