@@ -177,6 +177,54 @@ expect huge-friction "relative precision" -- point "$dir/hugefriction.toml"
 scene hugeT "$(printf 'friction = 0.3\n[cylinder1.tangential]\nT = 1e308\nA = 0.5\n')"
 expect infinite-creep "not finite" -- point "$dir/hugeT.toml" --Q 0.3
 
+# Physical scenes (SI units): materials, radii, loads, stiffness k, t.
+phys='E = 210e9
+nu = 0.3
+R1 = 0.02
+R2 = 0.02
+P2 = 1e5
+P1 = 1.5e4
+friction = 0.3
+[cylinder1.tangential]
+k = 4e14
+t = 1.5e6
+[solver]
+n = 32'
+scene phys "$phys"
+scene physnoR2 "$(printf '%s\n' "$phys" | grep -v '^R2 =')"
+scene physnu "$(printf '%s\n' "$phys" | sed 's/^nu = 0.3/nu = 0.7/')"
+scene physE "$(printf '%s\n' "$phys" | sed 's/^E = 210e9/E = -1/')"
+scene physR "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = 0/')"
+scene physplanes "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = inf/; s/^R2 = 0.02/R2 = inf/')"
+scene physP2 "$(printf '%s\n' "$phys" | sed 's/^P2 = 1e5/P2 = nan/')"
+scene physP1 "$(printf '%s\n' "$phys" | sed 's/^P1 = 1.5e4/P1 = 3.1e4/')"
+scene physP1Q "$(printf 'Q = 0.1\n%s\n' "$phys")"
+scene physhertzP1 "$(printf 'contact_width = "hertz"\n%s\n' "$phys")"
+scene physwidth "$(printf 'contact_width = "wide"\n%s\n' "$phys")"
+scene physt0 "$(printf '%s\n' "$phys" | sed 's/^t = 1.5e6/t = 0/')"
+scene physk "$(printf '%s\n' "$phys" | sed 's/^k = 4e14/k = -4e14/')"
+scene physhalf "$(printf '%s\n' "$phys" | sed 's/^k = 4e14//')"
+scene physmix "$(printf '%s\n' "$phys" | sed 's/^k = 4e14/T = 0.5/')"
+scene ktnophys "$(printf 'friction = 0.3\nQ = 0.1\n[cylinder1.normal]\nk = 1e14\nt = 1e6\n')"
+expect physical-missing-R2 "missing 'R2'" -- point "$dir/physnoR2.toml"
+expect physical-nu-range "'nu' must be in (-1, 0.5]" -- point "$dir/physnu.toml"
+expect physical-E-negative "'E' must be finite and > 0" -- point "$dir/physE.toml"
+expect physical-R-zero "'R1' must be > 0" -- point "$dir/physR.toml"
+expect physical-two-planes "two planes" -- point "$dir/physplanes.toml"
+expect physical-P2-nan "'P2' must be finite and > 0" -- point "$dir/physP2.toml"
+expect physical-P1-slides "|P1| <= f P2" -- point "$dir/physP1.toml"
+expect physical-P1-and-Q "not both" -- point "$dir/physP1Q.toml"
+expect physical-P1-hertz-width "given-load" -- point "$dir/physhertzP1.toml"
+expect physical-width-rule "contact_width" -- point "$dir/physwidth.toml"
+expect physical-t-zero "one-parameter" -- point "$dir/physt0.toml"
+expect physical-k-negative "'cylinder1.tangential.k' must be finite and >= 0" -- point "$dir/physk.toml"
+expect physical-term-half "needs both k and t" -- point "$dir/physhalf.toml"
+expect physical-term-mixed "unknown key 'cylinder1.tangential.T'" -- point "$dir/physmix.toml"
+expect k-t-without-physical "need a physical scene" -- point "$dir/ktnophys.toml"
+if ! "$bin" point "$dir/phys.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi1"' "$dir/out"; then
+    echo "FAIL the valid physical scene did not solve:"; cat "$dir/err"; failures=$((failures + 1))
+fi
+
 # A valid scene must still work (the harness above is not failing everything).
 if ! "$bin" point "$dir/good.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi"' "$dir/out"; then
     echo "FAIL the valid scene did not solve:"; cat "$dir/err"; failures=$((failures + 1))

@@ -410,5 +410,62 @@ TEST(LoadOf, CylindersSlide) {
     EXPECT_NE(from_scene.find("|Q| = 0.5 exceeds f = 0.3"), std::string::npos) << from_scene;
 }
 
+// Physical scenes (physical_scene.hpp): SI keys, Q from P1, roughness as k, t or as T, A
+// taken at Hertz's half-width for P2.
+const std::string physical_scene_text = R"(
+E = 210e9
+nu = 0.3
+R1 = 0.02
+R2 = 0.05
+P2 = 1e5
+P1 = -1.5e4
+friction = 0.3
+[cylinder1.tangential]
+k = 4e14
+t = 1.5e6
+[cylinder2.normal]
+T = 0.5
+A = 2
+)";
+
+TEST(PhysicalScene, KeysAndLoads) {
+    const scene s = parse_scene(physical_scene_text, source);
+    ASSERT_TRUE(s.physical);
+    const physical_scene& p = *s.physical;
+    EXPECT_EQ(p.E, 210e9);
+    EXPECT_EQ(p.nu, 0.3);
+    EXPECT_DOUBLE_EQ(p.radius(), 0.02 * 0.05 / 0.07);
+    EXPECT_EQ(p.width, width_rule::given_load);
+    ASSERT_TRUE(s.Q);
+    EXPECT_DOUBLE_EQ(*s.Q, -0.15);
+    EXPECT_EQ(p.cylinder1.tangential.k, 4e14);
+    EXPECT_EQ(p.cylinder1.tangential.t, 1.5e6);
+    EXPECT_FALSE(p.cylinder1.normal.present());
+    EXPECT_FALSE(p.cylinder2.tangential.present());
+}
+
+TEST(PhysicalScene, DimensionlessTermsAreTakenAtTheHertzWidth) {
+    const scene s = parse_scene(physical_scene_text, source);
+    const physical_scene& p = *s.physical;
+    const double a_H = hertz_half_width(p, p.P2);
+    // (3.26) by hand: t = a mu/(8 (1 - nu) T), k = 2 t (A/a)^2.
+    const double mu = 210e9 / 2.6;
+    const double t = a_H * mu / (8.0 * 0.7 * 0.5);
+    EXPECT_NEAR(p.cylinder2.normal.t, t, 1e-12 * t);
+    EXPECT_NEAR(p.cylinder2.normal.k, 2.0 * t * 4.0 / (a_H * a_H), 1e-12 * p.cylinder2.normal.k);
+    // The surfaces reported before the width search are those at a_H: the T, A written.
+    EXPECT_NEAR(s.surfaces.cylinder2.normal.T, 0.5, 1e-15);
+    EXPECT_NEAR(s.surfaces.cylinder2.normal.A, 2.0, 1e-15);
+    // T and A grow with the width (3.26).
+    const roughness wider = roughness_at(p, 2.0 * a_H);
+    EXPECT_NEAR(wider.cylinder2.normal.T, 1.0, 1e-15);
+    EXPECT_NEAR(wider.cylinder2.normal.A, 4.0, 1e-15);
+}
+
+TEST(PhysicalScene, DimensionlessScenesStayDimensionless) {
+    const scene s = parse_scene("friction = 0.3\n", source);
+    EXPECT_FALSE(s.physical);
+}
+
 }  // namespace
 }  // namespace roughroll

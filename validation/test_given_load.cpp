@@ -1,0 +1,141 @@
+// Physical scenes (physical_scene.hpp): Hertz's and Carter's dimensional formulas for smooth
+// rollers, the half-width found for a given load carrying exactly that load, the paper's
+// convention (a = a_H) reproducing the dimensionless problem, and the units scaling out.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/contact.hpp"
+#include "roughroll/physical_scene.hpp"
+#include "roughroll/scene.hpp"
+
+using namespace roughroll;
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+// Steel rollers, R1 = R2 = 20 mm, 100 N/mm, Q = 0.15, f = 0.3; `rough` appended as written.
+scene steel(const std::string& rough, const std::string& extra = "") {
+    return parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n" + extra +
+                           "\n" + rough,
+                       "test");
+}
+
+const std::string rough_k_t =
+    "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n";
+
+double lambda_of(const roughness& r, const scene& s) { return contact(r, s.friction, s.solver).normal().lambda; }
+
+contact_width width_of(const scene& s) {
+    return find_width(*s.physical, [&s](const roughness& r) { return lambda_of(r, s); });
+}
+
+struct solved {
+    contact_width width;
+    si_point si;
+    tangential_solution point;
+};
+
+solved solve(const scene& s) {
+    const contact_width w = width_of(s);
+    contact c(roughness_at(*s.physical, w.a), s.friction, s.solver);
+    const tangential_solution p = c.point(*s.Q);
+    return {w, to_si(*s.physical, w, p.Q, p.f, p.c0, p.xi), p};
+}
+}  // namespace
+
+// Johnson, Contact Mechanics (4.43) for identical materials, b^2 = 8 P R (1 - nu^2)/(pi E), and
+// Carter's creep ratio xi1 = (f a / R)(1 - sqrt(1 - Q/f)): written here from those forms, not (3.27).
+TEST(GivenLoad, SmoothRollersAreHertzAndCarter) {
+    const scene s = steel("");
+    ASSERT_TRUE(s.physical);
+    const solved r = solve(s);
+    const double R = 0.01, E = 210e9, nu = 0.3, P = 1e5, f = 0.3, Q = 0.15;
+    const double b = std::sqrt(8.0 * P * R * (1.0 - nu * nu) / (pi * E));
+    EXPECT_NEAR(r.width.a, b, 1e-15 * b);
+    EXPECT_EQ(r.width.iterations, 0);  // smooth: no search, no kernel
+    EXPECT_NEAR(r.si.xi1, f * b / R * (1.0 - std::sqrt(1.0 - Q / f)), 1e-14);
+    EXPECT_NEAR(r.si.xi1, r.si.xi1_carter, 1e-15);
+    EXPECT_NEAR(r.si.c, b * (2.0 * std::sqrt(1.0 - Q / f) - 1.0), 1e-15);
+    EXPECT_NEAR(r.si.P1, 1.5e4, 1e-9);
+}
+
+// The root of lambda(a) = (a/a_H)^2: at the width found, a contact solved independently
+// carries P2, i.e. P_H(a)/lambda(a) = P2 with P_H(a) the Hertz load of width a.
+TEST(GivenLoad, TheWidthFoundCarriesTheLoad) {
+    for (const char* how : {"extrapolated", "product", "paper"}) {
+        const scene s = steel(rough_k_t, "");
+        scene t = s;
+        t.solver.how = method_from_string(how);
+        const contact_width w = width_of(t);
+        EXPECT_GT(w.a, w.a_hertz) << how;  // roughness adds compliance (E2): a wider contact
+        EXPECT_GT(w.iterations, 0) << how;
+        const double lambda = lambda_of(roughness_at(*t.physical, w.a), t);
+        const physical_scene& p = *t.physical;
+        const double P_H = pi * p.shear_modulus() * w.a * w.a / (4.0 * (1.0 - p.nu) * p.radius());
+        EXPECT_NEAR(P_H / lambda, p.P2, 1e-9 * p.P2) << how;
+        EXPECT_NEAR(w.lambda, lambda, 1e-9 * lambda) << how;
+    }
+}
+
+// With contact_width = "hertz" and T, A written in the scene, the model is the paper's
+// dimensionless problem at those T, A: the same lambda, c0 and xi; the load carried is P2/lambda.
+TEST(GivenLoad, HertzWidthIsThePapersProblem) {
+    const std::string TA = "[cylinder1.tangential]\nT = 0.5\nA = 0.5\n[cylinder1.normal]\nT = 0.5\nA = 0.5\n";
+    const scene paper = parse_scene("friction = 0.3\nQ = 0.15\n" + TA, "paper");
+    const scene phys = parse_scene(
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.05\nP2 = 3e5\nQ = 0.15\nfriction = 0.3\ncontact_width = \"hertz\"\n" + TA,
+        "physical");
+    const roughness r = roughness_at(*phys.physical, hertz_half_width(*phys.physical, 3e5));
+    EXPECT_NEAR(r.cylinder1.normal.T, 0.5, 1e-15);
+    EXPECT_NEAR(r.cylinder1.normal.A, 0.5, 1e-15);
+    EXPECT_NEAR(r.cylinder1.tangential.T, 0.5, 1e-15);
+    EXPECT_EQ(r.cylinder2.normal.T, 0.0);
+
+    contact a(paper.surfaces, 0.3, paper.solver);
+    const tangential_solution pa = a.point(0.15);
+    const solved ph = solve(phys);
+    EXPECT_NEAR(ph.width.lambda, a.normal().lambda, 1e-12);
+    EXPECT_NEAR(ph.point.c0, pa.c0, 1e-12);
+    EXPECT_NEAR(ph.point.xi, pa.xi, 1e-12);
+    EXPECT_NEAR(ph.width.load, 3e5 / a.normal().lambda, 1e-6);
+    EXPECT_EQ(ph.width.a, ph.width.a_hertz);
+}
+
+// Every stress (E, P2/length, P1/length, k length, t/length) times 7: T, A and a_H are
+// unchanged, so are a, c and xi1; the tractions scale by 7.
+TEST(GivenLoad, StressUnitsScaleOut) {
+    const solved one = solve(steel(rough_k_t));
+    const scene s7 = parse_scene(
+        "E = 1470e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 7e5\nP1 = 1.05e5\nfriction = 0.3\n"
+        "[cylinder1.tangential]\nk = 28e14\nt = 10.5e6\n[cylinder1.normal]\nk = 56e14\nt = 10.5e6\n",
+        "x7");
+    const solved seven = solve(s7);
+    EXPECT_NEAR(seven.width.a, one.width.a, 1e-11 * one.width.a);
+    EXPECT_NEAR(seven.si.c, one.si.c, 1e-11 * one.width.a);
+    EXPECT_NEAR(seven.si.xi1, one.si.xi1, 1e-10 * one.si.xi1);
+    EXPECT_NEAR(seven.si.p_scale, 7.0 * one.si.p_scale, 1e-10 * seven.si.p_scale);
+}
+
+// A softer layer (k and t halved) widens the contact and raises the creep; both stay above
+// the smooth rollers' (Sec. 4: "the creep between rough rollers is higher").
+TEST(GivenLoad, SofterRoughnessWidensTheContactAndRaisesTheCreep) {
+    const solved smooth_rollers = solve(steel(""));
+    const solved stiff = solve(steel(rough_k_t));
+    const solved soft = solve(
+        steel("[cylinder1.tangential]\nk = 2e14\nt = 0.75e6\n[cylinder1.normal]\nk = 4e14\nt = 0.75e6\n"));
+    EXPECT_GT(stiff.width.a, smooth_rollers.width.a);
+    EXPECT_GT(soft.width.a, stiff.width.a);
+    EXPECT_GT(stiff.si.xi1, smooth_rollers.si.xi1);
+    EXPECT_GT(soft.si.xi1, stiff.si.xi1);
+    EXPECT_TRUE(soft.point.checks.hold());
+}
+
+// A roller on a plane (R2 = inf) is Hertz's with R = R1.
+TEST(GivenLoad, RollerOnAPlane) {
+    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.01\nR2 = inf\nP2 = 1e5\nQ = 0.1\nfriction = 0.3\n", "plane");
+    EXPECT_EQ(s.physical->radius(), 0.01);
+    const double b = std::sqrt(8.0 * 1e5 * 0.01 * (1.0 - 0.09) / (pi * 210e9));
+    EXPECT_NEAR(width_of(s).a, b, 1e-15 * b);
+}
