@@ -304,6 +304,11 @@ void profile_violations(const micro_geometry& g, std::vector<std::string>& out) 
                              : " between line " + line(x1.size() - 1) + " and the closing point x1 = l";
     };
     const std::string who = p.measured.source + ": the periodic spline through the samples ";
+    if (!std::isfinite(low.value) || !std::isfinite(high.value)) {
+        // Knots so close that the spline's slopes overflow double precision.
+        out.push_back(one_line(who + "is not finite (samples too close together for double precision?)"));
+        return;
+    }
     // A dip of a rounding's size next to a sample of 0 (about 1e-37 m for a smooth profile
     // sampled at h0 = 0) is not an overshoot.
     if (!(low.value >= -1e-12 * H)) {
