@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <memory>
 
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_interp.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_permutation.h>
 #include <gsl/gsl_roots.h>
@@ -27,5 +29,22 @@ using root_solver_ptr = std::unique_ptr<gsl_root_fsolver, gsl_deleter>;
 matrix_ptr make_matrix(std::size_t rows, std::size_t cols);
 vector_ptr make_vector(std::size_t size);
 permutation_ptr make_permutation(std::size_t size);
+
+// The micro-geometry (micro_geometry.cpp, roughness_parameters.cpp): the periodic spline of a
+// measured profile and the adaptive quadrature's workspace.
+struct gsl_quadrature_deleter {
+    void operator()(gsl_interp* i) const { gsl_interp_free(i); }
+    void operator()(gsl_interp_accel* a) const { gsl_interp_accel_free(a); }
+    void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
+};
+
+using interp_ptr = std::unique_ptr<gsl_interp, gsl_quadrature_deleter>;
+using interp_accel_ptr = std::unique_ptr<gsl_interp_accel, gsl_quadrature_deleter>;
+using integration_workspace_ptr = std::unique_ptr<gsl_integration_workspace, gsl_quadrature_deleter>;
+
+// Allocators that throw numerical_error instead of returning null (defined in micro_geometry.cpp).
+interp_ptr make_interp(const gsl_interp_type* type, std::size_t size);
+interp_accel_ptr make_interp_accel();
+integration_workspace_ptr make_integration_workspace(std::size_t intervals);
 
 }  // namespace roughroll

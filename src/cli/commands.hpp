@@ -66,4 +66,13 @@ struct convergence_options {
 void add_convergence_options(CLI::App* cmd, convergence_options& o);
 int run_convergence(const convergence_options& o);
 
+// `roughroll roughness SPEC [--json]`: k, t, alpha of (2.11)-(2.15) from a micro-geometry.
+struct roughness_options {
+    std::string spec;
+    bool json = false;
+};
+
+void add_roughness_options(CLI::App* cmd, roughness_options& o);
+int run_roughness(const roughness_options& o);
+
 }  // namespace roughroll::cli

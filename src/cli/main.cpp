@@ -124,6 +124,11 @@ int main(int argc, char** argv) {
         app.add_subcommand("convergence", "error against run time of every method for one point (CSV, SVG, PNG)");
     add_convergence_options(convergence, conv);
 
+    roughness_options rough;
+    CLI::App* roughness_cmd =
+        app.add_subcommand("roughness", "roughness parameters k, t, alpha (2.11)-(2.15) from a micro-geometry spec");
+    add_roughness_options(roughness_cmd, rough);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -138,6 +143,7 @@ int main(int argc, char** argv) {
         if (*figure) return run_figure(fig);
         if (*convergence) return run_convergence(conv);
         if (*traction) return run_traction(trac);
+        if (*roughness_cmd) return run_roughness(rough);
     } catch (const roughroll::error& e) {
         std::cerr << "roughroll: error: " << e.what() << "\n";
         return 2;

@@ -1,0 +1,114 @@
+// `roughroll roughness SPEC [--json]`: the roughness parameters k, t, alpha of (2.11)-(2.15)
+// of a micro-geometry spec (micro_geometry_input.hpp), with the averages (2.9) they use and the
+// quadrature's error estimates. SI units: k in Pa/m, t in Pa m, alpha in 1/m.
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "roughroll/micro_geometry_input.hpp"
+#include "roughroll/roughness_parameters.hpp"
+
+namespace roughroll::cli {
+namespace {
+
+std::string number(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.12g", x);
+    return buffer;
+}
+
+std::string error_text(double e) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.1e", e);
+    return buffer;
+}
+
+nlohmann::json averages_json(const layer_averages& m) {
+    return {{"a", m.a}, {"a3_h1", m.a3_h1}, {"a33", m.a33}, {"a_h1", m.a_h1}, {"a_h1_squared", m.a_h1_squared}};
+}
+
+void write_json(std::ostream& out, const std::string& spec, const micro_geometry& g, const roughness_parameters& p) {
+    nlohmann::json j;
+    j["spec"] = spec;
+    j["profile"] = to_string(g.bottom.kind);
+    j["micro_shape"] = to_string(g.shape);
+    j["decay"] = to_string(g.decay);
+    j["k_tangential"] = p.k_tangential;
+    j["k_normal"] = p.k_normal;
+    j["t_tangential"] = p.t_tangential;
+    j["t_normal"] = p.t_normal;
+    j["alpha_tangential"] = p.alpha_tangential;
+    j["alpha_normal"] = p.alpha_normal;
+    j["averages"] = averages_json(p.averages);
+    j["error_estimate"] = {{"k_tangential", p.k_tangential_error},
+                           {"k_normal", p.k_normal_error},
+                           {"t_tangential", p.t_tangential_error},
+                           {"t_normal", p.t_normal_error},
+                           {"alpha_tangential", p.alpha_tangential_error},
+                           {"alpha_normal", p.alpha_normal_error},
+                           {"averages", averages_json(p.averages_error)}};
+    j["evaluations"] = p.evaluations;
+    j["units"] = {{"k", "Pa/m"}, {"t", "Pa m"}, {"alpha", "1/m"}, {"a", "m"}, {"a3_h1", "1"},
+                  {"a33", "1/m"}, {"a_h1", "m"}, {"a_h1_squared", "m"}};
+    out << j.dump(2) << "\n";
+}
+
+void write_text(std::ostream& out, const std::string& spec, const micro_geometry& g, const roughness_parameters& p) {
+    const layer& m = g.material;
+    out << "roughness parameters (2.11)-(2.15) of " << spec << "\n";
+    out << "  layer: lambda0 = " << number(m.lambda0) << " Pa, mu0 = " << number(m.mu0) << " Pa, H = " << number(m.H)
+        << " m, l = " << number(m.l) << " m\n";
+    out << "  profile " << to_string(g.bottom.kind);
+    if (g.bottom.kind == profile_kind::sine || g.bottom.kind == profile_kind::sawtooth)
+        out << " (delta = " << number(g.bottom.delta) << " m)";
+    if (g.bottom.kind == profile_kind::measured)
+        out << " (" << g.bottom.measured.x1.size() << " samples from " << g.bottom.measured.source << ")";
+    out << ", micro-shape " << to_string(g.shape) << ", decay " << to_string(g.decay) << "\n\n";
+    const auto row = [&out](const char* name, const char* unit, double t, double te, double n, double ne) {
+        char line[160];
+        std::snprintf(line, sizeof line, "  %-6s %-5s  %20s +- %-8s  %20s +- %-8s\n", name, unit, number(t).c_str(),
+                      error_text(te).c_str(), number(n).c_str(), error_text(ne).c_str());
+        out << line;
+    };
+    char header[160];
+    std::snprintf(header, sizeof header, "  %-6s %-5s  %31s  %31s\n", "", "", "tangential (1)", "normal (2)");
+    out << header;
+    row("k", "Pa/m", p.k_tangential, p.k_tangential_error, p.k_normal, p.k_normal_error);
+    row("t", "Pa m", p.t_tangential, p.t_tangential_error, p.t_normal, p.t_normal_error);
+    row("alpha", "1/m", p.alpha_tangential, p.alpha_tangential_error, p.alpha_normal, p.alpha_normal_error);
+    out << "\n  averages (2.9), with the quadrature's error estimates:\n";
+    const auto average = [&out](const char* name, const char* unit, double v, double e) {
+        char line[160];
+        std::snprintf(line, sizeof line, "    %-10s = %20s +- %-8s %s\n", name, number(v).c_str(), error_text(e).c_str(),
+                      unit);
+        out << line;
+    };
+    average("<a>", "m", p.averages.a, p.averages_error.a);
+    average("<a3 h_1>", "", p.averages.a3_h1, p.averages_error.a3_h1);
+    average("<a33>", "1/m", p.averages.a33, p.averages_error.a33);
+    average("<a h_1>", "m", p.averages.a_h1, p.averages_error.a_h1);
+    average("<a h_1^2>", "m", p.averages.a_h1_squared, p.averages_error.a_h1_squared);
+    out << "  (" << p.evaluations << " points x1 of the outer quadratures)\n";
+}
+
+}  // namespace
+
+void add_roughness_options(CLI::App* cmd, roughness_options& o) {
+    cmd->add_option("SPEC", o.spec, "micro-geometry spec (TOML; docs/roughness-parameters.md)")->required();
+    cmd->add_flag("--json", o.json, "one JSON object on stdout");
+}
+
+int run_roughness(const roughness_options& o) {
+    const micro_geometry g = read_roughness_spec(o.spec);
+    const roughness_parameters p = compute_roughness_parameters(g);
+    if (o.json)
+        write_json(std::cout, o.spec, g, p);
+    else
+        write_text(std::cout, o.spec, g, p);
+    return 0;
+}
+
+}  // namespace roughroll::cli

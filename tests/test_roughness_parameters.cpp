@@ -1,0 +1,356 @@
+// The roughness parameters (2.6)-(2.15) against closed forms derived by hand
+// (docs/roughness-parameters.md, "Closed forms"), and the paper's conditions.
+#include "roughroll/roughness_parameters.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/error.hpp"
+#include "roughroll/micro_geometry.hpp"
+#include "roughroll/profile_csv.hpp"
+
+namespace roughroll {
+namespace {
+
+// A steel-like layer 10 um thick with a 100 um period.
+constexpr double lambda0 = 1.15e11, mu0 = 7.7e10, H = 1e-5, l = 1e-4;
+
+micro_geometry geometry(profile_kind kind, double delta, decay_kind decay) {
+    micro_geometry g;
+    g.material = {lambda0, mu0, H, l};
+    g.bottom.kind = kind;
+    g.bottom.delta = delta;
+    g.decay = decay;
+    return g;
+}
+
+// |x - expected| <= tolerance |expected| (or <= tolerance * scale when expected is 0).
+::testing::AssertionResult close(double x, double expected, double tolerance, double scale = 0.0) {
+    const double bound = tolerance * (expected != 0.0 ? std::fabs(expected) : scale);
+    if (std::fabs(x - expected) <= bound) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << x << " vs " << expected << " (difference " << x - expected << ", bound "
+                                         << bound << ")";
+}
+
+// Flat profile (h0 = 0): a, a3, a33 do not depend on x1, and with h = l sin(2 pi x1/l),
+// <h_1> = 0 and <h_1^2> = 2 pi^2. By hand, with s = x2/H:
+//   linear     d = 1 - s:        <a> = H/3, <a33> = 1/H
+//   quadratic  d = (1 - s)^2:    <a> = H/5, <a33> = int 4(1-s)^2/H^2 dx2 = 4/(3H)
+//   cosine     d = cos(pi s/2):  <a> = H/2, <a33> = (pi/(2H))^2 H/2 = pi^2/(8H)
+// and a3 = -d(0)^2/2 = -1/2, so <a3 h_1> = <a h_1> = 0 and
+//   k1 = mu0 <a33>, k2 = (lambda0 + 2 mu0) <a33>, t1 = (lambda0 + 2 mu0) <a>/2, t2 = mu0 <a>/2.
+struct flat_case {
+    decay_kind decay;
+    double a;
+    double a33;
+};
+
+TEST(RoughnessParameters, FlatProfileClosedForms) {
+    const flat_case cases[] = {{decay_kind::linear, H / 3.0, 1.0 / H},
+                               {decay_kind::quadratic, H / 5.0, 4.0 / (3.0 * H)},
+                               {decay_kind::cosine, H / 2.0, M_PI * M_PI / (8.0 * H)}};
+    for (const flat_case& c : cases) {
+        SCOPED_TRACE(to_string(c.decay));
+        const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::flat, 0.0, c.decay));
+        EXPECT_TRUE(close(p.averages.a, c.a, 1e-13));
+        EXPECT_TRUE(close(p.averages.a33, c.a33, 1e-13));
+        EXPECT_TRUE(close(p.averages.a_h1_squared, 2.0 * M_PI * M_PI * c.a, 1e-13));
+        EXPECT_TRUE(close(p.averages.a_h1, 0.0, 1e-13, c.a));
+        EXPECT_TRUE(close(p.averages.a3_h1, 0.0, 1e-13, 1.0));
+        EXPECT_TRUE(close(p.k_tangential, mu0 * c.a33, 1e-12));
+        EXPECT_TRUE(close(p.k_normal, (lambda0 + 2.0 * mu0) * c.a33, 1e-12));
+        EXPECT_TRUE(close(p.t_tangential, (lambda0 + 2.0 * mu0) * c.a / 2.0, 1e-12));
+        EXPECT_TRUE(close(p.t_normal, mu0 * c.a / 2.0, 1e-12));
+        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(mu0 * c.a33 / ((lambda0 + 2.0 * mu0) * c.a)), 1e-12));
+        EXPECT_TRUE(close(p.alpha_normal, std::sqrt((lambda0 + 2.0 * mu0) * c.a33 / (mu0 * c.a)), 1e-12));
+    }
+}
+
+// The brief's numbers: flat, linear: k1 = mu0/H, k2 = (lambda0 + 2mu0)/H, t1 = (lambda0+2mu0)H/6,
+// t2 = mu0 H/6, in Pa/m and Pa m.
+TEST(RoughnessParameters, FlatLinearInSIUnits) {
+    const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::flat, 0.0, decay_kind::linear));
+    EXPECT_TRUE(close(p.k_tangential, 7.7e15, 1e-12));                 // 7.7e10 Pa / 1e-5 m
+    EXPECT_TRUE(close(p.k_normal, 2.69e16, 1e-12));                    // 2.69e11 Pa / 1e-5 m
+    EXPECT_TRUE(close(p.t_tangential, 2.69e11 * 1e-5 / 6.0, 1e-12));  // Pa m
+    EXPECT_TRUE(close(p.t_normal, 7.7e10 * 1e-5 / 6.0, 1e-12));
+}
+
+// a3 = int_{h0}^H d d' dx2 = [d^2/2]_{h0}^H = -d(h0)^2/2 for every d with d(H) = 0; and for the
+// linear decay a = (H - h0)^3/(3 H^2), a33 = (H - h0)/H^2.
+TEST(RoughnessParameters, LayerIntegralsAtOnePoint) {
+    for (const decay_kind decay : {decay_kind::linear, decay_kind::quadratic, decay_kind::cosine}) {
+        SCOPED_TRACE(to_string(decay));
+        const micro_geometry g = geometry(profile_kind::sine, 0.6 * H, decay);
+        for (const double x1 : {0.0, 0.1 * l, 0.37 * l, 0.5 * l, 0.9 * l}) {
+            const double h0 = 0.5 * 0.6 * H * (1.0 - std::cos(2.0 * M_PI * x1 / l));
+            const layer_integrals v = integrals_at(g, x1);
+            const double d = decay_value(decay, h0, H);
+            EXPECT_TRUE(close(v.a3, -0.5 * d * d, 1e-13)) << "x1 = " << x1;
+            EXPECT_LE(std::fabs(v.a3 + 0.5 * d * d), std::max(v.a3_error, 1e-16));
+            if (decay == decay_kind::linear) {
+                EXPECT_TRUE(close(v.a, std::pow(H - h0, 3) / (3.0 * H * H), 1e-13));
+                EXPECT_TRUE(close(v.a33, (H - h0) / (H * H), 1e-13));
+            }
+        }
+    }
+}
+
+// The sine profile h0 = (delta/2)(1 - cos theta), theta = 2 pi x1/l, with the linear decay.
+// With 1 - h0/H = A + B cos theta, A = 1 - eps, B = eps, eps = delta/(2H), and h_1 = 2 pi cos theta,
+// <cos^2> = 1/2, <cos^4> = 3/8 and the odd moments 0:
+//   <a33>     = (1/H) <1 - h0/H>                 = A/H
+//   <a>       = (H/3) <(A + B c)^3>               = (H/3) (A^3 + 3/2 A B^2)
+//   <a h_1>   = (H/3) 2 pi <(A + B c)^3 c>        = (H/3) 2 pi (3/2 A^2 B + 3/8 B^3)
+//   <a h_1^2> = (H/3) 4 pi^2 <(A + B c)^3 c^2>    = (H/3) 4 pi^2 (A^3/2 + 9/8 A B^2)
+//   <a3 h_1>  = -(1/2) 2 pi <(A + B c)^2 c>       = -pi A B
+layer_averages sine_linear_closed_form(double delta) {
+    const double eps = delta / (2.0 * H), A = 1.0 - eps, B = eps;
+    layer_averages m;
+    m.a33 = A / H;
+    m.a = H / 3.0 * (A * A * A + 1.5 * A * B * B);
+    m.a_h1 = H / 3.0 * 2.0 * M_PI * (1.5 * A * A * B + 0.375 * B * B * B);
+    m.a_h1_squared = H / 3.0 * 4.0 * M_PI * M_PI * (0.5 * A * A * A + 1.125 * A * B * B);
+    m.a3_h1 = -M_PI * A * B;
+    return m;
+}
+
+TEST(RoughnessParameters, SineProfileLinearDecayClosedForm) {
+    for (const double delta : {0.1 * H, 0.5 * H, 0.9 * H}) {
+        SCOPED_TRACE(delta);
+        const layer_averages m = sine_linear_closed_form(delta);
+        const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+        EXPECT_TRUE(close(p.averages.a, m.a, 1e-12));
+        EXPECT_TRUE(close(p.averages.a33, m.a33, 1e-12));
+        EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, 1e-12));
+        EXPECT_TRUE(close(p.averages.a_h1_squared, m.a_h1_squared, 1e-12));
+        EXPECT_TRUE(close(p.averages.a3_h1, m.a3_h1, 1e-12));
+        // The quadrature's error estimates cover the actual errors.
+        EXPECT_LE(std::fabs(p.averages.a - m.a), p.averages_error.a + 1e-16 * m.a);
+        EXPECT_LE(std::fabs(p.averages.a_h1 - m.a_h1), p.averages_error.a_h1 + 1e-16 * m.a);
+        EXPECT_LE(std::fabs(p.averages.a3_h1 - m.a3_h1), p.averages_error.a3_h1 + 1e-16);
+        // (2.11)-(2.14) from the closed-form averages.
+        const double c = (lambda0 + mu0) / (lambda0 + 2.0 * mu0);
+        const double k1 = mu0 * (m.a33 - m.a3_h1 * m.a3_h1 / m.a_h1_squared);
+        const double k2 = (lambda0 + 2.0 * mu0) * (m.a33 - c * c * m.a3_h1 * m.a3_h1 / m.a_h1_squared);
+        const double t1 = (lambda0 + 2.0 * mu0) / 2.0 * (m.a - m.a_h1 * m.a_h1 / m.a_h1_squared);
+        const double t2 = mu0 / 2.0 * (m.a - m.a_h1 * m.a_h1 / m.a_h1_squared);
+        EXPECT_TRUE(close(p.k_tangential, k1, 1e-12));
+        EXPECT_TRUE(close(p.k_normal, k2, 1e-12));
+        EXPECT_TRUE(close(p.t_tangential, t1, 1e-12));
+        EXPECT_TRUE(close(p.t_normal, t2, 1e-12));
+        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(k1 / (2.0 * t1)), 1e-12));
+        EXPECT_TRUE(close(p.alpha_normal, std::sqrt(k2 / (2.0 * t2)), 1e-12));
+        // The corrector terms matter here (the test would not pass with the flat values).
+        EXPECT_GT(std::fabs(k1 - mu0 * m.a33), 1e-3 * k1);
+    }
+}
+
+// An independent route for the quadratic and cosine decays: the trapezoid sum over N points of
+// one period of the closed-form inner integrals (quadratic: a = (H/5) u^5, a3 = -u^4/2,
+// a33 = 4 u^3/(3H), u = 1 - h0/H; cosine: a = (H - h0)/2 - H sin(pi h0/H)/(2 pi),
+// a3 = -cos^2(pi h0/(2H))/2, a33 = (pi/(2H))^2 ((H - h0)/2 + H sin(pi h0/H)/(2 pi))).
+// The integrands are smooth and periodic, so the sum converges spectrally (for the quadratic
+// decay, a trigonometric polynomial of degree <= 7, it is exact for N > 7); N = 256.
+// (cos^2 = (1 + cos(pi x2/H))/2 and sin^2 = (1 - cos(pi x2/H))/2 integrated from h0 to H.)
+TEST(RoughnessParameters, SineProfileOtherDecaysAgainstTrapezoidSums) {
+    const double delta = 0.7 * H;
+    for (const decay_kind decay : {decay_kind::quadratic, decay_kind::cosine}) {
+        SCOPED_TRACE(to_string(decay));
+        const int N = 256;
+        layer_averages m;
+        for (int j = 0; j < N; ++j) {
+            const double theta = 2.0 * M_PI * j / N;
+            const double h0 = 0.5 * delta * (1.0 - std::cos(theta)), h1 = 2.0 * M_PI * std::cos(theta);
+            double a, a3, a33;
+            if (decay == decay_kind::quadratic) {
+                const double u = 1.0 - h0 / H;
+                a = H / 5.0 * std::pow(u, 5);
+                a3 = -0.5 * std::pow(u, 4);
+                a33 = 4.0 * std::pow(u, 3) / (3.0 * H);
+            } else {
+                const double s = H * std::sin(M_PI * h0 / H) / (2.0 * M_PI), c = std::cos(M_PI * h0 / (2.0 * H));
+                a = (H - h0) / 2.0 - s;
+                a3 = -0.5 * c * c;
+                a33 = std::pow(M_PI / (2.0 * H), 2) * ((H - h0) / 2.0 + s);
+            }
+            m.a += a / N;
+            m.a33 += a33 / N;
+            m.a_h1 += a * h1 / N;
+            m.a_h1_squared += a * h1 * h1 / N;
+            m.a3_h1 += a3 * h1 / N;
+        }
+        const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay));
+        EXPECT_TRUE(close(p.averages.a, m.a, 1e-12));
+        EXPECT_TRUE(close(p.averages.a33, m.a33, 1e-12));
+        EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, 1e-12));
+        EXPECT_TRUE(close(p.averages.a_h1_squared, m.a_h1_squared, 1e-12));
+        EXPECT_TRUE(close(p.averages.a3_h1, m.a3_h1, 1e-12));
+    }
+}
+
+// The sawtooth h0 = delta x1/l, linear decay, eps = delta/H, s = x1/l:
+//   <a33> = (1/H) int_0^1 (1 - eps s) ds = (1 - eps/2)/H
+//   <a>   = (H/3) int_0^1 (1 - eps s)^3 ds = H (1 - (1 - eps)^4)/(12 eps)
+TEST(RoughnessParameters, SawtoothClosedForms) {
+    const double delta = 0.8 * H, eps = delta / H;
+    const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear));
+    EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, 1e-12));
+    EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), 1e-12));
+    EXPECT_GT(p.k_tangential, 0.0);
+    EXPECT_GT(p.t_normal, 0.0);
+}
+
+// CSV text of the sine profile sampled at N points of one period.
+std::string sine_csv(int N, double delta) {
+    std::string text = "# the sine profile, sampled\nx1,h0\n";
+    char line[96];
+    for (int j = 0; j < N; ++j) {
+        const double x1 = l * j / N;
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", x1, 0.5 * delta * (1.0 - std::cos(2.0 * M_PI * j / N)));
+        text += line;
+    }
+    return text;
+}
+
+// A measured profile of the sine converges to the built-in sine as the samples get denser.
+// A periodic cubic spline interpolates a smooth function to O(N^-4): the error of k and t must
+// fall by about 16 per doubling (observed order > 3.5 from N = 16 on).
+TEST(RoughnessParameters, MeasuredSineConvergesToBuiltInSine) {
+    const double delta = 0.5 * H;
+    const roughness_parameters exact = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+    double previous = 0.0;
+    for (const int N : {8, 16, 32, 64, 128, 256}) {
+        micro_geometry g = geometry(profile_kind::measured, 0.0, decay_kind::linear);
+        g.bottom.measured = parse_profile_csv(sine_csv(N, delta), "sine.csv", l);
+        const roughness_parameters p = compute_roughness_parameters(g);
+        const double error = std::max({std::fabs(p.k_tangential / exact.k_tangential - 1.0),
+                                       std::fabs(p.k_normal / exact.k_normal - 1.0),
+                                       std::fabs(p.t_tangential / exact.t_tangential - 1.0),
+                                       std::fabs(p.t_normal / exact.t_normal - 1.0)});
+        const double order = previous > 0.0 ? std::log2(previous / error) : 0.0;
+        std::printf("measured sine, N = %3d: max relative error of k, t = %.3e, observed order %.2f\n", N, error, order);
+        if (N >= 32 && error > 1e-12) {
+            EXPECT_GT(order, 3.5) << "N = " << N;
+        }
+        previous = error;
+    }
+    EXPECT_LT(previous, 1e-8);
+}
+
+// k and t scale as mu0/H and mu0 H: scaling the moduli by m and every length (H, l, delta)
+// by s multiplies k by m/s, t by m s and alpha by 1/s.
+TEST(RoughnessParameters, UnitsScaling) {
+    const micro_geometry g = geometry(profile_kind::sine, 0.4 * H, decay_kind::cosine);
+    const roughness_parameters p = compute_roughness_parameters(g);
+    const double m = 3.0, s = 1e-3;
+    micro_geometry scaled = g;
+    scaled.material = {m * lambda0, m * mu0, s * H, s * l};
+    scaled.bottom.delta = s * g.bottom.delta;
+    const roughness_parameters q = compute_roughness_parameters(scaled);
+    EXPECT_TRUE(close(q.k_tangential, p.k_tangential * m / s, 1e-12));
+    EXPECT_TRUE(close(q.k_normal, p.k_normal * m / s, 1e-12));
+    EXPECT_TRUE(close(q.t_tangential, p.t_tangential * m * s, 1e-12));
+    EXPECT_TRUE(close(q.t_normal, p.t_normal * m * s, 1e-12));
+    EXPECT_TRUE(close(q.alpha_tangential, p.alpha_tangential / s, 1e-12));
+    EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, 1e-12));
+}
+
+// Cauchy-Schwarz makes k, t >= 0; averages that make one 0 are refused, as is <a h_1^2> = 0.
+TEST(RoughnessParameters, FromAveragesRefusesZero) {
+    layer_averages m{H / 3.0, -0.5, 1.0 / H, 0.0, 2.0 * M_PI * M_PI * H / 3.0};
+    EXPECT_NO_THROW(parameters_from_averages(m, lambda0, mu0));
+    layer_averages degenerate = m;
+    degenerate.a3_h1 = std::sqrt(m.a33 * m.a_h1_squared);  // k1 = 0 exactly
+    try {
+        (void)parameters_from_averages(degenerate, lambda0, mu0);
+        ADD_FAILURE() << "accepted k_tangential = 0";
+    } catch (const numerical_error& e) {
+        EXPECT_NE(std::string(e.what()).find("k_tangential"), std::string::npos) << e.what();
+    }
+    layer_averages no_shape = m;
+    no_shape.a_h1_squared = 0.0;
+    EXPECT_THROW(parameters_from_averages(no_shape, lambda0, mu0), numerical_error);
+}
+
+// The message of check_conditions for g, or "" when it holds.
+std::string violation(const micro_geometry& g) {
+    try {
+        check_conditions(g);
+    } catch (const input_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+::testing::AssertionResult says(const std::string& message, std::initializer_list<const char*> fragments) {
+    if (message.empty()) return ::testing::AssertionFailure() << "no violation reported";
+    for (const char* f : fragments)
+        if (message.find(f) == std::string::npos) return ::testing::AssertionFailure() << "'" << f << "' not in: " << message;
+    return ::testing::AssertionSuccess() << message;
+}
+
+micro_geometry measured(const std::string& csv, double layer_H) {
+    micro_geometry g = geometry(profile_kind::measured, 0.0, decay_kind::linear);
+    g.material.H = layer_H;
+    g.material.l = 8.0;
+    g.bottom.measured = parse_profile_csv(csv, "p.csv", 8.0);
+    return g;
+}
+
+TEST(Conditions, EachViolationItsMessage) {
+    EXPECT_EQ(violation(geometry(profile_kind::sine, 0.5 * H, decay_kind::linear)), "");
+    EXPECT_TRUE(says(violation(geometry(profile_kind::sine, H, decay_kind::linear)), {"delta = 1e-05", "not below H", "0 <= h0 < H"}));
+    EXPECT_TRUE(says(violation(geometry(profile_kind::sawtooth, 2 * H, decay_kind::linear)), {"sawtooth", "0 <= h0 < H"}));
+    EXPECT_TRUE(says(violation(geometry(profile_kind::sine, -1e-7, decay_kind::linear)), {"delta must be finite and >= 0"}));
+    micro_geometry bad_layer = geometry(profile_kind::flat, 0.0, decay_kind::linear);
+    bad_layer.material.mu0 = 0.0;
+    EXPECT_TRUE(says(violation(bad_layer), {"mu0 must be finite and > 0"}));
+    bad_layer = geometry(profile_kind::flat, 0.0, decay_kind::linear);
+    bad_layer.material.H = std::nan("");
+    EXPECT_TRUE(says(violation(bad_layer), {"H must be finite and > 0"}));
+    // Samples: a negative h0 and an h0 at H, each naming its line (line 1 is the header).
+    EXPECT_TRUE(says(violation(measured("x1,h0\n0,0\n2,1\n4,-0.5\n6,1\n", 10.0)), {"p.csv:4:", "h0 = -0.5", "below 0"}));
+    EXPECT_TRUE(says(violation(measured("0,0\n2,1\n# c\n4,10\n6,1\n", 10.0)), {"p.csv:4:", "h0 = 10", "not below H = 10"}));
+    // The spline through a step overshoots: below 0 beside the step's foot, above the top
+    // beside its head, though every sample is within [0, H).
+    const std::string step = "0,0\n1,0\n2,0\n3,0\n4,1\n5,1\n6,1\n7,1\n";
+    const micro_geometry low = measured(step, 2.0);
+    const profile_function h0(low.bottom, low.material.l);
+    EXPECT_LT(h0.minimum().value, 0.0);
+    const std::vector<std::string> all = condition_violations(low);
+    ASSERT_EQ(all.size(), 1u);
+    EXPECT_TRUE(says(all.front(), {"p.csv: the periodic spline", "overshoots to h0 = -", "below 0", "between lines"}));
+    const std::vector<std::string> top = condition_violations(measured(step, 1.0 + 0.5 * (h0.maximum().value - 1.0)));
+    ASSERT_EQ(top.size(), 2u);
+    EXPECT_TRUE(says(top.back(), {"overshoots to h0 = 1.", "not below H"}));
+}
+
+TEST(Conditions, DecayViolations) {
+    const auto ok = decay_violations([](double x) { return 1.0 - x; }, [](double) { return -1.0; }, 1.0, "linear");
+    EXPECT_TRUE(ok.empty());
+    const auto bad = decay_violations([](double x) { return 2.0 - 1.5 * x; }, [](double x) { return x < 0.5 ? -1.0 : 0.0; },
+                                      1.0, "mine");
+    ASSERT_EQ(bad.size(), 3u);
+    EXPECT_TRUE(says(bad[0], {"decay 'mine'", "d(0) = 2", "d(0) = 1"}));
+    EXPECT_TRUE(says(bad[1], {"d(H) = 0.5", "d(H) = 0"}));
+    EXPECT_TRUE(says(bad[2], {"is not negative", "d' < 0"}));
+    for (const decay_kind decay : {decay_kind::linear, decay_kind::quadratic, decay_kind::cosine}) {
+        EXPECT_TRUE(decay_violations([decay](double x) { return decay_value(decay, x, H); },
+                                     [decay](double x) { return decay_slope(decay, x, H); }, H, to_string(decay))
+                        .empty());
+    }
+}
+
+// compute_roughness_parameters checks the conditions first.
+TEST(Conditions, ComputeRefusesViolations) {
+    EXPECT_THROW(compute_roughness_parameters(geometry(profile_kind::sine, 1.5 * H, decay_kind::linear)), input_error);
+}
+
+}  // namespace
+}  // namespace roughroll
