@@ -1,4 +1,5 @@
 #include "roughroll/micro_geometry_input.hpp"
+#include "micro_geometry_table.hpp"
 
 #include <cmath>
 

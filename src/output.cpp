@@ -5,6 +5,21 @@
 
 namespace roughroll {
 
+namespace {
+nlohmann::json term_json(const roughness_term& t) {
+    if (!t.present()) return nullptr;
+    return {{"T", t.T}, {"A", t.A}};
+}
+
+nlohmann::json cylinder_json(const cylinder_roughness& c) {
+    return {{"tangential", term_json(c.tangential)}, {"normal", term_json(c.normal)}};
+}
+
+std::string term_text(const roughness_term& t) {
+    return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
+}
+}  // namespace
+
 nlohmann::json to_json(const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
@@ -34,7 +49,9 @@ nlohmann::json to_json(const point_report& r) {
               {"xi1", r.si->xi1},
               {"xi1_carter", r.si->xi1_carter},
               {"p_centre_Pa", r.si->p_scale * r.normal.pressure(0.0)},
-              {"width_iterations", r.si->width_iterations}};
+              {"width_iterations", r.si->width_iterations},
+              {"roughness_at_a", {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
+                                  {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
     return {
         {"label", r.label},
         {"si", si},
@@ -87,6 +104,12 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"
         << "  pressure at centre  " << shortest(p.p_scale * r.normal.pressure(0.0)) << " Pa\n"
         << "  creep xi1           " << shortest(p.xi1) << "   (Carter, smooth: " << shortest(p.xi1_carter) << ")\n";
+    const auto cylinder = [&out](const char* name, const cylinder_roughness& c) {
+        out << "  " << name << " at a     tangential " << term_text(c.tangential) << "; normal " << term_text(c.normal)
+            << "\n";
+    };
+    cylinder("cylinder 1", p.surfaces.cylinder1);
+    cylinder("cylinder 2", p.surfaces.cylinder2);
 }
 
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {

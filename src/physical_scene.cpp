@@ -101,6 +101,7 @@ si_point to_si(const physical_scene& s, const contact_width& w, double Q, double
     p.xi1_carter = 2.0 * (1.0 - s.nu) * load * smooth_point.xi / (a_load * mu);
     p.p_scale = load / w.a;
     p.width_iterations = w.iterations;
+    p.surfaces = roughness_at(s, w.a);
     return p;
 }
 

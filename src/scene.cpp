@@ -2,11 +2,14 @@
 #include "roughroll/text.hpp"
 
 #include <array>
+#include <filesystem>
 #include <cmath>
 #include <cstdint>
 
 #include "roughroll/error.hpp"
 #include "roughroll/quadrature.hpp"
+#include "roughroll/roughness_parameters.hpp"
+#include "micro_geometry_table.hpp"
 #include "toml_input.hpp"
 
 namespace roughroll {
@@ -100,12 +103,33 @@ struct cylinder_input {
     term_input tangential, normal;
 };
 
+// A cylinder's terms, or for a physical scene its micro-geometry: the layer of Sec. 2, whose
+// k, t of (2.11)-(2.14) replace both terms (roughness_parameters.hpp).
 cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool physical,
-                             const std::string& source) {
+                             const std::filesystem::path& base_dir, const std::string& source) {
     const std::string path(key);
     const toml::table* table = table_at(root, key, source, path);
     if (table == nullptr) return {};
-    check_keys(*table, {"tangential", "normal"}, source, path);
+    if (!physical) {
+        if (table->contains("micro_geometry"))
+            fail(source, "table " + quoted(join(path, "micro_geometry")) +
+                             " needs a physical scene (E, nu, R1, R2, P2): k and t are in SI units");
+        check_keys(*table, {"tangential", "normal"}, source, path);
+    } else {
+        check_keys(*table, {"tangential", "normal", "micro_geometry"}, source, path);
+    }
+    const std::string layer_path = join(path, "micro_geometry");
+    if (const toml::table* layer = table_at(*table, "micro_geometry", source, layer_path)) {
+        if (table->contains("tangential") || table->contains("normal"))
+            fail(source, "table " + quoted(layer_path) + " gives both directions of " + quoted(path) +
+                             ": leave out its 'tangential' and 'normal' tables");
+        const micro_geometry g = read_micro_geometry(*layer, source, layer_path, base_dir);
+        const roughness_parameters r = compute_roughness_parameters(g);
+        cylinder_input c;
+        c.tangential.dimensional = stiffness{r.k_tangential, r.t_tangential};
+        c.normal.dimensional = stiffness{r.k_normal, r.t_normal};
+        return c;
+    }
     return {read_term(*table, "tangential", physical, source, path),
             read_term(*table, "normal", physical, source, path)};
 }
@@ -189,7 +213,7 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
 
 }  // namespace
 
-scene parse_scene(std::string_view text, const std::string& source) {
+scene parse_scene(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
     const toml::table root = parse_toml(text, source);
     check_keys(root,
                {"label", "friction", "Q", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
@@ -211,8 +235,8 @@ scene parse_scene(std::string_view text, const std::string& source) {
     }
 
     const bool physical = is_physical(root);
-    const cylinder_input c1 = read_cylinder(root, "cylinder1", physical, source);
-    const cylinder_input c2 = read_cylinder(root, "cylinder2", physical, source);
+    const cylinder_input c1 = read_cylinder(root, "cylinder1", physical, base_dir, source);
+    const cylinder_input c2 = read_cylinder(root, "cylinder2", physical, base_dir, source);
     if (physical) {
         physical_scene p = read_physical(root, s.friction, source);
         p.cylinder1 = stiffness_at_hertz(p, c1);
@@ -227,7 +251,10 @@ scene parse_scene(std::string_view text, const std::string& source) {
     return s;
 }
 
-scene read_scene(const std::string& path) { return parse_scene(read_text(path, "scene file"), path); }
+scene read_scene(const std::string& path) {
+    // A profile_csv named in the scene is relative to the scene's folder.
+    return parse_scene(read_text(path, "scene file"), path, std::filesystem::path(path).parent_path());
+}
 
 double load_of(const scene& s, std::optional<double> override) {
     // The command line wins, so one scene file can be solved for several loads.

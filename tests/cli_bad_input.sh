@@ -221,6 +221,10 @@ expect physical-k-negative "'cylinder1.tangential.k' must be finite and >= 0" --
 expect physical-term-half "needs both k and t" -- point "$dir/physhalf.toml"
 expect physical-term-mixed "unknown key 'cylinder1.tangential.T'" -- point "$dir/physmix.toml"
 expect k-t-without-physical "need a physical scene" -- point "$dir/ktnophys.toml"
+scene physlayerbad "$(printf '%s\n[cylinder2.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\nprofile = "sine"\ndelta = 2e-5\ndecay = "linear"\n' "$(printf '%s\n' "$phys" | grep -v '^n = 32' | grep -v '^\[solver\]')")"
+scene physlayercsv "$(printf '%s\n[cylinder2.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\nprofile = "measured"\nprofile_csv = "nope.csv"\ndecay = "linear"\n' "$(printf '%s\n' "$phys" | grep -v '^n = 32' | grep -v '^\[solver\]')")"
+expect physical-layer-delta-above-H "delta" -- point "$dir/physlayerbad.toml"
+expect physical-layer-csv-missing "nope.csv" -- point "$dir/physlayercsv.toml"
 if ! "$bin" point "$dir/phys.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi1"' "$dir/out"; then
     echo "FAIL the valid physical scene did not solve:"; cat "$dir/err"; failures=$((failures + 1))
 fi

@@ -2,6 +2,7 @@
 // (profile_csv.hpp): good input read exactly, every kind of bad input one message naming the
 // file and the key or line.
 #include "roughroll/micro_geometry_input.hpp"
+#include "micro_geometry_table.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -467,5 +467,43 @@ TEST(PhysicalScene, DimensionlessScenesStayDimensionless) {
     EXPECT_FALSE(s.physical);
 }
 
+// A micro-geometry table gives both directions' k, t by (2.11)-(2.14); flat profile and
+// linear decay in closed form: k1 = mu0/H, k2 = (lambda0 + 2 mu0)/H, t1 = (lambda0 + 2 mu0) H/6,
+// t2 = mu0 H/6.
+TEST(PhysicalScene, MicroGeometryGivesBothDirections) {
+    const scene s = parse_scene(R"(
+E = 210e9
+nu = 0.3
+R1 = 0.02
+R2 = 0.02
+P2 = 1e5
+friction = 0.3
+[cylinder2.micro_geometry]
+lambda0 = 1.2e11
+mu0 = 8e10
+H = 1e-5
+l = 1e-4
+profile = "flat"
+decay = "linear"
+)",
+                                source);
+    const surface_stiffness& c = s.physical->cylinder2;
+    EXPECT_NEAR(c.tangential.k, 8e10 / 1e-5, 1e-11 * c.tangential.k);
+    EXPECT_NEAR(c.normal.k, 2.8e11 / 1e-5, 1e-11 * c.normal.k);
+    EXPECT_NEAR(c.tangential.t, 2.8e11 * 1e-5 / 6.0, 1e-11 * c.tangential.t);
+    EXPECT_NEAR(c.normal.t, 8e10 * 1e-5 / 6.0, 1e-11 * c.normal.t);
+    EXPECT_FALSE(s.physical->cylinder1.normal.present());
+}
+
+TEST(PhysicalScene, MicroGeometryMistakes) {
+    const std::string layer = "[cylinder1.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\n"
+                              "profile = \"flat\"\ndecay = \"linear\"\n";
+    const std::string physical = "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nfriction = 0.3\n";
+    EXPECT_TRUE(rejects("friction = 0.3\n" + layer, {"'cylinder1.micro_geometry'", "needs a physical scene"}));
+    EXPECT_TRUE(rejects(physical + "[cylinder1.normal]\nk = 1e14\nt = 1e6\n" + layer,
+                        {"'cylinder1.micro_geometry'", "leave out its 'tangential' and 'normal'"}));
+    EXPECT_TRUE(rejects(physical + layer + "Hx = 1\n", {"cylinder1.micro_geometry.Hx"}));
+}
+
 }  // namespace
 }  // namespace roughroll

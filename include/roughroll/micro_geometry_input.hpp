@@ -20,16 +20,9 @@
 #include <string>
 #include <string_view>
 
-#include <toml++/toml.h>
-
 #include "roughroll/micro_geometry.hpp"
 
 namespace roughroll {
-
-// The micro-geometry in `table`; `source` names the file in messages, `path` is the dotted key
-// of the table ("" for a file's root), `base_dir` resolves a relative profile_csv.
-micro_geometry read_micro_geometry(const toml::table& table, const std::string& source, const std::string& path,
-                                   const std::filesystem::path& base_dir);
 
 // A roughness spec: TOML text whose root holds the keys above.
 micro_geometry parse_roughness_spec(std::string_view text, const std::string& source,

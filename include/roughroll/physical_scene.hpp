@@ -84,6 +84,7 @@ struct si_point {
     double xi1_carter;     // Carter's creep for the same loads on smooth cylinders (width a_H)
     double p_scale;        // Pa per unit of the dimensionless p, p1: P2/a
     int width_iterations;  // of the width search
+    roughness surfaces;    // T, A of (3.26) at the half-width a
 };
 
 si_point to_si(const physical_scene& s, const contact_width& w, double Q, double f, double c0, double xi);

@@ -19,6 +19,7 @@
 // a non-finite Q or |Q| > f.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,9 +48,10 @@ struct scene {
     std::optional<physical_scene> physical;
 };
 
-// Parses scene text; `source` names it in messages ("data/fig2a-T0.5.toml").
-// Throws input_error with one line: "<source>: <what is wrong>".
-scene parse_scene(std::string_view text, const std::string& source);
+// Parses scene text; `source` names it in messages ("data/fig2a-T0.5.toml"), `base_dir`
+// resolves a relative profile_csv of a micro-geometry. Throws input_error with one line:
+// "<source>: <what is wrong>".
+scene parse_scene(std::string_view text, const std::string& source, const std::filesystem::path& base_dir = ".");
 
 // Reads and parses a scene file; a missing, unreadable or non-regular file is an input_error.
 scene read_scene(const std::string& path);
