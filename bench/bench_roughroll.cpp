@@ -66,6 +66,34 @@ void bm_swept_point(benchmark::State& state) {
     }
 }
 
+// The one-parameter limit (method::one_parameter), 2T/A^2 = 0.2 normal and tangential (arg 1:
+// 0 equal, 1 tangential 0.1): a point at a given Q (normal solve, Brent, checks), and one point
+// of a curve swept in c0 with the normal solution shared (args: n; scene).
+roughness limit_scene(int64_t unequal_kernels) {
+    roughness r;
+    r.cylinder1.normal = {0.1 * 100.0, 10.0};
+    r.cylinder1.tangential = {(unequal_kernels ? 0.05 : 0.1) * 100.0, 10.0};
+    return r;
+}
+
+void bm_limit_point(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(0)), method::one_parameter};
+    for (auto _ : state) {
+        contact c(limit_scene(state.range(1)), 0.3, o);
+        benchmark::DoNotOptimize(c.point(0.15).xi);
+    }
+}
+
+void bm_limit_swept_point(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(0)), method::one_parameter};
+    contact c(limit_scene(state.range(1)), 0.3, o);
+    std::size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(c.at_stick_end(0.98 - 1.96 * static_cast<double>(i % 99) / 98).solution.xi);
+        ++i;
+    }
+}
+
 // The whole Fig. 2 as `roughroll figure` computes it (without writing files): six curves
 // of 100 points swept in c0, normal problems included.
 void bm_figure(benchmark::State& state) {
@@ -85,6 +113,8 @@ BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMil
 BENCHMARK(bm_point)->ArgsProduct({{0, 1, 2}, {64, 96, 128, 200}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1, 2}, {96, 128, 200}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_swept_point)->ArgsProduct({{1, 2}, {96, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_limit_point)->ArgsProduct({{64, 128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_limit_swept_point)->ArgsProduct({{128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_figure)->ArgsProduct({{1, 2}, {96, 128}})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -22,6 +22,10 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     : surfaces_(surfaces), options_(options), f_(f) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     const int n = options.nodes();
+    if (options.how == method::one_parameter) {
+        limit_ = std::make_unique<one_parameter_solver>(surfaces, f, n);
+        return;
+    }
     const bool extrapolate = options.how == method::extrapolated && !(kernel::normal(surfaces).empty() &&
                                                                        kernel::tangential(surfaces).empty());
     if (extrapolate) {
@@ -43,7 +47,20 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
                                                       kernel::normal(surfaces), f);
 }
 
+const normal_solution& contact::normal() const {
+    if (limit_) return limit_->normal();
+    return reported_ ? *reported_ : *normal_;
+}
+
+tangential_solver& contact::tangential() {
+    if (!tangential_)
+        throw input_error("method 'one-parameter' has no two-parameter tangential solver: use contact::traction and "
+                          "contact::slip_velocity");
+    return *tangential_;
+}
+
 tangential_solution contact::point(double Q) {
+    if (limit_) return limit_->solve(Q);
     if (!reported_) return tangential_->solve(Q);
     const tangential_solution coarse = companion_->point(Q);
     tangential_solution s = tangential_->solve(Q, coarse.c0);  // the coarse root brackets this one
@@ -79,16 +96,20 @@ error_estimate contact::companion_difference(const tangential_solution& s, const
     // estimate for every order p >= 1. Swept in c0, c0 is the input and Q is estimated.
     const bool finer = companion_->options_.nodes() > options_.nodes();
     const double scale = finer ? 2.0 : 1.0;
-    return error_estimate{scale * std::fabs(normal_->lambda - companion_->normal().lambda),
+    return error_estimate{scale * std::fabs(normal().lambda - companion_->normal().lambda),
                           swept ? 0.0 : scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi),
                           swept ? scale * std::fabs(s.Q - c.Q) : 0.0, finer ? "2n (doubled)" : "n/2"};
 }
 
+tangential_solution contact::level_at_stick_end(double c0, bool checked) {
+    return limit_ ? limit_->at_stick_end(c0, checked) : tangential_->at_stick_end(c0, checked);
+}
+
 contact::swept_point contact::at_stick_end(double c0) {
-    tangential_solution s = tangential_->at_stick_end(c0);
+    tangential_solution s = level_at_stick_end(c0, true);
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        const tangential_solution coarse = companion_->tangential_->at_stick_end(c0, false);
+        const tangential_solution coarse = companion_->level_at_stick_end(c0, false);
         const double Q = richardson(s.Q, coarse.Q), xi = richardson(s.xi, coarse.xi);
         if (!(std::isfinite(Q) && std::isfinite(xi)))
             throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
@@ -99,7 +120,22 @@ contact::swept_point contact::at_stick_end(double c0) {
         return {s, e};
     }
     if (!ensure_companion()) return {s, std::nullopt};
-    return {s, companion_difference(s, companion_->tangential_->at_stick_end(c0, false), true)};
+    return {s, companion_difference(s, companion_->level_at_stick_end(c0, false), true)};
+}
+
+double contact::traction(const tangential_solution& d, double r) {
+    return limit_ ? limit_->traction(d, r) : tangential_->traction(d, r);
+}
+
+double contact::slip_velocity(const tangential_solution& d, double r) {
+    return limit_ ? limit_->slip_velocity(d, r) : tangential_->slip_velocity(d, r);
+}
+
+std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
+    if (!limit_) return tangential_->slip_velocity(d, r);
+    std::vector<double> v(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) v[i] = limit_->slip_velocity(d, r[i]);
+    return v;
 }
 
 bool contact::ensure_companion() {
@@ -108,7 +144,10 @@ bool contact::ensure_companion() {
         const int n = options_.nodes();
         for (int other : {n / 2, 2 * n}) {
             if (other < min_nodes || other > max_nodes) continue;
-            if (other < n && !in_asymptotic_range(widest_kernel(surfaces_), other, options_.how)) continue;
+            // The one-parameter limit has no kernel to resolve: its error falls as n^-2 from small n on.
+            if (other < n && options_.how != method::one_parameter &&
+                !in_asymptotic_range(widest_kernel(surfaces_), other, options_.how))
+                continue;
             try {
                 companion_ = std::make_unique<contact>(surfaces_, f_, solver_options{other, options_.how});
                 break;
@@ -117,6 +156,24 @@ bool contact::ensure_companion() {
         }
     }
     return companion_ != nullptr;
+}
+
+double load_ratio(const roughness& surfaces, const solver_options& options) {
+    // The calls of contact's constructor for P_H/P2, in the same order and with the same arguments.
+    const int n = options.nodes();
+    if (options.how == method::one_parameter)
+        return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
+    const kernel k2 = kernel::normal(surfaces);
+    if (options.how != method::extrapolated || k2.empty()) {
+        const method level = options.how == method::extrapolated ? method::product : options.how;
+        return solve_normal(k2, n, level).lambda;
+    }
+    if (n / 2 < min_nodes || !in_asymptotic_range(k2, n / 2, method::product))
+        throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
+                               ": the coarse level n/2 is not in the asymptotic range of product integration "
+                               "for the normal kernel; increase n or use method 'product'");
+    const double coarse = solve_normal(k2, n / 2, method::product).lambda;
+    return richardson(solve_normal(k2, n, method::product).lambda, coarse);
 }
 
 namespace {

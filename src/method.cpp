@@ -9,6 +9,7 @@ std::string to_string(method m) {
         case method::paper: return "paper";
         case method::product: return "product";
         case method::extrapolated: return "extrapolated";
+        case method::one_parameter: return "one-parameter";
     }
     return "unknown";
 }
@@ -18,6 +19,7 @@ int default_nodes(method m) {
         case method::paper: return 200;
         case method::product: return 96;
         case method::extrapolated: return 128;
+        case method::one_parameter: return 128;
     }
     return 0;
 }
@@ -26,7 +28,8 @@ method method_from_string(const std::string& name) {
     if (name == "paper") return method::paper;
     if (name == "product") return method::product;
     if (name == "extrapolated") return method::extrapolated;
-    throw input_error("unknown method '" + name + "' (known: paper, product, extrapolated)");
+    if (name == "one-parameter") return method::one_parameter;
+    throw input_error("unknown method '" + name + "' (known: paper, product, extrapolated, one-parameter)");
 }
 
 }  // namespace roughroll

@@ -1,5 +1,6 @@
 #include "roughroll/root_search.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <limits>
 
@@ -53,6 +54,21 @@ root brent_root(const std::function<double(double)>& f, double lo, double hi, do
     if (status != GSL_SUCCESS)
         throw numerical_error(what + " did not converge in " + std::to_string(iter) + " iterations");
     return {gsl_root_fsolver_root(brent.get()), iter};
+}
+
+root stick_end_for_load(const std::function<double(double)>& load, double target, std::optional<double> guess,
+                        const std::string& what, const std::function<void()>& before_full_range) {
+    constexpr int max_iterations = 200;
+    double lo = -1.0, hi = 1.0;
+    if (guess && *guess > -1.0 && *guess < 1.0) {
+        const double a = std::max(-1.0, *guess - 1e-5), b = std::min(1.0, *guess + 1e-5);
+        if (load(a) - target > 0.0 && load(b) - target < 0.0) {
+            lo = a;
+            hi = b;
+        }
+    }
+    if (hi == 1.0 && before_full_range) before_full_range();
+    return brent_root([&](double c0) { return load(c0) - target; }, lo, hi, 1e-15, 0.0, max_iterations, what);
 }
 
 }  // namespace roughroll

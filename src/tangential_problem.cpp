@@ -17,7 +17,6 @@ namespace roughroll {
 
 namespace {
 constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4)
-constexpr int max_brent_iterations = 200;
 constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (see solve)
 
 // Interior Chebyshev points of (lo, hi), clustered towards the ends where the
@@ -190,18 +189,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
                "cannot be resolved (Q = 0 is solved exactly)";
         throw resolution_error(msg.str());
     } else {
-        // A bracket of half-width 1e-5 around a guess (the coarse level's c0, which differs
-        // from this level's by the discretisation error) when it brackets, else [-1, 1]:
-        // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error.
-        double lo = -1.0, hi = 1.0;
-        if (guess && *guess > -1.0 && *guess < 1.0) {
-            const double a = std::max(-1.0, *guess - 1e-5), b = std::min(1.0, *guess + 1e-5);
-            if (load(a) - target > 0.0 && load(b) - target < 0.0) {
-                lo = a;
-                hi = b;
-            }
-        }
-        if (hi == 1.0) {
+        // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
+        const auto full_stick_below = [this, target] {
             const double at_full_stick = load(1.0);
             if (!(at_full_stick < target)) {
                 std::ostringstream msg;
@@ -209,9 +198,9 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
                     << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
                 throw resolution_error(msg.str());
             }
-        }
-        const root c0 = brent_root([this, target](double c) { return load(c) - target; }, lo, hi, 1e-15, 0.0,
-                                   max_brent_iterations, "Brent search for c0");
+        };
+        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
+                                           "Brent search for c0", full_stick_below);
         s = solve_system(c0.x);
         s.iterations = c0.iterations;
     }

@@ -4,6 +4,10 @@
 // With method::extrapolated the contact holds two product-integration levels, n and n/2,
 // and reports P_H/P2, c0 and xi by Richardson's rule for order 4, (16 v_n - v_{n/2})/15;
 // the distributions (pressure, tractions, checks) are those of level n.
+//
+// With method::one_parameter the contact solves the limit t -> 0 of the model instead
+// (one_parameter_solver, docs/formulation.md "The one-parameter limit"): same solutions,
+// same conventions, no two-parameter tangential solver.
 #pragma once
 
 #include <memory>
@@ -12,6 +16,7 @@
 
 #include "roughroll/carter.hpp"
 #include "roughroll/normal_problem.hpp"
+#include "roughroll/one_parameter.hpp"
 #include "roughroll/scene.hpp"
 #include "roughroll/tangential_problem.hpp"
 
@@ -35,8 +40,10 @@ public:
     contact(const roughness& surfaces, double f, const solver_options& options);
 
     // The normal solution as reported (lambda extrapolated for method::extrapolated).
-    const normal_solution& normal() const { return reported_ ? *reported_ : *normal_; }
-    tangential_solver& tangential() { return *tangential_; }
+    const normal_solution& normal() const;
+    // The two-parameter tangential solver; for method::one_parameter there is none: throws
+    // input_error (use traction() and slip_velocity() below, which serve every method).
+    tangential_solver& tangential();
     double friction() const { return f_; }
 
     tangential_solution point(double Q);
@@ -58,7 +65,15 @@ public:
     // lazily). Empty when neither n/2 nor 2n is available.
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
+    // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone) for a
+    // solution d of this contact as returned by distribution(), for every method.
+    double traction(const tangential_solution& d, double r);
+    double slip_velocity(const tangential_solution& d, double r);
+    std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r);
+
 private:
+    // The solution at c0 of this contact's own level (no extrapolation, no estimate).
+    tangential_solution level_at_stick_end(double c0, bool checked);
     bool ensure_companion();  // the companion of estimate(): n/2 or 2n; false when neither exists
     // The estimate from s and the companion's solution c at the same Q (or the same c0, swept).
     error_estimate companion_difference(const tangential_solution& s, const tangential_solution& c,
@@ -71,8 +86,15 @@ private:
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
+    std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
 };
+
+// P_H/P2 alone, exactly as contact(surfaces, f, options).normal().lambda reports it (the same
+// calls, the same extrapolation), for every method, without the tangential solver: for a
+// root search in the contact width. The extrapolated method's asymptotic-range condition is
+// checked on the normal kernel only (the tangential kernel does not enter P_H/P2).
+double load_ratio(const roughness& surfaces, const solver_options& options);
 
 // One row of a creep curve.
 struct curve_point {

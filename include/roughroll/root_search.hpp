@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace roughroll {
@@ -19,5 +20,13 @@ struct root {
 // within max_iterations, and rethrows whatever f throws.
 root brent_root(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel,
                 int max_iterations, const std::string& what);
+
+// The end c0 of the stick zone at which the load Q(c0) of (4.5) (or its one-parameter
+// counterpart) equals `target` in (0, f), Q(-1) = f and Q(1) <= target: Brent on
+// [-1, 1] to 1e-15 in c0, or on a bracket of half-width 1e-5 around `guess` (the coarse
+// level's c0 when extrapolating) when that brackets. `before_full_range`, when given, runs
+// before a search on [-1, 1] (to refuse a target below a discretisation's Q(1)).
+root stick_end_for_load(const std::function<double(double)>& load, double target, std::optional<double> guess,
+                        const std::string& what, const std::function<void()>& before_full_range = {});
 
 }  // namespace roughroll

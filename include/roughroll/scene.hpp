@@ -12,7 +12,7 @@
 //   # [cylinder2.tangential], [cylinder2.normal] likewise; a missing table is smooth
 //   [solver]
 //   n = 128                      # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
-//   method = "extrapolated"      # or "product", "paper"
+//   method = "extrapolated"      # or "product", "paper", "one-parameter" (the limit t -> 0)
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
 // a non-finite or negative T or A, a table with T or A missing, a non-positive f,

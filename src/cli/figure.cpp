@@ -129,7 +129,7 @@ void add_figure_options(CLI::App* cmd, figure_options& o) {
     cmd->add_option("--out", o.out, "output folder (created if missing)");
     cmd->add_option("--points", o.points, "creep points per curve");
     cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (default: the method's, see README)");
-    cmd->add_option("--method", o.method_name, "paper, product or extrapolated");
+    cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter");
     cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
 }
 

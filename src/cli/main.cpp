@@ -20,7 +20,7 @@ namespace roughroll::cli {
 void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
     cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
-    cmd->add_option("--method", o.method_name, "paper, product or extrapolated (overrides solver.method)");
+    cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
 }
 
 scene load_scene(const scene_options& o) {
@@ -35,9 +35,9 @@ scene load_scene(const scene_options& o) {
 
 std::optional<contact_width> settle_width(scene& s) {
     if (!s.physical) return std::nullopt;
-    // lambda = P_H/P2 at a trial width, as the scene's method reports it.
-    const auto load_ratio = [&s](const roughness& r) { return contact(r, s.friction, s.solver).normal().lambda; };
-    const contact_width w = find_width(*s.physical, load_ratio);
+    // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone).
+    const contact_width w =
+        find_width(*s.physical, [&s](const roughness& r) { return load_ratio(r, s.solver); });
     s.surfaces = roughness_at(*s.physical, w.a);
     return w;
 }

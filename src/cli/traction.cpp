@@ -197,20 +197,19 @@ int run_traction(const traction_options& o) {
     const tangential_solution solution = c.point(Q);
     const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi
     const normal_solution& normal = c.normal();
-    tangential_solver& tangential = c.tangential();
     const double f = s.friction;
 
     std::vector<traction_row> rows(static_cast<std::size_t>(o.points));
     std::vector<double> grid(rows.size());
     for (int i = 0; i < o.points; ++i) grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
-    const std::vector<double> velocity = tangential.slip_velocity(level, grid);
+    const std::vector<double> velocity = c.slip_velocity(level, grid);
     double p_max = 0.0;
     double v_max = 0.0;
     for (int i = 0; i < o.points; ++i) {
         traction_row& row = rows[i];
         row.r = grid[i];
         row.p = normal.pressure(row.r);
-        row.p1 = tangential.traction(level, row.r);
+        row.p1 = c.traction(level, row.r);
         row.stick = row.r < level.c0;
         row.v = row.stick ? 0.0 : velocity[i];
         smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
