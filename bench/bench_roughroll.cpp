@@ -6,6 +6,10 @@
 #include <benchmark/benchmark.h>
 
 #include "roughroll/contact.hpp"
+#include "roughroll/micro_geometry_input.hpp"
+#include "roughroll/physical_scene.hpp"
+#include "roughroll/roughness_parameters.hpp"
+#include "roughroll/scene.hpp"
 
 using namespace roughroll;
 
@@ -94,6 +98,36 @@ void bm_limit_swept_point(benchmark::State& state) {
     }
 }
 
+// A physical scene, data/steel-rollers.toml's rollers (k, t given): the half-width for the
+// given load (Brent in a on the normal problem alone), then the point at a given Q (arg: method
+// 1 product, 2 extrapolated, 3 one-parameter; n its default).
+void bm_physical_point(benchmark::State& state) {
+    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
+                                "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n"
+                                "[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n",
+                                "bench");
+    const method how = state.range(0) == 3 ? method::one_parameter : method_of(state.range(0));
+    const solver_options o{0, how};
+    for (auto _ : state) {
+        const contact_width w =
+            find_width(*s.physical, [&o](const roughness& r) { return load_ratio(r, o); });
+        contact c(roughness_at(*s.physical, w.a), s.friction, o);
+        benchmark::DoNotOptimize(c.point(*s.Q).xi);
+    }
+}
+
+// The roughness parameters (2.6)-(2.14) of a layer (arg: 0 flat profile, linear decay;
+// 1 sine profile, cosine decay; 2 the measured profile of data/profiles/ground.csv).
+void bm_roughness_parameters(benchmark::State& state) {
+    const char* specs[] = {"lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"flat\"\ndecay = \"linear\"\n",
+                           "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"sine\"\ndelta = 4e-6\n"
+                           "decay = \"cosine\"\n",
+                           "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"measured\"\n"
+                           "profile_csv = \"" ROUGHROLL_SOURCE_DIR "/data/profiles/ground.csv\"\ndecay = \"cosine\"\n"};
+    const micro_geometry g = parse_roughness_spec(specs[state.range(0)], "bench", ".");
+    for (auto _ : state) benchmark::DoNotOptimize(compute_roughness_parameters(g).k_normal);
+}
+
 // The whole Fig. 2 as `roughroll figure` computes it (without writing files): six curves
 // of 100 points swept in c0, normal problems included.
 void bm_figure(benchmark::State& state) {
@@ -115,6 +149,8 @@ BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1, 2}, {96, 128, 200}, {0, 1}})->Uni
 BENCHMARK(bm_swept_point)->ArgsProduct({{1, 2}, {96, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_point)->ArgsProduct({{64, 128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_swept_point)->ArgsProduct({{128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_physical_point)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_roughness_parameters)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_figure)->ArgsProduct({{1, 2}, {96, 128}})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -225,6 +225,9 @@ scene physlayerbad "$(printf '%s\n[cylinder2.micro_geometry]\nlambda0 = 1.2e11\n
 scene physlayercsv "$(printf '%s\n[cylinder2.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\nprofile = "measured"\nprofile_csv = "nope.csv"\ndecay = "linear"\n' "$(printf '%s\n' "$phys" | grep -v '^n = 32' | grep -v '^\[solver\]')")"
 expect physical-layer-delta-above-H "delta" -- point "$dir/physlayerbad.toml"
 expect physical-layer-csv-missing "nope.csv" -- point "$dir/physlayercsv.toml"
+# The one-parameter limit needs A > 0 wherever T > 0 (2T/A^2 finite).
+scene Azero "$(printf 'friction = 0.3\nQ = 0.1\n[cylinder1.normal]\nT = 0.5\nA = 0\n')"
+expect one-parameter-A-zero "no one-parameter limit" -- point "$dir/Azero.toml" --method one-parameter
 if ! "$bin" point "$dir/phys.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi1"' "$dir/out"; then
     echo "FAIL the valid physical scene did not solve:"; cat "$dir/err"; failures=$((failures + 1))
 fi
