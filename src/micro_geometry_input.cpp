@@ -78,7 +78,12 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
         if (file.empty()) fail(source, quoted(key("profile_csv")) + " must not be empty");
         const std::filesystem::path csv = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file)
                                                                                      : base_dir / file;
-        g.bottom.measured = read_profile_csv(csv.string(), g.material.l);
+        try {
+            g.bottom.measured = read_profile_csv(csv.string(), g.material.l);
+        } catch (const input_error& e) {
+            // The CSV's own message names its file and line; the prefix names the spec and key.
+            fail(source, quoted(key("profile_csv")) + ": " + e.what());
+        }
     } else if (table.contains("profile_csv")) {
         fail(source, quoted(key("profile_csv")) + " is not used by " + kind + " (only by \"measured\")");
     }

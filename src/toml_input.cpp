@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -124,6 +125,10 @@ std::string read_text(const std::string& path, const std::string& what) {
     // Checked before opening: a directory opens on Linux and then reads as empty.
     if (fs::is_directory(status)) cannot_read(what, path, "it is a directory");
     if (!fs::is_regular_file(status)) cannot_read(what, path, "it is not a regular file");
+    // Input files are kilobytes; a huge "regular" file (/proc/kcore) would exhaust memory.
+    constexpr std::uintmax_t max_bytes = 64u << 20;
+    const std::uintmax_t bytes = fs::file_size(path, error);
+    if (!error && bytes > max_bytes) cannot_read(what, path, "larger than 64 MiB");
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) cannot_read(what, path, errno != 0 ? std::strerror(errno) : "cannot open it");
