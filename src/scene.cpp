@@ -1,6 +1,7 @@
 #include "roughroll/scene.hpp"
 #include "roughroll/text.hpp"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <cmath>
@@ -241,7 +242,8 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
         physical_scene p = read_physical(root, s.friction, source);
         p.cylinder1 = stiffness_at_hertz(p, c1);
         p.cylinder2 = stiffness_at_hertz(p, c2);
-        if (p.P1) s.Q = *p.P1 / p.P2;
+        // |P1| <= f P2 was checked; the quotient may still round above f by an ulp.
+        if (p.P1) s.Q = std::clamp(*p.P1 / p.P2, -s.friction, s.friction);
         s.surfaces = roughness_at(p, hertz_half_width(p, p.P2));  // until the width is known
         s.physical = p;
     } else {

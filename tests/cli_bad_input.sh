@@ -225,6 +225,12 @@ scene physlayerbad "$(printf '%s\n[cylinder2.micro_geometry]\nlambda0 = 1.2e11\n
 scene physlayercsv "$(printf '%s\n[cylinder2.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\nprofile = "measured"\nprofile_csv = "nope.csv"\ndecay = "linear"\n' "$(printf '%s\n' "$phys" | grep -v '^n = 32' | grep -v '^\[solver\]')")"
 expect physical-layer-delta-above-H "delta" -- point "$dir/physlayerbad.toml"
 expect physical-layer-csv-missing "nope.csv" -- point "$dir/physlayercsv.toml"
+# A contact not small against the radius: (3.7)'s half-spaces do not apply.
+scene phystinyR "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = 1e-12/')"
+expect physical-width-above-radius "a << R" -- point "$dir/phystinyR.toml"
+# A width search that reaches beyond the method's resolution names the trial width.
+scene physsoft "$(printf '%s\n' "$phys" | sed 's/^k = 4e14/k = 1e9/; s/^t = 1.5e6/t = 1/; s/^\[cylinder1.tangential\]/[cylinder1.normal]/')"
+expect physical-width-beyond-resolution "contact width search at a =" -- point "$dir/physsoft.toml"
 # The one-parameter limit needs A > 0 wherever T > 0 (2T/A^2 finite).
 scene Azero "$(printf 'friction = 0.3\nQ = 0.1\n[cylinder1.normal]\nT = 0.5\nA = 0\n')"
 expect one-parameter-A-zero "no one-parameter limit" -- point "$dir/Azero.toml" --method one-parameter

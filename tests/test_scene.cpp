@@ -462,6 +462,16 @@ TEST(PhysicalScene, DimensionlessTermsAreTakenAtTheHertzWidth) {
     EXPECT_NEAR(wider.cylinder2.normal.A, 4.0, 1e-15);
 }
 
+// |P1| = f P2 exactly in decimal, whose quotient P1/P2 rounds one ulp above f: the load is
+// f (the limit of the curve), not a refusal naming a Q the user never wrote.
+TEST(PhysicalScene, LoadAtTheFrictionLimitSurvivesRounding) {
+    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 703382.385\nP1 = 334106.632875\n"
+                                "friction = 0.475\n",
+                                source);
+    EXPECT_EQ(*s.Q, 0.475);
+    EXPECT_EQ(load_of(s, std::nullopt), 0.475);
+}
+
 TEST(PhysicalScene, DimensionlessScenesStayDimensionless) {
     const scene s = parse_scene("friction = 0.3\n", source);
     EXPECT_FALSE(s.physical);

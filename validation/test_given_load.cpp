@@ -139,3 +139,31 @@ TEST(GivenLoad, RollerOnAPlane) {
     const double b = std::sqrt(8.0 * 1e5 * 0.01 * (1.0 - 0.09) / (pi * 210e9));
     EXPECT_NEAR(width_of(s).a, b, 1e-15 * b);
 }
+
+// An independent limit: a very soft normal layer is a Winkler foundation, p = k (delta - x^2/(2R)),
+// which carries P2 = 2 k a^3/(3 R) on the half-width a = (3 R P2 / (2 k))^(1/3). The one-parameter
+// model's width tends to it as k falls (the half-spaces' share of the compliance vanishes).
+TEST(GivenLoad, SoftLayerTendsToWinkler) {
+    double previous = 1.0;
+    for (const char* k : {"1e13", "1e12"}) {
+        // 10 N/mm, so that a stays below R/10 (find_width refuses wider contacts).
+        const scene s = parse_scene(std::string("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e4\nQ = 0.1\n"
+                                                "friction = 0.3\n[cylinder1.normal]\nk = ") +
+                                        k + "\nt = 1\n[solver]\nmethod = \"one-parameter\"\n",
+                                    "winkler");
+        const double winkler = std::cbrt(3.0 * 0.01 * 1e4 / (2.0 * std::stod(k)));
+        const double gap = std::fabs(width_of(s).a / winkler - 1.0);
+        EXPECT_LT(gap, 0.5 * previous) << "k = " << k;
+        previous = gap;
+    }
+    EXPECT_LT(previous, 5e-3);
+}
+
+// The bracket starts at a = sqrt(lambda(a_H)) a_H, near the root: the paper's scheme at n = 200
+// resolves A up to about 32, the root's A = 30.04, while a bracket grown by 1.25 would try 37.5.
+TEST(GivenLoad, BracketStaysWithinTheResolution) {
+    const scene s = steel("[cylinder1.normal]\nT = 0.5\nA = 30\n[solver]\nmethod = \"paper\"\nn = 200\n");
+    const contact_width w = width_of(s);
+    EXPECT_GT(w.a, w.a_hertz);
+    EXPECT_NEAR(lambda_of(roughness_at(*s.physical, w.a), s), w.lambda, 1e-9 * w.lambda);
+}
