@@ -172,15 +172,18 @@ TEST_F(MeasuredSpec, CsvErrorsNameFileAndLine) {
         (void)read_roughness_spec((dir_ / "spec.toml").string());
         ADD_FAILURE() << "accepted a bad CSV";
     } catch (const input_error& e) {
+        // The spec and its key first, then the CSV's own file and line.
         const std::string csv = (dir_ / "profiles" / "p.csv").string();
-        EXPECT_TRUE(message_has(e.what(), csv + ":4:", {"h0 'abc' is not a number"}));
+        const std::string spec = (dir_ / "spec.toml").string() + ": 'profile_csv': ";
+        EXPECT_TRUE(message_has(e.what(), spec + csv + ":4:", {"h0 'abc' is not a number"}));
     }
     fs::remove(dir_ / "profiles" / "p.csv");
     try {
         (void)read_roughness_spec((dir_ / "spec.toml").string());
         ADD_FAILURE() << "accepted a missing CSV";
     } catch (const input_error& e) {
-        EXPECT_TRUE(message_has(e.what(), "cannot read profile file", {"p.csv", "No such file"}));
+        EXPECT_TRUE(message_has(e.what(), (dir_ / "spec.toml").string() + ": 'profile_csv': cannot read profile file",
+                                {"p.csv", "No such file"}));
     }
     // A sample at or above H: the line named.
     write("profiles/p.csv", "0,0.1\n1,0.2\n2,1.5\n3,0.2\n");
