@@ -74,15 +74,6 @@ contact_width small_against_radius(const physical_scene& s, const contact_width&
     return w;
 }
 
-contact_width search_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio);
-}  // namespace
-
-contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio) {
-    return small_against_radius(s, search_width(s, load_ratio));
-}
-
-namespace {
-
 contact_width search_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio) {
     const double a_H = hertz_half_width(s, s.P2);
     if (smooth(s)) return {a_H, a_H, 1.0, s.P2, 0};  // Hertz exactly, no kernel to solve
@@ -136,6 +127,10 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
     return {x.x * a_H, a_H, x.x * x.x, s.P2, x.iterations};
 }
 }  // namespace
+
+contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio) {
+    return small_against_radius(s, search_width(s, load_ratio));
+}
 
 si_point to_si(const physical_scene& s, const contact_width& w, double Q, double f, double c0, double xi) {
     const double mu = s.shear_modulus();
