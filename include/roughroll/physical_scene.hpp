@@ -71,8 +71,10 @@ struct contact_width {
 // The half-width by the scene's width rule. `load_ratio` gives lambda = P_H/P2 for the
 // roughness at a trial width (the normal problem (3.19)-(3.20) as a contact solves it).
 // given_load: gsl_root_fsolver_brent on F(a) = lambda(a) - (a/a_H)^2, bracketed from a_H
-// upwards (F(a_H) = lambda - 1 >= 0: roughness adds compliance, E2). Throws numerical_error
-// when no bracket is found, and passes on the solver's resolution_error.
+// (F(a_H) = lambda - 1 >= 0: roughness adds compliance, E2) first to a_H sqrt(lambda(a_H)),
+// then outwards by 1.25; trials beyond the method's resolution are halved back. Throws the
+// solver's resolution_error or numerical_error prefixed with the trial width, numerical_error
+// when no bracket is found, and input_error when a > R/10 (the half-spaces of (3.7)).
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio);
 
 // A dimensionless point in SI units.
