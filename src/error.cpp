@@ -43,4 +43,25 @@ permutation_ptr make_permutation(std::size_t size) {
     return p;
 }
 
+interp_ptr make_interp(const gsl_interp_type* type, std::size_t size) {
+    gsl_guard();
+    interp_ptr p(gsl_interp_alloc(type, size));
+    if (!p) throw numerical_error("cannot allocate a " + std::string(type->name) + " spline of " + std::to_string(size) + " points");
+    return p;
+}
+
+interp_accel_ptr make_interp_accel() {
+    gsl_guard();
+    interp_accel_ptr p(gsl_interp_accel_alloc());
+    if (!p) throw numerical_error("cannot allocate a spline accelerator");
+    return p;
+}
+
+integration_workspace_ptr make_integration_workspace(std::size_t intervals) {
+    gsl_guard();
+    integration_workspace_ptr p(gsl_integration_workspace_alloc(intervals));
+    if (!p) throw numerical_error("cannot allocate a quadrature workspace of " + std::to_string(intervals) + " intervals");
+    return p;
+}
+
 }  // namespace roughroll

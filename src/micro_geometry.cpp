@@ -1,7 +1,9 @@
 #include "roughroll/micro_geometry.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <gsl/gsl_interp.h>
@@ -13,27 +15,6 @@
 #include "roughroll/text.hpp"
 
 namespace roughroll {
-
-interp_ptr make_interp(const gsl_interp_type* type, std::size_t size) {
-    gsl_guard();
-    interp_ptr p(gsl_interp_alloc(type, size));
-    if (!p) throw numerical_error("cannot allocate a " + std::string(type->name) + " spline of " + std::to_string(size) + " points");
-    return p;
-}
-
-interp_accel_ptr make_interp_accel() {
-    gsl_guard();
-    interp_accel_ptr p(gsl_interp_accel_alloc());
-    if (!p) throw numerical_error("cannot allocate a spline accelerator");
-    return p;
-}
-
-integration_workspace_ptr make_integration_workspace(std::size_t intervals) {
-    gsl_guard();
-    integration_workspace_ptr p(gsl_integration_workspace_alloc(intervals));
-    if (!p) throw numerical_error("cannot allocate a quadrature workspace of " + std::to_string(intervals) + " intervals");
-    return p;
-}
 
 const char* to_string(profile_kind kind) {
     switch (kind) {
@@ -61,26 +42,29 @@ const char* to_string(decay_kind kind) {
     return "?";
 }
 
-// The decays of (2.6)-(2.8): each has d(0) = 1, d(H) = 0 and d' < 0 on (0, H).
-double decay_value(decay_kind kind, double x2, double H) {
-    const double s = x2 / H;
+// The decays of (2.6)-(2.8) in u = (H - x2)/H: each has dhat(1) = d(0) = 1, dhat(0) = d(H) = 0
+// and dhat_u > 0 (d' < 0) on (0, 1).
+double decay_value_from_top(decay_kind kind, double u) {
     switch (kind) {
-        case decay_kind::linear: return 1.0 - s;
-        case decay_kind::quadratic: return (1.0 - s) * (1.0 - s);
-        case decay_kind::cosine: return std::cos(M_PI_2 * s);
+        case decay_kind::linear: return u;
+        case decay_kind::quadratic: return u * u;
+        case decay_kind::cosine: return std::sin(M_PI_2 * u);
     }
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-double decay_slope(decay_kind kind, double x2, double H) {
-    const double s = x2 / H;
+double decay_slope_from_top(decay_kind kind, double u) {
     switch (kind) {
-        case decay_kind::linear: return -1.0 / H;
-        case decay_kind::quadratic: return -2.0 * (1.0 - s) / H;
-        case decay_kind::cosine: return -M_PI_2 / H * std::sin(M_PI_2 * s);
+        case decay_kind::linear: return 1.0;
+        case decay_kind::quadratic: return 2.0 * u;
+        case decay_kind::cosine: return M_PI_2 * std::cos(M_PI_2 * u);
     }
     return std::numeric_limits<double>::quiet_NaN();
 }
+
+double decay_value(decay_kind kind, double x2, double H) { return decay_value_from_top(kind, (H - x2) / H); }
+
+double decay_slope(decay_kind kind, double x2, double H) { return -decay_slope_from_top(kind, (H - x2) / H) / H; }
 
 // h = l sin(2 pi x1/l): the scale l makes h a length, and cancels in (2.11)-(2.14) anyway.
 double micro_shape_slope(micro_shape_kind kind, double x1, double l) {
@@ -181,6 +165,31 @@ void cubic_candidates(double x0, double x1, const Eval& value, const Slope& slop
 
 }  // namespace
 
+namespace {
+
+// The extreme of a measured profile's spline that `better` prefers (std::less: the minimum,
+// std::greater: the maximum) among the candidates of every cubic piece.
+template <class Better>
+profile_function::extreme spline_extreme(const profile_function& h0, const profile_function::spline& sp, Better better) {
+    const auto value = [&h0](double x) { return h0(x); };
+    const auto slope = [&sp](double x) {
+        double s = 0.0;
+        gsl_check(gsl_interp_eval_deriv_e(sp.interp.get(), sp.x.data(), sp.y.data(), x, sp.accel.get(), &s),
+                  "the slope of the measured profile at x1 = " + shortest(x));
+        return s;
+    };
+    std::vector<double> candidates;
+    for (std::size_t i = 0; i + 1 < sp.x.size(); ++i) cubic_candidates(sp.x[i], sp.x[i + 1], value, slope, candidates);
+    profile_function::extreme best{value(candidates.front()), candidates.front()};
+    for (const double x : candidates) {
+        const double v = value(x);
+        if (better(v, best.value)) best = {v, x};
+    }
+    return best;
+}
+
+}  // namespace
+
 profile_function::extreme profile_function::minimum() const {
     switch (kind_) {
         case profile_kind::flat: return {0.0, 0.0};
@@ -188,18 +197,7 @@ profile_function::extreme profile_function::minimum() const {
         case profile_kind::sawtooth: return {0.0, 0.0};
         case profile_kind::measured: break;
     }
-    std::vector<double> candidates;
-    const auto value = [this](double x) { return (*this)(x); };
-    const auto slope = [this](double x) {
-        return gsl_interp_eval_deriv(spline_->interp.get(), spline_->x.data(), spline_->y.data(), x,
-                                     spline_->accel.get());
-    };
-    for (std::size_t i = 0; i + 1 < spline_->x.size(); ++i)
-        cubic_candidates(spline_->x[i], spline_->x[i + 1], value, slope, candidates);
-    extreme low{value(candidates.front()), candidates.front()};
-    for (const double x : candidates)
-        if (value(x) < low.value) low = {value(x), x};
-    return low;
+    return spline_extreme(*this, *spline_, std::less<double>());
 }
 
 profile_function::extreme profile_function::maximum() const {
@@ -209,18 +207,7 @@ profile_function::extreme profile_function::maximum() const {
         case profile_kind::sawtooth: return {delta_, l_};
         case profile_kind::measured: break;
     }
-    std::vector<double> candidates;
-    const auto value = [this](double x) { return (*this)(x); };
-    const auto slope = [this](double x) {
-        return gsl_interp_eval_deriv(spline_->interp.get(), spline_->x.data(), spline_->y.data(), x,
-                                     spline_->accel.get());
-    };
-    for (std::size_t i = 0; i + 1 < spline_->x.size(); ++i)
-        cubic_candidates(spline_->x[i], spline_->x[i + 1], value, slope, candidates);
-    extreme high{value(candidates.front()), candidates.front()};
-    for (const double x : candidates)
-        if (value(x) > high.value) high = {value(x), x};
-    return high;
+    return spline_extreme(*this, *spline_, std::greater<double>());
 }
 
 std::vector<std::string> decay_violations(const std::function<double(double)>& d,
@@ -256,6 +243,19 @@ void layer_violations(const layer& m, std::vector<std::string>& out) {
     positive("mu0", m.mu0);
     positive("H", m.H);
     positive("l", m.l);
+    if (!out.empty()) return;
+    // k is mu0/H to (lambda0 + 2 mu0)/H and t mu0 H to (lambda0 + 2 mu0) H, times factors of
+    // order 1 of the shapes: both must fit in double precision, with a margin of 1e3.
+    const double stiff = m.lambda0 + 2.0 * m.mu0, margin = 1e3;
+    const bool k_fits = stiff / m.H <= DBL_MAX / margin && m.mu0 / m.H >= DBL_MIN * margin;
+    const bool t_fits = stiff * m.H <= DBL_MAX / margin && m.mu0 * m.H >= DBL_MIN * margin;
+    if (!(k_fits && t_fits)) {
+        out.push_back("H = " + shortest(m.H) + " m with mu0 = " + shortest(m.mu0) + " Pa, lambda0 = " +
+                      shortest(m.lambda0) + " Pa puts " + (k_fits ? "t (mu0 H to (lambda0 + 2 mu0) H = " +
+                      shortest(m.mu0 * m.H) + " to " + shortest(stiff * m.H) + " Pa m)" : "k (mu0/H to (lambda0 + 2 mu0)/H = " +
+                      shortest(m.mu0 / m.H) + " to " + shortest(stiff / m.H) + " Pa/m)") +
+                      " outside the range of double precision (1e3 DBL_MIN to DBL_MAX/1e3)");
+    }
 }
 
 // 0 <= h0 < H on every sample of a measured profile, naming its line.

@@ -55,47 +55,69 @@ quadrature_result qag(const F& f, double lo, double hi, double epsabs, double ep
     return r;
 }
 
-// The layer integrals of (2.6)-(2.8) at one x1: three qag calls over [h0(x1), H].
+// The layer integrals of (2.6)-(2.8) at one x1, dimensionless: in the depth below the top
+// u = (H - x2)/H, with dhat(u) = d(H (1 - u)) and dhat_u = d dhat/du = -H d' (micro_geometry.hpp),
+//   a   = H   int_0^u0 dhat^2 du          a3 = -int_0^u0 dhat dhat_u du
+//   a33 = 1/H int_0^u0 dhat_u^2 du,       u0 = (H - h0(x1))/H,
+// and `at` returns the integrals alone (a/H, a3, a33 H): H is factored out analytically, so
+// neither d'^2 = O(1/H^2) nor d^2 H can leave the range of double for any H, and the
+// integrands are exact as u -> 0, where 1 - x2/H would cancel (h0 -> H).
 class layer_integrator {
 public:
     explicit layer_integrator(const micro_geometry& g)
-        : g_(g), h0_(g.bottom, g.material.l), work_(make_integration_workspace(workspace_intervals)) {}
+        : g_(g), h0_(g.bottom, g.material.l), work_(make_integration_workspace(workspace_intervals)) {
+        // The absolute floors: inner_tolerance of each integral over the whole layer (u0 = 1,
+        // the flat profile's), the scale of the averages the inner integrals feed.
+        const layer_integrals whole = integrate(1.0, true, true, true, {0.0, 0.0, 0.0}, " over the whole layer");
+        floor_ = {inner_tolerance * whole.a, inner_tolerance * std::fabs(whole.a3), inner_tolerance * whole.a33};
+    }
 
     double h0(double x1) const { return h0_(x1); }
     const profile_function& profile() const { return h0_; }
 
-    // Only the integrals asked for are computed (a alone for <a>, ...).
+    // Only the integrals asked for are computed (a alone for <a>, ...). Dimensionless.
     layer_integrals at(double x1, bool a, bool a3, bool a33) const {
-        const double lo = h0_(x1), H = g_.material.H;
+        const double H = g_.material.H;
+        // H - h0 is exact when h0 is within a factor 2 of H (Sterbenz).
+        const double u0 = (H - h0_(x1)) / H;
+        return integrate(u0, a, a3, a33, floor_, " at x1 = " + shortest(x1));
+    }
+
+private:
+    struct floors {
+        double a, a3, a33;
+    };
+
+    layer_integrals integrate(double u0, bool a, bool a3, bool a33, const floors& floor, const std::string& where) const {
         const decay_kind k = g_.decay;
-        const std::string where = " at x1 = " + shortest(x1);
         layer_integrals r;
-        // Every integrand is of one sign (d > 0, d' < 0), so a relative tolerance is enough.
+        // Every integrand is of one sign (dhat >= 0, dhat_u > 0): the relative tolerance, with
+        // the absolute floor for an integral that is small against the whole layer's.
         if (a) {
-            const auto q = qag([k, H](double x2) { const double d = decay_value(k, x2, H); return d * d; }, lo, H, 0.0,
-                               inner_tolerance, work_.get(), "the integral a of (2.6)" + where);
+            const auto q = qag([k](double u) { const double d = decay_value_from_top(k, u); return d * d; }, 0.0, u0,
+                               floor.a, inner_tolerance, work_.get(), "the integral a of (2.6)" + where);
             r.a = q.value;
             r.a_error = q.error;
         }
         if (a3) {
-            const auto q = qag([k, H](double x2) { return decay_value(k, x2, H) * decay_slope(k, x2, H); }, lo, H, 0.0,
-                               inner_tolerance, work_.get(), "the integral a3 of (2.7)" + where);
+            const auto q = qag([k](double u) { return -decay_value_from_top(k, u) * decay_slope_from_top(k, u); }, 0.0,
+                               u0, floor.a3, inner_tolerance, work_.get(), "the integral a3 of (2.7)" + where);
             r.a3 = q.value;
             r.a3_error = q.error;
         }
         if (a33) {
-            const auto q = qag([k, H](double x2) { const double s = decay_slope(k, x2, H); return s * s; }, lo, H, 0.0,
-                               inner_tolerance, work_.get(), "the integral a33 of (2.8)" + where);
+            const auto q = qag([k](double u) { const double s = decay_slope_from_top(k, u); return s * s; }, 0.0, u0,
+                               floor.a33, inner_tolerance, work_.get(), "the integral a33 of (2.8)" + where);
             r.a33 = q.value;
             r.a33_error = q.error;
         }
         return r;
     }
 
-private:
     const micro_geometry& g_;
     profile_function h0_;
     integration_workspace_ptr work_;  // the inner integrals' (the outer one has its own)
+    floors floor_{0.0, 0.0, 0.0};
 };
 
 // One average (2.9): (1/l) int_0^l weight(x1) * inner(x1) dx1, split at the breakpoints.
@@ -126,7 +148,13 @@ quadrature_result average(const Integrand& integrand, const std::vector<double>&
 
 layer_integrals integrals_at(const micro_geometry& g, double x1) {
     check_conditions(g);
-    return layer_integrator(g).at(x1, true, true, true);
+    const double H = g.material.H;
+    layer_integrals v = layer_integrator(g).at(x1, true, true, true);
+    v.a *= H;
+    v.a_error *= H;
+    v.a33 /= H;
+    v.a33_error /= H;
+    return v;
 }
 
 roughness_parameters parameters_from_averages(const layer_averages& m, double lambda0, double mu0) {
@@ -136,8 +164,9 @@ roughness_parameters parameters_from_averages(const layer_averages& m, double la
     }
     const double stiff = lambda0 + 2.0 * mu0;
     const double ratio = (lambda0 + mu0) / stiff;
-    const double corrector_k = m.a3_h1 * m.a3_h1 / m.a_h1_squared;  // the corrector's share, (2.11)
-    const double corrector_t = m.a_h1 * m.a_h1 / m.a_h1_squared;    // (2.13)
+    // The correctors as x (x/q): <a h_1>^2 alone would leave double for H beyond about 1e+-154.
+    const double corrector_k = m.a3_h1 * (m.a3_h1 / m.a_h1_squared);  // the corrector's share, (2.11)
+    const double corrector_t = m.a_h1 * (m.a_h1 / m.a_h1_squared);    // (2.13)
     roughness_parameters p;
     p.averages = m;
     p.k_tangential = mu0 * (m.a33 - corrector_k);
@@ -153,8 +182,9 @@ roughness_parameters parameters_from_averages(const layer_averages& m, double la
         if (!(std::isfinite(v) && v > 0.0))
             throw numerical_error(std::string(name) + " = " + shortest(v) + " is not finite and > 0");
     }
-    p.alpha_tangential = std::sqrt(p.k_tangential / (2.0 * p.t_tangential));
-    p.alpha_normal = std::sqrt(p.k_normal / (2.0 * p.t_normal));
+    // sqrt(k)/sqrt(2t): k/(2t) = O(1/H^2) would leave double for H beyond about 1e+-154.
+    p.alpha_tangential = std::sqrt(p.k_tangential) / std::sqrt(2.0 * p.t_tangential);
+    p.alpha_normal = std::sqrt(p.k_normal) / std::sqrt(2.0 * p.t_normal);
     return p;
 }
 
@@ -185,7 +215,7 @@ roughness_parameters compute_roughness_parameters(const micro_geometry& g) {
             return quadrature_result{v.a33, v.a33_error};
         },
         breaks, l, 0.0, work.get(), evaluations, "<a33>");
-    const quadrature_result a_h1 = average(a_times(1), breaks, l, outer_tolerance * std::sqrt(a.value * a_h1_squared.value),
+    const quadrature_result a_h1 = average(a_times(1), breaks, l, outer_tolerance * std::sqrt(a.value) * std::sqrt(a_h1_squared.value),
                                            work.get(), evaluations, "<a h_1>");
     const quadrature_result a3_h1 = average(
         [&](double x1) {
@@ -193,21 +223,25 @@ roughness_parameters compute_roughness_parameters(const micro_geometry& g) {
             const double w = h1(x1);
             return quadrature_result{w * v.a3, std::fabs(w) * v.a3_error};
         },
-        breaks, l, outer_tolerance * std::sqrt(a33.value * a_h1_squared.value), work.get(), evaluations, "<a3 h_1>");
+        breaks, l, outer_tolerance * std::sqrt(a33.value) * std::sqrt(a_h1_squared.value), work.get(), evaluations, "<a3 h_1>");
 
-    const layer_averages m{a.value, a3_h1.value, a33.value, a_h1.value, a_h1_squared.value};
+    // The averages above are of the dimensionless integrals (a/H, a3, a33 H): back to SI.
+    const double H = g.material.H;
+    const layer_averages m{H * a.value, a3_h1.value, a33.value / H, H * a_h1.value, H * a_h1_squared.value};
     roughness_parameters p = parameters_from_averages(m, g.material.lambda0, g.material.mu0);
-    p.averages_error = {a.error, a3_h1.error, a33.error, a_h1.error, a_h1_squared.error};
+    p.averages_error = {H * a.error, a3_h1.error, a33.error / H, H * a_h1.error, H * a_h1_squared.error};
     p.evaluations = evaluations;
 
-    // First-order propagation of the averages' errors through (2.11)-(2.15).
-    const double q = m.a_h1_squared;
-    const double dk = 2.0 * std::fabs(m.a3_h1) * a3_h1.error / q + m.a3_h1 * m.a3_h1 * a_h1_squared.error / (q * q);
-    const double dt = a.error + 2.0 * std::fabs(m.a_h1) * a_h1.error / q + m.a_h1 * m.a_h1 * a_h1_squared.error / (q * q);
+    // First-order propagation of the averages' errors through (2.11)-(2.15), in the
+    // dimensionless averages (each product kept within the range of double).
+    const double q = a_h1_squared.value, rk = a3_h1.value / q, rt = a_h1.value / q;
+    const double dk = (2.0 * std::fabs(rk) * a3_h1.error + rk * rk * a_h1_squared.error) / H;  // 1/m
+    const double dt = H * (a.error + 2.0 * std::fabs(rt) * a_h1.error + rt * rt * a_h1_squared.error);  // m
     const double stiff = g.material.lambda0 + 2.0 * g.material.mu0;
     const double ratio = (g.material.lambda0 + g.material.mu0) / stiff;
-    p.k_tangential_error = g.material.mu0 * (a33.error + dk);
-    p.k_normal_error = stiff * (a33.error + ratio * ratio * dk);
+    const double a33_error = a33.error / H;
+    p.k_tangential_error = g.material.mu0 * (a33_error + dk);
+    p.k_normal_error = stiff * (a33_error + ratio * ratio * dk);
     p.t_tangential_error = 0.5 * stiff * dt;
     p.t_normal_error = 0.5 * g.material.mu0 * dt;
     // alpha = sqrt(k/2t): d(alpha)/alpha = (dk/k + dt/t)/2.

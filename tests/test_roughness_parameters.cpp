@@ -261,6 +261,98 @@ TEST(RoughnessParameters, UnitsScaling) {
     EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, 1e-12));
 }
 
+// The inner integrals in closed form, in u0 = (H - h0)/H (docs/roughness-parameters.md):
+//   linear     a = H u0^3/3,   a3 = -u0^2/2,            a33 = u0/H
+//   quadratic  a = H u0^5/5,   a3 = -u0^4/2,            a33 = 4 u0^3/(3H)
+//   cosine     a = H (u0/2 - sin(pi u0)/(2 pi)),  a3 = -sin^2(pi u0/2)/2,
+//              a33 = (pi/(2H))^2 H (u0/2 + sin(pi u0)/(2 pi))
+layer_integrals closed_form_integrals(decay_kind decay, double u0) {
+    layer_integrals v;
+    switch (decay) {
+        case decay_kind::linear: v = {H * std::pow(u0, 3) / 3.0, -0.5 * u0 * u0, u0 / H}; break;
+        case decay_kind::quadratic: v = {H * std::pow(u0, 5) / 5.0, -0.5 * std::pow(u0, 4), 4.0 * std::pow(u0, 3) / (3.0 * H)}; break;
+        case decay_kind::cosine: {
+            // u0/2 - sin(pi u0)/(2 pi) = (x - sin x)/(2 pi), x = pi u0, cancels as u0 -> 0 (all
+            // digits lost at u0 = 1e-6): its Taylor series below x = 0.5 (terms to x^15, the
+            // next below 1e-17 of the sum).
+            const double x = M_PI * u0, s = std::sin(x) / (2.0 * M_PI), c = std::sin(M_PI_2 * u0);
+            double x_minus_sin = x - std::sin(x);
+            if (x < 0.5) {
+                x_minus_sin = 0.0;
+                double term = x * x * x / 6.0;
+                for (int n = 3; n <= 15; n += 2) {
+                    x_minus_sin += term;
+                    term *= -x * x / ((n + 1.0) * (n + 2.0));
+                }
+            }
+            v = {H * x_minus_sin / (2.0 * M_PI), -0.5 * c * c, M_PI * M_PI / (4.0 * H) * (0.5 * u0 + s)};
+            break;
+        }
+    }
+    return v;
+}
+
+// The quadrature path against the closed forms, from the whole layer to a sliver 1e-6 H thick
+// under a peak at delta = 0.999999 H (where 1 - x2/H used to lose 10 digits and qag failed
+// with "roundoff error").
+TEST(RoughnessParameters, LayerIntegralsAgainstClosedFormsUpToTheTop) {
+    for (const decay_kind decay : {decay_kind::linear, decay_kind::quadratic, decay_kind::cosine}) {
+        SCOPED_TRACE(to_string(decay));
+        for (const double delta : {0.6 * H, 0.999999 * H}) {
+            const micro_geometry g = geometry(profile_kind::sine, delta, decay);
+            for (const double x1 : {0.0, 0.1 * l, 0.37 * l, 0.5 * l, 0.9 * l}) {
+                const double h0 = 0.5 * delta * (1.0 - std::cos(2.0 * M_PI * x1 / l));
+                const layer_integrals v = integrals_at(g, x1), c = closed_form_integrals(decay, (H - h0) / H);
+                EXPECT_TRUE(close(v.a, c.a, 1e-13)) << "delta = " << delta << ", x1 = " << x1;
+                EXPECT_TRUE(close(v.a3, c.a3, 1e-13)) << "delta = " << delta << ", x1 = " << x1;
+                EXPECT_TRUE(close(v.a33, c.a33, 1e-13)) << "delta = " << delta << ", x1 = " << x1;
+            }
+        }
+    }
+}
+
+// (2.11)-(2.14) of the closed-form averages m.
+roughness_parameters expected_parameters(const layer_averages& m) { return parameters_from_averages(m, lambda0, mu0); }
+
+::testing::AssertionResult same_parameters(const roughness_parameters& p, const roughness_parameters& e, double tolerance) {
+    const std::pair<double, double> pairs[] = {{p.k_tangential, e.k_tangential}, {p.k_normal, e.k_normal},
+                                               {p.t_tangential, e.t_tangential}, {p.t_normal, e.t_normal},
+                                               {p.alpha_tangential, e.alpha_tangential}, {p.alpha_normal, e.alpha_normal}};
+    for (const auto& [x, expected] : pairs) {
+        const ::testing::AssertionResult r = close(x, expected, tolerance);
+        if (!r) return r;
+    }
+    return ::testing::AssertionSuccess();
+}
+
+// delta -> H: the sine profile's peak 1e-11 m below the top of a 1e-5 m layer, and a measured
+// flat profile at h0 = 0.999999 H (u0 = 1e-6 everywhere: k1 = mu0 u0/H, t1 = (lambda0 + 2mu0)
+// H u0^3/6): finite, positive, and the closed forms.
+TEST(RoughnessParameters, ProfileReachingTowardsTheTop) {
+    const double delta = 0.999999 * H;
+    const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+    EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), 1e-12));
+    for (const decay_kind decay : {decay_kind::quadratic, decay_kind::cosine}) {
+        const roughness_parameters q = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay));
+        EXPECT_TRUE(std::isfinite(q.k_tangential) && q.k_tangential > 0.0 && q.t_normal > 0.0) << to_string(decay);
+    }
+
+    const double h = 0.999999 * H, u0 = (H - h) / H;
+    std::string csv = "x1,h0\n";
+    char line[96];
+    for (int j = 0; j < 8; ++j) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", l * j / 8.0, h);
+        csv += line;
+    }
+    micro_geometry g = geometry(profile_kind::measured, 0.0, decay_kind::linear);
+    g.bottom.measured = parse_profile_csv(csv, "flat-near-top.csv", l);
+    const roughness_parameters m = compute_roughness_parameters(g);
+    const layer_averages flat{H * std::pow(u0, 3) / 3.0, 0.0, u0 / H, 0.0, 2.0 * M_PI * M_PI * H * std::pow(u0, 3) / 3.0};
+    EXPECT_TRUE(same_parameters(m, expected_parameters(flat), 1e-12));
+    EXPECT_TRUE(close(m.k_tangential, mu0 * u0 / H, 1e-12));
+    EXPECT_TRUE(close(m.t_tangential, (lambda0 + 2.0 * mu0) * H * std::pow(u0, 3) / 6.0, 1e-12));
+}
+
 // Cauchy-Schwarz makes k, t >= 0; averages that make one 0 are refused, as is <a h_1^2> = 0.
 TEST(RoughnessParameters, FromAveragesRefusesZero) {
     layer_averages m{H / 3.0, -0.5, 1.0 / H, 0.0, 2.0 * M_PI * M_PI * H / 3.0};
@@ -350,6 +442,38 @@ TEST(Conditions, DecayViolations) {
 // compute_roughness_parameters checks the conditions first.
 TEST(Conditions, ComputeRefusesViolations) {
     EXPECT_THROW(compute_roughness_parameters(geometry(profile_kind::sine, 1.5 * H, decay_kind::linear)), input_error);
+}
+
+// Extreme scales. H = 1e200 m (l = 1e201 m) gives the scaled values: k ~ 1/H = 1e-190 Pa/m,
+// t ~ H (d'^2 = 1e-400 used to underflow to k = -5e-191). H = 1e-300 m with steel moduli would
+// give k = 7.7e310 Pa/m, beyond DBL_MAX: a clear input_error (check_conditions), since no
+// double can hold the answer. With moduli of 7.7 Pa it gives
+// the scaled values, k ~ 1e300 Pa/m, t ~ 1e-300 Pa m.
+TEST(RoughnessParameters, ExtremeScales) {
+    const micro_geometry g = geometry(profile_kind::sine, 0.4 * H, decay_kind::cosine);
+    const roughness_parameters p = compute_roughness_parameters(g);
+    const auto scaled = [&g](double m, double s) {
+        micro_geometry q = g;
+        q.material = {m * lambda0, m * mu0, s * H, s * l};
+        q.bottom.delta = s * g.bottom.delta;
+        return q;
+    };
+    for (const auto& [m, s] : {std::pair<double, double>{1.0, 1e205}, {1e-10, 1e-295}}) {
+        SCOPED_TRACE(s * H);
+        const roughness_parameters q = compute_roughness_parameters(scaled(m, s));
+        EXPECT_TRUE(close(q.k_tangential, p.k_tangential * m / s, 1e-12));
+        EXPECT_TRUE(close(q.k_normal, p.k_normal * m / s, 1e-12));
+        EXPECT_TRUE(close(q.t_tangential, p.t_tangential * m * s, 1e-12));
+        EXPECT_TRUE(close(q.t_normal, p.t_normal * m * s, 1e-12));
+        EXPECT_TRUE(close(q.alpha_tangential, p.alpha_tangential / s, 1e-12));
+        EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, 1e-12));
+        EXPECT_TRUE(close(q.averages.a, p.averages.a * s, 1e-12));
+        EXPECT_TRUE(close(q.averages.a33, p.averages.a33 / s, 1e-12));
+    }
+    EXPECT_TRUE(says(violation(scaled(1.0, 1e-295)), {"H = 1.0000000000000002e-300 m", "puts k", "inf", "outside the range of double"}));
+    EXPECT_THROW(compute_roughness_parameters(scaled(1.0, 1e-295)), input_error);
+    // And t beyond DBL_MAX: H = 1e300 m with steel moduli, t = 2.69e311 Pa m.
+    EXPECT_TRUE(says(violation(scaled(1.0, 1e305)), {"puts t", "outside the range of double"}));
 }
 
 }  // namespace

@@ -18,6 +18,9 @@ struct gsl_deleter {
     void operator()(gsl_vector* v) const { gsl_vector_free(v); }
     void operator()(gsl_permutation* p) const { gsl_permutation_free(p); }
     void operator()(gsl_root_fsolver* s) const { gsl_root_fsolver_free(s); }
+    void operator()(gsl_interp* i) const { gsl_interp_free(i); }
+    void operator()(gsl_interp_accel* a) const { gsl_interp_accel_free(a); }
+    void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
 };
 
 using matrix_ptr = std::unique_ptr<gsl_matrix, gsl_deleter>;
@@ -25,24 +28,17 @@ using vector_ptr = std::unique_ptr<gsl_vector, gsl_deleter>;
 using permutation_ptr = std::unique_ptr<gsl_permutation, gsl_deleter>;
 using root_solver_ptr = std::unique_ptr<gsl_root_fsolver, gsl_deleter>;
 
-// Allocators that throw numerical_error instead of returning null.
+// The micro-geometry's (micro_geometry.cpp, roughness_parameters.cpp): the periodic spline of a
+// measured profile, its lookup accelerator and the adaptive quadrature's workspace.
+using interp_ptr = std::unique_ptr<gsl_interp, gsl_deleter>;
+using interp_accel_ptr = std::unique_ptr<gsl_interp_accel, gsl_deleter>;
+using integration_workspace_ptr = std::unique_ptr<gsl_integration_workspace, gsl_deleter>;
+
+// Allocators that throw numerical_error instead of returning null. All of them are defined
+// in error.cpp, the one file that allocates GSL objects.
 matrix_ptr make_matrix(std::size_t rows, std::size_t cols);
 vector_ptr make_vector(std::size_t size);
 permutation_ptr make_permutation(std::size_t size);
-
-// The micro-geometry (micro_geometry.cpp, roughness_parameters.cpp): the periodic spline of a
-// measured profile and the adaptive quadrature's workspace.
-struct gsl_quadrature_deleter {
-    void operator()(gsl_interp* i) const { gsl_interp_free(i); }
-    void operator()(gsl_interp_accel* a) const { gsl_interp_accel_free(a); }
-    void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
-};
-
-using interp_ptr = std::unique_ptr<gsl_interp, gsl_quadrature_deleter>;
-using interp_accel_ptr = std::unique_ptr<gsl_interp_accel, gsl_quadrature_deleter>;
-using integration_workspace_ptr = std::unique_ptr<gsl_integration_workspace, gsl_quadrature_deleter>;
-
-// Allocators that throw numerical_error instead of returning null (defined in micro_geometry.cpp).
 interp_ptr make_interp(const gsl_interp_type* type, std::size_t size);
 interp_accel_ptr make_interp_accel();
 integration_workspace_ptr make_integration_workspace(std::size_t intervals);

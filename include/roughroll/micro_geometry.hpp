@@ -67,9 +67,20 @@ const char* to_string(profile_kind kind);
 const char* to_string(micro_shape_kind kind);
 const char* to_string(decay_kind kind);
 
-// d(x2) and d'(x2) = dd/dx2 of a built-in decay, for 0 <= x2 <= H.
+// d(x2) and d'(x2) = dd/dx2 of a built-in decay, for 0 <= x2 <= H (through the two below,
+// with u = (H - x2)/H: d = dhat(u), d' = -dhat_u(u)/H).
 double decay_value(decay_kind kind, double x2, double H);
 double decay_slope(decay_kind kind, double x2, double H);
+
+// The same decay in the dimensionless depth below the top of the layer, u = (H - x2)/H in
+// [0, 1]: dhat(u) = d(H (1 - u)) and dhat_u(u) = d dhat/du = -H d'(x2). Free of H and exact as
+// u -> 0 (the top, where 1 - x2/H would cancel):
+//   linear     dhat = u,             dhat_u = 1
+//   quadratic  dhat = u^2,           dhat_u = 2u
+//   cosine     dhat = sin(pi u/2),   dhat_u = (pi/2) cos(pi u/2)
+// The layer integrals (2.6)-(2.8) are integrated in u (roughness_parameters.hpp).
+double decay_value_from_top(decay_kind kind, double u);
+double decay_slope_from_top(decay_kind kind, double u);
 
 // h_1(x1) = dh/dx1 of a built-in micro-shape (dimensionless).
 double micro_shape_slope(micro_shape_kind kind, double x1, double l);
@@ -116,7 +127,10 @@ private:
 };
 
 // The paper's conditions, each violated one a one-line message naming it:
-//   the layer: lambda0 >= 0, mu0 > 0, H > 0, l > 0, all finite;
+//   the layer: lambda0 >= 0, mu0 > 0, H > 0, l > 0, all finite, and the scales of k and t,
+//     mu0/H to (lambda0 + 2 mu0)/H and mu0 H to (lambda0 + 2 mu0) H, within 1e3 of the
+//     limits of double precision (DBL_MIN, DBL_MAX): steel moduli with H = 1e-300 m would
+//     give k = 7.7e310 Pa/m, which overflows;
 //   the profile: 0 <= h0 < H everywhere (for sine and sawtooth: 0 <= delta < H; for a
 //     measured profile on every sample, naming its file and line, and on the spline between
 //     them, which can overshoot);

@@ -10,6 +10,11 @@
 //   t^(2) = mu0/2 [<a> - <a h_1>^2/<a h_1^2>]                                            (2.14)
 //   alpha^(i) = sqrt(k^(i)/(2 t^(i)))                                                    (2.15)
 // in Pa/m (k), Pa m (t) and 1/m (alpha). Superscript (1) is tangential, (2) normal.
+// The inner integrals are computed in the dimensionless depth below the top u = (H - x2)/H,
+// with H factored out analytically (dhat(u) = d(H(1 - u)), dhat_u = d dhat/du = -H d'):
+//   a = H int_0^u0 dhat^2 du,  a3 = -int_0^u0 dhat dhat_u du,  a33 = (1/H) int_0^u0 dhat_u^2 du,
+// u0 = (H - h0(x1))/H, and the outer averages are of a/H, a3 and a33 H: no step leaves the
+// range of double for any H that check_conditions accepts, and h0 -> H loses no precision.
 #pragma once
 
 #include "roughroll/micro_geometry.hpp"
@@ -54,12 +59,12 @@ struct roughness_parameters {
 };
 
 // The tolerances of the quadratures: relative, and absolute against a scale of the integral
-// (the inner ones against the integral of |integrand|; the signed averages <a h_1>, <a3 h_1>
-// against their Cauchy-Schwarz bounds sqrt(<a><a h_1^2>), sqrt(<a33><a h_1^2>)).
+// (the inner ones against the same integral over the whole layer, u0 = 1; the signed averages
+// <a h_1>, <a3 h_1> against their Cauchy-Schwarz bounds sqrt(<a><a h_1^2>), sqrt(<a33><a h_1^2>)).
 constexpr double inner_tolerance = 1e-13;
 constexpr double outer_tolerance = 1e-12;
 
-// (2.6)-(2.8) at x1, by gsl_integration_qag (Gauss-Kronrod 21) over [h0(x1), H].
+// (2.6)-(2.8) at x1 in SI units, by gsl_integration_qag (Gauss-Kronrod 21) over u in [0, u0].
 layer_integrals integrals_at(const micro_geometry& g, double x1);
 
 // (2.11)-(2.15) from averages (no quadrature): throws numerical_error when <a h_1^2> is not
