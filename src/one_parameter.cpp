@@ -18,7 +18,6 @@ namespace roughroll {
 
 namespace {
 constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4), as tangential_solver
-constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (tangential_solver::solve)
 
 double grid_point(double lo, double hi, int i) {
     const double x = std::cos(M_PI * (i + 0.5) / check_points);
@@ -206,27 +205,14 @@ double one_parameter_solver::load(double c0) {
 }
 
 tangential_solution one_parameter_solver::solve(double Q, std::optional<double> guess) {
-    if (!std::isfinite(Q)) throw input_error("Q must be finite");
-    const double target = std::fabs(Q);
-    if (target > f_) {
-        std::ostringstream msg;
-        msg.precision(17);
-        msg << "|Q| = " << target << " exceeds the friction coefficient f = " << f_
-            << ": the cylinders slide (no rolling solution)";
-        throw input_error(msg.str());
-    }
+    const double target = load_magnitude(Q, f_);
     tangential_solution s;
     if (target == 0.0) {
         s = full_stick();
     } else if (target == f_) {
         s = gross_sliding();
-    } else if (target < min_load_ratio * f_) {
-        std::ostringstream msg;
-        msg << "|Q|/f = " << target / f_ << " is below " << min_load_ratio
-            << ": Q(c0) = f + rho int q cancels to |Q| in double precision; c0 and xi cannot be resolved "
-               "(Q = 0 is solved exactly)";
-        throw resolution_error(msg.str());
     } else {
+        check_load_resolvable(target, f_);
         // Q(-1) = f > |Q| and, at c0 = 1, q = -f p gives Q = 0 < |Q|: Brent on [-1, 1], or on a
         // bracket of half-width 1e-5 around `guess` when it brackets.
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
@@ -234,13 +220,7 @@ tangential_solution one_parameter_solver::solve(double Q, std::optional<double> 
         s = solve_system(c0.x);
         s.iterations = c0.iterations;
     }
-    if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
-        throw numerical_error("one-parameter tangential problem: the creep is not finite");
-    s.Q = Q;
-    if (Q < 0.0) {
-        s.sign = -1.0;
-        s.xi = -s.xi;
-    }
+    apply_load_sign(s, Q, "one-parameter tangential problem");
     s.checks = check(s);
     return s;
 }

@@ -162,16 +162,40 @@ tangential_solution tangential_solver::carter_solution(double Q, double c0, doub
 double tangential_solver::load(double c0) { return c0 <= -1.0 ? f_ : solve_system(c0).Q; }
 
 
-tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
+double load_magnitude(double Q, double f) {
     if (!std::isfinite(Q)) throw input_error("Q must be finite");
-    const double target = std::fabs(Q);
-    if (target > f_) {
+    const double magnitude = std::fabs(Q);
+    if (magnitude > f) {
         std::ostringstream msg;
         msg.precision(17);
-        msg << "|Q| = " << target << " exceeds the friction coefficient f = " << f_
+        msg << "|Q| = " << magnitude << " exceeds the friction coefficient f = " << f
             << ": the cylinders slide (no rolling solution)";
         throw input_error(msg.str());
     }
+    return magnitude;
+}
+
+void check_load_resolvable(double magnitude, double f) {
+    if (magnitude >= min_load_ratio * f) return;
+    std::ostringstream msg;
+    msg << "|Q|/f = " << magnitude / f << " is below " << min_load_ratio
+        << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
+           "cannot be resolved (Q = 0 is solved exactly)";
+    throw resolution_error(msg.str());
+}
+
+void apply_load_sign(tangential_solution& s, double Q, const char* what) {
+    if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
+        throw numerical_error(std::string(what) + ": the creep is not finite (roughness parameters too large?)");
+    s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
+    if (Q < 0.0) {
+        s.sign = -1.0;
+        s.xi = -s.xi;
+    }
+}
+
+tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
+    const double target = load_magnitude(Q, f_);
     tangential_solution s;
     if (target == 0.0) {
         s = full_stick();
@@ -180,15 +204,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         s = carter_solution(target, cp.c0, cp.xi);
     } else if (target == f_) {
         s = gross_sliding();
-    } else if (target < min_load_ratio * f_) {
-        // Q(c0) of (4.5) is f + rho sum w psi, an O(f) sum that cancels to |Q|: below this
-        // ratio its rounding (1e-16 f) is no longer small against |Q|, and c0, xi would be noise.
-        std::ostringstream msg;
-        msg << "|Q|/f = " << target / f_ << " is below " << min_load_ratio
-            << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
-               "cannot be resolved (Q = 0 is solved exactly)";
-        throw resolution_error(msg.str());
     } else {
+        check_load_resolvable(target, f_);
         // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
         const auto full_stick_below = [this, target] {
             const double at_full_stick = load(1.0);
@@ -204,13 +221,7 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         s = solve_system(c0.x);
         s.iterations = c0.iterations;
     }
-    if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
-        throw numerical_error("tangential problem: the creep is not finite (roughness parameters too large?)");
-    s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
-    if (Q < 0.0) {
-        s.sign = -1.0;
-        s.xi = -s.xi;
-    }
+    apply_load_sign(s, Q, "tangential problem");
     s.checks = check(s);
     return s;
 }

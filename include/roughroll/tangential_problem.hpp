@@ -49,6 +49,18 @@ struct tangential_solution {
     double rho() const { return 0.5 * (1.0 + c0); }
 };
 
+// The checks every tangential solver makes on a load Q before solving (and the one-parameter
+// limit shares): |Q| for a finite Q with |Q| <= f, else an input_error (the cylinders slide).
+double load_magnitude(double Q, double f);
+
+// A resolution_error when 0 < |Q|/f < 1e-10: Q(c0) of (4.5) is f + rho int q, an O(f) sum
+// that cancels to |Q|, and its rounding (1e-16 f) would make c0 and xi noise.
+void check_load_resolvable(double magnitude, double f);
+
+// The solution solved for |Q| as the solution for Q: the mirror case Q < 0 (xi, p1, q0
+// change sign, c0 does not). Refuses a non-finite c0 or xi (numerical_error naming `what`).
+void apply_load_sign(tangential_solution& s, double Q, const char* what);
+
 class tangential_solver {
 public:
     // The normal solution is shared by every point of a creep curve. When both kernels
