@@ -264,7 +264,7 @@ void sample_violations(const profile_samples& s, double H, std::vector<std::stri
         const std::string where = s.source + ":" + (i < s.lines.size() ? std::to_string(s.lines[i]) : "?") + ": ";
         const double h = s.h0[i];
         if (!(h >= 0.0)) {
-            out.push_back(one_line(where + "h0 = " + shortest(h) + " is below 0 (the paper's 0 <= h0 < H)"));
+            out.push_back(one_line(where + "h0 = " + shortest(h) + " is below 0 (the paper's 0 <= h0 < H; h0 is measured from the deepest valley: shift a zero-mean profile by its minimum)"));
             return;
         }
         if (!(h < H)) {

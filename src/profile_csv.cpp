@@ -106,6 +106,8 @@ profile_samples parse_profile_csv(std::string_view text, const std::string& sour
     if (!(std::isfinite(l) && l > 0.0)) {
         throw input_error(one_line(source + ": the period l must be finite and > 0 (got " + shortest(l) + ")"));
     }
+    // A UTF-8 byte-order mark, as spreadsheet programs write, is not part of the first field.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     line_parser parser(source, l);
     int line = 0;
     while (!text.empty()) {

@@ -215,6 +215,8 @@ TEST(ProfileCsv, Accepts) {
     EXPECT_EQ(s.source, "p.csv");
     // The header with spaces; the closing point repeating the first h0.
     EXPECT_EQ(parse_profile_csv(" x1 , h0 \n0,1\n1,2\n2,3\n3,2\n4,1\n", "p.csv", 4.0).x1.size(), 4u);
+    // A UTF-8 byte-order mark before the header (spreadsheet exports).
+    EXPECT_EQ(parse_profile_csv("\xEF\xBB\xBFx1,h0\n0,1\n1,2\n2,3\n3,2\n", "p.csv", 4.0).x1.size(), 4u);
 }
 
 TEST(ProfileCsv, EachBadLine) {
