@@ -165,26 +165,12 @@ tangential_solution one_parameter_solver::solve_system(double c0) {
 }
 
 tangential_solution one_parameter_solver::full_stick() const {
-    // c0 = 1: q = -f p, xi = 0 (H[p] + eps1 p' = -G on the whole contact), as tangential_solver.
-    tangential_solution s{};
-    s.f = f_;
-    s.c0 = 1.0;
-    s.sign = 1.0;
-    s.psi_b = normal_.b;
-    for (double& bj : s.psi_b) bj *= -f_;
-    s.rcond = 1.0;
-    return s;
+    // q = -f p, xi = 0 (H[p] + eps1 p' = -G on the whole contact), as for tangential_solver.
+    return full_stick_solution(f_, normal_.b);
 }
 
 tangential_solution one_parameter_solver::gross_sliding() const {
-    // c0 = -1: the stick equation shrinks to r = -1, xi = -f G(-1) (docs/formulation.md 2(g)).
-    tangential_solution s{};
-    s.f = f_;
-    s.c0 = -1.0;
-    s.xi = -f_ * G(-1.0);
-    s.Q = f_;
-    s.sign = 1.0;
-    s.rcond = 1.0;
+    tangential_solution s = gross_sliding_solution(f_, G(-1.0));
     if (!std::isfinite(s.xi))
         throw input_error("one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
                           "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1)");

@@ -103,32 +103,34 @@ tangential_solution tangential_solver::solve_system(double c0) {
     return s;
 }
 
-tangential_solution tangential_solver::full_stick() {
+tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b) {
     // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
     tangential_solution s{};
-    s.f = f_;
+    s.f = f;
     s.c0 = 1.0;
-    s.xi = 0.0;
-    s.Q = 0.0;
     s.sign = 1.0;
-    s.psi_b = normal_.b;
-    for (double& bj : s.psi_b) bj *= -f_;
+    s.psi_b = pressure_b;
+    for (double& bj : s.psi_b) bj *= -f;
     s.rcond = 1.0;
     return s;
 }
 
-tangential_solution tangential_solver::gross_sliding() {
+tangential_solution gross_sliding_solution(double f, double G_at_minus_one) {
     // c0 = -1: no stick zone, q0 = 0, and the stick equation shrinks to the point
     // r = -1, where xi + f G(-1) = 0.
     tangential_solution s{};
-    s.f = f_;
+    s.f = f;
     s.c0 = -1.0;
-    s.xi = -f_ * G(-1.0);
-    s.Q = f_;
+    s.xi = -f * G_at_minus_one;
+    s.Q = f;
     s.sign = 1.0;
     s.rcond = 1.0;
     return s;
 }
+
+tangential_solution tangential_solver::full_stick() { return full_stick_solution(f_, normal_.b); }
+
+tangential_solution tangential_solver::gross_sliding() { return gross_sliding_solution(f_, G(-1.0)); }
 
 tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
     if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
