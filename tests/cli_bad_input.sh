@@ -7,23 +7,8 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 failures=0
 
-# expect NAME KEYWORD -- ARGS...: exit 2, one stderr line containing KEYWORD, empty stdout.
-# The program runs under the command in the array `as_user` when it is set (one row below).
-as_user=()
-expect() {
-    local name=$1 keyword=$2
-    shift 3
-    timeout 60 ${as_user[@]+"${as_user[@]}"} "$bin" "$@" >"$dir/out" 2>"$dir/err"
-    local status=$? lines
-    lines=$(wc -l <"$dir/err")
-    if [ "$status" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -qiF -- "$keyword" "$dir/err" || [ -s "$dir/out" ]; then
-        echo "FAIL $name: status $status, $lines stderr line(s), expected '$keyword':"
-        sed 's/^/    /' "$dir/err"
-        failures=$((failures + 1))
-    else
-        echo "ok   $name: $(cat "$dir/err")"
-    fi
-}
+# expect NAME KEYWORD -- ARGS... (cli_expect.sh); `as_user` runs it as another user (one row below).
+source "$(dirname "$0")/cli_expect.sh"
 
 scene() {  # scene NAME CONTENT: writes $dir/NAME.toml
     printf '%s\n' "$2" >"$dir/$1.toml"

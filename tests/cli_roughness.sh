@@ -90,19 +90,7 @@ else
 fi
 
 # Bad input. expect NAME KEYWORD -- ARGS...: exit 2, one stderr line containing KEYWORD, empty stdout.
-expect() {
-    local name=$1 keyword=$2
-    shift 3
-    timeout 60 "$bin" "$@" >"$dir/out" 2>"$dir/err"
-    local status=$? lines
-    lines=$(wc -l <"$dir/err")
-    if [ "$status" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -qiF -- "$keyword" "$dir/err" || [ -s "$dir/out" ]; then
-        fail "$name: status $status, $lines stderr line(s), expected '$keyword':"
-        sed 's/^/    /' "$dir/err"
-    else
-        echo "ok   $name: $(cat "$dir/err")"
-    fi
-}
+source "$(dirname "$0")/cli_expect.sh"
 
 good='lambda0 = 1.15e11
 mu0 = 7.7e10

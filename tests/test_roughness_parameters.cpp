@@ -243,22 +243,29 @@ TEST(RoughnessParameters, MeasuredSineConvergesToBuiltInSine) {
     EXPECT_LT(previous, 1e-8);
 }
 
-// k and t scale as mu0/H and mu0 H: scaling the moduli by m and every length (H, l, delta)
-// by s multiplies k by m/s, t by m s and alpha by 1/s.
-TEST(RoughnessParameters, UnitsScaling) {
-    const micro_geometry g = geometry(profile_kind::sine, 0.4 * H, decay_kind::cosine);
-    const roughness_parameters p = compute_roughness_parameters(g);
-    const double m = 3.0, s = 1e-3;
-    micro_geometry scaled = g;
-    scaled.material = {m * lambda0, m * mu0, s * H, s * l};
-    scaled.bottom.delta = s * g.bottom.delta;
-    const roughness_parameters q = compute_roughness_parameters(scaled);
+// The layer g with its moduli scaled by m and every length (H, l, delta) by s.
+micro_geometry scaled_layer(const micro_geometry& g, double m, double s) {
+    micro_geometry q = g;
+    q.material = {m * g.material.lambda0, m * g.material.mu0, s * g.material.H, s * g.material.l};
+    q.bottom.delta = s * g.bottom.delta;
+    return q;
+}
+
+// k and t scale as mu0/H and mu0 H: q, the parameters of scaled_layer(g, m, s), has k times
+// m/s, t times m s and alpha times 1/s of p, those of g.
+void expect_scaled(const roughness_parameters& q, const roughness_parameters& p, double m, double s) {
     EXPECT_TRUE(close(q.k_tangential, p.k_tangential * m / s, 1e-12));
     EXPECT_TRUE(close(q.k_normal, p.k_normal * m / s, 1e-12));
     EXPECT_TRUE(close(q.t_tangential, p.t_tangential * m * s, 1e-12));
     EXPECT_TRUE(close(q.t_normal, p.t_normal * m * s, 1e-12));
     EXPECT_TRUE(close(q.alpha_tangential, p.alpha_tangential / s, 1e-12));
     EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, 1e-12));
+}
+
+TEST(RoughnessParameters, UnitsScaling) {
+    const micro_geometry g = geometry(profile_kind::sine, 0.4 * H, decay_kind::cosine);
+    const double m = 3.0, s = 1e-3;
+    expect_scaled(compute_roughness_parameters(scaled_layer(g, m, s)), compute_roughness_parameters(g), m, s);
 }
 
 // The inner integrals in closed form, in u0 = (H - h0)/H (docs/roughness-parameters.md):
@@ -452,21 +459,11 @@ TEST(Conditions, ComputeRefusesViolations) {
 TEST(RoughnessParameters, ExtremeScales) {
     const micro_geometry g = geometry(profile_kind::sine, 0.4 * H, decay_kind::cosine);
     const roughness_parameters p = compute_roughness_parameters(g);
-    const auto scaled = [&g](double m, double s) {
-        micro_geometry q = g;
-        q.material = {m * lambda0, m * mu0, s * H, s * l};
-        q.bottom.delta = s * g.bottom.delta;
-        return q;
-    };
+    const auto scaled = [&g](double m, double s) { return scaled_layer(g, m, s); };
     for (const auto& [m, s] : {std::pair<double, double>{1.0, 1e205}, {1e-10, 1e-295}}) {
         SCOPED_TRACE(s * H);
         const roughness_parameters q = compute_roughness_parameters(scaled(m, s));
-        EXPECT_TRUE(close(q.k_tangential, p.k_tangential * m / s, 1e-12));
-        EXPECT_TRUE(close(q.k_normal, p.k_normal * m / s, 1e-12));
-        EXPECT_TRUE(close(q.t_tangential, p.t_tangential * m * s, 1e-12));
-        EXPECT_TRUE(close(q.t_normal, p.t_normal * m * s, 1e-12));
-        EXPECT_TRUE(close(q.alpha_tangential, p.alpha_tangential / s, 1e-12));
-        EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, 1e-12));
+        expect_scaled(q, p, m, s);
         EXPECT_TRUE(close(q.averages.a, p.averages.a * s, 1e-12));
         EXPECT_TRUE(close(q.averages.a33, p.averages.a33 / s, 1e-12));
     }
