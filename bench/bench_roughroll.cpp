@@ -5,11 +5,12 @@
 
 #include <benchmark/benchmark.h>
 
-#include "roughroll/contact.hpp"
-#include "roughroll/micro_geometry_input.hpp"
-#include "roughroll/physical_scene.hpp"
-#include "roughroll/roughness_parameters.hpp"
-#include "roughroll/scene.hpp"
+#include "roughroll/problems/contact_width.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/io/micro_geometry_input.hpp"
+#include "roughroll/model/physical_scene.hpp"
+#include "roughroll/layer/roughness_parameters.hpp"
+#include "roughroll/io/scene.hpp"
 
 using namespace roughroll;
 

@@ -20,9 +20,9 @@
 #include <string>
 #include <string_view>
 
-#include "roughroll/error.hpp"
-#include "roughroll/micro_geometry.hpp"
-#include "roughroll/profile_csv.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/layer/micro_geometry.hpp"
+#include "roughroll/io/profile_csv.hpp"
 
 namespace {
 

@@ -23,9 +23,9 @@
 #include <string>
 #include <string_view>
 
-#include "roughroll/error.hpp"
-#include "roughroll/quadrature.hpp"
-#include "roughroll/scene.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/io/scene.hpp"
 
 namespace {
 

@@ -14,7 +14,7 @@ prefix=$work/prefix
 
 echo "== cmake --install $build --prefix $prefix"
 cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log" >&2; exit 1; }
-for f in bin/roughroll include/roughroll/contact.hpp; do
+for f in bin/roughroll include/roughroll/problems/contact.hpp; do
     [ -e "$prefix/$f" ] || { echo "install_consumer: $f not installed" >&2; exit 1; }
 done
 

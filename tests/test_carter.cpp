@@ -5,7 +5,7 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
-#include "roughroll/carter.hpp"
+#include "roughroll/model/carter.hpp"
 
 using namespace roughroll;
 

@@ -6,9 +6,9 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
-#include "roughroll/error.hpp"
-#include "roughroll/kernel.hpp"
-#include "roughroll/kernel_sweep.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/kernel_moments.hpp"
+#include "roughroll/numerics/kernel_sweep.hpp"
 
 using namespace roughroll;
 

@@ -1,13 +1,13 @@
-// Unit tests of the one-parameter limit's pieces (src/one_parameter.cpp): the compliances
+// Unit tests of the one-parameter limit's pieces (src/problems/one_parameter.cpp): the compliances
 // 2T/A^2, the symmetry of the normal solution, and p' from the normal equation against a
 // difference quotient of the pressure series.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "roughroll/error.hpp"
-#include "roughroll/method.hpp"
-#include "roughroll/one_parameter.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/one_parameter.hpp"
 
 using namespace roughroll;
 

@@ -1,8 +1,8 @@
 // The micro-geometry reader (micro_geometry_input.hpp) and the profile CSV reader
 // (profile_csv.hpp): good input read exactly, every kind of bad input one message naming the
 // file and the key or line.
-#include "roughroll/micro_geometry_input.hpp"
-#include "micro_geometry_table.hpp"
+#include "roughroll/io/micro_geometry_input.hpp"
+#include "io/micro_geometry_table.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/error.hpp"
-#include "roughroll/profile_csv.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/io/profile_csv.hpp"
 
 namespace roughroll {
 namespace {

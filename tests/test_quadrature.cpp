@@ -4,8 +4,8 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
-#include "roughroll/error.hpp"
-#include "roughroll/quadrature.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/quadrature.hpp"
 
 using namespace roughroll;
 

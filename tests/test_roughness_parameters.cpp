@@ -1,6 +1,6 @@
 // The roughness parameters (2.6)-(2.15) against closed forms derived by hand
 // (docs/roughness-parameters.md, "Closed forms"), and the paper's conditions.
-#include "roughroll/roughness_parameters.hpp"
+#include "roughroll/layer/roughness_parameters.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 #include <gsl/gsl_math.h>
 
-#include "roughroll/error.hpp"
-#include "roughroll/micro_geometry.hpp"
-#include "roughroll/profile_csv.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/layer/micro_geometry.hpp"
+#include "roughroll/io/profile_csv.hpp"
 
 namespace roughroll {
 namespace {

@@ -1,4 +1,4 @@
-#include "roughroll/scene.hpp"
+#include "roughroll/io/scene.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/error.hpp"
+#include "roughroll/base/error.hpp"
 
 namespace roughroll {
 namespace {

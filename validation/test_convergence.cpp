@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/contact.hpp"
+#include "roughroll/problems/contact.hpp"
 
 using namespace roughroll;
 

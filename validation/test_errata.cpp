@@ -21,14 +21,14 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
-#include "roughroll/carter.hpp"
-#include "roughroll/collocation.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
-#include "roughroll/linear_system.hpp"
-#include "roughroll/normal_problem.hpp"
-#include "roughroll/quadrature.hpp"
-#include "roughroll/tangential_problem.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/linear_system.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 
 using namespace roughroll;
 
@@ -50,7 +50,7 @@ struct stick_solution {
 
 using g_function = std::function<double(double)>;
 
-// The tangential system at a trial c0, assembled as src/tangential_problem.cpp does:
+// The tangential system at a trial c0, assembled as src/problems/tangential_problem.cpp does:
 // rows m = 0..n collocation at s_m, columns psi_k and -1 for xi, right side +-f G(map(s_m));
 // then Q(c0) = f + rho sum_k w_k psi_k (4.5).
 stick_solution solve_at(const normal_solution& normal, const kernel& k1, double f, const g_function& G, double c0,

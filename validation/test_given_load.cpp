@@ -6,9 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/contact.hpp"
-#include "roughroll/physical_scene.hpp"
-#include "roughroll/scene.hpp"
+#include "roughroll/problems/contact_width.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/model/physical_scene.hpp"
+#include "roughroll/io/scene.hpp"
 
 using namespace roughroll;
 

@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/carter.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
-#include "roughroll/one_parameter.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/problems/one_parameter.hpp"
 
 using namespace roughroll;
 

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/carter.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
 
 using namespace roughroll;
 

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/carter.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/tangential_problem.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 
 using namespace roughroll;
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
 
 using namespace roughroll;
 
@@ -45,6 +45,8 @@ roughness scales() {  // both cylinders rough, parameters four decades apart
 }
 
 std::string name_of(const ::testing::TestParamInfo<extreme_case>& info) { return info.param.name; }
+// GoogleTest prints a parameter in ctest's listing: its name, not its bytes.
+void PrintTo(const extreme_case& x, std::ostream* os) { *os << x.name; }
 }  // namespace
 
 class Extreme : public ::testing::TestWithParam<extreme_case> {};

@@ -6,9 +6,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "roughroll/physical_scene.hpp"
-#include "roughroll/scene.hpp"
-#include "roughroll/tangential_problem.hpp"
+#include "roughroll/problems/contact_width.hpp"
+#include "roughroll/model/physical_scene.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll::cli {
 

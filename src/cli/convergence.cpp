@@ -12,9 +12,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
-#include "roughroll/output.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/io/output.hpp"
 
 namespace roughroll::cli {
 

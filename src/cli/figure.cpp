@@ -17,10 +17,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
-#include "roughroll/output.hpp"
-#include "roughroll/quadrature.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll::cli {
 

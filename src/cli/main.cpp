@@ -9,11 +9,11 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/error.hpp"
-#include "roughroll/quadrature.hpp"
-#include "roughroll/output.hpp"
-#include "roughroll/scene.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
 
 namespace roughroll::cli {
 

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <system_error>
 
-#include "roughroll/error.hpp"
+#include "roughroll/base/error.hpp"
 
 namespace roughroll::cli {
 

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "roughroll/micro_geometry_input.hpp"
-#include "roughroll/roughness_parameters.hpp"
+#include "roughroll/io/micro_geometry_input.hpp"
+#include "roughroll/layer/roughness_parameters.hpp"
 
 namespace roughroll::cli {
 namespace {

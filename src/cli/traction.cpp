@@ -18,10 +18,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_files.hpp"
-#include "roughroll/carter.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/output.hpp"
-#include "roughroll/error.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/base/error.hpp"
 
 namespace roughroll::cli {
 

@@ -7,10 +7,10 @@
 #include <iostream>
 #include <optional>
 
-#include "roughroll/carter.hpp"
-#include "roughroll/contact.hpp"
-#include "roughroll/output.hpp"  // every public header, nlohmann/json.hpp included, must compile here
-#include "roughroll/scene.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/io/output.hpp"  // every public header, nlohmann/json.hpp included, must compile here
+#include "roughroll/io/scene.hpp"
 
 int main() {
     using namespace roughroll;

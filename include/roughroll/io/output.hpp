@@ -1,0 +1,41 @@
+// Results as the user reads them: one creep point as JSON or text, a creep curve as CSV.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/model/physical_scene.hpp"
+#include "roughroll/base/text.hpp"
+
+namespace roughroll {
+
+struct point_report {
+    std::string label;
+    const normal_solution& normal;
+    const tangential_solution& solution;
+    double seconds;  // wall time of the normal and tangential solves
+    std::optional<error_estimate> estimate;
+    std::optional<si_point> si;  // a physical scene's results in SI units
+};
+
+nlohmann::json to_json(const point_report& r);
+void write_summary(std::ostream& out, const point_report& r);
+
+// Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,
+// xi_error_estimate,Q_error_estimate (empty without an estimate; the c0 estimate is 0 on a
+// curve swept in c0, the Q estimate 0 on a curve at given loads); shortest round-trip digits.
+// For a physical scene (`si` given: its scene and contact width) the columns
+// P1_N_per_m,xi1,xi1_carter follow.
+struct si_context {
+    physical_scene scene;
+    contact_width width;
+};
+void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve,
+                     const std::optional<si_context>& si = std::nullopt);
+
+}  // namespace roughroll

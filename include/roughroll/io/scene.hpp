@@ -1,0 +1,57 @@
+// Scene files (TOML): the inputs of one rolling contact, checked strictly.
+//
+//   label = "Fig. 2a, curve 2"   # optional, names the scene in outputs
+//   friction = 0.3               # f, positive and finite (required)
+//   Q = 0.15                     # P1/P2, optional (the command line may give it)
+//   [cylinder1.tangential]       # T_1^(1), A_1^(1) of (3.26)
+//   T = 0.5
+//   A = 0.5
+//   [cylinder1.normal]           # T_1^(2), A_1^(2)
+//   T = 0.5
+//   A = 0.5
+//   # [cylinder2.tangential], [cylinder2.normal] likewise; a missing table is smooth
+//   [solver]
+//   n = 128                      # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
+//   method = "extrapolated"      # or "product", "paper", "one-parameter" (the limit t -> 0)
+//
+// Every key and table not listed above is an error naming it; so is a wrong type,
+// a non-finite or negative T or A, a table with T or A missing, a non-positive f,
+// a non-finite Q or |Q| > f.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/model/physical_scene.hpp"
+#include "roughroll/model/roughness.hpp"
+
+namespace roughroll {
+
+struct scene {
+    std::string label;
+    double friction = 0.0;
+    std::optional<double> Q;
+    roughness surfaces;
+    solver_options solver;
+    // Set for a physical scene; `surfaces` are then those at a = a_H(P2) until the
+    // contact width is found (find_width), and Q is P1/P2 when P1 is given.
+    std::optional<physical_scene> physical;
+};
+
+// Parses scene text; `source` names it in messages ("data/fig2a-T0.5.toml"), `base_dir`
+// resolves a relative profile_csv of a micro-geometry. Throws input_error with one line:
+// "<source>: <what is wrong>".
+scene parse_scene(std::string_view text, const std::string& source, const std::filesystem::path& base_dir = ".");
+
+// Reads and parses a scene file; a missing, unreadable or non-regular file is an input_error.
+scene read_scene(const std::string& path);
+
+// The load to solve for: `override` (the command line) if given, else the scene's Q.
+// Throws input_error when neither is given, when Q is not finite, or when |Q| > f
+// (the cylinders slide).
+double load_of(const scene& s, std::optional<double> override);
+
+}  // namespace roughroll

@@ -1,0 +1,50 @@
+// The discrete operators shared by the normal (4.2) and tangential (4.4) systems:
+// row m is the collocation point s_m, column k the nodal unknown at eta_k.
+//   Cauchy term:  (1/pi) w_k / (eta_k - s_m)           (exact for the interpolant)
+//   kernel term:  paper   w_k K(eta_k - s_m)            (4.2), (4.4)
+//                 product int l_k(eta) sqrt(1-eta^2) K(eta - s_m) d eta, l_k the
+//                 Lagrange basis of the nodes, by kernel_sweep.
+#pragma once
+
+#include <optional>
+
+#include <gsl/gsl_matrix.h>
+
+#include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/kernel_sweep.hpp"
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+// Adds the Cauchy term into a(m, k), m <= n, k < n.
+void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule);
+
+// The kernel term for one rule and method. For product integration it keeps the sweep
+// workspace, so the stretched kernels of successive trial c0 (rates up to max_rate) reuse
+// its quadrature points and basis values.
+class kernel_operator {
+public:
+    kernel_operator(const gauss_chebyshev& rule, method how, double max_rate);
+
+    // Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
+    void add_to(gsl_matrix* a, const kernel& k) const;
+
+private:
+    const gauss_chebyshev& rule_;
+    method how_;
+    std::optional<kernel_sweep> sweep_;
+};
+
+// One-off: kernel_operator(rule, how, k.max_rate()).add_to(a, k).
+void add_kernel_term(gsl_matrix* a, const kernel& k, const gauss_chebyshev& rule, method how);
+
+// Whether n is fine enough for k that the error falls at the method's order (2 paper,
+// 4 product) from n on: the condition for n/2 to serve as the error estimate's companion.
+bool in_asymptotic_range(const kernel& k, int n, method how);
+
+// Throws resolution_error when `k` varies faster than `how` resolves with this n.
+// `what` names the kernel in the message ("K2* (normal)").
+void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what);
+
+}  // namespace roughroll

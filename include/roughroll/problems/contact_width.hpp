@@ -1,0 +1,22 @@
+// The half-width a of a physical scene (docs/formulation.md 2(j)): the width at which the
+// model carries the given load P2, lambda(T(a), A(a)) = (a / a_H(P2))^2, found by Brent on
+// the normal problem alone; or the paper's a = a_H.
+#pragma once
+
+#include <functional>
+
+#include "roughroll/model/physical_scene.hpp"
+#include "roughroll/model/roughness.hpp"
+
+namespace roughroll {
+
+// The half-width by the scene's width rule. `load_ratio` gives lambda = P_H/P2 for the
+// roughness at a trial width (the normal problem (3.19)-(3.20) as a contact solves it).
+// given_load: gsl_root_fsolver_brent on F(a) = lambda(a) - (a/a_H)^2, bracketed from a_H
+// (F(a_H) = lambda - 1 >= 0: roughness adds compliance, E2) first to a_H sqrt(lambda(a_H)),
+// then outwards by 1.25; trials beyond the method's resolution are halved back. Throws the
+// solver's resolution_error or numerical_error prefixed with the trial width, numerical_error
+// when no bracket is found, and input_error when a > R/10 (the half-spaces of (3.7)).
+contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio);
+
+}  // namespace roughroll

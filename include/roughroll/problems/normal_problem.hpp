@@ -1,0 +1,46 @@
+// The normal problem (3.19)-(3.20) with a = a_H, discretised by (4.2)-(4.3), (4.6)-(4.7):
+//   gamma_0n + sum_k [(1/pi) w_k/(eta_k - s_m) + kernel_mk] phi_k + (2/pi) lambda s_m = 0,
+//   sum_k w_k phi_k = 1,
+// for the n + 2 unknowns phi(eta_k), gamma_0n and lambda = P_H/P2 (E9 for gamma_0n).
+#pragma once
+
+#include <vector>
+
+#include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/linear_system.hpp"
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+struct normal_solution {
+    gauss_chebyshev rule;
+    method how;
+    std::vector<double> phi;  // phi(eta_k) of (4.1)
+    std::vector<double> b;    // U coefficients of the interpolant of phi
+    double lambda;            // P_H/P2
+    double gamma;             // gamma_0n, tends to 0 as n grows (4.8)
+    double rcond;             // reciprocal condition of the LU factor U
+
+    double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2), (4.1)
+};
+
+// Explicit workspace: the (n+2)x(n+2) system, allocated once per n.
+class normal_solver {
+public:
+    normal_solver(int n, method how);
+    normal_solution solve(const kernel& k2);
+
+private:
+    gauss_chebyshev rule_;
+    method how_;
+    dense_system system_;
+};
+
+// The smooth solution of Hertz, lambda = 1, phi = 2/pi, exact for every n.
+normal_solution hertz_solution(int n, method how);
+
+// Hertz's closed form when k2 is empty, the solver otherwise.
+normal_solution solve_normal(const kernel& k2, int n, method how);
+
+}  // namespace roughroll

@@ -1,0 +1,90 @@
+// The one-parameter (Winkler-layer) model of the paper's reference [2]: the limit
+// t^(i) -> 0 of the two-parameter model, T, A -> infinity with 2T/A^2 fixed
+// (docs/formulation.md, "The one-parameter limit"). Each kernel term acting on a smooth p
+// tends to (2T/A^2) p', so with the compliances
+//   eps_i = sum over the cylinders of 2 T_beta^(i) / (A_beta^(i))^2   (i = 1 tangential, 2 normal)
+// the consistent problem becomes singular integro-differential:
+//   normal:     (1/pi) int p(eta)/(eta - r) d eta + eps2 p'(r) = -(2/pi) lambda r,  int p = 1
+//   tangential: (1/pi) int q(tau)/(tau - t) d tau + (eps1/rho) q'(t) = xi + f G(r(t)),
+//               rho int q = Q - f,  G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r),
+// on the stick zone [-1, c0], r = rho (t + 1) - 1 (E4). With eps > 0 the tractions vanish at
+// the ends of their intervals. p = sum_j b_j sin((j+1) theta), r = cos theta, i.e. p =
+// sqrt(1 - r^2) sum_j b_j U_j(r): the representation of normal_solution (4.1), so its b,
+// pressure() and the output code apply unchanged; likewise q and psi_b.
+//
+// Collocation (Glauert type): each equation multiplied by sin theta at the n + 1 points of
+// (4.7), theta_m = (m - 1/2) pi/(n + 1), for n coefficients and one more unknown: gamma_0n
+// (normal, the regularising unknown of (4.2), zero by symmetry) and xi (tangential, fixed by
+// the solvability condition). c0 for a given Q by Brent, as in tangential_solver.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "roughroll/numerics/linear_system.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/model/roughness.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+
+namespace roughroll {
+
+// eps1 (tangential) and eps2 (normal): the compliances of the Winkler layers in the units
+// of (3.19), eps = mu/(2 (1 - nu) a k) (docs/formulation.md 2(c)).
+struct compliances {
+    double tangential = 0.0;  // eps1
+    double normal = 0.0;      // eps2
+};
+
+// sum_beta 2 T/A^2 per direction; a term with T = 0 contributes nothing. Throws input_error
+// for a term with T > 0 and A = 0 (no t -> 0 limit: the kernel does not decay), or with
+// T, A negative or not finite.
+compliances one_parameter_compliances(const roughness& r);
+
+// The normal problem of the limit alone (lambda, b, gamma_0n), n coefficients: the solver's
+// normal solution, and load_ratio's for method::one_parameter. Throws input_error for a
+// negative or non-finite eps2.
+normal_solution one_parameter_normal(double eps2, int n);
+
+// Explicit workspace for one (eps1, eps2, f, n): the normal problem is solved on
+// construction and shared by every point of a creep curve.
+class one_parameter_solver {
+public:
+    one_parameter_solver(const compliances& eps, double f, int n);
+    one_parameter_solver(const roughness& r, double f, int n)
+        : one_parameter_solver(one_parameter_compliances(r), f, n) {}
+
+    const normal_solution& normal() const { return normal_; }
+    const compliances& eps() const { return eps_; }
+    double friction() const { return f_; }
+
+    // Conventions of tangential_solver::solve: Q < 0 mirror (c0 unchanged, xi and the
+    // tractions change sign), Q = 0 full stick and |Q| = f gross sliding without a solve,
+    // |Q| > f or non-finite Q an input_error. `guess`: a c0 near the root, tried first.
+    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt);
+    // The point whose stick zone ends at c0 in [-1, 1]: Q = Q(c0), no root search.
+    tangential_solution at_stick_end(double c0, bool checked = true);
+    double load(double c0);  // Q(c0) = f + rho (pi/2) psi_b[0], Q >= 0 branch
+
+    double pressure_slope(double r) const;  // p'(r) on [-1, 1]
+    double G(double r) const;               // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
+    double traction(const tangential_solution& s, double r) const;       // p1(r), (3.15)
+    double slip_velocity(const tangential_solution& s, double r) const;  // v(r), 0 on the stick zone
+    traction_checks check(const tangential_solution& s) const;           // p >= 0, (3.3), (3.4)
+
+private:
+    tangential_solution solve_system(double c0);
+    tangential_solution full_stick() const;
+    tangential_solution gross_sliding() const;
+    double q0(const tangential_solution& s, double r) const;
+    double slip_velocity_magnitude(const tangential_solution& s, double r) const;
+
+    compliances eps_;
+    double f_;
+    int n_;
+    std::vector<double> sin_;  // sin theta_m, m = 0..n
+    std::vector<double> cos_;  // cos((j+1) theta_m), row-major (n+1) x n
+    dense_system tangential_system_;
+    normal_solution normal_;
+};
+
+}  // namespace roughroll

@@ -1,0 +1,120 @@
+// The tangential problem (3.21)-(3.22) with errata E4-E8. The stick zone is the
+// leading part [-1, c0] of the contact, r = rho (t + 1) - 1 with rho = (1 + c0)/2 (E4),
+// and p1 = f p + q0 there, p1 = f p on the slip zone (3.15). In the stick variable t:
+//   (1/pi) int q(tau)/(tau - t) d tau + int q(tau) rho K1*(rho (tau - t)) d tau = xi + f G(r(t))  (E5, E6)
+//   rho int q(tau) d tau = Q - f                                                           (3.22)
+//   G(r) = (2/pi) lambda r + int_{-1}^{1} p(eta) [K2* - K1*](eta - r) d eta                (3.25), E8
+// q = psi sqrt(1 - tau^2) (4.1). For a trial c0 the n + 1 collocation equations (4.4)
+// give psi(eta_k) and xi; Q(c0) then follows from (4.5), and c0 for a given Q is the
+// root of Q(c0) - Q found by gsl_root_fsolver_brent on [-1, 1].
+//
+// Q < 0 is the mirror case: p1, q0 and xi change sign, c0 does not. Q = 0 is full stick
+// (c0 = 1, xi = 0, q0 = -f p) and |Q| = f the onset of gross sliding (c0 = -1,
+// xi = -f G(-1)); neither needs a solve.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/kernel_moments.hpp"
+#include "roughroll/numerics/linear_system.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+
+namespace roughroll {
+
+// The paper's inequalities checked on interior grids of each zone.
+struct traction_checks {
+    double pressure_margin;  // min p on (-1, 1): p >= 0
+    double stick_margin;     // (3.3) min of (f p - |p1|)/f on the stick zone
+    double slip_margin;      // (3.4) min of v/f on the slip zone (v with the sign of Q)
+    bool pressure_holds;
+    bool stick_holds;
+    bool slip_holds;
+
+    bool hold() const { return pressure_holds && stick_holds && slip_holds; }
+};
+
+struct tangential_solution {
+    double Q;      // P1/P2
+    double f;      // friction coefficient
+    double c0;     // end of the stick zone
+    double xi;     // dimensionless creep
+    double sign;   // +1, or -1 for the mirror case Q < 0
+    std::vector<double> psi_b;  // U coefficients of psi(tau) for |Q| (multiply by sign)
+    int iterations;             // Brent iterations (0 without a root search)
+    double rcond;               // of the last tangential system (1 without a solve)
+    traction_checks checks;
+
+    double rho() const { return 0.5 * (1.0 + c0); }
+};
+
+// The checks every tangential solver makes on a load Q before solving (and the one-parameter
+// limit shares): |Q| for a finite Q with |Q| <= f, else an input_error (the cylinders slide).
+double load_magnitude(double Q, double f);
+
+// A resolution_error when 0 < |Q|/f < 1e-10: Q(c0) of (4.5) is f + rho int q, an O(f) sum
+// that cancels to |Q|, and its rounding (1e-16 f) would make c0 and xi noise.
+void check_load_resolvable(double magnitude, double f);
+
+// The solution solved for |Q| as the solution for Q: the mirror case Q < 0 (xi, p1, q0
+// change sign, c0 does not). Refuses a non-finite c0 or xi (numerical_error naming `what`).
+void apply_load_sign(tangential_solution& s, double Q, const char* what);
+
+// The special loads solved without a system (docs/formulation.md 2(g)), for any tangential
+// solver: Q = 0 is full stick, c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the
+// pressure's, `pressure_b`); |Q| = f is the onset of gross sliding, c0 = -1, xi = -f G(-1).
+tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b);
+tangential_solution gross_sliding_solution(double f, double G_at_minus_one);
+
+class tangential_solver {
+public:
+    // The normal solution is shared by every point of a creep curve. When both kernels
+    // are empty, solve() takes Carter's closed form unless `closed_form` is false (the
+    // validation of the scheme itself).
+    tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
+                      bool closed_form = true);
+    // The solver keeps a reference to the normal solution: a temporary would dangle.
+    tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
+
+    // Throws input_error for |Q| > f or non-finite Q. `guess`: a c0 close to the root (the
+    // coarse level's, when extrapolating), tried first as a narrow bracket.
+    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt);
+
+    // The solution for a trial c0 in [-1, 1], Q = Q(c0) of (4.5): a creep curve swept
+    // in c0 needs no root search.
+    // `checked` = false skips the checks (3.3)-(3.4) (their fields are then zero): for the
+    // coarse level of an extrapolation, whose distributions are not reported.
+    tangential_solution at_stick_end(double c0, bool checked = true);
+    double load(double c0);  // Q(c0) alone, Q >= 0 branch
+
+    double G(double r);                                          // (3.25)
+    std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
+    double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
+    double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
+    // v at many points of the slip zone (any order), in one sweep.
+    std::vector<double> slip_velocity(const tangential_solution& s, const std::vector<double>& r);
+
+    const normal_solution& normal() const { return normal_; }
+
+private:
+    tangential_solution solve_system(double c0);  // |Q| problem at c0 in (-1, 1]
+    tangential_solution full_stick();
+    tangential_solution gross_sliding();
+    tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
+    double q0(const tangential_solution& s, double r);  // corrective traction for |Q|
+    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
+    traction_checks check(const tangential_solution& s);
+
+    const normal_solution& normal_;
+    kernel k1_, dk_;  // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
+    double f_;
+    int n_;
+    bool carter_;  // smooth in both directions, closed form allowed
+    matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
+    dense_system system_;
+    gauss_legendre moments_rule_;  // for kernel_moments of n coefficients, built once
+    kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
+};
+
+}  // namespace roughroll

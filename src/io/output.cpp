@@ -1,0 +1,136 @@
+#include "roughroll/io/output.hpp"
+
+
+#include "roughroll/model/carter.hpp"
+
+namespace roughroll {
+
+namespace {
+nlohmann::json term_json(const roughness_term& t) {
+    if (!t.present()) return nullptr;
+    return {{"T", t.T}, {"A", t.A}};
+}
+
+nlohmann::json cylinder_json(const cylinder_roughness& c) {
+    return {{"tangential", term_json(c.tangential)}, {"normal", term_json(c.normal)}};
+}
+
+std::string term_text(const roughness_term& t) {
+    return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
+}
+}  // namespace
+
+nlohmann::json to_json(const point_report& r) {
+    const auto& s = r.solution;
+    const carter_point smooth = carter(s.Q, s.f);
+    nlohmann::json checks = {
+        {"pressure_nonnegative", s.checks.pressure_holds},
+        {"stick_traction_bound_3_3", s.checks.stick_holds},
+        {"slip_velocity_positive_3_4", s.checks.slip_holds},
+        {"pressure_margin", s.checks.pressure_margin},
+        {"stick_margin", s.checks.stick_margin},
+        {"slip_margin", s.checks.slip_margin},
+    };
+    nlohmann::json estimate = nullptr;
+    if (r.estimate)
+        estimate = {{"hertz_load_ratio", r.estimate->lambda},
+                    {"c0", r.estimate->c0},
+                    {"xi", r.estimate->xi},
+                    {"against", r.estimate->against}};
+    nlohmann::json si = nullptr;
+    if (r.si)
+        si = {{"a_m", r.si->a},
+              {"a_hertz_m", r.si->a_hertz},
+              {"a_over_a_hertz", r.si->a / r.si->a_hertz},
+              {"c_m", r.si->c},
+              {"P_H_N_per_m", r.si->P_H},
+              {"P2_N_per_m", r.si->P2},
+              {"P1_N_per_m", r.si->P1},
+              {"xi1", r.si->xi1},
+              {"xi1_carter", r.si->xi1_carter},
+              {"p_centre_Pa", r.si->p_scale * r.normal.pressure(0.0)},
+              {"width_iterations", r.si->width_iterations},
+              {"roughness_at_a", {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
+                                  {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
+    return {
+        {"label", r.label},
+        {"si", si},
+        {"error_estimate", estimate},
+        {"Q", s.Q},
+        {"f", s.f},
+        {"c0", s.c0},
+        {"xi", s.xi},
+        {"hertz_load_ratio", r.normal.lambda},
+        {"gamma", r.normal.gamma},
+        {"n", r.normal.rule.n},
+        {"method", to_string(r.normal.how)},
+        {"seconds", r.seconds},
+        {"checks_hold", s.checks.hold()},
+        {"checks", checks},
+        {"c0_carter", smooth.c0},
+        {"xi_carter", smooth.xi},
+        {"brent_iterations", s.iterations},
+        {"rcond_normal", r.normal.rcond},
+        {"rcond_tangential", s.rcond},
+    };
+}
+
+void write_summary(std::ostream& out, const point_report& r) {
+    const auto& s = r.solution;
+    const carter_point smooth = carter(s.Q, s.f);
+    if (!r.label.empty()) out << r.label << "\n";
+    out << "  Q = P1/P2           " << shortest(s.Q) << "   (f = " << shortest(s.f) << ")\n"
+        << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
+        << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
+        << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"
+        << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
+        << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
+    if (r.estimate)
+        out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
+            << ", xi " << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
+    else
+        out << "  error estimate      unavailable (n/2 too coarse for the kernels, 2n above the largest n)\n";
+    out << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "
+        << shortest(s.checks.pressure_margin) << ", stick " << shortest(s.checks.stick_margin) << ", slip "
+        << shortest(s.checks.slip_margin) << ")\n"
+        << "  seconds             " << shortest(r.seconds) << "\n";
+    if (!r.si) return;
+    const si_point& p = *r.si;
+    out << "  SI units\n"
+        << "  half-width a        " << shortest(p.a) << " m   (Hertz a_H " << shortest(p.a_hertz) << " m, a/a_H = "
+        << shortest(p.a / p.a_hertz) << ", " << p.width_iterations << " Brent iterations)\n"
+        << "  stick zone end c    " << shortest(p.c) << " m\n"
+        << "  loads P2, P1        " << shortest(p.P2) << " N/m, " << shortest(p.P1) << " N/m\n"
+        << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"
+        << "  pressure at centre  " << shortest(p.p_scale * r.normal.pressure(0.0)) << " Pa\n"
+        << "  creep xi1           " << shortest(p.xi1) << "   (Carter, smooth: " << shortest(p.xi1_carter) << ")\n";
+    const auto cylinder = [&out](const char* name, const cylinder_roughness& c) {
+        out << "  " << name << " at a     tangential " << term_text(c.tangential) << "; normal " << term_text(c.normal)
+            << "\n";
+    };
+    cylinder("cylinder 1", p.surfaces.cylinder1);
+    cylinder("cylinder 2", p.surfaces.cylinder2);
+}
+
+void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {
+    out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
+           "Q_error_estimate"
+        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << "\n";
+    for (const auto& row : curve) {
+        const auto& s = row.solution;
+        out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
+            << shortest(s.xi / s.f) << ',' << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ','
+            << (s.checks.hold() ? 1 : 0) << ',';
+        if (row.estimate)
+            out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
+        else
+            out << ",,";
+        if (si) {
+            const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
+            out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
+        }
+        out << '\n';
+    }
+}
+
+}  // namespace roughroll

@@ -1,0 +1,128 @@
+#include "roughroll/io/profile_csv.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <optional>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "toml_input.hpp"
+
+namespace roughroll {
+namespace {
+
+std::string_view trim(std::string_view s) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+    while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+    return s;
+}
+
+// A whole field as a double, or nothing: from_chars is locale-independent, and "1.5x" or ""
+// must not read as 1.5 or 0.
+std::optional<double> number(std::string_view field) {
+    double x = 0.0;
+    const char* end = field.data() + field.size();
+    const std::from_chars_result r = std::from_chars(field.data(), end, x);
+    if (field.empty() || r.ec != std::errc() || r.ptr != end) return std::nullopt;
+    return x;
+}
+
+class line_parser {
+public:
+    line_parser(const std::string& source, double l) : source_(source), l_(l) {}
+
+    [[noreturn]] void fail(int line, const std::string& what) const {
+        throw input_error(one_line(source_ + ":" + std::to_string(line) + ": " + what));
+    }
+
+    void take(std::string_view raw, int line) {
+        if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+        const std::string_view text = trim(raw);
+        if (text.empty() || text.front() == '#') return;
+        const std::size_t comma = text.find(',');
+        const bool first = !seen_data_;
+        seen_data_ = true;
+        if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos) {
+            fail(line, "expected two comma-separated fields 'x1, h0', got '" + std::string(text) + "'");
+        }
+        const std::string_view f1 = trim(text.substr(0, comma)), f2 = trim(text.substr(comma + 1));
+        const std::optional<double> x = number(f1), h = number(f2);
+        if (first && f1 == "x1" && f2 == "h0") return;  // the optional header
+        if (!x || !h) {
+            const std::string_view bad = !x ? f1 : f2;
+            fail(line, std::string(!x ? "x1" : "h0") + " '" + std::string(bad) + "' is not a number" +
+                           (first ? " (the only header allowed is 'x1,h0')" : ""));
+        }
+        add(*x, *h, line);
+    }
+
+    profile_samples finish() {
+        const int n = static_cast<int>(samples_.x1.size());
+        if (n < min_profile_samples) {
+            throw input_error(one_line(source_ + ": a measured profile needs at least " +
+                                       std::to_string(min_profile_samples) + " samples over one period (got " +
+                                       std::to_string(n) + ")"));
+        }
+        return std::move(samples_);
+    }
+
+private:
+    void add(double x, double h, int line) {
+        if (!std::isfinite(x)) fail(line, "x1 = " + shortest(x) + " is not finite");
+        if (!std::isfinite(h)) fail(line, "h0 = " + shortest(h) + " is not finite");
+        if (closed_) fail(line, "a sample after the closing point x1 = l = " + shortest(l_));
+        if (samples_.x1.empty()) {
+            if (x != 0.0) fail(line, "the first sample must be at x1 = 0 (got x1 = " + shortest(x) + ")");
+        } else if (!(x > samples_.x1.back())) {
+            fail(line, "x1 = " + shortest(x) + " does not increase (the previous sample is at x1 = " +
+                           shortest(samples_.x1.back()) + ")");
+        }
+        if (x == l_) {
+            // The periodic closing point: allowed only as a repeat of the first sample.
+            if (h != samples_.h0.front()) {
+                fail(line, "the closing point x1 = l = " + shortest(l_) + " has h0 = " + shortest(h) +
+                               ", not the h0 = " + shortest(samples_.h0.front()) + " of x1 = 0 (the profile is periodic)");
+            }
+            closed_ = true;
+            return;
+        }
+        if (x > l_) fail(line, "x1 = " + shortest(x) + " is beyond the period l = " + shortest(l_));
+        samples_.x1.push_back(x);
+        samples_.h0.push_back(h);
+        samples_.lines.push_back(line);
+    }
+
+    const std::string& source_;
+    const double l_;
+    profile_samples samples_;
+    bool seen_data_ = false;
+    bool closed_ = false;
+};
+
+}  // namespace
+
+profile_samples parse_profile_csv(std::string_view text, const std::string& source, double l) {
+    if (!(std::isfinite(l) && l > 0.0)) {
+        throw input_error(one_line(source + ": the period l must be finite and > 0 (got " + shortest(l) + ")"));
+    }
+    // A UTF-8 byte-order mark, as spreadsheet programs write, is not part of the first field.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    line_parser parser(source, l);
+    int line = 0;
+    while (!text.empty()) {
+        ++line;
+        const std::size_t end = text.find('\n');
+        parser.take(text.substr(0, end), line);
+        text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+    }
+    profile_samples samples = parser.finish();
+    samples.source = source;
+    return samples;
+}
+
+profile_samples read_profile_csv(const std::string& path, double l) {
+    return parse_profile_csv(toml_input::read_text(path, "profile file"), path, l);
+}
+
+}  // namespace roughroll

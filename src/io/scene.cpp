@@ -1,0 +1,270 @@
+#include "roughroll/io/scene.hpp"
+#include "roughroll/base/text.hpp"
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <cmath>
+#include <cstdint>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/layer/roughness_parameters.hpp"
+#include "micro_geometry_table.hpp"
+#include "toml_input.hpp"
+
+namespace roughroll {
+namespace {
+
+using namespace toml_input;
+
+// Why a load Q cannot be solved for with friction f, or "" when it can. The text
+// follows the name of Q. |Q| > f exceeds the limiting friction: the cylinders
+// slide and the rolling-contact model does not apply. Written as !(|Q| <= f) so
+// that a NaN f (a scene built by hand) is refused too.
+std::string load_problem(double Q, double f) {
+    if (!std::isfinite(Q)) return "must be finite (got " + shortest(Q) + ")";
+    if (!(std::fabs(Q) <= f)) {
+        return "must satisfy |Q| <= f, but |Q| = " + shortest(std::fabs(Q)) + " exceeds f = " +
+               shortest(f) + ": the cylinders slide";
+    }
+    return {};
+}
+
+// The range is checked on the 64-bit TOML integer, before it is narrowed to int.
+int nodes_at(const toml::node& node, const std::string& source, const std::string& path) {
+    if (!node.is_integer()) wrong_type(node, "an integer", source, path);
+    const std::int64_t n = node.as_integer()->get();
+    if (n < min_nodes || n > max_nodes) {
+        fail(source, quoted(path) + " = " + std::to_string(n) + " is outside [" + std::to_string(min_nodes) +
+                         ", " + std::to_string(max_nodes) + "]");
+    }
+    return static_cast<int>(n);
+}
+
+method method_at(const toml::node& node, const std::string& source, const std::string& path) {
+    const std::string& name = string_at(node, source, path);
+    try {
+        return method_from_string(name);
+    } catch (const input_error& e) {
+        // method_from_string knows the names but not where the name was written.
+        fail(source, quoted(path) + ": " + e.what());
+    }
+}
+
+// Dimensionless T, A of (3.26), or for a physical scene also the stiffness k, t of (2.10).
+struct term_input {
+    roughness_term dimensionless;
+    std::optional<stiffness> dimensional;
+};
+
+// One direction of one cylinder; an absent table is a smooth surface (T = 0).
+term_input read_term(const toml::table& cylinder, std::string_view key, bool physical, const std::string& source,
+                     const std::string& cylinder_path) {
+    const std::string path = join(cylinder_path, key);
+    const toml::table* table = table_at(cylinder, key, source, path);
+    if (table == nullptr) return {};
+    const bool by_stiffness = table->contains("k") || table->contains("t");
+    if (by_stiffness && !physical) {
+        fail(source, "table " + quoted(path) +
+                         ": k and t (Pa/m, Pa m) need a physical scene (E, nu, R1, R2, P2); give T and A otherwise");
+    }
+    if (physical)
+        check_keys(*table, by_stiffness ? key_list{"k", "t"} : key_list{"T", "A", "k", "t"}, source, path);
+    else
+        check_keys(*table, {"T", "A"}, source, path);
+    // T alone or A alone is a half-written term; a default for the other would hide that.
+    const auto names = by_stiffness ? std::array<const char*, 2>{"k", "t"} : std::array<const char*, 2>{"T", "A"};
+    for (const char* name : names) {
+        if (!table->contains(name)) {
+            fail(source, "table " + quoted(path) + " needs both " + names[0] + " and " + names[1] + " (missing '" +
+                             name + "')");
+        }
+    }
+    term_input term;
+    if (by_stiffness) {
+        stiffness st;
+        st.k = bounded_number(*table->get("k"), lower_bound::non_negative, source, join(path, "k"));
+        const double t = number_at(*table->get("t"), source, join(path, "t"));
+        if (!(std::isfinite(t) && t > 0.0)) {
+            fail(source, quoted(join(path, "t")) + " must be finite and > 0 (got " + shortest(t) +
+                             "); the one-parameter model of [2], t -> 0, is method 'one-parameter', whose "
+                             "results do not depend on t");
+        }
+        st.t = t;
+        term.dimensional = st;
+        return term;
+    }
+    term.dimensionless.T = bounded_number(*table->get("T"), lower_bound::non_negative, source, join(path, "T"));
+    term.dimensionless.A = bounded_number(*table->get("A"), lower_bound::non_negative, source, join(path, "A"));
+    return term;
+}
+
+struct cylinder_input {
+    term_input tangential, normal;
+};
+
+// A cylinder's terms, or for a physical scene its micro-geometry: the layer of Sec. 2, whose
+// k, t of (2.11)-(2.14) replace both terms (roughness_parameters.hpp).
+cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool physical,
+                             const std::filesystem::path& base_dir, const std::string& source) {
+    const std::string path(key);
+    const toml::table* table = table_at(root, key, source, path);
+    if (table == nullptr) return {};
+    if (!physical) {
+        if (table->contains("micro_geometry"))
+            fail(source, "table " + quoted(join(path, "micro_geometry")) +
+                             " needs a physical scene (E, nu, R1, R2, P2): k and t are in SI units");
+        check_keys(*table, {"tangential", "normal"}, source, path);
+    } else {
+        check_keys(*table, {"tangential", "normal", "micro_geometry"}, source, path);
+    }
+    const std::string layer_path = join(path, "micro_geometry");
+    if (const toml::table* layer = table_at(*table, "micro_geometry", source, layer_path)) {
+        if (table->contains("tangential") || table->contains("normal"))
+            fail(source, "table " + quoted(layer_path) + " gives both directions of " + quoted(path) +
+                             ": leave out its 'tangential' and 'normal' tables");
+        const micro_geometry g = read_micro_geometry(*layer, source, layer_path, base_dir);
+        const roughness_parameters r = compute_roughness_parameters(g);
+        cylinder_input c;
+        c.tangential.dimensional = stiffness{r.k_tangential, r.t_tangential};
+        c.normal.dimensional = stiffness{r.k_normal, r.t_normal};
+        return c;
+    }
+    return {read_term(*table, "tangential", physical, source, path),
+            read_term(*table, "normal", physical, source, path)};
+}
+
+// A radius of a physical scene: > 0, and infinite for a plane.
+double radius_at(const toml::node& node, const std::string& source, const std::string& path) {
+    const double R = number_at(node, source, path);
+    if (!(R > 0.0)) fail(source, quoted(path) + " must be > 0 (got " + shortest(R) + "; inf is a plane)");
+    return R;
+}
+
+bool is_physical(const toml::table& root) {
+    for (const std::string_view key : {"E", "nu", "R1", "R2", "P2", "P1", "contact_width"})
+        if (root.contains(key)) return true;
+    return false;
+}
+
+// The materials, radii and loads of a physical scene (physical_scene.hpp); the surfaces
+// are filled in by the caller.
+physical_scene read_physical(const toml::table& root, double friction, const std::string& source) {
+    for (const char* key : {"E", "nu", "R1", "R2", "P2"}) {
+        if (!root.contains(key))
+            fail(source, std::string("a physical scene needs E, nu, R1, R2 and P2: missing '") + key + "'");
+    }
+    physical_scene p;
+    p.E = bounded_number(*root.get("E"), lower_bound::positive, source, "E");
+    p.nu = number_at(*root.get("nu"), source, "nu");
+    // (3.27) and (3.26) divide by 1 - nu and mu = E/(2(1 + nu)): -1 < nu <= 1/2 for an isotropic solid.
+    if (!(p.nu > -1.0 && p.nu <= 0.5)) fail(source, "'nu' must be in (-1, 0.5] (got " + shortest(p.nu) + ")");
+    p.R1 = radius_at(*root.get("R1"), source, "R1");
+    p.R2 = radius_at(*root.get("R2"), source, "R2");
+    if (std::isinf(p.R1) && std::isinf(p.R2)) fail(source, "'R1' and 'R2' are both infinite: two planes do not roll");
+    p.P2 = bounded_number(*root.get("P2"), lower_bound::positive, source, "P2");
+    if (const toml::node* width = root.get("contact_width")) {
+        const std::string& rule = string_at(*width, source, "contact_width");
+        if (rule == "given-load")
+            p.width = width_rule::given_load;
+        else if (rule == "hertz")
+            p.width = width_rule::hertz;
+        else
+            fail(source, "'contact_width' must be \"given-load\" or \"hertz\" (got \"" + rule + "\")");
+    }
+    if (const toml::node* load = root.get("P1")) {
+        if (root.contains("Q")) fail(source, "give 'P1' or 'Q', not both");
+        if (p.width == width_rule::hertz)
+            fail(source, "'P1' needs contact_width = \"given-load\": at the Hertz width the model carries P2/lambda, "
+                         "not P2; give Q = P1/P2 instead");
+        const double P1 = number_at(*load, source, "P1");
+        if (!std::isfinite(P1)) fail(source, "'P1' must be finite (got " + shortest(P1) + ")");
+        if (!(std::fabs(P1) <= friction * p.P2)) {
+            fail(source, "'P1' must satisfy |P1| <= f P2, but |P1| = " + shortest(std::fabs(P1)) + " N/m exceeds f P2 = " +
+                             shortest(friction * p.P2) + " N/m: the cylinders slide");
+        }
+        p.P1 = P1;
+    }
+    return p;
+}
+
+surface_stiffness stiffness_at_hertz(const physical_scene& p, const cylinder_input& c) {
+    // T, A in a physical scene are the paper's, at a = a_H(P2).
+    const double a_H = hertz_half_width(p, p.P2);
+    const auto one = [&](const term_input& t) {
+        return t.dimensional ? *t.dimensional : stiffness_of(p, t.dimensionless, a_H);
+    };
+    return {one(c.tangential), one(c.normal)};
+}
+
+cylinder_roughness dimensionless(const cylinder_input& c) {
+    return {c.tangential.dimensionless, c.normal.dimensionless};
+}
+
+solver_options read_solver(const toml::table& root, const std::string& source) {
+    solver_options options;
+    const toml::table* table = table_at(root, "solver", source, "solver");
+    if (table == nullptr) return options;
+    check_keys(*table, {"n", "method"}, source, "solver");
+    if (const toml::node* n = table->get("n")) options.n = nodes_at(*n, source, "solver.n");
+    if (const toml::node* how = table->get("method")) options.how = method_at(*how, source, "solver.method");
+    return options;
+}
+
+}  // namespace
+
+scene parse_scene(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
+    const toml::table root = parse_toml(text, source);
+    check_keys(root,
+               {"label", "friction", "Q", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
+                "contact_width"},
+               source, "");
+
+    scene s;
+    if (const toml::node* label = root.get("label")) s.label = string_at(*label, source, "label");
+
+    const toml::node* friction = root.get("friction");
+    if (friction == nullptr) fail(source, "missing key 'friction'");
+    s.friction = bounded_number(*friction, lower_bound::positive, source, "friction");
+
+    if (const toml::node* load = root.get("Q")) {
+        const double Q = number_at(*load, source, "Q");
+        const std::string problem = load_problem(Q, s.friction);
+        if (!problem.empty()) fail(source, "'Q' " + problem);
+        s.Q = Q;
+    }
+
+    const bool physical = is_physical(root);
+    const cylinder_input c1 = read_cylinder(root, "cylinder1", physical, base_dir, source);
+    const cylinder_input c2 = read_cylinder(root, "cylinder2", physical, base_dir, source);
+    if (physical) {
+        physical_scene p = read_physical(root, s.friction, source);
+        p.cylinder1 = stiffness_at_hertz(p, c1);
+        p.cylinder2 = stiffness_at_hertz(p, c2);
+        // |P1| <= f P2 was checked; the quotient may still round above f by an ulp.
+        if (p.P1) s.Q = std::clamp(*p.P1 / p.P2, -s.friction, s.friction);
+        s.surfaces = roughness_at(p, hertz_half_width(p, p.P2));  // until the width is known
+        s.physical = p;
+    } else {
+        s.surfaces = {dimensionless(c1), dimensionless(c2)};
+    }
+    s.solver = read_solver(root, source);
+    return s;
+}
+
+scene read_scene(const std::string& path) {
+    // A profile_csv named in the scene is relative to the scene's folder.
+    return parse_scene(read_text(path, "scene file"), path, std::filesystem::path(path).parent_path());
+}
+
+double load_of(const scene& s, std::optional<double> override) {
+    // The command line wins, so one scene file can be solved for several loads.
+    const std::optional<double> Q = override ? override : s.Q;
+    if (!Q) throw input_error("no load Q given: set Q in the scene or pass --Q");
+    const std::string problem = load_problem(*Q, s.friction);
+    if (!problem.empty()) throw input_error("Q " + problem);
+    return *Q;
+}
+
+}  // namespace roughroll

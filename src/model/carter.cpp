@@ -1,0 +1,16 @@
+#include "roughroll/model/carter.hpp"
+
+#include <cmath>
+
+#include <gsl/gsl_math.h>
+
+namespace roughroll {
+
+carter_point carter(double Q, double f) {
+    const double rho = std::sqrt(1.0 - std::fabs(Q) / f);  // (1 + c0)/2
+    // 1 - sqrt(1 - x) written as x/(1 + sqrt(1 - x)): no cancellation for small Q/f.
+    const double one_minus_rho = (std::fabs(Q) / f) / (1.0 + rho);
+    return {2.0 * rho - 1.0, std::copysign(M_2_PI * f * one_minus_rho, Q)};
+}
+
+}  // namespace roughroll

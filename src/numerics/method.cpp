@@ -1,0 +1,39 @@
+#include "roughroll/numerics/method.hpp"
+
+#include <ostream>
+
+#include "roughroll/base/error.hpp"
+
+namespace roughroll {
+
+std::string to_string(method m) {
+    switch (m) {
+        case method::paper: return "paper";
+        case method::product: return "product";
+        case method::extrapolated: return "extrapolated";
+        case method::one_parameter: return "one-parameter";
+    }
+    return "unknown";
+}
+
+int default_nodes(method m) {
+    switch (m) {
+        case method::paper: return 200;
+        case method::product: return 96;
+        case method::extrapolated: return 128;
+        case method::one_parameter: return 128;
+    }
+    return 0;
+}
+
+method method_from_string(const std::string& name) {
+    if (name == "paper") return method::paper;
+    if (name == "product") return method::product;
+    if (name == "extrapolated") return method::extrapolated;
+    if (name == "one-parameter") return method::one_parameter;
+    throw input_error("unknown method '" + name + "' (known: paper, product, extrapolated, one-parameter)");
+}
+
+std::ostream& operator<<(std::ostream& os, method m) { return os << to_string(m); }
+
+}  // namespace roughroll

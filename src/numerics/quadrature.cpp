@@ -1,0 +1,108 @@
+#include "roughroll/numerics/quadrature.hpp"
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+
+namespace roughroll {
+
+void check_node_count(int n) {
+    if (n < min_nodes || n > max_nodes) {
+        throw input_error("n = " + std::to_string(n) + " is outside the supported range [" +
+                          std::to_string(min_nodes) + ", " + std::to_string(max_nodes) + "]");
+    }
+}
+
+gauss_chebyshev::gauss_chebyshev(int n_) : n(n_) {
+    check_node_count(n);
+    nodes.resize(n);
+    weights.resize(n);
+    collocation.resize(n + 1);
+    const double h = M_PI / (n + 1);
+    for (int k = 1; k <= n; ++k) {
+        const double s = std::sin(k * h);
+        nodes[k - 1] = std::cos(k * h);
+        weights[k - 1] = h * s * s;
+    }
+    for (int m = 1; m <= n + 1; ++m) collocation[m - 1] = std::cos((2 * m - 1) * M_PI / (2.0 * n + 2.0));
+}
+
+namespace {
+struct fixed_deleter {
+    void operator()(gsl_integration_fixed_workspace* w) const { gsl_integration_fixed_free(w); }
+};
+}  // namespace
+
+gauss_legendre::gauss_legendre(int order) {
+    gsl_guard();
+    std::unique_ptr<gsl_integration_fixed_workspace, fixed_deleter> rule(
+        order > 0 ? gsl_integration_fixed_alloc(gsl_integration_fixed_legendre, static_cast<size_t>(order), -1.0, 1.0,
+                                                0.0, 0.0)
+                  : nullptr);
+    if (!rule) throw numerical_error("cannot build a Gauss-Legendre rule of order " + std::to_string(order));
+    const double* x = gsl_integration_fixed_nodes(rule.get());
+    const double* w = gsl_integration_fixed_weights(rule.get());
+    nodes.assign(x, x + order);
+    weights.assign(w, w + order);
+}
+
+
+std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values) {
+    // b_j = (2/pi) sum_k w_k phi_k U_j(eta_k), with w_k U_j(eta_k) = h sin(t_k) sin((j+1) t_k),
+    // h = pi/(n+1): sin((j+1) t_k) by the recurrence s_{j+1} = 2 cos(t_k) s_j - s_{j-1}.
+    const int n = rule.n;
+    const double h = M_PI / (n + 1);
+    std::vector<double> b(n, 0.0);
+    for (int k = 0; k < n; ++k) {
+        const double t = (k + 1) * h, sin_t = std::sin(t), two_cos = 2.0 * rule.nodes[k];
+        const double scale = M_2_PI * h * sin_t * values[k];
+        double s_prev = 0.0, s = sin_t;
+        for (int j = 0; j < n; ++j) {
+            b[j] += scale * s;
+            const double next = two_cos * s - s_prev;
+            s_prev = s;
+            s = next;
+        }
+    }
+    return b;
+}
+
+double u_series(const std::vector<double>& b, double x) {
+    // Clenshaw: y_j = b_j + 2x y_{j+1} - y_{j+2}; U-series sum is y_0.
+    double y1 = 0.0, y2 = 0.0;
+    for (auto j = b.size(); j-- > 0;) {
+        const double y0 = b[j] + 2.0 * x * y1 - y2;
+        y2 = y1;
+        y1 = y0;
+    }
+    return y1;
+}
+
+double cauchy_u_series(const std::vector<double>& b, double x) {
+    double sum = 0.0;
+    if (std::fabs(x) < 1.0) {
+        // T_{j+1}(x) by the three-term recurrence, stable on [-1, 1].
+        double t_prev = 1.0, t = x;  // T_0, T_1
+        for (double bj : b) {
+            sum += bj * t;
+            const double t_next = 2.0 * x * t - t_prev;
+            t_prev = t;
+            t = t_next;
+        }
+    } else {
+        const double z = x - std::copysign(std::sqrt(x * x - 1.0), x);
+        double zp = z;
+        for (double bj : b) {
+            sum += bj * zp;
+            zp *= z;
+        }
+    }
+    return -sum;
+}
+
+}  // namespace roughroll

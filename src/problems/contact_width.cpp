@@ -1,0 +1,95 @@
+#include "roughroll/problems/contact_width.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/numerics/root_search.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr double width_step = 1.25;  // bracket expansion factor of the width search
+constexpr int max_width_steps = 60;  // 1.25^60 = 6.5e5 a_H: far beyond any physical width
+constexpr int max_width_iterations = 100;
+constexpr double max_width_over_radius = 0.1;  // a/R above which (3.7)'s half-spaces are refused
+
+// "contact width search at a = ... m (a/a_H = ...)": where a failure of the normal problem
+// happened, so that its advice (increase n, another method) can be judged.
+std::string at_width(double x, double a_H) {
+    return "contact width search at a = " + shortest(x * a_H) + " m (a/a_H = " + shortest(x) + "): ";
+}
+
+// (3.7) takes each cylinder as a half-space: the contact must be small against the radius.
+contact_width small_against_radius(const physical_scene& s, const contact_width& w) {
+    if (!(w.a <= max_width_over_radius * s.radius())) {
+        std::ostringstream msg;
+        msg << "the half-width a = " << shortest(w.a) << " m is " << shortest(w.a / s.radius())
+            << " of the radius R = " << shortest(s.radius())
+            << " m: the half-space theory of (3.7) needs a << R (refused above a/R = " << max_width_over_radius << ")";
+        throw input_error(msg.str());
+    }
+    return w;
+}
+
+contact_width search_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio) {
+    const double a_H = hertz_half_width(s, s.P2);
+    if (smooth(s)) return {a_H, a_H, 1.0, s.P2, 0};  // Hertz exactly, no kernel to solve
+
+    // In x = a/a_H the model carries P2 where lambda(x) = x^2 (the coefficient of (3.19)
+    // for a load normalised to P2; docs/formulation.md 2(j)). Failures name the trial width.
+    const auto F = [&](double x) {
+        try {
+            return load_ratio(roughness_at(s, x * a_H)) - x * x;
+        } catch (const resolution_error& e) {
+            throw resolution_error(at_width(x, a_H) + e.what());
+        } catch (const numerical_error& e) {
+            throw numerical_error(at_width(x, a_H) + e.what());
+        }
+    };
+    const double F1 = F(1.0);
+    const double lambda_H = F1 + 1.0;
+    if (s.width == width_rule::hertz) return {a_H, a_H, lambda_H, s.P2 / lambda_H, 0};
+    if (F1 == 0.0) return {a_H, a_H, 1.0, s.P2, 0};
+
+    // F(1) = lambda - 1 > 0 for the compliant roughness of E2. The first trial is
+    // x = sqrt(lambda(1)), where F <= 0 whenever lambda falls as a grows; then the bracket grows
+    // by 1.25 away from x = 1. A trial too wide for the discretisation (A grows with a) is
+    // halved back towards the last good point rather than refused.
+    const bool up = F1 > 0.0;
+    double near = 1.0;
+    double far = std::sqrt(lambda_H);
+    if (far == 1.0) far = up ? width_step : 1.0 / width_step;
+    for (int steps = 0;;) {
+        if (steps > max_width_steps) {
+            std::ostringstream msg;
+            msg << "contact width search: no half-width between a_H and " << shortest(far * a_H)
+                << " m carries the load P2 = " << shortest(s.P2) << " N/m";
+            throw numerical_error(msg.str());
+        }
+        double value = 0.0;
+        try {
+            value = F(far);
+        } catch (const resolution_error&) {
+            if (std::fabs(far - near) <= 1e-3 * near) throw;  // nothing resolvable beyond `near`
+            far = 0.5 * (near + far);
+            continue;
+        }
+        if ((value > 0.0) != up) break;  // a sign change between near and far
+        near = far;
+        far *= up ? width_step : 1.0 / width_step;
+        ++steps;
+    }
+    const double lo = std::min(near, far), hi = std::max(near, far);
+    const root x = brent_root(F, lo, hi, 0.0, 1e-12, max_width_iterations, "contact width search (Brent in a)");
+    return {x.x * a_H, a_H, x.x * x.x, s.P2, x.iterations};
+}
+}  // namespace
+
+contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio) {
+    return small_against_radius(s, search_width(s, load_ratio));
+}
+
+}  // namespace roughroll

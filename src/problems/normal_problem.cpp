@@ -1,0 +1,56 @@
+#include "roughroll/problems/normal_problem.hpp"
+
+#include <cmath>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/numerics/collocation.hpp"
+
+namespace roughroll {
+
+double normal_solution::pressure(double r) const {
+    if (std::fabs(r) >= 1.0) return 0.0;
+    return u_series(b, r) * std::sqrt(1.0 - r * r);
+}
+
+normal_solver::normal_solver(int n, method how)
+    : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
+
+normal_solution normal_solver::solve(const kernel& k2) {
+    check_resolution(k2, rule_, how_, "K2* (normal kernel)");
+    const int n = rule_.n;
+    gsl_matrix* a = system_.matrix();
+    gsl_vector* rhs = system_.rhs();
+    gsl_matrix_set_zero(a);
+    gsl_vector_set_zero(rhs);
+    // Rows 0..n: collocation (4.2). Columns 0..n-1: phi_k; n: gamma_0n; n+1: lambda.
+    add_cauchy_term(a, rule_);
+    add_kernel_term(a, k2, rule_, how_);
+    for (int m = 0; m <= n; ++m) {
+        gsl_matrix_set(a, m, n, 1.0);
+        gsl_matrix_set(a, m, n + 1, M_2_PI * rule_.collocation[m]);
+    }
+    // Row n+1: the load (4.3).
+    for (int k = 0; k < n; ++k) gsl_matrix_set(a, n + 1, k, rule_.weights[k]);
+    gsl_vector_set(rhs, n + 1, 1.0);
+
+    const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
+    normal_solution s{rule_, how_, std::vector<double>(n), {}, gsl_vector_get(x, n + 1), gsl_vector_get(x, n),
+                      system_.rcond()};
+    for (int k = 0; k < n; ++k) s.phi[k] = gsl_vector_get(x, k);
+    s.b = u_coefficients(rule_, s.phi);
+    return s;
+}
+
+normal_solution hertz_solution(int n, method how) {
+    gauss_chebyshev rule(n);
+    std::vector<double> phi(n, M_2_PI);
+    auto b = u_coefficients(rule, phi);
+    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0};
+}
+
+normal_solution solve_normal(const kernel& k2, int n, method how) {
+    return k2.empty() ? hertz_solution(n, how) : normal_solver(n, how).solve(k2);
+}
+
+}  // namespace roughroll

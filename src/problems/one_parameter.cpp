@@ -1,0 +1,263 @@
+#include "roughroll/problems/one_parameter.hpp"
+#include "roughroll/numerics/root_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <sstream>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4), as tangential_solver
+
+double grid_point(double lo, double hi, int i) {
+    const double x = std::cos(M_PI * (i + 0.5) / check_points);
+    return 0.5 * (lo + hi) + 0.5 * (hi - lo) * x;
+}
+
+// sum_j b_j T_{j+1}(x) for |x| <= 1, by Clenshaw's recurrence on a_k = b_{k-1}, a_0 = 0.
+// It is minus the Cauchy transform (1/pi) int sqrt(1-t^2) sum b_j U_j(t)/(t - x) dt
+// (docs/formulation.md Section 3), and defined at x = +-1 too.
+double t_series_shifted(const std::vector<double>& b, double x) {
+    double y1 = 0.0, y2 = 0.0;
+    for (std::size_t k = b.size(); k >= 1; --k) {
+        const double y = b[k - 1] + 2.0 * x * y1 - y2;
+        y2 = y1;
+        y1 = y;
+    }
+    return x * y1 - y2;
+}
+
+void add_compliance(double& eps, const roughness_term& term, const char* what) {
+    if (!term.present()) return;
+    if (!(std::isfinite(term.T) && std::isfinite(term.A) && term.T > 0.0 && term.A >= 0.0)) {
+        std::ostringstream msg;
+        msg << what << ": T = " << term.T << ", A = " << term.A << " must be finite, T > 0, A >= 0";
+        throw input_error(msg.str());
+    }
+    if (term.A == 0.0) {
+        std::ostringstream msg;
+        msg << what << ": T = " << term.T << " with A = 0 has no one-parameter limit (2T/A^2 is infinite: "
+            << "the kernel T sgn z does not decay); use a two-parameter method";
+        throw input_error(msg.str());
+    }
+    eps += 2.0 * term.T / (term.A * term.A);  // docs/formulation.md 2(c), "The one-parameter limit"
+    if (!std::isfinite(eps)) throw input_error(std::string(what) + ": the compliance 2T/A^2 is not finite");
+}
+}  // namespace
+
+compliances one_parameter_compliances(const roughness& r) {
+    compliances eps;
+    add_compliance(eps.tangential, r.cylinder1.tangential, "cylinder 1, tangential roughness");
+    add_compliance(eps.tangential, r.cylinder2.tangential, "cylinder 2, tangential roughness");
+    add_compliance(eps.normal, r.cylinder1.normal, "cylinder 1, normal roughness");
+    add_compliance(eps.normal, r.cylinder2.normal, "cylinder 2, normal roughness");
+    return eps;
+}
+
+normal_solution one_parameter_normal(double eps2, int n) {
+    if (!(std::isfinite(eps2) && eps2 >= 0.0)) throw input_error("the normal compliance eps2 must be finite and >= 0");
+    gsl_guard();
+    gauss_chebyshev rule(n);  // throws input_error outside [min_nodes, max_nodes]
+    // "The one-parameter limit", normal problem: gamma + H[p] + eps2 p' + (2/pi) lambda r = 0, with
+    // H[sin((j+1) theta)] = -cos((j+1) theta) and d/dr sin((j+1) theta) = -(j+1) cos((j+1) theta)/sin theta,
+    // multiplied by -sin theta at the points theta_m = (m + 1/2) pi/(n + 1) of (4.7):
+    //   sum_j b_j cos((j+1) theta_m) [sin theta_m + eps2 (j+1)] - gamma sin theta_m
+    //     - (2/pi) lambda cos theta_m sin theta_m = 0,     (pi/2) b_0 = int p = 1   (3.20).
+    // Columns 0..n-1: b_j; n: gamma_0n (zero by symmetry, (4.8)); n+1: lambda.
+    dense_system system(static_cast<std::size_t>(n) + 2);
+    gsl_matrix* a = system.matrix();
+    gsl_vector* rhs = system.rhs();
+    gsl_matrix_set_zero(a);
+    gsl_vector_set_zero(rhs);
+    for (int m = 0; m <= n; ++m) {
+        const double theta = (m + 0.5) * M_PI / (n + 1), sin_m = std::sin(theta);
+        for (int j = 0; j < n; ++j) gsl_matrix_set(a, m, j, std::cos((j + 1) * theta) * (sin_m + eps2 * (j + 1)));
+        gsl_matrix_set(a, m, n, -sin_m);
+        gsl_matrix_set(a, m, n + 1, -M_2_PI * rule.collocation[m] * sin_m);
+    }
+    gsl_matrix_set(a, n + 1, 0, M_PI_2);
+    gsl_vector_set(rhs, n + 1, 1.0);
+    const gsl_vector* x = system.solve("one-parameter normal problem");
+    std::vector<double> b(n);
+    for (int j = 0; j < n; ++j) b[j] = gsl_vector_get(x, j);
+    std::vector<double> phi(n);
+    for (int k = 0; k < n; ++k) phi[k] = u_series(b, rule.nodes[k]);
+    return normal_solution{std::move(rule), method::one_parameter, std::move(phi), std::move(b),
+                           gsl_vector_get(x, n + 1), gsl_vector_get(x, n), system.rcond()};
+}
+
+one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int n)
+    : eps_(eps),
+      f_(f),
+      n_(n),
+      tangential_system_((check_node_count(n), static_cast<std::size_t>(n) + 1)),
+      normal_(one_parameter_normal(eps.normal, n)) {
+    if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
+    if (!(std::isfinite(eps.tangential) && eps.tangential >= 0.0))
+        throw input_error("the tangential compliance eps1 must be finite and >= 0");
+    // The c0-independent parts of the stick equation's rows: sin phi_m and cos((j+1) phi_m).
+    sin_.resize(n_ + 1);
+    cos_.resize(static_cast<std::size_t>(n_ + 1) * n_);
+    for (int m = 0; m <= n_; ++m) {
+        const double phi = (m + 0.5) * M_PI / (n_ + 1);
+        sin_[m] = std::sin(phi);
+        for (int j = 0; j < n_; ++j) cos_[static_cast<std::size_t>(m) * n_ + j] = std::cos((j + 1) * phi);
+    }
+}
+
+double one_parameter_solver::pressure_slope(double r) const {
+    if (eps_.normal == 0.0) {
+        // Hertz, p = (2/pi) sqrt(1 - r^2) (the solver's b is (2/pi, 0, ...) exactly): infinite at +-1.
+        return -M_2_PI * r / std::sqrt(std::max(0.0, 1.0 - r * r));
+    }
+    // From the normal equation itself: eps2 p' = -(2/pi) lambda r - gamma - H[p], H[p] = -sum b_j T_{j+1}.
+    // Bounded on [-1, 1], and at the collocation points the derivative of the series exactly, so that
+    // the tangential problem at c0 = 1 is solved by q = -f p (Q(1) = 0 to rounding).
+    return (-M_2_PI * normal_.lambda * r - normal_.gamma + t_series_shifted(normal_.b, r)) / eps_.normal;
+}
+
+double one_parameter_solver::G(double r) const {
+    // (3.25) in the limit: int p (K2* - K1*)(eta - r) d eta -> (eps2 - eps1) p'(r).
+    const double linear = M_2_PI * normal_.lambda * r;
+    if (eps_.normal == eps_.tangential) return linear;
+    return linear + (eps_.normal - eps_.tangential) * pressure_slope(r);
+}
+
+tangential_solution one_parameter_solver::solve_system(double c0) {
+    // "The one-parameter limit", stick equation: H[q] + (eps1/rho) q'(t) = xi + f G(r(t)) with
+    // q = sum_j c_j sin((j+1) phi), t = cos phi, multiplied by -sin phi at the points of (4.7):
+    //   sum_j c_j cos((j+1) phi_m) [sin phi_m + (eps1/rho)(j+1)] + xi sin phi_m = -f G(r_m) sin phi_m.
+    const double rho = 0.5 * (1.0 + c0);
+    const double stiffness = eps_.tangential / rho;
+    gsl_matrix* a = tangential_system_.matrix();
+    gsl_vector* rhs = tangential_system_.rhs();
+    for (int m = 0; m <= n_; ++m) {
+        for (int j = 0; j < n_; ++j)
+            gsl_matrix_set(a, m, j, cos_[static_cast<std::size_t>(m) * n_ + j] * (sin_[m] + stiffness * (j + 1)));
+        gsl_matrix_set(a, m, n_, sin_[m]);
+        const double r = rho * (normal_.rule.collocation[m] + 1.0) - 1.0;  // E4
+        gsl_vector_set(rhs, m, -f_ * G(r) * sin_[m]);                       // E5
+    }
+    std::ostringstream context;
+    context.precision(17);
+    context << "one-parameter tangential problem at c0 = " << c0;
+    const gsl_vector* x = tangential_system_.solve(context.str());
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = c0;
+    s.xi = gsl_vector_get(x, n_);
+    s.sign = 1.0;
+    s.psi_b.resize(n_);
+    for (int j = 0; j < n_; ++j) s.psi_b[j] = gsl_vector_get(x, j);
+    s.Q = f_ + rho * M_PI_2 * s.psi_b[0];  // (3.22): rho int q = Q - f, int q = (pi/2) c_0
+    s.rcond = tangential_system_.rcond();
+    return s;
+}
+
+tangential_solution one_parameter_solver::full_stick() const {
+    // q = -f p, xi = 0 (H[p] + eps1 p' = -G on the whole contact), as for tangential_solver.
+    return full_stick_solution(f_, normal_.b);
+}
+
+tangential_solution one_parameter_solver::gross_sliding() const {
+    tangential_solution s = gross_sliding_solution(f_, G(-1.0));
+    if (!std::isfinite(s.xi))
+        throw input_error("one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
+                          "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1)");
+    return s;
+}
+
+tangential_solution one_parameter_solver::at_stick_end(double c0, bool checked) {
+    if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
+    tangential_solution s = c0 == 1.0 ? full_stick() : c0 == -1.0 ? gross_sliding() : solve_system(c0);
+    if (checked) s.checks = check(s);
+    return s;
+}
+
+double one_parameter_solver::load(double c0) {
+    if (c0 <= -1.0) return f_;
+    if (c0 >= 1.0) return 0.0;
+    return solve_system(c0).Q;
+}
+
+tangential_solution one_parameter_solver::solve(double Q, std::optional<double> guess) {
+    const double target = load_magnitude(Q, f_);
+    tangential_solution s;
+    if (target == 0.0) {
+        s = full_stick();
+    } else if (target == f_) {
+        s = gross_sliding();
+    } else {
+        check_load_resolvable(target, f_);
+        // Q(-1) = f > |Q| and, at c0 = 1, q = -f p gives Q = 0 < |Q|: Brent on [-1, 1], or on a
+        // bracket of half-width 1e-5 around `guess` when it brackets.
+        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
+                                           "one-parameter Brent search for c0");
+        s = solve_system(c0.x);
+        s.iterations = c0.iterations;
+    }
+    apply_load_sign(s, Q, "one-parameter tangential problem");
+    s.checks = check(s);
+    return s;
+}
+
+double one_parameter_solver::q0(const tangential_solution& s, double r) const {
+    const double rho = s.rho();
+    if (r <= -1.0 || r >= s.c0 || s.psi_b.empty()) return 0.0;
+    const double t = (r + 1.0 - rho) / rho;
+    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
+}
+
+double one_parameter_solver::traction(const tangential_solution& s, double r) const {
+    return s.sign * (f_ * normal_.pressure(r) + q0(s, r));  // (3.15)
+}
+
+double one_parameter_solver::slip_velocity_magnitude(const tangential_solution& s, double r) const {
+    // (3.6) in the limit: v = xi - (H[p1] + eps1 p1') with p1 = f p + q. On the slip zone p1 = f p, and
+    // H[p] + eps1 p' = -G by the normal equation, so v = xi + f G(r) - H[q](r), H[q] outside the stick
+    // interval (t > 1: cauchy_u_series, no principal value).
+    const double rho = s.rho();
+    const double hq = s.psi_b.empty() ? 0.0 : cauchy_u_series(s.psi_b, (r + 1.0 - rho) / rho);
+    return s.sign * s.xi + f_ * G(r) - hq;
+}
+
+double one_parameter_solver::slip_velocity(const tangential_solution& s, double r) const {
+    if (r <= s.c0) return 0.0;  // the stick zone (3.2)
+    return s.sign * slip_velocity_magnitude(s, std::min(r, 1.0));
+}
+
+traction_checks one_parameter_solver::check(const tangential_solution& s) const {
+    // As tangential_solver::check: p >= 0, (3.3) on the stick zone, (3.4) on the slip zone.
+    traction_checks c{};
+    c.pressure_margin = std::numeric_limits<double>::infinity();
+    c.stick_margin = std::numeric_limits<double>::infinity();
+    c.slip_margin = std::numeric_limits<double>::infinity();
+    auto lower = [](double& margin, double v) {
+        if (!(v >= margin)) margin = v;  // a NaN reads as a failed check
+    };
+    for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+    if (s.c0 > -1.0)
+        for (int i = 0; i < check_points; ++i) {
+            const double r = grid_point(-1.0, s.c0, i);
+            lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
+        }
+    if (s.c0 < 1.0)
+        for (int i = 0; i < check_points; ++i)
+            lower(c.slip_margin, slip_velocity_magnitude(s, grid_point(s.c0, 1.0, i)) / f_);
+    c.pressure_holds = c.pressure_margin >= 0.0;
+    c.stick_holds = c.stick_margin >= 0.0;
+    c.slip_holds = c.slip_margin > 0.0;
+    return c;
+}
+
+}  // namespace roughroll

@@ -1,0 +1,326 @@
+#include "roughroll/problems/tangential_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/model/carter.hpp"
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/kernel_sweep.hpp"
+#include "roughroll/numerics/root_search.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4)
+constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (see solve)
+
+// Interior Chebyshev points of (lo, hi), clustered towards the ends where the
+// tractions have their square-root behaviour; the ends themselves are excluded.
+double grid_point(double lo, double hi, int i) {
+    const double x = std::cos(M_PI * (i + 0.5) / check_points);
+    return 0.5 * (lo + hi) + 0.5 * (hi - lo) * x;
+}
+}  // namespace
+
+namespace {
+// The resolution check before any workspace is sized by the kernel's rate.
+const kernel& resolved(const kernel& k, const normal_solution& normal) {
+    check_resolution(k, normal.rule, normal.how, "K1* (tangential kernel)");
+    return k;
+}
+}  // namespace
+
+tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2,
+                                     double f, bool closed_form)
+    : normal_(normal),
+      k1_(resolved(k1, normal)),
+      dk_(k2.minus(k1)),
+      f_(f),
+      n_(normal.rule.n),
+      carter_(closed_form && k1.empty() && k2.empty()),
+      cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
+      system_(static_cast<std::size_t>(n_) + 1),
+      moments_rule_(kernel_moments::moments_rule(n_)),
+      k1_operator_(normal.rule, normal.how, k1.max_rate()) {
+    if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
+    gsl_matrix_set_zero(cauchy_.get());
+    add_cauchy_term(cauchy_.get(), normal_.rule);
+    // Column n: -xi moves to the left of (4.4).
+    for (int m = 0; m <= n_; ++m) gsl_matrix_set(cauchy_.get(), m, n_, -1.0);
+}
+
+std::vector<double> tangential_solver::G(const std::vector<double>& r) {
+    // (3.25): the kernel difference integrated on the interpolant of phi, split at its jump
+    // (E8), so that G, and with it Q(c0), is continuous in c0; one sweep for all the points.
+    std::vector<double> g(r.size());
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
+    if (dk_.empty()) return g;
+    const auto& b = normal_.b;
+    const auto integrals = sweep(dk_, r, 1, n_ - 1, [&b](double theta, double* out) {
+        *out = u_series(b, std::cos(theta));
+    });
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] += integrals[m];
+    return g;
+}
+
+double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
+
+tangential_solution tangential_solver::solve_system(double c0) {
+    const double rho = 0.5 * (1.0 + c0);
+    const auto& rule = normal_.rule;
+    gsl_matrix* a = system_.matrix();
+    gsl_vector* rhs = system_.rhs();
+    gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
+    k1_operator_.add_to(a, k1_.stretched(rho));  // E6
+    std::vector<double> r(n_ + 1);
+    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
+    const std::vector<double> g = G(r);
+    for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
+    std::ostringstream context;
+    context.precision(17);
+    context << "tangential problem (4.4) at c0 = " << c0;
+    const gsl_vector* x = system_.solve(context.str());
+
+    std::vector<double> psi(n_);
+    double load = 0.0;
+    for (int k = 0; k < n_; ++k) {
+        psi[k] = gsl_vector_get(x, k);
+        load += rule.weights[k] * psi[k];
+    }
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = c0;
+    s.xi = gsl_vector_get(x, n_);
+    s.Q = f_ + rho * load;  // (4.5)
+    s.sign = 1.0;
+    s.psi_b = u_coefficients(rule, psi);
+    s.rcond = system_.rcond();
+    return s;
+}
+
+tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b) {
+    // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
+    tangential_solution s{};
+    s.f = f;
+    s.c0 = 1.0;
+    s.sign = 1.0;
+    s.psi_b = pressure_b;
+    for (double& bj : s.psi_b) bj *= -f;
+    s.rcond = 1.0;
+    return s;
+}
+
+tangential_solution gross_sliding_solution(double f, double G_at_minus_one) {
+    // c0 = -1: no stick zone, q0 = 0, and the stick equation shrinks to the point
+    // r = -1, where xi + f G(-1) = 0.
+    tangential_solution s{};
+    s.f = f;
+    s.c0 = -1.0;
+    s.xi = -f * G_at_minus_one;
+    s.Q = f;
+    s.sign = 1.0;
+    s.rcond = 1.0;
+    return s;
+}
+
+tangential_solution tangential_solver::full_stick() { return full_stick_solution(f_, normal_.b); }
+
+tangential_solution tangential_solver::gross_sliding() { return gross_sliding_solution(f_, G(-1.0)); }
+
+tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
+    if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
+    tangential_solution s;
+    if (c0 == 1.0) {
+        s = full_stick();
+    } else if (carter_) {
+        // Smooth: Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho).
+        const double rho = 0.5 * (1.0 + c0);
+        s = carter_solution(f_ * (1.0 - rho) * (1.0 + rho), c0, M_2_PI * f_ * (1.0 - rho));
+    } else {
+        s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
+    }
+    if (checked) s.checks = check(s);
+    return s;
+}
+
+tangential_solution tangential_solver::carter_solution(double Q, double c0, double xi) {
+    // Smooth cylinders: q0 = -(2 f/pi) rho sqrt(1 - t^2), psi constant, no kernel, no solve.
+    tangential_solution s{};
+    s.f = f_;
+    s.c0 = c0;
+    s.xi = xi;
+    s.Q = Q;
+    s.sign = 1.0;
+    if (s.rho() > 0.0) s.psi_b = {-M_2_PI * f_ * s.rho()};  // no stick zone at |Q| = f
+    s.rcond = 1.0;
+    return s;
+}
+
+double tangential_solver::load(double c0) { return c0 <= -1.0 ? f_ : solve_system(c0).Q; }
+
+
+double load_magnitude(double Q, double f) {
+    if (!std::isfinite(Q)) throw input_error("Q must be finite");
+    const double magnitude = std::fabs(Q);
+    if (magnitude > f) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "|Q| = " << magnitude << " exceeds the friction coefficient f = " << f
+            << ": the cylinders slide (no rolling solution)";
+        throw input_error(msg.str());
+    }
+    return magnitude;
+}
+
+void check_load_resolvable(double magnitude, double f) {
+    if (magnitude >= min_load_ratio * f) return;
+    std::ostringstream msg;
+    msg << "|Q|/f = " << magnitude / f << " is below " << min_load_ratio
+        << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
+           "cannot be resolved (Q = 0 is solved exactly)";
+    throw resolution_error(msg.str());
+}
+
+void apply_load_sign(tangential_solution& s, double Q, const char* what) {
+    if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
+        throw numerical_error(std::string(what) + ": the creep is not finite (roughness parameters too large?)");
+    s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
+    if (Q < 0.0) {
+        s.sign = -1.0;
+        s.xi = -s.xi;
+    }
+}
+
+tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
+    const double target = load_magnitude(Q, f_);
+    tangential_solution s;
+    if (target == 0.0) {
+        s = full_stick();
+    } else if (carter_) {
+        const carter_point cp = carter(target, f_);
+        s = carter_solution(target, cp.c0, cp.xi);
+    } else if (target == f_) {
+        s = gross_sliding();
+    } else {
+        check_load_resolvable(target, f_);
+        // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
+        const auto full_stick_below = [this, target] {
+            const double at_full_stick = load(1.0);
+            if (!(at_full_stick < target)) {
+                std::ostringstream msg;
+                msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
+                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
+                throw resolution_error(msg.str());
+            }
+        };
+        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
+                                           "Brent search for c0", full_stick_below);
+        s = solve_system(c0.x);
+        s.iterations = c0.iterations;
+    }
+    apply_load_sign(s, Q, "tangential problem");
+    s.checks = check(s);
+    return s;
+}
+
+double tangential_solver::q0(const tangential_solution& s, double r) {
+    const double rho = s.rho();
+    if (r <= -1.0 || r >= s.c0 || s.psi_b.empty()) return 0.0;
+    const double t = (r + 1.0 - rho) / rho;
+    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
+}
+
+double tangential_solver::traction(const tangential_solution& s, double r) {
+    return s.sign * (f_ * normal_.pressure(r) + q0(s, r));  // (3.15)
+}
+
+namespace {
+// L1[q0] at a point of the slip zone, in the stick variable t > 1: the Cauchy transform of
+// the U-series, plus the kernel terms. Since tau - t < 0 on the whole stick zone, each term
+// T' exp(-A' (t - tau)) factors as exp(-A' (t - 1)) times its integral at t = 1, so the
+// kernel part costs one integral per term, whatever the number of points.
+class stick_operator_outside {
+public:
+    stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b, const gauss_legendre& rule)
+        : psi_b_(psi_b) {
+        for (const auto& term : stretched_k1.terms()) {
+            kernel_moments one(kernel({term}), static_cast<int>(psi_b.size()), rule);
+            at_one_.push_back({term.A, one.integrate(psi_b, 1.0)});
+        }
+    }
+
+    double operator()(double t) const {
+        double sum = cauchy_u_series(psi_b_, t);
+        for (const auto& [rate, value] : at_one_) sum += value * std::exp(-rate * (t - 1.0));
+        return sum;
+    }
+
+private:
+    const std::vector<double>& psi_b_;
+    std::vector<std::pair<double, double>> at_one_;  // (A', kernel integral at t = 1)
+};
+}  // namespace
+
+std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_solution& s,
+                                                               const std::vector<double>& r) {
+    // v = xi + f G(r) - L1[q0](r) for the |Q| problem, (3.6) with (3.15), at sorted points
+    // of the slip zone, where L1 is the stick-zone operator evaluated outside its interval.
+    std::vector<double> v = G(r);
+    const double rho = s.rho();
+    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, moments_rule_);
+    for (std::size_t i = 0; i < r.size(); ++i)
+        v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() ? 0.0 : lq0((r[i] + 1.0 - rho) / rho));
+    return v;
+}
+
+double tangential_solver::slip_velocity(const tangential_solution& s, double r) {
+    return slip_velocity(s, std::vector<double>{r}).front();
+}
+
+std::vector<double> tangential_solver::slip_velocity(const tangential_solution& s, const std::vector<double>& r) {
+    // The sweep wants points in descending order: sort a copy, keep the way back.
+    std::vector<std::size_t> order(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&r](std::size_t a, std::size_t b) { return r[a] > r[b]; });
+    std::vector<double> slip;
+    for (std::size_t i : order)
+        if (r[i] > s.c0) slip.push_back(std::min(r[i], 1.0));
+    const std::vector<double> v = slip_velocity_magnitude(s, slip);
+    std::vector<double> out(r.size(), 0.0);  // 0 on the stick zone (3.2)
+    for (std::size_t k = 0; k < slip.size(); ++k) out[order[k]] = s.sign * v[k];
+    return out;
+}
+
+traction_checks tangential_solver::check(const tangential_solution& s) {
+    traction_checks c{};
+    c.pressure_margin = std::numeric_limits<double>::infinity();
+    c.stick_margin = std::numeric_limits<double>::infinity();
+    c.slip_margin = std::numeric_limits<double>::infinity();
+    // A NaN margin must read as a failed check: min() would drop it.
+    auto lower = [](double& margin, double v) {
+        if (!(v >= margin)) margin = v;
+    };
+    for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+    if (s.c0 > -1.0) {
+        for (int i = 0; i < check_points; ++i) {
+            const double r = grid_point(-1.0, s.c0, i);
+            lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
+        }
+    }
+    if (s.c0 < 1.0) {
+        std::vector<double> grid(check_points);
+        for (int i = 0; i < check_points; ++i) grid[i] = grid_point(s.c0, 1.0, i);  // descending
+        for (double v : slip_velocity_magnitude(s, grid)) lower(c.slip_margin, v / f_);
+    }
+    c.pressure_holds = c.pressure_margin >= 0.0;
+    c.stick_holds = c.stick_margin >= 0.0;
+    c.slip_holds = c.slip_margin > 0.0;
+    return c;
+}
+
+}  // namespace roughroll
