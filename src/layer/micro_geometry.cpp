@@ -42,6 +42,26 @@ const char* to_string(decay_kind kind) {
     return "?";
 }
 
+const char* to_string(normal_factor kind) {
+    switch (kind) {
+        case normal_factor::derived: return "derived";
+        case normal_factor::printed: return "printed";
+    }
+    return "?";
+}
+
+// docs/formulation.md, E11: H_1 = 0 of (2.5) couples V_1 to W_2 through C_1122 = lambda0, and
+// R_2 of (2.3) couples them back through C_2211 = lambda0; eliminating V_1 leaves
+// (lambda0/(lambda0 + 2mu0))^2 in (2.12). The paper prints lambda0 + mu0 in its place.
+double normal_factor_ratio(normal_factor kind, double lambda0, double mu0) {
+    const double stiff = lambda0 + 2.0 * mu0;
+    switch (kind) {
+        case normal_factor::derived: return lambda0 / stiff;
+        case normal_factor::printed: return (lambda0 + mu0) / stiff;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
 // The decays of (2.6)-(2.8) in u = (H - x2)/H: each has dhat(1) = d(0) = 1, dhat(0) = d(H) = 0
 // and dhat_u > 0 (d' < 0) on (0, 1).
 double decay_value_from_top(decay_kind kind, double u) {

@@ -157,13 +157,14 @@ layer_integrals integrals_at(const micro_geometry& g, double x1) {
     return v;
 }
 
-roughness_parameters parameters_from_averages(const layer_averages& m, double lambda0, double mu0) {
+roughness_parameters parameters_from_averages(const layer_averages& m, double lambda0, double mu0,
+                                              normal_factor factor) {
     if (!(m.a_h1_squared > 0.0) || !std::isfinite(m.a_h1_squared)) {
         throw numerical_error("<a h_1^2> = " + shortest(m.a_h1_squared) +
                               " is not positive: (2.11)-(2.14) divide by it");
     }
     const double stiff = lambda0 + 2.0 * mu0;
-    const double ratio = (lambda0 + mu0) / stiff;
+    const double ratio = normal_factor_ratio(factor, lambda0, mu0);  // (2.12), E11
     // The correctors as x (x/q): <a h_1>^2 alone would leave double for H beyond about 1e+-154.
     const double corrector_k = m.a3_h1 * (m.a3_h1 / m.a_h1_squared);  // the corrector's share, (2.11)
     const double corrector_t = m.a_h1 * (m.a_h1 / m.a_h1_squared);    // (2.13)
@@ -228,7 +229,7 @@ roughness_parameters compute_roughness_parameters(const micro_geometry& g) {
     // The averages above are of the dimensionless integrals (a/H, a3, a33 H): back to SI.
     const double H = g.material.H;
     const layer_averages m{H * a.value, a3_h1.value, a33.value / H, H * a_h1.value, H * a_h1_squared.value};
-    roughness_parameters p = parameters_from_averages(m, g.material.lambda0, g.material.mu0);
+    roughness_parameters p = parameters_from_averages(m, g.material.lambda0, g.material.mu0, g.factor_2_12);
     p.averages_error = {H * a.error, a3_h1.error, a33.error / H, H * a_h1.error, H * a_h1_squared.error};
     p.evaluations = evaluations;
 
@@ -238,7 +239,7 @@ roughness_parameters compute_roughness_parameters(const micro_geometry& g) {
     const double dk = (2.0 * std::fabs(rk) * a3_h1.error + rk * rk * a_h1_squared.error) / H;  // 1/m
     const double dt = H * (a.error + 2.0 * std::fabs(rt) * a_h1.error + rt * rt * a_h1_squared.error);  // m
     const double stiff = g.material.lambda0 + 2.0 * g.material.mu0;
-    const double ratio = (g.material.lambda0 + g.material.mu0) / stiff;
+    const double ratio = normal_factor_ratio(g.factor_2_12, g.material.lambda0, g.material.mu0);  // (2.12), E11
     const double a33_error = a33.error / H;
     p.k_tangential_error = g.material.mu0 * (a33_error + dk);
     p.k_normal_error = stiff * (a33_error + ratio * ratio * dk);

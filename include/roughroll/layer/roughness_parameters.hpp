@@ -5,7 +5,9 @@
 //   a33(x1) = int (d')^2 dx2     (1/m)            (2.8)
 // and their averages <f> = (1/l) int_0^l f dx1 (2.9), with h_1 = dh/dx1, give
 //   k^(1) = mu0 [<a33> - <a3 h_1>^2/<a h_1^2>]                                          (2.11)
-//   k^(2) = (lambda0 + 2mu0) [<a33> - ((lambda0+mu0)/(lambda0+2mu0))^2 <a3 h_1>^2/<a h_1^2>]  (2.12)
+//   k^(2) = (lambda0 + 2mu0) [<a33> - (lambda0/(lambda0+2mu0))^2 <a3 h_1>^2/<a h_1^2>]  (2.12), E11
+//           (the paper prints ((lambda0+mu0)/(lambda0+2mu0))^2: normal_factor::printed,
+//            docs/formulation.md, erratum E11, derives the factor from (2.3)-(2.5))
 //   t^(1) = (lambda0 + 2mu0)/2 [<a> - <a h_1>^2/<a h_1^2>]                               (2.13)
 //   t^(2) = mu0/2 [<a> - <a h_1>^2/<a h_1^2>]                                            (2.14)
 //   alpha^(i) = sqrt(k^(i)/(2 t^(i)))                                                    (2.15)
@@ -67,9 +69,10 @@ constexpr double outer_tolerance = 1e-12;
 // (2.6)-(2.8) at x1 in SI units, by gsl_integration_qag (Gauss-Kronrod 21) over u in [0, u0].
 layer_integrals integrals_at(const micro_geometry& g, double x1);
 
-// (2.11)-(2.15) from averages (no quadrature): throws numerical_error when <a h_1^2> is not
-// positive or a k or t is not finite and > 0.
-roughness_parameters parameters_from_averages(const layer_averages& averages, double lambda0, double mu0);
+// (2.11)-(2.15) from averages (no quadrature), with the factor of (2.12) chosen by `factor`:
+// throws numerical_error when <a h_1^2> is not positive or a k or t is not finite and > 0.
+roughness_parameters parameters_from_averages(const layer_averages& averages, double lambda0, double mu0,
+                                              normal_factor factor = normal_factor::derived);
 
 // The whole computation: check_conditions, the averages by nested qag (the outer one split at
 // profile_function::breakpoints), then (2.11)-(2.15) with their error estimates.
