@@ -12,6 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/layer/micro_geometry.hpp"
+#include "roughroll/layer/piecewise_averages.hpp"
 #include "roughroll/io/profile_csv.hpp"
 
 namespace roughroll {
@@ -480,6 +481,96 @@ TEST(RoughnessParameters, ProfileReachingTowardsTheTop) {
     EXPECT_TRUE(same_parameters(m, expected_parameters(flat), 1e-12));
     EXPECT_TRUE(close(m.k_tangential, mu0 * u0 / H, 1e-12));
     EXPECT_TRUE(close(m.t_tangential, (lambda0 + 2.0 * mu0) * H * std::pow(u0, 3) / 6.0, 1e-12));
+}
+
+// A ground-like profile of 64 samples over l, as data/profiles/ground.csv (6 harmonics,
+// amplitude ~ 1/k, fixed phases), lifted to a minimum sample of 0.5 um.
+std::string ground_like_csv(int N) {
+    std::vector<double> h(N);
+    for (int j = 0; j < N; ++j) {
+        for (int k = 1; k <= 6; ++k) h[j] += 0.6e-6 / k * std::sin(2.0 * M_PI * k * j / N + 1.3 * k * k);
+    }
+    const double lift = 0.5e-6 - *std::min_element(h.begin(), h.end());
+    std::string text = "x1,h0\n";
+    char line[96];
+    for (int j = 0; j < N; ++j) {
+        std::snprintf(line, sizeof line, "%.17g,%.17g\n", l * j / N, h[j] + lift);
+        text += line;
+    }
+    return text;
+}
+
+// |x - e| <= tolerance * scale, and the estimate `error` covers |x - e| up to the same rounding.
+::testing::AssertionResult agrees(const char* name, double x, double e, double scale, double error, double tolerance) {
+    if (!(std::fabs(x - e) <= tolerance * scale))
+        return ::testing::AssertionFailure() << name << ": " << x << " vs " << e << " (relative to " << scale << ": "
+                                             << (x - e) / scale << ")";
+    if (!(std::fabs(x - e) <= error + 1e-15 * scale))
+        return ::testing::AssertionFailure() << name << ": difference " << x - e << " beyond the estimate " << error;
+    return ::testing::AssertionSuccess();
+}
+
+// The piecewise rule (K15 per knot interval, closed-form inner integrals) against the nested
+// adaptive quadrature (qag over x1, qag over the depth at every x1) on a 64-sample profile,
+// every decay: the five averages to 1e-12 (the signed ones relative to their Cauchy-Schwarz
+// bounds), k, t, alpha to 1e-12, each difference within the piecewise rule's error estimate.
+TEST(PiecewiseAverages, AgreesWithAdaptiveOn64Samples) {
+    for (const decay_kind decay : {decay_kind::linear, decay_kind::quadratic, decay_kind::cosine}) {
+        SCOPED_TRACE(to_string(decay));
+        micro_geometry g = geometry(profile_kind::measured, 0.0, decay);
+        g.bottom.measured = parse_profile_csv(ground_like_csv(64), "ground-like.csv", l);
+        const roughness_parameters p = compute_roughness_parameters(g, averages_rule::piecewise);
+        const roughness_parameters q = compute_roughness_parameters(g, averages_rule::adaptive);
+        EXPECT_EQ(p.evaluations, 64 * 15);
+        const layer_averages &m = p.averages, &e = p.averages_error, &r = q.averages;
+        EXPECT_TRUE(agrees("<a>", m.a, r.a, r.a, e.a, 1e-12));
+        EXPECT_TRUE(agrees("<a33>", m.a33, r.a33, r.a33, e.a33, 1e-12));
+        EXPECT_TRUE(agrees("<a h_1^2>", m.a_h1_squared, r.a_h1_squared, r.a_h1_squared, e.a_h1_squared, 1e-12));
+        EXPECT_TRUE(agrees("<a h_1>", m.a_h1, r.a_h1, std::sqrt(r.a * r.a_h1_squared), e.a_h1, 1e-12));
+        EXPECT_TRUE(agrees("<a3 h_1>", m.a3_h1, r.a3_h1, std::sqrt(r.a33 * r.a_h1_squared), e.a3_h1, 1e-12));
+        EXPECT_TRUE(same_parameters(p, q, 1e-12));
+        // The estimates are honest but not absurd: below 1e-12 of the values.
+        EXPECT_LT(p.k_normal_error, 1e-12 * p.k_normal);
+        EXPECT_LT(p.t_tangential_error, 1e-12 * p.t_tangential);
+        // The default for a measured profile is the piecewise rule.
+        EXPECT_EQ(compute_roughness_parameters(g).evaluations, p.evaluations);
+    }
+}
+
+// The piecewise rule on the built-in profiles too (one piece cut into min_pieces): the sine
+// profile's closed forms with the linear decay to 1e-12, up to delta = 0.999999 H, and the
+// sawtooth's.
+TEST(PiecewiseAverages, BuiltInProfilesClosedForms) {
+    for (const double delta : {0.1 * H, 0.5 * H, 0.9 * H, 0.999999 * H}) {
+        SCOPED_TRACE(delta);
+        const roughness_parameters p =
+            compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear), averages_rule::piecewise);
+        EXPECT_EQ(p.evaluations, min_pieces * 15);
+        EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), 1e-12));
+    }
+    const double delta = 0.8 * H, eps = delta / H;
+    const roughness_parameters p =
+        compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear), averages_rule::piecewise);
+    EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, 1e-12));
+    EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), 1e-12));
+}
+
+// The closed-form inner integrals against GSL's adaptive quadrature of (2.6)-(2.8) in u
+// (integrals_at), from the whole layer down to a sliver u0 = 1e-6 thick, every decay: 1e-13.
+TEST(PiecewiseAverages, ClosedFormLayerIntegralsAgainstQuadrature) {
+    for (const decay_kind decay : {decay_kind::linear, decay_kind::quadratic, decay_kind::cosine}) {
+        SCOPED_TRACE(to_string(decay));
+        for (const double delta : {0.3 * H, 0.6 * H, 0.99 * H, 0.999999 * H}) {
+            const micro_geometry g = geometry(profile_kind::sine, delta, decay);
+            for (const double x1 : {0.0, 0.1 * l, 0.25 * l, 0.37 * l, 0.5 * l}) {
+                const double h0 = 0.5 * delta * (1.0 - std::cos(2.0 * M_PI * x1 / l));
+                const layer_integrals q = integrals_at(g, x1), c = closed_form_layer_integrals(decay, (H - h0) / H);
+                EXPECT_TRUE(close(H * c.a, q.a, 1e-13)) << "delta " << delta << ", x1 " << x1;
+                EXPECT_TRUE(close(c.a3, q.a3, 1e-13)) << "delta " << delta << ", x1 " << x1;
+                EXPECT_TRUE(close(c.a33 / H, q.a33, 1e-13)) << "delta " << delta << ", x1 " << x1;
+            }
+        }
+    }
 }
 
 // Cauchy-Schwarz makes k, t >= 0; averages that make one 0 are refused, as is <a h_1^2> = 0.

@@ -130,6 +130,19 @@ public:
     extreme minimum() const;
     extreme maximum() const;
 
+    // A measured profile's spline on its knot interval [x0, x0 + width] (knot intervals
+    // i = 0 .. breakpoints().size() - 2) as the cubic in t = (x1 - x0)/width in [0, 1]
+    //   h0 = c[0] + t (c[1] + t (c[2] + t c[3])),
+    // from the knot values and the spline's slopes at both knots (Hermite form: a cubic is
+    // fixed by them, so this is the spline's own piece, up to rounding). Measured profiles only
+    // (numerical_error otherwise): the averages integrate piece by piece (piecewise_averages.hpp).
+    struct cubic {
+        double x0, width;
+        double c[4];
+        double operator()(double t) const { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); }
+    };
+    cubic piece(std::size_t i) const;
+
     struct spline;  // the GSL spline of a measured profile (opaque)
 
 private:
