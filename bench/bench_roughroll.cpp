@@ -1,7 +1,13 @@
 // Timings of the solvers on Fig. 2's moderate scene (T = A = 0.5, equal kernels) and on
 // an unequal-kernel scene. Run: build/bench/bench_roughroll --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true   (medians are what docs/performance.md quotes)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -10,6 +16,7 @@
 #include "roughroll/io/micro_geometry_input.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/layer/roughness_parameters.hpp"
+#include "roughroll/io/profile_csv.hpp"
 #include "roughroll/io/scene.hpp"
 
 using namespace roughroll;
@@ -142,7 +149,65 @@ void bm_figure(benchmark::State& state) {
         }
     }
 }
+
+// ---- Measured profiles of real size (issue 11, section 3; docs/performance.md, "Roughness
+// parameters of measured profiles"). A seeded random smooth profile: 40 harmonics of one
+// period l = 200 um, amplitude 0.5 um/k, phases from std::mt19937_64(11), lifted to a minimum
+// of 0.1 um; N samples written as CSV text in memory.
+std::string measured_profile_csv(int64_t samples) {
+    const double l = 2e-4;
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> phase(0.0, 2.0 * M_PI);
+    std::vector<double> phases(40);
+    for (double& p : phases) p = phase(random);
+    std::vector<double> h(static_cast<std::size_t>(samples));
+    for (int64_t j = 0; j < samples; ++j) {
+        for (int k = 1; k <= 40; ++k) h[j] += 0.5e-6 / k * std::sin(2.0 * M_PI * k * j / samples + phases[k - 1]);
+    }
+    const double lift = 1e-7 - *std::min_element(h.begin(), h.end());
+    std::string text = "x1,h0\n";
+    char line[64];
+    for (int64_t j = 0; j < samples; ++j) {
+        std::snprintf(line, sizeof line, "%.12e,%.12e\n", l * j / samples, h[j] + lift);
+        text += line;
+    }
+    return text;
+}
+
+micro_geometry measured_layer(const std::string& csv) {
+    micro_geometry g;
+    g.material = {1.15e11, 7.7e10, 1e-5, 2e-4};
+    g.bottom.kind = profile_kind::measured;
+    g.bottom.measured = parse_profile_csv(csv, "bench.csv", g.material.l);
+    g.decay = decay_kind::cosine;
+    return g;
+}
+
+// `roughroll roughness` on a measured profile of N samples, from the CSV text: parsing,
+// the conditions (samples and spline), the averages (arg 2: 0 the piecewise rule, the default;
+// 1 the nested adaptive one), (2.11)-(2.15).
+void bm_measured_roughness(benchmark::State& state) {
+    const std::string csv = measured_profile_csv(state.range(0));
+    const averages_rule rule = state.range(1) == 0 ? averages_rule::piecewise : averages_rule::adaptive;
+    for (auto _ : state) {
+        const micro_geometry g = measured_layer(csv);
+        check_conditions(g);
+        benchmark::DoNotOptimize(compute_roughness_parameters(g, rule).k_normal);
+    }
+    state.counters["samples"] = static_cast<double>(state.range(0));
+}
+
+// Parsing the profile CSV alone (profile_csv.hpp).
+void bm_profile_csv(benchmark::State& state) {
+    const std::string csv = measured_profile_csv(state.range(0));
+    for (auto _ : state) benchmark::DoNotOptimize(parse_profile_csv(csv, "bench.csv", 2e-4).x1.size());
+}
 }  // namespace
+
+BENCHMARK(bm_measured_roughness)->ArgsProduct({{1000, 10000, 100000, 1000000}, {0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_measured_roughness)->ArgsProduct({{1000, 10000}, {1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_profile_csv)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+// ---- end of the measured-profile block
 
 BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_point)->ArgsProduct({{0, 1, 2}, {64, 96, 128, 200}})->Unit(benchmark::kMillisecond);

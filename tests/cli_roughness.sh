@@ -58,7 +58,7 @@ if "$bin" roughness "$data/roughness/sine-linear.toml" --json >"$dir/sine.json" 
         pi = atan2(0, -1); H = 1e-5; B = 4e-6 / (2 * H); A = 1 - B; mu = 7.7e10; lam = 1.15e11
         a = H / 3 * (A^3 + 1.5 * A * B^2); ah = H / 3 * 2 * pi * (1.5 * A^2 * B + 0.375 * B^3)
         ahh = H / 3 * 4 * pi^2 * (0.5 * A^3 + 1.125 * A * B^2); a3h = -pi * A * B; a33 = A / H
-        c = (lam + mu) / (lam + 2 * mu)
+        c = lam / (lam + 2 * mu)   # the derived factor of (2.12), docs/formulation.md E11
         k1 = mu * (a33 - a3h^2 / ahh); k2 = (lam + 2 * mu) * (a33 - c^2 * a3h^2 / ahh)
         t1 = (lam + 2 * mu) / 2 * (a - ah^2 / ahh); t2 = mu / 2 * (a - ah^2 / ahh)
         printf "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", k1, k2, t1, t2, sqrt(k1 / (2 * t1)), sqrt(k2 / (2 * t2)), a3h, ahh }')
@@ -88,6 +88,39 @@ if "$bin" roughness "$data/roughness/ground-measured.toml" >"$dir/ground.txt" 2>
 else
     fail "ground-measured: status $?: $(cat "$dir/err")"
 fi
+
+# The factor of (2.12) (docs/formulation.md, E11) on every spec of data/roughness/: the default
+# is "derived"; with factor_2_12 = "printed" only k_normal and alpha_normal change, and by exactly
+#   k_derived - k_printed = mu0 (2 lambda0 + mu0)/(lambda0 + 2 mu0) <a3 h_1>^2/<a h_1^2>
+# (to 1e-10), which is 0 for the flat profile. The relative change is printed.
+for name in flat-linear sine-linear ground-measured; do
+    src=$data/roughness/$name.toml
+    mkdir -p "$dir/factor"
+    # The same spec asking for the printed factor, its profile_csv made absolute.
+    sed "s|^profile_csv = \"\(.*\)\"|profile_csv = \"$data/roughness/\1\"|" "$src" >"$dir/factor/$name.toml"
+    printf 'factor_2_12 = "printed"\n' >>"$dir/factor/$name.toml"
+    if "$bin" roughness "$src" --json >"$dir/factor/derived.json" 2>"$dir/err" &&
+        "$bin" roughness "$dir/factor/$name.toml" --json >"$dir/factor/printed.json" 2>"$dir/err"; then
+        d=$dir/factor/derived.json
+        p=$dir/factor/printed.json
+        grep -q '"factor_2_12": "derived"' "$d" || fail "$name: JSON does not say factor_2_12 derived"
+        grep -q '"factor_2_12": "printed"' "$p" || fail "$name: JSON does not say factor_2_12 printed"
+        for key in k_tangential t_tangential t_normal; do
+            [ "$(value "$d" $key)" = "$(value "$p" $key)" ] || fail "$name: $key changed with the factor of (2.12)"
+        done
+        kd=$(value "$d" k_normal)
+        kp=$(value "$p" k_normal)
+        shift=$(awk -v a3h="$(value "$d" a3_h1)" -v ahh="$(value "$d" a_h1_squared)" \
+            'BEGIN { lam = 1.15e11; mu = 7.7e10; printf "%.17g", mu * (2 * lam + mu) / (lam + 2 * mu) * a3h^2 / ahh }')
+        if awk -v kd="$kd" -v kp="$kp" -v s="$shift" 'BEGIN { d = (kd - kp) - s; exit !(kd != "" && kp != "" && d <= 1e-10 * kd && d >= -1e-10 * kd) }'; then
+            echo "ok   $name: k_normal derived $kd, printed $kp Pa/m ($(awk -v kd="$kd" -v kp="$kp" 'BEGIN { printf "%+.3f %%", 100 * (kd / kp - 1) }'))"
+        else
+            fail "$name: k_normal derived $kd - printed $kp is not $shift"
+        fi
+    else
+        fail "$name with factor_2_12: status $?: $(cat "$dir/err")"
+    fi
+done
 
 # Bad input. expect NAME KEYWORD -- ARGS...: exit 2, one stderr line containing KEYWORD, empty stdout.
 source "$(dirname "$0")/cli_expect.sh"
@@ -133,6 +166,7 @@ spec profilename "$(change 's/^profile = .*/profile = "wavy"/')"
 spec decayname "$(change 's/^decay = .*/decay = "exponential"/')"
 spec decaymissing "$(change '/^decay/d')"
 spec shapename "$(printf '%s\nmicro_shape = "square"' "$good")"
+spec factorname "$(printf '%s\nfactor_2_12 = "paper"' "$good")"
 spec csvforsine "$(printf '%s\nprofile_csv = "p.csv"' "$good")"
 spec csvmissingkey "$(change 's/^profile = .*/profile = "measured"/; /^delta/d')"
 csv csvnofile ''
@@ -191,6 +225,7 @@ expect profile-unknown "'profile' must be one of" -- roughness "$dir/profilename
 expect decay-unknown "'decay' must be one of" -- roughness "$dir/decayname.toml"
 expect decay-missing "missing key 'decay'" -- roughness "$dir/decaymissing.toml"
 expect micro-shape-unknown "'micro_shape' must be one of" -- roughness "$dir/shapename.toml"
+expect factor-unknown "'factor_2_12' must be one of \"derived\", \"printed\" (got \"paper\")" -- roughness "$dir/factorname.toml"
 expect csv-for-sine "'profile_csv' is not used" -- roughness "$dir/csvforsine.toml"
 expect csv-key-missing "missing key 'profile_csv'" -- roughness "$dir/csvmissingkey.toml"
 expect csv-missing-file "cannot read profile file" -- roughness "$dir/csvnofile/spec.toml"

@@ -89,6 +89,21 @@ TEST(MicroGeometryInput, GoodSpec) {
     EXPECT_EQ(parse_roughness_spec(with("decay", "decay = \"quadratic\""), source, ".").decay, decay_kind::quadratic);
 }
 
+// The factor of (2.12) (docs/formulation.md, E11): the derived one unless the spec asks for the
+// paper's printed one; any other value or type is refused, naming the key.
+TEST(MicroGeometryInput, FactorOf2_12) {
+    EXPECT_EQ(parse_roughness_spec(good, source, ".").factor_2_12, normal_factor::derived);
+    EXPECT_EQ(parse_roughness_spec(good + "factor_2_12 = \"derived\"\n", source, ".").factor_2_12, normal_factor::derived);
+    EXPECT_EQ(parse_roughness_spec(good + "factor_2_12 = \"printed\"\n", source, ".").factor_2_12, normal_factor::printed);
+    EXPECT_TRUE(rejects(good + "factor_2_12 = \"paper\"\n",
+                        {"'factor_2_12' must be one of \"derived\", \"printed\" (got \"paper\")"}));
+    EXPECT_TRUE(rejects(good + "factor_2_12 = 1\n", {"'factor_2_12' must be a string, not an integer"}));
+    const toml::table root = toml::parse("[cylinder1.micro_geometry]\n" + good + "factor_2_12 = \"printed\"\n");
+    const toml::table& table = *root["cylinder1"]["micro_geometry"].as_table();
+    EXPECT_EQ(read_micro_geometry(table, "scene.toml", "cylinder1.micro_geometry", ".").factor_2_12,
+              normal_factor::printed);
+}
+
 TEST(MicroGeometryInput, MissingKeys) {
     for (const char* key : {"lambda0", "mu0", "H", "l", "profile", "decay", "delta"}) {
         EXPECT_TRUE(rejects(with(key, ""), {"missing key '" + std::string(key) + "'"}));

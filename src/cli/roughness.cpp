@@ -36,6 +36,7 @@ void write_json(std::ostream& out, const std::string& spec, const micro_geometry
     j["profile"] = to_string(g.bottom.kind);
     j["micro_shape"] = to_string(g.shape);
     j["decay"] = to_string(g.decay);
+    j["factor_2_12"] = to_string(g.factor_2_12);
     j["k_tangential"] = p.k_tangential;
     j["k_normal"] = p.k_normal;
     j["t_tangential"] = p.t_tangential;
@@ -66,7 +67,8 @@ void write_text(std::ostream& out, const std::string& spec, const micro_geometry
         out << " (delta = " << number(g.bottom.delta) << " m)";
     if (g.bottom.kind == profile_kind::measured)
         out << " (" << g.bottom.measured.x1.size() << " samples from " << g.bottom.measured.source << ")";
-    out << ", micro-shape " << to_string(g.shape) << ", decay " << to_string(g.decay) << "\n\n";
+    out << ", micro-shape " << to_string(g.shape) << ", decay " << to_string(g.decay) << ", factor of (2.12) "
+        << to_string(g.factor_2_12) << "\n\n";
     const auto row = [&out](const char* name, const char* unit, double t, double te, double n, double ne) {
         char line[160];
         std::snprintf(line, sizeof line, "  %-6s %-5s  %20s +- %-8s  %20s +- %-8s\n", name, unit, number(t).c_str(),

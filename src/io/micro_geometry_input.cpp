@@ -41,13 +41,16 @@ constexpr std::pair<const char*, micro_shape_kind> shape_names[] = {{"sine", mic
 constexpr std::pair<const char*, decay_kind> decay_names[] = {{"linear", decay_kind::linear},
                                                               {"quadratic", decay_kind::quadratic},
                                                               {"cosine", decay_kind::cosine}};
+constexpr std::pair<const char*, normal_factor> factor_names[] = {{"derived", normal_factor::derived},
+                                                                  {"printed", normal_factor::printed}};
 
 }  // namespace
 
 micro_geometry read_micro_geometry(const toml::table& table, const std::string& source, const std::string& path,
                                    const std::filesystem::path& base_dir) {
-    check_keys(table, {"lambda0", "mu0", "H", "l", "profile", "delta", "profile_csv", "micro_shape", "decay"}, source,
-               path);
+    check_keys(table, {"lambda0", "mu0", "H", "l", "profile", "delta", "profile_csv", "micro_shape", "decay",
+                       "factor_2_12"},
+               source, path);
     const auto key = [&path](std::string_view name) { return join(path, name); };
     micro_geometry g;
     g.material.lambda0 = bounded_number(required(table, "lambda0", source, path), lower_bound::non_negative, source,
@@ -58,6 +61,8 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
     g.bottom.kind = choice(required(table, "profile", source, path), profile_names, source, key("profile"));
     g.decay = choice(required(table, "decay", source, path), decay_names, source, key("decay"));
     if (const toml::node* shape = table.get("micro_shape")) g.shape = choice(*shape, shape_names, source, key("micro_shape"));
+    if (const toml::node* factor = table.get("factor_2_12"))
+        g.factor_2_12 = choice(*factor, factor_names, source, key("factor_2_12"));
 
     const bool has_delta = g.bottom.kind == profile_kind::sine || g.bottom.kind == profile_kind::sawtooth;
     const std::string kind = "profile = \"" + std::string(to_string(g.bottom.kind)) + "\"";

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_poly.h>
@@ -40,6 +41,26 @@ const char* to_string(decay_kind kind) {
         case decay_kind::cosine: return "cosine";
     }
     return "?";
+}
+
+const char* to_string(normal_factor kind) {
+    switch (kind) {
+        case normal_factor::derived: return "derived";
+        case normal_factor::printed: return "printed";
+    }
+    return "?";
+}
+
+// docs/formulation.md, E11: H_1 = 0 of (2.5) couples V_1 to W_2 through C_1122 = lambda0, and
+// R_2 of (2.3) couples them back through C_2211 = lambda0; eliminating V_1 leaves
+// (lambda0/(lambda0 + 2mu0))^2 in (2.12). The paper prints lambda0 + mu0 in its place.
+double normal_factor_ratio(normal_factor kind, double lambda0, double mu0) {
+    const double stiff = lambda0 + 2.0 * mu0;
+    switch (kind) {
+        case normal_factor::derived: return lambda0 / stiff;
+        case normal_factor::printed: return (lambda0 + mu0) / stiff;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
 }
 
 // The decays of (2.6)-(2.8) in u = (H - x2)/H: each has dhat(1) = d(0) = 1, dhat(0) = d(H) = 0
@@ -79,6 +100,7 @@ double micro_shape_slope(micro_shape_kind kind, double x1, double l) {
 struct profile_function::spline {
     std::vector<double> x;
     std::vector<double> y;
+    std::vector<double> slope;  // h0' at every knot, once: piece() and the extremes use them
     interp_ptr interp;
     interp_accel_ptr accel;
 };
@@ -105,6 +127,12 @@ std::unique_ptr<profile_function::spline> build_spline(const profile_samples& s,
     gsl_check(gsl_interp_init(sp->interp.get(), sp->x.data(), sp->y.data(), sp->x.size()),
               s.source + ": periodic spline of the profile");
     sp->accel = make_interp_accel();
+    sp->slope.resize(sp->x.size());
+    for (std::size_t i = 0; i < sp->x.size(); ++i) {
+        const int status =
+            gsl_interp_eval_deriv_e(sp->interp.get(), sp->x.data(), sp->y.data(), sp->x[i], sp->accel.get(), &sp->slope[i]);
+        if (status != GSL_SUCCESS) gsl_check(status, s.source + ": the slope of the spline at x1 = " + shortest(sp->x[i]));
+    }
     return sp;
 }
 
@@ -143,47 +171,38 @@ double profile_function::operator()(double x1) const {
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-namespace {
-
-// Candidates for the extremes of a cubic spline on [x0, x1]: the ends, and the roots of the
-// derivative of the cubic inside, from its Hermite form (values and slopes at both ends).
-template <class Eval, class Slope>
-void cubic_candidates(double x0, double x1, const Eval& value, const Slope& slope, std::vector<double>& out) {
-    out.push_back(x0);
-    const double w = x1 - x0;
-    const double y0 = value(x0), y1 = value(x1);
-    const double m0 = slope(x0) * w, m1 = slope(x1) * w;
-    // p(u) = y0 + m0 u + (3(y1-y0) - 2m0 - m1) u^2 + (2(y0-y1) + m0 + m1) u^3 on u in [0, 1];
-    // p'(u) = m0 + 2 c2 u + 3 c3 u^2.
-    const double c2 = 3.0 * (y1 - y0) - 2.0 * m0 - m1;
-    const double c3 = 2.0 * (y0 - y1) + m0 + m1;
-    double r[2];
-    const int roots = gsl_poly_solve_quadratic(3.0 * c3, 2.0 * c2, m0, &r[0], &r[1]);
-    for (int i = 0; i < roots; ++i)
-        if (r[i] > 0.0 && r[i] < 1.0) out.push_back(x0 + r[i] * w);
+profile_function::cubic profile_function::piece(std::size_t i) const {
+    if (kind_ != profile_kind::measured || i + 1 >= spline_->x.size())
+        throw numerical_error("profile_function::piece(" + std::to_string(i) + ") of a " + to_string(kind_) +
+                              " profile: only the knot intervals of a measured profile are cubics");
+    const spline& sp = *spline_;
+    const double w = sp.x[i + 1] - sp.x[i];
+    const double y0 = sp.y[i], y1 = sp.y[i + 1];
+    const double m0 = sp.slope[i] * w, m1 = sp.slope[i + 1] * w;
+    // Hermite: p(0) = y0, p(1) = y1, p'(0) = m0, p'(1) = m1.
+    return {sp.x[i], w, {y0, m0, 3.0 * (y1 - y0) - 2.0 * m0 - m1, 2.0 * (y0 - y1) + m0 + m1}};
 }
-
-}  // namespace
 
 namespace {
 
 // The extreme of a measured profile's spline that `better` prefers (std::less: the minimum,
-// std::greater: the maximum) among the candidates of every cubic piece.
+// std::greater: the maximum): on each cubic piece, among its ends and the roots of its
+// derivative p'(t) = c1 + 2 c2 t + 3 c3 t^2 inside (0, 1).
 template <class Better>
-profile_function::extreme spline_extreme(const profile_function& h0, const profile_function::spline& sp, Better better) {
-    const auto value = [&h0](double x) { return h0(x); };
-    const auto slope = [&sp](double x) {
-        double s = 0.0;
-        gsl_check(gsl_interp_eval_deriv_e(sp.interp.get(), sp.x.data(), sp.y.data(), x, sp.accel.get(), &s),
-                  "the slope of the measured profile at x1 = " + shortest(x));
-        return s;
+profile_function::extreme spline_extreme(const profile_function& h0, Better better) {
+    const std::size_t pieces = h0.breakpoints().size() - 1;
+    profile_function::extreme best{h0.piece(0).c[0], 0.0};
+    const auto consider = [&](const profile_function::cubic& p, double t) {
+        const double v = p(t);
+        if (better(v, best.value)) best = {v, p.x0 + t * p.width};
     };
-    std::vector<double> candidates;
-    for (std::size_t i = 0; i + 1 < sp.x.size(); ++i) cubic_candidates(sp.x[i], sp.x[i + 1], value, slope, candidates);
-    profile_function::extreme best{value(candidates.front()), candidates.front()};
-    for (const double x : candidates) {
-        const double v = value(x);
-        if (better(v, best.value)) best = {v, x};
+    for (std::size_t i = 0; i < pieces; ++i) {
+        const profile_function::cubic p = h0.piece(i);
+        consider(p, 0.0);
+        double r[2];
+        const int roots = gsl_poly_solve_quadratic(3.0 * p.c[3], 2.0 * p.c[2], p.c[1], &r[0], &r[1]);
+        for (int k = 0; k < roots; ++k)
+            if (r[k] > 0.0 && r[k] < 1.0) consider(p, r[k]);
     }
     return best;
 }
@@ -197,7 +216,7 @@ profile_function::extreme profile_function::minimum() const {
         case profile_kind::sawtooth: return {0.0, 0.0};
         case profile_kind::measured: break;
     }
-    return spline_extreme(*this, *spline_, std::less<double>());
+    return spline_extreme(*this, std::less<double>());
 }
 
 profile_function::extreme profile_function::maximum() const {
@@ -207,7 +226,7 @@ profile_function::extreme profile_function::maximum() const {
         case profile_kind::sawtooth: return {delta_, l_};
         case profile_kind::measured: break;
     }
-    return spline_extreme(*this, *spline_, std::greater<double>());
+    return spline_extreme(*this, std::greater<double>());
 }
 
 std::vector<std::string> decay_violations(const std::function<double(double)>& d,
@@ -261,8 +280,9 @@ void layer_violations(const layer& m, std::vector<std::string>& out) {
 // 0 <= h0 < H on every sample of a measured profile, naming its line.
 void sample_violations(const profile_samples& s, double H, std::vector<std::string>& out) {
     for (std::size_t i = 0; i < s.h0.size(); ++i) {
-        const std::string where = s.source + ":" + (i < s.lines.size() ? std::to_string(s.lines[i]) : "?") + ": ";
         const double h = s.h0[i];
+        if (h >= 0.0 && h < H) continue;  // the message only for a violation (profiles of 1e6 samples)
+        const std::string where = s.source + ":" + (i < s.lines.size() ? std::to_string(s.lines[i]) : "?") + ": ";
         if (!(h >= 0.0)) {
             out.push_back(one_line(where + "h0 = " + shortest(h) + " is below 0 (the paper's 0 <= h0 < H; h0 is measured from the deepest valley: shift a zero-mean profile by its minimum)"));
             return;

@@ -10,6 +10,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/layer/piecewise_averages.hpp"
 
 namespace roughroll {
 namespace {
@@ -157,13 +158,14 @@ layer_integrals integrals_at(const micro_geometry& g, double x1) {
     return v;
 }
 
-roughness_parameters parameters_from_averages(const layer_averages& m, double lambda0, double mu0) {
+roughness_parameters parameters_from_averages(const layer_averages& m, double lambda0, double mu0,
+                                              normal_factor factor) {
     if (!(m.a_h1_squared > 0.0) || !std::isfinite(m.a_h1_squared)) {
         throw numerical_error("<a h_1^2> = " + shortest(m.a_h1_squared) +
                               " is not positive: (2.11)-(2.14) divide by it");
     }
     const double stiff = lambda0 + 2.0 * mu0;
-    const double ratio = (lambda0 + mu0) / stiff;
+    const double ratio = normal_factor_ratio(factor, lambda0, mu0);  // (2.12), E11
     // The correctors as x (x/q): <a h_1>^2 alone would leave double for H beyond about 1e+-154.
     const double corrector_k = m.a3_h1 * (m.a3_h1 / m.a_h1_squared);  // the corrector's share, (2.11)
     const double corrector_t = m.a_h1 * (m.a_h1 / m.a_h1_squared);    // (2.13)
@@ -188,8 +190,10 @@ roughness_parameters parameters_from_averages(const layer_averages& m, double la
     return p;
 }
 
-roughness_parameters compute_roughness_parameters(const micro_geometry& g) {
-    check_conditions(g);
+namespace {
+
+// The five averages by nested qag (averages_rule::adaptive).
+scaled_averages adaptive_averages(const micro_geometry& g) {
     const layer_integrator layer(g);
     const integration_workspace_ptr work = make_integration_workspace(workspace_intervals);
     const double l = g.material.l;
@@ -224,22 +228,38 @@ roughness_parameters compute_roughness_parameters(const micro_geometry& g) {
             return quadrature_result{w * v.a3, std::fabs(w) * v.a3_error};
         },
         breaks, l, outer_tolerance * std::sqrt(a33.value) * std::sqrt(a_h1_squared.value), work.get(), evaluations, "<a3 h_1>");
+    scaled_averages r;
+    r.value = {a.value, a3_h1.value, a33.value, a_h1.value, a_h1_squared.value};
+    r.error = {a.error, a3_h1.error, a33.error, a_h1.error, a_h1_squared.error};
+    r.evaluations = evaluations;
+    return r;
+}
+
+}  // namespace
+
+roughness_parameters compute_roughness_parameters(const micro_geometry& g, averages_rule rule) {
+    check_conditions(g);
+    const bool piecewise =
+        rule == averages_rule::piecewise || (rule == averages_rule::automatic && g.bottom.kind == profile_kind::measured);
+    const scaled_averages s = piecewise ? piecewise_averages(g) : adaptive_averages(g);
+    const layer_averages& v = s.value;
+    const layer_averages& e = s.error;
 
     // The averages above are of the dimensionless integrals (a/H, a3, a33 H): back to SI.
     const double H = g.material.H;
-    const layer_averages m{H * a.value, a3_h1.value, a33.value / H, H * a_h1.value, H * a_h1_squared.value};
-    roughness_parameters p = parameters_from_averages(m, g.material.lambda0, g.material.mu0);
-    p.averages_error = {H * a.error, a3_h1.error, a33.error / H, H * a_h1.error, H * a_h1_squared.error};
-    p.evaluations = evaluations;
+    const layer_averages m{H * v.a, v.a3_h1, v.a33 / H, H * v.a_h1, H * v.a_h1_squared};
+    roughness_parameters p = parameters_from_averages(m, g.material.lambda0, g.material.mu0, g.factor_2_12);
+    p.averages_error = {H * e.a, e.a3_h1, e.a33 / H, H * e.a_h1, H * e.a_h1_squared};
+    p.evaluations = s.evaluations;
 
     // First-order propagation of the averages' errors through (2.11)-(2.15), in the
     // dimensionless averages (each product kept within the range of double).
-    const double q = a_h1_squared.value, rk = a3_h1.value / q, rt = a_h1.value / q;
-    const double dk = (2.0 * std::fabs(rk) * a3_h1.error + rk * rk * a_h1_squared.error) / H;  // 1/m
-    const double dt = H * (a.error + 2.0 * std::fabs(rt) * a_h1.error + rt * rt * a_h1_squared.error);  // m
+    const double q = v.a_h1_squared, rk = v.a3_h1 / q, rt = v.a_h1 / q;
+    const double dk = (2.0 * std::fabs(rk) * e.a3_h1 + rk * rk * e.a_h1_squared) / H;  // 1/m
+    const double dt = H * (e.a + 2.0 * std::fabs(rt) * e.a_h1 + rt * rt * e.a_h1_squared);  // m
     const double stiff = g.material.lambda0 + 2.0 * g.material.mu0;
-    const double ratio = (g.material.lambda0 + g.material.mu0) / stiff;
-    const double a33_error = a33.error / H;
+    const double ratio = normal_factor_ratio(g.factor_2_12, g.material.lambda0, g.material.mu0);  // (2.12), E11
+    const double a33_error = e.a33 / H;
     p.k_tangential_error = g.material.mu0 * (a33_error + dk);
     p.k_normal_error = stiff * (a33_error + ratio * ratio * dk);
     p.t_tangential_error = 0.5 * stiff * dt;

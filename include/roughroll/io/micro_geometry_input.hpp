@@ -13,6 +13,10 @@
 //   micro_shape = "sine"   # optional, the only shape so far (default "sine")
 //   decay = "linear"       # "linear" | "quadratic" | "cosine" (required: it changes k by tens
 //                          #   of per cent, so a default would hide a modelling choice)
+//   factor_2_12 = "derived"  # optional, the factor of the corrector term of k^(2) in (2.12):
+//                          #   "derived" (lambda0/(lambda0+2mu0))^2, the default, or "printed"
+//                          #   ((lambda0+mu0)/(lambda0+2mu0))^2 as the paper prints it
+//                          #   (docs/formulation.md, erratum E11)
 // The paper's conditions (0 <= h0 < H on samples and spline) are checked too (check_conditions).
 #pragma once
 

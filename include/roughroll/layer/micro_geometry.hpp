@@ -56,16 +56,30 @@ enum class micro_shape_kind { sine };
 //   cosine     d = cos(pi x2/(2H))
 enum class decay_kind { linear, quadratic, cosine };
 
+// The factor multiplying the corrector term <a3 h_1>^2/<a h_1^2> of k^(2) in (2.12)
+// (docs/formulation.md, erratum E11):
+//   derived  (lambda0/(lambda0 + 2mu0))^2          eliminating V_1 from the paper's (2.3)-(2.5)
+//                                                  with the isotropic C_ijkl (the default)
+//   printed  ((lambda0 + mu0)/(lambda0 + 2mu0))^2  as printed in the paper, for comparison
+enum class normal_factor { derived, printed };
+
 struct micro_geometry {
     layer material;
     profile bottom;
     micro_shape_kind shape = micro_shape_kind::sine;
     decay_kind decay = decay_kind::linear;
+    normal_factor factor_2_12 = normal_factor::derived;
 };
 
 const char* to_string(profile_kind kind);
 const char* to_string(micro_shape_kind kind);
 const char* to_string(decay_kind kind);
+const char* to_string(normal_factor kind);
+
+// The ratio whose square is the factor of (2.12): lambda0/(lambda0 + 2mu0) (derived) or
+// (lambda0 + mu0)/(lambda0 + 2mu0) (printed). The one place both the value of k^(2) and its
+// error estimate take it from.
+double normal_factor_ratio(normal_factor kind, double lambda0, double mu0);
 
 // d(x2) and d'(x2) = dd/dx2 of a built-in decay, for 0 <= x2 <= H (through the two below,
 // with u = (H - x2)/H: d = dhat(u), d' = -dhat_u(u)/H).
@@ -115,6 +129,19 @@ public:
     };
     extreme minimum() const;
     extreme maximum() const;
+
+    // A measured profile's spline on its knot interval [x0, x0 + width] (knot intervals
+    // i = 0 .. breakpoints().size() - 2) as the cubic in t = (x1 - x0)/width in [0, 1]
+    //   h0 = c[0] + t (c[1] + t (c[2] + t c[3])),
+    // from the knot values and the spline's slopes at both knots (Hermite form: a cubic is
+    // fixed by them, so this is the spline's own piece, up to rounding). Measured profiles only
+    // (numerical_error otherwise): the averages integrate piece by piece (piecewise_averages.hpp).
+    struct cubic {
+        double x0, width;
+        double c[4];
+        double operator()(double t) const { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); }
+    };
+    cubic piece(std::size_t i) const;
 
     struct spline;  // the GSL spline of a measured profile (opaque)
 

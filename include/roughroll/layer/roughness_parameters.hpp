@@ -1,11 +1,14 @@
 // The roughness parameters k, t and alpha of (2.10)-(2.15) from the micro-geometry, by GSL's
-// adaptive quadrature. For each x1 the layer integrals over x2 in [h0(x1), H]
+// adaptive quadrature or, for measured profiles, a fixed rule piece by piece
+// (piecewise_averages.hpp). For each x1 the layer integrals over x2 in [h0(x1), H]
 //   a(x1)   = int d^2 dx2        (m)              (2.6)
 //   a3(x1)  = int d d' dx2       (dimensionless)  (2.7)   (= -d(h0)^2/2 for every d)
 //   a33(x1) = int (d')^2 dx2     (1/m)            (2.8)
 // and their averages <f> = (1/l) int_0^l f dx1 (2.9), with h_1 = dh/dx1, give
 //   k^(1) = mu0 [<a33> - <a3 h_1>^2/<a h_1^2>]                                          (2.11)
-//   k^(2) = (lambda0 + 2mu0) [<a33> - ((lambda0+mu0)/(lambda0+2mu0))^2 <a3 h_1>^2/<a h_1^2>]  (2.12)
+//   k^(2) = (lambda0 + 2mu0) [<a33> - (lambda0/(lambda0+2mu0))^2 <a3 h_1>^2/<a h_1^2>]  (2.12), E11
+//           (the paper prints ((lambda0+mu0)/(lambda0+2mu0))^2: normal_factor::printed,
+//            docs/formulation.md, erratum E11, derives the factor from (2.3)-(2.5))
 //   t^(1) = (lambda0 + 2mu0)/2 [<a> - <a h_1>^2/<a h_1^2>]                               (2.13)
 //   t^(2) = mu0/2 [<a> - <a h_1>^2/<a h_1^2>]                                            (2.14)
 //   alpha^(i) = sqrt(k^(i)/(2 t^(i)))                                                    (2.15)
@@ -55,8 +58,27 @@ struct roughness_parameters {
     double k_tangential_error = 0.0, k_normal_error = 0.0;
     double t_tangential_error = 0.0, t_normal_error = 0.0;
     double alpha_tangential_error = 0.0, alpha_normal_error = 0.0;
-    int evaluations = 0;  // integrand evaluations of the outer quadratures (x1 points)
+    int evaluations = 0;  // points x1 of the outer quadratures (adaptive: summed over the five)
 };
+
+// The five averages of the dimensionless layer integrals a/H, a3, a33 H (so <a>/H, <a3 h_1>,
+// <a33> H, <a h_1>/H, <a h_1^2>/H in the fields of layer_averages), with their error
+// estimates and the number of points x1 they took: what either rule below returns, and
+// compute_roughness_parameters scales back to SI (every product within double's range).
+struct scaled_averages {
+    layer_averages value;
+    layer_averages error;
+    int evaluations = 0;
+};
+
+// How the averages (2.9) are integrated:
+//   adaptive   nested gsl_integration_qag: outer over x1 split at the breakpoints, inner over
+//              the depth for each x1 (tolerances below); any profile
+//   piecewise  a fixed Gauss-Kronrod rule on every piece with the inner integrals in closed
+//              form (piecewise_averages.hpp): linear in the number of samples, for measured
+//              profiles of 1e4 to 1e6 samples
+//   automatic  piecewise for a measured profile, adaptive for the built-in ones
+enum class averages_rule { automatic, adaptive, piecewise };
 
 // The tolerances of the quadratures: relative, and absolute against a scale of the integral
 // (the inner ones against the same integral over the whole layer, u0 = 1; the signed averages
@@ -67,12 +89,14 @@ constexpr double outer_tolerance = 1e-12;
 // (2.6)-(2.8) at x1 in SI units, by gsl_integration_qag (Gauss-Kronrod 21) over u in [0, u0].
 layer_integrals integrals_at(const micro_geometry& g, double x1);
 
-// (2.11)-(2.15) from averages (no quadrature): throws numerical_error when <a h_1^2> is not
-// positive or a k or t is not finite and > 0.
-roughness_parameters parameters_from_averages(const layer_averages& averages, double lambda0, double mu0);
+// (2.11)-(2.15) from averages (no quadrature), with the factor of (2.12) chosen by `factor`:
+// throws numerical_error when <a h_1^2> is not positive or a k or t is not finite and > 0.
+roughness_parameters parameters_from_averages(const layer_averages& averages, double lambda0, double mu0,
+                                              normal_factor factor = normal_factor::derived);
 
-// The whole computation: check_conditions, the averages by nested qag (the outer one split at
-// profile_function::breakpoints), then (2.11)-(2.15) with their error estimates.
-roughness_parameters compute_roughness_parameters(const micro_geometry& g);
+// The whole computation: check_conditions, the averages by `rule`, then (2.11)-(2.15) with
+// their error estimates (propagated to first order from the averages').
+roughness_parameters compute_roughness_parameters(const micro_geometry& g,
+                                                  averages_rule rule = averages_rule::automatic);
 
 }  // namespace roughroll
