@@ -1,6 +1,8 @@
 #include "cli/output_files.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -36,21 +38,32 @@ std::string shell_word(const std::string& text) {
     return out + "'";
 }
 
-// A temporary name beside `path` that did not exist: created here (O_EXCL), empty.
-fs::path new_temporary(const fs::path& path, int& error) {
+// A temporary file beside `path` that did not exist, created here (O_EXCL) and open for
+// writing; -1 with `error` set when the folder cannot take it.
+int new_temporary(const fs::path& path, fs::path& name, int& error) {
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     for (int k = 0; k < 100; ++k) {
-        const fs::path candidate = folder / ("." + path.filename().string() + ".tmp-" +
-                                             std::to_string(::getpid()) + "-" + std::to_string(k));
-        const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) {
-            ::close(fd);
-            return candidate;
-        }
+        name = folder / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(k));
+        const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) return fd;
         if (errno != EEXIST) break;
     }
     error = errno;
-    return {};
+    name.clear();
+    return -1;
+}
+
+// All of `text` to fd, through short writes and interruptions; 0 or the errno of the failure.
+int write_all(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n < 0 ? errno : EIO;
+        done += static_cast<std::size_t>(n);
+    }
+    return 0;
 }
 
 }  // namespace
@@ -90,34 +103,35 @@ output_file::output_file(fs::path path, const std::vector<std::string>& inputs) 
         if (!ec) path_ = target;
     }
     const fs::file_status status = fs::status(path_, ec);
-    const bool in_place = !ec && fs::exists(status) && !fs::is_regular_file(status);
-    errno = 0;
-    if (!in_place) {
-        int error = 0;
-        temporary_ = new_temporary(path_, error);
-        if (temporary_.empty()) fail(error);
-        // The new file keeps the mode of the one it replaces.
-        if (fs::is_regular_file(status)) fs::permissions(temporary_, status.permissions(), ec);
+    if (!ec && fs::exists(status) && !fs::is_regular_file(status)) {
+        fd_ = ::open(path_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (fd_ < 0) fail(errno);
+        return;
     }
-    errno = 0;
-    out_.open(in_place ? path_ : temporary_, std::ios::binary | std::ios::trunc);
-    if (!out_) fail(errno);
+    int error = 0;
+    fd_ = new_temporary(path_, temporary_, error);
+    if (fd_ < 0) fail(error);
+    // The new file keeps the mode of the one it replaces.
+    if (fs::is_regular_file(status)) ::fchmod(fd_, static_cast<mode_t>(status.permissions()));
 }
 
 output_file::~output_file() {
+    if (fd_ >= 0) ::close(fd_);
     if (committed_ || temporary_.empty()) return;
     std::error_code ec;
     fs::remove(temporary_, ec);  // nothing more to do if that fails: the path itself is intact
 }
 
-void output_file::fail(int error) const { throw input_error("cannot write " + in_quotes(path_) + ": " + reason(error)); }
+void output_file::fail(int error) const {
+    throw input_error("cannot write " + in_quotes(path_) + ": " + reason(error));
+}
 
 void output_file::commit() {
-    errno = 0;
-    if (!out_.flush()) fail(errno);
-    errno = 0;
-    out_.close();
-    if (out_.fail()) fail(errno);
+    const int error = write_all(fd_, text_.str());
+    if (error != 0) fail(error);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail(errno);  // NFS and some full disks report here
     if (!temporary_.empty() && std::rename(temporary_.c_str(), path_.c_str()) != 0) fail(errno);
     committed_ = true;
 }
@@ -144,8 +158,10 @@ std::string gnuplot_output_stem(const fs::path& stem) {
 
 void run_gnuplot(const fs::path& script, const fs::path& stem, const std::vector<std::string>& extensions) {
     int error = 0;
-    const fs::path temporary = new_temporary(stem, error);
-    if (temporary.empty()) throw input_error("cannot write " + in_quotes(stem.string() + extensions.front()) + ": " + reason(error));
+    fs::path temporary;
+    const int fd = new_temporary(stem, temporary, error);
+    if (fd >= 0) ::close(fd);
+    if (fd < 0) throw input_error("cannot write " + in_quotes(stem.string() + extensions.front()) + ": " + reason(error));
     std::vector<fs::path> images;
     for (const std::string& ext : extensions) images.push_back(temporary.string() + ext);
     const auto clean = [&]() {

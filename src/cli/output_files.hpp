@@ -9,7 +9,7 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,11 +23,12 @@ void check_output(const std::filesystem::path& path, const std::vector<std::stri
 // checked by check_output (its control characters), with `what` naming where it came from.
 std::filesystem::path output_stem(const std::string& dir, const std::string& name);
 
-// One output file, written whole or not at all: the text goes to a new temporary file
-// beside `path` (".NAME.tmp-PID-K"), and commit() flushes it, closes it and renames it onto
-// `path`. Until then `path` is untouched; the destructor removes an uncommitted temporary
-// file. A path that exists and is not a regular file (/dev/stdout, /dev/full, a FIFO) is
-// written in place. Every failure is an input_error "cannot write 'PATH': <strerror>".
+// One output file, written whole or not at all: the text is kept in memory until commit(),
+// which writes it to a new temporary file beside `path` (".NAME.tmp-PID-K", created by the
+// constructor, so that an unwritable folder is found before any work), closes it and renames
+// it onto `path`. Until then `path` is untouched; the destructor removes an uncommitted
+// temporary file. A path that exists and is not a regular file (/dev/stdout, /dev/full, a
+// FIFO) is written in place. Every failure is an input_error "cannot write 'PATH': <strerror>".
 class output_file {
 public:
     output_file(std::filesystem::path path, const std::vector<std::string>& inputs);
@@ -35,7 +36,7 @@ public:
     output_file& operator=(const output_file&) = delete;
     ~output_file();
 
-    std::ostream& stream() { return out_; }
+    std::ostream& stream() { return text_; }
     void commit();
 
 private:
@@ -43,7 +44,8 @@ private:
 
     std::filesystem::path path_;
     std::filesystem::path temporary_;  // empty when written in place
-    std::ofstream out_;
+    int fd_ = -1;
+    std::ostringstream text_;
     bool committed_ = false;
 };
 
