@@ -241,6 +241,9 @@ expect physical-t-from-T-overflow "'cylinder1.tangential': t = a mu/(8 (1 - nu) 
 scene physwide "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = 1e-5/; s/^k = 4e14/k = 1e9/; s/^t = 1.5e6/t = 1/; s/^\[cylinder1.tangential\]/[cylinder1.normal]/')"
 expect physical-wide-refused-before-search "the Hertz half-width a_H = " -- point "$dir/physwide.toml"
 expect physical-wide-names-radius "a << R" -- point "$dir/physwide.toml"
+# a_H within R/10 but the width that carries P2 beyond it: the search stops at R/10.
+scene physwider "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = 0.005/; s/^k = 4e14/k = 1e9/; s/^t = 1.5e6/t = 1/; s/^\[cylinder1.tangential\]/[cylinder1.normal]/')"
+expect physical-wide-found-by-search "the half-width that carries P2 is above a = 4e-04 m, 0.1 times the radius" -- point "$dir/physwider.toml"
 # One underflow rule: a nonzero literal below DBL_MIN is refused (scene, CSV, command line).
 scene Qunder "$(printf '%s\n' "$good" | sed 's/^Q = 0.15/Q = 1e-400/')"
 expect Q-underflow-scene "Qunder.toml:2:5: 'Q' = 1e-400 is below 2.2250738585072014e-308" -- point "$dir/Qunder.toml"
