@@ -260,6 +260,12 @@ mkdir -p "$dir/csvunder"
 printf 'lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 4e-5\nprofile = "measured"\nprofile_csv = "p.csv"\ndecay = "linear"\n' >"$dir/csvunder/spec.toml"
 printf 'x1,h0\n0,1e-6\n1e-5,1e-400\n2e-5,3e-6\n3e-5,2e-6\n' >"$dir/csvunder/p.csv"
 expect csv-underflow "p.csv:3: h0 = 1e-400 is below 2.2250738585072014e-308" -- roughness "$dir/csvunder/spec.toml"
+# A spline overshoot in the last piece, which wraps round to x1 = 0: its lines are the last
+# sample's and the first's (before: "the closing point x1 = l", a line the file did not have).
+mkdir -p "$dir/csvwrap"
+cp "$dir/csvunder/spec.toml" "$dir/csvwrap/spec.toml"
+printf 'x1,h0\n0,0\n1e-5,5e-6\n2e-5,5e-6\n3e-5,0\n' >"$dir/csvwrap/p.csv"
+expect csv-overshoot-wraps "between line 5 and line 2 one period on" -- roughness "$dir/csvwrap/spec.toml"
 # Friction outside the validated range [1e-12, 1e12] (before: no input named, or xi/f wrong).
 scene fmax "$(printf '%s\n' "$good" | sed 's/^friction = 0.3/friction = 1.79e308/; s/^Q = 0.15/Q = 1e308/')"
 expect friction-huge "'friction' = 1.79e+308 is outside [1e-12, 1e+12]" -- point "$dir/fmax.toml"
