@@ -598,6 +598,15 @@ TEST(Scene, LongEchoesAreCut) {
         EXPECT_NE(message.find("unknown key '" + std::string(60, 'k') + "...'"), std::string::npos) << message;
     }
     EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = \"" + std::string(5000, 'm') + "\"\n", {"mmm..."}));
+    // A dotted key of 50 long parts (fuzz_scene's finding): the path shown is cut too.
+    std::string dotted;
+    for (int i = 0; i < 50; ++i) dotted += (i ? "." : "") + std::string(60, 'a' + i % 26);
+    try {
+        (void)parse_scene("friction = 0.3\n" + dotted + " = 1e-400\n", source);
+        ADD_FAILURE() << "accepted";
+    } catch (const input_error& e) {
+        EXPECT_LT(std::string(e.what()).size(), 500u) << e.what();
+    }
 }
 
 // read_scene names the files read: an output must not overwrite one of them.

@@ -27,7 +27,8 @@ std::string join(const std::string& parent, std::string_view key) {
     return path;
 }
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
+// Cut: a path built from the input's keys (a table nested a thousand deep) must not make a long message.
+std::string quoted(const std::string& path) { return "'" + echo(path, 200) + "'"; }
 
 namespace {
 // "a string", "an integer", ...: what was found where something else was expected.

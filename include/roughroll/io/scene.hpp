@@ -15,8 +15,10 @@
 //   method = "extrapolated"      # or "product", "paper", "one-parameter" (the limit t -> 0)
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
-// a non-finite or negative T or A, a table with T or A missing, a non-positive f,
-// a non-finite Q or |Q| > f.
+// a non-finite or negative T or A, a table with T or A missing, an f outside
+// [min_friction, max_friction], a non-finite Q or |Q| > f, a nonzero number written below
+// the smallest normal double (base/text.hpp), and for a physical scene any derived value
+// (a_H, T, A, k, t, the SI scales) beyond double precision (physical_scene.hpp).
 #pragma once
 
 #include <filesystem>
