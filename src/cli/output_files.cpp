@@ -43,7 +43,8 @@ std::string shell_word(const std::string& text) {
 int new_temporary(const fs::path& path, fs::path& name, int& error) {
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     for (int k = 0; k < 100; ++k) {
-        name = folder / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+        // The file name cut to 200 bytes: the temporary name must stay within NAME_MAX (255).
+        name = folder / ("." + path.filename().string().substr(0, 200) + ".tmp-" + std::to_string(::getpid()) + "-" +
                          std::to_string(k));
         const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) return fd;
@@ -71,7 +72,7 @@ int write_all(int fd, const std::string& text) {
 void check_output(const fs::path& path, const std::vector<std::string>& inputs) {
     if (has_control(path.string()))
         throw input_error("output path " + in_quotes(path) +
-                          " holds a control character: refused, since gnuplot and most tools read it as a line break");
+                          " holds a control character: refused (gnuplot would take a newline in it for the end of a command)");
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw input_error("cannot write " + in_quotes(path) + ": it is a directory");
     for (const std::string& input : inputs) {
@@ -84,8 +85,8 @@ void check_output(const fs::path& path, const std::vector<std::string>& inputs) 
 fs::path output_stem(const std::string& dir, const std::string& name) {
     // Checked before the folder is made: a newline must not create a folder either.
     if (has_control(dir))
-        throw input_error("output folder " + in_quotes(dir) + " holds a control character: refused, since gnuplot "
-                          "reads it as a line break");
+        throw input_error("output folder " + in_quotes(dir) + " holds a control character: refused (gnuplot would take "
+                          "a newline in it for the end of a command)");
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw input_error("cannot create output folder " + in_quotes(dir) + ": " + ec.message());

@@ -20,7 +20,7 @@ namespace roughroll::cli {
 void check_output(const std::filesystem::path& path, const std::vector<std::string>& inputs);
 
 // Creates `dir` if needed and returns the absolute path dir/name (without extension),
-// checked by check_output (its control characters), with `what` naming where it came from.
+// checked by check_output; a control character in `dir` is refused before the folder is made.
 std::filesystem::path output_stem(const std::string& dir, const std::string& name);
 
 // One output file, written whole or not at all: the text is kept in memory until commit(),
