@@ -12,6 +12,7 @@
 //     condition_violations says so).
 //
 // Build and run: scripts/fuzz [SECONDS] (see docs/robustness.md).
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +24,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/layer/micro_geometry.hpp"
 #include "roughroll/io/profile_csv.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace {
 
@@ -31,7 +33,9 @@ namespace {
     std::abort();
 }
 
-bool one_line(const std::string& message) { return message.find_first_of("\n\r") == std::string::npos; }
+// One line of valid UTF-8 with no control character (text.hpp's one_line changes nothing in
+// it), and short: a long field is echoed cut (issue 11).
+bool one_line(const std::string& message) { return roughroll::one_line(message) == message && message.size() <= 1000; }
 
 constexpr double period = 4.0;
 
@@ -42,6 +46,9 @@ void check_samples(const roughroll::profile_samples& s) {
     if (s.x1.front() != 0.0) broken("x1 starts at 0", std::to_string(s.x1.front()));
     for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(s.x1[i]) || !std::isfinite(s.h0[i])) broken("finite samples", std::to_string(i));
+        // The underflow rule (text.hpp): no sample is a subnormal.
+        for (const double v : {s.x1[i], s.h0[i]})
+            if (v != 0.0 && std::fabs(v) < DBL_MIN) broken("no subnormal sample", std::to_string(i));
         if (!(s.x1[i] < period)) broken("x1 below l", std::to_string(s.x1[i]));
         if (i > 0 && !(s.x1[i] > s.x1[i - 1])) broken("x1 strictly increasing", std::to_string(i));
     }

@@ -12,6 +12,7 @@
 //     |Q| <= f, and throws input_error with a one-line message otherwise.
 //
 // Build and run: scripts/fuzz [SECONDS] (see docs/robustness.md).
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -26,6 +27,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace {
 
@@ -34,12 +36,15 @@ namespace {
     std::abort();
 }
 
-bool one_line(const std::string& message) { return message.find_first_of("\n\r") == std::string::npos; }
+// One line of valid UTF-8 with no control character (text.hpp's one_line changes nothing in
+// it), and short: a long key or value is echoed cut (issue 11).
+bool one_line(const std::string& message) { return roughroll::one_line(message) == message && message.size() <= 1000; }
 
 bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
 
 void check_scene(const roughroll::scene& s) {
-    if (!(std::isfinite(s.friction) && s.friction > 0.0)) broken("f finite and > 0", std::to_string(s.friction));
+    if (!(s.friction >= roughroll::min_friction && s.friction <= roughroll::max_friction))
+        broken("f in [min_friction, max_friction]", std::to_string(s.friction));
     if (s.Q && !(std::isfinite(*s.Q) && std::fabs(*s.Q) <= s.friction))
         broken("scene Q finite and |Q| <= f", std::to_string(*s.Q));
     const roughroll::roughness_term terms[] = {s.surfaces.cylinder1.tangential, s.surfaces.cylinder1.normal,
@@ -49,6 +54,25 @@ void check_scene(const roughroll::scene& s) {
             broken("T and A finite and >= 0", std::to_string(term.T) + ", " + std::to_string(term.A));
     const int n = s.solver.n;
     if (n != 0 && (n < roughroll::min_nodes || n > roughroll::max_nodes)) broken("n in range", std::to_string(n));
+    // The underflow rule: no value of an accepted scene is a subnormal.
+    if (s.Q && *s.Q != 0.0 && std::fabs(*s.Q) < DBL_MIN) broken("Q not subnormal", std::to_string(*s.Q));
+    if (!s.physical) return;
+    // A physical scene: every derived quantity finite where it is made, or an input_error
+    // naming keys; the width search's trials (a_H / 6.5e5 to R/10) included.
+    const roughroll::physical_scene& p = *s.physical;
+    const double a_H = roughroll::hertz_half_width(p, p.P2);
+    if (!(std::isfinite(a_H) && a_H >= DBL_MIN)) broken("a_H normal and finite", std::to_string(a_H));
+    for (const double x : {1.0 / 6.5e5, 1e-3, 1.0, 1e3, 0.1 * p.radius() / a_H}) {
+        try {
+            const roughroll::roughness r = roughroll::roughness_at(p, x * a_H);
+            for (const roughroll::roughness_term& term : {r.cylinder1.tangential, r.cylinder1.normal,
+                                                          r.cylinder2.tangential, r.cylinder2.normal})
+                if (!finite_non_negative(term.T) || !finite_non_negative(term.A))
+                    broken("T and A at a trial width finite and >= 0", std::to_string(term.T) + ", " + std::to_string(term.A));
+        } catch (const roughroll::input_error& e) {
+            if (!one_line(e.what())) broken("one-line message", e.what());
+        }
+    }
 }
 
 // load_of(s, override) against its contract.

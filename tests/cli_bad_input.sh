@@ -2,7 +2,7 @@
 # Every kind of bad input makes `roughroll` exit 2 with exactly one line on stderr that
 # names the problem, and nothing on stdout. Usage: cli_bad_input.sh path/to/roughroll
 set -u
-bin=$1
+bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")  # absolute: some rows run in another folder
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 failures=0
@@ -157,7 +157,7 @@ expect singular-system "singular" -- point "$dir/singular.toml"
 # Findings of docs/robustness.md, closed: a load too small against f for double precision,
 # an infinite creep at the gross-sliding shortcut.
 expect load-below-precision "relative precision" -- point "$dir/good.toml" --Q 1e-12
-scene hugefriction "$(printf '%s\n' "$good" | sed 's/^friction = 0.3/friction = 1e14/')"
+scene hugefriction "$(printf '%s\n' "$good" | sed 's/^friction = 0.3/friction = 1e12/')"
 expect huge-friction "relative precision" -- point "$dir/hugefriction.toml"
 scene hugeT "$(printf 'friction = 0.3\n[cylinder1.tangential]\nT = 1e308\nA = 0.5\n')"
 expect infinite-creep "not finite" -- point "$dir/hugeT.toml" --Q 0.3
@@ -222,6 +222,183 @@ expect one-parameter-A-zero "no one-parameter limit" -- point "$dir/Azero.toml" 
 if ! "$bin" point "$dir/phys.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi1"' "$dir/out"; then
     echo "FAIL the valid physical scene did not solve:"; cat "$dir/err"; failures=$((failures + 1))
 fi
+
+# Issue 11, section 2: the defects of an adversarial pass, each row failing before its fix.
+# Non-finite results from finite input: every derived quantity checked where it is made,
+# naming the keys. (Before: exit 0 with xi1 = -nan; "increase n"; T = inf.)
+scene physEbig "$(printf '%s\n' "$phys" | sed 's/^E = 210e9/E = 1e300/; s/^R1 = 0.02/R1 = 1e-300/; s/^R2 = 0.02/R2 = 1e-300/; s/^P2 = 1e5/P2 = 1e-300/; s/^P1 = 1.5e4/Q = 0.1/')"
+expect physical-hertz-width-underflow "Hertz half-width a_H of (3.27) = 0 (E = 1e+300 Pa, nu = 0.3, R = 5e-301 m, P = 1e-300 N/m) is beyond double precision: check 'E', 'R1', 'R2' and 'P2'" -- point "$dir/physEbig.toml"
+scene physP2denormal "$(printf '%s\n' "$phys" | sed 's/^P2 = 1e5/P2 = 5e-324/; s/^P1 = 1.5e4/Q = 0.1/')"
+expect physical-P2-subnormal "'P2' = 5e-324 is below 2.2250738585072014e-308, the smallest normal double" -- point "$dir/physP2denormal.toml"
+scene physttiny "$(printf '%s\n' "$phys" | sed 's/^t = 1.5e6/t = 1e-320/')"
+expect physical-t-subnormal "'cylinder1.tangential.t' = 1e-320 is below" -- point "$dir/physttiny.toml"
+scene physTinf "$(printf '%s\n' "$phys" | sed 's/^t = 1.5e6/t = 1e-305/')"
+expect physical-T-overflow "T = a mu/(8 (1 - nu) t) of (3.26) = inf" -- point "$dir/physTinf.toml"
+expect physical-T-overflow-names-t "check 'cylinder1.tangential.t' and 'E'" -- point "$dir/physTinf.toml"
+scene physTgiven "$(printf '%s\n' "$phys" | sed 's/^k = 4e14/T = 1e-305/; s/^t = 1.5e6/A = 0.5/')"
+expect physical-t-from-T-overflow "'cylinder1.tangential': t = a mu/(8 (1 - nu) T) of (3.26) = inf" -- point "$dir/physTgiven.toml"
+# A contact far wider than its radius: the a/R refusal before any solve, not resolution advice.
+scene physwide "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = 1e-5/; s/^k = 4e14/k = 1e9/; s/^t = 1.5e6/t = 1/; s/^\[cylinder1.tangential\]/[cylinder1.normal]/')"
+expect physical-wide-refused-before-search "the Hertz half-width a_H = " -- point "$dir/physwide.toml"
+expect physical-wide-names-radius "a << R" -- point "$dir/physwide.toml"
+# a_H within R/10 but the width that carries P2 beyond it: the search stops at R/10.
+scene physwider "$(printf '%s\n' "$phys" | sed 's/^R1 = 0.02/R1 = 0.005/; s/^k = 4e14/k = 1e9/; s/^t = 1.5e6/t = 1/; s/^\[cylinder1.tangential\]/[cylinder1.normal]/')"
+expect physical-wide-found-by-search "the half-width that carries P2 is above a = 4e-04 m, 0.1 times the radius" -- point "$dir/physwider.toml"
+# One underflow rule: a nonzero literal below DBL_MIN is refused (scene, CSV, command line).
+scene Qunder "$(printf '%s\n' "$good" | sed 's/^Q = 0.15/Q = 1e-400/')"
+expect Q-underflow-scene "Qunder.toml:2:5: 'Q' = 1e-400 is below 2.2250738585072014e-308" -- point "$dir/Qunder.toml"
+scene fdenormal "$(printf '%s\n' "$good" | sed 's/^friction = 0.3/friction = 1e-310/')"
+expect friction-subnormal "'friction' = 1e-310 is below" -- point "$dir/fdenormal.toml"
+scene zeros "$(printf '%s\n' "$good" | sed 's/^Q = 0.15/Q = 0.0e-400/')"
+if ! "$bin" point "$dir/zeros.toml" >/dev/null 2>"$dir/err"; then
+    echo "FAIL a zero written as 0.0e-400 is 0, not an underflow:"; cat "$dir/err"; failures=$((failures + 1))
+fi
+expect Q-underflow-cli "--Q: 1e-400 is below" -- point "$dir/good.toml" --Q 1e-400
+expect Q-subnormal-cli "--Q: 1e-310 is below" -- point "$dir/good.toml" --Q 1e-310
+expect Q-overflow-cli "--Q: 1e400 is beyond" -- point "$dir/good.toml" --Q 1e400
+mkdir -p "$dir/csvunder"
+printf 'lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 4e-5\nprofile = "measured"\nprofile_csv = "p.csv"\ndecay = "linear"\n' >"$dir/csvunder/spec.toml"
+printf 'x1,h0\n0,1e-6\n1e-5,1e-400\n2e-5,3e-6\n3e-5,2e-6\n' >"$dir/csvunder/p.csv"
+expect csv-underflow "p.csv:3: h0 = 1e-400 is below 2.2250738585072014e-308" -- roughness "$dir/csvunder/spec.toml"
+# A spline overshoot in the last piece, which wraps round to x1 = 0: its lines are the last
+# sample's and the first's (before: "the closing point x1 = l", a line the file did not have).
+mkdir -p "$dir/csvwrap"
+cp "$dir/csvunder/spec.toml" "$dir/csvwrap/spec.toml"
+printf 'x1,h0\n0,0\n1e-5,5e-6\n2e-5,5e-6\n3e-5,0\n' >"$dir/csvwrap/p.csv"
+expect csv-overshoot-wraps "between line 5 and line 2 one period on" -- roughness "$dir/csvwrap/spec.toml"
+# Friction outside the validated range [1e-12, 1e12] (before: no input named, or xi/f wrong).
+scene fmax "$(printf '%s\n' "$good" | sed 's/^friction = 0.3/friction = 1.79e308/; s/^Q = 0.15/Q = 1e308/')"
+expect friction-huge "'friction' = 1.79e+308 is outside [1e-12, 1e+12]" -- point "$dir/fmax.toml"
+scene fmin "$(printf '%s\n' "$good" | sed 's/^friction = 0.3/friction = 1e-13/; s/^Q = 0.15/Q = 5e-14/')"
+expect friction-tiny "'friction' = 1e-13 is outside [1e-12, 1e+12]" -- point "$dir/fmin.toml"
+# Empty option values are errors, not ignored.
+expect Q-cli-empty "--Q: '' is not a number" -- point "$dir/good.toml" --Q ""
+expect n-cli-empty "--n: '' is not an integer" -- point "$dir/good.toml" --n ""
+# A 1 MB key is echoed cut, not whole.
+{ printf '%s\n' "$good"; printf '%s = 1\n' "$(head -c 1000000 /dev/zero | tr '\0' k)"; } >"$dir/bigkey.toml"
+expect key-echo-cut "kkkkkkkkkk..." -- point "$dir/bigkey.toml"
+[ "$(wc -c <"$dir/err")" -lt 300 ] || { echo "FAIL key-echo-cut: $(wc -c <"$dir/err") bytes on stderr"; failures=$((failures + 1)); }
+# traction's default name is the scene file's: a bad one is blamed on the file, not on --name.
+printf '%s\n' "$good" >"$dir/$(printf 'a\nb').toml"
+expect traction-scene-name "the scene file's name 'a\x0ab' cannot name the output files" -- traction "$dir/$(printf 'a\nb').toml" --out "$dir/t" --no-plot
+
+# Bytes that are not UTF-8 in a file name: JSON gets \xNN, not exit 70; the terminal never
+# gets the raw byte.
+"$bin" point "$dir/$(printf 'bad\377name').toml" >"$dir/out" 2>"$dir/err"
+if [ $? -ne 2 ] || ! grep -qF 'bad\xffname' "$dir/err" || LC_ALL=C grep -q "$(printf '\377')" "$dir/err"; then
+    echo "FAIL non-utf8-in-message: the byte reached stderr raw:"; cat -v "$dir/err"; failures=$((failures + 1))
+fi
+mkdir -p "$dir/spec"
+printf 'lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 1e-4\nprofile = "flat"\ndecay = "linear"\n' >"$dir/spec/$(printf 'flat\377').toml"
+for mode in --json text; do
+    # JSON escapes the backslash of \xff once more.
+    args=(roughness "$dir/spec/$(printf 'flat\377').toml") shown='flat\xff'
+    [ "$mode" = --json ] && args+=(--json) && shown='flat\\xff'
+    "$bin" "${args[@]}" >"$dir/out" 2>"$dir/err"
+    status=$?
+    if [ $status -ne 0 ] || ! grep -qF "$shown" "$dir/out" || LC_ALL=C grep -q "$(printf '\377')" "$dir/out"; then
+        echo "FAIL non-utf8-spec-name ($mode): status $status"; cat -v "$dir/err"; failures=$((failures + 1))
+    else
+        echo "ok   non-utf8-spec-name ($mode): the name printed as flat\\xff"
+    fi
+done
+
+# Writes are checked: a full device is an error with its reason (before: exit 0).
+expect_full() {  # expect_full NAME -- ARGS: stdout to /dev/full, exit 2, one line with the reason
+    local name=$1
+    shift 2
+    timeout 60 "$bin" "$@" >/dev/full 2>"$dir/err"
+    local status=$?
+    if [ $status -ne 2 ] || [ "$(wc -l <"$dir/err")" -ne 1 ] || ! grep -qF "No space left on device" "$dir/err"; then
+        echo "FAIL $name: status $status:"; sed 's/^/    /' "$dir/err"; failures=$((failures + 1))
+    else
+        echo "ok   $name: $(cat "$dir/err")"
+    fi
+}
+expect_full point-stdout-full -- point "$dir/good.toml"
+expect_full point-json-stdout-full -- point "$dir/good.toml" --json
+expect_full curve-stdout-full -- curve "$dir/good.toml" --points 3
+expect_full roughness-stdout-full -- roughness "$dir/spec/$(printf 'flat\377').toml"
+expect curve-csv-full "cannot write '/dev/full': No space left on device" -- curve "$dir/good.toml" --points 3 --csv /dev/full
+expect curve-unwritable-reason "x.csv': No such file or directory" -- curve "$dir/good.toml" --points 3 --csv "$dir/no/such/dir/x.csv"
+expect curve-parent-is-file "cannot write '$dir/a-file/x.csv': Not a directory" -- curve "$dir/good.toml" --points 3 --csv "$dir/a-file/x.csv"
+
+# Data loss: a write that fails midway (here the file size limit, as a full disk would)
+# leaves the existing file as it was and no temporary file; no 0-byte traction CSV.
+mkdir -p "$dir/keep"
+printf 'old\n' >"$dir/keep/old.csv"
+(trap '' XFSZ; ulimit -f 1; exec "$bin" curve "$dir/good.toml" --points 200 --csv "$dir/keep/old.csv") >"$dir/out" 2>"$dir/err"
+status=$?
+if [ $status -ne 2 ] || ! grep -qF "File too large" "$dir/err" || [ "$(cat "$dir/keep/old.csv")" != old ] ||
+    [ "$(ls -A "$dir/keep")" != old.csv ]; then
+    echo "FAIL curve-csv-fails-midway: status $status, $(cat "$dir/err"), left: $(ls -A "$dir/keep" | tr '\n' ' ')"
+    failures=$((failures + 1))
+else
+    echo "ok   curve-csv-fails-midway: $(cat "$dir/err"); old.csv intact, no temporary file"
+fi
+(trap '' XFSZ; ulimit -f 1; exec "$bin" traction "$dir/good.toml" --out "$dir/traction-full" --no-plot) >"$dir/out" 2>"$dir/err"
+status=$?
+if [ $status -ne 2 ] || ! grep -qF "File too large" "$dir/err" || [ -n "$(ls -A "$dir/traction-full")" ]; then
+    echo "FAIL traction-fails-midway: status $status, $(cat "$dir/err"), left: $(ls -A "$dir/traction-full" | tr '\n' ' ')"
+    failures=$((failures + 1))
+else
+    echo "ok   traction-fails-midway: $(cat "$dir/err"); nothing left in the folder"
+fi
+cp "$dir/good.toml" "$dir/S.toml"
+expect curve-csv-is-input "is the input file" -- curve "$dir/S.toml" --points 3 --csv "$dir/S.toml"
+cmp -s "$dir/good.toml" "$dir/S.toml" || { echo "FAIL curve-csv-is-input: the scene was changed"; failures=$((failures + 1)); }
+mkdir -p "$dir/tin"
+cp "$dir/good.toml" "$dir/tin/traction-x.csv"
+expect traction-csv-is-input "is the input file" -- traction "$dir/tin/traction-x.csv" --name x --out "$dir/tin" --no-plot
+
+# gnuplot injection: a newline in --out ends gnuplot's command, and the text after it would
+# run; control characters are refused and nothing runs (before: the `system` line ran).
+pwned="$dir/pwned"
+hostile="$(printf 'o\nsystem "touch %s"\n#' "$pwned")"
+expect traction-out-newline "holds a control character" -- traction "$dir/good.toml" --points 5 --out "$dir/$hostile"
+expect convergence-out-newline "holds a control character" -- convergence "$dir/good.toml" --out "$dir/$hostile" --no-plot
+expect figure-out-newline "holds a control character" -- figure 2a --points 2 --out "$dir/$hostile" --no-plot
+[ ! -e "$pwned" ] || { echo "FAIL gnuplot-injection: the system line ran"; failures=$((failures + 1)); }
+# Quotes, a backquote (gnuplot runs `...` even inside a double-quoted title), @ and $( ) in
+# a scene file name: plotted as text, nothing runs.
+if command -v gnuplot >/dev/null; then
+    mkdir -p "$dir/hostile"
+    weird="it's \`touch pwned\` @x \$(touch pwned) \"q\""
+    printf '%s\n' "$good" >"$dir/hostile/$weird.toml"
+    # Run in $dir: a command that ran would leave $dir/pwned.
+    if (cd "$dir" && "$bin" traction "hostile/$weird.toml" --points 5 --out hostile/out) >/dev/null 2>"$dir/err" &&
+        [ ! -e "$pwned" ] && [ -s "$dir/hostile/out/traction-$weird.svg" ] &&
+        [ "$(ls -A "$dir/hostile/out" | grep -c tmp)" -eq 0 ]; then
+        echo "ok   gnuplot-hostile-name: plotted, nothing ran"
+    else
+        echo "FAIL gnuplot-hostile-name: $(cat "$dir/err"); pwned: $([ -e "$pwned" ] && echo yes || echo no)"
+        failures=$((failures + 1))
+    fi
+else
+    echo "skip gnuplot-hostile-name: no gnuplot"
+fi
+
+# convergence: a smooth scene is refused with the reason, in one line; outputs are checked
+# before any work (a scene the solver refuses shows which comes first).
+scene smoothscene 'friction = 0.3
+Q = 0.1'
+expect convergence-smooth "the scene is smooth" -- convergence "$dir/smoothscene.toml" --out "$dir/t"
+expect convergence-out-checked-first "cannot create output folder" -- convergence "$dir/coarse.toml" --out "$dir/a-file"
+expect traction-out-checked-first "cannot create output folder" -- traction "$dir/coarse.toml" --out "$dir/a-file"
+expect figure-out-checked-first "cannot create output folder" -- figure 2a --method paper --n 2 --out "$dir/a-file"
+# gnuplot missing: one line saying so (before: gnuplot's lines and "is gnuplot installed?").
+mkdir -p "$dir/nopath"
+ln -sf "$(command -v env)" "$dir/nopath/env" 2>/dev/null
+expect_nognuplot() {
+    PATH="$dir/nopath" "$bin" traction "$dir/good.toml" --points 5 --out "$dir/t" >"$dir/out" 2>"$dir/err"
+    local status=$?
+    if [ $status -ne 2 ] || [ "$(wc -l <"$dir/err")" -ne 1 ] || ! grep -qF "gnuplot is not installed" "$dir/err"; then
+        echo "FAIL gnuplot-missing: status $status"; sed 's/^/    /' "$dir/err"; failures=$((failures + 1))
+    else
+        echo "ok   gnuplot-missing: $(cat "$dir/err")"
+    fi
+}
+expect_nognuplot
 
 # A valid scene must still work (the harness above is not failing everything).
 if ! "$bin" point "$dir/good.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi"' "$dir/out"; then

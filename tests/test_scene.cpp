@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -513,6 +514,107 @@ TEST(PhysicalScene, MicroGeometryMistakes) {
     EXPECT_TRUE(rejects(physical + "[cylinder1.normal]\nk = 1e14\nt = 1e6\n" + layer,
                         {"'cylinder1.micro_geometry'", "leave out its 'tangential' and 'normal'"}));
     EXPECT_TRUE(rejects(physical + layer + "Hx = 1\n", {"cylinder1.micro_geometry.Hx"}));
+}
+
+// Issue 11: every quantity derived from a physical scene is checked where it is made, and
+// the message names the keys it comes from (before: a Hertz width of 0 solved to xi1 = -nan,
+// a T of inf reached the solver).
+const std::string physical_base = "nu = 0.3\nfriction = 0.3\nQ = 0.1\n";
+
+TEST(PhysicalScene, HertzWidthBeyondDoublePrecisionNamesItsKeys) {
+    // a_H = 1.6e-450 m: below every double.
+    EXPECT_TRUE(rejects(physical_base + "E = 1e300\nR1 = 1e-300\nR2 = 1e-300\nP2 = 1e-300\n",
+                        {"Hertz half-width a_H", "= 0", "check 'E', 'R1', 'R2' and 'P2'"}));
+    // a_H = 5e-154 m is a double although 4 (1 - nu) R P underflows: taken, not refused.
+    const scene s = parse_scene(physical_base + "E = 1e10\nR1 = 1e-150\nR2 = inf\nP2 = 1e-150\n", source);
+    const double a_H = hertz_half_width(*s.physical, 1e-150);
+    const double expected = std::sqrt(4.0 * 0.7 / M_PI) * 1e-150 / std::sqrt(1e10 / 2.6);
+    EXPECT_NEAR(a_H, expected, 1e-14 * expected);
+    // The pressure scale P2/a_H overflows although a_H is a double.
+    EXPECT_TRUE(rejects(physical_base + "E = 1e300\nR1 = 1e-300\nR2 = inf\nP2 = 1e300\n",
+                        {"the pressure scale P/a_H", "check 'E', 'R1', 'R2' and 'P2'"}));
+}
+
+TEST(PhysicalScene, RoughnessBeyondDoublePrecisionNamesItsKeys) {
+    const std::string phys = physical_base + "E = 210e9\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\n";
+    // T = a mu/(8 (1 - nu) t) = inf at a_H for t = 1e-305.
+    EXPECT_TRUE(rejects(phys + "[cylinder1.tangential]\nk = 4e14\nt = 1e-305\n",
+                        {"'cylinder1.tangential': T = a mu/(8 (1 - nu) t) of (3.26) = inf",
+                         "check 'cylinder1.tangential.t' and 'E'"}));
+    // A = a sqrt(k/(2 t)) = inf (T = 1.4e306 is still a double).
+    EXPECT_TRUE(rejects(phys + "[cylinder2.normal]\nk = 1e308\nt = 1e-300\n",
+                        {"'cylinder2.normal': A = a sqrt(k/(2 t)) of (3.26) = inf",
+                         "check 'cylinder2.normal.k' and 'cylinder2.normal.t'"}));
+    EXPECT_TRUE(rejects(phys + "[cylinder2.normal]\nk = 1.7e308\nt = 1e-5\n",
+                        {"'cylinder2.normal': A = a sqrt(k/(2 t)) of (3.26) = inf", "'cylinder2.normal.k'"}));
+    // T, A written in a physical scene give t = inf at a_H.
+    EXPECT_TRUE(rejects(phys + "[cylinder1.normal]\nT = 1e-305\nA = 0.5\n",
+                        {"'cylinder1.normal': t = a mu/(8 (1 - nu) T) of (3.26) = inf", "'cylinder1.normal.T'"}));
+    EXPECT_TRUE(rejects(phys + "[cylinder1.normal]\nT = 0.5\nA = 1e300\n",
+                        {"'cylinder1.normal': k = 2 t (A/a)^2 of (3.26) = inf", "'cylinder1.normal.A'"}));
+    // The roughness at a trial width is checked too (the width search calls roughness_at).
+    const scene s = parse_scene(phys + "[cylinder1.tangential]\nk = 4e14\nt = 1e-290\n", source);
+    EXPECT_THROW((void)roughness_at(*s.physical, 1e20), input_error);
+}
+
+// The one underflow rule (text.hpp) in scene files: a nonzero literal below DBL_MIN is
+// refused with its key, line and column; a zero written any way is 0.
+TEST(Scene, UnderflowRefusedWhereverWritten) {
+    EXPECT_TRUE(rejects("friction = 1e-400\n", {"scene.toml:1:12:", "'friction' = 1e-400 is below 2.2250738585072014e-308",
+                                                 "it would be read as 0"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = -2.5e-310\n",
+                        {"scene.toml:2:5:", "'Q' = -2.5e-310 is below", "the subnormal -2.5e-310, with digits lost"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1]\ntangential = { T = 0.5, A = 0.000_000_1e-302 }\n",
+                        {"'cylinder1.tangential.A' = 0.000_000_1e-302 is below"}));
+    // A key holding non-ASCII text before the value on its line: toml++ counts columns in
+    // code points, the literal is still found.
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1]\ntangential = { \"\xc3\xa9\xc3\xa9\" = 0, T = 1e-999 }\n",
+                        {"'cylinder1.tangential.T' = 1e-999 is below"}));
+    for (const char* zero : {"0.0", "-0.0", "0e-400", "0.000e5", "+0.0"}) {
+        const scene s = parse_scene(std::string("friction = 0.3\nQ = ") + zero + "\n", source);
+        EXPECT_EQ(*s.Q, 0.0) << zero;
+    }
+    // The smallest normal double itself is a number.
+    EXPECT_EQ(*parse_scene("friction = 0.3\nQ = 2.2250738585072014e-308\n", source).Q, 2.2250738585072014e-308);
+}
+
+// Friction outside the range validation/test_stiff.cpp shows the solver resolves.
+TEST(Scene, FrictionWithinTheValidatedRange) {
+    EXPECT_TRUE(rejects("friction = 1e-13\n", {"'friction' = 1e-13 is outside [1e-12, 1e+12]"}));
+    EXPECT_TRUE(rejects("friction = 1.79e308\n", {"'friction' = 1.79e+308 is outside"}));
+    EXPECT_EQ(parse_scene("friction = 1e-12\n", source).friction, 1e-12);
+    EXPECT_EQ(parse_scene("friction = 1e12\n", source).friction, 1e12);
+}
+
+// A 1 MB key or value is shown cut, not whole.
+TEST(Scene, LongEchoesAreCut) {
+    const std::string key(1000000, 'k');
+    try {
+        (void)parse_scene("friction = 0.3\n" + key + " = 1\n", source);
+        ADD_FAILURE() << "accepted";
+    } catch (const input_error& e) {
+        const std::string message = e.what();
+        EXPECT_LT(message.size(), 300u);
+        EXPECT_NE(message.find("unknown key '" + std::string(60, 'k') + "...'"), std::string::npos) << message;
+    }
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = \"" + std::string(5000, 'm') + "\"\n", {"mmm..."}));
+    // A dotted key of 50 long parts (fuzz_scene's finding): the path shown is cut too.
+    std::string dotted;
+    for (int i = 0; i < 50; ++i) dotted += (i ? "." : "") + std::string(60, 'a' + i % 26);
+    try {
+        (void)parse_scene("friction = 0.3\n" + dotted + " = 1e-400\n", source);
+        ADD_FAILURE() << "accepted";
+    } catch (const input_error& e) {
+        EXPECT_LT(std::string(e.what()).size(), 500u) << e.what();
+    }
+}
+
+// read_scene names the files read: an output must not overwrite one of them.
+TEST(ReadScene, RecordsTheFilesRead) {
+    const std::string path = ::testing::TempDir() + "roughroll_files_read.toml";
+    std::ofstream(path) << "friction = 0.3\n";
+    EXPECT_EQ(read_scene(path).files, std::vector<std::string>{path});
+    std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "roughroll/problems/contact_width.hpp"
 #include "roughroll/model/physical_scene.hpp"
@@ -22,6 +23,17 @@ struct scene_options {
 };
 
 void add_scene_options(CLI::App* cmd, scene_options& o);
+
+// Numeric options read by the one rule of text.hpp: an empty value, trailing text or a
+// literal that underflows (1e-400) is a parse error naming the option; CLI11's own
+// conversion ignores "" and reads 1e-400 as 0.
+CLI::Option* add_number(CLI::App* cmd, const std::string& name, std::optional<double>& value, const std::string& help);
+CLI::Option* add_number(CLI::App* cmd, const std::string& name, double& value, const std::string& help);
+CLI::Option* add_integer(CLI::App* cmd, const std::string& name, std::optional<int>& value, const std::string& help);
+CLI::Option* add_integer(CLI::App* cmd, const std::string& name, int& value, const std::string& help);
+
+// JSON as printed (two-space indent), invalid UTF-8 replaced rather than thrown on.
+std::string dump(const nlohmann::json& j);
 scene load_scene(const scene_options& o);  // the file, with the command line's overrides
 
 // For a physical scene: the contact width for its load (find_width, with lambda as the

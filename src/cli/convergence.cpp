@@ -64,18 +64,29 @@ double relative(double value, double reference) {
 
 void add_convergence_options(CLI::App* cmd, convergence_options& o) {
     cmd->add_option("SCENE", o.scene.path, "scene file (TOML)")->required();
-    cmd->add_option("--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
+    add_number(cmd, "--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
     cmd->add_option("--out", o.out, "output folder for the CSV and the plot");
-    cmd->add_option("--max-seconds", o.max_seconds, "stop a method's ladder once a point takes longer")
+    add_number(cmd, "--max-seconds", o.max_seconds, "stop a method's ladder once a point takes longer")
         ->check(CLI::Range(0.001, 600.0));
     cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
 }
 
 int run_convergence(const convergence_options& o) {
     scene s = load_scene(o.scene);
-    settle_width(s);  // a physical scene: the roughness at the width for its load
     const double Q = load_of(s, o.Q);
     if (Q == 0.0) throw input_error("Q = 0 is solved exactly without a discretisation: nothing to converge");
+    // The outputs, checked and opened before the minutes of work.
+    const std::string name = "convergence-" + std::filesystem::path(o.scene.path).stem().string();
+    const auto stem = output_stem(o.out, name);
+    const auto csv = std::filesystem::path(stem.string() + ".csv");
+    const auto script = std::filesystem::path(stem.string() + ".gp");
+    output_file csv_file(csv, s.files), script_file(script, s.files);
+    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
+
+    settle_width(s);  // a physical scene: the roughness at the width for its load
+    if (s.surfaces.smooth())
+        throw input_error("the scene is smooth (no roughness term" + std::string(s.physical ? " at its width" : "") +
+                          "): every method gives Carter's closed form exactly at every n, nothing to converge");
 
     const values ref = solve_point(s, Q, 512, method::extrapolated);
     std::printf("reference (extrapolated, n = 512): P_H/P2 = %.15g, c0 = %.15g, xi = %.15g\n", ref.lambda, ref.c0,
@@ -111,12 +122,8 @@ int run_convergence(const convergence_options& o) {
         }
     }
 
-    const std::string name = "convergence-" + std::filesystem::path(o.scene.path).stem().string();
-    const auto stem = output_stem(o.out, name);
-    const auto csv = std::filesystem::path(stem.string() + ".csv");
-    std::ofstream out(csv);
-    if (!out) throw input_error("cannot write '" + csv.string() + "'");
-    out << "# roughroll convergence " << o.scene.path << ", Q = " << shortest(Q) << "; errors against the extrapolated "
+    std::ostream& out = csv_file.stream();
+    out << "# roughroll convergence " << one_line(o.scene.path) << ", Q = " << shortest(Q) << "; errors against the extrapolated "
         << "method at n = 512 (relative for P_H/P2 and xi, absolute for c0)\n"
         << "method,n,seconds,err_lambda,err_c0,err_xi,err_max,estimate_xi\n";
     for (const auto& m : rows) {
@@ -126,12 +133,10 @@ int run_convergence(const convergence_options& o) {
             << shortest(ec) << ',' << shortest(ex) << ',' << shortest(std::max({el, ec, ex})) << ','
             << shortest(m.estimate_xi / std::fabs(ref.xi)) << '\n';
     }
-    if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
+    csv_file.commit();
 
-    const auto script = std::filesystem::path(stem.string() + ".gp");
-    std::ofstream gp(script);
-    if (!gp) throw input_error("cannot write '" + script.string() + "'");
-    gp << "set datafile separator ','\nset logscale xy\nset grid\nset key top right box opaque\n"
+    std::ostream& gp = script_file.stream();
+    gp << gnuplot_output_stem(stem) << "set datafile separator ','\nset logscale xy\nset grid\nset key top right box opaque\n"
        << "set format y '10^{%L}'\n"
        << "set xlabel 'run time of one point (s): normal solve, Brent search for c_0, checks'\n"
        << "set ylabel 'largest error in P_H/P_2, c_0, {/Symbol x} (relative; c_0 absolute)'\n"
@@ -139,7 +144,7 @@ int run_convergence(const convergence_options& o) {
     const char* terminals[][2] = {{"svg size 900,640 enhanced font 'Helvetica,13'", ".svg"},
                                   {"pngcairo size 1200,850 enhanced font 'Helvetica,13'", ".png"}};
     for (const auto& t : terminals) {
-        gp << "set terminal " << t[0] << "\nset output '" << gnuplot_path(stem.string() + t[1]) << "'\nplot ";
+        gp << "set terminal " << t[0] << "\nset output out.'" << t[1] << "'\nplot ";
         const char* sep = "";
         for (method how : {method::paper, method::product, method::extrapolated}) {
             gp << sep << "'" << gnuplot_path(csv) << "' using 3:(strcol(1) eq '" << to_string(how)
@@ -149,9 +154,9 @@ int run_convergence(const convergence_options& o) {
         gp << "\n";
     }
     gp << "unset output\n";
-    if (!gp.flush()) throw input_error("cannot write '" + script.string() + "'");
-    if (o.plot) run_gnuplot(script);
-    std::printf("written: %s (.csv, .gp%s)\n", stem.string().c_str(), o.plot ? ", .svg, .png" : "");
+    script_file.commit();
+    if (o.plot) run_gnuplot(script, stem, {".svg", ".png"});
+    std::printf("written: %s (.csv, .gp%s)\n", one_line(stem.string()).c_str(), o.plot ? ", .svg, .png" : "");
     return 0;
 }
 

@@ -60,13 +60,12 @@ std::vector<figure_curve> curves_of(const std::string& which) {
 
 // The tables of docs/reproduction.md: P_H/P2 and xi/f at four loads per curve, at n and
 // 2n; their difference is each value's convergence estimate.
-void write_table(const std::filesystem::path& file, const std::string& which, const std::vector<figure_curve>& curves,
+void write_table(output_file& file, const std::string& which, const std::vector<figure_curve>& curves,
                  const solver_options& options) {
     const double ratios[] = {0.1, 0.5, 0.9, 0.99};
     solver_options fine = options;
     fine.n = 2 * options.nodes();  // run_figure checked 2n <= max_nodes
-    std::ofstream md(file);
-    if (!md) throw input_error("cannot write '" + file.string() + "'");
+    std::ostream& md = file.stream();
     md << "Fig. " << which << ", method " << to_string(options.how) << ": value at n = " << fine.nodes()
        << ", and in brackets its difference from n = " << options.nodes() << ".\n\n"
        << "| curve | P_H/P2 |";
@@ -88,15 +87,13 @@ void write_table(const std::filesystem::path& file, const std::string& which, co
                  coarse.point(r * figure_friction).xi / figure_friction);
         md << "\n";
     }
-    if (!md.flush()) throw input_error("cannot write '" + file.string() + "'");
+    file.commit();
 }
 
-void write_gnuplot(const std::filesystem::path& script, const std::filesystem::path& csv,
-                   const std::filesystem::path& stem, const std::string& which,
-                   const std::vector<figure_curve>& curves) {
-    std::ofstream gp(script);
-    if (!gp) throw input_error("cannot write '" + script.string() + "'");
-    gp << "# Fig. " << which << " of Pauk & Wozniak, written by roughroll figure " << which << "\n"
+void write_gnuplot(output_file& script, const std::filesystem::path& csv, const std::filesystem::path& stem,
+                   const std::string& which, const std::vector<figure_curve>& curves) {
+    std::ostream& gp = script.stream();
+    gp << gnuplot_output_stem(stem) << "# Fig. " << which << " of Pauk & Wozniak, written by roughroll figure " << which << "\n"
        << "set datafile separator ','\n"
        << "set key top left box opaque font ',10'\n"
        << "set grid\n"
@@ -108,7 +105,7 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
                                   {"pngcairo size 1200,850 enhanced font 'Helvetica,13'", ".png"}};
     for (const auto& t : terminals) {
         gp << "set terminal " << t[0] << "\n"
-           << "set output '" << gnuplot_path(stem.string() + t[1]) << "'\n"
+           << "set output out.'" << t[1] << "'\n"
            << "plot '" << gnuplot_path(csv) << "' using 2:3 with lines lw 2 title '" << curves[0].legend << "'";
         for (std::size_t i = 1; i < curves.size(); ++i)
             gp << ", \\\n     '' using " << 2 + 2 * i << ":" << 3 + 2 * i << " with lines lw 2 title '"
@@ -119,7 +116,7 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
         gp << "\n";
     }
     gp << "unset output\n";
-    if (!gp.flush()) throw input_error("cannot write '" + script.string() + "'");
+    script.commit();
 }
 
 }  // namespace
@@ -127,8 +124,8 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
 void add_figure_options(CLI::App* cmd, figure_options& o) {
     cmd->add_option("WHICH", o.which, "2a or 2b")->required()->check(CLI::IsMember({"2a", "2b"}));
     cmd->add_option("--out", o.out, "output folder (created if missing)");
-    cmd->add_option("--points", o.points, "creep points per curve");
-    cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (default: the method's, see README)");
+    add_integer(cmd, "--points", o.points, "creep points per curve");
+    add_integer(cmd, "--n", o.n, "Gauss-Chebyshev nodes (default: the method's, see README)");
     cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter");
     cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
 }
@@ -144,6 +141,11 @@ int run_figure(const figure_options& o) {
         throw input_error("the figure's table needs 2n <= " + std::to_string(max_nodes) +
                           " for its convergence estimates; use n <= " + std::to_string(max_nodes / 2));
     const auto curves = curves_of(o.which);
+    // The outputs, checked and opened before any work.
+    const auto stem = output_stem(o.out, "fig" + o.which);
+    const auto csv = std::filesystem::path(stem.string() + ".csv");
+    output_file csv_file(csv, {}), table_file(stem.string() + "-table.md", {}), script_file(stem.string() + ".gp", {});
+    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, {});
 
     // Each curve swept in c0 (one linear solve per point, no root search): all curves and
     // Carter's share the c0 grid, each has its own loads Q(c0).
@@ -153,10 +155,7 @@ int run_figure(const figure_options& o) {
         results.push_back(swept_curve(problem, o.points));
     }
 
-    const auto stem = output_stem(o.out, "fig" + o.which);
-    const auto csv = std::filesystem::path(stem.string() + ".csv");
-    std::ofstream out(csv);
-    if (!out) throw input_error("cannot write '" + csv.string() + "'");
+    std::ostream& out = csv_file.stream();
     out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes()
         << "; curves swept in c0, each with its own Q(c0)\n";
     out << "c0";
@@ -175,13 +174,12 @@ int run_figure(const figure_options& o) {
         out << ',' << shortest(1.0 - rho * rho) << ',' << shortest(M_2_PI * (1.0 - rho)) << ',' << (hold ? 1 : 0)
             << '\n';
     }
-    if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
+    csv_file.commit();
 
-    write_table(std::filesystem::path(stem.string() + "-table.md"), o.which, curves, options);
-    const auto script = std::filesystem::path(stem.string() + ".gp");
-    write_gnuplot(script, csv, stem, o.which, curves);
+    write_table(table_file, o.which, curves, options);
+    write_gnuplot(script_file, csv, stem, o.which, curves);
     if (!o.plot) return 0;
-    run_gnuplot(script);
+    run_gnuplot(stem.string() + ".gp", stem, {".svg", ".png"});
     return 0;
 }
 

@@ -1,5 +1,6 @@
 // The roughroll command line: scene files in, creep points, curves and figures out.
 // Exit status: 0 success, 2 invalid input or a case beyond reach (one line on stderr).
+#include <charconv>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -9,6 +10,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/output_files.hpp"
+#include "roughroll/base/text.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -17,9 +20,52 @@
 
 namespace roughroll::cli {
 
+namespace {
+// A whole decimal integer (no sign but '-', no blanks, nothing after it) in int's range.
+int integer_option(const std::string& name, const std::string& text) {
+    int n = 0;
+    const char* end = text.data() + text.size();
+    const std::from_chars_result r = std::from_chars(text.data(), end, n);
+    if (text.empty() || r.ec != std::errc() || r.ptr != end)
+        throw CLI::ValidationError(name, "'" + echo(text) + "' is not an integer in int's range");
+    return n;
+}
+
+double number_option(const std::string& name, const std::string& text) {
+    std::string problem;
+    // A sign '+' is allowed on the command line (--Q +0.1), as CLI11 allowed it.
+    const std::string_view literal = text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+'
+                                         ? std::string_view(text).substr(1)
+                                         : std::string_view(text);
+    const std::optional<double> x = parse_double(literal, problem);
+    if (!x) throw CLI::ValidationError(name, problem.empty() ? "'" + echo(text) + "' is not a number" : problem);
+    return *x;
+}
+}  // namespace
+
+CLI::Option* add_number(CLI::App* cmd, const std::string& name, double& value, const std::string& help) {
+    return cmd->add_option_function<std::string>(
+        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help);
+}
+
+CLI::Option* add_number(CLI::App* cmd, const std::string& name, std::optional<double>& value, const std::string& help) {
+    return cmd->add_option_function<std::string>(
+        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help);
+}
+
+CLI::Option* add_integer(CLI::App* cmd, const std::string& name, std::optional<int>& value, const std::string& help) {
+    return cmd->add_option_function<std::string>(
+        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help);
+}
+
+CLI::Option* add_integer(CLI::App* cmd, const std::string& name, int& value, const std::string& help) {
+    return cmd->add_option_function<std::string>(
+        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help);
+}
+
 void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
-    cmd->add_option("--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
+    add_integer(cmd, "--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
     cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
 }
 
@@ -59,7 +105,7 @@ int run_point(const scene_options& o, std::optional<double> Q_option, bool json)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const point_report report{s.label, c.normal(), solution, seconds, c.estimate(solution), si_of(s, width, solution)};
     if (json)
-        std::cout << to_json(report).dump(2) << "\n";
+        std::cout << dump(to_json(report)) << "\n";
     else
         write_summary(std::cout, report);
     return 0;
@@ -67,23 +113,39 @@ int run_point(const scene_options& o, std::optional<double> Q_option, bool json)
 
 int run_curve(const scene_options& o, int points, bool sweep, const std::string& csv) {
     scene s = load_scene(o);
+    // The output, checked and opened before any work; written whole or not at all.
+    std::optional<output_file> file;
+    if (!csv.empty()) file.emplace(csv, s.files);
     const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver);
     const auto curve = sweep ? swept_curve(c, points) : creep_curve(c, curve_loads(points, s.friction));
     std::optional<si_context> si;
     if (width) si = si_context{*s.physical, *width};
-    if (csv.empty()) {
+    if (!file) {
         write_curve_csv(std::cout, curve, si);
         return 0;
     }
-    std::ofstream out(csv);
-    if (!out) throw input_error("cannot write '" + csv + "'");
-    write_curve_csv(out, curve, si);
-    if (!out.flush()) throw input_error("cannot write '" + csv + "'");
+    write_curve_csv(file->stream(), curve, si);
+    file->commit();
     return 0;
 }
 
 }  // namespace
+
+namespace {
+// One line on stderr: valid UTF-8, no control character (a path or an option may hold any
+// bytes, which must not reach the terminal raw), and not longer than a screenful.
+int report(const char* kind, const std::string& message, int status) {
+    std::cerr << "roughroll: " << kind << ": " << echo(message, 2000) << "\n";
+    return status;
+}
+}  // namespace
+
+std::string dump(const nlohmann::json& j) {
+    // Every text in roughroll's JSON is valid UTF-8 already (one_line at its source); replace
+    // is the last guard, so that a stray byte can never turn into exit 70 (type_error 316).
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 int main(int argc, char** argv) {
     CLI::App app{"roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness\n"
@@ -95,7 +157,7 @@ int main(int argc, char** argv) {
     bool json = false;
     CLI::App* point = app.add_subcommand("point", "one creep point: c0, xi and P_H/P2 for a given Q");
     add_scene_options(point, point_scene);
-    point->add_option("--Q", Q, "tangential load P1/P2 (overrides the scene's Q)");
+    add_number(point, "--Q", Q, "tangential load P1/P2 (overrides the scene's Q)");
     point->add_flag("--json", json, "one JSON object on stdout");
 
     scene_options curve_scene;
@@ -103,7 +165,7 @@ int main(int argc, char** argv) {
     std::string csv;
     CLI::App* curve = app.add_subcommand("curve", "a creep curve, Q/f from 0 to 1, as CSV");
     add_scene_options(curve, curve_scene);
-    curve->add_option("--points", points, "number of loads (Q/f dense near 1)");
+    add_integer(curve, "--points", points, "number of loads (Q/f dense near 1)");
     curve->add_option("--csv", csv, "output file (default: stdout)");
     bool sweep = false;
     curve->add_flag("--sweep", sweep,
@@ -133,28 +195,26 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
-        std::cerr << "roughroll: error: " << e.what() << "\n";
-        return 2;
+        return report("error", e.what(), 2);
     }
 
     try {
-        if (*point) return run_point(point_scene, Q, json);
-        if (*curve) return run_curve(curve_scene, points, sweep, csv);
-        if (*figure) return run_figure(fig);
-        if (*convergence) return run_convergence(conv);
-        if (*traction) return run_traction(trac);
-        if (*roughness_cmd) return run_roughness(rough);
+        int status = 2;
+        if (*point) status = run_point(point_scene, Q, json);
+        else if (*curve) status = run_curve(curve_scene, points, sweep, csv);
+        else if (*figure) status = run_figure(fig);
+        else if (*convergence) status = run_convergence(conv);
+        else if (*traction) status = run_traction(trac);
+        else if (*roughness_cmd) status = run_roughness(rough);
+        finish_stdout();  // a full disk or a closed pipe is an error, not exit 0 with half a table
+        return status;
     } catch (const roughroll::error& e) {
-        std::cerr << "roughroll: error: " << e.what() << "\n";
-        return 2;
+        return report("error", e.what(), 2);
     } catch (const std::bad_alloc&) {
-        std::cerr << "roughroll: error: out of memory\n";
-        return 2;
+        return report("error", "out of memory", 2);
     } catch (const std::exception& e) {
-        std::cerr << "roughroll: internal error: " << e.what() << "\n";
-        return 70;
+        return report("internal error", e.what(), 70);
     }
-    return 2;
 }
 
 }  // namespace roughroll::cli

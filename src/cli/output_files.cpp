@@ -1,32 +1,217 @@
 #include "cli/output_files.hpp"
 
-#include <cstdlib>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <system_error>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace roughroll::cli {
 
-std::filesystem::path output_stem(const std::string& dir, const std::string& name) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw input_error("cannot create output folder '" + dir + "': " + ec.message());
-    return std::filesystem::absolute(std::filesystem::path(dir) / name);
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string in_quotes(const fs::path& p) { return "'" + one_line(p.string()) + "'"; }
+
+std::string reason(int error) { return error != 0 ? std::strerror(error) : "write failed"; }
+
+bool has_control(const std::string& text) {
+    return std::any_of(text.begin(), text.end(), [](char c) {
+        return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+    });
 }
 
-std::string gnuplot_path(const std::filesystem::path& p) {
+// The path as one single-quoted word for the shell of popen.
+std::string shell_word(const std::string& text) {
+    std::string out = "'";
+    for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+// A temporary file beside `path` that did not exist, created here (O_EXCL) and open for
+// writing; -1 with `error` set when the folder cannot take it.
+int new_temporary(const fs::path& path, fs::path& name, int& error) {
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    for (int k = 0; k < 100; ++k) {
+        // The file name cut to 200 bytes: the temporary name must stay within NAME_MAX (255).
+        name = folder / ("." + path.filename().string().substr(0, 200) + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(k));
+        const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) return fd;
+        if (errno != EEXIST) break;
+    }
+    error = errno;
+    name.clear();
+    return -1;
+}
+
+// All of `text` to fd, through short writes and interruptions; 0 or the errno of the failure.
+int write_all(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n < 0 ? errno : EIO;
+        done += static_cast<std::size_t>(n);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void check_output(const fs::path& path, const std::vector<std::string>& inputs) {
+    if (has_control(path.string()))
+        throw input_error("output path " + in_quotes(path) +
+                          " holds a control character: refused (gnuplot would take a newline in it for the end of a command)");
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw input_error("cannot write " + in_quotes(path) + ": it is a directory");
+    for (const std::string& input : inputs) {
+        if (fs::equivalent(path, input, ec) && !ec)
+            throw input_error("output " + in_quotes(path) + " is the input file " + in_quotes(input) +
+                              ": refused, it would be overwritten");
+    }
+}
+
+fs::path output_stem(const std::string& dir, const std::string& name) {
+    // Checked before the folder is made: a newline must not create a folder either.
+    if (has_control(dir))
+        throw input_error("output folder " + in_quotes(dir) + " holds a control character: refused (gnuplot would take "
+                          "a newline in it for the end of a command)");
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw input_error("cannot create output folder " + in_quotes(dir) + ": " + ec.message());
+    const fs::path stem = fs::absolute(fs::path(dir) / name);
+    check_output(stem, {});
+    return stem;
+}
+
+output_file::output_file(fs::path path, const std::vector<std::string>& inputs) : path_(std::move(path)) {
+    check_output(path_, inputs);
+    std::error_code ec;
+    // A symbolic link is followed: the file it names is replaced, the link stays.
+    if (fs::is_symlink(path_, ec)) {
+        const fs::path target = fs::canonical(path_, ec);
+        if (!ec) path_ = target;
+    }
+    const fs::file_status status = fs::status(path_, ec);
+    if (!ec && fs::exists(status) && !fs::is_regular_file(status)) {
+        fd_ = ::open(path_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (fd_ < 0) fail(errno);
+        return;
+    }
+    int error = 0;
+    fd_ = new_temporary(path_, temporary_, error);
+    if (fd_ < 0) fail(error);
+    // The new file keeps the mode of the one it replaces.
+    if (fs::is_regular_file(status)) ::fchmod(fd_, static_cast<mode_t>(status.permissions()));
+}
+
+output_file::~output_file() {
+    if (fd_ >= 0) ::close(fd_);
+    if (committed_ || temporary_.empty()) return;
+    std::error_code ec;
+    fs::remove(temporary_, ec);  // nothing more to do if that fails: the path itself is intact
+}
+
+void output_file::fail(int error) const {
+    throw input_error("cannot write " + in_quotes(path_) + ": " + reason(error));
+}
+
+void output_file::commit() {
+    const int error = write_all(fd_, text_.str());
+    if (error != 0) fail(error);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail(errno);  // NFS and some full disks report here
+    if (!temporary_.empty() && std::rename(temporary_.c_str(), path_.c_str()) != 0) fail(errno);
+    committed_ = true;
+}
+
+void finish_stdout() {
+    errno = 0;
+    std::cout.flush();
+    const bool cout_ok = static_cast<bool>(std::cout);
+    const int error = errno;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) || !cout_ok)
+        throw input_error("cannot write standard output: " + reason(errno != 0 ? errno : error));
+}
+
+std::string gnuplot_path(const fs::path& p) {
     std::string out;
     for (const char c : p.string()) out += c == '\'' ? std::string("''") : std::string(1, c);
     return out;
 }
 
-void run_gnuplot(const std::filesystem::path& script) {
-    // The script's path as one single-quoted word for the shell of std::system.
-    std::string quoted = "'";
-    for (const char c : script.string()) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    const std::string command = "gnuplot " + quoted + "'";
-    if (std::system(command.c_str()) != 0)
-        throw numerical_error("gnuplot failed on '" + script.string() + "' (is gnuplot installed?); the CSV is written");
+std::string gnuplot_output_stem(const fs::path& stem) {
+    return "# The images are out.svg and out.png; gnuplot -e \"out='OTHER'\" writes OTHER.svg, OTHER.png.\n"
+           "if (!exists(\"out\")) out = '" + gnuplot_path(stem) + "'\n";
+}
+
+void run_gnuplot(const fs::path& script, const fs::path& stem, const std::vector<std::string>& extensions) {
+    int error = 0;
+    fs::path temporary;
+    const int fd = new_temporary(stem, temporary, error);
+    if (fd >= 0) ::close(fd);
+    if (fd < 0) throw input_error("cannot write " + in_quotes(stem.string() + extensions.front()) + ": " + reason(error));
+    std::vector<fs::path> images;
+    for (const std::string& ext : extensions) images.push_back(temporary.string() + ext);
+    const auto clean = [&]() {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        for (const fs::path& image : images) fs::remove(image, ec);
+    };
+    // gnuplot's messages are read, not passed to the terminal: one line of them is the reason.
+    const std::string command = "gnuplot -e " + shell_word("out='" + gnuplot_path(temporary) + "'") + " " +
+                                shell_word(script.string()) + " 2>&1";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr) {
+        clean();
+        throw numerical_error("cannot run gnuplot: " + reason(errno) + "; the CSV and the script are written");
+    }
+    std::string output;
+    char buffer[4096];
+    for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+        if (output.size() < (1u << 20)) output.append(buffer, got);
+    const int status = ::pclose(pipe);
+    if (status != 0) {
+        clean();
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+            throw numerical_error("gnuplot is not installed (or not on PATH): the CSV and the script " +
+                                  in_quotes(script) + " are written; --no-plot skips the plot");
+        // gnuplot's last non-empty line is its error ("... line 13: all points y value undefined!").
+        std::string last;
+        std::size_t end = output.size();
+        while (last.empty() && end > 0) {
+            const std::size_t begin = output.rfind('\n', end - 1);
+            const std::size_t from = begin == std::string::npos ? 0 : begin + 1;
+            last = output.substr(from, end - from);
+            last.erase(0, last.find_first_not_of(" \t\r"));
+            end = begin == std::string::npos ? 0 : begin;
+        }
+        throw numerical_error("gnuplot failed on " + in_quotes(script) + ": " +
+                              (last.empty() ? "exit status " + std::to_string(status) : echo(last, 300)) +
+                              "; the CSV is written");
+    }
+    for (std::size_t i = 0; i < extensions.size(); ++i) {
+        const fs::path target = stem.string() + extensions[i];
+        if (std::rename(images[i].c_str(), target.c_str()) != 0) {
+            const int e = errno;
+            clean();
+            throw input_error("cannot write " + in_quotes(target) + ": " + reason(e));
+        }
+    }
+    std::error_code ec;
+    fs::remove(temporary, ec);
 }
 
 }  // namespace roughroll::cli

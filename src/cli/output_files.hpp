@@ -1,19 +1,68 @@
-// What the plotting subcommands share: an output folder, paths quoted for gnuplot and
-// the shell, and the gnuplot run itself.
+// What the subcommands that write files share: output paths checked before any work, files
+// written whole or not at all, paths quoted for gnuplot and the shell, and the gnuplot run.
+//
+// A failed write is never silent (issue 11): every file is written to a temporary name in
+// its own folder and renamed onto its path only once every byte is flushed, so a full disk
+// or an error midway leaves an existing file as it was; an output path that is one of the
+// inputs is refused; a path with a control character is refused, because gnuplot reads a
+// newline in a path as the end of a command (and the text after it as the next command).
 #pragma once
 
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace roughroll::cli {
 
-// Creates `dir` if needed and returns the absolute path dir/name (without extension).
+// input_error unless `path` can be an output: no control character in it, not a directory,
+// not one of `inputs` (the same file, by fs::equivalent).
+void check_output(const std::filesystem::path& path, const std::vector<std::string>& inputs);
+
+// Creates `dir` if needed and returns the absolute path dir/name (without extension),
+// checked by check_output; a control character in `dir` is refused before the folder is made.
 std::filesystem::path output_stem(const std::string& dir, const std::string& name);
 
-// A path inside a single-quoted gnuplot string.
+// One output file, written whole or not at all: the text is kept in memory until commit(),
+// which writes it to a new temporary file beside `path` (".NAME.tmp-PID-K", created by the
+// constructor, so that an unwritable folder is found before any work), closes it and renames
+// it onto `path`. Until then `path` is untouched; the destructor removes an uncommitted
+// temporary file. A path that exists and is not a regular file (/dev/stdout, /dev/full, a
+// FIFO) is written in place. Every failure is an input_error "cannot write 'PATH': <strerror>".
+class output_file {
+public:
+    output_file(std::filesystem::path path, const std::vector<std::string>& inputs);
+    output_file(const output_file&) = delete;
+    output_file& operator=(const output_file&) = delete;
+    ~output_file();
+
+    std::ostream& stream() { return text_; }
+    void commit();
+
+private:
+    [[noreturn]] void fail(int error) const;
+
+    std::filesystem::path path_;
+    std::filesystem::path temporary_;  // empty when written in place
+    int fd_ = -1;
+    std::ostringstream text_;
+    bool committed_ = false;
+};
+
+// stdout flushed and checked: input_error "cannot write standard output: <strerror>".
+void finish_stdout();
+
+// A path inside a single-quoted gnuplot string (check_output has refused control characters).
 std::string gnuplot_path(const std::filesystem::path& p);
 
-// Runs gnuplot on the script; numerical_error when it fails (the data files are written).
-void run_gnuplot(const std::filesystem::path& script);
+// The lines a gnuplot script starts with when it writes stem.EXT: `out` is the stem, unless
+// the command line set it (run_gnuplot does, to a temporary stem).
+std::string gnuplot_output_stem(const std::filesystem::path& stem);
+
+// Runs gnuplot on the script, whose images `stem` + each of `extensions` are written under
+// a temporary stem and renamed into place when gnuplot succeeds. A failure is a
+// numerical_error with gnuplot's own last message on one line (the data files are written).
+void run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& stem,
+                 const std::vector<std::string>& extensions);
 
 }  // namespace roughroll::cli

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "roughroll/io/micro_geometry_input.hpp"
 #include "roughroll/layer/roughness_parameters.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace roughroll::cli {
 namespace {
@@ -32,7 +33,7 @@ nlohmann::json averages_json(const layer_averages& m) {
 
 void write_json(std::ostream& out, const std::string& spec, const micro_geometry& g, const roughness_parameters& p) {
     nlohmann::json j;
-    j["spec"] = spec;
+    j["spec"] = one_line(spec);  // a file name is any bytes; JSON needs UTF-8
     j["profile"] = to_string(g.bottom.kind);
     j["micro_shape"] = to_string(g.shape);
     j["decay"] = to_string(g.decay);
@@ -54,19 +55,19 @@ void write_json(std::ostream& out, const std::string& spec, const micro_geometry
     j["evaluations"] = p.evaluations;
     j["units"] = {{"k", "Pa/m"}, {"t", "Pa m"}, {"alpha", "1/m"}, {"a", "m"}, {"a3_h1", "1"},
                   {"a33", "1/m"}, {"a_h1", "m"}, {"a_h1_squared", "m"}};
-    out << j.dump(2) << "\n";
+    out << dump(j) << "\n";
 }
 
 void write_text(std::ostream& out, const std::string& spec, const micro_geometry& g, const roughness_parameters& p) {
     const layer& m = g.material;
-    out << "roughness parameters (2.11)-(2.15) of " << spec << "\n";
+    out << "roughness parameters (2.11)-(2.15) of " << one_line(spec) << "\n";
     out << "  layer: lambda0 = " << number(m.lambda0) << " Pa, mu0 = " << number(m.mu0) << " Pa, H = " << number(m.H)
         << " m, l = " << number(m.l) << " m\n";
     out << "  profile " << to_string(g.bottom.kind);
     if (g.bottom.kind == profile_kind::sine || g.bottom.kind == profile_kind::sawtooth)
         out << " (delta = " << number(g.bottom.delta) << " m)";
     if (g.bottom.kind == profile_kind::measured)
-        out << " (" << g.bottom.measured.x1.size() << " samples from " << g.bottom.measured.source << ")";
+        out << " (" << g.bottom.measured.x1.size() << " samples from " << one_line(g.bottom.measured.source) << ")";
     out << ", micro-shape " << to_string(g.shape) << ", decay " << to_string(g.decay) << ", factor of (2.12) "
         << to_string(g.factor_2_12) << "\n\n";
     const auto row = [&out](const char* name, const char* unit, double t, double te, double n, double ne) {

@@ -48,11 +48,15 @@ void smooth_tractions(double r, double Q, double f, double& p, double& p1) {
 
 // Text inside a double-quoted gnuplot string with enhanced text on: the enhanced-text
 // control characters are escaped (\\_ in the script reaches the text processor as \_),
-// so that "T_1^(1)" prints as written; " and \ are escaped for the string itself.
+// so that "T_1^(1)" prints as written; " and \ are escaped for the string itself, and a
+// backquote is written as its octal escape \140: gnuplot runs `...` as a shell command
+// even inside a double-quoted string (a label or a file name must not run anything).
 std::string gnuplot_text(const std::string& text) {
     std::string out;
     for (const char c : one_line(text)) {
-        if (c == '"') {
+        if (c == '`') {
+            out += "\\140";
+        } else if (c == '"') {
             out += "\\\"";
         } else if (c == '\\') {
             out += "\\\\\\\\";
@@ -87,10 +91,8 @@ struct plot_facts {
     bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
 };
 
-void write_gnuplot(const std::filesystem::path& script, const std::filesystem::path& csv,
-                   const std::filesystem::path& stem, const plot_facts& k) {
-    std::ofstream gp(script);
-    if (!gp) throw input_error("cannot write '" + script.string() + "'");
+void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std::filesystem::path& stem,
+                   const plot_facts& k) {
     const double f = k.f;
     const bool negative = k.Q < 0.0;  // the mirror case: p1 follows -f p on the slip zone
     // y range of the tractions: the pressure on top with room for the key, -f p below.
@@ -105,6 +107,7 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
                                  (k.checks_hold ? "" : "   (checks (3.3), (3.4) VIOLATED)");
     gp << "# Tractions over the contact, written by roughroll traction. Columns of the CSV:\n"
        << "# 1 r, 2 p, 3 p1, 4 f p, 5 -f p, 6 zone, 7 slip velocity v, 8 p (Hertz), 9 p1 (Carter)\n"
+       << gnuplot_output_stem(stem)
        << "set datafile separator ','\n"
        << "c0 = " << shortest(k.c0) << "\n"
        << "set xrange [-1:1]\n"
@@ -116,7 +119,7 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
                                   {"pngcairo size 1300,990 enhanced font 'Helvetica,15'", ".png"}};
     for (const auto& t : terminals) {
         gp << "\nset terminal " << t[0] << "\n"
-           << "set output '" << gnuplot_path(stem) << t[1] << "'\n"
+           << "set output out.'" << t[1] << "'\n"
            << "set multiplot title \"" << k.title << "\\n" << subtitle << "\"\n";
 
         // Upper panel: the tractions, the zones named above the frame.
@@ -167,15 +170,14 @@ void write_gnuplot(const std::filesystem::path& script, const std::filesystem::p
         gp << "plot " << data << curve(7, "lw 3 lc rgb '#2ca02c'", "") << "\n"
            << "unset label 3\nunset object 1\nunset arrow 1\nunset multiplot\nset output\n";
     }
-    if (!gp.flush()) throw input_error("cannot write '" + script.string() + "'");
 }
 
 }  // namespace
 
 void add_traction_options(CLI::App* cmd, traction_options& o) {
     add_scene_options(cmd, o.scene);
-    cmd->add_option("--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
-    cmd->add_option("--points", o.points, "grid points on [-1, 1] (default 401)");
+    add_number(cmd, "--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
+    add_integer(cmd, "--points", o.points, "grid points on [-1, 1] (default 401)");
     cmd->add_option("--out", o.out, "output folder, created if missing (default: figures)");
     cmd->add_option("--name", o.name, "file stem after 'traction-' (default: the scene file's stem)");
     cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
@@ -183,14 +185,26 @@ void add_traction_options(CLI::App* cmd, traction_options& o) {
 
 int run_traction(const traction_options& o) {
     if (o.points < 3 || o.points > 100000) throw input_error("--points must lie in [3, 100000]");
-    const std::string name = o.name.empty() ? std::filesystem::path(o.scene.path).stem().string() : o.name;
+    const bool named = !o.name.empty();
+    const std::string name = named ? o.name : std::filesystem::path(o.scene.path).stem().string();
     const bool control = std::any_of(name.begin(), name.end(), [](char ch) {
         return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
     });
-    if (name.empty() || control || name.find('/') != std::string::npos || name == "." || name == "..")
-        throw input_error("--name '" + one_line(name) + "' is not a file name");
+    if (name.empty() || control || name.find('/') != std::string::npos || name == "." || name == "..") {
+        // The default name is the scene file's: then the scene's name is the problem, not --name.
+        if (named) throw input_error("--name '" + echo(name) + "' is not a file name");
+        throw input_error("the scene file's name '" + echo(name) + "' cannot name the output files" +
+                          (control ? " (it holds a control character)" : "") + ": give --name NAME");
+    }
 
     scene s = load_scene(o.scene);
+    // The outputs, checked and opened before any work: a bad --out costs no solve.
+    const auto stem = output_stem(o.out, "traction-" + name);
+    const auto csv = std::filesystem::path(stem.string() + ".csv");
+    const auto script = std::filesystem::path(stem.string() + ".gp");
+    output_file csv_file(csv, s.files), script_file(script, s.files);
+    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
+
     const double Q = load_of(s, o.Q);
     const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver);
@@ -219,10 +233,7 @@ int run_traction(const traction_options& o) {
         v_max = std::max(v_max, std::fabs(row.v));
     }
 
-    const auto stem = output_stem(o.out, "traction-" + name);
-    const auto csv = std::filesystem::path(stem.string() + ".csv");
-    std::ofstream out(csv);
-    if (!out) throw input_error("cannot write '" + csv.string() + "'");
+    std::ostream& out = csv_file.stream();
     out << "# roughroll traction " << one_line(o.scene.path) << (s.label.empty() ? "" : ": ") << one_line(s.label)
         << "\n"
         << "# Q = " << shortest(Q) << ", f = " << shortest(f) << ", c0 = " << shortest(solution.c0)
@@ -245,7 +256,7 @@ int run_traction(const traction_options& o) {
                 << shortest(row.p1 * si->p_scale);
         out << '\n';
     }
-    if (!out.flush()) throw input_error("cannot write '" + csv.string() + "'");
+    csv_file.commit();
 
     plot_facts facts{};
     facts.title = "Tractions over the contact: " +
@@ -258,10 +269,10 @@ int run_traction(const traction_options& o) {
     facts.p_max = p_max;
     facts.v_max = v_max;
     facts.checks_hold = solution.checks.hold();
-    const auto script = std::filesystem::path(stem.string() + ".gp");
-    write_gnuplot(script, csv, stem, facts);
+    write_gnuplot(script_file.stream(), csv, stem, facts);
+    script_file.commit();
     if (!o.plot) return 0;
-    run_gnuplot(script);
+    run_gnuplot(script, stem, {".svg", ".png"});
     return 0;
 }
 

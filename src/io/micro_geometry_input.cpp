@@ -30,7 +30,7 @@ Kind choice(const toml::node& node, const std::pair<const char*, Kind> (&names)[
         if (name == text) return kind;
         all += (all.empty() ? "\"" : ", \"") + std::string(text) + "\"";
     }
-    fail(source, quoted(path) + " must be one of " + all + " (got \"" + name + "\")");
+    fail(source, quoted(path) + " must be one of " + all + " (got \"" + echo(name) + "\")");
 }
 
 constexpr std::pair<const char*, profile_kind> profile_names[] = {{"flat", profile_kind::flat},

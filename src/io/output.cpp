@@ -78,7 +78,7 @@ nlohmann::json to_json(const point_report& r) {
 void write_summary(std::ostream& out, const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
-    if (!r.label.empty()) out << r.label << "\n";
+    if (!r.label.empty()) out << one_line(r.label) << "\n";  // no control character reaches the terminal
     out << "  Q = P1/P2           " << shortest(s.Q) << "   (f = " << shortest(s.f) << ")\n"
         << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
         << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"

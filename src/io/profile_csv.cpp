@@ -18,16 +18,6 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-// A whole field as a double, or nothing: from_chars is locale-independent, and "1.5x" or ""
-// must not read as 1.5 or 0.
-std::optional<double> number(std::string_view field) {
-    double x = 0.0;
-    const char* end = field.data() + field.size();
-    const std::from_chars_result r = std::from_chars(field.data(), end, x);
-    if (field.empty() || r.ec != std::errc() || r.ptr != end) return std::nullopt;
-    return x;
-}
-
 class line_parser {
 public:
     line_parser(const std::string& source, double l) : source_(source), l_(l) {}
@@ -44,14 +34,20 @@ public:
         const bool first = !seen_data_;
         seen_data_ = true;
         if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos) {
-            fail(line, "expected two comma-separated fields 'x1, h0', got '" + std::string(text) + "'");
+            fail(line, "expected two comma-separated fields 'x1, h0', got '" + echo(text) + "'");
         }
         const std::string_view f1 = trim(text.substr(0, comma)), f2 = trim(text.substr(comma + 1));
-        const std::optional<double> x = number(f1), h = number(f2);
+        // A whole field as a double (text.hpp: "1.5x" or "" is not 1.5 or 0, and 1e-400 is
+        // refused by the underflow rule, as in a scene file).
+        std::string x_problem, h_problem;
+        const std::optional<double> x = parse_double(f1, x_problem), h = parse_double(f2, h_problem);
         if (first && f1 == "x1" && f2 == "h0") return;  // the optional header
         if (!x || !h) {
             const std::string_view bad = !x ? f1 : f2;
-            fail(line, std::string(!x ? "x1" : "h0") + " '" + std::string(bad) + "' is not a number" +
+            const std::string& problem = !x ? x_problem : h_problem;
+            const std::string name = !x ? "x1" : "h0";
+            if (!problem.empty()) fail(line, name + " = " + problem);
+            fail(line, name + " '" + echo(bad) + "' is not a number" +
                            (first ? " (the only header allowed is 'x1,h0')" : ""));
         }
         add(*x, *h, line);

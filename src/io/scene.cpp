@@ -45,7 +45,7 @@ int nodes_at(const toml::node& node, const std::string& source, const std::strin
 method method_at(const toml::node& node, const std::string& source, const std::string& path) {
     const std::string& name = string_at(node, source, path);
     try {
-        return method_from_string(name);
+        return method_from_string(echo(name));  // a long name is unknown anyway: shown cut
     } catch (const input_error& e) {
         // method_from_string knows the names but not where the name was written.
         fail(source, quoted(path) + ": " + e.what());
@@ -102,6 +102,7 @@ term_input read_term(const toml::table& cylinder, std::string_view key, bool phy
 
 struct cylinder_input {
     term_input tangential, normal;
+    std::string profile_file;  // the profile CSV its micro-geometry read, if any
 };
 
 // A cylinder's terms, or for a physical scene its micro-geometry: the layer of Sec. 2, whose
@@ -129,10 +130,11 @@ cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool
         cylinder_input c;
         c.tangential.dimensional = stiffness{r.k_tangential, r.t_tangential};
         c.normal.dimensional = stiffness{r.k_normal, r.t_normal};
+        if (g.bottom.kind == profile_kind::measured) c.profile_file = g.bottom.measured.source;
         return c;
     }
     return {read_term(*table, "tangential", physical, source, path),
-            read_term(*table, "normal", physical, source, path)};
+            read_term(*table, "normal", physical, source, path), {}};
 }
 
 // A radius of a physical scene: > 0, and infinite for a plane.
@@ -171,7 +173,7 @@ physical_scene read_physical(const toml::table& root, double friction, const std
         else if (rule == "hertz")
             p.width = width_rule::hertz;
         else
-            fail(source, "'contact_width' must be \"given-load\" or \"hertz\" (got \"" + rule + "\")");
+            fail(source, "'contact_width' must be \"given-load\" or \"hertz\" (got \"" + echo(rule) + "\")");
     }
     if (const toml::node* load = root.get("P1")) {
         if (root.contains("Q")) fail(source, "give 'P1' or 'Q', not both");
@@ -189,13 +191,13 @@ physical_scene read_physical(const toml::table& root, double friction, const std
     return p;
 }
 
-surface_stiffness stiffness_at_hertz(const physical_scene& p, const cylinder_input& c) {
+surface_stiffness stiffness_at_hertz(const physical_scene& p, const cylinder_input& c, const std::string& name) {
     // T, A in a physical scene are the paper's, at a = a_H(P2).
     const double a_H = hertz_half_width(p, p.P2);
-    const auto one = [&](const term_input& t) {
-        return t.dimensional ? *t.dimensional : stiffness_of(p, t.dimensionless, a_H);
+    const auto one = [&](const term_input& t, const char* direction) {
+        return t.dimensional ? *t.dimensional : stiffness_of(p, t.dimensionless, a_H, name + "." + direction);
     };
-    return {one(c.tangential), one(c.normal)};
+    return {one(c.tangential, "tangential"), one(c.normal, "normal")};
 }
 
 cylinder_roughness dimensionless(const cylinder_input& c) {
@@ -227,6 +229,11 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     const toml::node* friction = root.get("friction");
     if (friction == nullptr) fail(source, "missing key 'friction'");
     s.friction = bounded_number(*friction, lower_bound::positive, source, "friction");
+    if (!(s.friction >= min_friction && s.friction <= max_friction)) {
+        fail(source, "'friction' = " + shortest(s.friction) + " is outside [" + shortest(min_friction) + ", " +
+                         shortest(max_friction) + "], the range the solver is validated on (validation/test_stiff.cpp); " +
+                         "xi/f depends on Q/f alone, so solve with f and Q scaled into it");
+    }
 
     if (const toml::node* load = root.get("Q")) {
         const double Q = number_at(*load, source, "Q");
@@ -238,13 +245,21 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     const bool physical = is_physical(root);
     const cylinder_input c1 = read_cylinder(root, "cylinder1", physical, base_dir, source);
     const cylinder_input c2 = read_cylinder(root, "cylinder2", physical, base_dir, source);
+    for (const cylinder_input* c : {&c1, &c2})
+        if (!c->profile_file.empty()) s.files.push_back(c->profile_file);
     if (physical) {
         physical_scene p = read_physical(root, s.friction, source);
-        p.cylinder1 = stiffness_at_hertz(p, c1);
-        p.cylinder2 = stiffness_at_hertz(p, c2);
+        try {
+            // Each derived value is checked where it is made (physical_scene.cpp): a_H and its
+            // scales, k and t from T and A, T and A at a_H; the message names the keys.
+            p.cylinder1 = stiffness_at_hertz(p, c1, "cylinder1");
+            p.cylinder2 = stiffness_at_hertz(p, c2, "cylinder2");
+            s.surfaces = roughness_at(p, hertz_half_width(p, p.P2));  // until the width is known
+        } catch (const input_error& e) {
+            fail(source, e.what());
+        }
         // |P1| <= f P2 was checked; the quotient may still round above f by an ulp.
         if (p.P1) s.Q = std::clamp(*p.P1 / p.P2, -s.friction, s.friction);
-        s.surfaces = roughness_at(p, hertz_half_width(p, p.P2));  // until the width is known
         s.physical = p;
     } else {
         s.surfaces = {dimensionless(c1), dimensionless(c2)};
@@ -255,7 +270,9 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
 
 scene read_scene(const std::string& path) {
     // A profile_csv named in the scene is relative to the scene's folder.
-    return parse_scene(read_text(path, "scene file"), path, std::filesystem::path(path).parent_path());
+    scene s = parse_scene(read_text(path, "scene file"), path, std::filesystem::path(path).parent_path());
+    s.files.insert(s.files.begin(), path);
+    return s;
 }
 
 double load_of(const scene& s, std::optional<double> override) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -26,7 +27,8 @@ std::string join(const std::string& parent, std::string_view key) {
     return path;
 }
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
+// Cut: a path built from the input's keys (a table nested a thousand deep) must not make a long message.
+std::string quoted(const std::string& path) { return "'" + echo(path, 200) + "'"; }
 
 namespace {
 // "a string", "an integer", ...: what was found where something else was expected.
@@ -62,7 +64,7 @@ void check_keys(const toml::table& table, key_list allowed, const std::string& s
         std::string names;
         for (const std::string_view name : allowed) names += (names.empty() ? "" : ", ") + std::string(name);
         const char* kind = node.is_table() ? "unknown table " : "unknown key ";
-        fail(source, kind + quoted(join(path, key.str())) + " (allowed here: " + names + ")");
+        fail(source, kind + quoted(join(path, echo(key.str()))) + " (allowed here: " + names + ")");
     }
 }
 
@@ -100,15 +102,63 @@ const std::string& string_at(const toml::node& node, const std::string& source, 
     return node.as_string()->get();
 }
 
+namespace {
+
+// The text of the literal that starts at `where` (toml++ counts columns in code points).
+std::string_view literal_at(std::string_view text, const toml::source_position& where) {
+    for (toml::source_index line = 1; line < where.line; ++line) {
+        const std::size_t end = text.find('\n');
+        if (end == std::string_view::npos) return {};
+        text.remove_prefix(end + 1);
+    }
+    std::size_t at = 0;
+    for (toml::source_index column = 1; column < where.column && at < text.size(); ++at)
+        if ((static_cast<unsigned char>(text[at]) & 0xC0) != 0x80) ++column;  // not a continuation byte
+    while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
+    text.remove_prefix(std::min(at, text.size()));
+    std::size_t length = 0;
+    const auto literal_char = [](char c) {
+        return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '.' || c == '_' ||
+               c == '+' || c == '-';
+    };
+    while (length < text.size() && literal_char(text[length])) ++length;
+    return text.substr(0, length);
+}
+
+// The underflow rule of text.hpp for every floating-point value of the document: toml++
+// reads 1e-400 as 0 and 1e-310 as a subnormal without a word, so the literal's own text,
+// found at the node's source position, tells a written 0 from an underflow.
+void check_underflow(const toml::node& node, std::string_view text, const std::string& source,
+                     const std::string& path) {
+    if (const toml::table* table = node.as_table()) {
+        for (const auto& [key, child] : *table) check_underflow(child, text, source, join(path, echo(key.str())));
+    } else if (const toml::array* array = node.as_array()) {
+        for (std::size_t i = 0; i < array->size(); ++i)
+            check_underflow(*array->get(i), text, source, path + "[" + std::to_string(i) + "]");
+    } else if (const auto* floating = node.as_floating_point()) {
+        const double x = floating->get();
+        if (!(std::fabs(x) < DBL_MIN)) return;
+        const toml::source_position where = node.source().begin;
+        const std::string problem = underflow_problem(literal_at(text, where), x);
+        if (!problem.empty())
+            fail(source + ":" + std::to_string(where.line) + ":" + std::to_string(where.column), quoted(path) + " = " + problem);
+    }
+}
+
+}  // namespace
+
 // A syntax error is located like a compiler's, so editors can jump to it.
 toml::table parse_toml(std::string_view text, const std::string& source) {
+    toml::table root;
     try {
-        return toml::parse(text, source);
+        root = toml::parse(text, source);
     } catch (const toml::parse_error& e) {
         const toml::source_position where = e.source().begin;
         throw input_error(one_line(source + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
                                    ": malformed TOML: " + std::string(e.description())));
     }
+    check_underflow(root, text, source, "");
+    return root;
 }
 
 namespace {

@@ -321,7 +321,8 @@ void profile_violations(const micro_geometry& g, std::vector<std::string>& out) 
             return j < p.measured.lines.size() ? std::to_string(p.measured.lines[j]) : std::string("?");
         };
         return i < x1.size() ? " between lines " + line(i - 1) + " and " + line(i)
-                             : " between line " + line(x1.size() - 1) + " and the closing point x1 = l";
+                             : " between line " + line(x1.size() - 1) + " and line " + line(0) +
+                                   " one period on (the last piece of the periodic spline wraps round to x1 = 0)";
     };
     const std::string who = p.measured.source + ": the periodic spline through the samples ";
     if (!std::isfinite(low.value) || !std::isfinite(high.value)) {

@@ -1,5 +1,6 @@
 #include "roughroll/model/physical_scene.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -12,15 +13,44 @@ namespace roughroll {
 namespace {
 constexpr double pi = 3.14159265358979323846;
 
-roughness_term term_at(const physical_scene& s, const stiffness& st, double a) {
-    if (!st.present()) return {};
-    // (3.26)
-    const double mu = s.shear_modulus();
-    return {a * mu / (8.0 * (1.0 - s.nu) * st.t), a * std::sqrt(st.k / (2.0 * st.t))};
+// Every quantity derived from a physical scene is checked where it is made: a value that
+// over- or underflowed double precision would otherwise reach the solver as inf, 0 or NaN
+// (a Hertz width of 0 gave xi1 = -nan with exit 0). `keys` are the scene's keys it comes from.
+bool normal_positive(double x) { return std::isfinite(x) && x >= DBL_MIN; }
+
+[[noreturn]] void out_of_range(const std::string& what, double value, const std::string& inputs,
+                               const std::string& keys) {
+    throw input_error(what + " = " + shortest(value) + " (" + inputs +
+                      ") is beyond double precision: check " + keys);
 }
 
-cylinder_roughness cylinder_at(const physical_scene& s, const surface_stiffness& c, double a) {
-    return {term_at(s, c.tangential, a), term_at(s, c.normal, a)};
+std::string materials(const physical_scene& s) {
+    return "E = " + shortest(s.E) + " Pa, nu = " + shortest(s.nu);
+}
+
+// mu of (3.26): E/(2 (1 + nu)), infinite for a huge E with nu near -1.
+double shear_modulus_of(const physical_scene& s) {
+    const double mu = s.shear_modulus();
+    if (!normal_positive(mu)) out_of_range("the shear modulus mu = E/(2 (1 + nu))", mu, materials(s), "'E' and 'nu'");
+    return mu;
+}
+
+roughness_term term_at(const physical_scene& s, const stiffness& st, double a, const std::string& name) {
+    if (!st.present()) return {};
+    // (3.26)
+    const double mu = shear_modulus_of(s);
+    const roughness_term term{a * mu / (8.0 * (1.0 - s.nu) * st.t), a * std::sqrt(st.k / (2.0 * st.t))};
+    const std::string inputs = "at a = " + shortest(a) + " m, k = " + shortest(st.k) + " Pa/m, t = " + shortest(st.t) +
+                               " Pa m, " + materials(s);
+    // An underflow to 0 or a subnormal is the smooth limit (a stiff layer): harmless. An
+    // overflow is not.
+    if (!std::isfinite(term.T)) out_of_range("'" + name + "': T = a mu/(8 (1 - nu) t) of (3.26)", term.T, inputs, "'" + name + ".t' and 'E'");
+    if (!std::isfinite(term.A)) out_of_range("'" + name + "': A = a sqrt(k/(2 t)) of (3.26)", term.A, inputs, "'" + name + ".k' and '" + name + ".t'");
+    return term;
+}
+
+cylinder_roughness cylinder_at(const physical_scene& s, const surface_stiffness& c, double a, const std::string& name) {
+    return {term_at(s, c.tangential, a, name + ".tangential"), term_at(s, c.normal, a, name + ".normal")};
 }
 }  // namespace
 
@@ -30,19 +60,38 @@ double physical_scene::radius() const {
 }
 
 double hertz_half_width(const physical_scene& s, double P) {
-    return std::sqrt(4.0 * (1.0 - s.nu) * s.radius() * P / (pi * s.shear_modulus()));  // (3.27)
+    const double mu = shear_modulus_of(s);
+    const double R = s.radius();
+    const std::string inputs = materials(s) + ", R = " + shortest(R) + " m, P = " + shortest(P) + " N/m";
+    const std::string keys = "'E', 'R1', 'R2' and 'P2'";
+    if (!normal_positive(R)) out_of_range("the radius R = R1 R2/(R1 + R2)", R, inputs, "'R1' and 'R2'");
+    // (3.27); where an intermediate product over- or underflows, as a product of square roots,
+    // which does so only where a_H itself does.
+    double a_H = std::sqrt(4.0 * (1.0 - s.nu) * R * P / (pi * mu));
+    if (!normal_positive(a_H)) a_H = std::sqrt(4.0 * (1.0 - s.nu) / pi) * std::sqrt(R) * (std::sqrt(P) / std::sqrt(mu));
+    if (!normal_positive(a_H)) out_of_range("the Hertz half-width a_H of (3.27)", a_H, inputs, keys);
+    // The scales back to SI units (to_si): the pressure P/a and the creep P/(a mu).
+    if (!normal_positive(P / a_H)) out_of_range("the pressure scale P/a_H", P / a_H, inputs, keys);
+    if (!normal_positive(P / a_H / mu)) out_of_range("the creep scale P/(a_H mu)", P / a_H / mu, inputs, keys);
+    return a_H;
 }
 
-stiffness stiffness_of(const physical_scene& s, const roughness_term& term, double a) {
+stiffness stiffness_of(const physical_scene& s, const roughness_term& term, double a, const std::string& name) {
     if (!term.present()) return {};
     // (3.26) solved for t and alpha, then k = 2 t alpha^2 from alpha = sqrt(k/(2t)).
-    const double t = a * s.shear_modulus() / (8.0 * (1.0 - s.nu) * term.T);
+    const double t = a * shear_modulus_of(s) / (8.0 * (1.0 - s.nu) * term.T);
     const double alpha = term.A / a;
-    return {2.0 * t * alpha * alpha, t};
+    const stiffness st{2.0 * t * alpha * alpha, t};
+    const std::string inputs = "from T = " + shortest(term.T) + ", A = " + shortest(term.A) + " at a_H = " +
+                               shortest(a) + " m, " + materials(s);
+    const std::string who = name.empty() ? std::string() : "'" + name + "': ";
+    if (!normal_positive(st.t)) out_of_range(who + "t = a mu/(8 (1 - nu) T) of (3.26)", st.t, inputs, "'" + name + ".T'");
+    if (!std::isfinite(st.k)) out_of_range(who + "k = 2 t (A/a)^2 of (3.26)", st.k, inputs, "'" + name + ".A'");
+    return st;
 }
 
 roughness roughness_at(const physical_scene& s, double a) {
-    return {cylinder_at(s, s.cylinder1, a), cylinder_at(s, s.cylinder2, a)};
+    return {cylinder_at(s, s.cylinder1, a, "cylinder1"), cylinder_at(s, s.cylinder2, a, "cylinder2")};
 }
 
 bool smooth(const physical_scene& s) {
@@ -51,7 +100,7 @@ bool smooth(const physical_scene& s) {
 }
 
 si_point to_si(const physical_scene& s, const contact_width& w, double Q, double f, double c0, double xi) {
-    const double mu = s.shear_modulus();
+    const double mu = shear_modulus_of(s);
     const double load = w.load;
     // Smooth cylinders under the same loads: Carter's creep on Hertz's width for `load`.
     const carter_point smooth_point = carter(Q, f);
@@ -68,6 +117,14 @@ si_point to_si(const physical_scene& s, const contact_width& w, double Q, double
     p.p_scale = load / w.a;
     p.width_iterations = w.iterations;
     p.surfaces = roughness_at(s, w.a);
+    // hertz_half_width checked the scales at a_H; a >= a_H/6.5e5 and a <= R/10 keep them finite
+    // in practice, and this check keeps that promise for every value reported.
+    const std::string inputs = materials(s) + ", a = " + shortest(w.a) + " m, P2 = " + shortest(load) + " N/m";
+    for (const auto& [name, value] : {std::pair<const char*, double>{"the pressure scale P2/a", p.p_scale},
+                                      {"the creep xi1", p.xi1},
+                                      {"Carter's creep xi1", p.xi1_carter},
+                                      {"the Hertz load P_H", p.P_H}})
+        if (!std::isfinite(value)) out_of_range(name, value, inputs, "'E', 'R1', 'R2' and 'P2'");
     return p;
 }
 

@@ -23,19 +23,26 @@ std::string at_width(double x, double a_H) {
 }
 
 // (3.7) takes each cylinder as a half-space: the contact must be small against the radius.
+// `lead` names the width a: the one found, Hertz's, or a bound below the one that carries P2.
+[[noreturn]] void wide_against_radius(const physical_scene& s, double a, const std::string& lead) {
+    std::ostringstream msg;
+    msg << lead << " = " << shortest(a) << " m, " << shortest(a / s.radius()) << " times the radius R = "
+        << shortest(s.radius()) << " m: the half-space theory of (3.7) needs a << R (refused above a/R = "
+        << max_width_over_radius << "); check 'R1', 'R2', 'P2' and the roughness";
+    throw input_error(msg.str());
+}
+
 contact_width small_against_radius(const physical_scene& s, const contact_width& w) {
-    if (!(w.a <= max_width_over_radius * s.radius())) {
-        std::ostringstream msg;
-        msg << "the half-width a = " << shortest(w.a) << " m is " << shortest(w.a / s.radius())
-            << " of the radius R = " << shortest(s.radius())
-            << " m: the half-space theory of (3.7) needs a << R (refused above a/R = " << max_width_over_radius << ")";
-        throw input_error(msg.str());
-    }
+    if (!(w.a <= max_width_over_radius * s.radius())) wide_against_radius(s, w.a, "the half-width a");
     return w;
 }
 
 contact_width search_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio) {
     const double a_H = hertz_half_width(s, s.P2);
+    // Widths beyond R/10 are refused whatever the kernels: checked before any solve, so that
+    // a wide contact is told so rather than sent to a discretisation that cannot resolve it.
+    const double x_max = max_width_over_radius * s.radius() / a_H;
+    if (!(1.0 <= x_max)) wide_against_radius(s, a_H, "the Hertz half-width a_H");
     if (smooth(s)) return {a_H, a_H, 1.0, s.P2, 0};  // Hertz exactly, no kernel to solve
 
     // In x = a/a_H the model carries P2 where lambda(x) = x^2 (the coefficient of (3.19)
@@ -69,6 +76,11 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
                 << " m carries the load P2 = " << shortest(s.P2) << " N/m";
             throw numerical_error(msg.str());
         }
+        if (up && far > x_max) {
+            // The root lies beyond a/R = 0.1 unless it lies below the bound itself.
+            if (near >= x_max) wide_against_radius(s, near * a_H, "the half-width that carries P2 is above a");
+            far = x_max;
+        }
         double value = 0.0;
         try {
             value = F(far);
@@ -78,6 +90,7 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
             continue;
         }
         if ((value > 0.0) != up) break;  // a sign change between near and far
+        if (up && far >= x_max) wide_against_radius(s, far * a_H, "the half-width that carries P2 is above a");
         near = far;
         far *= up ? width_step : 1.0 / width_step;
         ++steps;

@@ -1,7 +1,7 @@
 // Scene files (TOML): the inputs of one rolling contact, checked strictly.
 //
 //   label = "Fig. 2a, curve 2"   # optional, names the scene in outputs
-//   friction = 0.3               # f, positive and finite (required)
+//   friction = 0.3               # f in [min_friction, max_friction] (required)
 //   Q = 0.15                     # P1/P2, optional (the command line may give it)
 //   [cylinder1.tangential]       # T_1^(1), A_1^(1) of (3.26)
 //   T = 0.5
@@ -15,20 +15,29 @@
 //   method = "extrapolated"      # or "product", "paper", "one-parameter" (the limit t -> 0)
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
-// a non-finite or negative T or A, a table with T or A missing, a non-positive f,
-// a non-finite Q or |Q| > f.
+// a non-finite or negative T or A, a table with T or A missing, an f outside
+// [min_friction, max_friction], a non-finite Q or |Q| > f, a nonzero number written below
+// the smallest normal double (base/text.hpp), and for a physical scene any derived value
+// (a_H, T, A, k, t, the SI scales) beyond double precision (physical_scene.hpp).
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/model/roughness.hpp"
 
 namespace roughroll {
+
+// The friction coefficients a scene may give: the range validation/test_stiff.cpp shows the
+// solver resolves (G of (3.25) does not involve f, so xi/f depends on Q/f alone; beyond it,
+// f itself loses digits: a subnormal f gave xi/f = 1.0 for 1.32).
+constexpr double min_friction = 1e-12;
+constexpr double max_friction = 1e12;
 
 struct scene {
     std::string label;
@@ -39,6 +48,9 @@ struct scene {
     // Set for a physical scene; `surfaces` are then those at a = a_H(P2) until the
     // contact width is found (find_width), and Q is P1/P2 when P1 is given.
     std::optional<physical_scene> physical;
+    // The files read: the scene file (read_scene) and the profile CSVs of its
+    // micro-geometries. An output must not overwrite one of them.
+    std::vector<std::string> files;
 };
 
 // Parses scene text; `source` names it in messages ("data/fig2a-T0.5.toml"), `base_dir`

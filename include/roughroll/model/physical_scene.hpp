@@ -10,6 +10,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "roughroll/model/roughness.hpp"
 
@@ -47,14 +48,20 @@ struct physical_scene {
     double radius() const;  // R of (3.1)
 };
 
-// (3.27): the Hertz half-width for the load P (N/m).
+// Every function below checks what it makes: a value beyond double precision (an
+// overflow, or an underflow of a width or scale to 0 or a subnormal) is an input_error
+// naming the scene keys it comes from, never an inf or NaN handed on.
+
+// (3.27): the Hertz half-width for the load P (N/m); also checks the scales P/a_H and
+// P/(a_H mu) by which to_si returns to SI units.
 double hertz_half_width(const physical_scene& s, double P);
 
 // (3.26) inverted: the k, t whose T, A at half-width a are `term`. For T, A written in a
-// physical scene (they are taken at a = a_H(P2), the paper's width).
-stiffness stiffness_of(const physical_scene& s, const roughness_term& term, double a);
+// physical scene (they are taken at a = a_H(P2), the paper's width). `name` is the term's
+// dotted key ("cylinder1.tangential") for the messages.
+stiffness stiffness_of(const physical_scene& s, const roughness_term& term, double a, const std::string& name = "");
 
-// (3.26): T and A of every term at half-width a.
+// (3.26): T and A of every term at half-width a (an overflow names the term's k or t).
 roughness roughness_at(const physical_scene& s, double a);
 
 bool smooth(const physical_scene& s);

@@ -16,7 +16,9 @@ namespace roughroll {
 // (F(a_H) = lambda - 1 >= 0: roughness adds compliance, E2) first to a_H sqrt(lambda(a_H)),
 // then outwards by 1.25; trials beyond the method's resolution are halved back. Throws the
 // solver's resolution_error or numerical_error prefixed with the trial width, numerical_error
-// when no bracket is found, and input_error when a > R/10 (the half-spaces of (3.7)).
+// when no bracket is found, and input_error when a > R/10 (the half-spaces of (3.7)): no
+// trial width beyond R/10 is solved, so a wide contact is refused as such, before any solve
+// when a_H > R/10 already.
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio);
 
 }  // namespace roughroll
