@@ -70,20 +70,25 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
 
 double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
-tangential_solution tangential_solver::solve_system(double c0) {
-    const double rho = 0.5 * (1.0 + c0);
+tangential_solution tangential_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
+
+tangential_solution tangential_solver::solve_on_zone(double start, double c0) {
+    // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
+    // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
+    const double rho = 0.5 * (c0 - start);
     const auto& rule = normal_.rule;
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
     gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
     k1_operator_.add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
-    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
+    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
     const std::vector<double> g = G(r);
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
     std::ostringstream context;
     context.precision(17);
     context << "tangential problem (4.4) at c0 = " << c0;
+    if (start != -1.0) context << ", stick zone from " << start;
     const gsl_vector* x = system_.solve(context.str());
 
     std::vector<double> psi(n_);

@@ -87,6 +87,10 @@ public:
     // coarse level of an extrapolation, whose distributions are not reported.
     tangential_solution at_stick_end(double c0, bool checked = true);
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
+    // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
+    // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
+    // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is solve_system.
+    tangential_solution solve_on_zone(double start, double c0);
 
     double G(double r);                                          // (3.25)
     std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
