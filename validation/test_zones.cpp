@@ -58,7 +58,7 @@ roughness unequal_kernels() {  // data/unequal-kernels.toml
 struct solved {
     contact c;
     zone_solver zones;
-    solved(const roughness& r, int n) : c(r, f, solver_options{n, method::product}), zones(c.tangential(), kernel::tangential(r), f) {}
+    solved(const roughness& r, int n) : c(r, f, solver_options{n, method::product}), zones(c.tangential()) {}
 };
 
 double integrate(const std::function<double(double)>& g, double lo, double hi, double pole = NAN) {
@@ -76,8 +76,8 @@ double integrate(const std::function<double(double)>& g, double lo, double hi, d
 
 // L1[p1](r) of 2(b) on the whole contact, by adaptive quadrature: the Cauchy principal value
 // (QAWC) and the kernel split at its jump (QAGS), from the traction alone.
-double unreduced_operator(solved& s, const zone_solution& z, const kernel& k1, double r) {
-    const auto p1 = [&](double eta) { return s.zones.traction(z, eta); };
+double unreduced_operator(solved& s, const tangential_solution& z, const kernel& k1, double r) {
+    const auto p1 = [&](double eta) { return s.c.tangential().traction(z, eta); };
     double sum = M_1_PI * integrate(p1, -1.0, 1.0, r);
     const auto kernel_term = [&](double eta) { return p1(eta) * k1(eta - r); };
     sum += integrate(kernel_term, -1.0, r) + integrate(kernel_term, r, 1.0);
@@ -93,15 +93,15 @@ TEST(Zones, PapersStructureForcedIsTheSingleZone) {
         solved s(r, 48);
         for (double load : {0.1, 0.5, 0.9, 1.0 - 1e-6, 1.0 - 1e-9, -0.7}) {
             const tangential_solution single = s.c.point(load * f);
-            const zone_solution z = s.zones.solve(load * f, true);
+            const tangential_solution z = s.zones.solve(load * f, true);
             EXPECT_EQ(z.start, -1.0) << load;
             EXPECT_FALSE(z.general);
-            EXPECT_NEAR(z.single.c0, single.c0, 1e-10) << load;  // c0 near -1: conditioned as 1/(1 + c0)
-            EXPECT_NEAR(z.single.xi, single.xi, 1e-12 * std::fabs(single.xi)) << load;
-            EXPECT_TRUE(z.single.checks.hold()) << load;
-            ASSERT_EQ(z.zones.size(), 2u);
-            EXPECT_TRUE(z.zones[0].stick);
-            EXPECT_EQ(z.zones[1].direction, load < 0 ? -1 : 1);
+            EXPECT_NEAR(z.c0, single.c0, 1e-10) << load;  // c0 near -1: conditioned as 1/(1 + c0)
+            EXPECT_NEAR(z.xi, single.xi, 1e-12 * std::fabs(single.xi)) << load;
+            EXPECT_TRUE(z.checks.hold()) << load;
+            ASSERT_EQ(zones_of(z).size(), 2u);
+            EXPECT_TRUE(zones_of(z)[0].stick);
+            EXPECT_EQ(zones_of(z)[1].direction, load < 0 ? -1 : 1);
         }
     }
 }
@@ -115,17 +115,17 @@ TEST(Zones, SlipStickSlipSatisfiesComplementarity) {
         for (double gap : {1e-4, 1e-9}) {
             const double Q = (1.0 - gap) * f;
             EXPECT_FALSE(s.c.point(Q).checks.stick_holds) << gap;
-            const zone_solution z = s.zones.solve(Q);
+            const tangential_solution z = s.zones.solve(Q);
             EXPECT_TRUE(z.general) << gap;
-            ASSERT_EQ(z.zones.size(), 3u);
-            EXPECT_FALSE(z.zones[0].stick);
-            EXPECT_TRUE(z.zones[1].stick);
-            EXPECT_FALSE(z.zones[2].stick);
+            ASSERT_EQ(zones_of(z).size(), 3u);
+            EXPECT_FALSE(zones_of(z)[0].stick);
+            EXPECT_TRUE(zones_of(z)[1].stick);
+            EXPECT_FALSE(zones_of(z)[2].stick);
             EXPECT_GT(z.start, -1.0);
-            EXPECT_LT(z.start, z.single.c0);
-            EXPECT_GE(z.single.checks.stick_margin, -1e-12) << gap;
-            EXPECT_GE(z.single.checks.slip_margin, -1e-12) << gap;
-            EXPECT_GE(z.single.checks.pressure_margin, 0.0);
+            EXPECT_LT(z.start, z.c0);
+            EXPECT_GE(z.checks.stick_margin, -1e-12) << gap;
+            EXPECT_GE(z.checks.slip_margin, -1e-12) << gap;
+            EXPECT_GE(z.checks.pressure_margin, 0.0);
         }
     }
 }
@@ -138,17 +138,17 @@ TEST(Zones, SolvesTheUnreducedEquations) {
     solved s(r, 96);
     const kernel k1 = kernel::tangential(r);
     const double Q = (1.0 - 1e-3) * f;
-    const zone_solution z = s.zones.solve(Q);
+    const tangential_solution z = s.zones.solve(Q);
     ASSERT_TRUE(z.general);
-    const auto p1 = [&](double eta) { return s.zones.traction(z, eta); };
-    EXPECT_NEAR(integrate(p1, -1.0, z.start) + integrate(p1, z.start, z.single.c0) + integrate(p1, z.single.c0, 1.0), Q,
+    const auto p1 = [&](double eta) { return s.c.tangential().traction(z, eta); };
+    EXPECT_NEAR(integrate(p1, -1.0, z.start) + integrate(p1, z.start, z.c0) + integrate(p1, z.c0, 1.0), Q,
                 1e-9);
     for (double u : {0.1, 0.37, 0.5, 0.81}) {
-        const double x = z.start + u * (z.single.c0 - z.start);
-        EXPECT_NEAR(unreduced_operator(s, z, k1, x), z.single.xi, 1e-8) << x;
+        const double x = z.start + u * (z.c0 - z.start);
+        EXPECT_NEAR(unreduced_operator(s, z, k1, x), z.xi, 1e-8) << x;
     }
     for (double x : {-0.999, 0.5 * (-1.0 + z.start), 0.0, 0.9}) {
-        EXPECT_NEAR(z.single.xi - unreduced_operator(s, z, k1, x), s.zones.slip_velocity(z, x), 1e-8) << x;
+        EXPECT_NEAR(z.xi - unreduced_operator(s, z, k1, x), s.c.tangential().slip_velocity(z, x), 1e-8) << x;
     }
 }
 
@@ -156,16 +156,16 @@ TEST(Zones, SolvesTheUnreducedEquations) {
 // doubling in xi, start and c0.
 TEST(Zones, ConvergesInN) {
     const double Q = (1.0 - 1e-6) * f;
-    std::vector<zone_solution> z;
+    std::vector<tangential_solution> z;
     for (int n : {32, 64, 128}) {
         solved s(tangential_dominates_a(), n);
         z.push_back(s.zones.solve(Q));
     }
     const auto ratio = [&](auto get) { return std::fabs(get(z[0]) - get(z[1])) / std::fabs(get(z[1]) - get(z[2])); };
-    EXPECT_GT(ratio([](const zone_solution& s) { return s.single.xi; }), 8.0);
-    EXPECT_GT(ratio([](const zone_solution& s) { return s.start; }), 8.0);
-    EXPECT_GT(ratio([](const zone_solution& s) { return s.single.c0; }), 8.0);
-    EXPECT_LT(std::fabs(z[1].single.xi - z[2].single.xi), 1e-8);
+    EXPECT_GT(ratio([](const tangential_solution& s) { return s.xi; }), 8.0);
+    EXPECT_GT(ratio([](const tangential_solution& s) { return s.start; }), 8.0);
+    EXPECT_GT(ratio([](const tangential_solution& s) { return s.c0; }), 8.0);
+    EXPECT_LT(std::fabs(z[1].xi - z[2].xi), 1e-8);
 }
 
 // Through the region where the single zone fails, the creep rises monotonically with Q and
@@ -174,28 +174,28 @@ TEST(Zones, ConvergesInN) {
 TEST(Zones, CreepCurveContinuousUpToGrossSliding) {
     solved s(tangential_dominates_a(), 48);
     double previous = -1.0;
-    zone_solution last;
+    tangential_solution last;
     for (double gap : {0.1, 1e-3, 1e-6, 1e-10}) {
         last = s.zones.solve((1.0 - gap) * f);
-        EXPECT_GT(last.single.xi, previous) << gap;
-        EXPECT_GE(last.single.checks.stick_margin, -1e-12) << gap;
-        EXPECT_GE(last.single.checks.slip_margin, -1e-12) << gap;
-        previous = last.single.xi;
+        EXPECT_GT(last.xi, previous) << gap;
+        EXPECT_GE(last.checks.stick_margin, -1e-12) << gap;
+        EXPECT_GE(last.checks.slip_margin, -1e-12) << gap;
+        previous = last.xi;
     }
-    const zone_solution sliding = s.zones.solve(f);
-    EXPECT_GT(sliding.single.xi, previous);
-    EXPECT_LT(sliding.single.xi - previous, 1e-7);
+    const tangential_solution sliding = s.zones.solve(f);
+    EXPECT_GT(sliding.xi, previous);
+    EXPECT_LT(sliding.xi - previous, 1e-7);
     EXPECT_NEAR(sliding.start, last.start, 1e-4);
     EXPECT_GT(sliding.start, -1.0);
     // xi(f) = -f min G: no sampled point lies lower.
-    for (int i = 0; i <= 400; ++i) EXPECT_LE(-sliding.single.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + 1e-15);
-    EXPECT_GE(sliding.single.checks.slip_margin, -1e-12);
-    const zone_solution mirror = s.zones.solve(-(1.0 - 1e-6) * f);
-    const zone_solution direct = s.zones.solve((1.0 - 1e-6) * f);
+    for (int i = 0; i <= 400; ++i) EXPECT_LE(-sliding.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + 1e-15);
+    EXPECT_GE(sliding.checks.slip_margin, -1e-12);
+    const tangential_solution mirror = s.zones.solve(-(1.0 - 1e-6) * f);
+    const tangential_solution direct = s.zones.solve((1.0 - 1e-6) * f);
     EXPECT_EQ(mirror.start, direct.start);
-    EXPECT_EQ(mirror.single.xi, -direct.single.xi);
-    EXPECT_EQ(mirror.zones.front().direction, -1);
-    EXPECT_NEAR(mirror.single.checks.slip_margin, direct.single.checks.slip_margin, 1e-14);
+    EXPECT_EQ(mirror.xi, -direct.xi);
+    EXPECT_EQ(zones_of(mirror).front().direction, -1);
+    EXPECT_NEAR(mirror.checks.slip_margin, direct.checks.slip_margin, 1e-14);
 }
 
 namespace {
@@ -270,16 +270,16 @@ TEST(ZonesGridRoute, FindsSlipStickSlip) {
     solved s(r, 48);
     const double Q = (1.0 - 1e-2) * f;
     ASSERT_FALSE(s.c.point(Q).checks.stick_holds);
-    const zone_solution z = s.zones.solve(Q);
+    const tangential_solution z = s.zones.solve(Q);
     ASSERT_TRUE(z.general);
     const grid_pair g = grid_route(s.c, r, Q, 200);
-    expect_within_grid_error(g, z.single.xi, false);
-    EXPECT_LT(std::fabs(g.fine.xi - z.single.xi), std::fabs(g.coarse.xi - z.single.xi));
+    expect_within_grid_error(g, z.xi, false);
+    EXPECT_LT(std::fabs(g.fine.xi - z.xi), std::fabs(g.coarse.xi - z.xi));
     const auto runs = g.fine.runs();
     ASSERT_EQ(runs.size(), 3u);
     EXPECT_EQ(runs[0].state, 1);
     EXPECT_EQ(runs[1].state, 0);
     EXPECT_EQ(runs[2].state, 1);
     EXPECT_NEAR(runs[1].from, z.start, 2.0 * g.fine.h);
-    EXPECT_NEAR(runs[1].to, z.single.c0, 2.0 * g.fine.h);
+    EXPECT_NEAR(runs[1].to, z.c0, 2.0 * g.fine.h);
 }

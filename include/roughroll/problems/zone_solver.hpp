@@ -4,21 +4,21 @@
 //   slip zone:   p1 = f p sgn v,               v != 0                          (3.4), (3.15)
 //   int p1 = Q                                                                 (3.13)
 // The structures solved, at the order of the product-integration scheme (4.4):
-//   - the paper's: stick [-1, c0], slip (c0, 1]: tangential_solver, the fast path;
+//   - the paper's: stick [-1, c0], slip (c0, 1]: tangential_solver::solve, the fast path;
 //   - slip [-1, s), stick [s, c0], slip (c0, 1], both slip zones in the direction of Q: the
-//     structure when the paper's zone would carry |p1| > f p at its leading end (G'(-1) < 0,
-//     section 7(c)). On the stick zone p1 = f p + q with q = psi(t) sqrt(1 - t^2) and
-//       L1[q](r) = xi + f G(r),  r = s + rho (t + 1),  rho = (c0 - s)/2,  rho int q = Q - f,
+//     structure when the paper's zone would carry |p1| > f p at its leading end (section
+//     7(c)). On the stick zone p1 = f p + q with q = psi(t) sqrt(1 - t^2) and
+//       L1[q](r) = xi + f G(r),  r = s + rho (t + 1),  rho = (c0 - s)/2,  rho int q = Q - f
 //     (tangential_solver::solve_on_zone), plus the entry condition of 7(b), psi(t = -1) = 0:
 //     the traction reaches the bound f p smoothly where material enters the stick zone;
 //   - gross sliding |Q| = f: slip everywhere, stick only at the point r* where G is least,
 //     xi = -f min G (7(d)).
-// (s, c0) solve the two conditions Q(s, c0) = |Q|, psi_{s,c0}(-1) = 0 by nested Brent
-// searches. Other structures (slip against Q, several stick zones) are detected by the
-// checks of (3.3)-(3.4) and reported, not solved.
+// (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 by nested Brent searches. Other
+// structures (slip against Q, several stick zones) are not solved: the checks of (3.3)-(3.4)
+// then fail and say so.
 #pragma once
 
-#include <string>
+#include <optional>
 #include <vector>
 
 #include "roughroll/problems/tangential_problem.hpp"
@@ -29,46 +29,34 @@ namespace roughroll {
 struct zone {
     double from, to;
     bool stick;
-    int direction;  // slip: +1 or -1, the sign of p1 there (the slip velocity's sign, (3.4)); stick: 0
+    int direction;  // slip: +1 or -1, the sign of p1 there (and of the slip velocity, (3.4)); stick: 0
 };
 
-struct zone_solution {
-    tangential_solution single;  // psi_b, xi, Q, f, sign, checks; single.c0 = end of the stick zone
-    double start = -1.0;         // start of the stick zone: -1 in the paper's structure
-    std::vector<zone> zones;     // from r = -1 to 1
-    bool general = false;        // found by the general search (false: the paper's structure held)
-
-    bool papers_structure() const { return start == -1.0; }
-};
+// The zones of a solution from r = -1 to 1: [-1, start) slip when start > -1, [start, c0]
+// stick (a point at gross sliding), (c0, 1] slip when c0 < 1; slip in the direction of Q.
+std::vector<zone> zones_of(const tangential_solution& s);
 
 class zone_solver {
 public:
-    // The tangential solver supplies G, the system (4.4) on any stick zone and the fast path;
-    // it must outlive this workspace. k1 and f: the solver's own K1* and friction coefficient
-    // (the slip velocity off the stick zone needs the kernel).
-    zone_solver(tangential_solver& single, const kernel& k1, double f);
+    // The tangential solver supplies G, the system (4.4) on any stick zone, the fast path, the
+    // tractions, slip velocities and checks of every structure; it must outlive this workspace.
+    explicit zone_solver(tangential_solver& single);
 
-    // The solution of the complementarity problem for the load Q, |Q| <= f. `force_general`
-    // runs the general search even where the single zone's checks hold (it then returns the
-    // single zone, found by the same conditions).
-    zone_solution solve(double Q, bool force_general = false);
+    // The solution of the complementarity problem for the load Q, |Q| <= f: the single zone
+    // when its checks hold, else the general search. `force_general` runs the search in any
+    // case (where the paper's structure holds it ends at start = -1, the single zone).
+    // `guess`: a start of the stick zone near the root (the coarse level's, when extrapolating).
+    tangential_solution solve(double Q, bool force_general = false, std::optional<double> guess = std::nullopt);
 
-    // p1(r) and v(r) (0 on the stick zone) of a solution of this solver.
-    double traction(const zone_solution& s, double r);
-    double slip_velocity(const zone_solution& s, double r);
-    traction_checks check(const zone_solution& s);
-
-    // psi(t = -1) of the stick zone [start, c0] at load |Q| = Q(start, c0): the entry condition.
-    double entry_coefficient(const tangential_solution& s) const;
+    // psi(t = -1) of a solution's stick zone: the coefficient of sqrt(1 + t) in q at its start.
+    static double entry_coefficient(const tangential_solution& s);
 
 private:
-    zone_solution general(double magnitude);
-    zone_solution gross_sliding();
+    tangential_solution general(double magnitude, std::optional<double> guess);
+    tangential_solution gross_sliding();
     double stick_end(double start, double magnitude);  // c0 with Q(start, c0) = magnitude
-    std::vector<zone> zones_of(double start, double c0, double sign) const;
 
     tangential_solver& single_;
-    kernel k1_;
     double f_;
 };
 
