@@ -114,7 +114,7 @@ TEST(Zones, SlipStickSlipSatisfiesComplementarity) {
         solved s(r, 48);
         for (double gap : {1e-4, 1e-9}) {
             const double Q = (1.0 - gap) * f;
-            EXPECT_FALSE(s.c.point(Q).checks.stick_holds) << gap;
+            EXPECT_FALSE(s.c.tangential().solve(Q).checks.stick_holds) << gap;
             const tangential_solution z = s.zones.solve(Q);
             EXPECT_TRUE(z.general) << gap;
             ASSERT_EQ(zones_of(z).size(), 3u);
@@ -269,7 +269,7 @@ TEST(ZonesGridRoute, FindsSlipStickSlip) {
     const roughness r = tangential_dominates_a();
     solved s(r, 48);
     const double Q = (1.0 - 1e-2) * f;
-    ASSERT_FALSE(s.c.point(Q).checks.stick_holds);
+    ASSERT_FALSE(s.c.tangential().solve(Q).checks.stick_holds);
     const tangential_solution z = s.zones.solve(Q);
     ASSERT_TRUE(z.general);
     const grid_pair g = grid_route(s.c, r, Q, 200);
@@ -282,4 +282,63 @@ TEST(ZonesGridRoute, FindsSlipStickSlip) {
     EXPECT_EQ(runs[2].state, 1);
     EXPECT_NEAR(runs[1].from, z.start, 2.0 * g.fine.h);
     EXPECT_NEAR(runs[1].to, z.c0, 2.0 * g.fine.h);
+}
+
+// Acceptance: Fig. 2's scenes and the data/ unequal-kernels scene, by the default method
+// (extrapolated, n = 128): with zones = "general" every point agrees with the default
+// (zones = "auto", here the single zone) to 1e-10 in P_H/P2, c0 and xi, up to Q/f = 1 - 1e-9.
+TEST(Zones, ForcedGeneralAgreesWithExtrapolated) {
+    std::vector<roughness> scenes;
+    // Fig. 2(a): T = 0.5, 1 at A = 0.5 (T = 0 is Carter: exact at every level); Fig. 2(b): A = 0, 1 at T = 0.5.
+    for (const roughness_term term : {roughness_term{0.5, 0.5}, roughness_term{1.0, 0.5}, roughness_term{0.5, 0.0},
+                                      roughness_term{0.5, 1.0}}) {
+        roughness r;
+        r.cylinder1.tangential = r.cylinder1.normal = term;
+        scenes.push_back(r);
+    }
+    scenes.push_back(unequal_kernels());
+    for (const roughness& r : scenes) {
+        contact automatic(r, f, solver_options{});
+        contact general(r, f, solver_options{0, method::extrapolated, zone_search::general});
+        EXPECT_NEAR(general.normal().lambda, automatic.normal().lambda, 1e-10);
+        for (double load : {0.3, 0.9, 1.0 - 1e-9}) {
+            const tangential_solution a = automatic.point(load * f), g = general.point(load * f);
+            EXPECT_FALSE(a.general);
+            EXPECT_EQ(g.start, -1.0) << load;
+            EXPECT_NEAR(g.c0, a.c0, 1e-10) << load;
+            EXPECT_NEAR(g.xi, a.xi, 1e-10) << load;
+        }
+    }
+}
+
+// Through contact: zones = "auto" takes the general path where the single zone fails, on both
+// levels of an extrapolation, and reports level n with the n/2 difference as its estimate;
+// zones = "single" keeps the paper's zone and its failed checks.
+TEST(Zones, ContactTakesTheGeneralPathWhereNeeded) {
+    const roughness r = tangential_dominates_a();
+    contact automatic(r, f, solver_options{64, method::extrapolated, zone_search::automatic});
+    contact single(r, f, solver_options{64, method::extrapolated, zone_search::single});
+    contact fine(r, f, solver_options{64, method::product, zone_search::automatic});
+    const double Q = (1.0 - 1e-6) * f;
+    const tangential_solution a = automatic.point(Q), s = single.point(Q), level = fine.point(Q);
+    EXPECT_TRUE(a.general);
+    EXPECT_TRUE(a.checks.hold());
+    EXPECT_FALSE(s.general);
+    EXPECT_FALSE(s.checks.hold());
+    EXPECT_GT(a.start, -1.0);
+    // Not extrapolated: level n, with the difference from n/2 as its estimate, which bounds
+    // the error against a finer solution (n = 128).
+    EXPECT_NEAR(a.xi, level.xi, 1e-13);
+    EXPECT_NEAR(a.start, level.start, 1e-11);
+    contact reference(r, f, solver_options{128, method::product, zone_search::automatic});
+    const tangential_solution ref = reference.point(Q);
+    const auto e = automatic.estimate(a);
+    ASSERT_TRUE(e.has_value());
+    EXPECT_STREQ(e->against, "n/2");
+    EXPECT_LT(std::fabs(a.xi - ref.xi), e->xi);
+    EXPECT_LT(std::fabs(a.c0 - ref.c0), e->c0);
+    EXPECT_EQ(automatic.distribution(a).start, a.start);
+    EXPECT_EQ(zones_of(a).size(), 3u);
+    // Mode "single" at a load where the single zone holds is the automatic answer itself.
+    EXPECT_EQ(single.point(0.5 * f).xi, automatic.point(0.5 * f).xi);
 }
