@@ -88,6 +88,9 @@ tangential_solution contact::point(double Q) {
         // The general path is not extrapolated: its zone ends do not yet converge at a clean
         // n^-4 at the default n (docs/formulation.md 7(e)). Level n, estimated against n/2.
         last_coarse_ = coarse;
+        // Refused where the fast path's extrapolation is: a creep at the edge of the double range.
+        if (!std::isfinite(richardson(s.xi, coarse.xi)))
+            throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
         return s;
     }
     s.c0 = richardson(s.c0, coarse.c0);

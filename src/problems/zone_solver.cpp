@@ -53,6 +53,9 @@ tangential_solution zone_solver::gross_sliding() {
     std::vector<double> r(least_G_samples);
     for (int i = 0; i < least_G_samples; ++i) r[i] = 1.0 - 2.0 * i / (least_G_samples - 1);  // descending
     const std::vector<double> g = single_.G(r);
+    for (double value : g)
+        if (!std::isfinite(value))
+            throw numerical_error("zone solver: G of (3.25) is not finite (roughness parameters too large?)");
     const auto least = static_cast<int>(std::min_element(g.begin(), g.end()) - g.begin());
     double lo = r[std::min(least + 1, least_G_samples - 1)], hi = r[std::max(least - 1, 0)];
     // Golden section on the sample's bracket (G is smooth inside (-1, 1)).
