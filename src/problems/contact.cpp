@@ -65,12 +65,12 @@ tangential_solver& contact::tangential() {
 
 tangential_solution contact::level_point(double Q, const tangential_solution* coarse, bool general) {
     if (general || options_.zones == zone_search::general)
-        return zones_->solve(Q, true, coarse ? std::optional<double>(coarse->start) : std::nullopt);
+        return zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
     // The coarse root brackets this one.
     tangential_solution s = tangential_->solve(Q, coarse ? std::optional<double>(coarse->c0) : std::nullopt);
     if (options_.zones == zone_search::single || s.checks.hold()) return s;
     try {
-        return zones_->solve(Q, true);
+        return zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
     } catch (const numerical_error&) {
         return s;  // a structure the general search does not cover: the single zone, its checks failed
     }

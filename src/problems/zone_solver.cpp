@@ -1,6 +1,7 @@
 #include "roughroll/problems/zone_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -15,7 +16,11 @@ namespace {
 constexpr int start_scan = 32;            // trial starts of the stick zone, bracketing the entry condition
 constexpr int least_G_samples = 2001;     // samples of G for its least value (gross sliding)
 constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
-constexpr double guess_half_width = 1e-5;  // bracket around a coarse level's start
+constexpr int newton_iterations = 40;
+// Newton's steps in the zone ends: psi(-1) carries rounding of about 1e-13 (a sum of n
+// coefficients of the collocation solution), which moves the root by a few 1e-12; below
+// 1e-11 the steps are that noise (measured), and Brent's 1e-15 is no closer.
+constexpr double newton_tolerance = 1e-11;
 }  // namespace
 
 std::vector<zone> zones_of(const tangential_solution& s) {
@@ -77,62 +82,98 @@ tangential_solution zone_solver::gross_sliding() {
     tangential_solution s = gross_sliding_solution(f_, value);
     s.c0 = point;
     s.start = point;
-    s.general = point > -1.0;
     return s;
 }
 
-tangential_solution zone_solver::general(double magnitude, std::optional<double> guess) {
-    // The entry condition psi(-1) = 0 along the family of zones [start, c0(start)] that carry
-    // |Q| (docs/formulation.md 7(c)); the paper's zone when psi(-1) <= 0 already at start = -1.
+std::optional<tangential_solution> zone_solver::newton(double magnitude, double start, double c0) {
+    // Newton on F = (Q - |Q|, psi(-1)) in the zone's midpoint m and half-length rho (near gross
+    // sliding Q - f ~ -rho^2 depends on rho alone, psi(-1) mostly on m), the Jacobian by forward
+    // differences (steps 1e-7 rho), each step halved until -1 < m - rho and m + rho <= 1, rho > 0.
+    // Empty when it does not converge: the caller falls back to Brent.
+    const auto residual = [this, magnitude](double m, double rho) {
+        const tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
+        return std::array<double, 2>{(t.Q - magnitude) / f_, entry_coefficient(t)};
+    };
+    double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
+    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
+        const auto F = residual(m, rho);
+        const double h = 1e-7 * rho;
+        const auto Fm = residual(m - h, rho);  // m - h - rho > -1 unless at the edge: then rho - h below
+        const auto Fr = residual(m, rho - h);
+        const double a = (F[0] - Fm[0]) / h, b = (F[0] - Fr[0]) / h;
+        const double c = (F[1] - Fm[1]) / h, d = (F[1] - Fr[1]) / h;
+        const double det = a * d - b * c;
+        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
+        const double dm = -(d * F[0] - b * F[1]) / det, dr = -(a * F[1] - c * F[0]) / det;
+        double step = 1.0;
+        while (!(rho + step * dr > 0.0 && m + step * (dm - dr) - rho > -1.0 && m + step * (dm + dr) + rho <= 1.0)) {
+            step *= 0.5;
+            if (step < 1e-6) return std::nullopt;
+        }
+        m += step * dm;
+        rho += step * dr;
+        if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
+            tangential_solution s = single_.solve_on_zone(m - rho, m + rho);
+            s.iterations = iteration;
+            return s;
+        }
+    }
+    return std::nullopt;
+}
+
+tangential_solution zone_solver::general(double magnitude, std::optional<zone_guess> guess,
+                                         std::optional<double> single_end) {
+    // The paper's zone first: if psi(-1) <= 0 at start = -1 it is the answer (7(b)).
+    const double edge_end = single_end ? *single_end : stick_end(-1.0, magnitude);
+    tangential_solution at_edge = single_.solve_on_zone(-1.0, edge_end);
+    const double at_edge_entry = entry_coefficient(at_edge);
+    if (at_edge_entry <= 0.0) return at_edge;
+    // Newton from the coarse level's zone when extrapolating.
+    if (guess && guess->start > -1.0)
+        if (auto s = newton(magnitude, guess->start, guess->c0)) return *s;
+    // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
+    // (7(e)): scan the starts towards the trailing edge until psi(-1) changes sign (a start from
+    // which no zone carries |Q| ends the scan), Newton from the interpolated zone, Brent if that fails.
     const auto entry = [this, magnitude](double start) {
         return entry_coefficient(single_.solve_on_zone(start, stick_end(start, magnitude)));
     };
-    double found = -1.0;
-    int iterations = 0;
-    if (entry(-1.0) > 0.0) {
-        double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
-        if (guess && *guess > -1.0) {
-            const double a = std::max(-1.0, *guess - guess_half_width), b = *guess + guess_half_width;
-            try {
-                if (entry(a) > 0.0 && entry(b) <= 0.0) lo = a, hi = b;
-            } catch (const numerical_error&) {
-            }
+    double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
+    double lo_entry = at_edge_entry, hi_entry = 0.0, lo_end = edge_end, hi_end = 0.0;
+    for (int k = 1; std::isnan(hi) && k < start_scan; ++k) {
+        const double trial = -1.0 + 2.0 * k / start_scan;
+        double end, e;
+        try {
+            end = stick_end(trial, magnitude);
+            e = entry_coefficient(single_.solve_on_zone(trial, end));
+        } catch (const numerical_error&) {
+            break;
         }
-        // Else scan the starts towards the trailing edge until psi(-1) changes sign; a start
-        // from which no zone carries |Q| ends the scan.
-        for (int k = 1; std::isnan(hi) && k < start_scan; ++k) {
-            const double trial = -1.0 + 2.0 * k / start_scan;
-            double e;
-            try {
-                e = entry(trial);
-            } catch (const numerical_error&) {
-                break;
-            }
-            if (e <= 0.0) hi = trial;
-            else lo = trial;
-        }
-        if (std::isnan(hi))
-            throw numerical_error(
-                "zone solver: the entry condition psi(-1) = 0 has no root on the scanned starts of the stick zone "
-                "(a structure the solver does not cover)");
-        const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
-        found = r.x;
-        iterations = r.iterations;
+        if (e <= 0.0) hi = trial, hi_entry = e, hi_end = end;
+        else lo = trial, lo_entry = e, lo_end = end;
     }
-    tangential_solution s = single_.solve_on_zone(found, stick_end(found, magnitude));
-    s.iterations = iterations;
-    s.general = found > -1.0;
+    if (std::isnan(hi))
+        throw numerical_error(
+            "zone solver: the entry condition psi(-1) = 0 has no root on the scanned starts of the stick zone "
+            "(a structure the solver does not cover)");
+    const double w = lo_entry / (lo_entry - hi_entry);
+    if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;
+    const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
+    tangential_solution s = single_.solve_on_zone(r.x, stick_end(r.x, magnitude));
+    s.iterations = r.iterations;
     return s;
 }
 
-tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<double> guess) {
+tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
     const double magnitude = load_magnitude(Q, f_);
+    std::optional<double> single_end;
     if (!force_general || magnitude == 0.0) {
         tangential_solution s = single_.solve(Q);
         if (s.checks.hold() || magnitude == 0.0) return s;
+        single_end = s.c0;
     }
     check_load_resolvable(magnitude, f_);
-    tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, guess);
+    tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, guess, single_end);
+    s.general = s.start > -1.0;
     apply_load_sign(s, Q, "zone solver");
     s.checks = single_.check(s);
     return s;

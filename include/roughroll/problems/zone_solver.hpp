@@ -13,7 +13,8 @@
 //     the traction reaches the bound f p smoothly where material enters the stick zone;
 //   - gross sliding |Q| = f: slip everywhere, stick only at the point r* where G is least,
 //     xi = -f min G (7(d)).
-// (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 by nested Brent searches. Other
+// (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 by Newton's method from a guess or a
+// scanned bracket, with nested Brent searches as the fallback. Other
 // structures (slip against Q, several stick zones) are not solved: the checks of (3.3)-(3.4)
 // then fail and say so.
 #pragma once
@@ -36,6 +37,11 @@ struct zone {
 // stick (a point at gross sliding), (c0, 1] slip when c0 < 1; slip in the direction of Q.
 std::vector<zone> zones_of(const tangential_solution& s);
 
+// A zone near the one sought (the coarse level's, when extrapolating).
+struct zone_guess {
+    double start, c0;
+};
+
 class zone_solver {
 public:
     // The tangential solver supplies G, the system (4.4) on any stick zone, the fast path, the
@@ -45,14 +51,16 @@ public:
     // The solution of the complementarity problem for the load Q, |Q| <= f: the single zone
     // when its checks hold, else the general search. `force_general` runs the search in any
     // case (where the paper's structure holds it ends at start = -1, the single zone).
-    // `guess`: a start of the stick zone near the root (the coarse level's, when extrapolating).
-    tangential_solution solve(double Q, bool force_general = false, std::optional<double> guess = std::nullopt);
+    // `guess`: a zone near the one sought, the start of a Newton iteration (7(e)).
+    tangential_solution solve(double Q, bool force_general = false, std::optional<zone_guess> guess = std::nullopt);
 
     // psi(t = -1) of a solution's stick zone: the coefficient of sqrt(1 + t) in q at its start.
     static double entry_coefficient(const tangential_solution& s);
 
 private:
-    tangential_solution general(double magnitude, std::optional<double> guess);
+    // single_end: the fast path's c0 at this load, when it was solved (saves one search).
+    tangential_solution general(double magnitude, std::optional<zone_guess> guess, std::optional<double> single_end);
+    std::optional<tangential_solution> newton(double magnitude, double start, double c0);
     tangential_solution gross_sliding();
     double stick_end(double start, double magnitude);  // c0 with Q(start, c0) = magnitude
 
