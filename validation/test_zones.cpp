@@ -7,6 +7,8 @@
 // (checked by adaptive quadrature, without G, the stretched kernel or the zone's variable),
 // and gives a creep curve continuous and monotone up to gross sliding, xi(f) = -f min G.
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <functional>
 #include <vector>
 
@@ -14,6 +16,8 @@
 #include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
+#include "roughroll/base/error.hpp"
+#include "roughroll/io/scene.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 #include "test_zones_low_order.hpp"
@@ -341,4 +345,49 @@ TEST(Zones, ContactTakesTheGeneralPathWhereNeeded) {
     EXPECT_EQ(zones_of(a).size(), 3u);
     // Mode "single" at a load where the single zone holds is the automatic answer itself.
     EXPECT_EQ(single.point(0.5 * f).xi, automatic.point(0.5 * f).xi);
+}
+
+// A creep curve through the region where the single zone starts to fail (the second scene,
+// from Q/f ~ 1 - 1e-3 on), by the default method with zones = "auto": every point satisfies
+// (3.3)-(3.4), the path switches to the general search there, and the creep rises
+// monotonically; across the switch (extrapolated on one side, level n on the other) it moves
+// by no more than the points' own estimates allow.
+TEST(Zones, DefaultCurveThroughTheSwitch) {
+    contact c(tangential_dominates_b(), f, solver_options{64, method::extrapolated, zone_search::automatic});
+    double previous = -1.0;
+    bool seen_single = false, seen_general = false;
+    for (double gap : {1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 1e-5, 1e-7, 1e-9}) {
+        const tangential_solution s = c.point((1.0 - gap) * f);
+        EXPECT_TRUE(s.checks.hold()) << gap;
+        EXPECT_GT(s.xi, previous) << gap;
+        previous = s.xi;
+        (s.general ? seen_general : seen_single) = true;
+        if (s.general) {
+            EXPECT_GT(s.start, -1.0);
+        }
+    }
+    EXPECT_TRUE(seen_single);
+    EXPECT_TRUE(seen_general);
+}
+
+// The [solver] key: zones = "auto" | "single" | "general"; anything else is an input error
+// naming the key.
+TEST(Zones, SceneKey) {
+    const auto scene_with = [](const std::string& zones_line) {
+        const std::string path = ::testing::TempDir() + "zones_scene.toml";
+        std::ofstream(path) << "friction = 0.3\nQ = 0.1\n[solver]\n" << zones_line << "\n";
+        return path;
+    };
+    EXPECT_EQ(read_scene(scene_with("zones = \"general\"")).solver.zones, zone_search::general);
+    EXPECT_EQ(read_scene(scene_with("zones = \"single\"")).solver.zones, zone_search::single);
+    EXPECT_EQ(read_scene(scene_with("zones = \"auto\"")).solver.zones, zone_search::automatic);
+    EXPECT_EQ(read_scene(scene_with("")).solver.zones, zone_search::automatic);
+    try {
+        read_scene(scene_with("zones = \"several\""));
+        ADD_FAILURE() << "an unknown zone search was accepted";
+    } catch (const input_error& e) {
+        EXPECT_NE(std::string(e.what()).find("solver.zones"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(read_scene(scene_with("zones = 3")), input_error);
+    EXPECT_THROW(contact(roughness{}, f, solver_options{0, method::one_parameter, zone_search::general}), input_error);
 }
