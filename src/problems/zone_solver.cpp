@@ -172,10 +172,17 @@ tangential_solution zone_solver::solve(double Q, bool force_general, std::option
         single_end = s.c0;
     }
     check_load_resolvable(magnitude, f_);
-    tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, guess, single_end);
-    s.general = s.start > -1.0;
-    apply_load_sign(s, Q, "zone solver");
-    s.checks = single_.check(s);
+    const auto search = [&](std::optional<zone_guess> g) {
+        tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, g, single_end);
+        s.general = s.start > -1.0;
+        apply_load_sign(s, Q, "zone solver");
+        s.checks = single_.check(s);
+        return s;
+    };
+    tangential_solution s = search(guess);
+    // Newton from a guess may find another zone that solves both conditions but not the
+    // inequalities (seen near s = 0.97 while it wandered): then search without the guess.
+    if (guess && !s.checks.hold()) s = search(std::nullopt);
     return s;
 }
 
