@@ -110,6 +110,7 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     if (reported_ && s.general) {
         // A point of the general path is level n itself: the difference from n/2.
         if (!last_coarse_ || last_coarse_->Q != s.Q) point(s.Q);
+        if (!last_coarse_ || last_coarse_->Q != s.Q) last_coarse_ = companion_->level_point(s.Q, nullptr, true);
         return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - last_coarse_->c0),
                               std::fabs(s.xi - last_coarse_->xi), 0.0, "n/2"};
     }
