@@ -69,10 +69,14 @@ tangential_solution contact::level_point(double Q, const tangential_solution* co
     // The coarse root brackets this one.
     tangential_solution s = tangential_->solve(Q, coarse ? std::optional<double>(coarse->c0) : std::nullopt);
     if (options_.zones == zone_search::single || s.checks.hold()) return s;
+    // A structure the general search does not cover (no root, or its answer fails the checks
+    // too): the single zone, its checks failed.
     try {
-        return zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
+        tangential_solution g =
+            zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
+        return g.checks.hold() ? g : s;
     } catch (const numerical_error&) {
-        return s;  // a structure the general search does not cover: the single zone, its checks failed
+        return s;
     }
 }
 
