@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <functional>
 #include <random>
 #include <vector>
@@ -18,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/zone_solver.hpp"
@@ -424,4 +426,38 @@ TEST(Zones, ScanOfScenes) {
         }
     }
     EXPECT_GE(failing, 10);  // the scan does exercise the search (29 of the 80 points, measured)
+}
+
+// The output of a general-path point: JSON zones from -1 to 1 with their states and directions,
+// stick_start, zone_path; the summary lists the zones; the curve CSV counts them.
+TEST(Zones, Output) {
+    contact c(tangential_dominates_a(), f, solver_options{48, method::product, zone_search::automatic});
+    const tangential_solution s = c.point(-(1.0 - 1e-3) * f);  // the mirror: slip in direction -1
+    ASSERT_TRUE(s.general);
+    const nlohmann::json j = to_json(point_report{"", c.normal(), s, 0.0, c.estimate(s), std::nullopt});
+    ASSERT_EQ(j["zones"].size(), 3u);
+    EXPECT_EQ(j["zones"][0]["from"], -1.0);
+    EXPECT_EQ(j["zones"][0]["state"], "slip");
+    EXPECT_EQ(j["zones"][0]["direction"], -1);
+    EXPECT_EQ(j["zones"][1]["state"], "stick");
+    EXPECT_EQ(j["zones"][1]["from"], s.start);
+    EXPECT_EQ(j["zones"][1]["to"], s.c0);
+    EXPECT_EQ(j["zones"][2]["to"], 1.0);
+    EXPECT_EQ(j["stick_start"], s.start);
+    EXPECT_EQ(j["zone_path"], "general");
+    EXPECT_EQ(j["checks_hold"], true);
+    std::ostringstream text;
+    write_summary(text, point_report{"", c.normal(), s, 0.0, std::nullopt, std::nullopt});
+    EXPECT_NE(text.str().find("slip- [-1, "), std::string::npos) << text.str();
+    EXPECT_NE(text.str().find("(general zone search)"), std::string::npos);
+    std::ostringstream csv;
+    write_curve_csv(csv, creep_curve(c, {0.5 * f, (1.0 - 1e-3) * f}));
+    std::string header, first, second;
+    std::istringstream lines(csv.str());
+    std::getline(lines, header);
+    std::getline(lines, first);
+    std::getline(lines, second);
+    EXPECT_NE(header.find(",zones,stick_start"), std::string::npos);
+    EXPECT_NE(first.find(",2,-1"), std::string::npos) << first;
+    EXPECT_NE(second.find(",3,-0.98"), std::string::npos) << second;
 }
