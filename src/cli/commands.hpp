@@ -14,12 +14,13 @@
 
 namespace roughroll::cli {
 
-// SCENE [--n N] [--method NAME]: a scene file and the solver overrides every
+// SCENE [--n N] [--method NAME] [--zones HOW]: a scene file and the solver overrides every
 // scene-based subcommand accepts (defined in main.cpp).
 struct scene_options {
     std::string path;
     std::optional<int> n;
     std::optional<std::string> method_name;
+    std::optional<std::string> zones_name;
 };
 
 void add_scene_options(CLI::App* cmd, scene_options& o);

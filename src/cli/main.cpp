@@ -67,6 +67,8 @@ void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
     add_integer(cmd, "--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
     cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
+    cmd->add_option("--zones", o.zones_name, "auto, single or general: how the stick and slip zones are found "
+                                             "(overrides solver.zones)");
 }
 
 scene load_scene(const scene_options& o) {
@@ -76,6 +78,7 @@ scene load_scene(const scene_options& o) {
         s.solver.n = *o.n;
     }
     if (o.method_name) s.solver.how = method_from_string(*o.method_name);
+    if (o.zones_name) s.solver.zones = zone_search_from_string(*o.zones_name);
     return s;
 }
 

@@ -87,6 +87,7 @@ std::string curve(int column, const std::string& style, const std::string& title
 struct plot_facts {
     std::string title;  // first title line (gnuplot enhanced text, escaped)
     double Q, f, c0, xi, lambda;
+    double start;  // the stick zone is [start, c0]: start > -1 when slip leads (zone search, formulation 7)
     double p_max, v_max;
     bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
 };
@@ -98,7 +99,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     // y range of the tractions: the pressure on top with room for the key, -f p below.
     const double y_top = 1.45 * k.p_max;
     const double y_bottom = -1.25 * f * k.p_max;
-    const bool has_stick = k.c0 > -1.0;
+    const bool has_stick = k.c0 > k.start;
+    const bool leading_slip = k.start > -1.0;
     const bool has_slip = k.c0 < 1.0;
     const std::string data = "'" + gnuplot_path(csv) + "'";
     const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + number(k.Q / f, 3) + "),   f = " +
@@ -132,14 +134,20 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
            << "set key top " << (k.c0 > 0.0 ? "left" : "right")
            << " box opaque samplen 2.5 spacing 1.1 font ',12' width 1\n";
         if (has_stick)
-            gp << "set object 1 rect from -1, graph 0 to c0, graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
-               << "set label 1 \"stick zone\" at " << shortest(0.5 * (-1.0 + k.c0))
+            gp << "set object 1 rect from " << shortest(k.start)
+               << ", graph 0 to c0, graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
+               << "set label 1 \"stick zone\" at " << shortest(0.5 * (k.start + k.c0))
                << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#1f4e79'\n";
         if (has_slip)
             gp << "set label 2 \"slip zone\" at " << shortest(0.5 * (k.c0 + 1.0))
                << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#8c2d04'\n";
         if (has_stick && has_slip)
             gp << "set arrow 1 from c0, graph 0 to c0, graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
+        if (leading_slip)
+            gp << "set label 3 \"slip\" at " << shortest(0.5 * (-1.0 + k.start))
+               << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#8c2d04'\n"
+               << "set arrow 3 from " << shortest(k.start) << ", graph 0 to " << shortest(k.start)
+               << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
         // Drawn in this order: the limits over p1 show p1 = f p on the slip zone (3.5).
         // Columns 4 and 5 are f p and -f p; with Q < 0 the limit p1 follows is -f p.
         const std::string limit = negative ? "-f p" : "f p";
@@ -153,7 +161,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
 
         // Lower panel: the slip velocity, zero on the stick zone (3.2), with the sign of Q
         // on the slip zone (3.4); c0 named beside the dashed line, on the stick side.
-        gp << "unset label 1\nunset label 2\nunset key\n"
+        gp << "unset label 1\nunset label 2\nunset label 3\nunset key\n"
            << "set tmargin at screen 0.325\nset bmargin at screen 0.085\n"
            << "set format x '%g'\nset xlabel \"r = x_1/a\"\n"
            << "set ylabel \"slip velocity v\\n(scaled as {/Symbol x})\" offset -1.5,0\n";
@@ -224,7 +232,7 @@ int run_traction(const traction_options& o) {
         row.r = grid[i];
         row.p = normal.pressure(row.r);
         row.p1 = c.traction(level, row.r);
-        row.stick = row.r < level.c0;
+        row.stick = row.r < level.c0 && row.r >= level.start;
         row.v = row.stick ? 0.0 : velocity[i];
         smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
         if (!std::isfinite(row.p) || !std::isfinite(row.p1) || !std::isfinite(row.v))
@@ -264,6 +272,7 @@ int run_traction(const traction_options& o) {
     facts.Q = Q;
     facts.f = f;
     facts.c0 = level.c0;  // the stick zone the plotted tractions have
+    facts.start = level.start;
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;

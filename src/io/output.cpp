@@ -2,6 +2,7 @@
 
 
 #include "roughroll/model/carter.hpp"
+#include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
 
@@ -14,6 +15,26 @@ nlohmann::json term_json(const roughness_term& t) {
 nlohmann::json cylinder_json(const cylinder_roughness& c) {
     return {{"tangential", term_json(c.tangential)}, {"normal", term_json(c.normal)}};
 }
+
+// The zones of docs/formulation.md section 7, from r = -1 to 1.
+nlohmann::json zones_json(const tangential_solution& s) {
+    nlohmann::json zones = nlohmann::json::array();
+    for (const zone& z : zones_of(s))
+        zones.push_back({{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
+    return zones;
+}
+
+std::string zones_text(const tangential_solution& s) {
+    std::string text;
+    for (const zone& z : zones_of(s)) {
+        if (!text.empty()) text += ", ";
+        text += (z.stick ? "stick [" : std::string(z.direction > 0 ? "slip+ [" : "slip- [")) + shortest(z.from) + ", " +
+                shortest(z.to) + "]";
+    }
+    return text;
+}
+
+const char* zone_path(const tangential_solution& s) { return s.general ? "general" : "single"; }
 
 std::string term_text(const roughness_term& t) {
     return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
@@ -59,6 +80,9 @@ nlohmann::json to_json(const point_report& r) {
         {"Q", s.Q},
         {"f", s.f},
         {"c0", s.c0},
+        {"stick_start", s.start},
+        {"zones", zones_json(s)},
+        {"zone_path", zone_path(s)},
         {"xi", s.xi},
         {"hertz_load_ratio", r.normal.lambda},
         {"gamma", r.normal.gamma},
@@ -83,6 +107,7 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
         << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
         << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"
+        << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
         << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
     if (r.estimate)
@@ -114,7 +139,7 @@ void write_summary(std::ostream& out, const point_report& r) {
 
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
-           "Q_error_estimate"
+           "Q_error_estimate,zones,stick_start"
         << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << "\n";
     for (const auto& row : curve) {
         const auto& s = row.solution;
@@ -125,6 +150,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
+        out << ',' << zones_of(s).size() << ',' << shortest(s.start);
         if (si) {
             const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);

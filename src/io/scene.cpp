@@ -208,9 +208,16 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
     solver_options options;
     const toml::table* table = table_at(root, "solver", source, "solver");
     if (table == nullptr) return options;
-    check_keys(*table, {"n", "method"}, source, "solver");
+    check_keys(*table, {"n", "method", "zones"}, source, "solver");
     if (const toml::node* n = table->get("n")) options.n = nodes_at(*n, source, "solver.n");
     if (const toml::node* how = table->get("method")) options.how = method_at(*how, source, "solver.method");
+    if (const toml::node* zones = table->get("zones")) {
+        try {
+            options.zones = zone_search_from_string(string_at(*zones, source, "solver.zones"));
+        } catch (const input_error& e) {
+            fail(source, quoted("solver.zones") + ": " + e.what());
+        }
+    }
     return options;
 }
 

@@ -34,6 +34,22 @@ method method_from_string(const std::string& name) {
     throw input_error("unknown method '" + name + "' (known: paper, product, extrapolated, one-parameter)");
 }
 
+std::string to_string(zone_search z) {
+    switch (z) {
+        case zone_search::automatic: return "auto";
+        case zone_search::single: return "single";
+        case zone_search::general: return "general";
+    }
+    return "unknown";
+}
+
+zone_search zone_search_from_string(const std::string& name) {
+    if (name == "auto") return zone_search::automatic;
+    if (name == "single") return zone_search::single;
+    if (name == "general") return zone_search::general;
+    throw input_error("unknown zone search '" + name + "' (known: auto, single, general)");
+}
+
 std::ostream& operator<<(std::ostream& os, method m) { return os << to_string(m); }
 
 }  // namespace roughroll

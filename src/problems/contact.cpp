@@ -23,6 +23,9 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     const int n = options.nodes();
     if (options.how == method::one_parameter) {
+        if (options.zones == zone_search::general)
+            throw input_error("zone search 'general' is not available for method 'one-parameter' (use 'auto' or "
+                              "'single'; docs/formulation.md section 7)");
         limit_ = std::make_unique<one_parameter_solver>(surfaces, f, n);
         return;
     }
@@ -34,7 +37,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
             throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                    ": the coarse level n/2 is not in the asymptotic range of product integration "
                                    "for these kernels; increase n or use method 'product'");
-        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product});
+        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones});
     }
     const method level = options.how == method::extrapolated ? method::product : options.how;
     normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level));
@@ -45,6 +48,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     }
     tangential_ = std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces),
                                                       kernel::normal(surfaces), f);
+    zones_ = std::make_unique<zone_solver>(*tangential_);
 }
 
 const normal_solution& contact::normal() const {
@@ -59,12 +63,40 @@ tangential_solver& contact::tangential() {
     return *tangential_;
 }
 
+tangential_solution contact::level_point(double Q, const tangential_solution* coarse, bool general) {
+    if (general || options_.zones == zone_search::general)
+        return zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
+    // The coarse root brackets this one.
+    tangential_solution s = tangential_->solve(Q, coarse ? std::optional<double>(coarse->c0) : std::nullopt);
+    if (options_.zones == zone_search::single || s.checks.hold()) return s;
+    // A structure the general search does not cover (no root, or its answer fails the checks
+    // too): the single zone, its checks failed.
+    try {
+        tangential_solution g =
+            zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
+        return g.checks.hold() ? g : s;
+    } catch (const numerical_error&) {
+        return s;
+    }
+}
+
 tangential_solution contact::point(double Q) {
     if (limit_) return limit_->solve(Q);
-    if (!reported_) return tangential_->solve(Q);
-    const tangential_solution coarse = companion_->point(Q);
-    tangential_solution s = tangential_->solve(Q, coarse.c0);  // the coarse root brackets this one
+    if (!reported_) return level_point(Q, nullptr, false);
+    tangential_solution coarse = companion_->point(Q);
+    tangential_solution s = level_point(Q, &coarse, coarse.general);
+    // Both levels on the same path.
+    if (s.general && !coarse.general) coarse = companion_->level_point(Q, nullptr, true);
     last_fine_ = s;
+    if (s.general) {
+        // The general path is not extrapolated: its zone ends do not yet converge at a clean
+        // n^-4 at the default n (docs/formulation.md 7(e)). Level n, estimated against n/2.
+        last_coarse_ = coarse;
+        // Refused where the fast path's extrapolation is: a creep at the edge of the double range.
+        if (!std::isfinite(richardson(s.xi, coarse.xi)))
+            throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
+        return s;
+    }
     s.c0 = richardson(s.c0, coarse.c0);
     s.xi = richardson(s.xi, coarse.xi);
     if (!(std::isfinite(s.c0) && std::isfinite(s.xi)))
@@ -74,11 +106,18 @@ tangential_solution contact::point(double Q) {
 
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_) return s;
-    if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = tangential_->solve(s.Q);
+    if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = level_point(s.Q, nullptr, s.general);
     return *last_fine_;
 }
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    if (reported_ && s.general) {
+        // A point of the general path is level n itself: the difference from n/2.
+        if (!last_coarse_ || last_coarse_->Q != s.Q) point(s.Q);
+        if (!last_coarse_ || last_coarse_->Q != s.Q) last_coarse_ = companion_->level_point(s.Q, nullptr, true);
+        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - last_coarse_->c0),
+                              std::fabs(s.xi - last_coarse_->xi), 0.0, "n/2"};
+    }
     if (reported_) {
         // Extrapolated: the difference from level n, which is 15/16 of level n's error and
         // above the extrapolated error wherever Richardson's rule holds.
@@ -149,7 +188,7 @@ bool contact::ensure_companion() {
                 !in_asymptotic_range(widest_kernel(surfaces_), other, options_.how))
                 continue;
             try {
-                companion_ = std::make_unique<contact>(surfaces_, f_, solver_options{other, options_.how});
+                companion_ = std::make_unique<contact>(surfaces_, f_, solver_options{other, options_.how, options_.zones});
                 break;
             } catch (const resolution_error&) {
             }

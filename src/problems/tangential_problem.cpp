@@ -70,20 +70,25 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
 
 double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
-tangential_solution tangential_solver::solve_system(double c0) {
-    const double rho = 0.5 * (1.0 + c0);
+tangential_solution tangential_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
+
+tangential_solution tangential_solver::solve_on_zone(double start, double c0) {
+    // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
+    // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
+    const double rho = 0.5 * (c0 - start);
     const auto& rule = normal_.rule;
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
     gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
     k1_operator_.add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
-    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
+    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
     const std::vector<double> g = G(r);
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
     std::ostringstream context;
     context.precision(17);
     context << "tangential problem (4.4) at c0 = " << c0;
+    if (start != -1.0) context << ", stick zone from " << start;
     const gsl_vector* x = system_.solve(context.str());
 
     std::vector<double> psi(n_);
@@ -95,6 +100,7 @@ tangential_solution tangential_solver::solve_system(double c0) {
     tangential_solution s{};
     s.f = f_;
     s.c0 = c0;
+    s.start = start;
     s.xi = gsl_vector_get(x, n_);
     s.Q = f_ + rho * load;  // (4.5)
     s.sign = 1.0;
@@ -230,8 +236,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
 
 double tangential_solver::q0(const tangential_solution& s, double r) {
     const double rho = s.rho();
-    if (r <= -1.0 || r >= s.c0 || s.psi_b.empty()) return 0.0;
-    const double t = (r + 1.0 - rho) / rho;
+    if (r <= s.start || r >= s.c0 || s.psi_b.empty()) return 0.0;
+    const double t = (r - s.start) / rho - 1.0;
     return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
 }
 
@@ -240,41 +246,47 @@ double tangential_solver::traction(const tangential_solution& s, double r) {
 }
 
 namespace {
-// L1[q0] at a point of the slip zone, in the stick variable t > 1: the Cauchy transform of
-// the U-series, plus the kernel terms. Since tau - t < 0 on the whole stick zone, each term
-// T' exp(-A' (t - tau)) factors as exp(-A' (t - 1)) times its integral at t = 1, so the
-// kernel part costs one integral per term, whatever the number of points.
+// L1[q0] at a point of a slip zone, in the stick variable |t| > 1: the Cauchy transform of
+// the U-series, plus the kernel terms. For t > 1, tau - t < 0 on the whole stick zone and each
+// term T' exp(-A' (t - tau)) factors as exp(-A' (t - 1)) times its integral at t = 1; for
+// t < -1 (the leading slip zone of docs/formulation.md 7) likewise exp(-A' (-1 - t)) times
+// its integral at t = -1. So the kernel part costs two integrals per term, whatever the
+// number of points.
 class stick_operator_outside {
 public:
     stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b, const gauss_legendre& rule)
         : psi_b_(psi_b) {
         for (const auto& term : stretched_k1.terms()) {
             kernel_moments one(kernel({term}), static_cast<int>(psi_b.size()), rule);
-            at_one_.push_back({term.A, one.integrate(psi_b, 1.0)});
+            at_ends_.push_back({term.A, one.integrate(psi_b, 1.0), one.integrate(psi_b, -1.0)});
         }
     }
 
     double operator()(double t) const {
         double sum = cauchy_u_series(psi_b_, t);
-        for (const auto& [rate, value] : at_one_) sum += value * std::exp(-rate * (t - 1.0));
+        for (const auto& e : at_ends_)
+            sum += t > 0.0 ? e.at_one * std::exp(-e.rate * (t - 1.0)) : e.at_minus_one * std::exp(-e.rate * (-1.0 - t));
         return sum;
     }
 
 private:
+    struct end_values {
+        double rate, at_one, at_minus_one;  // A', the kernel integral at t = 1 and at t = -1
+    };
     const std::vector<double>& psi_b_;
-    std::vector<std::pair<double, double>> at_one_;  // (A', kernel integral at t = 1)
+    std::vector<end_values> at_ends_;
 };
 }  // namespace
 
 std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_solution& s,
                                                                const std::vector<double>& r) {
     // v = xi + f G(r) - L1[q0](r) for the |Q| problem, (3.6) with (3.15), at sorted points
-    // of the slip zone, where L1 is the stick-zone operator evaluated outside its interval.
+    // of the slip zones, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
     const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, moments_rule_);
     for (std::size_t i = 0; i < r.size(); ++i)
-        v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() ? 0.0 : lq0((r[i] + 1.0 - rho) / rho));
+        v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() || rho == 0.0 ? 0.0 : lq0((r[i] - s.start) / rho - 1.0));
     return v;
 }
 
@@ -288,11 +300,15 @@ std::vector<double> tangential_solver::slip_velocity(const tangential_solution& 
     for (std::size_t i = 0; i < r.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&r](std::size_t a, std::size_t b) { return r[a] > r[b]; });
     std::vector<double> slip;
+    std::vector<std::size_t> where;
     for (std::size_t i : order)
-        if (r[i] > s.c0) slip.push_back(std::min(r[i], 1.0));
+        if (r[i] > s.c0 || r[i] < s.start) {
+            slip.push_back(std::max(-1.0, std::min(r[i], 1.0)));
+            where.push_back(i);
+        }
     const std::vector<double> v = slip_velocity_magnitude(s, slip);
     std::vector<double> out(r.size(), 0.0);  // 0 on the stick zone (3.2)
-    for (std::size_t k = 0; k < slip.size(); ++k) out[order[k]] = s.sign * v[k];
+    for (std::size_t k = 0; k < slip.size(); ++k) out[where[k]] = s.sign * v[k];
     return out;
 }
 
@@ -306,17 +322,19 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         if (!(v >= margin)) margin = v;
     };
     for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
-    if (s.c0 > -1.0) {
+    if (s.c0 > s.start) {
         for (int i = 0; i < check_points; ++i) {
-            const double r = grid_point(-1.0, s.c0, i);
+            const double r = grid_point(s.start, s.c0, i);
             lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
         }
     }
-    if (s.c0 < 1.0) {
-        std::vector<double> grid(check_points);
-        for (int i = 0; i < check_points; ++i) grid[i] = grid_point(s.c0, 1.0, i);  // descending
-        for (double v : slip_velocity_magnitude(s, grid)) lower(c.slip_margin, v / f_);
-    }
+    // The slip zones: (c0, 1], and [-1, start) when the stick zone does not reach r = -1.
+    std::vector<double> grid;
+    if (s.c0 < 1.0)
+        for (int i = 0; i < check_points; ++i) grid.push_back(grid_point(s.c0, 1.0, i));  // descending
+    if (s.start > -1.0)
+        for (int i = 0; i < check_points; ++i) grid.push_back(grid_point(-1.0, s.start, i));
+    for (double v : slip_velocity_magnitude(s, grid)) lower(c.slip_margin, v / f_);
     c.pressure_holds = c.pressure_margin >= 0.0;
     c.stick_holds = c.stick_margin >= 0.0;
     c.slip_holds = c.slip_margin > 0.0;

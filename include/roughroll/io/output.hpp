@@ -28,7 +28,8 @@ void write_summary(std::ostream& out, const point_report& r);
 
 // Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,
 // xi_error_estimate,Q_error_estimate (empty without an estimate; the c0 estimate is 0 on a
-// curve swept in c0, the Q estimate 0 on a curve at given loads); shortest round-trip digits.
+// curve swept in c0, the Q estimate 0 on a curve at given loads),zones (the number of stick and
+// slip zones),stick_start (-1 in the paper's structure); shortest round-trip digits.
 // For a physical scene (`si` given: its scene and contact width) the columns
 // P1_N_per_m,xi1,xi1_carter follow.
 struct si_context {

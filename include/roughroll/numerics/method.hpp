@@ -30,10 +30,20 @@ std::ostream& operator<<(std::ostream& os, method m);  // to_string(m): readable
 int default_nodes(method m);
 method method_from_string(const std::string& name);  // throws input_error naming the method
 
+// How the tangential problem's zones are found (docs/formulation.md section 7):
+//   automatic: the paper's single stick zone [-1, c0] (the fast path), and the general search
+//              of zone_solver only where the single zone fails its checks (3.3)-(3.4);
+//   single:    the paper's single zone only (its checks reported, never acted on);
+//   general:   the general search for every point.
+enum class zone_search { automatic, single, general };
+std::string to_string(zone_search z);
+zone_search zone_search_from_string(const std::string& name);  // "auto", "single", "general"
+
 // The method and its number of nodes, as a scene's [solver] table gives them.
 struct solver_options {
     int n = 0;  // 0: default_nodes(how)
     method how = method::extrapolated;
+    zone_search zones = zone_search::automatic;
 
     int nodes() const { return n == 0 ? default_nodes(how) : n; }
 };

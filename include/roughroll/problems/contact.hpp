@@ -5,6 +5,12 @@
 // and reports P_H/P2, c0 and xi by Richardson's rule for order 4, (16 v_n - v_{n/2})/15;
 // the distributions (pressure, tractions, checks) are those of level n.
 //
+// The zones of each point are found as options.zones says (zone_search, docs/formulation.md
+// section 7): the paper's single zone, and zone_solver's general search where it fails its
+// checks (automatic) or always (general). Both levels of an extrapolation take the same path;
+// a point of the general path (start > -1) is reported at level n, not extrapolated, with
+// the difference from n/2 as its estimate.
+//
 // With method::one_parameter the contact solves the limit t -> 0 of the model instead
 // (one_parameter_solver, docs/formulation.md "The one-parameter limit"): same solutions,
 // same conventions, no two-parameter tangential solver.
@@ -20,6 +26,7 @@
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
 
@@ -75,6 +82,9 @@ public:
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
     tangential_solution level_at_stick_end(double c0, bool checked);
+    // The point at Q of this contact's own level, its zones found as options_.zones says, or by
+    // the general search when `general`; `coarse`: the coarse level's point, for the guesses.
+    tangential_solution level_point(double Q, const tangential_solution* coarse, bool general);
     bool ensure_companion();  // the companion of estimate(): n/2 or 2n; false when neither exists
     // The estimate from s and the companion's solution c at the same Q (or the same c0, swept).
     error_estimate companion_difference(const tangential_solution& s, const tangential_solution& c,
@@ -87,8 +97,10 @@ private:
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
+    std::unique_ptr<zone_solver> zones_;  // the general search, on tangential_
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
+    std::optional<tangential_solution> last_coarse_;  // level n/2 of the last general-path point
 };
 
 // P_H/P2 alone, exactly as contact(surfaces, f, options).normal().lambda reports it (the same

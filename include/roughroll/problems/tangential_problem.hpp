@@ -45,8 +45,12 @@ struct tangential_solution {
     int iterations;             // Brent iterations (0 without a root search)
     double rcond;               // of the last tangential system (1 without a solve)
     traction_checks checks;
+    // Start of the stick zone [start, c0]: -1 in the paper's structure; above -1 when the
+    // zone solver found slip on [-1, start) too, in the direction of Q (docs/formulation.md 7).
+    double start = -1.0;
+    bool general = false;  // found by zone_solver's search rather than the paper's single zone
 
-    double rho() const { return 0.5 * (1.0 + c0); }
+    double rho() const { return 0.5 * (c0 - start); }
 };
 
 // The checks every tangential solver makes on a load Q before solving (and the one-parameter
@@ -87,6 +91,10 @@ public:
     // coarse level of an extrapolation, whose distributions are not reported.
     tangential_solution at_stick_end(double c0, bool checked = true);
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
+    // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
+    // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
+    // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is solve_system.
+    tangential_solution solve_on_zone(double start, double c0);
 
     double G(double r);                                          // (3.25)
     std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
@@ -96,6 +104,9 @@ public:
     std::vector<double> slip_velocity(const tangential_solution& s, const std::vector<double>& r);
 
     const normal_solution& normal() const { return normal_; }
+    double friction() const { return f_; }
+    // p >= 0, (3.3) on the stick zone [start, c0], (3.4) on the slip zones, on interior grids.
+    traction_checks check(const tangential_solution& s);
 
 private:
     tangential_solution solve_system(double c0);  // |Q| problem at c0 in (-1, 1]
@@ -104,7 +115,6 @@ private:
     tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
     double q0(const tangential_solution& s, double r);  // corrective traction for |Q|
     std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
-    traction_checks check(const tangential_solution& s);
 
     const normal_solution& normal_;
     kernel k1_, dk_;  // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
