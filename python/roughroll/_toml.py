@@ -57,6 +57,8 @@ def _value(v, path):
         return _string(os.fspath(v) if not isinstance(v, str) else v)
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_value(x, path) for x in v) + "]"
+    if isinstance(v, Mapping):  # inside an array: an inline table
+        return "{" + ", ".join(f"{_key(k, path)} = {_value(x, path + [k])}" for k, x in v.items() if x is not None) + "}"
     raise TypeError(f"{_where(path)}: a {type(v).__name__} is not a scene value (number, string, bool, list or dict)")
 
 
