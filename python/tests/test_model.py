@@ -56,3 +56,16 @@ def test_normal_problem_is_the_scenes():
     # Product integration converges like 1/n^4: n = 64 and n = 128 agree to ~1e-7.
     fine = roughroll.normal_problem([(1.0, 0.5)], n=128, method="product")
     assert fine["hertz_load_ratio"] == pytest.approx(d["hertz_load_ratio"], rel=1e-6)
+
+
+def test_citation_and_version():
+    # CITATION.cff, VERSION and the module name one version; the JSON carries the paper.
+    from conftest import SOURCE_DIR
+    version = (SOURCE_DIR / "VERSION").read_text().split()[0]
+    assert roughroll.__version__ == version
+    cff = (SOURCE_DIR / "CITATION.cff").read_text()
+    assert f'version: "{version}"' in cff
+    assert "Rolling contact of long elastic cylinders with surface roughness described by a two parameter model" in cff
+    assert "Pauk" in roughroll.REFERENCE and "two parameter model" in roughroll.REFERENCE
+    assert roughroll.point({"friction": 0.3}, 0.1).reference == roughroll.REFERENCE
+    assert roughroll.roughness(DATA / "roughness" / "flat-linear.toml")["reference"] == roughroll.REFERENCE
