@@ -88,7 +88,7 @@ ROWS = [
     ("physical-P1-slides", PHYSICAL.replace("Q = 0.15", "P1 = 3.1e4"), {}, I),
     ("physical-P1-and-Q", PHYSICAL.replace("Q = 0.15", "Q = 0.15\nP1 = 1e4"), {}, I),
     ("physical-P1-hertz-width", PHYSICAL.replace("Q = 0.15", 'P1 = 1e4\ncontact_width = "hertz"'), {}, I),
-    ("physical-width-rule", PHYSICAL + "", {}, None),  # placeholder replaced below
+    ("physical-width-rule", PHYSICAL.replace("friction = 0.3", 'friction = 0.3\ncontact_width = "wide"'), {}, I),
     ("physical-t-zero", PHYSICAL.replace("t = 1.5e6", "t = 0.0"), {}, I),
     ("physical-k-negative", PHYSICAL.replace("k = 4.0e14", "k = -4e14"), {}, I),
     ("physical-term-half", PHYSICAL.replace("k = 4.0e14\n", ""), {}, I),
@@ -101,9 +101,6 @@ ROWS = [
     ("infinite-creep", GOOD.replace("T = 0.5", "T = 1e308", 1), {"Q": 0.3}, N),
     ("load-below-precision", GOOD, {"Q": 1e-15}, R),
 ]
-ROWS = [r for r in ROWS if r[3] is not None]
-ROWS.append(("physical-width-rule", PHYSICAL + 'contact_width = "wide"\n', {}, I))
-ROWS[-1] = ("physical-width-rule", PHYSICAL.replace("friction = 0.3", 'friction = 0.3\ncontact_width = "wide"'), {}, I)
 
 
 def options(kw):
