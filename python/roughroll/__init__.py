@@ -180,7 +180,9 @@ class Scene:
             if sweep:
                 raise InputError("a curve swept in c0 chooses its own loads: give loads or sweep=True, not both")
             loads = _numbers(loads, "loads").tolist()
-        return self._core.curve(loads, _integer(points, "points"), bool(sweep), _nodes(n), _method(method))
+        # Beyond C++'s int the library's own check answers (its message names no number).
+        points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
+        return self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method))
 
     def traction(self, Q=None, *, r=None, points=401, method=None, n=None):
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.

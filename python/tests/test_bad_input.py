@@ -186,6 +186,7 @@ def test_wrong_types_raise_type_error(call):
     (lambda s: s.point(n=10**30), roughroll.InputError),
     (lambda s: s.point(-math.inf), roughroll.InputError),
     (lambda s: s.curve(points=1), roughroll.InputError),
+    (lambda s: s.curve(points=10**30), roughroll.InputError),
     (lambda s: s.curve(loads=[0.1, math.nan]), roughroll.InputError),
     (lambda s: s.curve(loads=[0.1], sweep=True), roughroll.InputError),
     (lambda s: s.traction(points=2), roughroll.InputError),
