@@ -176,6 +176,8 @@ class Scene:
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), and for a
         physical scene P1_N_per_m, xi1, xi1_carter.  The normal problem is solved once.
         """
+        if not isinstance(sweep, (bool, np.bool_)):
+            raise TypeError(f"sweep must be True or False, not {type(sweep).__name__}")
         if loads is not None:
             if sweep:
                 raise InputError("a curve swept in c0 chooses its own loads: give loads or sweep=True, not both")

@@ -166,6 +166,7 @@ GOOD_SCENE = dict(friction=0.3, Q=0.15, cylinder1={"tangential": {"T": 0.5, "A":
     lambda s: s.curve(loads=[[0.1, 0.2]]),
     lambda s: s.curve(loads=["a"]),
     lambda s: s.curve(points=2.5),
+    lambda s: s.curve(sweep="no"),
     lambda s: s.traction(r="x"),
     lambda s: roughroll.read_scene(3),
     lambda s: roughroll.point(3.0),
