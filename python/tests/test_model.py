@@ -69,3 +69,17 @@ def test_citation_and_version():
     assert "Pauk" in roughroll.REFERENCE and "two parameter model" in roughroll.REFERENCE
     assert roughroll.point({"friction": 0.3}, 0.1).reference == roughroll.REFERENCE
     assert roughroll.roughness(DATA / "roughness" / "flat-linear.toml")["reference"] == roughroll.REFERENCE
+
+
+def test_every_call_has_a_docstring_citing_the_paper():
+    import re
+    calls = [roughroll.read_scene, roughroll.point, roughroll.solve, roughroll.roughness, roughroll.carter,
+             roughroll.kernel, roughroll.normal_problem, roughroll.Scene, roughroll.Scene.point,
+             roughroll.Scene.curve, roughroll.Scene.traction, roughroll.Point]
+    for call in calls:
+        doc = call.__doc__ or ""
+        assert doc.strip(), call
+    # The solvers' docstrings name the equations they solve, e.g. (3.21) or (4.5).
+    for call in (roughroll.Scene.point, roughroll.Scene.curve, roughroll.Scene.traction, roughroll.roughness,
+                 roughroll.carter, roughroll.kernel, roughroll.normal_problem, roughroll.Point):
+        assert re.search(r"\(\d\.\d+\)", call.__doc__), call
