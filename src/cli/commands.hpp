@@ -10,6 +10,7 @@
 #include "roughroll/problems/contact_width.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll::cli {
@@ -37,12 +38,7 @@ CLI::Option* add_integer(CLI::App* cmd, const std::string& name, int& value, con
 std::string dump(const nlohmann::json& j);
 scene load_scene(const scene_options& o);  // the file, with the command line's overrides
 
-// For a physical scene: the contact width for its load (find_width, with lambda as the
-// scene's method reports it), and s.surfaces set to the roughness at that width. Nothing
-// for a dimensionless scene.
-std::optional<contact_width> settle_width(scene& s);
-// A physical scene's point in SI units (nothing for a dimensionless scene).
-std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t);
+// settle_width and si_of, shared with the Python module: roughroll/io/scene_point.hpp.
 
 struct figure_options {
     std::string which;      // "2a" or "2b"

@@ -1,7 +1,6 @@
 // The roughroll command line: scene files in, creep points, curves and figures out.
 // Exit status: 0 success, 2 invalid input or a case beyond reach (one line on stderr).
 #include <charconv>
-#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -17,6 +16,7 @@
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 
 namespace roughroll::cli {
 
@@ -73,44 +73,18 @@ void add_scene_options(CLI::App* cmd, scene_options& o) {
 
 scene load_scene(const scene_options& o) {
     scene s = read_scene(o.path);
-    if (o.n) {
-        check_node_count(*o.n);  // 0 would otherwise mean the method's default
-        s.solver.n = *o.n;
-    }
-    if (o.method_name) s.solver.how = method_from_string(*o.method_name);
-    if (o.zones_name) s.solver.zones = zone_search_from_string(*o.zones_name);
+    override_solver(s, o.n, o.method_name, o.zones_name);
     return s;
-}
-
-std::optional<contact_width> settle_width(scene& s) {
-    if (!s.physical) return std::nullopt;
-    // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone).
-    const contact_width w =
-        find_width(*s.physical, [&s](const roughness& r) { return load_ratio(r, s.solver); });
-    s.surfaces = roughness_at(*s.physical, w.a);
-    return w;
-}
-
-std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t) {
-    if (!s.physical || !w) return std::nullopt;
-    return to_si(*s.physical, *w, t.Q, t.f, t.c0, t.xi);
 }
 
 namespace {
 
 int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
-    scene s = load_scene(o);
-    const double Q = load_of(s, Q_option);
-    const auto start = std::chrono::steady_clock::now();
-    const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver);
-    const tangential_solution solution = c.point(Q);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const point_report report{s.label, c.normal(), solution, seconds, c.estimate(solution), si_of(s, width, solution)};
+    const scene_point p = solve_point(load_scene(o), Q_option);
     if (json)
-        std::cout << dump(to_json(report)) << "\n";
+        std::cout << dump(to_json(p.report())) << "\n";
     else
-        write_summary(std::cout, report);
+        write_summary(std::cout, p.report());
     return 0;
 }
 

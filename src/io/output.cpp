@@ -96,6 +96,7 @@ nlohmann::json to_json(const point_report& r) {
         {"brent_iterations", s.iterations},
         {"rcond_normal", r.normal.rcond},
         {"rcond_tangential", s.rcond},
+        {"reference", paper_reference},
     };
 }
 

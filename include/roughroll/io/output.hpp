@@ -14,6 +14,12 @@
 
 namespace roughroll {
 
+// The paper roughroll implements: every JSON output carries it as "reference" (how to cite
+// roughroll itself: CITATION.cff; the paper and the other sources: docs/references.bib).
+inline constexpr const char* paper_reference =
+    "V. Pauk, M. Wo\u017aniak, Rolling contact of long elastic cylinders with surface roughness described by a "
+    "two parameter model (roughroll solves its corrected formulation, docs/formulation.md)";
+
 struct point_report {
     std::string label;
     const normal_solution& normal;

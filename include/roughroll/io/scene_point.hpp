@@ -1,0 +1,46 @@
+// One creep point of a scene as the command line (`roughroll point`) and the Python module
+// report it: the solver overrides checked like the scene file's, the contact width of a
+// physical scene (docs/formulation.md 2(j)), the point of (3.21)-(3.22) for the load, its
+// error estimate and its SI units. One implementation, so that both print the same numbers.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_width.hpp"
+
+namespace roughroll {
+
+// The command line's --n, --method and --zones (or the Python keywords n=, method=, zones=) over
+// the scene's [solver] table: n checked against [min_nodes, max_nodes] (0 would otherwise mean
+// the method's default), the method's and the zone search's names as the scene file's.
+void override_solver(scene& s, std::optional<int> n, const std::optional<std::string>& method_name,
+                     const std::optional<std::string>& zones_name = std::nullopt);
+
+// For a physical scene: the contact width for its load (find_width, with lambda as the
+// scene's method reports it), and s.surfaces set to the roughness (3.26) at that width.
+// Nothing for a dimensionless scene.
+std::optional<contact_width> settle_width(scene& s);
+
+// A physical scene's point in SI units (nothing for a dimensionless scene).
+std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t);
+
+// A solved point with everything its report refers to.
+struct scene_point {
+    scene settled;  // the scene, its surfaces at the contact width
+    std::optional<contact_width> width;
+    contact solved;
+    tangential_solution solution;
+    double seconds;  // wall time of the width search, the normal and the tangential solves
+    std::optional<error_estimate> estimate;
+
+    point_report report() const;  // what to_json and write_summary print
+};
+
+// load_of(s, Q), settle_width, the contact and its point for the load, and its estimate.
+scene_point solve_point(scene s, std::optional<double> Q);
+
+}  // namespace roughroll

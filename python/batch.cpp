@@ -1,0 +1,80 @@
+// Many creep points on several threads: roughroll.solve(..., threads=k). Each point is an
+// independent scene_point (its own contact, workspaces and GSL objects: the library keeps no
+// global state), so the points can be solved concurrently; each thread takes the next job
+// from an atomic counter and writes its own slot, and the results are in the jobs' order
+// whatever the schedule: the same numbers as the serial loop. The GIL is released meanwhile.
+#include <atomic>
+#include <exception>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "binding.hpp"
+#include "roughroll/base/error.hpp"
+
+namespace py = pybind11;
+
+namespace roughroll::python {
+
+namespace {
+
+struct job {
+    scene s;
+    std::optional<double> Q;
+};
+
+// The points' JSON in the jobs' order; the first failing job's error (in the jobs' order) is
+// rethrown after every thread has finished.
+std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, std::optional<int> n,
+                                   const std::optional<std::string>& method) {
+    std::vector<std::string> out(jobs.size());
+    std::vector<std::exception_ptr> errors(jobs.size());
+    std::atomic<std::size_t> next{0};
+    const auto work = [&]() noexcept {
+        for (std::size_t i = next++; i < jobs.size(); i = next++) {
+            try {
+                out[i] = point_json(jobs[i].s, jobs[i].Q, n, method);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    const std::size_t extra = std::min<std::size_t>(static_cast<std::size_t>(threads), jobs.size());
+    for (std::size_t t = 1; t < extra; ++t) {
+        try {
+            pool.emplace_back(work);
+        } catch (const std::system_error&) {
+            break;  // fewer threads than asked for: the rest of the jobs run on those there are
+        }
+    }
+    work();
+    for (std::thread& t : pool) t.join();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+    return out;
+}
+
+}  // namespace
+
+void bind_batch(py::module_& m) {
+    m.def(
+        "solve_all",
+        [](const std::vector<std::pair<scene, std::optional<double>>>& items, int threads, std::optional<int> n,
+           std::optional<std::string> method) {
+            if (threads < 1 || threads > 1024) throw input_error("threads must lie in [1, 1024]");
+            std::vector<job> jobs;
+            jobs.reserve(items.size());
+            for (const auto& [s, Q] : items) jobs.push_back({s, Q});
+            py::gil_scoped_release release;
+            return solve_all(jobs, threads, n, method);
+        },
+        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"));
+}
+
+}  // namespace roughroll::python

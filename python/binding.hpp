@@ -1,0 +1,28 @@
+// The extension roughroll._roughroll (pybind11), one file per idea:
+//   roughroll_module.cpp  the module and the translation of roughroll's errors into Python's
+//   scene_binding.cpp     scenes, a point (the program's JSON), creep curves, tractions
+//   batch.cpp             many points on several threads, the GIL released
+//   model_binding.cpp     the pieces a reader of the paper meets: kernels (3.23)-(3.24), the
+//                         normal problem (3.19)-(3.20), Carter's closed form, roughness specs
+// The Python package roughroll (python/roughroll/) checks argument types and builds scene
+// text from dicts; what reaches C++ is typed, and every value check is the library's own.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "roughroll/io/scene.hpp"
+
+namespace roughroll::python {
+
+void bind_scene(pybind11::module_& m);
+void bind_batch(pybind11::module_& m);
+void bind_model(pybind11::module_& m);
+
+// One point of a scene as `roughroll point SCENE --json` prints it (compact), with the
+// Python keywords method=, n= as the command line's --method, --n. Runs without the GIL.
+std::string point_json(scene s, std::optional<double> Q, std::optional<int> n, const std::optional<std::string>& method);
+
+}  // namespace roughroll::python

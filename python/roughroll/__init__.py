@@ -1,0 +1,335 @@
+"""roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness.
+
+The C++ library of the project (the consistent formulation of Pauk & Wozniak's model,
+docs/formulation.md) from Python.  A scene comes from a TOML file or from a dict / keyword
+arguments with the same keys and the same checks; a point, a creep curve or the tractions of a
+scene are computed by the same calls as the command line, so the numbers agree bit for bit::
+
+    import roughroll
+    s = roughroll.read_scene("data/fig2a-T1.toml")
+    p = s.point()                 # Q from the scene; s.point(0.2, method="product", n=96)
+    p.c0, p.xi, p.hertz_load_ratio
+    p.to_dict()                   # == the object of `roughroll point data/fig2a-T1.toml --json`
+    c = s.curve(points=41, sweep=True)   # dict of NumPy arrays: Q, c0, xi, xi_carter, ...
+
+Errors raise InputError (a ValueError), ResolutionError or NumericalError (an
+ArithmeticError), all subclasses of roughroll.Error, with the command line's one-line message.
+Solves release the GIL; solve(..., threads=k) runs many points on k threads.
+"""
+
+import math
+import numbers
+import os
+from collections import namedtuple
+from collections.abc import Mapping
+
+import numpy as np
+
+from ._errors import Error, InputError, NumericalError, ResolutionError
+from . import _roughroll as _core
+from . import _toml
+from ._results import Point
+
+__all__ = [
+    "Error", "InputError", "ResolutionError", "NumericalError", "Point", "Scene", "read_scene", "scene",
+    "point", "solve", "roughness", "carter", "Carter", "kernel", "normal_problem", "REFERENCE",
+]
+
+#: The paper roughroll implements (also the field "reference" of every JSON output).
+REFERENCE = ("V. Pauk, M. Wo\u017aniak, Rolling contact of long elastic cylinders with surface roughness "
+             "described by a two parameter model (roughroll solves its corrected formulation, "
+             "docs/formulation.md)")
+
+# Arguments are checked here for their types (TypeError, as Python does); every check of a
+# value is the library's own (InputError with the command line's message).
+
+
+def _real(x, name):
+    if x is None:
+        return None
+    if isinstance(x, bool) or not isinstance(x, numbers.Real):
+        raise TypeError(f"{name} must be a number, not {type(x).__name__}")
+    return float(x)
+
+
+def _integer(x, name):
+    if isinstance(x, bool) or not isinstance(x, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, not {type(x).__name__}")
+    return int(x)
+
+
+def _nodes(n):
+    if n is None:
+        return None
+    n = _integer(n, "n")
+    if not -2**31 <= n < 2**31:  # beyond C++'s int: the library's message, with the number as given
+        raise InputError(f"n = {n} is outside the supported range [{_core.min_nodes}, {_core.max_nodes}]")
+    return n
+
+
+def _method(m):
+    if m is None or isinstance(m, str):
+        return m
+    raise TypeError(f"method must be a string ('paper', 'product', 'extrapolated' or 'one-parameter'), "
+                    f"not {type(m).__name__}")
+
+
+def _path(path, what):
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"{what} must be a path (str or os.PathLike), not {type(path).__name__}")
+    path = os.fspath(path)
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if "\0" in path:
+        raise InputError(f"{what} {path!r} holds a NUL character")
+    return path
+
+
+def _numbers(values, name):
+    try:
+        a = np.asarray(values, dtype=float)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{name} must be numbers ({e})") from None
+    if a.ndim != 1:
+        raise TypeError(f"{name} must be a one-dimensional sequence of numbers (got {a.ndim} dimensions)")
+    return a
+
+
+class Scene:
+    """The inputs of one rolling contact, checked as a scene file is (README, "Scene files").
+
+    ``Scene(mapping, **keys)``: from a dict and/or keyword arguments with the keys of the TOML
+    format (``label``, ``friction``, ``Q``, ``cylinder1``/``cylinder2`` with ``tangential``/
+    ``normal`` tables of ``T``, ``A`` of (3.26), ``solver`` with ``n``, ``method``; a physical
+    scene's ``E``, ``nu``, ``R1``, ``R2``, ``P2``, ``P1``, ``contact_width``, ``k``, ``t`` of
+    (2.10) and ``micro_geometry`` tables (2.6)-(2.14)); nested dicts are tables, ``None`` leaves
+    a key out; a relative ``profile_csv`` is relative to ``base_dir``.  Every key not in the
+    format, every wrong type or value raises InputError naming it, as for a file.
+    ``read_scene(path)`` reads a file.
+    """
+
+    __slots__ = ("_core", "_source")
+
+    def __init__(self, mapping=None, /, *, base_dir=".", **keys):
+        data = {}
+        if mapping is not None:
+            if not isinstance(mapping, Mapping):
+                raise TypeError(f"a scene is a dict (or keyword arguments), not {type(mapping).__name__}")
+            data.update(mapping)
+        data.update(keys)
+        self._core = _core._Scene.parse(_toml.dumps(data), "scene", _path(base_dir, "base_dir"))
+        self._source = "scene"
+
+    @classmethod
+    def _wrap(cls, core, source):
+        s = cls.__new__(cls)
+        s._core = core
+        s._source = source
+        return s
+
+    @classmethod
+    def from_toml(cls, text, source="scene", base_dir="."):
+        """A scene from TOML text (the scene file format); ``source`` names it in messages."""
+        if not isinstance(text, str):
+            raise TypeError(f"text must be a str, not {type(text).__name__}")
+        if not isinstance(source, str):
+            raise TypeError(f"source must be a str, not {type(source).__name__}")
+        return cls._wrap(_core._Scene.parse(text, source, _path(base_dir, "base_dir")), source)
+
+    # What the scene says (after its checks).
+    label = property(lambda self: self._core.label, doc="The scene's label ('' when none).")
+    friction = property(lambda self: self._core.friction, doc="The friction coefficient f.")
+    Q = property(lambda self: self._core.Q, doc="The scene's load Q = P1/P2 (P1/P2 of a physical scene), or None.")
+    n = property(lambda self: self._core.n, doc="The Gauss-Chebyshev nodes (4.6) the scene's method uses.")
+    method = property(lambda self: self._core.method, doc="The scene's method.")
+    roughness = property(lambda self: self._core.roughness,
+                         doc="T, A of (3.26) per cylinder and direction (None: smooth); for a physical "
+                             "scene at Hertz's half-width a_H(P2), before the width for the load is found.")
+    physical = property(lambda self: self._core.physical,
+                        doc="A physical scene's E, nu, R1, R2, P2, P1, width rule, a_H and k, t of (2.10); "
+                            "None for a dimensionless scene.")
+
+    def point(self, Q=None, *, method=None, n=None):
+        """One creep point for the load ``Q`` (default: the scene's Q), as ``roughroll point``.
+
+        The normal problem (3.19)-(3.20) gives P_H/P2 and the pressure; the tangential problem
+        (3.21)-(3.22) is solved for c0 with Q(c0) of (4.5) = Q by Brent's method, giving the
+        creep xi; the checks (3.3)-(3.4) are made on the solution.  A physical scene is first
+        solved for the half-width a that carries P2 (docs/formulation.md 2(j)).  ``method``
+        ('extrapolated', 'product', 'paper', 'one-parameter') and ``n`` override the scene's
+        [solver] as --method and --n do.  Returns a Point whose to_dict() is the program's JSON.
+        """
+        return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method)))
+
+    def points(self, loads, *, method=None, n=None, threads=1):
+        """Points for many loads, on ``threads`` threads (see roughroll.solve): the same numbers
+        as ``[self.point(Q) for Q in loads]``."""
+        return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n)
+
+    def curve(self, loads=None, *, points=51, sweep=False, method=None, n=None):
+        """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
+
+        Without ``loads``: ``points`` loads Q/f = 1 - (1 - u)^2, u uniform on [0, 1], each solved
+        for c0 by Brent on (4.5); with ``sweep=True`` the curve is swept in c0 instead
+        ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)).
+        Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
+        closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
+        slip zones) and stick_start (formulation section 7), and for a
+        physical scene P1_N_per_m, xi1, xi1_carter.  The normal problem is solved once.
+        """
+        if not isinstance(sweep, (bool, np.bool_)):
+            raise TypeError(f"sweep must be True or False, not {type(sweep).__name__}")
+        if loads is not None:
+            if sweep:
+                raise InputError("a curve swept in c0 chooses its own loads: give loads or sweep=True, not both")
+            loads = _numbers(loads, "loads").tolist()
+        # Beyond C++'s int the library's own check answers (its message names no number).
+        points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
+        return self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method))
+
+    def traction(self, Q=None, *, r=None, points=401, method=None, n=None):
+        """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.
+
+        Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
+        traction a p1/P2 of (3.15)), ``slip_velocity`` (v of (3.6), 0 on the stick zone),
+        ``stick`` (r < c0), ``f_p`` (the Coulomb limit f p of (3.3)) and ``c0_distribution``
+        (the stick zone of the distributions: level n's when extrapolating).  Default grid: the
+        program's, ``points`` points from -1 to 1.
+        """
+        if r is None:
+            points = _integer(points, "points")
+            if not 3 <= points <= 100000:
+                raise InputError("points must lie in [3, 100000]")
+            r = [(2 * i - (points - 1)) / (points - 1) for i in range(points)]
+        else:
+            r = _numbers(r, "r").tolist()
+        t = self._core.traction(_real(Q, "Q"), r, _nodes(n), _method(method))
+        t["point"] = Point._from_json(t["point"])
+        t["f_p"] = t["point"].f * t["p"]
+        return t
+
+    def __repr__(self):
+        kind = "physical " if self.physical else ""
+        label = f"{self.label!r}, " if self.label else ""
+        return f"<roughroll {kind}Scene {label}f={self.friction!r}, Q={self.Q!r}, method={self.method!r}, n={self.n}>"
+
+
+def read_scene(path):
+    """The scene file at ``path`` (TOML, README "Scene files"), checked strictly: InputError
+    with the file's name and the problem, as the command line prints it."""
+    path = _path(path, "scene file")
+    return Scene._wrap(_core._Scene.read(path), path)
+
+
+def scene(mapping=None, /, *, base_dir=".", **keys):
+    """A Scene from a dict and/or keyword arguments (the keys of a scene file)."""
+    return Scene(mapping, base_dir=base_dir, **keys)
+
+
+def _as_scene(s):
+    if isinstance(s, Scene):
+        return s
+    if isinstance(s, Mapping):
+        return Scene(s)
+    if isinstance(s, (str, os.PathLike)):
+        return read_scene(s)
+    raise TypeError(f"a scene is a Scene, a dict or a path, not {type(s).__name__}")
+
+
+def point(scene, Q=None, *, method=None, n=None):
+    """One creep point of ``scene`` (a Scene, a dict of scene keys or a scene file's path):
+    ``Scene.point``, the program's ``roughroll point``."""
+    return _as_scene(scene).point(Q, method=method, n=n)
+
+
+def solve(items, *, threads=1, method=None, n=None):
+    """Many creep points, on ``threads`` threads (C++ std::thread, the GIL released).
+
+    ``items``: scenes (Scene, dict or path; the scene's Q) or pairs (scene, Q).  Returns the
+    Points in the items' order, with exactly the numbers of the serial loop
+    ``[point(s, Q, method=method, n=n) for s, Q in items]`` (each point is independent: its own
+    contact and workspaces).  The first failing item (in order) raises its error after all ran.
+    """
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise TypeError(f"threads must be an integer, not {type(threads).__name__}")
+    if not 1 <= threads <= 1024:
+        raise InputError(f"threads must lie in [1, 1024] (got {threads})")
+    jobs = []
+    for item in items:
+        if isinstance(item, tuple):
+            if len(item) != 2:
+                raise TypeError("an item is a scene or a pair (scene, Q)")
+            s, Q = item
+        else:
+            s, Q = item, None
+        jobs.append((_as_scene(s)._core, _real(Q, "Q")))
+    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method))]
+
+
+def roughness(spec, *, base_dir="."):
+    """The roughness parameters k, t, alpha of (2.11)-(2.15) of a rough layer, with the averages
+    (2.9) and the quadrature's error estimates: the object ``roughroll roughness SPEC --json``
+    prints.  ``spec``: a spec file's path, or a dict of its keys (lambda0, mu0, H, l, profile,
+    delta, profile_csv, micro_shape, decay; docs/roughness-parameters.md), checked the same way.
+    """
+    import json
+    if isinstance(spec, Mapping):
+        return json.loads(_core.roughness_spec(_toml.dumps(spec), "spec", _path(base_dir, "base_dir")))
+    return json.loads(_core.read_roughness_spec(_path(spec, "spec file")))
+
+
+Carter = namedtuple("Carter", "c0 xi")
+
+
+def carter(Q, f):
+    """Carter's closed form for smooth cylinders (the T = 0 limit of (3.19)-(3.22)):
+    (1 + c0)/2 = sqrt(1 - |Q|/f), xi = sign(Q) (2f/pi)(1 - sqrt(1 - |Q|/f)), lambda = 1.
+    Scalars give Carter(c0, xi); arrays (broadcast) give arrays."""
+    if np.ndim(Q) == 0 and np.ndim(f) == 0:
+        return Carter(*_core.carter(_real(Q, "Q"), _real(f, "f")))
+    Qa, fa = np.broadcast_arrays(_numbers(np.ravel(Q), "Q").reshape(np.shape(Q)),
+                                 _numbers(np.ravel(f), "f").reshape(np.shape(f)))
+    c0 = np.empty(Qa.shape)
+    xi = np.empty(Qa.shape)
+    for i in np.ndindex(Qa.shape):
+        c0[i], xi[i] = _core.carter(float(Qa[i]), float(fa[i]))
+    return Carter(c0, xi)
+
+
+def _terms(terms):
+    out = []
+    for t in terms:
+        if isinstance(t, Mapping):
+            T, A = t.get("T"), t.get("A")
+        else:
+            T, A = t
+        out.append((_real(T, "T"), _real(A, "A")))
+    return out
+
+
+def kernel(terms, z):
+    """The kernel K*(z) = sum T exp(-A |z|) sgn z of (3.23)-(3.24) (E1, E2 corrected) at the
+    points z, for terms (T, A) (or dicts with keys T, A).  T may be negative here (a difference
+    K2* - K1*, or the printed sign of E2, to look at); K*(0) is returned as 0 (the kernel jumps
+    there and the value is never used)."""
+    return np.asarray(_core.kernel(_terms(terms), _numbers(np.atleast_1d(z), "z").tolist()))
+
+
+def normal_problem(terms=(), *, n=96, method="product", r=None):
+    """The normal problem (3.19)-(3.20) alone, discretised by (4.2)-(4.3) on the nodes and
+    collocation points (4.6)-(4.7), for the normal kernel K2* of ``terms`` (T, A) (T may be
+    negative: see kernel).  ``method``: 'product' (product integration) or 'paper' (the node sum
+    of (4.2)).  Returns hertz_load_ratio (P_H/P2), gamma (gamma_0n, -> 0 by (4.8)), rcond, n,
+    nodes, weights, collocation, phi (phi(eta_k) of (4.1)) and, at the points ``r``, p(r) =
+    phi(r) sqrt(1 - r^2) (4.1).  No terms: Hertz's solution, P_H/P2 = 1."""
+    r = [] if r is None else _numbers(np.atleast_1d(r), "r").tolist()
+    if not isinstance(method, str):
+        raise TypeError(f"method must be a string, not {type(method).__name__}")
+    n = _nodes(n)
+    d = _core.normal_problem(_terms(terms), n, method, r)
+    for key in ("nodes", "weights", "collocation", "phi", "p"):
+        d[key] = np.asarray(d[key])
+    return d
+
+
+__version__ = _core.__version__

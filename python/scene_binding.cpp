@@ -1,0 +1,258 @@
+// Scenes, points, creep curves and tractions for Python: the same library calls as the
+// command line's `point`, `curve` and `traction` (src/cli), so the same numbers.
+//   point:    solve_point (io/scene_point.hpp): the width of a physical scene (formulation 2(j)),
+//             the normal problem (3.19)-(3.20), c0 for the load by Brent on Q(c0) of (4.5),
+//             the tangential problem (3.21)-(3.22), its error estimate; to_json (io/output.hpp).
+//   curve:    creep_curve at given loads, or swept_curve in c0 (contact.hpp), with Carter's
+//             curve and for a physical scene xi1 of to_si (physical_scene.hpp).
+//   traction: p(r) of (4.1), p1(r) of (3.15) and the slip velocity v(r) of (3.6) on a grid.
+// Every solve runs with the GIL released; nothing here touches a Python object meanwhile.
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "binding.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
+
+namespace py = pybind11;
+
+namespace roughroll::python {
+
+namespace {
+
+py::array_t<double> array_of(const std::vector<double>& v) {
+    py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+    std::copy(v.begin(), v.end(), a.mutable_data());
+    return a;
+}
+
+py::array_t<bool> bool_array_of(const std::vector<char>& v) {
+    py::array_t<bool> a(static_cast<py::ssize_t>(v.size()));
+    bool* out = a.mutable_data();
+    for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i] != 0;
+    return a;
+}
+
+py::object term_dict(const roughness_term& t) {
+    if (!t.present()) return py::none();
+    py::dict d;
+    d["T"] = t.T;
+    d["A"] = t.A;
+    return std::move(d);
+}
+
+py::dict roughness_dict(const roughness& r) {
+    const auto cylinder = [](const cylinder_roughness& c) {
+        py::dict d;
+        d["tangential"] = term_dict(c.tangential);
+        d["normal"] = term_dict(c.normal);
+        return d;
+    };
+    py::dict d;
+    d["cylinder1"] = cylinder(r.cylinder1);
+    d["cylinder2"] = cylinder(r.cylinder2);
+    return d;
+}
+
+py::object physical_dict(const scene& s) {
+    if (!s.physical) return py::none();
+    const physical_scene& p = *s.physical;
+    const auto stiff = [](const surface_stiffness& c) {
+        const auto one = [](const stiffness& st) -> py::object {
+            if (!st.present()) return py::none();
+            py::dict d;
+            d["k"] = st.k;
+            d["t"] = st.t;
+            return std::move(d);
+        };
+        py::dict d;
+        d["tangential"] = one(c.tangential);
+        d["normal"] = one(c.normal);
+        return d;
+    };
+    py::dict d;
+    d["E"] = p.E;
+    d["nu"] = p.nu;
+    d["R1"] = p.R1;
+    d["R2"] = p.R2;
+    d["P2"] = p.P2;
+    d["P1"] = p.P1 ? py::object(py::float_(*p.P1)) : py::object(py::none());
+    d["contact_width"] = p.width == width_rule::hertz ? "hertz" : "given-load";
+    d["a_hertz_m"] = hertz_half_width(p, p.P2);
+    d["cylinder1"] = stiff(p.cylinder1);
+    d["cylinder2"] = stiff(p.cylinder2);
+    return std::move(d);
+}
+
+scene overridden(scene s, std::optional<int> n, const std::optional<std::string>& method) {
+    override_solver(s, n, method);
+    return s;
+}
+
+// The columns of `roughroll curve`'s CSV (output.hpp, write_curve_csv), as arrays; an absent
+// estimate is NaN (an empty CSV field).
+struct curve_columns {
+    std::vector<double> Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter;
+    std::vector<char> checks_hold;
+    std::vector<double> c0_error, xi_error, Q_error;
+    std::vector<int> zones;            // the number of stick and slip zones (formulation section 7)
+    std::vector<double> stick_start;   // the start of the stick zone, -1 in the paper's structure
+    std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
+    bool physical = false;
+};
+
+curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
+    const std::optional<contact_width> width = settle_width(s);
+    contact c(s.surfaces, s.friction, s.solver);
+    const std::vector<curve_point> curve =
+        sweep ? swept_curve(c, points) : creep_curve(c, loads ? *loads : curve_loads(points, s.friction));
+    curve_columns out;
+    out.physical = width.has_value();
+    const double nan = std::nan("");
+    for (const curve_point& row : curve) {
+        const tangential_solution& t = row.solution;
+        out.Q.push_back(t.Q);
+        out.Q_over_f.push_back(t.Q / t.f);
+        out.c0.push_back(t.c0);
+        out.xi.push_back(t.xi);
+        out.xi_over_f.push_back(t.xi / t.f);
+        out.xi_carter.push_back(row.smooth.xi);
+        out.c0_carter.push_back(row.smooth.c0);
+        out.checks_hold.push_back(t.checks.hold() ? 1 : 0);
+        out.c0_error.push_back(row.estimate ? row.estimate->c0 : nan);
+        out.xi_error.push_back(row.estimate ? row.estimate->xi : nan);
+        out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
+        out.zones.push_back(static_cast<int>(zones_of(t).size()));
+        out.stick_start.push_back(t.start);
+        if (const std::optional<si_point> si = si_of(s, width, t)) {
+            out.P1.push_back(si->P1);
+            out.xi1.push_back(si->xi1);
+            out.xi1_carter.push_back(si->xi1_carter);
+        }
+    }
+    return out;
+}
+
+struct traction_columns {
+    std::string point;  // the point's JSON
+    std::vector<double> r, p, p1, v;
+    std::vector<char> stick;
+    double c0_level;  // the stick zone the distributions have (level n when extrapolating)
+};
+
+traction_columns solve_traction(scene s, std::optional<double> Q, std::vector<double> grid) {
+    for (const double r : grid)
+        if (!(r >= -1.0 && r <= 1.0)) throw input_error("r must lie in [-1, 1] (got " + shortest(r) + ")");
+    scene_point sp = solve_point(std::move(s), Q);
+    const tangential_solution level = sp.solved.distribution(sp.solution);
+    traction_columns out;
+    out.point = to_json(sp.report()).dump();
+    out.c0_level = level.c0;
+    const std::vector<double> velocity = sp.solved.slip_velocity(level, grid);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double r = grid[i];
+        const bool stick = r < level.c0;
+        out.p.push_back(sp.solved.normal().pressure(r));
+        out.p1.push_back(sp.solved.traction(level, r));
+        out.v.push_back(stick ? 0.0 : velocity[i]);
+        out.stick.push_back(stick ? 1 : 0);
+        if (!std::isfinite(out.p.back()) || !std::isfinite(out.p1.back()) || !std::isfinite(out.v.back()))
+            throw numerical_error("non-finite traction at r = " + shortest(r));
+    }
+    out.r = std::move(grid);
+    return out;
+}
+
+}  // namespace
+
+std::string point_json(scene s, std::optional<double> Q, std::optional<int> n, const std::optional<std::string>& method) {
+    return to_json(solve_point(overridden(std::move(s), n, method), Q).report()).dump();
+}
+
+void bind_scene(py::module_& m) {
+    py::class_<scene>(m, "_Scene", "A checked scene (io/scene.hpp); use roughroll.Scene.")
+        .def_static("read", &read_scene, py::arg("path"), "The scene file at path (read_scene).")
+        .def_static(
+            "parse",
+            [](const std::string& text, const std::string& source, const std::string& base_dir) {
+                return parse_scene(text, source, base_dir);
+            },
+            py::arg("text"), py::arg("source"), py::arg("base_dir"), "Scene TOML text (parse_scene).")
+        .def_property_readonly("label", [](const scene& s) { return s.label; })
+        .def_property_readonly("friction", [](const scene& s) { return s.friction; })
+        .def_property_readonly("Q", [](const scene& s) { return s.Q; })
+        .def_property_readonly("n", [](const scene& s) { return s.solver.nodes(); })
+        .def_property_readonly("method", [](const scene& s) { return to_string(s.solver.how); })
+        .def_property_readonly("roughness", [](const scene& s) { return roughness_dict(s.surfaces); })
+        .def_property_readonly("physical", &physical_dict)
+        .def(
+            "point_json",
+            [](const scene& s, std::optional<double> Q, std::optional<int> n, std::optional<std::string> method) {
+                py::gil_scoped_release release;
+                return point_json(s, Q, n, method);
+            },
+            py::arg("Q"), py::arg("n"), py::arg("method"))
+        .def(
+            "curve",
+            [](const scene& s, std::optional<std::vector<double>> loads, int points, bool sweep, std::optional<int> n,
+               std::optional<std::string> method) {
+                curve_columns c;
+                {
+                    py::gil_scoped_release release;
+                    c = solve_curve(overridden(s, n, method), loads, points, sweep);
+                }
+                py::dict d;
+                d["Q"] = array_of(c.Q);
+                d["Q_over_f"] = array_of(c.Q_over_f);
+                d["c0"] = array_of(c.c0);
+                d["xi"] = array_of(c.xi);
+                d["xi_over_f"] = array_of(c.xi_over_f);
+                d["xi_carter"] = array_of(c.xi_carter);
+                d["c0_carter"] = array_of(c.c0_carter);
+                d["checks_hold"] = bool_array_of(c.checks_hold);
+                d["c0_error_estimate"] = array_of(c.c0_error);
+                d["xi_error_estimate"] = array_of(c.xi_error);
+                d["Q_error_estimate"] = array_of(c.Q_error);
+                d["zones"] = py::array_t<int>(static_cast<py::ssize_t>(c.zones.size()), c.zones.data());
+                d["stick_start"] = array_of(c.stick_start);
+                if (c.physical) {
+                    d["P1_N_per_m"] = array_of(c.P1);
+                    d["xi1"] = array_of(c.xi1);
+                    d["xi1_carter"] = array_of(c.xi1_carter);
+                }
+                return d;
+            },
+            py::arg("loads"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"))
+        .def(
+            "traction",
+            [](const scene& s, std::optional<double> Q, std::vector<double> r, std::optional<int> n,
+               std::optional<std::string> method) {
+                traction_columns t;
+                {
+                    py::gil_scoped_release release;
+                    t = solve_traction(overridden(s, n, method), Q, std::move(r));
+                }
+                py::dict d;
+                d["point"] = t.point;
+                d["r"] = array_of(t.r);
+                d["p"] = array_of(t.p);
+                d["p1"] = array_of(t.p1);
+                d["slip_velocity"] = array_of(t.v);
+                d["stick"] = bool_array_of(t.stick);
+                d["c0_distribution"] = t.c0_level;
+                return d;
+            },
+            py::arg("Q"), py::arg("r"), py::arg("n"), py::arg("method"));
+}
+
+}  // namespace roughroll::python

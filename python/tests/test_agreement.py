@@ -1,0 +1,131 @@
+"""The module and the program give the same numbers, bit for bit: points (every field of the
+JSON but the wall time), curves (the CSV's shortest round-trip digits parse to the same
+doubles), tractions, roughness parameters; scenes from dicts equal scenes from files."""
+
+import csv
+import io
+import math
+import tomllib
+
+import numpy as np
+import pytest
+
+import roughroll
+from conftest import DATA, cli_json, run, without_seconds
+
+# (scene file, program options, Python keywords): every method, the special loads and the
+# mirror case, a physical scene given by k, t and one given by its micro-geometry.
+POINTS = [
+    ("fig2a-T1.toml", [], {}),
+    ("fig2a-T1.toml", ["--Q", "0.2", "--method", "paper", "--n", "40"], {"Q": 0.2, "method": "paper", "n": 40}),
+    ("fig2a-T1.toml", ["--method", "extrapolated"], {"method": "extrapolated"}),
+    ("fig2a-T1.toml", ["--method", "one-parameter", "--n", "64"], {"method": "one-parameter", "n": 64}),
+    ("fig2a-T1.toml", ["--Q", "0"], {"Q": 0}),
+    ("fig2a-T1.toml", ["--Q", "0.3"], {"Q": 0.3}),
+    ("fig2a-T1.toml", ["--Q", "-0.1"], {"Q": -0.1}),
+    ("fig2a-T0.toml", [], {}),
+    ("unequal-kernels.toml", ["--n", "48"], {"n": 48}),
+    ("steel-rollers.toml", [], {}),
+    ("steel-rollers-ground.toml", ["--method", "product", "--n", "48"], {"method": "product", "n": 48}),
+]
+
+
+@pytest.mark.parametrize("name,args,kw", POINTS, ids=lambda v: str(v) if isinstance(v, str) else None)
+def test_point_equals_program_json(name, args, kw):
+    path = DATA / name
+    expected = cli_json("point", path, "--json", *args)
+    got = roughroll.read_scene(path).point(**kw).to_dict()
+    assert set(got) == set(expected)
+    assert without_seconds(got) == without_seconds(expected)
+    assert got["seconds"] > 0
+    assert got["reference"] == roughroll.REFERENCE
+
+
+def test_point_fields_are_attributes():
+    p = roughroll.point(DATA / "fig2a-T1.toml")
+    for key, value in p.to_dict().items():
+        assert getattr(p, key) == value
+    with pytest.raises(AttributeError):
+        p.no_such_field
+    with pytest.raises(AttributeError):
+        p.c0 = 1.0
+    assert "c0=" in repr(p)
+
+
+@pytest.mark.parametrize("name", ["fig2a-T1.toml", "unequal-kernels.toml", "steel-rollers.toml",
+                                  "steel-rollers-ground.toml"])
+def test_scene_from_dict_equals_scene_from_file(name):
+    path = DATA / name
+    keys = tomllib.loads(path.read_text())
+    from_file = roughroll.read_scene(path).point(n=32, method="product").to_dict()
+    from_dict = roughroll.Scene(keys, base_dir=DATA).point(n=32, method="product").to_dict()
+    assert without_seconds(from_dict) == without_seconds(from_file)
+    # Keyword arguments are the same keys.
+    from_kw = roughroll.scene(base_dir=DATA, **keys).point(n=32, method="product").to_dict()
+    assert without_seconds(from_kw) == without_seconds(from_file)
+
+
+def read_csv(text):
+    rows = [r for r in csv.reader(io.StringIO(text)) if r and not r[0].startswith("#")]
+    header, body = rows[0], rows[1:]
+    return {h: [row[i] for row in body] for i, h in enumerate(header)}
+
+
+def as_float(column):
+    return np.array([float(x) if x != "" else math.nan for x in column])
+
+
+@pytest.mark.parametrize("name,args,kw", [
+    ("fig2a-T1.toml", ["--points", "9"], {"points": 9}),
+    ("fig2a-T1.toml", ["--points", "9", "--sweep", "--method", "product"], {"points": 9, "sweep": True, "method": "product"}),
+    ("fig2a-T0.5.toml", ["--points", "7", "--method", "paper", "--n", "30"], {"points": 7, "method": "paper", "n": 30}),
+    ("steel-rollers.toml", ["--points", "5", "--sweep"], {"points": 5, "sweep": True}),
+], ids=["given-loads", "swept", "paper", "physical"])
+def test_curve_equals_program_csv(name, args, kw):
+    status, out, err = run("curve", DATA / name, *args)
+    assert status == 0, err
+    expected = read_csv(out)
+    got = roughroll.read_scene(DATA / name).curve(**kw)
+    assert set(got) == set(expected)
+    for key, column in expected.items():
+        if key == "checks_hold":
+            assert got[key].tolist() == [c == "1" for c in column]
+        else:
+            np.testing.assert_array_equal(got[key], as_float(column), err_msg=key)
+
+
+def test_curve_at_given_loads_equals_points():
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    loads = [0.05, 0.15, 0.25]
+    c = s.curve(loads)
+    for i, Q in enumerate(loads):
+        p = s.point(Q)
+        assert (c["Q"][i], c["c0"][i], c["xi"][i]) == (p.Q, p.c0, p.xi)
+
+
+def test_traction_equals_program_csv(tmp_path):
+    status, _, err = run("traction", DATA / "traction-example.toml", "--points", "41", "--no-plot",
+                         "--out", tmp_path, "--name", "t")
+    assert status == 0, err
+    expected = read_csv((tmp_path / "traction-t.csv").read_text())
+    got = roughroll.read_scene(DATA / "traction-example.toml").traction(points=41)
+    for key, column in [("r", "r"), ("p", "p"), ("p1", "p1"), ("slip_velocity", "slip_velocity"), ("f_p", "f_p")]:
+        np.testing.assert_array_equal(got[key], as_float(expected[column]), err_msg=key)
+    assert got["stick"].tolist() == [z == "stick" for z in expected["zone"]]
+    # Independent: the pressure integrates to 1 (4.3) and the traction to Q (3.22); the
+    # traction never exceeds f p (3.3).
+    r = np.linspace(-1, 1, 2001)
+    t = roughroll.read_scene(DATA / "traction-example.toml").traction(r=r)
+    assert np.trapz(t["p"], r) == pytest.approx(1.0, abs=2e-5)
+    assert np.trapz(t["p1"], r) == pytest.approx(t["point"].Q, abs=2e-5)
+    assert np.all(np.abs(t["p1"]) <= t["f_p"] + 1e-12)
+
+
+def test_roughness_equals_program_json():
+    spec = DATA / "roughness" / "ground-measured.toml"
+    expected = cli_json("roughness", spec, "--json")
+    assert roughroll.roughness(spec) == expected
+    assert roughroll.roughness(str(spec)) == expected
+    keys = tomllib.loads(spec.read_text())
+    from_dict = roughroll.roughness(keys, base_dir=spec.parent)
+    assert {k: v for k, v in from_dict.items() if k != "spec"} == {k: v for k, v in expected.items() if k != "spec"}

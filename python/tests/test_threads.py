@@ -1,0 +1,83 @@
+"""The batch call solves on several threads with exactly the serial loop's numbers, and the GIL
+is released while the library solves."""
+
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import pytest
+
+import roughroll
+from conftest import DATA, without_seconds
+
+
+def scenes():
+    return [roughroll.read_scene(DATA / name) for name in
+            ("fig2a-T0.5.toml", "fig2a-T1.toml", "fig2b-A1.toml", "unequal-kernels.toml", "steel-rollers.toml")]
+
+
+def test_batch_equals_serial_loop():
+    items = [(s, Q) for s in scenes() for Q in (None, 0.05, 0.25)]
+    items = [(s, Q if Q is not None and (s.Q is None or s.physical is None) else None) for s, Q in items]
+    serial = [roughroll.point(s, Q, method="product", n=48) for s, Q in items]
+    for threads in (1, 2, 3, 7):
+        batch = roughroll.solve(items, threads=threads, method="product", n=48)
+        assert [without_seconds(p.to_dict()) for p in batch] == [without_seconds(p.to_dict()) for p in serial]
+
+
+def test_points_of_a_scene():
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    loads = [0.0, 0.1, 0.2, 0.3, -0.2]
+    got = s.points(loads, threads=2)
+    assert [p.to_dict() | {"seconds": 0} for p in got] == [s.point(Q).to_dict() | {"seconds": 0} for Q in loads]
+
+
+def test_python_threads_share_the_module():
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    loads = [0.01 * k for k in range(1, 13)]
+    serial = [without_seconds(s.point(Q).to_dict()) for Q in loads]
+    with ThreadPoolExecutor(4) as pool:
+        parallel = list(pool.map(lambda Q: without_seconds(s.point(Q).to_dict()), loads))
+    assert parallel == serial
+
+
+def test_gil_released_during_a_solve():
+    # A long batch on a worker thread; this thread sleeps 0.3 s and then needs the GIL to go on.
+    # With the GIL released by the solve it goes on at once; held, only when the solve returns.
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    items = [(s, 0.3 * k / 10) for k in range(1, 9)]
+    times = {}
+    started = threading.Event()
+
+    def worker():
+        times["call"] = time.monotonic()
+        started.set()
+        roughroll.solve(items, threads=1, method="paper", n=400)
+        times["return"] = time.monotonic()
+
+    t = threading.Thread(target=worker)
+    t.start()
+    started.wait()
+    time.sleep(0.3)
+    resumed = time.monotonic()
+    t.join()
+    solve_time = times["return"] - times["call"]
+    assert solve_time > 1.0, "the solve is too short for this check: make it longer"
+    assert resumed - times["call"] < solve_time - 0.5, "the solve held the GIL"
+
+
+def test_threads_argument_checked():
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    with pytest.raises(roughroll.InputError):
+        roughroll.solve([s], threads=0)
+    with pytest.raises(TypeError):
+        roughroll.solve([s], threads=1.5)
+    with pytest.raises(TypeError):
+        roughroll.solve([s], threads=True)
+    assert roughroll.solve([], threads=2) == []
+
+
+def test_batch_error_is_the_first_failing_item():
+    good = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    with pytest.raises(roughroll.InputError, match=r"\|Q\| = 0.5 exceeds f = 0.3"):
+        roughroll.solve([(good, 0.1), (good, 0.5), (good, float("nan"))], threads=2)
