@@ -17,6 +17,13 @@
 // cell is found by an active-set (complementarity) iteration: a stick cell whose traction
 // exceeds f p slips in the direction of its traction; when none does, a slip cell whose
 // velocity opposes its traction sticks again; until nothing changes. Order about 1 in h.
+//
+// Dissimilar rollers (docs/formulation.md 8(c), (e)), Johnson's approximation: the pressure p
+// is that of `normal` (uncoupled), and the displacement difference gains the term of Dundurs'
+// beta_D, u' = L1[p1] - beta_D p, i.e. u_p(r) = -beta_D int_{-1}^{r} p, so that
+//   v_i = xi - (u_i - u_{i-1})/h + beta_D (p_{i-1} + p_i)/2     (p_{-1} = 0),
+// the cell integral of the piecewise-constant cell pressure between r_{i-1} and r_i. With
+// beta_D = 0 (the default) every term is the one above.
 #pragma once
 
 #include <algorithm>
@@ -72,6 +79,57 @@ inline double cell_displacement(const kernel& k, double lo, double hi, double r)
     return u;
 }
 
+// The displacement of the pressure term of 8(c) at r_{-1} .. r_{N-1} (index i + 1), for the cell
+// pressures p (constant per cell of width h): u_p(r) = -beta_D int_{-1}^{r} p, zero before r = -1.
+inline std::vector<double> pressure_displacement(const std::vector<double>& p, double h, double beta_d) {
+    std::vector<double> u(p.size() + 1, 0.0);
+    double below = 0.0;  // int_{-1}^{lower end of cell i} p
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        u[i + 1] = -beta_d * (below + 0.5 * h * p[i]);
+        below += h * p[i];
+    }
+    return u;
+}
+
+// The complete-slip limit f -> 0 of the same grid equations (docs/formulation.md 8(f)): p1 =
+// O(f) drops out of v, v_i = xi + beta_D pbar_i with pbar_i = (p_{i-1} + p_i)/2, every cell
+// slips with p1_i = f p_i sgn v_i except the cell where v = 0, and h sum p1 = Q fixes xi. The
+// cells with sgn(beta_D) v > 0 are those of the largest pbar (a central band, p even and
+// decreasing); they must carry (1 + sgn(beta_D) Q/f)/2 of the load. The band's ends are
+// quantised to cells, so xi/beta_D = -pbar_k (k the cell with v = 0) is known to within the
+// change of pbar over a cell or two there: `resolution` = 2 max |pbar_{k+-1} - pbar_k|, O(h).
+// The closed form is xi/beta_D = -(2/pi) cos(phi) for Hertz and Q = 0.
+struct complete_slip {
+    double xi_over_beta;
+    double resolution;
+};
+inline complete_slip complete_slip_creep(const normal_solution& normal, double Q_over_f, double sign_beta, int N) {
+    const double h = 2.0 / N;
+    std::vector<double> p(N), pbar(N);
+    double total = 0.0;
+    for (int i = 0; i < N; ++i) {
+        p[i] = normal.pressure(-1.0 + (i + 0.5) * h);
+        total += h * p[i];
+    }
+    for (double& pi : p) pi /= total;
+    for (int i = 0; i < N; ++i) pbar[i] = 0.5 * ((i > 0 ? p[i - 1] : 0.0) + p[i]);
+    std::vector<int> order(N);
+    for (int i = 0; i < N; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pbar[a] > pbar[b]; });
+    const double target = 0.5 * (1.0 + sign_beta * Q_over_f);
+    double carried = 0.0;
+    for (int k : order) {
+        if (carried + h * p[k] >= target) {  // the cell with v = 0: xi = -beta_D pbar_k
+            double step = 0.0;
+            if (k > 0) step = std::max(step, std::fabs(pbar[k - 1] - pbar[k]));
+            if (k + 1 < N) step = std::max(step, std::fabs(pbar[k + 1] - pbar[k]));
+            return {-pbar[k], 2.0 * step};
+        }
+        carried += h * p[k];
+    }
+    throw std::runtime_error("grid route: |Q| > f in the complete-slip limit");
+}
+
 // The complementarity solution for the load Q (|Q| <= f) on N cells, found by rolling: from
 // no traction, the cylinders roll one cell per step, and each step is the static frictional
 // problem of the shift: a particle now in cell i was in cell i-1, and its slip over the step,
@@ -85,7 +143,7 @@ inline double cell_displacement(const kernel& k, double lo, double hi, double r)
 // only geometrically). `normal` supplies the pressure; the cell pressures are rescaled so that
 // h sum p_i = 1 exactly.
 inline grid_solution solve_on_grid(const normal_solution& normal, const kernel& k1, double f, double Q, int N,
-                                   int max_steps = 0) {
+                                   int max_steps = 0, double beta_d = 0.0) {
     grid_solution s{};
     const double h = 2.0 / N;
     s.h = h;
@@ -104,9 +162,12 @@ inline grid_solution solve_on_grid(const normal_solution& normal, const kernel& 
         const double lo = -1.0 + j * h, hi = lo + h;
         for (int i = -1; i < N; ++i) U[(i + 1) * N + j] = cell_displacement(k1, lo, hi, -1.0 + (i + 0.5) * h);
     }
+    // The pressure term of 8(c): u_p at r_i (i = -1 .. N-1, index i + 1), exactly zero for beta_D = 0.
+    const std::vector<double> u_p = pressure_displacement(s.p, h, beta_d);
     const auto displacement = [&](const std::vector<double>& p1, int i) {  // i = -1 .. N-1
         double u = 0.0;
         for (int j = 0; j < N; ++j) u += U[(i + 1) * N + j] * p1[j];
+        if (beta_d != 0.0) u += u_p[i + 1];
         return u;
     };
     s.state.assign(N, 0);
