@@ -203,6 +203,12 @@ csv csvtop '0,1e-6
 2e-5,1e-5
 3e-5,2e-6'
 # Every sample within [0, H), but the spline through a step dips below 0 beside it.
+# Knots 1e-300 m apart: the spline's slopes overflow; a piece of non-finite coefficients must
+# not be skipped when the extremes are sought (a fuzz finding: the extremes missed a sample).
+csv csvclose '0,1e-6
+1e-300,1e-6
+2e-300,5e-6
+3e-5,2e-6'
 csv csvovershoot '0,0
 1e-5,0
 2e-5,5e-6
@@ -240,6 +246,7 @@ expect csv-too-few "at least 4 samples" -- roughness "$dir/csvfew/spec.toml"
 expect csv-nan "p.csv:2: h0 = nan is not finite" -- roughness "$dir/csvnan/spec.toml"
 expect csv-negative "p.csv:2: h0 = -2e-06 is below 0" -- roughness "$dir/csvnegative/spec.toml"
 expect csv-at-H "p.csv:3: h0 = 1e-05 is not below H" -- roughness "$dir/csvtop/spec.toml"
+expect csv-close-knots "is not finite (samples too close together" -- roughness "$dir/csvclose/spec.toml"
 expect csv-overshoot "overshoots to h0 = -" -- roughness "$dir/csvovershoot/spec.toml"
 expect no-spec "SPEC" -- roughness
 expect unknown-option "--frobnicate" -- roughness "$data/roughness/flat-linear.toml" --frobnicate

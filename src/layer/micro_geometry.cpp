@@ -198,6 +198,10 @@ profile_function::extreme spline_extreme(const profile_function& h0, Better bett
     };
     for (std::size_t i = 0; i < pieces; ++i) {
         const profile_function::cubic p = h0.piece(i);
+        // Knots so close that a slope overflows give a piece with non-finite coefficients: the
+        // extreme is then not finite (the conditions report it), never a silently skipped piece.
+        for (const double c : p.c)
+            if (!std::isfinite(c)) return {std::numeric_limits<double>::quiet_NaN(), p.x0};
         consider(p, 0.0);
         double r[2];
         const int roots = gsl_poly_solve_quadratic(3.0 * p.c[3], 2.0 * p.c[2], p.c[1], &r[0], &r[1]);
