@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <sstream>
+
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 
 namespace roughroll {
@@ -47,6 +50,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
                                                       kernel::normal(surfaces), f);
 }
 
+const normal_solution& contact::normal_level() const { return limit_ ? limit_->normal() : *normal_; }
+
 const normal_solution& contact::normal() const {
     if (limit_) return limit_->normal();
     return reported_ ? *reported_ : *normal_;
@@ -60,9 +65,8 @@ tangential_solver& contact::tangential() {
 }
 
 tangential_solution contact::point(double Q) {
-    if (limit_) return limit_->solve(Q);
-    if (!reported_) return tangential_->solve(Q);
-    const tangential_solution coarse = companion_->point(Q);
+    if (!reported_) return level_point(Q);
+    const tangential_solution& coarse = companion_->level_point(Q);
     tangential_solution s = tangential_->solve(Q, coarse.c0);  // the coarse root brackets this one
     last_fine_ = s;
     s.c0 = richardson(s.c0, coarse.c0);
@@ -72,6 +76,16 @@ tangential_solution contact::point(double Q) {
     return s;
 }
 
+const tangential_solution& contact::level_point(double Q) {
+    if (!last_level_point_ || !(last_level_point_->Q == Q))
+        last_level_point_ = limit_ ? limit_->solve(Q) : tangential_->solve(Q);
+    return *last_level_point_;
+}
+
+method contact::level_method() const {
+    return options_.how == method::extrapolated ? method::product : options_.how;
+}
+
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_) return s;
     if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = tangential_->solve(s.Q);
@@ -79,26 +93,116 @@ tangential_solution contact::distribution(const tangential_solution& s) {
 }
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
-    if (reported_) {
-        // Extrapolated: the difference from level n, which is 15/16 of level n's error and
-        // above the extrapolated error wherever Richardson's rule holds.
-        const tangential_solution level = distribution(s);
-        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - level.c0),
-                              std::fabs(s.xi - level.xi), 0.0, "level n"};
-    }
-    if (!ensure_companion()) return std::nullopt;
-    return companion_difference(s, companion_->point(s.Q), false);
+    if (!build_levels()) return std::nullopt;
+    const tangential_solution own = distribution(s);
+    std::array<tangential_solution, 3> at{};
+    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->level_point(s.Q) : own;
+    return estimate_from(s, own, at, false);
 }
 
-error_estimate contact::companion_difference(const tangential_solution& s, const tangential_solution& c,
-                                             bool swept) const {
-    // At 2n the difference is (1 - 2^-p) of the error at n: doubled, it stays an upper
-    // estimate for every order p >= 1. Swept in c0, c0 is the input and Q is estimated.
-    const bool finer = companion_->options_.nodes() > options_.nodes();
-    const double scale = finer ? 2.0 : 1.0;
-    return error_estimate{scale * std::fabs(normal().lambda - companion_->normal().lambda),
-                          swept ? 0.0 : scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi),
-                          swept ? scale * std::fabs(s.Q - c.Q) : 0.0, finer ? "2n (doubled)" : "n/2"};
+bool contact::build_levels() {
+    if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
+    levels_built_ = true;
+    // A plain contact at m nodes (the level method), or null when m is outside the nodes
+    // supported or the kernels are beyond its resolution.
+    const method how = level_method();
+    auto plain = [&](int m) -> contact* {
+        if (m < min_nodes || m > max_nodes) return nullptr;
+        if (m == nodes() / 2 && companion_) return companion_.get();
+        for (const auto& c : owned_levels_)
+            if (c->nodes() == m) return c.get();
+        try {
+            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}));
+            return owned_levels_.back().get();
+        } catch (const resolution_error&) {
+            return nullptr;
+        }
+    };
+    const int n = nodes();
+    // Three levels n_0, 2 n_0, 4 n_0 containing n: n/4, n/2, n, else n/2, n, 2n (for
+    // extrapolated, Richardson's value from the middle levels), else n, 2n, 4n. First the
+    // first of them whose coarsest level is in the asymptotic range (the one-parameter limit
+    // has no kernel to resolve: its ratio alone decides), then the first that can be solved.
+    const int coarsest[] = {n / 4, n / 2, n};
+    const int count = companion_ ? 2 : 3;
+    for (bool require_range : {true, false}) {
+        for (int i = 0; i < count; ++i) {
+            const int m = coarsest[i];
+            if (m < min_nodes || (n << i) > max_nodes) continue;
+            if (require_range && how != method::one_parameter &&
+                !in_asymptotic_range(widest_kernel(surfaces_), m, how))
+                continue;
+            std::array<contact*, 3> at{};
+            bool ok = true;
+            for (int k = 0; k < 3 && ok; ++k) {
+                if (k == 2 - i) continue;  // this contact's own level
+                at[k] = plain(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
+                ok = at[k] != nullptr;
+            }
+            if (ok) {
+                levels_ = at;
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                      const std::array<tangential_solution, 3>& at, bool swept) const {
+    int self = 0;
+    while (levels_[self] != nullptr) ++self;
+    const bool extrapolated = reported_ != nullptr;
+    const reported_value which{self, extrapolated};
+    const int order = level_method() == method::product ? 4 : 2;
+    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
+    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
+    const double lambda = normal().lambda;
+    // c0: Q(c0) of (4.5) rounds to about n eps f max(1, P_H/P2) (an O(f) sum whose terms
+    // grow with G of (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1
+    // moves by min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). The special loads
+    // Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly).
+    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)));
+    const bool special = s.Q == 0.0 || std::fabs(s.Q) == f_;
+    const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
+    struct quantity {
+        const char* name;
+        three_levels v;
+        double floor;
+        double* out;
+    };
+    error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
+    std::vector<quantity> qs{
+        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, rounding_floor(finest_n, lambda), &e.lambda},
+        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * std::max(1.0, std::fabs(lambda))), &e.xi}};
+    if (swept)
+        qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, f_ * n_eps, &e.Q});
+    else
+        qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, c0_floor, &e.c0});
+    const int coarsest_n = levels_[0] ? levels_[0]->nodes() : nodes();
+    for (const quantity& q : qs) {
+        const error_bound b = bound_error(q.v, order, which, q.floor);
+        if (!b.resolved) {
+            std::ostringstream msg;
+            msg.precision(3);
+            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
+                << ": " << q.name << " does not converge visibly over n = " << coarsest_n << ", " << 2 * coarsest_n
+                << ", " << 4 * coarsest_n << " (differences " << q.v.middle - q.v.coarsest << ", "
+                << q.v.finest - q.v.middle << ")";
+            if (!swept) msg << " at Q = " << s.Q;
+            else msg << " at c0 = " << s.c0;
+            msg << "; increase n, or the scene is beyond the method's reach";
+            throw resolution_error(msg.str());
+        }
+        *q.out = b.value;
+        e.bounded = e.bounded || !b.asymptotic;
+    }
+    static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
+    const int first = 2 - self;  // index of the coarsest level's name
+    e.against = std::string(extrapolated ? "level n" : self == 2 ? "n/2" : "2n") + " (levels " + names[first] + ", " +
+                names[first + 1] + ", " + names[first + 2] + (e.bounded ? "; observed order below " : "; order ") +
+                std::to_string(order) + (e.bounded ? ": bounded)" : " observed)");
+    return e;
 }
 
 tangential_solution contact::level_at_stick_end(double c0, bool checked) {
@@ -107,20 +211,19 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked) {
 
 contact::swept_point contact::at_stick_end(double c0) {
     tangential_solution s = level_at_stick_end(c0, true);
+    const tangential_solution own = s;
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
         const tangential_solution coarse = companion_->level_at_stick_end(c0, false);
-        const double Q = richardson(s.Q, coarse.Q), xi = richardson(s.xi, coarse.xi);
-        if (!(std::isfinite(Q) && std::isfinite(xi)))
+        s.Q = richardson(s.Q, coarse.Q);
+        s.xi = richardson(s.xi, coarse.xi);
+        if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
             throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
-        const error_estimate e{std::fabs(reported_->lambda - normal_->lambda), 0.0, std::fabs(xi - s.xi),
-                               std::fabs(Q - s.Q), "level n"};
-        s.Q = Q;
-        s.xi = xi;
-        return {s, e};
     }
-    if (!ensure_companion()) return {s, std::nullopt};
-    return {s, companion_difference(s, companion_->level_at_stick_end(c0, false), true)};
+    if (!build_levels()) return {s, std::nullopt};
+    std::array<tangential_solution, 3> at{};
+    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->level_at_stick_end(c0, false) : own;
+    return {s, estimate_from(s, own, at, true)};
 }
 
 double contact::traction(const tangential_solution& d, double r) {
@@ -136,26 +239,6 @@ std::vector<double> contact::slip_velocity(const tangential_solution& d, const s
     std::vector<double> v(r.size());
     for (std::size_t i = 0; i < r.size(); ++i) v[i] = limit_->slip_velocity(d, r[i]);
     return v;
-}
-
-bool contact::ensure_companion() {
-    if (!companion_) {
-        // The same problem at n/2 when n/2 is in the asymptotic range of the method; else at 2n.
-        const int n = options_.nodes();
-        for (int other : {n / 2, 2 * n}) {
-            if (other < min_nodes || other > max_nodes) continue;
-            // The one-parameter limit has no kernel to resolve: its error falls as n^-2 from small n on.
-            if (other < n && options_.how != method::one_parameter &&
-                !in_asymptotic_range(widest_kernel(surfaces_), other, options_.how))
-                continue;
-            try {
-                companion_ = std::make_unique<contact>(surfaces_, f_, solver_options{other, options_.how});
-                break;
-            } catch (const resolution_error&) {
-            }
-        }
-    }
-    return companion_ != nullptr;
 }
 
 double load_ratio(const roughness& surfaces, const solver_options& options) {

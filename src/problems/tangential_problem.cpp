@@ -9,6 +9,7 @@
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
 #include "roughroll/numerics/root_search.hpp"
@@ -210,11 +211,15 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         check_load_resolvable(target, f_);
         // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
         const auto full_stick_below = [this, target] {
+            // Q(1) is 0 up to the discretisation error and the rounding of (4.5), an O(f)
+            // sum cancelling to Q whose terms grow with P_H/P2 (G of (3.25)): n eps f max(1, P_H/P2).
             const double at_full_stick = load(1.0);
-            if (!(at_full_stick < target)) {
+            const double rounding = rounding_floor(n_, f_ * std::max(1.0, std::fabs(normal_.lambda)));
+            if (!(at_full_stick + rounding < target)) {
                 std::ostringstream msg;
                 msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
-                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
+                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " plus its rounding " << rounding
+                    << " is not below |Q|; increase n";
                 throw resolution_error(msg.str());
             }
         };

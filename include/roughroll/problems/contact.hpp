@@ -3,7 +3,8 @@
 //
 // With method::extrapolated the contact holds two product-integration levels, n and n/2,
 // and reports P_H/P2, c0 and xi by Richardson's rule for order 4, (16 v_n - v_{n/2})/15;
-// the distributions (pressure, tractions, checks) are those of level n.
+// the distributions (pressure, tractions, checks) are those of level n. Its error estimate
+// adds a third level (n/4) to check that the order is 4 (error_estimate below).
 //
 // With method::one_parameter the contact solves the limit t -> 0 of the model instead
 // (one_parameter_solver, docs/formulation.md "The one-parameter limit"): same solutions,
@@ -11,7 +12,9 @@
 #pragma once
 
 #include <memory>
+#include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "roughroll/model/carter.hpp"
@@ -23,17 +26,25 @@
 
 namespace roughroll {
 
-// The difference between a point at n and the same point at n/2, per quantity. For a method
-// of order p it exceeds the error at n by about 2^p - 1 once n is in the asymptotic range
-// (a conservative estimate); docs/performance.md checks it against finer solutions. Where
-// n/2 is below min_nodes or cannot resolve the kernel, the companion is 2n, and the
-// difference is then about the error at n itself.
+// The error estimate of a point, per quantity (docs/performance.md, "How the error estimates
+// are made"). Every estimate comes from three levels of the same plain discretisation (the
+// method itself; product integration for method::extrapolated): n/4, n/2, n where n/2 is in
+// the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n, 4n. The observed
+// ratio of the two differences decides (numerics/error_bound.hpp): where it shows the method's
+// order, the classic estimates (the difference from n/2, about 2^p - 1 times the error at n;
+// for method::extrapolated the difference from level n); where it shows a lower order, a bound
+// from the observed ratio; where the levels do not converge visibly, no estimate: estimate()
+// and at_stick_end() throw resolution_error (the point is refused). Each estimate includes a
+// rounding floor, n eps times the size of the terms the quantity is computed from: |P_H/P2|
+// for P_H/P2, f max(1, P_H/P2) for xi (the right-hand side f G of (4.4)), f/(f rho) = 1/rho
+// for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope |dQ/dc0| = f rho), f for Q.
 struct error_estimate {
     double lambda;        // P_H/P2
     double c0;            // 0 for a point of a curve swept in c0 (c0 is then the input)
     double xi;
     double Q;             // 0 for a point at a given Q (Q is then the input)
-    const char* against;  // "n/2", "2n (doubled)" or "level n" (extrapolated)
+    std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
+    bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
 };
 
 class contact {
@@ -55,15 +66,16 @@ public:
     tangential_solution distribution(const tangential_solution& s);
 
     // The point whose stick zone ends at c0 in [-1, 1], Q = Q(c0) of (4.5): no root search,
-    // a creep curve swept in c0. With its estimate (same companion rules as estimate()).
+    // a creep curve swept in c0. With its estimate (same rules as estimate(), same refusal).
     struct swept_point {
         tangential_solution solution;
         std::optional<error_estimate> estimate;
     };
     swept_point at_stick_end(double c0);
 
-    // The estimate for a solution s of this contact (solves the companion problem once,
-    // lazily). Empty when neither n/2 nor 2n is available.
+    // The estimate for a solution s of this contact (solves the other two levels at s.Q).
+    // Throws resolution_error when the levels give no honest estimate (see error_estimate).
+    // Empty only when no three levels fit in [min_nodes, max_nodes] (never for n >= 8).
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
     // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone) for a
@@ -75,20 +87,30 @@ public:
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
     tangential_solution level_at_stick_end(double c0, bool checked);
-    bool ensure_companion();  // the companion of estimate(): n/2 or 2n; false when neither exists
-    // The estimate from s and the companion's solution c at the same Q (or the same c0, swept).
-    error_estimate companion_difference(const tangential_solution& s, const tangential_solution& c,
-                                        bool swept) const;
+    // The point at Q of this contact's own level: cached, so that the levels of an estimate
+    // and the coarse level of an extrapolation are solved once per Q.
+    const tangential_solution& level_point(double Q);
+    int nodes() const { return options_.nodes(); }
+    const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
+    method level_method() const;  // product for extrapolated, else the method itself
+    bool build_levels();          // the two other levels of the estimate; false when none fit
+    // The estimate from the three levels' values (s of this contact, level-n values `own`).
+    error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                 const std::array<tangential_solution, 3>& at_levels, bool swept) const;
 
     roughness surfaces_;
     solver_options options_;
-    std::unique_ptr<contact> companion_;  // at n/2, or 2n; the coarse level when extrapolating
     double f_;
+    std::unique_ptr<contact> companion_;  // method::extrapolated: the coarse level n/2 (product)
+    std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
+    std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
+    bool levels_built_ = false;
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
+    std::optional<tangential_solution> last_level_point_;  // level_point's cache
 };
 
 // P_H/P2 alone, exactly as contact(surfaces, f, options).normal().lambda reports it (the same
@@ -101,7 +123,7 @@ double load_ratio(const roughness& surfaces, const solver_options& options);
 struct curve_point {
     tangential_solution solution;
     carter_point smooth;                      // Carter's curve at the same Q
-    std::optional<error_estimate> estimate;  // against n/2
+    std::optional<error_estimate> estimate;  // contact::estimate
 };
 
 // Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense
