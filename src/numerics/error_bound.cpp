@@ -36,11 +36,11 @@ error_bound bound_error(const three_levels& v, int order, reported_value which, 
     const double r = std::fabs(b.ratio);
     const double needed = b.ratio < 0.0 ? std::min(asymptotic_share * full, min_sign_change_ratio) : min_ratio;
     if (!(r >= needed) && a2 > floor) return b;
-    b.resolved = true;
+    const double r_eff = std::min(r, full);  // geometric tail, ratio capped at 2^p
     b.asymptotic = b.ratio >= asymptotic_share * full;
-    // Bounds on the errors of the three levels (geometric tail, ratio capped at 2^p).
-    const double r_eff = std::min(r, full);
     const double e2 = a2 * (b.asymptotic ? 1.0 : std::max(1.0, 2.0 / (r_eff - 1.0)));
+    b.resolved = true;
+    // Bounds on the errors of the three levels.
     const double e1 = a2 + e2;
     const double e0 = a1 + e1;
     const double level_error[] = {e0, e1, e2};

@@ -149,7 +149,7 @@ bool contact::build_levels() {
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
-                                      const std::array<tangential_solution, 3>& at, bool swept) const {
+                                      const std::array<tangential_solution, 3>& at, bool swept) {
     int self = 0;
     while (levels_[self] != nullptr) ++self;
     const bool extrapolated = reported_ != nullptr;
@@ -181,14 +181,16 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, c0_floor, &e.c0});
     const int coarsest_n = levels_[0] ? levels_[0]->nodes() : nodes();
     for (const quantity& q : qs) {
-        const error_bound b = bound_error(q.v, order, which, q.floor);
+        error_bound b = bound_error(q.v, order, which, q.floor);
+        const three_levels used = q.v;
+        const int used_coarsest_n = coarsest_n;
         if (!b.resolved) {
             std::ostringstream msg;
             msg.precision(3);
             msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
-                << ": " << q.name << " does not converge visibly over n = " << coarsest_n << ", " << 2 * coarsest_n
-                << ", " << 4 * coarsest_n << " (differences " << q.v.middle - q.v.coarsest << ", "
-                << q.v.finest - q.v.middle << ")";
+                << ": " << q.name << " does not converge visibly over n = " << used_coarsest_n << ", "
+                << 2 * used_coarsest_n << ", " << 4 * used_coarsest_n << " (differences " << used.middle - used.coarsest
+                << ", " << used.finest - used.middle << ")";
             if (!swept) msg << " at Q = " << s.Q;
             else msg << " at c0 = " << s.c0;
             msg << "; increase n, or the scene is beyond the method's reach";
@@ -200,8 +202,8 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
     const int first = 2 - self;  // index of the coarsest level's name
     e.against = std::string(extrapolated ? "level n" : self == 2 ? "n/2" : "2n") + " (levels " + names[first] + ", " +
-                names[first + 1] + ", " + names[first + 2] + (e.bounded ? "; observed order below " : "; order ") +
-                std::to_string(order) + (e.bounded ? ": bounded)" : " observed)");
+                names[first + 1] + ", " + names[first + 2] + (e.bounded ? "; observed order below " : "; order ") + std::to_string(order) +
+                (e.bounded ? ": bounded)" : " observed)");
     return e;
 }
 

@@ -96,7 +96,7 @@ private:
     bool build_levels();          // the two other levels of the estimate; false when none fit
     // The estimate from the three levels' values (s of this contact, level-n values `own`).
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
-                                 const std::array<tangential_solution, 3>& at_levels, bool swept) const;
+                                 const std::array<tangential_solution, 3>& at_levels, bool swept);
 
     roughness surfaces_;
     solver_options options_;
