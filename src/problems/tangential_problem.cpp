@@ -162,7 +162,11 @@ tangential_solution tangential_solver::carter_solution(double Q, double c0, doub
     return s;
 }
 
-double tangential_solver::load(double c0) { return c0 <= -1.0 ? f_ : solve_system(c0).Q; }
+double tangential_solver::load(double c0) {
+    if (c0 <= -1.0) return f_;
+    last_system_ = solve_system(c0);  // kept: the root search ends on a c0 it evaluated
+    return last_system_->Q;
+}
 
 
 double load_magnitude(double Q, double f) {
@@ -197,7 +201,7 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what) {
     }
 }
 
-tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
+tangential_solution tangential_solver::solve(double Q, std::optional<double> guess, bool checked) {
     const double target = load_magnitude(Q, f_);
     tangential_solution s;
     if (target == 0.0) {
@@ -224,12 +228,12 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
             }
         };
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
-                                           "Brent search for c0", full_stick_below);
-        s = solve_system(c0.x);
+                                           "root search for c0", full_stick_below, carter(target, f_).c0);
+        s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
         s.iterations = c0.iterations;
     }
     apply_load_sign(s, Q, "tangential problem");
-    s.checks = check(s);
+    if (checked) s.checks = check(s);
     return s;
 }
 

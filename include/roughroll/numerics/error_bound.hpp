@@ -13,9 +13,9 @@
 //     most |d2| plus that, of v_0 at most |d1| plus that; Richardson's value is bounded by
 //     its distance from v_2 plus the error of v_2;
 //   - |rho| < 1.5, or rho negative and |rho| below that (the levels do not converge, or not
-//     visibly): no honest estimate from these levels; the caller refuses the point. (A second
-//     chance one level finer, n/2, n, 2n, was tried and dropped: on very stiff layers three
-//     pre-asymptotic levels can look asymptotic by chance, validation/test_honest_estimates.)
+//     visibly): no honest estimate from these levels. contact gives a second chance one level
+//     finer (n/2, n, 2n) where the solution's inequalities hold, accepted only where that ratio
+//     shows at least order p - 1; else it refuses the point.
 // In the first case Richardson's value is also bounded by its change from the pair below,
 // |2^p d2 - d1|/(2^p - 1) = |d2| |2^p - rho|/(2^p - 1): where the coarsest level is itself
 // pre-asymptotic and rho only happens to lie near 2^p, that change is large.

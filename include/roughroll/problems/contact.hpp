@@ -89,7 +89,9 @@ private:
     tangential_solution level_at_stick_end(double c0, bool checked);
     // The point at Q of this contact's own level: cached, so that the levels of an estimate
     // and the coarse level of an extrapolation are solved once per Q.
-    const tangential_solution& level_point(double Q);
+    // `checked`: with the checks (3.3)-(3.4) (a point reported), or without (a level of an
+    // extrapolation or an estimate).
+    const tangential_solution& level_point(double Q, bool checked);
     int nodes() const { return options_.nodes(); }
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
     method level_method() const;  // product for extrapolated, else the method itself
@@ -97,6 +99,10 @@ private:
     // The estimate from the three levels' values (s of this contact, level-n values `own`).
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
                                  const std::array<tangential_solution, 3>& at_levels, bool swept);
+    // Level 2n at the same Q or c0, for a ratio that fails on n/4, n/2, n; empty when n is
+    // not the finest level or 2n cannot be solved.
+    std::optional<tangential_solution> above_finest(const tangential_solution& s, const tangential_solution& own,
+                                                    bool swept);
 
     roughness surfaces_;
     solver_options options_;
@@ -105,12 +111,14 @@ private:
     std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
     std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
     bool levels_built_ = false;
+    std::unique_ptr<contact> finer_;  // level 2n: the second chance of a ratio that fails
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
     std::optional<tangential_solution> last_level_point_;  // level_point's cache
+    bool last_level_point_checked_ = false;
 };
 
 // P_H/P2 alone, exactly as contact(surfaces, f, options).normal().lambda reports it (the same
