@@ -314,11 +314,18 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     auto lower = [](double& margin, double v) {
         if (!(v >= margin)) margin = v;
     };
-    for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+    // p >= 0 on the fixed grid of (-1, 1) does not depend on c0: once per solver.
+    if (!pressure_margin_) {
+        double margin = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < check_points; ++i) lower(margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+        pressure_margin_ = margin;
+    }
+    c.pressure_margin = *pressure_margin_;
     if (s.c0 > -1.0) {
         for (int i = 0; i < check_points; ++i) {
             const double r = grid_point(-1.0, s.c0, i);
-            lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
+            const double fp = f_ * normal_.pressure(r);  // |p1| = |f p + q0|, (3.15)
+            lower(c.stick_margin, (fp - std::fabs(fp + q0(s, r))) / f_);
         }
     }
     if (s.c0 < 1.0) {

@@ -119,6 +119,7 @@ private:
     gauss_legendre moments_rule_;  // for kernel_moments of n coefficients, built once
     kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
     std::optional<tangential_solution> last_system_;  // of the last load(c0)
+    std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
 };
 
 }  // namespace roughroll
