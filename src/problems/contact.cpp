@@ -66,8 +66,19 @@ tangential_solver& contact::tangential() {
 
 tangential_solution contact::point(double Q) {
     if (!reported_) return level_point(Q, true);
-    const tangential_solution& coarse = companion_->level_point(Q, false);
-    tangential_solution s = tangential_->solve(Q, coarse.c0);  // the coarse root brackets this one
+    // Each level's root search starts from the root of the level below: n/4 (the estimate's
+    // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's.
+    std::optional<double> start, start_slope;
+    if (build_levels() && levels_[0] && levels_[1] == companion_.get()) {
+        try {
+            const tangential_solution& quarter = levels_[0]->level_point(Q, false);
+            start = quarter.c0;
+            start_slope = quarter.load_slope;
+        } catch (const error&) {  // the estimate will say why; the search goes without a start
+        }
+    }
+    const tangential_solution& coarse = companion_->level_point(Q, false, start, start_slope);
+    tangential_solution s = tangential_->solve(Q, coarse.c0, true, coarse.load_slope);
     last_fine_ = s;
     s.c0 = richardson(s.c0, coarse.c0);
     s.xi = richardson(s.xi, coarse.xi);
@@ -76,9 +87,10 @@ tangential_solution contact::point(double Q) {
     return s;
 }
 
-const tangential_solution& contact::level_point(double Q, bool checked) {
+const tangential_solution& contact::level_point(double Q, bool checked, std::optional<double> guess,
+                                                std::optional<double> slope) {
     if (!last_level_point_ || !(last_level_point_->Q == Q) || (checked && !last_level_point_checked_)) {
-        last_level_point_ = limit_ ? limit_->solve(Q) : tangential_->solve(Q, std::nullopt, checked);
+        last_level_point_ = limit_ ? limit_->solve(Q, guess) : tangential_->solve(Q, guess, checked, slope);
         last_level_point_checked_ = checked || limit_;
     }
     return *last_level_point_;

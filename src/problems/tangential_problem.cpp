@@ -46,8 +46,9 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       carter_(closed_form && k1.empty() && k2.empty()),
       cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
       system_(static_cast<std::size_t>(n_) + 1),
-      moments_rule_(kernel_moments::moments_rule(n_)),
-      k1_operator_(normal.rule, normal.how, k1.max_rate()) {
+      k1_operator_(normal.kernel_term && k1.max_rate() <= normal.kernel_term->max_rate()
+                       ? normal.kernel_term
+                       : std::make_shared<const kernel_operator>(normal.rule, normal.how, k1.max_rate())) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     gsl_matrix_set_zero(cauchy_.get());
     add_cauchy_term(cauchy_.get(), normal_.rule);
@@ -77,7 +78,7 @@ tangential_solution tangential_solver::solve_system(double c0) {
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
     gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
-    k1_operator_.add_to(a, k1_.stretched(rho));  // E6
+    k1_operator_->add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) - 1.0;  // E4
     const std::vector<double> g = G(r);
@@ -201,7 +202,8 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what) {
     }
 }
 
-tangential_solution tangential_solver::solve(double Q, std::optional<double> guess, bool checked) {
+tangential_solution tangential_solver::solve(double Q, std::optional<double> guess, bool checked,
+                                             std::optional<double> slope) {
     const double target = load_magnitude(Q, f_);
     tangential_solution s;
     if (target == 0.0) {
@@ -228,9 +230,10 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
             }
         };
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
-                                           "root search for c0", full_stick_below, carter(target, f_).c0);
+                                           "root search for c0", full_stick_below, carter(target, f_).c0, slope);
         s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
         s.iterations = c0.iterations;
+        s.load_slope = c0.slope;
     }
     apply_load_sign(s, Q, "tangential problem");
     if (checked) s.checks = check(s);
@@ -281,7 +284,10 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of the slip zone, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
-    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, moments_rule_);
+    // The rule for kernel_moments of n coefficients: built on the first slip velocity (levels
+    // of an extrapolation or an estimate never need one).
+    if (!moments_rule_) moments_rule_.emplace(kernel_moments::moments_rule(n_));
+    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, *moments_rule_);
     for (std::size_t i = 0; i < r.size(); ++i)
         v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() ? 0.0 : lq0((r[i] + 1.0 - rho) / rho));
     return v;

@@ -91,7 +91,9 @@ private:
     // and the coarse level of an extrapolation are solved once per Q.
     // `checked`: with the checks (3.3)-(3.4) (a point reported), or without (a level of an
     // extrapolation or an estimate).
-    const tangential_solution& level_point(double Q, bool checked);
+    // `guess`: a c0 near the root (the level below's), where the root search starts.
+    const tangential_solution& level_point(double Q, bool checked, std::optional<double> guess = std::nullopt,
+                                           std::optional<double> slope = std::nullopt);
     int nodes() const { return options_.nodes(); }
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
     method level_method() const;  // product for extrapolated, else the method itself

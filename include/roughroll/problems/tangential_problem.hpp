@@ -14,6 +14,7 @@
 // xi = -f G(-1)); neither needs a solve.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -45,6 +46,7 @@ struct tangential_solution {
     std::vector<double> psi_b;  // U coefficients of psi(tau) for |Q| (multiply by sign)
     int iterations;             // root-search iterations (secant or Brent; 0 without a search)
     double rcond;               // of the last tangential system (1 without a solve)
+    double load_slope = 0.0;    // dQ/dc0 at c0 from the root search's last secant (0: unknown)
     traction_checks checks;
 
     double rho() const { return 0.5 * (1.0 + c0); }
@@ -82,7 +84,9 @@ public:
     // coarse level's, when extrapolating), the start of a secant iteration (root_search.hpp);
     // without it the secant starts from Carter's c0, and Brent on [-1, 1] is the fallback.
     // `checked` = false skips the checks (3.3)-(3.4), as in at_stick_end.
-    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt, bool checked = true);
+    // `slope`: dQ/dc0 near `guess` (the level below's load_slope), for a first Newton step.
+    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt, bool checked = true,
+                              std::optional<double> slope = std::nullopt);
 
     // The solution for a trial c0 in [-1, 1], Q = Q(c0) of (4.5): a creep curve swept
     // in c0 needs no root search.
@@ -116,8 +120,8 @@ private:
     bool carter_;  // smooth in both directions, closed form allowed
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
-    gauss_legendre moments_rule_;  // for kernel_moments of n coefficients, built once
-    kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
+    std::optional<gauss_legendre> moments_rule_;  // for kernel_moments of n coefficients, built once
+    std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
     std::optional<tangential_solution> last_system_;  // of the last load(c0)
     std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
 };
