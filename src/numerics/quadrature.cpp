@@ -43,13 +43,19 @@ gauss_legendre::gauss_legendre(int order) {
     nodes.assign(order, 0.0);
     weights.assign(order, 0.0);
     const int half = (order + 1) / 2;
+    // P_k = a_k x P_{k-1} - b_k P_{k-2}, a_k = (2k - 1)/k, b_k = (k - 1)/k: the divisions once.
+    std::vector<double> a(order + 1, 0.0), bk(order + 1, 0.0);
+    for (int k = 2; k <= order; ++k) {
+        a[k] = (2.0 * k - 1.0) / k;
+        bk[k] = (k - 1.0) / k;
+    }
     for (int i = 1; i <= half; ++i) {
         double x = std::cos(M_PI * (i - 0.25) / (order + 0.5));
         double dp = 0.0;
         for (int it = 0; it < 100; ++it) {
             double p0 = 1.0, p1 = x;  // P_0, P_1
             for (int k = 2; k <= order; ++k) {
-                const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                const double p2 = a[k] * x * p1 - bk[k] * p0;
                 p0 = p1;
                 p1 = p2;
             }
@@ -63,7 +69,7 @@ gauss_legendre::gauss_legendre(int order) {
         // P'(x) at the converged node, for the weight.
         double p0 = 1.0, p1 = x;
         for (int k = 2; k <= order; ++k) {
-            const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+            const double p2 = a[k] * x * p1 - bk[k] * p0;
             p0 = p1;
             p1 = p2;
         }
