@@ -65,18 +65,22 @@ tangential_solver& contact::tangential() {
 }
 
 tangential_solution contact::point(double Q) {
-    if (!reported_) return level_point(Q, true);
     // Each level's root search starts from the root of the level below: n/4 (the estimate's
-    // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's.
+    // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's,
+    // with a Newton step on the slope of the level below.
     std::optional<double> start, start_slope;
-    if (build_levels() && levels_[0] && levels_[1] == companion_.get()) {
+    // (Not for the one-parameter limit: its search is cheap, and contact::point is its solve.)
+    const bool below = !limit_ && build_levels() && levels_[0] && levels_[1] && !levels_[2];
+    if (below) {
         try {
             const tangential_solution& quarter = levels_[0]->level_point(Q, false);
-            start = quarter.c0;
-            start_slope = quarter.load_slope;
+            const tangential_solution& half = reported_ ? quarter : levels_[1]->level_point(Q, false, quarter.c0, quarter.load_slope);
+            start = half.c0;
+            start_slope = half.load_slope;
         } catch (const error&) {  // the estimate will say why; the search goes without a start
         }
     }
+    if (!reported_) return level_point(Q, true, start, start_slope);
     const tangential_solution& coarse = companion_->level_point(Q, false, start, start_slope);
     tangential_solution s = tangential_->solve(Q, coarse.c0, true, coarse.load_slope);
     last_fine_ = s;
