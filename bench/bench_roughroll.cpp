@@ -1,6 +1,8 @@
 // Timings of the solvers on Fig. 2's moderate scene (T = A = 0.5, equal kernels) and on
 // an unequal-kernel scene. Run: build/bench/bench_roughroll --benchmark_repetitions=5
-//   --benchmark_report_aggregates_only=true   (medians are what docs/performance.md quotes)
+//   --benchmark_out=bench.json --benchmark_out_format=json
+// docs/performance.md quotes the creep points as ratios to bm_lu (one LU factorisation and
+// solve of the same order) read off one run, minimum and median of the repetitions.
 #include <cstring>
 #include <utility>
 
