@@ -13,10 +13,7 @@ constexpr double asymptotic_share = 0.7;   // rho >= 0.7 * 2^p: observed order >
 constexpr double min_sign_change_ratio = 4.0;  // |rho| when the differences change sign
 }  // namespace
 
-double rounding_floor(int n, double scale, double rcond) {
-    const double amplification = std::max(static_cast<double>(std::max(n, 1)), rcond > 0.0 ? 1.0 / rcond : HUGE_VAL);
-    return amplification * DBL_EPSILON * std::fabs(scale);
-}
+double rounding_floor(int n, double scale) { return std::max(n, 1) * DBL_EPSILON * std::fabs(scale); }
 
 error_bound bound_error(const three_levels& v, int order, reported_value which, double floor) {
     const double full = std::ldexp(1.0, order);  // 2^p

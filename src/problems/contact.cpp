@@ -192,7 +192,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     // grow with G of (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1
     // moves by min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). The special loads
     // Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly).
-    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)), own.rcond);
+    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)));
     const bool special = s.Q == 0.0 || std::fabs(s.Q) == f_;
     const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
     struct quantity {
@@ -203,10 +203,8 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     std::vector<quantity> qs{
-        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, rounding_floor(finest_n, lambda, normal_level().rcond),
-         &e.lambda},
-        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * std::max(1.0, std::fabs(lambda)), own.rcond),
-         &e.xi}};
+        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, rounding_floor(finest_n, lambda), &e.lambda},
+        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * std::max(1.0, std::fabs(lambda))), &e.xi}};
     if (swept)
         qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, f_ * n_eps, &e.Q});
     else

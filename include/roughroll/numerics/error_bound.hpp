@@ -49,12 +49,8 @@ error_bound bound_error(const three_levels& v, int order, reported_value which, 
 
 // The rounding floor of a quantity computed by a dense solve of order about n (LU with
 // partial pivoting, whose backward error is a small multiple of n eps in practice; the
-// growth factors of these Cauchy systems are O(1)) or a sum of n terms, amplified by the
-// system's condition: max(n, 1/rcond) * DBL_EPSILON * scale, `scale` the size of the terms the
-// quantity is computed from, `rcond` the reciprocal condition estimate of the LU factor
-// (1 when there was no system). max rather than product: measured, the forward error follows
-// the larger of the two (a tangential layer T = 100, A = 1e-3: rcond 6e-5, error in xi 4e-13
-// relative to f at n = 128, against n eps = 3e-14 and eps/rcond = 4e-12).
-double rounding_floor(int n, double scale, double rcond = 1.0);
+// growth factors of these diagonally dominated Cauchy systems are O(1)) or a sum of n terms:
+// n * DBL_EPSILON * scale, `scale` the size of the terms the quantity is computed from.
+double rounding_floor(int n, double scale);
 
 }  // namespace roughroll
