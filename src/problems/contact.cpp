@@ -188,11 +188,22 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
     auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
     const double lambda = normal().lambda;
-    // c0: Q(c0) of (4.5) rounds to about n eps f max(1, P_H/P2) (an O(f) sum whose terms
-    // grow with G of (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1
-    // moves by min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). The special loads
+    // The size of the terms of (4.4)-(4.5): the pressure's scale P_H/P2 (through G) and the
+    // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
+    // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
+    // loses 1e-13 absolute in xi = 3e-8 at n = 128).
+    double strength = 0.0;
+    for (const kernel& k : {kernel::tangential(surfaces_), kernel::normal(surfaces_)}) {
+        double sum = 0.0;
+        for (const auto& term : k.terms()) sum += std::fabs(term.T);
+        strength = std::max(strength, sum);
+    }
+    const double size = std::max({1.0, std::fabs(lambda), strength});
+    const double n_eps = rounding_floor(finest_n, size);
+    // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
+    // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
+    // min(n eps K/rho, 2 sqrt(n eps K)), K = `size` above. The special loads
     // Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly).
-    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)));
     const bool special = s.Q == 0.0 || std::fabs(s.Q) == f_;
     const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
     struct quantity {
@@ -204,7 +215,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     std::vector<quantity> qs{
         {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, rounding_floor(finest_n, lambda), &e.lambda},
-        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * std::max(1.0, std::fabs(lambda))), &e.xi}};
+        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * size), &e.xi}};
     if (swept)
         qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, f_ * n_eps, &e.Q});
     else

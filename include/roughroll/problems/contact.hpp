@@ -36,8 +36,10 @@ namespace roughroll {
 // from the observed ratio; where the levels do not converge visibly, no estimate: estimate()
 // and at_stick_end() throw resolution_error (the point is refused). Each estimate includes a
 // rounding floor, n eps times the size of the terms the quantity is computed from: |P_H/P2|
-// for P_H/P2, f max(1, P_H/P2) for xi (the right-hand side f G of (4.4)), f/(f rho) = 1/rho
-// for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope |dQ/dc0| = f rho), f for Q.
+// for P_H/P2, |xi| + f K for xi with K = max(1, P_H/P2, sum |T| of a kernel) (the right-hand
+// side f G of (4.4), and the kernel terms that cancel to xi), min(K/rho, 2 sqrt(K/(n eps)))
+// for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope |dQ/dc0| = f rho, or the
+// square-root inversion near gross sliding), f K for Q.
 struct error_estimate {
     double lambda;        // P_H/P2
     double c0;            // 0 for a point of a curve swept in c0 (c0 is then the input)
