@@ -198,11 +198,11 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         for (const auto& term : k.terms()) sum += std::fabs(term.T);
         strength = std::max(strength, sum);
     }
-    const double size = std::max({1.0, std::fabs(lambda), strength});
-    const double n_eps = rounding_floor(finest_n, size);
+    const double size = std::max({1.0, std::fabs(lambda), strength});  // for xi
+    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
     // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
     // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
-    // min(n eps K/rho, 2 sqrt(n eps K)), K = `size` above. The special loads
+    // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). The special loads
     // Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly).
     const bool special = s.Q == 0.0 || std::fabs(s.Q) == f_;
     const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));

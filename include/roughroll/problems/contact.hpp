@@ -37,9 +37,9 @@ namespace roughroll {
 // and at_stick_end() throw resolution_error (the point is refused). Each estimate includes a
 // rounding floor, n eps times the size of the terms the quantity is computed from: |P_H/P2|
 // for P_H/P2, |xi| + f K for xi with K = max(1, P_H/P2, sum |T| of a kernel) (the right-hand
-// side f G of (4.4), and the kernel terms that cancel to xi), min(K/rho, 2 sqrt(K/(n eps)))
-// for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope |dQ/dc0| = f rho, or the
-// square-root inversion near gross sliding), f K for Q.
+// side f G of (4.4), and the kernel terms that cancel to xi), min(K'/rho, 2 sqrt(K'/(n eps)))
+// with K' = max(1, P_H/P2) for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope
+// |dQ/dc0| = f rho, or the square-root inversion near gross sliding), f K' for Q.
 struct error_estimate {
     double lambda;        // P_H/P2
     double c0;            // 0 for a point of a curve swept in c0 (c0 is then the input)
