@@ -120,3 +120,21 @@ TEST(HonestEstimates, Product) { EXPECT_GE(honest_or_refused(method::product, 32
 TEST(HonestEstimates, Extrapolated) { EXPECT_GE(honest_or_refused(method::extrapolated, 32, 128).checked, 60); }
 TEST(HonestEstimates, Paper) { EXPECT_GE(honest_or_refused(method::paper, 32, 128).checked, 40); }
 TEST(HonestEstimates, OneParameter) { EXPECT_GE(honest_or_refused(method::one_parameter, 32, 128).checked, 40); }
+
+// The case that set the bounded rule's floor of twice the last difference: product integration
+// at n = 96 on a normal layer T = 1e6, A = 30 (its inequalities fail there, which the checks
+// report), rho = 3 over 24, 48, 96, and the error 1.8 times |d2| against n = 384.
+TEST(HonestEstimates, StiffNormalLayerSlowsDown) {
+    roughness r;
+    r.cylinder2.normal = {1e6, 30.0};
+    contact coarse(r, friction, solver_options{96, method::product});
+    const tangential_solution s = coarse.point(0.5 * friction);
+    const auto e = coarse.estimate(s);
+    ASSERT_TRUE(e.has_value());
+    EXPECT_TRUE(e->bounded) << e->against;
+    contact fine(r, friction, solver_options{384, method::product});
+    const tangential_solution sf = fine.point(0.5 * friction);
+    EXPECT_LE(std::fabs(coarse.normal().lambda - fine.normal().lambda), e->lambda);
+    EXPECT_LE(std::fabs(s.c0 - sf.c0), e->c0);
+    EXPECT_LE(std::fabs(s.xi - sf.xi), e->xi);
+}

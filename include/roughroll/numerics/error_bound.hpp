@@ -8,7 +8,7 @@
 //     for Richardson's value;
 //   - 1.5 <= |rho| < 0.7 * 2^p (observed order below the assumed one), or rho negative (the
 //     error changes sign between levels) with |rho| >= min(4, 0.7 * 2^p) (it still contracts
-//     at least as an order-2 method's): the error of v_2 is at most |d2| max(1, 2/(|rho| - 1)) (a
+//     at least as an order-2 method's): the error of v_2 is at most |d2| max(2, 2/(|rho| - 1)) (a
 //     geometric tail with ratio min(|rho|, 2^p), times 2 for safety), the error of v_1 at
 //     most |d2| plus that, of v_0 at most |d1| plus that; Richardson's value is bounded by
 //     its distance from v_2 plus the error of v_2;
