@@ -1,15 +1,20 @@
 // Timings of the solvers on Fig. 2's moderate scene (T = A = 0.5, equal kernels) and on
 // an unequal-kernel scene. Run: build/bench/bench_roughroll --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true   (medians are what docs/performance.md quotes)
+//   or --benchmark_out=bench.json --benchmark_out_format=json
+// docs/performance.md quotes the creep points as ratios to bm_lu (one LU factorisation and
+// solve of the same order) read off one run, minimum and median of the repetitions.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <gsl/gsl_linalg.h>
 
 #include "roughroll/problems/contact_width.hpp"
 #include "roughroll/problems/contact.hpp"
@@ -38,6 +43,35 @@ roughness unequal() {
 
 method method_of(int64_t code) { return code == 0 ? method::paper : code == 1 ? method::product : method::extrapolated; }
 
+// The unit of the creep-point goals (issue 10): one GSL LU factorisation and solve of order
+// n + 1 (arg n), the matrix copied in first as the solvers do. A point's cost in
+// "LU-equivalents" is its time over this one's, read off the same run.
+void bm_lu(benchmark::State& state) {
+    const std::size_t size = static_cast<std::size_t>(state.range(0)) + 1;
+    gsl_matrix* a = gsl_matrix_alloc(size, size);
+    gsl_matrix* lu = gsl_matrix_alloc(size, size);
+    gsl_vector* b = gsl_vector_alloc(size);
+    gsl_vector* x = gsl_vector_alloc(size);
+    gsl_permutation* p = gsl_permutation_alloc(size);
+    for (std::size_t i = 0; i < size; ++i) {  // a Cauchy-like matrix, as in (4.4)
+        gsl_vector_set(b, i, 1.0);
+        for (std::size_t j = 0; j < size; ++j)
+            gsl_matrix_set(a, i, j, i == j ? 2.0 : 1.0 / (static_cast<double>(i) - j + 0.5));
+    }
+    for (auto _ : state) {
+        int signum = 0;
+        gsl_matrix_memcpy(lu, a);
+        gsl_linalg_LU_decomp(lu, p, &signum);
+        gsl_linalg_LU_solve(lu, p, b, x);
+        benchmark::DoNotOptimize(gsl_vector_get(x, 0));
+    }
+    gsl_permutation_free(p);
+    gsl_vector_free(x);
+    gsl_vector_free(b);
+    gsl_matrix_free(lu);
+    gsl_matrix_free(a);
+}
+
 // The normal problem alone (4.2)-(4.3).
 void bm_normal(benchmark::State& state) {
     const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
@@ -51,6 +85,17 @@ void bm_point(benchmark::State& state) {
     for (auto _ : state) {
         contact c(fig2(), 0.3, o);
         benchmark::DoNotOptimize(c.point(0.15).xi);
+    }
+}
+
+// The same point with its error estimate (the levels n/4 and n/2 solved at the same Q), as
+// `roughroll point` reports it.
+void bm_point_estimated(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    for (auto _ : state) {
+        contact c(fig2(), 0.3, o);
+        const tangential_solution s = c.point(0.15);
+        benchmark::DoNotOptimize(c.estimate(s)->xi);
     }
 }
 
@@ -235,8 +280,10 @@ void bm_zone_point(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(bm_zone_point)->ArgsProduct({{2, 6}, {1, 2}, {64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_lu)->Arg(48)->Arg(64)->Arg(96)->Arg(128)->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_point)->ArgsProduct({{0, 1, 2}, {64, 96, 128, 200}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_point_estimated)->ArgsProduct({{1, 2}, {96, 128}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1, 2}, {96, 128, 200}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_swept_point)->ArgsProduct({{1, 2}, {96, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_point)->ArgsProduct({{64, 128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);

@@ -35,6 +35,12 @@ roughness tangential_only(double T, double A) {  // K2* empty: only the tangenti
     return r;
 }
 
+roughness normal_layer_on_cylinder2(double T, double A) {  // K1* empty, K2* stiff: unequal kernels
+    roughness r;
+    r.cylinder2.normal = {T, A};
+    return r;
+}
+
 roughness scales() {  // both cylinders rough, parameters four decades apart
     roughness r;
     r.cylinder1.tangential = {0.01, 0.1};
@@ -53,8 +59,13 @@ class Extreme : public ::testing::TestWithParam<extreme_case> {};
 
 TEST_P(Extreme, HonestOrRefused) {
     const extreme_case& x = GetParam();
-    if (x.refused) {
-        EXPECT_THROW(contact(x.surfaces, x.f, solver_options{x.n, x.how}), resolution_error);
+    if (x.refused) {  // by the contact, its point, or its estimate (issue 10)
+        EXPECT_THROW(
+            {
+                contact c(x.surfaces, x.f, solver_options{x.n, x.how});
+                c.estimate(c.point(x.ratio * x.f));
+            },
+            resolution_error);
         return;
     }
     contact c(x.surfaces, x.f, solver_options{x.n, x.how});
@@ -104,6 +115,13 @@ INSTANTIATE_TEST_SUITE_P(
         extreme_case{"n500", equal(0.5, 0.5), 0.3, 0.5, 500, method::product, false},
         extreme_case{"extrapolated_T5_A20", equal(5, 20), 0.3, 0.5, 128, method::extrapolated, false},
         extreme_case{"extrapolated_A1000_refused", equal(1, 1000), 0.3, 0.5, 128, method::extrapolated, true},
+        // Issue 10's silent wrong numbers: a compliant normal layer at the onset of gross
+        // sliding converges at order 2 (the estimate must bound it), and the one-parameter
+        // limit near gross sliding with an unresolved layer (2T/A^2 = 2e-6) must be refused.
+        extreme_case{"extrapolated_cyl2_normal_T1e5_A1", normal_layer_on_cylinder2(1e5, 1), 0.3, 1.0, 128,
+                     method::extrapolated, false},
+        extreme_case{"one_parameter_A1000_gross_sliding_refused", normal_layer_on_cylinder2(1, 1000), 0.3,
+                     1.0 - 1e-15, 128, method::one_parameter, true},
         extreme_case{"paper_T100_A0_5", equal(100, 0.5), 0.3, 0.5, 96, method::paper, false},
         extreme_case{"paper_Qf_1e_9", equal(0.5, 0.5), 0.3, 1e-9, 96, method::paper, false},
         extreme_case{"paper_Qf_1_minus_1e_9", equal(0.5, 0.5), 0.3, 1 - 1e-9, 96, method::paper, false},

@@ -341,7 +341,7 @@ TEST(Zones, ContactTakesTheGeneralPathWhereNeeded) {
     const tangential_solution ref = reference.point(Q);
     const auto e = automatic.estimate(a);
     ASSERT_TRUE(e.has_value());
-    EXPECT_STREQ(e->against, "n/2");
+    EXPECT_EQ(e->against.rfind("n/2 (general zone search", 0), 0u) << e->against;
     EXPECT_LT(std::fabs(a.xi - ref.xi), e->xi);
     EXPECT_LT(std::fabs(a.c0 - ref.c0), e->c0);
     EXPECT_EQ(automatic.distribution(a).start, a.start);

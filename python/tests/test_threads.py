@@ -45,7 +45,7 @@ def test_gil_released_during_a_solve():
     # A long batch on a worker thread; this thread sleeps 0.3 s and then needs the GIL to go on.
     # With the GIL released by the solve it goes on at once; held, only when the solve returns.
     s = roughroll.read_scene(DATA / "fig2a-T1.toml")
-    items = [(s, 0.3 * k / 10) for k in range(1, 9)]
+    items = [(s, 0.3 * k / 10) for k in range(1, 9)] * 4  # about 2 s on this machine
     times = {}
     started = threading.Event()
 

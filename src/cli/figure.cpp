@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -58,33 +59,42 @@ std::vector<figure_curve> curves_of(const std::string& which) {
     return curves;
 }
 
-// The tables of docs/reproduction.md: P_H/P2 and xi/f at four loads per curve, at n and
-// 2n; their difference is each value's convergence estimate.
+// The tables of docs/reproduction.md: P_H/P2 and xi/f at four loads per curve, with their
+// error estimates (contact::estimate: three levels, docs/performance.md). One point per value
+// at n: the root search starts from the coarse level's root, no Brent search at 2n.
 void write_table(output_file& file, const std::string& which, const std::vector<figure_curve>& curves,
                  const solver_options& options) {
     const double ratios[] = {0.1, 0.5, 0.9, 0.99};
-    solver_options fine = options;
-    fine.n = 2 * options.nodes();  // run_figure checked 2n <= max_nodes
     std::ostream& md = file.stream();
-    md << "Fig. " << which << ", method " << to_string(options.how) << ": value at n = " << fine.nodes()
-       << ", and in brackets its difference from n = " << options.nodes() << ".\n\n"
+    md << "Fig. " << which << ", method " << to_string(options.how) << ", n = " << options.nodes()
+       << ": value, and in brackets its error estimate.\n\n"
        << "| curve | P_H/P2 |";
     for (double r : ratios) md << " xi/f at Q/f = " << r << " |";
     md << "\n|---|---|";
     for (std::size_t i = 0; i < std::size(ratios); ++i) md << "---|";
     md << "\n";
-    auto cell = [&md](double fine_value, double coarse_value) {
+    auto cell = [&md](double value, std::optional<double> estimate) {
         char buf[64];
-        std::snprintf(buf, sizeof buf, " %.10f (%.1e) |", fine_value, std::fabs(fine_value - coarse_value));
+        if (estimate)
+            std::snprintf(buf, sizeof buf, " %.10f (%.1e) |", value, *estimate);
+        else
+            std::snprintf(buf, sizeof buf, " %.10f (no estimate) |", value);
         md << buf;
     };
     for (const auto& c : curves) {
-        contact coarse(c.surfaces, figure_friction, options), precise(c.surfaces, figure_friction, fine);
+        contact problem(c.surfaces, figure_friction, options);
+        std::optional<double> lambda_estimate;
         md << "| " << c.legend << " |";
-        cell(precise.normal().lambda, coarse.normal().lambda);
-        for (double r : ratios)
-            cell(precise.point(r * figure_friction).xi / figure_friction,
-                 coarse.point(r * figure_friction).xi / figure_friction);
+        std::vector<std::pair<double, std::optional<double>>> xi;
+        for (double r : ratios) {
+            const tangential_solution s = problem.point(r * figure_friction);
+            const auto e = problem.estimate(s);
+            if (e) lambda_estimate = e->lambda;
+            xi.emplace_back(s.xi / figure_friction,
+                            e ? std::optional<double>(e->xi / figure_friction) : std::nullopt);
+        }
+        cell(problem.normal().lambda, lambda_estimate);
+        for (const auto& [v, e] : xi) cell(v, e);
         md << "\n";
     }
     file.commit();
@@ -137,7 +147,7 @@ int run_figure(const figure_options& o) {
         check_node_count(*o.n);
         options.n = *o.n;
     }
-    if (2 * options.nodes() > max_nodes)  // before any work: the table needs 2n
+    if (2 * options.nodes() > max_nodes)  // before any work (tests/cli_bad_input.sh: figure-n-too-large)
         throw input_error("the figure's table needs 2n <= " + std::to_string(max_nodes) +
                           " for its convergence estimates; use n <= " + std::to_string(max_nodes / 2));
     const auto curves = curves_of(o.which);

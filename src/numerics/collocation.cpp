@@ -20,7 +20,7 @@ void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule) {
 }
 
 kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double max_rate)
-    : rule_(rule), how_(how) {
+    : rule_(rule), how_(how), max_rate_(max_rate) {
     // Product integration: int l_k(eta) sqrt(1 - eta^2) K(eta - s_m) d eta for the Lagrange
     // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
     if (how != method::paper) {  // product, and both levels of extrapolated

@@ -127,7 +127,8 @@ void lagrange_basis::operator()(double theta, double* out) const {
         out[k] = beta_[k] / d;
         sum += out[k];
     }
-    for (int k = 0; k < n; ++k) out[k] /= sum;
+    const double scale = 1.0 / sum;
+    for (int k = 0; k < n; ++k) out[k] *= scale;
 }
 
 }  // namespace roughroll

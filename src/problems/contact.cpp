@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <sstream>
+
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 
 namespace roughroll {
@@ -51,6 +54,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     zones_ = std::make_unique<zone_solver>(*tangential_);
 }
 
+const normal_solution& contact::normal_level() const { return limit_ ? limit_->normal() : *normal_; }
+
 const normal_solution& contact::normal() const {
     if (limit_) return limit_->normal();
     return reported_ ? *reported_ : *normal_;
@@ -63,17 +68,18 @@ tangential_solver& contact::tangential() {
     return *tangential_;
 }
 
-tangential_solution contact::level_point(double Q, const tangential_solution* coarse, bool general) {
-    if (general || options_.zones == zone_search::general)
-        return zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
-    // The coarse root brackets this one.
-    tangential_solution s = tangential_->solve(Q, coarse ? std::optional<double>(coarse->c0) : std::nullopt);
+tangential_solution contact::general_point(double Q, std::optional<zone_guess> guess) {
+    return zones_->solve(Q, true, guess);
+}
+
+tangential_solution contact::zones_for(double Q, tangential_solution s, const tangential_solution* coarse) {
+    const auto guess = coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt;
+    if (options_.zones == zone_search::general) return general_point(Q, guess);
     if (options_.zones == zone_search::single || s.checks.hold()) return s;
     // A structure the general search does not cover (no root, or its answer fails the checks
     // too): the single zone, its checks failed.
     try {
-        tangential_solution g =
-            zones_->solve(Q, true, coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt);
+        tangential_solution g = general_point(Q, guess);
         return g.checks.hold() ? g : s;
     } catch (const numerical_error&) {
         return s;
@@ -81,12 +87,29 @@ tangential_solution contact::level_point(double Q, const tangential_solution* co
 }
 
 tangential_solution contact::point(double Q) {
-    if (limit_) return limit_->solve(Q);
-    if (!reported_) return level_point(Q, nullptr, false);
-    tangential_solution coarse = companion_->point(Q);
-    tangential_solution s = level_point(Q, &coarse, coarse.general);
-    // Both levels on the same path.
-    if (s.general && !coarse.general) coarse = companion_->level_point(Q, nullptr, true);
+    // Each level's root search starts from the root of the level below: n/4 (the estimate's
+    // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's,
+    // with a Newton step on the slope of the level below.
+    std::optional<double> start, start_slope;
+    // (Not for the one-parameter limit: its search is cheap, and contact::point is its solve.)
+    const bool below = !limit_ && build_levels() && levels_[0] && levels_[1] && !levels_[2];
+    if (below) {
+        try {
+            const tangential_solution& quarter = levels_[0]->level_point(Q, false);
+            const tangential_solution& half = reported_ ? quarter : levels_[1]->level_point(Q, false, quarter.c0, quarter.load_slope);
+            start = half.c0;
+            start_slope = half.load_slope;
+        } catch (const error&) {  // the estimate will say why; the search goes without a start
+        }
+    }
+    if (!reported_) {
+        if (limit_) return level_point(Q, true, start, start_slope);
+        return zones_for(Q, level_point(Q, true, start, start_slope), nullptr);
+    }
+    tangential_solution coarse = companion_->level_point(Q, false, start, start_slope);
+    tangential_solution s = zones_for(Q, tangential_->solve(Q, coarse.c0, true, coarse.load_slope), &coarse);
+    // Both levels on the same path: the coarse level's zones by the general search too.
+    if (s.general) coarse = companion_->general_point(Q, zone_guess{s.start, s.c0});
     last_fine_ = s;
     if (s.general) {
         // The general path is not extrapolated: its zone ends do not yet converge at a clean
@@ -104,40 +127,201 @@ tangential_solution contact::point(double Q) {
     return s;
 }
 
+const tangential_solution& contact::level_point(double Q, bool checked, std::optional<double> guess,
+                                                std::optional<double> slope) {
+    if (!last_level_point_ || !(last_level_point_->Q == Q) || (checked && !last_level_point_checked_)) {
+        last_level_point_ = limit_ ? limit_->solve(Q, guess) : tangential_->solve(Q, guess, checked, slope);
+        last_level_point_checked_ = checked || limit_;
+    }
+    return *last_level_point_;
+}
+
+method contact::level_method() const {
+    return options_.how == method::extrapolated ? method::product : options_.how;
+}
+
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_) return s;
-    if (!last_fine_ || last_fine_->Q != s.Q) last_fine_ = level_point(s.Q, nullptr, s.general);
+    if (!last_fine_ || last_fine_->Q != s.Q)
+        last_fine_ = s.general ? general_point(s.Q, zone_guess{s.start, s.c0}) : tangential_->solve(s.Q);
     return *last_fine_;
 }
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     if (reported_ && s.general) {
-        // A point of the general path is level n itself: the difference from n/2.
-        if (!last_coarse_ || last_coarse_->Q != s.Q) point(s.Q);
-        if (!last_coarse_ || last_coarse_->Q != s.Q) last_coarse_ = companion_->level_point(s.Q, nullptr, true);
-        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - last_coarse_->c0),
-                              std::fabs(s.xi - last_coarse_->xi), 0.0, "n/2"};
+        // A point of the general path is level n itself, not extrapolated: the difference from
+        // n/2 (on the same path), with the rounding floor of every estimate.
+        if (!last_coarse_ || last_coarse_->Q != s.Q)
+            last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start, s.c0});
+        const int n = nodes();
+        const double lambda = reported_->lambda;
+        const double K = std::max(1.0, std::fabs(lambda));
+        // c0's floor as estimate_from's: the rounding of Q(c0) divided by the zone's slope
+        // f rho, or the square-root inversion near gross sliding, where the zone shrinks to a
+        // point (validation/test_honest_estimates.cpp finds 5e-12 there at Q/f = 1 - 1e-15).
+        const double n_eps = rounding_floor(n, K);
+        const double c0_floor = std::min(n_eps / s.rho(), 2.0 * std::sqrt(n_eps));
+        return error_estimate{std::fabs(lambda - normal_->lambda) + rounding_floor(n, std::fabs(lambda)),
+                              std::fabs(s.c0 - last_coarse_->c0) + c0_floor,
+                              std::fabs(s.xi - last_coarse_->xi) + rounding_floor(n, std::fabs(s.xi) + f_ * K), 0.0,
+                              "n/2 (general zone search: level n, not extrapolated)", false};
     }
-    if (reported_) {
-        // Extrapolated: the difference from level n, which is 15/16 of level n's error and
-        // above the extrapolated error wherever Richardson's rule holds.
-        const tangential_solution level = distribution(s);
-        return error_estimate{std::fabs(reported_->lambda - normal_->lambda), std::fabs(s.c0 - level.c0),
-                              std::fabs(s.xi - level.xi), 0.0, "level n"};
-    }
-    if (!ensure_companion()) return std::nullopt;
-    return companion_difference(s, companion_->point(s.Q), false);
+    if (!build_levels()) return std::nullopt;
+    const tangential_solution own = distribution(s);
+    std::array<tangential_solution, 3> at{};
+    // A point of the general path is compared with the general path's answers at the levels.
+    for (int i = 0; i < 3; ++i)
+        at[i] = !levels_[i] ? own
+                : s.general ? levels_[i]->general_point(s.Q, zone_guess{s.start, s.c0})
+                            : levels_[i]->level_point(s.Q, false);
+    return estimate_from(s, own, at, false);
 }
 
-error_estimate contact::companion_difference(const tangential_solution& s, const tangential_solution& c,
-                                             bool swept) const {
-    // At 2n the difference is (1 - 2^-p) of the error at n: doubled, it stays an upper
-    // estimate for every order p >= 1. Swept in c0, c0 is the input and Q is estimated.
-    const bool finer = companion_->options_.nodes() > options_.nodes();
-    const double scale = finer ? 2.0 : 1.0;
-    return error_estimate{scale * std::fabs(normal().lambda - companion_->normal().lambda),
-                          swept ? 0.0 : scale * std::fabs(s.c0 - c.c0), scale * std::fabs(s.xi - c.xi),
-                          swept ? scale * std::fabs(s.Q - c.Q) : 0.0, finer ? "2n (doubled)" : "n/2"};
+bool contact::build_levels() {
+    if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
+    levels_built_ = true;
+    // A plain contact at m nodes (the level method), or null when m is outside the nodes
+    // supported or the kernels are beyond its resolution.
+    const method how = level_method();
+    auto plain = [&](int m) -> contact* {
+        if (m < min_nodes || m > max_nodes) return nullptr;
+        if (m == nodes() / 2 && companion_) return companion_.get();
+        for (const auto& c : owned_levels_)
+            if (c->nodes() == m) return c.get();
+        try {
+            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}));
+            return owned_levels_.back().get();
+        } catch (const resolution_error&) {
+            return nullptr;
+        }
+    };
+    const int n = nodes();
+    // Three levels n_0, 2 n_0, 4 n_0 containing n: n/4, n/2, n, else n/2, n, 2n (for
+    // extrapolated, Richardson's value from the middle levels), else n, 2n, 4n. First the
+    // first of them whose coarsest level is in the asymptotic range (the one-parameter limit
+    // has no kernel to resolve: its ratio alone decides), then the first that can be solved.
+    const int coarsest[] = {n / 4, n / 2, n};
+    const int count = companion_ ? 2 : 3;
+    for (bool require_range : {true, false}) {
+        for (int i = 0; i < count; ++i) {
+            const int m = coarsest[i];
+            if (m < min_nodes || (n << i) > max_nodes) continue;
+            if (require_range && how != method::one_parameter &&
+                !in_asymptotic_range(widest_kernel(surfaces_), m, how))
+                continue;
+            std::array<contact*, 3> at{};
+            bool ok = true;
+            for (int k = 0; k < 3 && ok; ++k) {
+                if (k == 2 - i) continue;  // this contact's own level
+                at[k] = plain(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
+                ok = at[k] != nullptr;
+            }
+            if (ok) {
+                levels_ = at;
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+std::optional<tangential_solution> contact::above_finest(const tangential_solution& s, const tangential_solution& own,
+                                                        bool swept) {
+    const int m = 2 * nodes();
+    if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
+    try {
+        if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()});
+        return swept ? finer_->level_at_stick_end(own.c0, false) : finer_->level_point(s.Q, false);
+    } catch (const resolution_error&) {
+        return std::nullopt;
+    }
+}
+
+error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                      const std::array<tangential_solution, 3>& at, bool swept) {
+    int self = 0;
+    while (levels_[self] != nullptr) ++self;
+    const bool extrapolated = reported_ != nullptr;
+    const reported_value which{self, extrapolated};
+    const int order = level_method() == method::product ? 4 : 2;
+    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
+    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
+    const double lambda = normal().lambda;
+    // The size of the terms of (4.4)-(4.5): the pressure's scale P_H/P2 (through G) and the
+    // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
+    // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
+    // loses 1e-13 absolute in xi = 3e-8 at n = 128).
+    double strength = 0.0;
+    for (const kernel& k : {kernel::tangential(surfaces_), kernel::normal(surfaces_)}) {
+        double sum = 0.0;
+        for (const auto& term : k.terms()) sum += std::fabs(term.T);
+        strength = std::max(strength, sum);
+    }
+    const double size = std::max({1.0, std::fabs(lambda), strength});  // for xi
+    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
+    // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
+    // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
+    // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). The special loads
+    // Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly).
+    const bool special = s.Q == 0.0 || std::fabs(s.Q) == f_;
+    const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
+    struct quantity {
+        const char* name;
+        three_levels v;
+        double floor;
+        double* out;
+    };
+    error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
+    std::vector<quantity> qs{
+        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, rounding_floor(finest_n, lambda), &e.lambda},
+        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * size), &e.xi}};
+    if (swept)
+        qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, f_ * n_eps, &e.Q});
+    else
+        qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, c0_floor, &e.c0});
+    const int coarsest_n = levels_[0] ? levels_[0]->nodes() : nodes();
+    bool second_chance = false;
+    for (const quantity& q : qs) {
+        error_bound b = bound_error(q.v, order, which, q.floor);
+        three_levels used = q.v;
+        int used_coarsest_n = coarsest_n;
+        if (!b.resolved && own.checks.hold()) {
+            // A second chance one level finer, n/2, n, 2n (error_bound.hpp): where n/4 is still
+            // pre-asymptotic for this quantity. Only for a solution whose inequalities (3.3)-(3.4)
+            // hold, and only where the finer levels show at least order p - 1: three
+            // pre-asymptotic levels of a very stiff layer can look convergent by chance.
+            if (const std::optional<tangential_solution> above = above_finest(s, own, swept)) {
+                const int i = static_cast<int>(&q - qs.data());
+                const double v = i == 0 ? finer_->normal_level().lambda : i == 1 ? above->xi : swept ? above->Q : above->c0;
+                used = {q.v.middle, q.v.finest, v};
+                used_coarsest_n = 2 * coarsest_n;
+                b = bound_error(used, order, reported_value{1, extrapolated}, q.floor);
+                if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
+                second_chance = second_chance || b.resolved;
+            }
+        }
+        if (!b.resolved) {
+            std::ostringstream msg;
+            msg.precision(3);
+            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
+                << ": " << q.name << " does not converge visibly over n = " << used_coarsest_n << ", "
+                << 2 * used_coarsest_n << ", " << 4 * used_coarsest_n << " (differences " << used.middle - used.coarsest
+                << ", " << used.finest - used.middle << ")";
+            if (!swept) msg << " at Q = " << s.Q;
+            else msg << " at c0 = " << s.c0;
+            msg << "; increase n, or the scene is beyond the method's reach";
+            throw resolution_error(msg.str());
+        }
+        *q.out = b.value;
+        e.bounded = e.bounded || !b.asymptotic;
+    }
+    static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
+    const int first = 2 - self;  // index of the coarsest level's name
+    e.against = std::string(extrapolated ? "level n" : self == 2 ? "n/2" : "2n") + " (levels " + names[first] + ", " +
+                names[first + 1] + ", " + names[first + 2] + (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
+                (e.bounded ? "; observed order below " : "; order ") + std::to_string(order) +
+                (e.bounded ? ": bounded)" : " observed)");
+    return e;
 }
 
 tangential_solution contact::level_at_stick_end(double c0, bool checked) {
@@ -146,20 +330,19 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked) {
 
 contact::swept_point contact::at_stick_end(double c0) {
     tangential_solution s = level_at_stick_end(c0, true);
+    const tangential_solution own = s;
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
         const tangential_solution coarse = companion_->level_at_stick_end(c0, false);
-        const double Q = richardson(s.Q, coarse.Q), xi = richardson(s.xi, coarse.xi);
-        if (!(std::isfinite(Q) && std::isfinite(xi)))
+        s.Q = richardson(s.Q, coarse.Q);
+        s.xi = richardson(s.xi, coarse.xi);
+        if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
             throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
-        const error_estimate e{std::fabs(reported_->lambda - normal_->lambda), 0.0, std::fabs(xi - s.xi),
-                               std::fabs(Q - s.Q), "level n"};
-        s.Q = Q;
-        s.xi = xi;
-        return {s, e};
     }
-    if (!ensure_companion()) return {s, std::nullopt};
-    return {s, companion_difference(s, companion_->level_at_stick_end(c0, false), true)};
+    if (!build_levels()) return {s, std::nullopt};
+    std::array<tangential_solution, 3> at{};
+    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->level_at_stick_end(c0, false) : own;
+    return {s, estimate_from(s, own, at, true)};
 }
 
 double contact::traction(const tangential_solution& d, double r) {
@@ -175,26 +358,6 @@ std::vector<double> contact::slip_velocity(const tangential_solution& d, const s
     std::vector<double> v(r.size());
     for (std::size_t i = 0; i < r.size(); ++i) v[i] = limit_->slip_velocity(d, r[i]);
     return v;
-}
-
-bool contact::ensure_companion() {
-    if (!companion_) {
-        // The same problem at n/2 when n/2 is in the asymptotic range of the method; else at 2n.
-        const int n = options_.nodes();
-        for (int other : {n / 2, 2 * n}) {
-            if (other < min_nodes || other > max_nodes) continue;
-            // The one-parameter limit has no kernel to resolve: its error falls as n^-2 from small n on.
-            if (other < n && options_.how != method::one_parameter &&
-                !in_asymptotic_range(widest_kernel(surfaces_), other, options_.how))
-                continue;
-            try {
-                companion_ = std::make_unique<contact>(surfaces_, f_, solver_options{other, options_.how, options_.zones});
-                break;
-            } catch (const resolution_error&) {
-            }
-        }
-    }
-    return companion_ != nullptr;
 }
 
 double load_ratio(const roughness& surfaces, const solver_options& options) {

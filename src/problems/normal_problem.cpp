@@ -25,7 +25,8 @@ normal_solution normal_solver::solve(const kernel& k2) {
     gsl_vector_set_zero(rhs);
     // Rows 0..n: collocation (4.2). Columns 0..n-1: phi_k; n: gamma_0n; n+1: lambda.
     add_cauchy_term(a, rule_);
-    add_kernel_term(a, k2, rule_, how_);
+    auto kernel_term = std::make_shared<const kernel_operator>(rule_, how_, k2.max_rate());
+    kernel_term->add_to(a, k2);
     for (int m = 0; m <= n; ++m) {
         gsl_matrix_set(a, m, n, 1.0);
         gsl_matrix_set(a, m, n + 1, M_2_PI * rule_.collocation[m]);
@@ -36,7 +37,7 @@ normal_solution normal_solver::solve(const kernel& k2) {
 
     const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
     normal_solution s{rule_, how_, std::vector<double>(n), {}, gsl_vector_get(x, n + 1), gsl_vector_get(x, n),
-                      system_.rcond()};
+                      system_.rcond(), std::move(kernel_term)};
     for (int k = 0; k < n; ++k) s.phi[k] = gsl_vector_get(x, k);
     s.b = u_coefficients(rule_, s.phi);
     return s;
@@ -46,7 +47,7 @@ normal_solution hertz_solution(int n, method how) {
     gauss_chebyshev rule(n);
     std::vector<double> phi(n, M_2_PI);
     auto b = u_coefficients(rule, phi);
-    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0};
+    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr};
 }
 
 normal_solution solve_normal(const kernel& k2, int n, method how) {

@@ -9,6 +9,7 @@
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
 #include "roughroll/numerics/root_search.hpp"
@@ -45,8 +46,9 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       carter_(closed_form && k1.empty() && k2.empty()),
       cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
       system_(static_cast<std::size_t>(n_) + 1),
-      moments_rule_(kernel_moments::moments_rule(n_)),
-      k1_operator_(normal.rule, normal.how, k1.max_rate()) {
+      k1_operator_(normal.kernel_term && k1.max_rate() <= normal.kernel_term->max_rate()
+                       ? normal.kernel_term
+                       : std::make_shared<const kernel_operator>(normal.rule, normal.how, k1.max_rate())) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     gsl_matrix_set_zero(cauchy_.get());
     add_cauchy_term(cauchy_.get(), normal_.rule);
@@ -80,7 +82,7 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0) {
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
     gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
-    k1_operator_.add_to(a, k1_.stretched(rho));  // E6
+    k1_operator_->add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
     const std::vector<double> g = G(r);
@@ -167,7 +169,11 @@ tangential_solution tangential_solver::carter_solution(double Q, double c0, doub
     return s;
 }
 
-double tangential_solver::load(double c0) { return c0 <= -1.0 ? f_ : solve_system(c0).Q; }
+double tangential_solver::load(double c0) {
+    if (c0 <= -1.0) return f_;
+    last_system_ = solve_system(c0);  // kept: the root search ends on a c0 it evaluated
+    return last_system_->Q;
+}
 
 
 double load_magnitude(double Q, double f) {
@@ -202,7 +208,8 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what) {
     }
 }
 
-tangential_solution tangential_solver::solve(double Q, std::optional<double> guess) {
+tangential_solution tangential_solver::solve(double Q, std::optional<double> guess, bool checked,
+                                             std::optional<double> slope) {
     const double target = load_magnitude(Q, f_);
     tangential_solution s;
     if (target == 0.0) {
@@ -216,21 +223,26 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         check_load_resolvable(target, f_);
         // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
         const auto full_stick_below = [this, target] {
+            // Q(1) is 0 up to the discretisation error and the rounding of (4.5), an O(f)
+            // sum cancelling to Q whose terms grow with P_H/P2 (G of (3.25)): n eps f max(1, P_H/P2).
             const double at_full_stick = load(1.0);
-            if (!(at_full_stick < target)) {
+            const double rounding = rounding_floor(n_, f_ * std::max(1.0, std::fabs(normal_.lambda)));
+            if (!(at_full_stick + rounding < target)) {
                 std::ostringstream msg;
                 msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
-                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " is not below |Q|; increase n";
+                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " plus its rounding " << rounding
+                    << " is not below |Q|; increase n";
                 throw resolution_error(msg.str());
             }
         };
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
-                                           "Brent search for c0", full_stick_below);
-        s = solve_system(c0.x);
+                                           "root search for c0", full_stick_below, carter(target, f_).c0, slope);
+        s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
         s.iterations = c0.iterations;
+        s.load_slope = c0.slope;
     }
     apply_load_sign(s, Q, "tangential problem");
-    s.checks = check(s);
+    if (checked) s.checks = check(s);
     return s;
 }
 
@@ -284,7 +296,10 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of the slip zones, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
-    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, moments_rule_);
+    // The rule for kernel_moments of n coefficients: built on the first slip velocity (levels
+    // of an extrapolation or an estimate never need one).
+    if (!moments_rule_) moments_rule_.emplace(kernel_moments::moments_rule(n_));
+    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, *moments_rule_);
     for (std::size_t i = 0; i < r.size(); ++i)
         v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() || rho == 0.0 ? 0.0 : lq0((r[i] - s.start) / rho - 1.0));
     return v;
@@ -321,11 +336,21 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     auto lower = [](double& margin, double v) {
         if (!(v >= margin)) margin = v;
     };
-    for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+    // p >= 0 on the fixed grid of (-1, 1) does not depend on c0: once per solver.
+    if (!pressure_margin_) {
+        double margin = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < check_points; ++i) lower(margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
+        pressure_margin_ = margin;
+    }
+    c.pressure_margin = *pressure_margin_;
     if (s.c0 > s.start) {
         for (int i = 0; i < check_points; ++i) {
             const double r = grid_point(s.start, s.c0, i);
-            lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
+            const double fp = f_ * normal_.pressure(r);
+            // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() on a stick zone
+            // that starts inside the contact (docs/formulation.md section 7).
+            const double p1 = s.start > -1.0 ? traction(s, r) : fp + q0(s, r);
+            lower(c.stick_margin, (fp - std::fabs(p1)) / f_);
         }
     }
     // The slip zones: (c0, 1], and [-1, start) when the stick zone does not reach r = -1.

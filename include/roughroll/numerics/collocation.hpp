@@ -29,10 +29,12 @@ public:
 
     // Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
     void add_to(gsl_matrix* a, const kernel& k) const;
+    double max_rate() const { return max_rate_; }  // the fastest decay it integrates
 
 private:
-    const gauss_chebyshev& rule_;
+    gauss_chebyshev rule_;  // a copy: an operator may outlive the solver that built it
     method how_;
+    double max_rate_;
     std::optional<kernel_sweep> sweep_;
 };
 

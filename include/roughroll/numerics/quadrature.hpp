@@ -32,7 +32,8 @@ struct gauss_chebyshev {
 
 // Gauss-Legendre nodes and weights on [-1, 1], by gsl_integration_fixed (Golub-Welsch).
 // Not gsl_integration_glfixed: that is exact only at its tabulated orders and loses
-// about 1e-11 at others (66, 200), which the kernel-moment test detects.
+// about 1e-11 at others (66, 200), which the kernel-moment test detects. Not
+// gsl_integration_fixed either (Golub-Welsch, slow): Newton on the recurrence (quadrature.cpp).
 struct gauss_legendre {
     explicit gauss_legendre(int order);
 

@@ -3,7 +3,8 @@
 //
 // With method::extrapolated the contact holds two product-integration levels, n and n/2,
 // and reports P_H/P2, c0 and xi by Richardson's rule for order 4, (16 v_n - v_{n/2})/15;
-// the distributions (pressure, tractions, checks) are those of level n.
+// the distributions (pressure, tractions, checks) are those of level n. Its error estimate
+// adds a third level (n/4) to check that the order is 4 (error_estimate below).
 //
 // The zones of each point are found as options.zones says (zone_search, docs/formulation.md
 // section 7): the paper's single zone, and zone_solver's general search where it fails its
@@ -17,7 +18,9 @@
 #pragma once
 
 #include <memory>
+#include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "roughroll/model/carter.hpp"
@@ -30,17 +33,27 @@
 
 namespace roughroll {
 
-// The difference between a point at n and the same point at n/2, per quantity. For a method
-// of order p it exceeds the error at n by about 2^p - 1 once n is in the asymptotic range
-// (a conservative estimate); docs/performance.md checks it against finer solutions. Where
-// n/2 is below min_nodes or cannot resolve the kernel, the companion is 2n, and the
-// difference is then about the error at n itself.
+// The error estimate of a point, per quantity (docs/performance.md, "How the error estimates
+// are made"). Every estimate comes from three levels of the same plain discretisation (the
+// method itself; product integration for method::extrapolated): n/4, n/2, n where n/2 is in
+// the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n, 4n. The observed
+// ratio of the two differences decides (numerics/error_bound.hpp): where it shows the method's
+// order, the classic estimates (the difference from n/2, about 2^p - 1 times the error at n;
+// for method::extrapolated the difference from level n); where it shows a lower order, a bound
+// from the observed ratio; where the levels do not converge visibly, no estimate: estimate()
+// and at_stick_end() throw resolution_error (the point is refused). Each estimate includes a
+// rounding floor, n eps times the size of the terms the quantity is computed from: |P_H/P2|
+// for P_H/P2, |xi| + f K for xi with K = max(1, P_H/P2, sum |T| of a kernel) (the right-hand
+// side f G of (4.4), and the kernel terms that cancel to xi), min(K'/rho, 2 sqrt(K'/(n eps)))
+// with K' = max(1, P_H/P2) for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope
+// |dQ/dc0| = f rho, or the square-root inversion near gross sliding), f K' for Q.
 struct error_estimate {
     double lambda;        // P_H/P2
     double c0;            // 0 for a point of a curve swept in c0 (c0 is then the input)
     double xi;
     double Q;             // 0 for a point at a given Q (Q is then the input)
-    const char* against;  // "n/2", "2n (doubled)" or "level n" (extrapolated)
+    std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
+    bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
 };
 
 class contact {
@@ -62,15 +75,16 @@ public:
     tangential_solution distribution(const tangential_solution& s);
 
     // The point whose stick zone ends at c0 in [-1, 1], Q = Q(c0) of (4.5): no root search,
-    // a creep curve swept in c0. With its estimate (same companion rules as estimate()).
+    // a creep curve swept in c0. With its estimate (same rules as estimate(), same refusal).
     struct swept_point {
         tangential_solution solution;
         std::optional<error_estimate> estimate;
     };
     swept_point at_stick_end(double c0);
 
-    // The estimate for a solution s of this contact (solves the companion problem once,
-    // lazily). Empty when neither n/2 nor 2n is available.
+    // The estimate for a solution s of this contact (solves the other two levels at s.Q).
+    // Throws resolution_error when the levels give no honest estimate (see error_estimate).
+    // Empty only when no three levels fit in [min_nodes, max_nodes] (never for n >= 8).
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
     // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone) for a
@@ -82,18 +96,40 @@ public:
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
     tangential_solution level_at_stick_end(double c0, bool checked);
-    // The point at Q of this contact's own level, its zones found as options_.zones says, or by
-    // the general search when `general`; `coarse`: the coarse level's point, for the guesses.
-    tangential_solution level_point(double Q, const tangential_solution* coarse, bool general);
-    bool ensure_companion();  // the companion of estimate(): n/2 or 2n; false when neither exists
-    // The estimate from s and the companion's solution c at the same Q (or the same c0, swept).
-    error_estimate companion_difference(const tangential_solution& s, const tangential_solution& c,
-                                        bool swept) const;
+    // The point at Q of this contact's own level: cached, so that the levels of an estimate
+    // and the coarse level of an extrapolation are solved once per Q.
+    // `checked`: with the checks (3.3)-(3.4) (a point reported), or without (a level of an
+    // extrapolation or an estimate).
+    // `guess`: a c0 near the root (the level below's), where the root search starts.
+    const tangential_solution& level_point(double Q, bool checked, std::optional<double> guess = std::nullopt,
+                                           std::optional<double> slope = std::nullopt);
+    int nodes() const { return options_.nodes(); }
+    const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
+    method level_method() const;  // product for extrapolated, else the method itself
+    bool build_levels();          // the two other levels of the estimate; false when none fit
+    // The estimate from the three levels' values (s of this contact, level-n values `own`).
+    error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                 const std::array<tangential_solution, 3>& at_levels, bool swept);
+    // Level 2n at the same Q or c0, for a ratio that fails on n/4, n/2, n; empty when n is
+    // not the finest level or 2n cannot be solved.
+    std::optional<tangential_solution> above_finest(const tangential_solution& s, const tangential_solution& own,
+                                                    bool swept);
+    // The point at Q of this contact's own level by zone_solver's general search (docs/formulation.md
+    // section 7), started from `guess` (the coarse level's zone) when given.
+    tangential_solution general_point(double Q, std::optional<zone_guess> guess = std::nullopt);
+    // The paper's single zone s where it holds (or options_.zones says "single"); else the
+    // general search's answer where it holds its checks (or options_.zones says "general");
+    // else s, its checks failed. `coarse`: the coarse level's point, for the guesses.
+    tangential_solution zones_for(double Q, tangential_solution s, const tangential_solution* coarse);
 
     roughness surfaces_;
     solver_options options_;
-    std::unique_ptr<contact> companion_;  // at n/2, or 2n; the coarse level when extrapolating
     double f_;
+    std::unique_ptr<contact> companion_;  // method::extrapolated: the coarse level n/2 (product)
+    std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
+    std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
+    bool levels_built_ = false;
+    std::unique_ptr<contact> finer_;  // level 2n: the second chance of a ratio that fails
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
@@ -101,6 +137,8 @@ private:
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
     std::optional<tangential_solution> last_coarse_;  // level n/2 of the last general-path point
+    std::optional<tangential_solution> last_level_point_;  // level_point's cache
+    bool last_level_point_checked_ = false;
 };
 
 // P_H/P2 alone, exactly as contact(surfaces, f, options).normal().lambda reports it (the same
@@ -113,7 +151,7 @@ double load_ratio(const roughness& surfaces, const solver_options& options);
 struct curve_point {
     tangential_solution solution;
     carter_point smooth;                      // Carter's curve at the same Q
-    std::optional<error_estimate> estimate;  // against n/2
+    std::optional<error_estimate> estimate;  // contact::estimate
 };
 
 // Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense

@@ -4,9 +4,11 @@
 // for the n + 2 unknowns phi(eta_k), gamma_0n and lambda = P_H/P2 (E9 for gamma_0n).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -21,6 +23,10 @@ struct normal_solution {
     double lambda;            // P_H/P2
     double gamma;             // gamma_0n, tends to 0 as n grows (4.8)
     double rcond;             // reciprocal condition of the LU factor U
+    // The kernel term's operator of (4.2) (product integration: its sweep workspace), shared
+    // with the tangential solver when K1*'s rates do not exceed K2*'s: the Lagrange basis at
+    // the sweep's quadrature points is then computed once per level. Empty for Hertz.
+    std::shared_ptr<const kernel_operator> kernel_term;
 
     double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2), (4.1)
 };

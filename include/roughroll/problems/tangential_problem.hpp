@@ -6,13 +6,15 @@
 //   G(r) = (2/pi) lambda r + int_{-1}^{1} p(eta) [K2* - K1*](eta - r) d eta                (3.25), E8
 // q = psi sqrt(1 - tau^2) (4.1). For a trial c0 the n + 1 collocation equations (4.4)
 // give psi(eta_k) and xi; Q(c0) then follows from (4.5), and c0 for a given Q is the
-// root of Q(c0) - Q found by gsl_root_fsolver_brent on [-1, 1].
+// root of Q(c0) - Q found by a secant iteration (from the coarse level's root, or Carter's
+// c0), with gsl_root_fsolver_brent on [-1, 1] as the fallback (root_search.hpp).
 //
 // Q < 0 is the mirror case: p1, q0 and xi change sign, c0 does not. Q = 0 is full stick
 // (c0 = 1, xi = 0, q0 = -f p) and |Q| = f the onset of gross sliding (c0 = -1,
 // xi = -f G(-1)); neither needs a solve.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -42,8 +44,9 @@ struct tangential_solution {
     double xi;     // dimensionless creep
     double sign;   // +1, or -1 for the mirror case Q < 0
     std::vector<double> psi_b;  // U coefficients of psi(tau) for |Q| (multiply by sign)
-    int iterations;             // Brent iterations (0 without a root search)
+    int iterations;             // root-search iterations (secant or Brent; 0 without a search)
     double rcond;               // of the last tangential system (1 without a solve)
+    double load_slope = 0.0;    // dQ/dc0 at c0 from the root search's last secant (0: unknown)
     traction_checks checks;
     // Start of the stick zone [start, c0]: -1 in the paper's structure; above -1 when the
     // zone solver found slip on [-1, start) too, in the direction of Q (docs/formulation.md 7).
@@ -82,8 +85,12 @@ public:
     tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
 
     // Throws input_error for |Q| > f or non-finite Q. `guess`: a c0 close to the root (the
-    // coarse level's, when extrapolating), tried first as a narrow bracket.
-    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt);
+    // coarse level's, when extrapolating), the start of a secant iteration (root_search.hpp);
+    // without it the secant starts from Carter's c0, and Brent on [-1, 1] is the fallback.
+    // `checked` = false skips the checks (3.3)-(3.4), as in at_stick_end.
+    // `slope`: dQ/dc0 near `guess` (the level below's load_slope), for a first Newton step.
+    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt, bool checked = true,
+                              std::optional<double> slope = std::nullopt);
 
     // The solution for a trial c0 in [-1, 1], Q = Q(c0) of (4.5): a creep curve swept
     // in c0 needs no root search.
@@ -123,8 +130,10 @@ private:
     bool carter_;  // smooth in both directions, closed form allowed
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
-    gauss_legendre moments_rule_;  // for kernel_moments of n coefficients, built once
-    kernel_operator k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
+    std::optional<gauss_legendre> moments_rule_;  // for kernel_moments of n coefficients, built once
+    std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
+    std::optional<tangential_solution> last_system_;  // of the last load(c0)
+    std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
 };
 
 }  // namespace roughroll

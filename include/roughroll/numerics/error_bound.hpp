@@ -1,0 +1,56 @@
+// An error bound for one quantity from three levels of a discretisation, n_0, 2 n_0, 4 n_0
+// nodes (docs/performance.md, "How the error estimates are made"). With the differences
+//   d1 = v_1 - v_0,   d2 = v_2 - v_1,   rho = d1/d2,
+// a method of order p has rho -> 2^p in its asymptotic range, where the error of v_2 is
+// d2/(2^p - 1) and Richardson's value v_2 + d2/(2^p - 1) is better still. The rule:
+//   - the observed ratio is at least 0.7 * 2^p (observed order >= p - 1/2): the classic
+//     estimates hold, |d2| for v_2 (an overestimate by about 2^p - 1) and |d2|/(2^p - 1)
+//     for Richardson's value;
+//   - 1.5 <= |rho| < 0.7 * 2^p (observed order below the assumed one), or rho negative (the
+//     error changes sign between levels) with |rho| >= min(4, 0.7 * 2^p) (it still contracts
+//     at least as an order-2 method's): the error of v_2 is at most |d2| max(2, 2/(|rho| - 1)) (a
+//     geometric tail with ratio min(|rho|, 2^p), times 2 for safety), the error of v_1 at
+//     most |d2| plus that, of v_0 at most |d1| plus that; Richardson's value is bounded by
+//     its distance from v_2 plus the error of v_2;
+//   - |rho| < 1.5, or rho negative and |rho| below that (the levels do not converge, or not
+//     visibly): no honest estimate from these levels. contact gives a second chance one level
+//     finer (n/2, n, 2n) where the solution's inequalities hold, accepted only where that ratio
+//     shows at least order p - 1; else it refuses the point.
+// In the first case Richardson's value is also bounded by its change from the pair below,
+// |2^p d2 - d1|/(2^p - 1) = |d2| |2^p - rho|/(2^p - 1): where the coarsest level is itself
+// pre-asymptotic and rho only happens to lie near 2^p, that change is large.
+// A rounding floor is added to every estimate, and differences at or below it are read as
+// rounding, not as a ratio.
+#pragma once
+
+namespace roughroll {
+
+struct three_levels {
+    double coarsest;  // v_0 at n_0 nodes
+    double middle;    // v_1 at 2 n_0
+    double finest;    // v_2 at 4 n_0
+};
+
+// Which value the estimate is for: one of the levels, or Richardson's value from level
+// `index` and the one below it (index 1 or 2).
+struct reported_value {
+    int index;          // 0, 1, 2
+    bool extrapolated;  // Richardson's (2^p v_index - v_{index-1})/(2^p - 1)
+};
+
+struct error_bound {
+    double value;     // the estimate, rounding floor included (0 when !resolved)
+    double ratio;     // d1/d2, observed (infinite when d2 = 0)
+    bool asymptotic;  // the observed order is within 1/2 of p (or both differences are rounding)
+    bool resolved;    // false: no honest estimate from these levels
+};
+
+error_bound bound_error(const three_levels& v, int order, reported_value which, double rounding_floor);
+
+// The rounding floor of a quantity computed by a dense solve of order about n (LU with
+// partial pivoting, whose backward error is a small multiple of n eps in practice; the
+// growth factors of these diagonally dominated Cauchy systems are O(1)) or a sum of n terms:
+// n * DBL_EPSILON * scale, `scale` the size of the terms the quantity is computed from.
+double rounding_floor(int n, double scale);
+
+}  // namespace roughroll
