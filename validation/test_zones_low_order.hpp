@@ -170,6 +170,24 @@ inline grid_solution solve_on_grid(const normal_solution& normal, const kernel& 
         if (beta_d != 0.0) u += u_p[i + 1];
         return u;
     };
+    // The stick cells of `state`, the traction f p sgn on its slip cells and their load h sum.
+    struct active_set {
+        std::vector<int> stick;
+        std::vector<double> known;
+        double known_load = 0.0;
+    };
+    const auto split = [&](const std::vector<int>& state, const std::vector<double>& p) {
+        active_set a{{}, std::vector<double>(N, 0.0), 0.0};
+        for (int j = 0; j < N; ++j) {
+            if (state[j] == 0) {
+                a.stick.push_back(j);
+            } else {
+                a.known[j] = state[j] * f * p[j];
+                a.known_load += h * a.known[j];
+            }
+        }
+        return a;
+    };
     s.state.assign(N, 0);
     s.p1.assign(N, 0.0);
     s.v.assign(N, 0.0);
@@ -179,17 +197,8 @@ inline grid_solution solve_on_grid(const normal_solution& normal, const kernel& 
     // The steady problem for the states of s: v_i = xi - (u_i - u_{i-1})/h = 0 on stick cells,
     // h sum p1 = Q; true (and s updated) when the result satisfies every condition.
     const auto steady = [&](grid_solution& g) {
-        std::vector<int> stick;
-        for (int i = 0; i < N; ++i)
-            if (g.state[i] == 0) stick.push_back(i);
+        const auto [stick, known, known_load] = split(g.state, g.p);
         const std::size_t m = stick.size();
-        std::vector<double> known(N, 0.0);
-        double known_load = 0.0;
-        for (int j = 0; j < N; ++j)
-            if (g.state[j] != 0) {
-                known[j] = g.state[j] * f * g.p[j];
-                known_load += h * known[j];
-            }
         dense_system sys(m + 1);
         gsl_matrix* a = sys.matrix();
         gsl_vector* b = sys.rhs();
@@ -231,18 +240,9 @@ inline grid_solution solve_on_grid(const normal_solution& normal, const kernel& 
         int iterations = 0;
         for (;; ++iterations) {
             if (iterations > 4 * N) throw std::runtime_error("grid route: the active set of a step did not settle");
-            std::vector<int> stick;
-            for (int i = 0; i < N; ++i)
-                if (s.state[i] == 0) stick.push_back(i);
+            const auto [stick, known, known_load] = split(s.state, s.p);
             const std::size_t m = stick.size();
             if (m == 0) throw std::runtime_error("grid route: no stick cell (gross sliding is not solved here)");
-            std::vector<double> known(N, 0.0);
-            double known_load = 0.0;
-            for (int j = 0; j < N; ++j)
-                if (s.state[j] != 0) {
-                    known[j] = s.state[j] * f * s.p[j];
-                    known_load += h * known[j];
-                }
             dense_system sys(m + 1);
             gsl_matrix* a = sys.matrix();
             gsl_vector* b = sys.rhs();
