@@ -161,7 +161,7 @@ traction_columns solve_traction(scene s, std::optional<double> Q, std::vector<do
     const std::vector<double> velocity = sp.solved.slip_velocity(level, grid);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double r = grid[i];
-        const bool stick = r < level.c0;
+        const bool stick = r < level.c0 && r >= level.start;  // [start, c0]: formulation section 7
         out.p.push_back(sp.solved.normal().pressure(r));
         out.p1.push_back(sp.solved.traction(level, r));
         out.v.push_back(stick ? 0.0 : velocity[i]);

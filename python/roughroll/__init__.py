@@ -192,7 +192,7 @@ class Scene:
 
         Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
         traction a p1/P2 of (3.15)), ``slip_velocity`` (v of (3.6), 0 on the stick zone),
-        ``stick`` (r < c0), ``f_p`` (the Coulomb limit f p of (3.3)) and ``c0_distribution``
+        ``stick`` (start <= r < c0: the stick zone, which starts at -1 in the paper's structure), ``f_p`` (the Coulomb limit f p of (3.3)) and ``c0_distribution``
         (the stick zone of the distributions: level n's when extrapolating).  Default grid: the
         program's, ``points`` points from -1 to 1.
         """

@@ -103,12 +103,15 @@ def test_curve_at_given_loads_equals_points():
         assert (c["Q"][i], c["c0"][i], c["xi"][i]) == (p.Q, p.c0, p.xi)
 
 
-def test_traction_equals_program_csv(tmp_path):
-    status, _, err = run("traction", DATA / "traction-example.toml", "--points", "41", "--no-plot",
+# leading-slip.toml takes the general zone search (slip, stick, slip: docs/formulation.md
+# section 7): its stick zone is [start, c0], not [-1, c0].
+@pytest.mark.parametrize("name", ["traction-example.toml", "leading-slip.toml"])
+def test_traction_equals_program_csv(tmp_path, name):
+    status, _, err = run("traction", DATA / name, "--points", "41", "--no-plot",
                          "--out", tmp_path, "--name", "t")
     assert status == 0, err
     expected = read_csv((tmp_path / "traction-t.csv").read_text())
-    got = roughroll.read_scene(DATA / "traction-example.toml").traction(points=41)
+    got = roughroll.read_scene(DATA / name).traction(points=41)
     for key, column in [("r", "r"), ("p", "p"), ("p1", "p1"), ("slip_velocity", "slip_velocity"), ("f_p", "f_p")]:
         np.testing.assert_array_equal(got[key], as_float(expected[column]), err_msg=key)
     assert got["stick"].tolist() == [z == "stick" for z in expected["zone"]]
