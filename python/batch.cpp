@@ -30,15 +30,14 @@ struct job {
 
 // The points' JSON in the jobs' order; the first failing job's error (in the jobs' order) is
 // rethrown after every thread has finished.
-std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, std::optional<int> n,
-                                   const std::optional<std::string>& method) {
+std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, const solver_keywords& k) {
     std::vector<std::string> out(jobs.size());
     std::vector<std::exception_ptr> errors(jobs.size());
     std::atomic<std::size_t> next{0};
     const auto work = [&]() noexcept {
         for (std::size_t i = next++; i < jobs.size(); i = next++) {
             try {
-                out[i] = point_json(jobs[i].s, jobs[i].Q, n, method);
+                out[i] = point_json(jobs[i].s, jobs[i].Q, k);
             } catch (...) {
                 errors[i] = std::current_exception();
             }
@@ -66,15 +65,15 @@ void bind_batch(py::module_& m) {
     m.def(
         "solve_all",
         [](const std::vector<std::pair<scene, std::optional<double>>>& items, int threads, std::optional<int> n,
-           std::optional<std::string> method) {
+           std::optional<std::string> method, std::optional<std::string> zones) {
             if (threads < 1 || threads > 1024) throw input_error("threads must lie in [1, 1024]");
             std::vector<job> jobs;
             jobs.reserve(items.size());
             for (const auto& [s, Q] : items) jobs.push_back({s, Q});
             py::gil_scoped_release release;
-            return solve_all(jobs, threads, n, method);
+            return solve_all(jobs, threads, {n, method, zones});
         },
-        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"));
+        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"), py::arg("zones"));
 }
 
 }  // namespace roughroll::python

@@ -21,8 +21,15 @@ void bind_scene(pybind11::module_& m);
 void bind_batch(pybind11::module_& m);
 void bind_model(pybind11::module_& m);
 
+// The Python keywords n=, method=, zones=: the command line's --n, --method, --zones.
+struct solver_keywords {
+    std::optional<int> n;
+    std::optional<std::string> method;
+    std::optional<std::string> zones;
+};
+
 // One point of a scene as `roughroll point SCENE --json` prints it (compact), with the
-// Python keywords method=, n= as the command line's --method, --n. Runs without the GIL.
-std::string point_json(scene s, std::optional<double> Q, std::optional<int> n, const std::optional<std::string>& method);
+// solver keywords over the scene's [solver] table. Runs without the GIL.
+std::string point_json(scene s, std::optional<double> Q, const solver_keywords& k);
 
 }  // namespace roughroll::python

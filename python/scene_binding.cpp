@@ -94,8 +94,8 @@ py::object physical_dict(const scene& s) {
     return std::move(d);
 }
 
-scene overridden(scene s, std::optional<int> n, const std::optional<std::string>& method) {
-    override_solver(s, n, method);
+scene overridden(scene s, const solver_keywords& k) {
+    override_solver(s, k.n, k.method, k.zones);
     return s;
 }
 
@@ -175,8 +175,8 @@ traction_columns solve_traction(scene s, std::optional<double> Q, std::vector<do
 
 }  // namespace
 
-std::string point_json(scene s, std::optional<double> Q, std::optional<int> n, const std::optional<std::string>& method) {
-    return to_json(solve_point(overridden(std::move(s), n, method), Q).report()).dump();
+std::string point_json(scene s, std::optional<double> Q, const solver_keywords& k) {
+    return to_json(solve_point(overridden(std::move(s), k), Q).report()).dump();
 }
 
 void bind_scene(py::module_& m) {
@@ -197,19 +197,20 @@ void bind_scene(py::module_& m) {
         .def_property_readonly("physical", &physical_dict)
         .def(
             "point_json",
-            [](const scene& s, std::optional<double> Q, std::optional<int> n, std::optional<std::string> method) {
+            [](const scene& s, std::optional<double> Q, std::optional<int> n, std::optional<std::string> method,
+               std::optional<std::string> zones) {
                 py::gil_scoped_release release;
-                return point_json(s, Q, n, method);
+                return point_json(s, Q, {n, method, zones});
             },
-            py::arg("Q"), py::arg("n"), py::arg("method"))
+            py::arg("Q"), py::arg("n"), py::arg("method"), py::arg("zones"))
         .def(
             "curve",
             [](const scene& s, std::optional<std::vector<double>> loads, int points, bool sweep, std::optional<int> n,
-               std::optional<std::string> method) {
+               std::optional<std::string> method, std::optional<std::string> zones) {
                 curve_columns c;
                 {
                     py::gil_scoped_release release;
-                    c = solve_curve(overridden(s, n, method), loads, points, sweep);
+                    c = solve_curve(overridden(s, {n, method, zones}), loads, points, sweep);
                 }
                 py::dict d;
                 d["Q"] = array_of(c.Q);
@@ -232,15 +233,15 @@ void bind_scene(py::module_& m) {
                 }
                 return d;
             },
-            py::arg("loads"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"))
+            py::arg("loads"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"), py::arg("zones"))
         .def(
             "traction",
             [](const scene& s, std::optional<double> Q, std::vector<double> r, std::optional<int> n,
-               std::optional<std::string> method) {
+               std::optional<std::string> method, std::optional<std::string> zones) {
                 traction_columns t;
                 {
                     py::gil_scoped_release release;
-                    t = solve_traction(overridden(s, n, method), Q, std::move(r));
+                    t = solve_traction(overridden(s, {n, method, zones}), Q, std::move(r));
                 }
                 py::dict d;
                 d["point"] = t.point;
@@ -252,7 +253,7 @@ void bind_scene(py::module_& m) {
                 d["c0_distribution"] = t.c0_level;
                 return d;
             },
-            py::arg("Q"), py::arg("r"), py::arg("n"), py::arg("method"));
+            py::arg("Q"), py::arg("r"), py::arg("n"), py::arg("method"), py::arg("zones"));
 }
 
 }  // namespace roughroll::python

@@ -74,6 +74,12 @@ def _method(m):
                     f"not {type(m).__name__}")
 
 
+def _zones(z):
+    if z is None or isinstance(z, str):
+        return z
+    raise TypeError(f"zones must be a string ('auto', 'single' or 'general'), not {type(z).__name__}")
+
+
 def _path(path, what):
     if not isinstance(path, (str, os.PathLike)):
         raise TypeError(f"{what} must be a path (str or os.PathLike), not {type(path).__name__}")
@@ -149,24 +155,26 @@ class Scene:
                         doc="A physical scene's E, nu, R1, R2, P2, P1, width rule, a_H and k, t of (2.10); "
                             "None for a dimensionless scene.")
 
-    def point(self, Q=None, *, method=None, n=None):
+    def point(self, Q=None, *, method=None, n=None, zones=None):
         """One creep point for the load ``Q`` (default: the scene's Q), as ``roughroll point``.
 
         The normal problem (3.19)-(3.20) gives P_H/P2 and the pressure; the tangential problem
         (3.21)-(3.22) is solved for c0 with Q(c0) of (4.5) = Q by Brent's method, giving the
         creep xi; the checks (3.3)-(3.4) are made on the solution.  A physical scene is first
         solved for the half-width a that carries P2 (docs/formulation.md 2(j)).  ``method``
-        ('extrapolated', 'product', 'paper', 'one-parameter') and ``n`` override the scene's
-        [solver] as --method and --n do.  Returns a Point whose to_dict() is the program's JSON.
+        ('extrapolated', 'product', 'paper', 'one-parameter'), ``n`` and ``zones`` ('auto',
+        'single', 'general': how the stick and slip zones are found, docs/formulation.md section 7)
+        override the scene's [solver] as --method, --n and --zones do.  Returns a Point whose
+        to_dict() is the program's JSON.
         """
-        return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method)))
+        return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method), _zones(zones)))
 
-    def points(self, loads, *, method=None, n=None, threads=1):
+    def points(self, loads, *, method=None, n=None, zones=None, threads=1):
         """Points for many loads, on ``threads`` threads (see roughroll.solve): the same numbers
         as ``[self.point(Q) for Q in loads]``."""
-        return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n)
+        return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n, zones=zones)
 
-    def curve(self, loads=None, *, points=51, sweep=False, method=None, n=None):
+    def curve(self, loads=None, *, points=51, sweep=False, method=None, n=None, zones=None):
         """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
 
         Without ``loads``: ``points`` loads Q/f = 1 - (1 - u)^2, u uniform on [0, 1], each solved
@@ -185,9 +193,9 @@ class Scene:
             loads = _numbers(loads, "loads").tolist()
         # Beyond C++'s int the library's own check answers (its message names no number).
         points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
-        return self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method))
+        return self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method), _zones(zones))
 
-    def traction(self, Q=None, *, r=None, points=401, method=None, n=None):
+    def traction(self, Q=None, *, r=None, points=401, method=None, n=None, zones=None):
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.
 
         Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
@@ -203,7 +211,7 @@ class Scene:
             r = [(2 * i - (points - 1)) / (points - 1) for i in range(points)]
         else:
             r = _numbers(r, "r").tolist()
-        t = self._core.traction(_real(Q, "Q"), r, _nodes(n), _method(method))
+        t = self._core.traction(_real(Q, "Q"), r, _nodes(n), _method(method), _zones(zones))
         t["point"] = Point._from_json(t["point"])
         t["f_p"] = t["point"].f * t["p"]
         return t
@@ -236,13 +244,13 @@ def _as_scene(s):
     raise TypeError(f"a scene is a Scene, a dict or a path, not {type(s).__name__}")
 
 
-def point(scene, Q=None, *, method=None, n=None):
+def point(scene, Q=None, *, method=None, n=None, zones=None):
     """One creep point of ``scene`` (a Scene, a dict of scene keys or a scene file's path):
     ``Scene.point``, the program's ``roughroll point``."""
-    return _as_scene(scene).point(Q, method=method, n=n)
+    return _as_scene(scene).point(Q, method=method, n=n, zones=zones)
 
 
-def solve(items, *, threads=1, method=None, n=None):
+def solve(items, *, threads=1, method=None, n=None, zones=None):
     """Many creep points, on ``threads`` threads (C++ std::thread, the GIL released).
 
     ``items``: scenes (Scene, dict or path; the scene's Q) or pairs (scene, Q).  Returns the
@@ -263,7 +271,7 @@ def solve(items, *, threads=1, method=None, n=None):
         else:
             s, Q = item, None
         jobs.append((_as_scene(s)._core, _real(Q, "Q")))
-    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method))]
+    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones))]
 
 
 def roughness(spec, *, base_dir="."):

@@ -27,6 +27,12 @@ POINTS = [
     ("unequal-kernels.toml", ["--n", "48"], {"n": 48}),
     ("steel-rollers.toml", [], {}),
     ("steel-rollers-ground.toml", ["--method", "product", "--n", "48"], {"method": "product", "n": 48}),
+    # The zone search (docs/formulation.md section 7): found where the single zone fails, or
+    # refused to it ("single": the single zone, its checks failed), or forced ("general").
+    ("leading-slip.toml", [], {}),
+    ("leading-slip.toml", ["--zones", "single"], {"zones": "single"}),
+    ("fig2a-T1.toml", ["--zones", "general", "--method", "product", "--n", "48"],
+     {"zones": "general", "method": "product", "n": 48}),
 ]
 
 

@@ -163,6 +163,7 @@ GOOD_SCENE = dict(friction=0.3, Q=0.15, cylinder1={"tangential": {"T": 0.5, "A":
     lambda s: s.point(n=20.0),
     lambda s: s.point(n="20"),
     lambda s: s.point(method=3),
+    lambda s: s.point(zones=True),
     lambda s: s.curve(loads=[[0.1, 0.2]]),
     lambda s: s.curve(loads=["a"]),
     lambda s: s.curve(points=2.5),
@@ -185,6 +186,7 @@ def test_wrong_types_raise_type_error(call):
 
 @pytest.mark.parametrize("call,error", [
     (lambda s: s.point(n=10**30), roughroll.InputError),
+    (lambda s: s.point(zones="several"), roughroll.InputError),
     (lambda s: s.point(-math.inf), roughroll.InputError),
     (lambda s: s.curve(points=1), roughroll.InputError),
     (lambda s: s.curve(points=10**30), roughroll.InputError),
