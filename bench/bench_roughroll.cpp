@@ -152,7 +152,7 @@ void bm_limit_swept_point(benchmark::State& state) {
 }
 
 // A physical scene, data/steel-rollers.toml's rollers (k, t given): the half-width for the
-// given load (Brent in a on the normal problem alone), then the point at a given Q (arg: method
+// given load (Brent in a on the normal problem alone at n/2, polished at n), then the point at a given Q (arg: method
 // 1 product, 2 extrapolated, 3 one-parameter; n its default).
 void bm_physical_point(benchmark::State& state) {
     const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
@@ -163,7 +163,8 @@ void bm_physical_point(benchmark::State& state) {
     const solver_options o{0, how};
     for (auto _ : state) {
         const contact_width w =
-            find_width(*s.physical, [&o](const roughness& r) { return load_ratio(r, o); });
+            find_width(*s.physical, [&o](const roughness& r) { return load_ratio(r, o); },
+                       [&o](const roughness& r) { return coarse_load_ratio(r, o); });
         contact c(roughness_at(*s.physical, w.a), s.friction, o);
         benchmark::DoNotOptimize(c.point(*s.Q).xi);
     }

@@ -19,8 +19,11 @@ void override_solver(scene& s, std::optional<int> n, const std::optional<std::st
 
 std::optional<contact_width> settle_width(scene& s) {
     if (!s.physical) return std::nullopt;
-    // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone).
-    const contact_width w = find_width(*s.physical, [&s](const roughness& r) { return load_ratio(r, s.solver); });
+    // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone),
+    // searched on the method's cheap level n/2 first and polished at the scene's method.
+    const contact_width w = find_width(
+        *s.physical, [&s](const roughness& r) { return load_ratio(r, s.solver); },
+        [&s](const roughness& r) { return coarse_load_ratio(r, s.solver); });
     s.surfaces = roughness_at(*s.physical, w.a);
     return w;
 }

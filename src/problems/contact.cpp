@@ -378,6 +378,16 @@ double load_ratio(const roughness& surfaces, const solver_options& options) {
     return richardson(solve_normal(k2, n, method::product).lambda, coarse);
 }
 
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options) {
+    const int n = options.nodes() / 2;
+    if (n < min_nodes)
+        throw resolution_error("the cheap level n/2 = " + std::to_string(n) + " is below " + std::to_string(min_nodes));
+    if (options.how == method::one_parameter)
+        return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
+    const method level = options.how == method::extrapolated ? method::product : options.how;
+    return solve_normal(kernel::normal(surfaces), n, level).lambda;
+}
+
 namespace {
 void check_curve_points(int points) {
     if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");

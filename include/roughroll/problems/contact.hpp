@@ -147,6 +147,13 @@ private:
 // checked on the normal kernel only (the tangential kernel does not enter P_H/P2).
 double load_ratio(const roughness& surfaces, const solver_options& options);
 
+// P_H/P2 on the cheap level of `options`: the method's plain discretisation at n/2 (product
+// integration for `extrapolated`, the one-parameter normal problem for `one_parameter`). Its
+// root in the contact width starts the width search at the scene's method (find_width), whose
+// answer is load_ratio's root, not this one's. Throws resolution_error when n/2 < min_nodes or
+// the kernel is beyond the level's resolution.
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options);
+
 // One row of a creep curve.
 struct curve_point {
     tangential_solution solution;

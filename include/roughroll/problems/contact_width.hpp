@@ -1,6 +1,6 @@
 // The half-width a of a physical scene (docs/formulation.md 2(j)): the width at which the
 // model carries the given load P2, lambda(T(a), A(a)) = (a / a_H(P2))^2, found by Brent on
-// the normal problem alone; or the paper's a = a_H.
+// the normal problem alone (on a cheap level first, then polished); or the paper's a = a_H.
 #pragma once
 
 #include <functional>
@@ -19,6 +19,13 @@ namespace roughroll {
 // when no bracket is found, and input_error when a > R/10 (the half-spaces of (3.7)): no
 // trial width beyond R/10 is solved, so a wide contact is refused as such, before any solve
 // when a_H > R/10 already.
-contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio);
+// `cheap_load_ratio`, when given (a coarser discretisation of the same lambda, e.g.
+// coarse_load_ratio), is searched that way first; its root then starts a Newton step (on the
+// cheap level's slope) and secant steps on `load_ratio`'s F until a step is below 1e-12 of a,
+// the Brent search's tolerance. Any failure of the cheap level or of the polish (an iterate
+// outside (0, R/10], no convergence within 8 steps) falls back to the search above on
+// `load_ratio` alone, so the answer and every refusal are `load_ratio`'s.
+contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
+                         const std::function<double(const roughness&)>& cheap_load_ratio = {});
 
 }  // namespace roughroll
