@@ -124,7 +124,7 @@ void write_summary(std::ostream& out, const point_report& r) {
     const si_point& p = *r.si;
     out << "  SI units\n"
         << "  half-width a        " << shortest(p.a) << " m   (Hertz a_H " << shortest(p.a_hertz) << " m, a/a_H = "
-        << shortest(p.a / p.a_hertz) << ", " << p.width_iterations << " Brent iterations)\n"
+        << shortest(p.a / p.a_hertz) << ", " << p.width_iterations << " width-search iterations)\n"
         << "  stick zone end c    " << shortest(p.c) << " m\n"
         << "  loads P2, P1        " << shortest(p.P2) << " N/m, " << shortest(p.P1) << " N/m\n"
         << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"

@@ -71,7 +71,7 @@ struct contact_width {
     double a_hertz;    // Hertz's half-width for P2, m
     double lambda;     // P_H/P2 at a: (a / a_H)^2 for the given load
     double load;       // the load the model carries at a, N/m (P2 for given_load)
-    int iterations;    // Brent iterations (0: no search)
+    int iterations;    // width-search steps: secant at the cheap level and polish, or Brent (0: no search)
 };
 
 // A dimensionless point in SI units.
