@@ -158,16 +158,11 @@ traction_columns solve_traction(scene s, std::optional<double> Q, std::vector<do
     traction_columns out;
     out.point = to_json(sp.report()).dump();
     out.c0_level = level.c0;
-    const std::vector<double> velocity = sp.solved.slip_velocity(level, grid);
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const double r = grid[i];
-        const bool stick = r < level.c0 && r >= level.start;  // [start, c0]: formulation section 7
-        out.p.push_back(sp.solved.normal().pressure(r));
-        out.p1.push_back(sp.solved.traction(level, r));
-        out.v.push_back(stick ? 0.0 : velocity[i]);
-        out.stick.push_back(stick ? 1 : 0);
-        if (!std::isfinite(out.p.back()) || !std::isfinite(out.p1.back()) || !std::isfinite(out.v.back()))
-            throw numerical_error("non-finite traction at r = " + shortest(r));
+    for (const contact::distribution_row& row : sp.solved.distributions(level, grid)) {
+        out.p.push_back(row.p);
+        out.p1.push_back(row.p1);
+        out.v.push_back(row.v);
+        out.stick.push_back(row.stick ? 1 : 0);
     }
     out.r = std::move(grid);
     return out;

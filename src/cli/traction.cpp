@@ -224,19 +224,18 @@ int run_traction(const traction_options& o) {
     std::vector<traction_row> rows(static_cast<std::size_t>(o.points));
     std::vector<double> grid(rows.size());
     for (int i = 0; i < o.points; ++i) grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
-    const std::vector<double> velocity = c.slip_velocity(level, grid);
+    const std::vector<contact::distribution_row> distributions = c.distributions(level, grid);
     double p_max = 0.0;
     double v_max = 0.0;
     for (int i = 0; i < o.points; ++i) {
         traction_row& row = rows[i];
-        row.r = grid[i];
-        row.p = normal.pressure(row.r);
-        row.p1 = c.traction(level, row.r);
-        row.stick = row.r < level.c0 && row.r >= level.start;
-        row.v = row.stick ? 0.0 : velocity[i];
+        const contact::distribution_row& d = distributions[i];
+        row.r = d.r;
+        row.p = d.p;
+        row.p1 = d.p1;
+        row.stick = d.stick;
+        row.v = d.v;
         smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
-        if (!std::isfinite(row.p) || !std::isfinite(row.p1) || !std::isfinite(row.v))
-            throw numerical_error("non-finite traction at r = " + number(row.r, 17));
         p_max = std::max(p_max, row.p);
         v_max = std::max(v_max, std::fabs(row.v));
     }

@@ -50,6 +50,8 @@ zone_search zone_search_from_string(const std::string& name) {
     throw input_error("unknown zone search '" + name + "' (known: auto, single, general)");
 }
 
+method level_of(method m) { return m == method::extrapolated ? method::product : m; }
+
 std::ostream& operator<<(std::ostream& os, method m) { return os << to_string(m); }
 
 }  // namespace roughroll

@@ -8,6 +8,7 @@
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace roughroll {
 
@@ -42,8 +43,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
                                    "for these kernels; increase n or use method 'product'");
         companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones});
     }
-    const method level = options.how == method::extrapolated ? method::product : options.how;
-    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level));
+    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how)));
     normal_->how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
     if (extrapolate) {
         reported_ = std::make_unique<normal_solution>(*normal_);
@@ -137,7 +137,7 @@ const tangential_solution& contact::level_point(double Q, bool checked, std::opt
 }
 
 method contact::level_method() const {
-    return options_.how == method::extrapolated ? method::product : options_.how;
+    return level_of(options_.how);
 }
 
 tangential_solution contact::distribution(const tangential_solution& s) {
@@ -153,17 +153,12 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
         // n/2 (on the same path), with the rounding floor of every estimate.
         if (!last_coarse_ || last_coarse_->Q != s.Q)
             last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start, s.c0});
-        const int n = nodes();
-        const double lambda = reported_->lambda;
-        const double K = std::max(1.0, std::fabs(lambda));
-        // c0's floor as estimate_from's: the rounding of Q(c0) divided by the zone's slope
-        // f rho, or the square-root inversion near gross sliding, where the zone shrinks to a
-        // point (validation/test_honest_estimates.cpp finds 5e-12 there at Q/f = 1 - 1e-15).
-        const double n_eps = rounding_floor(n, K);
-        const double c0_floor = std::min(n_eps / s.rho(), 2.0 * std::sqrt(n_eps));
-        return error_estimate{std::fabs(lambda - normal_->lambda) + rounding_floor(n, std::fabs(lambda)),
-                              std::fabs(s.c0 - last_coarse_->c0) + c0_floor,
-                              std::fabs(s.xi - last_coarse_->xi) + rounding_floor(n, std::fabs(s.xi) + f_ * K), 0.0,
+        // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
+        // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
+        const rounding_floors floor = floors_at(nodes(), s, s);
+        return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
+                              std::fabs(s.c0 - last_coarse_->c0) + floor.c0,
+                              std::fabs(s.xi - last_coarse_->xi) + floor.xi, 0.0,
                               "n/2 (general zone search: level n, not extrapolated)", false};
     }
     if (!build_levels()) return std::nullopt;
@@ -237,15 +232,7 @@ std::optional<tangential_solution> contact::above_finest(const tangential_soluti
     }
 }
 
-error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
-                                      const std::array<tangential_solution, 3>& at, bool swept) {
-    int self = 0;
-    while (levels_[self] != nullptr) ++self;
-    const bool extrapolated = reported_ != nullptr;
-    const reported_value which{self, extrapolated};
-    const int order = level_method() == method::product ? 4 : 2;
-    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
-    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
+contact::rounding_floors contact::floors_at(int n, const tangential_solution& s, const tangential_solution& own) const {
     const double lambda = normal().lambda;
     // The size of the terms of (4.4)-(4.5): the pressure's scale P_H/P2 (through G) and the
     // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
@@ -258,13 +245,27 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         strength = std::max(strength, sum);
     }
     const double size = std::max({1.0, std::fabs(lambda), strength});  // for xi
-    const double n_eps = rounding_floor(finest_n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
+    const double n_eps = rounding_floor(n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
     // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
     // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
-    // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). The special loads
-    // Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly).
-    const bool special = s.Q == 0.0 || std::fabs(s.Q) == f_;
+    // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). On the paper's single zone the
+    // special loads Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly); the
+    // general search's zone at |Q| = f (the least G) is computed.
+    const bool special = !s.general && (s.Q == 0.0 || std::fabs(s.Q) == f_);
     const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
+    return {rounding_floor(n, lambda), c0_floor, rounding_floor(n, std::fabs(own.xi) + f_ * size), f_ * n_eps};
+}
+
+error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                      const std::array<tangential_solution, 3>& at, bool swept) {
+    int self = 0;
+    while (levels_[self] != nullptr) ++self;
+    const bool extrapolated = reported_ != nullptr;
+    const reported_value which{self, extrapolated};
+    const int order = level_method() == method::product ? 4 : 2;
+    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
+    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
+    const rounding_floors floor = floors_at(finest_n, s, own);
     struct quantity {
         const char* name;
         three_levels v;
@@ -273,12 +274,12 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     std::vector<quantity> qs{
-        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, rounding_floor(finest_n, lambda), &e.lambda},
-        {"xi", {at[0].xi, at[1].xi, at[2].xi}, rounding_floor(finest_n, std::fabs(own.xi) + f_ * size), &e.xi}};
+        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, &e.lambda},
+        {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, &e.xi}};
     if (swept)
-        qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, f_ * n_eps, &e.Q});
+        qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, floor.Q, &e.Q});
     else
-        qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, c0_floor, &e.c0});
+        qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0, &e.c0});
     const int coarsest_n = levels_[0] ? levels_[0]->nodes() : nodes();
     bool second_chance = false;
     for (const quantity& q : qs) {
@@ -360,6 +361,23 @@ std::vector<double> contact::slip_velocity(const tangential_solution& d, const s
     return v;
 }
 
+std::vector<contact::distribution_row> contact::distributions(const tangential_solution& d,
+                                                              const std::vector<double>& grid) {
+    const std::vector<double> velocity = slip_velocity(d, grid);
+    std::vector<distribution_row> rows(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        distribution_row& row = rows[i];
+        row.r = grid[i];
+        row.p = normal().pressure(row.r);
+        row.p1 = traction(d, row.r);
+        row.stick = d.sticks(row.r);
+        row.v = row.stick ? 0.0 : velocity[i];
+        if (!std::isfinite(row.p) || !std::isfinite(row.p1) || !std::isfinite(row.v))
+            throw numerical_error("non-finite traction at r = " + shortest(row.r));
+    }
+    return rows;
+}
+
 double load_ratio(const roughness& surfaces, const solver_options& options) {
     // The calls of contact's constructor for P_H/P2, in the same order and with the same arguments.
     const int n = options.nodes();
@@ -367,8 +385,7 @@ double load_ratio(const roughness& surfaces, const solver_options& options) {
         return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
     const kernel k2 = kernel::normal(surfaces);
     if (options.how != method::extrapolated || k2.empty()) {
-        const method level = options.how == method::extrapolated ? method::product : options.how;
-        return solve_normal(k2, n, level).lambda;
+        return solve_normal(k2, n, level_of(options.how)).lambda;
     }
     if (n / 2 < min_nodes || !in_asymptotic_range(k2, n / 2, method::product))
         throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
@@ -384,8 +401,7 @@ double coarse_load_ratio(const roughness& surfaces, const solver_options& option
         throw resolution_error("the cheap level n/2 = " + std::to_string(n) + " is below " + std::to_string(min_nodes));
     if (options.how == method::one_parameter)
         return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
-    const method level = options.how == method::extrapolated ? method::product : options.how;
-    return solve_normal(kernel::normal(surfaces), n, level).lambda;
+    return solve_normal(kernel::normal(surfaces), n, level_of(options.how)).lambda;
 }
 
 namespace {

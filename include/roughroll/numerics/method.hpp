@@ -28,6 +28,9 @@ std::ostream& operator<<(std::ostream& os, method m);  // to_string(m): readable
 // relative in P_H/P2 and xi and 1e-6 to 3e-6 in c0, in 4 ms per point at a given Q
 // (validation/test_one_parameter.cpp, docs/performance.md).
 int default_nodes(method m);
+// The discretisation a method solves at each level: product integration for extrapolated
+// (Richardson's rule combines two product levels), the method itself otherwise.
+method level_of(method m);
 method method_from_string(const std::string& name);  // throws input_error naming the method
 
 // How the tangential problem's zones are found (docs/formulation.md section 7):

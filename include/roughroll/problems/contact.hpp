@@ -93,6 +93,15 @@ public:
     double slip_velocity(const tangential_solution& d, double r);
     std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r);
 
+    // The distributions of d (as distribution() returns it) at each r of `grid`: the pressure
+    // p of (4.1), the traction p1 of (3.15), the slip velocity v of (3.6), 0 on the stick zone
+    // [start, c0] (3.2). Throws numerical_error naming r where a value is not finite.
+    struct distribution_row {
+        double r, p, p1, v;
+        bool stick;
+    };
+    std::vector<distribution_row> distributions(const tangential_solution& d, const std::vector<double>& grid);
+
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
     tangential_solution level_at_stick_end(double c0, bool checked);
@@ -107,6 +116,12 @@ private:
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
     method level_method() const;  // product for extrapolated, else the method itself
     bool build_levels();          // the two other levels of the estimate; false when none fit
+    // The rounding floors of an estimate at n nodes (docs/performance.md, "How the error
+    // estimates are made"): P_H/P2, c0, xi and Q, for s and its level-n values own.
+    struct rounding_floors {
+        double lambda, c0, xi, Q;
+    };
+    rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own) const;
     // The estimate from the three levels' values (s of this contact, level-n values `own`).
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
                                  const std::array<tangential_solution, 3>& at_levels, bool swept);

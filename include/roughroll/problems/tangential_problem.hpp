@@ -54,6 +54,7 @@ struct tangential_solution {
     bool general = false;  // found by zone_solver's search rather than the paper's single zone
 
     double rho() const { return 0.5 * (c0 - start); }
+    bool sticks(double r) const { return r >= start && r < c0; }  // r on the stick zone [start, c0)
 };
 
 // The checks every tangential solver makes on a load Q before solving (and the one-parameter
