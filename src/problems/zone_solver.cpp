@@ -5,8 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -125,7 +123,6 @@ std::optional<tangential_solution> zone_solver::newton(double magnitude, double 
     double m = 0.5 * (start + c0), u = std::log(0.5 * (c0 - start));
     if (!inside(m, u)) return std::nullopt;
     auto F = residual(m, u);
-    if (std::getenv("RR_DEBUG_ZONES")) std::fprintf(stderr, "newton from m %.17g rho %.6g: %s\n", m, std::exp(u), F ? "ok" : "no deficit");
     if (!F) return std::nullopt;
     for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
         const double rho = std::exp(u), h = 1e-6 * rho, k = 1e-6;
@@ -144,13 +141,9 @@ std::optional<tangential_solution> zone_solver::newton(double magnitude, double 
             step *= 0.5;
             if (step < 1e-6) return std::nullopt;
         }
-        const auto F_old = *F;
         F = next;
         m += step * dm;
         u += step * du;
-        if (std::getenv("RR_DEBUG_ZONES"))
-            std::fprintf(stderr, "newton %d: m %.17g rho %.6g dm %.3g du %.3g step %g F %.3g %.3g\n", iteration, m,
-                         std::exp(u), dm, du, step, F_old[0], F_old[1]);
         if (step == 1.0 && std::fabs(dm) + std::exp(u) * std::fabs(du) <= newton_tolerance) {
             tangential_solution s = single_.solve_on_zone(m - std::exp(u), m + std::exp(u));
             s.iterations = iteration;
@@ -210,8 +203,6 @@ std::optional<tangential_solution> zone_solver::continuation(double magnitude) {
         const double dgamma = 0.5 * F1, du = -(F0 + F1) / 3.0;
         const double next_rho = rho * std::exp(du), next_gamma = gamma + dgamma;
         const double step = std::fabs(point + next_gamma * next_rho - m) + std::fabs(next_rho - rho);
-        if (std::getenv("RR_DEBUG_ZONES"))
-            std::fprintf(stderr, "chord %d: gamma %.9g rho %.9g F %.3g %.3g step %.3g\n", iteration, gamma, rho, F0, F1, step);
         if (step <= newton_tolerance || (iteration > 1 && step > 0.5 * last_step && step < 0.1 * rho)) {
             t.iterations = iteration;
             return t;
