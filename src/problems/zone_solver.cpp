@@ -17,11 +17,24 @@ constexpr int start_scan = 32;            // trial starts of the stick zone, bra
 constexpr int least_G_samples = 2001;     // samples of G for its least value (gross sliding)
 constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
 constexpr int newton_iterations = 40;
+// Below this 1 - |Q|/f the search starts from gross sliding (continuation) before scanning.
+constexpr double near_sliding = 1e-4;
+// Below this half-length of the model zone it is returned when the discrete conditions are rounding.
+constexpr double model_only = 1e-4;
 // Newton's steps in the zone ends: psi(-1) carries rounding of about 1e-13 (a sum of n
 // coefficients of the collocation solution), which moves the root by a few 1e-12; below
 // 1e-11 the steps are that noise (measured), and Brent's 1e-15 is no closer.
 constexpr double newton_tolerance = 1e-11;
 }  // namespace
+
+double zone_solver::load_excess(const tangential_solution& t, double magnitude) const {
+    // Q - |Q| = rho int q - (f - |Q|) (4.5): f - |Q| is exact (Sterbenz, |Q| >= f/2 where it
+    // matters) and rho int q = rho (pi/2) b_0 keeps its relative digits, where f + rho int q
+    // rounds to ulp(f) = 5.6e-17 for f = 0.3: at |Q|/f = 1 - 1e-15 the gap is six ulps and the
+    // zone ends found from Q itself were noise (docs/formulation.md 7(e)).
+    const double integral = t.psi_b.empty() ? 0.0 : M_PI_2 * t.psi_b[0];  // int psi sqrt(1 - t^2)
+    return t.rho() * integral + (f_ - magnitude);
+}
 
 std::vector<zone> zones_of(const tangential_solution& s) {
     const int direction = s.sign < 0.0 ? -1 : 1;
@@ -40,8 +53,9 @@ double zone_solver::entry_coefficient(const tangential_solution& s) {
 
 double zone_solver::stick_end(double start, double magnitude) {
     // Q(start, c0) falls from f (no stick zone, c0 = start) as the zone grows (7(c)).
+    // In the gap form rho int q + (f - |Q|): Q - |Q| without the O(f) sum that cancels.
     const auto excess = [this, start, magnitude](double c0) {
-        return (c0 <= start ? f_ : single_.solve_on_zone(start, c0).Q) - magnitude;
+        return c0 <= start ? f_ - magnitude : load_excess(single_.solve_on_zone(start, c0), magnitude);
     };
     if (!(excess(1.0) < 0.0)) {
         std::ostringstream msg;
@@ -86,39 +100,118 @@ tangential_solution zone_solver::gross_sliding() {
 }
 
 std::optional<tangential_solution> zone_solver::newton(double magnitude, double start, double c0) {
-    // Newton on F = (Q - |Q|, psi(-1)) in the zone's midpoint m and half-length rho (near gross
-    // sliding Q - f ~ -rho^2 depends on rho alone, psi(-1) mostly on m), the Jacobian by forward
-    // differences (steps 1e-7 rho), each step halved until -1 < m - rho and m + rho <= 1, rho > 0.
+    // Newton on F = (log(-rho int q / (f - |Q|)), psi(-1) / |b_0|) in the zone's midpoint m and
+    // u = log rho (docs/formulation.md 7(e)): both components are relative, so they keep their
+    // digits as the zone collapses at gross sliding (rho -> 0, f - |Q| -> 0), and F_0 is close to
+    // linear in u (rho int q ~ -kappa rho^k), so Newton converges from a zone far off in size, such
+    // as the continuation guess from gross sliding. The Jacobian by forward differences (steps
+    // 1e-6 rho in m, 1e-6 in u), each step halved until -1 < m - rho and m + rho <= 1.
     // Empty when it does not converge: the caller falls back to Brent.
-    const auto residual = [this, magnitude](double m, double rho) {
+    const double gap = f_ - magnitude;
+    if (!(gap > 0.0)) return std::nullopt;
+    const auto residual = [this, gap](double m, double u) -> std::optional<std::array<double, 2>> {
+        const double rho = std::exp(u);
         const tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
-        return std::array<double, 2>{(t.Q - magnitude) / f_, entry_coefficient(t)};
+        const double deficit = -rho * M_PI_2 * t.psi_b[0];
+        if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
+        return std::array<double, 2>{std::log(deficit / gap), entry_coefficient(t) / std::fabs(t.psi_b[0])};
     };
-    double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
+    const auto inside = [](double m, double u) {
+        const double rho = std::exp(u);
+        return m - rho > -1.0 && m + rho <= 1.0;
+    };
+    double m = 0.5 * (start + c0), u = std::log(0.5 * (c0 - start));
+    if (!inside(m, u)) return std::nullopt;
+    auto F = residual(m, u);
+    if (!F) return std::nullopt;
     for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
-        const auto F = residual(m, rho);
-        const double h = 1e-7 * rho;
-        const auto Fm = residual(m - h, rho);  // m - h - rho > -1 unless at the edge: then rho - h below
-        const auto Fr = residual(m, rho - h);
-        const double a = (F[0] - Fm[0]) / h, b = (F[0] - Fr[0]) / h;
-        const double c = (F[1] - Fm[1]) / h, d = (F[1] - Fr[1]) / h;
+        const double rho = std::exp(u), h = 1e-6 * rho, k = 1e-6;
+        const auto Fm = residual(inside(m - h, u) ? m - h : m + h, u);
+        const auto Fu = residual(m, u - k);
+        if (!Fm || !Fu) return std::nullopt;
+        const double hm = inside(m - h, u) ? h : -h;
+        const double a = ((*F)[0] - (*Fm)[0]) / hm, b = ((*F)[0] - (*Fu)[0]) / k;
+        const double c = ((*F)[1] - (*Fm)[1]) / hm, d = ((*F)[1] - (*Fu)[1]) / k;
         const double det = a * d - b * c;
         if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
-        const double dm = -(d * F[0] - b * F[1]) / det, dr = -(a * F[1] - c * F[0]) / det;
+        const double dm = -(d * (*F)[0] - b * (*F)[1]) / det, du = -(a * (*F)[1] - c * (*F)[0]) / det;
         double step = 1.0;
-        while (!(rho + step * dr > 0.0 && m + step * (dm - dr) - rho > -1.0 && m + step * (dm + dr) + rho <= 1.0)) {
+        std::optional<std::array<double, 2>> next;
+        while (!(inside(m + step * dm, u + step * du) && (next = residual(m + step * dm, u + step * du)))) {
             step *= 0.5;
             if (step < 1e-6) return std::nullopt;
         }
+        F = next;
         m += step * dm;
-        rho += step * dr;
-        if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
-            tangential_solution s = single_.solve_on_zone(m - rho, m + rho);
+        u += step * du;
+        if (step == 1.0 && std::fabs(dm) + std::exp(u) * std::fabs(du) <= newton_tolerance) {
+            tangential_solution s = single_.solve_on_zone(m - std::exp(u), m + std::exp(u));
             s.iterations = iteration;
             return s;
         }
     }
     return std::nullopt;
+}
+
+std::optional<tangential_solution> zone_solver::continuation(double magnitude) {
+    // Near gross sliding the stick zone [s, c] is short around r*, the interior point where G is
+    // least, and f G ~ f G* + f G''/2 (r - r*)^2 on it. In t, r - r* = rho (t + gamma) with
+    // gamma = (m - r*)/rho, and the stick equation (section 7(a), kernel term O(rho)) is solved by
+    // psi = b_0 + b_1 U_1, b_1 = -k/2, b_0 = -2 k gamma, k = f G'' rho^2 / 2 (the Cauchy operator
+    // maps U_j sqrt(1 - t^2) to -T_{j+1}). Hence, to leading order in rho (docs/formulation.md 7(e)):
+    //   entry condition psi(-1) = k (1 - 2 gamma) = 0:  gamma = 1/2, the zone [r* - rho/2, r* + 3 rho/2];
+    //   f - |Q| = -rho int q = (pi/4) f G'' rho^3:        rho = cbrt(4 (f - |Q|) / (pi f G'')).
+    // The residuals F_0 = log((f - Q)/(f - |Q|)) (from the gap form, which keeps its digits) and
+    // F_1 = psi(-1)/|b_0| = (1 - 2 gamma)/(2 gamma) have, in (gamma, u = log rho), the model
+    // Jacobian [[2, 3], [-2, 0]] at gamma = 1/2. The chord iteration with that fixed Jacobian
+    // contracts by O(rho) per step and, unlike Newton with differenced Jacobians, is not thrown
+    // off by the rounding of F (about 1e-4 relative at 1 - |Q|/f = 1e-15, where the variation
+    // of f G over the zone, 1e-10, meets G's rounding, 1e-14). It stops when the step is below
+    // newton_tolerance or stops shrinking (the rounding floor). Empty when r* is at an edge, or
+    // G'' is not positive, or the iteration leaves [-1, 1] or fails to contract: the caller scans.
+    const double gap = f_ - magnitude;
+    if (!(gap > 0.0)) return std::nullopt;
+    const double point = gross_sliding().c0;
+    const double room = 0.5 * std::min(1.0 + point, 1.0 - point);
+    if (!(room > 0.0)) return std::nullopt;
+    const double h = std::min(1e-3, 0.5 * room);
+    const double curvature = (single_.G(point - h) - 2.0 * single_.G(point) + single_.G(point + h)) / (h * h);
+    if (!(curvature > 0.0 && std::isfinite(curvature))) return std::nullopt;
+    const double model_rho = std::cbrt(4.0 * gap / (M_PI * f_ * curvature));
+    // Where rounding hides the discrete conditions (F_1's rounding grows like n^2 and reaches O(1)
+    // at n = 256 and 1 - |Q|/f = 1e-15 on the scene T = 100, A = 1), the model zone itself is the
+    // answer: its error O(rho^2) (measured 1e-9 in rho at 1 - 1e-15) is below what the discrete
+    // conditions resolve there. Only for rho < model_only, where that error is that small.
+    const auto model_zone = [&]() -> std::optional<tangential_solution> {
+        if (!(model_rho < model_only) || !(point - 0.5 * model_rho > -1.0 && point + 1.5 * model_rho <= 1.0))
+            return std::nullopt;
+        tangential_solution t = single_.solve_on_zone(point - 0.5 * model_rho, point + 1.5 * model_rho);
+        t.iterations = 0;
+        return t;
+    };
+    double rho = model_rho, gamma = 0.5;
+    double last_step = std::numeric_limits<double>::infinity();
+    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
+        const double m = point + gamma * rho;
+        // Iterates far from the model (more than its O(rho) corrections allow) are rounding's walk.
+        if (!(m - rho > -1.0 && m + rho <= 1.0) || std::fabs(gamma - 0.5) > 0.1 || std::fabs(std::log(rho / model_rho)) > 0.1)
+            return model_zone();
+        tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
+        const double deficit = -rho * M_PI_2 * t.psi_b[0];
+        if (!(deficit > 0.0)) return model_zone();
+        const double F0 = std::log(deficit / gap), F1 = entry_coefficient(t) / std::fabs(t.psi_b[0]);
+        const double dgamma = 0.5 * F1, du = -(F0 + F1) / 3.0;
+        const double next_rho = rho * std::exp(du), next_gamma = gamma + dgamma;
+        const double step = std::fabs(point + next_gamma * next_rho - m) + std::fabs(next_rho - rho);
+        if (step <= newton_tolerance || (iteration > 1 && step > 0.5 * last_step && step < 0.1 * rho)) {
+            t.iterations = iteration;
+            return t;
+        }
+        last_step = step;
+        rho = next_rho;
+        gamma = next_gamma;
+    }
+    return model_zone();
 }
 
 tangential_solution zone_solver::general(double magnitude, std::optional<zone_guess> guess,
@@ -128,6 +221,10 @@ tangential_solution zone_solver::general(double magnitude, std::optional<zone_gu
     tangential_solution at_edge = single_.solve_on_zone(-1.0, edge_end);
     const double at_edge_entry = entry_coefficient(at_edge);
     if (at_edge_entry <= 0.0) return at_edge;
+    // Near gross sliding: continuation from |Q| = f, where the zone collapses at the point r*
+    // where G is least (7(d)); before the coarse level's guess, which rounding makes no better.
+    if (f_ - magnitude <= near_sliding * f_)
+        if (auto s = continuation(magnitude)) return *s;
     // Newton from the coarse level's zone when extrapolating.
     if (guess && guess->start > -1.0)
         if (auto s = newton(magnitude, guess->start, guess->c0)) return *s;

@@ -62,8 +62,10 @@ private:
     // single_end: the fast path's c0 at this load, when it was solved (saves one search).
     tangential_solution general(double magnitude, std::optional<zone_guess> guess, std::optional<double> single_end);
     std::optional<tangential_solution> newton(double magnitude, double start, double c0);
+    std::optional<tangential_solution> continuation(double magnitude);  // from gross sliding, 7(e)
     tangential_solution gross_sliding();
     double stick_end(double start, double magnitude);  // c0 with Q(start, c0) = magnitude
+    double load_excess(const tangential_solution& t, double magnitude) const;  // Q - |Q|, without f's rounding
 
     tangential_solver& single_;
     double f_;
