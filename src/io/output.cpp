@@ -51,6 +51,7 @@ nlohmann::json to_json(const point_report& r) {
         {"pressure_margin", s.checks.pressure_margin},
         {"stick_margin", s.checks.stick_margin},
         {"slip_margin", s.checks.slip_margin},
+        {"stick_margin_rounding", s.checks.stick_rounding},
     };
     nlohmann::json estimate = nullptr;
     if (r.estimate)

@@ -27,6 +27,12 @@ kernel kernel::normal(const roughness& r) {  // K2*, (3.24)
     return kernel(terms_of(r.cylinder1.normal, r.cylinder2.normal));
 }
 
+double kernel::strength() const {
+    double sum = 0.0;
+    for (const exponential_term& t : terms_) sum += std::fabs(t.T);
+    return sum;
+}
+
 double kernel::max_rate() const {
     double a = 0.0;
     for (const auto& t : terms_) a = std::max(a, t.A);

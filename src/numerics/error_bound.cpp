@@ -15,6 +15,11 @@ constexpr double min_sign_change_ratio = 4.0;  // |rho| when the differences cha
 
 double rounding_floor(int n, double scale) { return std::max(n, 1) * DBL_EPSILON * std::fabs(scale); }
 
+double stick_system_floor(int n, double scale) {
+    constexpr double growth = 8.0;  // twice the measured 3.7 (error_bound.hpp)
+    return growth * rounding_floor(n, scale);
+}
+
 error_bound bound_error(const three_levels& v, int order, reported_value which, double floor) {
     const double full = std::ldexp(1.0, order);  // 2^p
     const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;

@@ -238,12 +238,7 @@ contact::rounding_floors contact::floors_at(int n, const tangential_solution& s,
     // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
     // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
     // loses 1e-13 absolute in xi = 3e-8 at n = 128).
-    double strength = 0.0;
-    for (const kernel& k : {kernel::tangential(surfaces_), kernel::normal(surfaces_)}) {
-        double sum = 0.0;
-        for (const auto& term : k.terms()) sum += std::fabs(term.T);
-        strength = std::max(strength, sum);
-    }
+    const double strength = std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
     const double size = std::max({1.0, std::fabs(lambda), strength});  // for xi
     const double n_eps = rounding_floor(n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
     // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
@@ -252,8 +247,20 @@ contact::rounding_floors contact::floors_at(int n, const tangential_solution& s,
     // special loads Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly); the
     // general search's zone at |Q| = f (the least G) is computed.
     const bool special = !s.general && (s.Q == 0.0 || std::fabs(s.Q) == f_);
-    const double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
-    return {rounding_floor(n, lambda), c0_floor, rounding_floor(n, std::fabs(own.xi) + f_ * size), f_ * n_eps};
+    double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
+    double xi_floor = rounding_floor(n, std::fabs(own.xi) + f_ * size);
+    if (own.general && !own.psi_b.empty() && own.rho() > 0.0) {
+        // A zone of the general search (docs/formulation.md 7(d), 7(e)): xi, b_0 and psi(-1) are
+        // read off (4.4), whose terms of size |xi| + f K they cancel (stick_system_floor). The
+        // ends solve the load in the gap form rho (pi/2) b_0 = |Q| - f and the entry condition
+        // psi(-1)/|b_0| = 0, both relative to b_0, which near gross sliding vanishes like
+        // f G'' rho^2/2: the ends move by rho times the floor over |b_0| (the residuals of 7(d)
+        // have slopes 2 and 3 in gamma and log rho, which the factor 1 covers).
+        const double system = stick_system_floor(n, std::fabs(own.xi) + f_ * size);
+        xi_floor = std::max(xi_floor, system);
+        c0_floor = std::max(c0_floor, own.rho() * system / std::fabs(own.psi_b[0]));
+    }
+    return {rounding_floor(n, lambda), c0_floor, xi_floor, f_ * n_eps};
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,

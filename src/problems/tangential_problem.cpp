@@ -361,7 +361,15 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         for (int i = 0; i < check_points; ++i) grid.push_back(grid_point(-1.0, s.start, i));
     for (double v : slip_velocity_magnitude(s, grid)) lower(c.slip_margin, v / f_);
     c.pressure_holds = c.pressure_margin >= 0.0;
-    c.stick_holds = c.stick_margin >= 0.0;
+    // (3.3) to rounding (docs/formulation.md 7(d)): q solves (4.4), whose right-hand side
+    // xi + f G is made of terms of size |xi| + f K (K = max(1, P_H/P2, sum |T|), the terms of G of
+    // (3.25)) that q cancels to its own size (stick_system_floor). Near gross sliding q is that
+    // small itself and the margin is rounding (measured -3.0e-11 at Q/f = 1 - 1e-12, n = 256,
+    // T = 100, A = 1: floor 6.5e-11), where a wrong structure fails by far more (-0.09 for the
+    // paper's zone there, -1.1e-3 in the one-parameter limit of section 6).
+    c.stick_rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max({1.0, std::fabs(normal_.lambda),
+                                                                             k1_.strength(), dk_.strength()})) / f_;
+    c.stick_holds = c.stick_margin >= -c.stick_rounding;
     c.slip_holds = c.slip_margin > 0.0;
     return c;
 }

@@ -30,6 +30,9 @@ public:
     bool empty() const { return terms_.empty(); }
     const std::vector<exponential_term>& terms() const { return terms_; }
     double max_rate() const;  // the largest A: the kernel's narrowest feature is 1/A
+    // sum |T|: the size of the kernel's terms, which multiply integrals of O(1) tractions and
+    // cancel in the equations (the scale of their rounding floors, numerics/error_bound.hpp).
+    double strength() const;
 
     // K(z) for z != 0 (the kernel jumps at 0; its value there is never used).
     double operator()(double z) const;

@@ -53,4 +53,12 @@ error_bound bound_error(const three_levels& v, int order, reported_value which, 
 // n * DBL_EPSILON * scale, `scale` the size of the terms the quantity is computed from.
 double rounding_floor(int n, double scale);
 
+// The rounding floor of what is read off the solution of a stick-zone system (4.4) whose
+// right-hand side xi + f G is made of terms of size `scale` that the traction q cancels to its
+// own, much smaller, size (near gross sliding, docs/formulation.md 7(d)): q, psi(-1), b_0 and
+// the creep carry rounding_floor(n, scale) times the growth of the solve, measured up to 3.7
+// over n = 16..512 at 1 - |Q|/f = 1e-6..1e-15 (scene T = 100, A = 1, where the spread over n is
+// rounding alone); the floor takes twice that, 8.
+double stick_system_floor(int n, double scale);
+
 }  // namespace roughroll
