@@ -278,8 +278,24 @@ void bm_zone_point(benchmark::State& state) {
     const double Q = 0.3 * (1.0 - std::pow(10.0, -static_cast<double>(state.range(0))));
     for (auto _ : state) benchmark::DoNotOptimize(c.point(Q).xi);
 }
+
+// The one-parameter zone search (docs/formulation.md 7(g)): eps1 = 0.1 < eps2 = 0.3, where the
+// paper's zone fails from Q/f = 0.9971 on. Args: Q/f (0: 0.999, 1: 1 - 1e-6), n, and 1 for
+// zones = "single" (the failing single zone alone). The contact shared, as along a curve.
+void bm_limit_zone_point(benchmark::State& state) {
+    roughness r;
+    r.cylinder1.normal = {0.15 * 100.0, 10.0};
+    r.cylinder1.tangential = {0.05 * 100.0, 10.0};
+    const solver_options o{static_cast<int>(state.range(1)), method::one_parameter,
+                           state.range(2) == 1 ? zone_search::single : zone_search::automatic};
+    contact c(r, 0.3, o);
+    const double Q = 0.3 * (state.range(0) == 0 ? 0.999 : 1.0 - 1e-6);
+    for (auto _ : state) benchmark::DoNotOptimize(c.point(Q).xi);
+}
 }  // namespace
 
+BENCHMARK(bm_zone_point)->ArgsProduct({{15}, {1, 2}, {128}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_limit_zone_point)->ArgsProduct({{0, 1}, {128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_zone_point)->ArgsProduct({{2, 6}, {1, 2}, {64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_lu)->Arg(48)->Arg(64)->Arg(96)->Arg(128)->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMillisecond);

@@ -27,10 +27,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     const int n = options.nodes();
     if (options.how == method::one_parameter) {
-        if (options.zones == zone_search::general)
-            throw input_error("zone search 'general' is not available for method 'one-parameter' (use 'auto' or "
-                              "'single'; docs/formulation.md section 7)");
         limit_ = std::make_unique<one_parameter_solver>(surfaces, f, n);
+        limit_zones_ = std::make_unique<one_parameter_zones>(*limit_);
         return;
     }
     const bool extrapolate = options.how == method::extrapolated && !(kernel::normal(surfaces).empty() &&
@@ -69,6 +67,7 @@ tangential_solver& contact::tangential() {
 }
 
 tangential_solution contact::general_point(double Q, std::optional<zone_guess> guess) {
+    if (limit_zones_) return limit_zones_->solve(Q, true);
     return zones_->solve(Q, true, guess);
 }
 
@@ -103,7 +102,6 @@ tangential_solution contact::point(double Q) {
         }
     }
     if (!reported_) {
-        if (limit_) return level_point(Q, true, start, start_slope);
         return zones_for(Q, level_point(Q, true, start, start_slope), nullptr);
     }
     tangential_solution coarse = companion_->level_point(Q, false, start, start_slope);

@@ -12,6 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
@@ -133,11 +134,15 @@ double one_parameter_solver::G(double r) const {
     return linear + (eps_.normal - eps_.tangential) * pressure_slope(r);
 }
 
-tangential_solution one_parameter_solver::solve_system(double c0) {
+tangential_solution one_parameter_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
+
+tangential_solution one_parameter_solver::solve_on_zone(double start, double c0) {
     // "The one-parameter limit", stick equation: H[q] + (eps1/rho) q'(t) = xi + f G(r(t)) with
     // q = sum_j c_j sin((j+1) phi), t = cos phi, multiplied by -sin phi at the points of (4.7):
-    //   sum_j c_j cos((j+1) phi_m) [sin phi_m + (eps1/rho)(j+1)] + xi sin phi_m = -f G(r_m) sin phi_m.
-    const double rho = 0.5 * (1.0 + c0);
+    //   sum_j c_j cos((j+1) phi_m) [sin phi_m + (eps1/rho)(j+1)] + xi sin phi_m = -f G(r_m) sin phi_m,
+    // on the stick zone [start, c0], r = start + rho (t + 1) (docs/formulation.md 7(g); the
+    // paper's zone is start = -1, E4).
+    const double rho = 0.5 * (c0 - start);
     const double stiffness = eps_.tangential / rho;
     gsl_matrix* a = tangential_system_.matrix();
     gsl_vector* rhs = tangential_system_.rhs();
@@ -145,16 +150,17 @@ tangential_solution one_parameter_solver::solve_system(double c0) {
         for (int j = 0; j < n_; ++j)
             gsl_matrix_set(a, m, j, cos_[static_cast<std::size_t>(m) * n_ + j] * (sin_[m] + stiffness * (j + 1)));
         gsl_matrix_set(a, m, n_, sin_[m]);
-        const double r = rho * (normal_.rule.collocation[m] + 1.0) - 1.0;  // E4
+        const double r = start + rho * (normal_.rule.collocation[m] + 1.0);  // E4
         gsl_vector_set(rhs, m, -f_ * G(r) * sin_[m]);                       // E5
     }
     std::ostringstream context;
     context.precision(17);
-    context << "one-parameter tangential problem at c0 = " << c0;
+    context << "one-parameter tangential problem on the stick zone [" << start << ", " << c0 << "]";
     const gsl_vector* x = tangential_system_.solve(context.str());
     tangential_solution s{};
     s.f = f_;
     s.c0 = c0;
+    s.start = start;
     s.xi = gsl_vector_get(x, n_);
     s.sign = 1.0;
     s.psi_b.resize(n_);
@@ -213,8 +219,8 @@ tangential_solution one_parameter_solver::solve(double Q, std::optional<double> 
 
 double one_parameter_solver::q0(const tangential_solution& s, double r) const {
     const double rho = s.rho();
-    if (r <= -1.0 || r >= s.c0 || s.psi_b.empty()) return 0.0;
-    const double t = (r + 1.0 - rho) / rho;
+    if (r <= s.start || r >= s.c0 || s.psi_b.empty()) return 0.0;
+    const double t = (r - s.start) / rho - 1.0;
     return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
 }
 
@@ -225,15 +231,15 @@ double one_parameter_solver::traction(const tangential_solution& s, double r) co
 double one_parameter_solver::slip_velocity_magnitude(const tangential_solution& s, double r) const {
     // (3.6) in the limit: v = xi - (H[p1] + eps1 p1') with p1 = f p + q. On the slip zone p1 = f p, and
     // H[p] + eps1 p' = -G by the normal equation, so v = xi + f G(r) - H[q](r), H[q] outside the stick
-    // interval (t > 1: cauchy_u_series, no principal value).
+    // interval (|t| > 1: cauchy_u_series, no principal value; t < -1 on a slip zone [-1, start)).
     const double rho = s.rho();
-    const double hq = s.psi_b.empty() ? 0.0 : cauchy_u_series(s.psi_b, (r + 1.0 - rho) / rho);
+    const double hq = s.psi_b.empty() || rho == 0.0 ? 0.0 : cauchy_u_series(s.psi_b, (r - s.start) / rho - 1.0);
     return s.sign * s.xi + f_ * G(r) - hq;
 }
 
 double one_parameter_solver::slip_velocity(const tangential_solution& s, double r) const {
-    if (r <= s.c0) return 0.0;  // the stick zone (3.2)
-    return s.sign * slip_velocity_magnitude(s, std::min(r, 1.0));
+    if (r <= s.c0 && r >= s.start) return 0.0;  // the stick zone (3.2)
+    return s.sign * slip_velocity_magnitude(s, std::max(-1.0, std::min(r, 1.0)));
 }
 
 traction_checks one_parameter_solver::check(const tangential_solution& s) const {
@@ -246,16 +252,23 @@ traction_checks one_parameter_solver::check(const tangential_solution& s) const 
         if (!(v >= margin)) margin = v;  // a NaN reads as a failed check
     };
     for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
-    if (s.c0 > -1.0)
+    if (s.c0 > s.start)
         for (int i = 0; i < check_points; ++i) {
-            const double r = grid_point(-1.0, s.c0, i);
+            const double r = grid_point(s.start, s.c0, i);
             lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
         }
+    // The slip zones: (c0, 1], and [-1, start) when the stick zone starts inside (7(g)).
     if (s.c0 < 1.0)
         for (int i = 0; i < check_points; ++i)
             lower(c.slip_margin, slip_velocity_magnitude(s, grid_point(s.c0, 1.0, i)) / f_);
+    if (s.start > -1.0)
+        for (int i = 0; i < check_points; ++i)
+            lower(c.slip_margin, slip_velocity_magnitude(s, grid_point(-1.0, s.start, i)) / f_);
     c.pressure_holds = c.pressure_margin >= 0.0;
-    c.stick_holds = c.stick_margin >= 0.0;
+    // (3.3) to the rounding of the collocation solution, as tangential_solver::check: the terms of
+    // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q.
+    c.stick_rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
+    c.stick_holds = c.stick_margin >= -c.stick_rounding;
     c.slip_holds = c.slip_margin > 0.0;
     return c;
 }

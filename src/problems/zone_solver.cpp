@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 
@@ -14,7 +15,6 @@ namespace roughroll {
 
 namespace {
 constexpr int start_scan = 32;            // trial starts of the stick zone, bracketing the entry condition
-constexpr int least_G_samples = 2001;     // samples of G for its least value (gross sliding)
 constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 // Below this 1 - |Q|/f the search starts from gross sliding (continuation) before scanning.
@@ -69,33 +69,11 @@ double zone_solver::stick_end(double start, double magnitude) {
 tangential_solution zone_solver::gross_sliding() {
     // |Q| = f: p1 = f p everywhere and v = xi + f G >= 0 with equality somewhere: the stick
     // zone shrinks to the point where G is least, xi = -f min G (docs/formulation.md 7(d)).
-    std::vector<double> r(least_G_samples);
-    for (int i = 0; i < least_G_samples; ++i) r[i] = 1.0 - 2.0 * i / (least_G_samples - 1);  // descending
-    const std::vector<double> g = single_.G(r);
-    for (double value : g)
-        if (!std::isfinite(value))
-            throw numerical_error("zone solver: G of (3.25) is not finite (roughness parameters too large?)");
-    const auto least = static_cast<int>(std::min_element(g.begin(), g.end()) - g.begin());
-    double lo = r[std::min(least + 1, least_G_samples - 1)], hi = r[std::max(least - 1, 0)];
-    // Golden section on the sample's bracket (G is smooth inside (-1, 1)).
-    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
-    double g1 = single_.G(x1), g2 = single_.G(x2);
-    while (hi - lo > 1e-12) {
-        if (g1 <= g2) {
-            hi = x2, x2 = x1, g2 = g1;
-            x1 = hi - golden * (hi - lo), g1 = single_.G(x1);
-        } else {
-            lo = x1, x1 = x2, g1 = g2;
-            x2 = lo + golden * (hi - lo), g2 = single_.G(x2);
-        }
-    }
-    double point = 0.5 * (lo + hi), value = single_.G(point);
-    const double at_edge = single_.G(-1.0);
-    if (at_edge <= value) point = -1.0, value = at_edge;
-    tangential_solution s = gross_sliding_solution(f_, value);
-    s.c0 = point;
-    s.start = point;
+    const least_value least = least_on_contact([this](const std::vector<double>& r) { return single_.G(r); },
+                                               [this](double r) { return single_.G(r); });
+    tangential_solution s = gross_sliding_solution(f_, least.value);
+    s.c0 = least.r;
+    s.start = least.r;
     return s;
 }
 

@@ -26,6 +26,7 @@
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/one_parameter.hpp"
+#include "roughroll/problems/one_parameter_zones.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
@@ -150,6 +151,7 @@ private:
     std::unique_ptr<tangential_solver> tangential_;
     std::unique_ptr<zone_solver> zones_;  // the general search, on tangential_
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
+    std::unique_ptr<one_parameter_zones> limit_zones_;  // its general search (docs/formulation.md 7(g))
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
     std::optional<tangential_solution> last_coarse_;  // level n/2 of the last general-path point
     std::optional<tangential_solution> last_level_point_;  // level_point's cache

@@ -64,6 +64,10 @@ public:
     // The point whose stick zone ends at c0 in [-1, 1]: Q = Q(c0), no root search.
     tangential_solution at_stick_end(double c0, bool checked = true);
     double load(double c0);  // Q(c0) = f + rho (pi/2) psi_b[0], Q >= 0 branch
+    // The stick equation on the zone [start, c0] with slip on both sides in the direction of Q
+    // (docs/formulation.md 7(g)): r = start + rho (t + 1), rho = (c0 - start)/2; the |Q| branch,
+    // unchecked, Q = f + rho (pi/2) psi_b[0]. solve() is start = -1.
+    tangential_solution solve_on_zone(double start, double c0);
 
     double pressure_slope(double r) const;  // p'(r) on [-1, 1]
     double G(double r) const;               // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)

@@ -1,0 +1,118 @@
+#include "roughroll/problems/one_parameter_zones.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/least_value.hpp"
+#include "roughroll/numerics/root_search.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int start_scan = 32;           // trial starts of the stick zone in [-1, r*], bracketing E = 0
+constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
+}  // namespace
+
+one_parameter_zones::one_parameter_zones(one_parameter_solver& single) : single_(single), f_(single.friction()) {}
+
+double one_parameter_zones::entry_velocity(const tangential_solution& s) const {
+    // 7(g): at t = -1 the stick equation reads (eps1/rho) q'(-1) = xi + f G(start) - H[q](-1), and
+    // H[sin((j+1) phi)] = -T_{j+1}(t) gives H[q](-1) = -sum_j c_j T_{j+1}(-1) = sum_j (-1)^j c_j.
+    double h = 0.0;
+    for (std::size_t j = 0; j < s.psi_b.size(); ++j) h += (j % 2 == 0 ? 1.0 : -1.0) * s.psi_b[j];
+    return s.xi + f_ * single_.G(s.start) - h;
+}
+
+tangential_solution one_parameter_zones::gross_sliding() const {
+    // |Q| = f: v = xi + f G >= 0 vanishing where G is least (7(d)); G'(-1) = -infinity when
+    // eps2 > eps1, so the point is inside the contact.
+    const one_parameter_solver& g = single_;
+    const least_value least = least_on_contact(
+        [&g](const std::vector<double>& r) {
+            std::vector<double> out(r.size());
+            for (std::size_t i = 0; i < r.size(); ++i) out[i] = g.G(r[i]);
+            return out;
+        },
+        [&g](double r) { return g.G(r); });
+    tangential_solution s = gross_sliding_solution(f_, least.value);
+    s.c0 = least.r;
+    s.start = least.r;
+    return s;
+}
+
+double one_parameter_zones::stick_end(double start, double magnitude, std::optional<double> guess) {
+    // Q(start, c0) - |Q| in the gap form rho (pi/2) c_0 + (f - |Q|) (7(d)), falling from f - |Q|
+    // at c0 = start. Brent on a bracket of half-width 1e-3 around `guess` (the end for a nearby
+    // start) when it brackets, else on (start, 1].
+    const auto excess = [this, start, magnitude](double c0) {
+        if (c0 <= start) return f_ - magnitude;
+        const tangential_solution t = single_.solve_on_zone(start, c0);
+        return t.rho() * M_PI_2 * t.psi_b[0] + (f_ - magnitude);
+    };
+    const char* what = "Brent search for the stick zone's end";
+    if (guess) {
+        const double lo = std::max(start, *guess - 1e-3), hi = std::min(1.0, *guess + 1e-3);
+        if (lo < hi && excess(lo) > 0.0 && excess(hi) < 0.0) return brent_root(excess, lo, hi, end_tolerance, 0.0, 200, what).x;
+    }
+    if (!(excess(1.0) < 0.0)) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "one-parameter zone search: no stick zone from r = " << start << " carries |Q|/f = " << magnitude / f_;
+        throw numerical_error(msg.str());
+    }
+    return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, what).x;
+}
+
+tangential_solution one_parameter_zones::general(double magnitude, double single_end) {
+    // The paper's zone first: E <= 0 at start = -1 is the edge inequality (7(g)).
+    tangential_solution at_edge = single_.solve_on_zone(-1.0, single_end);
+    const double at_edge_entry = entry_velocity(at_edge);
+    if (at_edge_entry <= 0.0) return at_edge;
+    // Bracket E = 0 along the family of zones [s, c(s)] that carry |Q|: starts from -1 towards
+    // the point where G is least (the zone collapses onto it at gross sliding), then Brent.
+    // The zone straddles r*, where G is least, and collapses onto it at gross sliding: the
+    // starts scanned lie in [-1, r*].
+    const double point = gross_sliding().c0;
+    std::optional<double> end = single_end;  // the end of the last zone solved, near the next one's
+    const auto entry = [this, magnitude, &end](double start) {
+        end = stick_end(start, magnitude, end);
+        return entry_velocity(single_.solve_on_zone(start, *end));
+    };
+    double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
+    for (int k = 1; std::isnan(hi) && k <= start_scan; ++k) {
+        const double trial = -1.0 + (point + 1.0) * k / start_scan;
+        double e;
+        try {
+            e = entry(trial);
+        } catch (const numerical_error&) {
+            break;
+        }
+        if (e <= 0.0) hi = trial;
+        else lo = trial;
+    }
+    if (std::isnan(hi))
+        throw numerical_error(
+            "one-parameter zone search: the entry condition v(s-) = 0 has no root on the scanned starts of the "
+            "stick zone (a structure the solver does not cover)");
+    const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
+    tangential_solution s = single_.solve_on_zone(r.x, stick_end(r.x, magnitude, end));
+    s.iterations = r.iterations;
+    return s;
+}
+
+tangential_solution one_parameter_zones::solve(double Q, bool force_general) {
+    const double magnitude = load_magnitude(Q, f_);
+    tangential_solution single = single_.solve(Q);
+    if (magnitude == 0.0 || (!force_general && single.checks.hold())) return single;
+    check_load_resolvable(magnitude, f_);
+    tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, single.c0);
+    s.general = s.start > -1.0;
+    apply_load_sign(s, Q, "one-parameter zone search");
+    s.checks = single_.check(s);
+    return s;
+}
+
+}  // namespace roughroll
