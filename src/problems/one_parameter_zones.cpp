@@ -1,5 +1,6 @@
 #include "roughroll/problems/one_parameter_zones.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -12,8 +13,10 @@
 namespace roughroll {
 
 namespace {
-constexpr int start_scan = 32;           // trial starts of the stick zone in [-1, r*], bracketing E = 0
+constexpr int start_scan = 16;           // trial starts of the stick zone in [-1, r*], bracketing E = 0
 constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
+constexpr int newton_iterations = 40;
+constexpr double newton_tolerance = 1e-12;  // Newton's last full step in the zone ends, absolute in r
 }  // namespace
 
 one_parameter_zones::one_parameter_zones(one_parameter_solver& single) : single_(single), f_(single.friction()) {}
@@ -82,6 +85,7 @@ tangential_solution one_parameter_zones::general(double magnitude, double single
         return entry_velocity(single_.solve_on_zone(start, *end));
     };
     double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
+    double lo_entry = at_edge_entry, hi_entry = 0.0, lo_end = single_end, hi_end = 0.0;
     for (int k = 1; std::isnan(hi) && k <= start_scan; ++k) {
         const double trial = -1.0 + (point + 1.0) * k / start_scan;
         double e;
@@ -90,17 +94,65 @@ tangential_solution one_parameter_zones::general(double magnitude, double single
         } catch (const numerical_error&) {
             break;
         }
-        if (e <= 0.0) hi = trial;
-        else lo = trial;
+        if (e <= 0.0) hi = trial, hi_entry = e, hi_end = *end;
+        else lo = trial, lo_entry = e, lo_end = *end;
     }
     if (std::isnan(hi))
         throw numerical_error(
             "one-parameter zone search: the entry condition v(s-) = 0 has no root on the scanned starts of the "
             "stick zone (a structure the solver does not cover)");
+    // Newton from the interpolated zone; Brent on the bracket when it fails.
+    const double w = lo_entry / (lo_entry - hi_entry);
+    if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;
     const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
     tangential_solution s = single_.solve_on_zone(r.x, stick_end(r.x, magnitude, end));
     s.iterations = r.iterations;
     return s;
+}
+
+std::optional<tangential_solution> one_parameter_zones::newton(double magnitude, double start, double c0) {
+    // Newton on F = (log(-rho int q / (f - |Q|)), E) in the zone's midpoint m and log rho, as
+    // zone_solver's (docs/formulation.md 7(e)): the load in the gap form, relative; E needs no
+    // scale (Newton's step does not depend on the residuals' units). The Jacobian by forward
+    // differences (1e-6 rho in m, 1e-6 in log rho), steps halved to keep -1 < s < c <= 1. It
+    // stops when a full step is below 1e-12 in r; empty when it does not converge.
+    const double gap = f_ - magnitude;
+    const auto residual = [this, gap](double m, double u) -> std::optional<std::array<double, 2>> {
+        const double rho = std::exp(u);
+        if (!(m - rho > -1.0 && m + rho <= 1.0)) return std::nullopt;
+        const tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
+        const double deficit = -rho * M_PI_2 * t.psi_b[0];
+        if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
+        return std::array<double, 2>{std::log(deficit / gap), entry_velocity(t)};
+    };
+    if (!(gap > 0.0 && c0 > start)) return std::nullopt;
+    double m = 0.5 * (start + c0), u = std::log(0.5 * (c0 - start));
+    auto F = residual(m, u);
+    for (int iteration = 1; F && iteration <= newton_iterations; ++iteration) {
+        const double h = 1e-6 * std::exp(u), k = 1e-6;
+        const auto Fm = residual(m - h, u), Fu = residual(m, u - k);
+        if (!Fm || !Fu) return std::nullopt;
+        const double a = ((*F)[0] - (*Fm)[0]) / h, b = ((*F)[0] - (*Fu)[0]) / k;
+        const double c = ((*F)[1] - (*Fm)[1]) / h, d = ((*F)[1] - (*Fu)[1]) / k;
+        const double det = a * d - b * c;
+        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
+        const double dm = -(d * (*F)[0] - b * (*F)[1]) / det, du = -(a * (*F)[1] - c * (*F)[0]) / det;
+        double step = 1.0;
+        std::optional<std::array<double, 2>> next;
+        while (!(next = residual(m + step * dm, u + step * du))) {
+            step *= 0.5;
+            if (step < 1e-6) return std::nullopt;
+        }
+        F = next;
+        m += step * dm;
+        u += step * du;
+        if (step == 1.0 && std::fabs(dm) + std::exp(u) * std::fabs(du) <= newton_tolerance) {
+            tangential_solution s = single_.solve_on_zone(m - std::exp(u), m + std::exp(u));
+            s.iterations = iteration;
+            return s;
+        }
+    }
+    return std::nullopt;
 }
 
 tangential_solution one_parameter_zones::solve(double Q, bool force_general) {

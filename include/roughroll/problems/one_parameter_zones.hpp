@@ -12,8 +12,9 @@
 //     the slip velocity vanishing where material enters the stick zone;
 //   - gross sliding |Q| = f: stick only at the point r* where G is least, xi = -f min G.
 // (s, c0) solve Q(s, c0) = |Q| (in the gap form rho int q + (f - |Q|), 7(d)) and E = 0 by
-// nested Brent searches on a scanned bracket of s. Other structures are not solved: the search
-// throws numerical_error, and an answer that fails its checks is reported as such.
+// Newton's method in (m, log rho) from a scanned bracket of s, nested Brent searches as the
+// fallback. Other structures are not solved: the search throws numerical_error, and an answer
+// that fails its checks is reported as such.
 #pragma once
 
 #include <optional>
@@ -41,6 +42,7 @@ public:
 private:
     tangential_solution general(double magnitude, double single_end);
     tangential_solution gross_sliding() const;
+    std::optional<tangential_solution> newton(double magnitude, double start, double c0);
     // c0 with Q(start, c0) = magnitude; `guess`: the end for a nearby start.
     double stick_end(double start, double magnitude, std::optional<double> guess = std::nullopt);
 
