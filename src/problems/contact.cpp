@@ -102,6 +102,15 @@ tangential_solution contact::point(double Q) {
         }
     }
     if (!reported_) {
+        if (limit_ && options_.zones != zone_search::single) {
+            // The one-parameter paper's zone can be singular where the general zone is not (its
+            // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)).
+            try {
+                return zones_for(Q, level_point(Q, true, start, start_slope), nullptr);
+            } catch (const numerical_error&) {
+                return general_point(Q);
+            }
+        }
         return zones_for(Q, level_point(Q, true, start, start_slope), nullptr);
     }
     tangential_solution coarse = companion_->level_point(Q, false, start, start_slope);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
@@ -16,6 +17,7 @@ namespace {
 constexpr int start_scan = 16;           // trial starts of the stick zone in [-1, r*], bracketing E = 0
 constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
 constexpr int newton_iterations = 40;
+constexpr double near_sliding = 1e-4;  // below this 1 - |Q|/f Newton starts from the asymptotic zone
 constexpr double newton_tolerance = 1e-12;  // Newton's last full step in the zone ends, absolute in r
 }  // namespace
 
@@ -69,23 +71,31 @@ double one_parameter_zones::stick_end(double start, double magnitude, std::optio
     return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, what).x;
 }
 
-tangential_solution one_parameter_zones::general(double magnitude, double single_end) {
-    // The paper's zone first: E <= 0 at start = -1 is the edge inequality (7(g)).
-    tangential_solution at_edge = single_.solve_on_zone(-1.0, single_end);
-    const double at_edge_entry = entry_velocity(at_edge);
-    if (at_edge_entry <= 0.0) return at_edge;
+tangential_solution one_parameter_zones::general(double magnitude, std::optional<double> single_end) {
+    // The paper's zone first: E <= 0 at start = -1 is the edge inequality (7(g)). Without it
+    // (its system singular: near gross sliding its zone shrinks onto r = -1) the scan decides.
+    double at_edge_entry = std::numeric_limits<double>::quiet_NaN();
+    if (single_end) {
+        tangential_solution at_edge = single_.solve_on_zone(-1.0, *single_end);
+        at_edge_entry = entry_velocity(at_edge);
+        if (at_edge_entry <= 0.0) return at_edge;
+    }
     // Bracket E = 0 along the family of zones [s, c(s)] that carry |Q|: starts from -1 towards
     // the point where G is least (the zone collapses onto it at gross sliding), then Brent.
     // The zone straddles r*, where G is least, and collapses onto it at gross sliding: the
     // starts scanned lie in [-1, r*].
     const double point = gross_sliding().c0;
+    // Near gross sliding Newton starts from the asymptotic zone of 7(g) first.
+    if (f_ - magnitude <= near_sliding * f_)
+        if (const auto zone = asymptotic_zone(magnitude, point))
+            if (auto s = newton(magnitude, zone->first, zone->second)) return *s;
     std::optional<double> end = single_end;  // the end of the last zone solved, near the next one's
     const auto entry = [this, magnitude, &end](double start) {
         end = stick_end(start, magnitude, end);
         return entry_velocity(single_.solve_on_zone(start, *end));
     };
     double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
-    double lo_entry = at_edge_entry, hi_entry = 0.0, lo_end = single_end, hi_end = 0.0;
+    double lo_entry = at_edge_entry, hi_entry = 0.0, lo_end = single_end.value_or(-1.0), hi_end = 0.0;
     for (int k = 1; std::isnan(hi) && k <= start_scan; ++k) {
         const double trial = -1.0 + (point + 1.0) * k / start_scan;
         double e;
@@ -102,12 +112,28 @@ tangential_solution one_parameter_zones::general(double magnitude, double single
             "one-parameter zone search: the entry condition v(s-) = 0 has no root on the scanned starts of the "
             "stick zone (a structure the solver does not cover)");
     // Newton from the interpolated zone; Brent on the bracket when it fails.
-    const double w = lo_entry / (lo_entry - hi_entry);
+    const double w = std::isnan(lo_entry) ? 1.0 : lo_entry / (lo_entry - hi_entry);
     if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;
     const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
     tangential_solution s = single_.solve_on_zone(r.x, stick_end(r.x, magnitude, end));
     s.iterations = r.iterations;
     return s;
+}
+
+std::optional<std::pair<double, double>> one_parameter_zones::asymptotic_zone(double magnitude, double point) const {
+    // A short zone at r*, where G is least: eps1/rho dominates H (the brush model), and with
+    // f G = f G* + k (r - r*)^2, k = f G''/2, the stick equation eps1 q' = xi + f G, q(s) = q(c) = 0
+    // and the entry condition q'(s) = 0 give the zone [r* - L/3, r* + 2L/3] and
+    // f - |Q| = k L^4/(36 eps1) (docs/formulation.md 7(g)). Empty at an edge or where G'' <= 0.
+    const double eps1 = single_.eps().tangential;
+    const double room = std::min(1.0 + point, 1.0 - point);
+    if (!(eps1 > 0.0 && room > 0.0)) return std::nullopt;
+    const double h = std::min(1e-3, 0.25 * room);
+    const double k = 0.5 * f_ * (single_.G(point - h) - 2.0 * single_.G(point) + single_.G(point + h)) / (h * h);
+    if (!(k > 0.0 && std::isfinite(k))) return std::nullopt;
+    const double L = std::pow(36.0 * eps1 * (f_ - magnitude) / k, 0.25);
+    if (!(point - L / 3.0 > -1.0 && point + 2.0 * L / 3.0 <= 1.0)) return std::nullopt;
+    return std::make_pair(point - L / 3.0, point + 2.0 * L / 3.0);
 }
 
 std::optional<tangential_solution> one_parameter_zones::newton(double magnitude, double start, double c0) {
@@ -157,10 +183,18 @@ std::optional<tangential_solution> one_parameter_zones::newton(double magnitude,
 
 tangential_solution one_parameter_zones::solve(double Q, bool force_general) {
     const double magnitude = load_magnitude(Q, f_);
-    tangential_solution single = single_.solve(Q);
-    if (magnitude == 0.0 || (!force_general && single.checks.hold())) return single;
+    std::optional<tangential_solution> single;
+    try {
+        single = single_.solve(Q);
+    } catch (const numerical_error&) {
+        // The paper's zone near gross sliding when eps2 > eps1: its c0 tends to -1 and its system
+        // (stiffness eps1/rho) is singular to working precision; the general zone is not.
+        if (magnitude == 0.0 || magnitude == f_) throw;
+    }
+    if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
     check_load_resolvable(magnitude, f_);
-    tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, single.c0);
+    tangential_solution s = magnitude == f_ ? gross_sliding()
+                                            : general(magnitude, single ? std::optional<double>(single->c0) : std::nullopt);
     s.general = s.start > -1.0;
     apply_load_sign(s, Q, "one-parameter zone search");
     s.checks = single_.check(s);

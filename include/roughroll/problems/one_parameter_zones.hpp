@@ -18,6 +18,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 
 #include "roughroll/problems/one_parameter.hpp"
 
@@ -40,9 +41,11 @@ public:
     double entry_velocity(const tangential_solution& s) const;
 
 private:
-    tangential_solution general(double magnitude, double single_end);
+    tangential_solution general(double magnitude, std::optional<double> single_end);
     tangential_solution gross_sliding() const;
     std::optional<tangential_solution> newton(double magnitude, double start, double c0);
+    // The zone to leading order near gross sliding at r* = point (7(g)), as (start, c0).
+    std::optional<std::pair<double, double>> asymptotic_zone(double magnitude, double point) const;
     // c0 with Q(start, c0) = magnitude; `guess`: the end for a nearby start.
     double stick_end(double start, double magnitude, std::optional<double> guess = std::nullopt);
 
