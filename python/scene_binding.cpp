@@ -113,7 +113,7 @@ struct curve_columns {
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
     const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver);
+    contact c(s.surfaces, s.friction, s.solver, s.materials);
     const std::vector<curve_point> curve =
         sweep ? swept_curve(c, points) : creep_curve(c, loads ? *loads : curve_loads(points, s.friction));
     curve_columns out;

@@ -9,6 +9,7 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 
 namespace roughroll {
 
@@ -22,9 +23,10 @@ kernel widest_kernel(const roughness& r) {
 }
 }  // namespace
 
-contact::contact(const roughness& surfaces, double f, const solver_options& options)
-    : surfaces_(surfaces), options_(options), f_(f) {
+contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
+    : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
+    check_dissimilar(materials, options);
     const int n = options.nodes();
     if (options.how == method::one_parameter) {
         if (options.zones == zone_search::general)
@@ -41,7 +43,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
             throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                    ": the coarse level n/2 is not in the asymptotic range of product integration "
                                    "for these kernels; increase n or use method 'product'");
-        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones});
+        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones}, materials);
     }
     normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how)));
     normal_->how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
@@ -184,7 +186,7 @@ bool contact::build_levels() {
         for (const auto& c : owned_levels_)
             if (c->nodes() == m) return c.get();
         try {
-            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}));
+            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}, materials_));
             return owned_levels_.back().get();
         } catch (const resolution_error&) {
             return nullptr;
@@ -225,7 +227,7 @@ std::optional<tangential_solution> contact::above_finest(const tangential_soluti
     const int m = 2 * nodes();
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
-        if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()});
+        if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
         return swept ? finer_->level_at_stick_end(own.c0, false) : finer_->level_point(s.Q, false);
     } catch (const resolution_error&) {
         return std::nullopt;

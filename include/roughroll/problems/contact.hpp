@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "roughroll/model/carter.hpp"
+#include "roughroll/model/dissimilar.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/model/roughness.hpp"
@@ -58,7 +59,9 @@ struct error_estimate {
 
 class contact {
 public:
-    contact(const roughness& surfaces, double f, const solver_options& options);
+    // `materials`: Dundurs' beta_D and the coupling level of dissimilar rollers (docs/formulation.md
+    // section 8); the default beta_D = 0 is the paper's problem, solved by exactly the same calls.
+    contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {});
 
     // The normal solution as reported (lambda extrapolated for method::extrapolated).
     const normal_solution& normal() const;
@@ -140,6 +143,7 @@ private:
     roughness surfaces_;
     solver_options options_;
     double f_;
+    dissimilar materials_;
     std::unique_ptr<contact> companion_;  // method::extrapolated: the coarse level n/2 (product)
     std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
     std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
