@@ -58,6 +58,7 @@ nlohmann::json to_json(const point_report& r) {
                     {"c0", r.estimate->c0},
                     {"xi", r.estimate->xi},
                     {"against", r.estimate->against}};
+    if (r.estimate && r.estimate->start != 0.0) estimate["stick_start"] = r.estimate->start;  // dissimilar rollers
     nlohmann::json si = nullptr;
     if (r.si)
         si = {{"a_m", r.si->a},
@@ -83,6 +84,8 @@ nlohmann::json to_json(const point_report& r) {
         {"stick_start", s.start},
         {"zones", zones_json(s)},
         {"zone_path", zone_path(s)},
+        // Dundurs' beta_D of the solution (docs/formulation.md 8): its forcing is sigma beta_D, sigma = sign.
+        {"beta_d", s.sign * s.forcing},
         {"xi", s.xi},
         {"hertz_load_ratio", r.normal.lambda},
         {"gamma", r.normal.gamma},
@@ -111,8 +114,11 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
         << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
+    if (s.forcing != 0.0)
+        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
+            << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string())
             << ", xi " << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
     else
         out << "  error estimate      unavailable (n/2 too coarse for the kernels, 2n above the largest n)\n";

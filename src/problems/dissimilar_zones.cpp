@@ -1,8 +1,36 @@
 #include "roughroll/problems/dissimilar_zones.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include <gsl/gsl_math.h>
+
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/numerics/root_search.hpp"
 
 namespace roughroll {
+
+namespace {
+constexpr int start_scan = 32;            // trial starts of the stick zone (as zone_solver's scan)
+constexpr int least_samples = 2001;       // samples of b p + f G for its least value (gross sliding)
+constexpr int shape_samples = 2001;       // samples of p for "even and decreasing" (complete slip)
+constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
+constexpr int newton_iterations = 40;
+constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
+
+std::string not_built(double Q, double f, const std::string& why) {
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "dissimilar rollers at Q/f = " << Q / f << ": " << why
+        << " (docs/formulation.md 8(g), 8(j)): not built yet";
+    return msg.str();
+}
+}  // namespace
 
 void check_dissimilar(const dissimilar& materials, const solver_options& options) {
     check_beta_d(materials.beta_d);
@@ -16,7 +44,222 @@ void check_dissimilar(const dissimilar& materials, const solver_options& options
     if (options.zones == zone_search::single)
         throw input_error("zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
                           "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'");
-    throw input_error("beta_d != 0 (dissimilar rollers) is not solved yet");
+}
+
+double load_between(const normal_solution& normal, double lo, double hi) {
+    // p = phi(r) sqrt(1 - r^2), phi = sum_j b_j U_j(r) (4.1). With r = cos theta,
+    // int U_j sqrt(1 - r^2) dr = int sin((j + 1) theta) sin(theta) d theta
+    //   = (1/2) int [cos(j theta) - cos((j + 2) theta)] d theta, from theta(hi) to theta(lo).
+    const double t_lo = std::acos(std::clamp(hi, -1.0, 1.0)), t_hi = std::acos(std::clamp(lo, -1.0, 1.0));
+    const auto primitive = [](int j, double t) {
+        const double first = j == 0 ? t : std::sin(j * t) / j;
+        return 0.5 * (first - std::sin((j + 2) * t) / (j + 2));
+    };
+    double sum = 0.0;
+    for (std::size_t j = 0; j < normal.b.size(); ++j) {
+        const int k = static_cast<int>(j);
+        sum += normal.b[j] * (primitive(k, t_hi) - primitive(k, t_lo));
+    }
+    return sum;
+}
+
+complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, double Q_over_f) {
+    check_beta_d(beta_d);
+    if (beta_d == 0.0) throw input_error("complete slip: beta_d = 0 has no complete-slip creep of order beta_d");
+    if (!(std::fabs(Q_over_f) <= 1.0)) throw input_error("complete slip: |Q/f| must be at most 1");
+    // 8(f) needs p even and decreasing in |r|: then sgn(beta_D) v > 0 exactly on a central band.
+    const double scale = normal.pressure(0.0);
+    double previous = scale;
+    for (int i = 1; i < shape_samples; ++i) {
+        const double r = static_cast<double>(i) / (shape_samples - 1) * (1.0 - 1e-9);
+        const double p = normal.pressure(r), mirrored = normal.pressure(-r);
+        if (std::fabs(p - mirrored) > 1e-10 * scale || p > previous + 1e-12 * scale)
+            throw input_error("complete slip (docs/formulation.md 8(f)): the pressure is not even and decreasing in "
+                              "|r| (at r = " + shortest(r) + "), so the central band of slip is not derived");
+        previous = p;
+    }
+    const double target = 0.5 * (1.0 + (beta_d > 0.0 ? Q_over_f : -Q_over_f));
+    const double total = load_between(normal, -1.0, 1.0);
+    complete_slip c{};
+    if (target <= 0.0) {
+        c.r_c = 0.0;
+    } else if (target >= total) {
+        c.r_c = 1.0;
+    } else {
+        c.r_c = brent_root([&](double r) { return load_between(normal, -r, r) - target; }, 0.0, 1.0, 1e-15, 0.0, 200,
+                           "complete slip: the edge of the central band")
+                    .x;
+    }
+    c.xi = -beta_d * normal.pressure(c.r_c);
+    return c;
+}
+
+dissimilar_zones::dissimilar_zones(tangential_solver& solver, double beta_d)
+    : solver_(solver), beta_d_(beta_d), f_(solver.friction()) {
+    check_beta_d(beta_d);
+}
+
+std::optional<double> dissimilar_zones::stick_end(double start, double magnitude, double b) {
+    // Q(start, c0) is f with no stick zone (c0 = start) and falls as the zone grows; a start
+    // from which even c0 = 1 carries more than |Q| has no zone (empty).
+    const auto excess = [&](double c0) {
+        return (c0 <= start ? f_ : solver_.solve_on_zone(start, c0, b).Q) - magnitude;
+    };
+    if (!(excess(1.0) < 0.0)) return std::nullopt;
+    return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, "Brent search for the stick zone's end").x;
+}
+
+std::optional<tangential_solution> dissimilar_zones::newton(double magnitude, double b, double start, double c0) {
+    // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint m and half-length rho, as
+    // zone_solver's (docs/formulation.md 7(e)), with the forcing b in every solve; the Jacobian by
+    // forward differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
+    const auto residual = [&](double m, double rho) {
+        const tangential_solution t = solver_.solve_on_zone(m - rho, m + rho, b);
+        return std::array<double, 2>{(t.Q - magnitude) / f_, zone_solver::entry_coefficient(t)};
+    };
+    double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
+    if (!(rho > 0.0 && m - rho > -1.0 && m + rho <= 1.0)) return std::nullopt;
+    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
+        const auto F = residual(m, rho);
+        const double h = 1e-7 * rho;
+        const auto Fm = residual(m - h, rho);
+        const auto Fr = residual(m, rho - h);
+        const double a = (F[0] - Fm[0]) / h, bq = (F[0] - Fr[0]) / h;
+        const double c = (F[1] - Fm[1]) / h, d = (F[1] - Fr[1]) / h;
+        const double det = a * d - bq * c;
+        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
+        const double dm = -(d * F[0] - bq * F[1]) / det, dr = -(a * F[1] - c * F[0]) / det;
+        double step = 1.0;
+        while (!(rho + step * dr > 0.0 && m + step * (dm - dr) - rho > -1.0 && m + step * (dm + dr) + rho <= 1.0)) {
+            step *= 0.5;
+            if (step < 1e-6) return std::nullopt;
+        }
+        m += step * dm;
+        rho += step * dr;
+        if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
+            tangential_solution s = solver_.solve_on_zone(m - rho, m + rho, b);
+            s.iterations = iteration;
+            return s;
+        }
+    }
+    return std::nullopt;
+}
+
+tangential_solution dissimilar_zones::three_zones(double magnitude, double b, std::optional<zone_guess> guess) {
+    // With a guess (the coarser level's zone): Newton, accepted when its checks hold.
+    if (guess) {
+        if (auto s = newton(magnitude, b, guess->start, guess->c0)) {
+            s->checks = solver_.check(*s);
+            if (s->checks.hold()) return *s;
+        }
+    }
+    // Else scan the starts, each with the end that carries |Q|, for sign changes of the entry
+    // condition psi(-1); each bracket in turn (from the leading edge) by Newton from the
+    // interpolated zone, else Brent in the start; the first whose checks hold is the answer.
+    struct trial {
+        double start, end, entry;
+    };
+    std::vector<trial> trials;
+    for (int k = 1; k < start_scan; ++k) {
+        const double s = -1.0 + 2.0 * k / start_scan;
+        if (const auto end = stick_end(s, magnitude, b))
+            trials.push_back({s, *end, zone_solver::entry_coefficient(solver_.solve_on_zone(s, *end, b))});
+    }
+    std::optional<tangential_solution> first;
+    for (std::size_t k = 1; k < trials.size(); ++k) {
+        const trial& lo = trials[k - 1];
+        const trial& hi = trials[k];
+        if (!((lo.entry > 0.0) != (hi.entry > 0.0))) continue;
+        const double w = lo.entry / (lo.entry - hi.entry);
+        std::optional<tangential_solution> s =
+            newton(magnitude, b, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
+        if (!s) {
+            const auto entry = [&](double start) {
+                const auto end = stick_end(start, magnitude, b);
+                if (!end) throw numerical_error("dissimilar zones: no stick zone carries |Q| inside a bracket");
+                return zone_solver::entry_coefficient(solver_.solve_on_zone(start, *end, b));
+            };
+            try {
+                const root r = brent_root(entry, lo.start, hi.start, end_tolerance, 0.0, 200,
+                                          "Brent search for the stick zone's start");
+                s = solver_.solve_on_zone(r.x, *stick_end(r.x, magnitude, b), b);
+                s->iterations = r.iterations;
+            } catch (const numerical_error&) {
+                continue;
+            }
+        }
+        s->checks = solver_.check(*s);
+        if (s->checks.hold()) return *s;
+        if (!first) first = s;
+    }
+    if (first) return *first;  // the caller refuses it: its checks fail
+    throw numerical_error("no three-zone structure (slip, stick, slip in the direction of Q)");
+}
+
+tangential_solution dissimilar_zones::gross_sliding(double b) {
+    // |Q| = f: p1 = f p everywhere, v = xi' + b p + f G >= 0 vanishing at the least point r*,
+    // xi' = -min (b p + f G) (docs/formulation.md 8(g)); samples, then golden section on the bracket.
+    std::vector<double> r(least_samples);
+    for (int i = 0; i < least_samples; ++i) r[i] = 1.0 - 2.0 * i / (least_samples - 1);  // descending
+    const std::vector<double> g = solver_.G(r);
+    const normal_solution& normal = solver_.normal();
+    const auto value_at = [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); };
+    std::vector<double> w(least_samples);
+    for (int i = 0; i < least_samples; ++i) {
+        w[i] = b * normal.pressure(r[i]) + f_ * g[i];
+        if (!std::isfinite(w[i]))
+            throw numerical_error("dissimilar zones: G of (3.25) is not finite (roughness parameters too large?)");
+    }
+    const auto least = static_cast<int>(std::min_element(w.begin(), w.end()) - w.begin());
+    double lo = r[std::min(least + 1, least_samples - 1)], hi = r[std::max(least - 1, 0)];
+    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+    double v1 = value_at(x1), v2 = value_at(x2);
+    while (hi - lo > 1e-12) {
+        if (v1 <= v2) {
+            hi = x2, x2 = x1, v2 = v1;
+            x1 = hi - golden * (hi - lo), v1 = value_at(x1);
+        } else {
+            lo = x1, x1 = x2, v1 = v2;
+            x2 = lo + golden * (hi - lo), v2 = value_at(x2);
+        }
+    }
+    double point = 0.5 * (lo + hi), value = value_at(point);
+    for (double edge : {-1.0, 1.0})
+        if (value_at(edge) <= value) point = edge, value = value_at(edge);
+    tangential_solution s = gross_sliding_solution(f_, 0.0);
+    s.xi = -value;
+    s.c0 = point;
+    s.start = point;
+    s.forcing = b;
+    return s;
+}
+
+tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess) {
+    const double magnitude = load_magnitude(Q, f_);
+    if (magnitude == 0.0)
+        throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip)"));
+    check_load_resolvable(magnitude, f_);
+    const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
+    tangential_solution s;
+    try {
+        s = magnitude == f_ ? gross_sliding(b) : three_zones(magnitude, b, guess);
+    } catch (const numerical_error& e) {
+        throw numerical_error(not_built(Q, f_, std::string(e.what()) + "; the answer has other zones"));
+    }
+    s.general = true;
+    apply_load_sign(s, Q, "dissimilar zones");
+    s.checks = solver_.check(s);
+    return s;
+}
+
+void require_checks(const tangential_solution& s) {
+    if (s.checks.hold()) return;
+    throw numerical_error(not_built(
+        s.Q, s.f,
+        "the three zones slip, stick, slip in the direction of Q fail the checks (3.3)-(3.4) (margins: stick " +
+            shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
+            "); the answer has slip against Q at the leading edge (the blended stick traction) or five zones"));
 }
 
 }  // namespace roughroll

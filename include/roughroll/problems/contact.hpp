@@ -30,6 +30,7 @@
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -55,6 +56,7 @@ struct error_estimate {
     double Q;             // 0 for a point at a given Q (Q is then the input)
     std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
     bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
+    double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
 };
 
 class contact {
@@ -153,6 +155,13 @@ private:
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
     std::unique_ptr<zone_solver> zones_;  // the general search, on tangential_
+    // Dissimilar rollers (beta_D != 0, docs/formulation.md 8): the zones of Johnson's level, on
+    // tangential_; every point is reported at level n (not extrapolated), estimated on three levels.
+    std::unique_ptr<dissimilar_zones> dissimilar_;
+    std::optional<tangential_solution> last_dissimilar_;  // this level's last point
+    const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess);
+    tangential_solution dissimilar_point(double Q);
+    std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
     std::optional<tangential_solution> last_coarse_;  // level n/2 of the last general-path point

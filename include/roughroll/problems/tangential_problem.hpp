@@ -52,6 +52,10 @@ struct tangential_solution {
     // zone solver found slip on [-1, start) too, in the direction of Q (docs/formulation.md 7).
     double start = -1.0;
     bool general = false;  // found by zone_solver's search rather than the paper's single zone
+    // Dundurs' forcing of the |Q| problem (docs/formulation.md 8(e)): sigma beta_D, with sigma the
+    // slip direction of both slip zones; the stick equation's right side and the slip velocity
+    // gain forcing * p(r). 0 for the paper's problem.
+    double forcing = 0.0;
 
     double rho() const { return 0.5 * (c0 - start); }
     bool sticks(double r) const { return r >= start && r < c0; }  // r on the stick zone [start, c0)
@@ -102,7 +106,9 @@ public:
     // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
     // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
     // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is solve_system.
-    tangential_solution solve_on_zone(double start, double c0);
+    // `forcing`: Dundurs' sigma beta_D of docs/formulation.md 8(e), added as forcing * p(r) to
+    // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was.
+    tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0);
 
     double G(double r);                                          // (3.25)
     std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
