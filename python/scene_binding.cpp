@@ -81,8 +81,19 @@ py::object physical_dict(const scene& s) {
         return d;
     };
     py::dict d;
-    d["E"] = p.E;
-    d["nu"] = p.nu;
+    // One material (E, nu), or one per cylinder (docs/formulation.md 8(a)): the other form is None.
+    d["E"] = p.materials ? py::object(py::none()) : py::object(py::float_(p.E));
+    d["nu"] = p.materials ? py::object(py::none()) : py::object(py::float_(p.nu));
+    if (p.materials) {
+        for (int i = 0; i < 2; ++i) {
+            py::dict m;
+            m["shear_modulus"] = (*p.materials)[i].mu;
+            m["poisson"] = (*p.materials)[i].nu;
+            d[i == 0 ? "material1" : "material2"] = m;
+        }
+    }
+    d["compliance"] = compliance(p);
+    d["beta_d"] = dundurs_beta(p);
     d["R1"] = p.R1;
     d["R2"] = p.R2;
     d["P2"] = p.P2;

@@ -2,6 +2,7 @@
 
 
 #include "roughroll/model/carter.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -19,14 +20,14 @@ nlohmann::json cylinder_json(const cylinder_roughness& c) {
 // The zones of docs/formulation.md section 7, from r = -1 to 1.
 nlohmann::json zones_json(const tangential_solution& s) {
     nlohmann::json zones = nlohmann::json::array();
-    for (const zone& z : zones_of(s))
+    for (const zone& z : solution_zones(s))
         zones.push_back({{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
     return zones;
 }
 
 std::string zones_text(const tangential_solution& s) {
     std::string text;
-    for (const zone& z : zones_of(s)) {
+    for (const zone& z : solution_zones(s)) {
         if (!text.empty()) text += ", ";
         text += (z.stick ? "stick [" : std::string(z.direction > 0 ? "slip+ [" : "slip- [")) + shortest(z.from) + ", " +
                 shortest(z.to) + "]";
@@ -157,7 +158,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
-        out << ',' << zones_of(s).size() << ',' << shortest(s.start);
+        out << ',' << solution_zones(s).size() << ',' << shortest(s.start);
         if (si) {
             const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);

@@ -54,7 +54,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     tangential_ = std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces),
                                                       kernel::normal(surfaces), f);
     zones_ = std::make_unique<zone_solver>(*tangential_);
-    if (materials.beta_d != 0.0) dissimilar_ = std::make_unique<dissimilar_zones>(*tangential_, materials.beta_d);
+    if (materials.beta_d != 0.0)
+        dissimilar_ = std::make_unique<dissimilar_zones>(*tangential_, kernel::tangential(surfaces), materials.beta_d);
 }
 
 const normal_solution& contact::normal_level() const { return limit_ ? limit_->normal() : *normal_; }
@@ -354,8 +355,8 @@ contact::swept_point contact::at_stick_end(double c0) {
     return {s, estimate_from(s, own, at, true)};
 }
 
-const tangential_solution& contact::dissimilar_level_point(double Q, std::optional<zone_guess> guess) {
-    if (!last_dissimilar_ || !(last_dissimilar_->Q == Q)) last_dissimilar_ = dissimilar_->solve(Q, guess);
+const tangential_solution& contact::dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite) {
+    if (!last_dissimilar_ || !(last_dissimilar_->Q == Q)) last_dissimilar_ = dissimilar_->solve(Q, guess, opposite);
     return *last_dissimilar_;
 }
 
@@ -363,18 +364,20 @@ tangential_solution contact::dissimilar_point(double Q) {
     // The estimate's levels below this one first, coarsest first, each from the zone of the level
     // below (Newton), so that only the coarsest scans the starts of the stick zone.
     std::optional<zone_guess> guess;
+    bool opposite = false;
     if (build_levels()) {
         for (contact* level : levels_) {
             if (level == nullptr) break;
             try {
-                const tangential_solution& t = level->dissimilar_level_point(Q, guess);
+                const tangential_solution& t = level->dissimilar_level_point(Q, guess, opposite);
                 guess = zone_guess{t.start, t.c0};
+                opposite = t.opposite;
             } catch (const numerical_error&) {  // this level searches without a guess
                 guess.reset();
             }
         }
     }
-    tangential_solution s = dissimilar_level_point(Q, guess);
+    tangential_solution s = dissimilar_level_point(Q, guess, opposite);
     require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
     return s;
 }
@@ -388,7 +391,7 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
     while (levels_[self] != nullptr) ++self;
     std::array<tangential_solution, 3> at{};
     for (int i = 0; i < 3; ++i)
-        at[i] = levels_[i] ? levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}) : s;
+        at[i] = levels_[i] ? levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite) : s;
     const int order = level_method() == method::product ? 4 : 2;
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
     const rounding_floors floor = floors_at(finest_n, s, s);
@@ -432,14 +435,21 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
 }
 
 double contact::traction(const tangential_solution& d, double r) {
+    if (dissimilar_) return dissimilar_->traction(d, r);  // either structure of 8(g)
     return limit_ ? limit_->traction(d, r) : tangential_->traction(d, r);
 }
 
 double contact::slip_velocity(const tangential_solution& d, double r) {
+    if (dissimilar_) return dissimilar_->slip_velocity(d, r);
     return limit_ ? limit_->slip_velocity(d, r) : tangential_->slip_velocity(d, r);
 }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
+    if (dissimilar_ && d.opposite) {
+        std::vector<double> v(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) v[i] = dissimilar_->slip_velocity(d, r[i]);
+        return v;
+    }
     if (!limit_) return tangential_->slip_velocity(d, r);
     std::vector<double> v(r.size());
     for (std::size_t i = 0; i < r.size(); ++i) v[i] = limit_->slip_velocity(d, r[i]);

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <sstream>
 #include <vector>
 
+#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
@@ -16,12 +19,18 @@
 namespace roughroll {
 
 namespace {
-constexpr int start_scan = 32;            // trial starts of the stick zone (as zone_solver's scan)
+constexpr int start_scan = 32;            // trial starts of the stick zone
 constexpr int least_samples = 2001;       // samples of b p + f G for its least value (gross sliding)
 constexpr int shape_samples = 2001;       // samples of p for "even and decreasing" (complete slip)
 constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
+// W of the blended zone (qagp): tolerances, and the error GSL's own estimate may keep when it
+// cannot reach them (the integrands have 3/2-power ends and a sqrt at r = 1).
+constexpr std::size_t quadrature_intervals = 400;
+constexpr double quadrature_absolute = 1e-14;
+constexpr double quadrature_relative = 1e-12;
+constexpr double quadrature_accepted = 1e-10;
 
 std::string not_built(double Q, double f, const std::string& why) {
     std::ostringstream msg;
@@ -94,27 +103,111 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
     return c;
 }
 
-dissimilar_zones::dissimilar_zones(tangential_solver& solver, double beta_d)
-    : solver_(solver), beta_d_(beta_d), f_(solver.friction()) {
+std::vector<zone> solution_zones(const tangential_solution& s) {
+    std::vector<zone> z = zones_of(s);
+    if (s.opposite && !z.empty() && !z.front().stick) z.front().direction = -z.front().direction;
+    return z;
+}
+
+dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d)
+    : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()),
+      workspace_(make_integration_workspace(quadrature_intervals)) {
     check_beta_d(beta_d);
 }
 
-std::optional<double> dissimilar_zones::stick_end(double start, double magnitude, double b) {
-    // Q(start, c0) is f with no stick zone (c0 = start) and falls as the zone grows; a start
-    // from which even c0 = 1 carries more than |Q| has no zone (empty).
-    const auto excess = [&](double c0) {
-        return (c0 <= start ? f_ : solver_.solve_on_zone(start, c0, b).Q) - magnitude;
+double dissimilar_zones::H(double r, double start, double c0) const {
+    // 0 on the leading slip zone, Theta(t) on the stick zone, 1 on the trailing slip zone (8(g)).
+    if (r <= start) return 0.0;
+    if (r >= c0) return 1.0;
+    const double t = std::clamp((r - start) / (0.5 * (c0 - start)) - 1.0, -1.0, 1.0);
+    return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt(1.0 - t * t));
+}
+
+double dissimilar_zones::W(double r, double start, double c0) {
+    // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta,
+    // g = p H (zero on [-1, s)). Inside (s, 1) the Cauchy part is taken with g(r) subtracted,
+    // int (g(eta) - g(r))/(eta - r) + g(r) log((1 - r)/(r - s)); the breakpoints are s, c0, r, 1.
+    const normal_solution& normal = solver_.normal();
+    const auto g = [&](double eta) { return normal.pressure(eta) * H(eta, start, c0); };
+    const bool inside = r > start && r < 1.0;
+    const double gr = inside ? g(r) : 0.0;
+    std::vector<double> points{start, 1.0};
+    if (c0 > start && c0 < 1.0) points.push_back(c0);
+    if (inside && r != c0) points.push_back(r);
+    std::sort(points.begin(), points.end());
+    const auto integrate = [&](const std::function<double(double)>& integrand) {
+        gsl_function fn;
+        fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
+        fn.params = const_cast<std::function<double(double)>*>(&integrand);
+        double result = 0.0, error = 0.0;
+        const int status = gsl_integration_qagp(&fn, points.data(), points.size(), quadrature_absolute, quadrature_relative,
+                                                quadrature_intervals, workspace_.get(), &result, &error);
+        // The tolerance is below what every integrand reaches near its 3/2-power ends: accept
+        // GSL's "cannot reach the tolerance" when its own error estimate is still small.
+        if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: W of the blended stick zone");
+        return result;
     };
-    if (!(excess(1.0) < 0.0)) return std::nullopt;
+    double w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
+    if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
+    for (const auto& term : k1_.terms())
+        w += term.T * integrate([&](double eta) {
+            const double z = eta - r;
+            return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+        });
+    return w;
+}
+
+tangential_solution dissimilar_zones::blended(double start, double c0, double b) {
+    // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f G - 2 f W on the
+    // stick zone, i.e. the right side of solve_on_zone (xi' + f G + b p) plus -2 f (G + W).
+    const double rho = 0.5 * (c0 - start);
+    const gauss_chebyshev& rule = solver_.normal().rule;
+    std::vector<double> r(rule.collocation.size());
+    for (std::size_t m = 0; m < r.size(); ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;
+    const std::vector<double> g = solver_.G(r);
+    std::vector<double> extra(r.size());
+    for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + W(r[m], start, c0));
+    tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
+    // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
+    gsl_function fn;
+    const auto pressure_theta = [&](double x) { return solver_.normal().pressure(x) * H(x, start, c0); };
+    fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
+    fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
+    double on_stick = 0.0, error = 0.0;
+    const int status = gsl_integration_qags(&fn, start, c0, quadrature_absolute, quadrature_relative, quadrature_intervals,
+                                            workspace_.get(), &on_stick, &error);
+    if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: int p Theta");
+    s.Q += 2.0 * f_ * (on_stick + load_between(solver_.normal(), c0, 1.0)) - 2.0 * f_;
+    s.opposite = true;
+    return s;
+}
+
+dissimilar_zones::structure dissimilar_zones::equal_directions(double b) {
+    return {[this, b](double start, double c0) { return solver_.solve_on_zone(start, c0, b); },
+            [this](double) { return f_; }};
+}
+
+dissimilar_zones::structure dissimilar_zones::opposite_directions(double b) {
+    // With no stick zone, p1 = -f p before the start and f p after it.
+    return {[this, b](double start, double c0) { return blended(start, c0, b); },
+            [this](double start) { return f_ * (1.0 - 2.0 * load_between(solver_.normal(), -1.0, start)); }};
+}
+
+std::optional<double> dissimilar_zones::stick_end(const structure& z, double start, double magnitude) {
+    // Q'(start, c0) is the empty zone's load at c0 = start and falls as the zone grows; a start from
+    // which no end carries |Q| has no zone (empty).
+    const auto excess = [&](double c0) { return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude; };
+    if (!(excess(start) > 0.0 && excess(1.0) < 0.0)) return std::nullopt;
     return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, "Brent search for the stick zone's end").x;
 }
 
-std::optional<tangential_solution> dissimilar_zones::newton(double magnitude, double b, double start, double c0) {
+std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
+                                                            double c0) {
     // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint m and half-length rho, as
-    // zone_solver's (docs/formulation.md 7(e)), with the forcing b in every solve; the Jacobian by
-    // forward differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
+    // zone_solver's (docs/formulation.md 7(e)), on either structure; the Jacobian by forward
+    // differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
     const auto residual = [&](double m, double rho) {
-        const tangential_solution t = solver_.solve_on_zone(m - rho, m + rho, b);
+        const tangential_solution t = z.solve(m - rho, m + rho);
         return std::array<double, 2>{(t.Q - magnitude) / f_, zone_solver::entry_coefficient(t)};
     };
     double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
@@ -137,7 +230,7 @@ std::optional<tangential_solution> dissimilar_zones::newton(double magnitude, do
         m += step * dm;
         rho += step * dr;
         if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
-            tangential_solution s = solver_.solve_on_zone(m - rho, m + rho, b);
+            tangential_solution s = z.solve(m - rho, m + rho);
             s.iterations = iteration;
             return s;
         }
@@ -145,11 +238,11 @@ std::optional<tangential_solution> dissimilar_zones::newton(double magnitude, do
     return std::nullopt;
 }
 
-tangential_solution dissimilar_zones::three_zones(double magnitude, double b, std::optional<zone_guess> guess) {
+tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess) {
     // With a guess (the coarser level's zone): Newton, accepted when its checks hold.
     if (guess) {
-        if (auto s = newton(magnitude, b, guess->start, guess->c0)) {
-            s->checks = solver_.check(*s);
+        if (auto s = newton(z, magnitude, guess->start, guess->c0)) {
+            s->checks = check(*s);
             if (s->checks.hold()) return *s;
         }
     }
@@ -161,9 +254,10 @@ tangential_solution dissimilar_zones::three_zones(double magnitude, double b, st
     };
     std::vector<trial> trials;
     for (int k = 1; k < start_scan; ++k) {
-        const double s = -1.0 + 2.0 * k / start_scan;
-        if (const auto end = stick_end(s, magnitude, b))
-            trials.push_back({s, *end, zone_solver::entry_coefficient(solver_.solve_on_zone(s, *end, b))});
+        // Clustered towards the edges (Chebyshev), where thin leading slip zones put the start.
+        const double s = -std::cos(M_PI * k / start_scan);
+        if (const auto end = stick_end(z, s, magnitude))
+            trials.push_back({s, *end, zone_solver::entry_coefficient(z.solve(s, *end))});
     }
     std::optional<tangential_solution> first;
     for (std::size_t k = 1; k < trials.size(); ++k) {
@@ -172,28 +266,67 @@ tangential_solution dissimilar_zones::three_zones(double magnitude, double b, st
         if (!((lo.entry > 0.0) != (hi.entry > 0.0))) continue;
         const double w = lo.entry / (lo.entry - hi.entry);
         std::optional<tangential_solution> s =
-            newton(magnitude, b, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
+            newton(z, magnitude, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
         if (!s) {
             const auto entry = [&](double start) {
-                const auto end = stick_end(start, magnitude, b);
+                const auto end = stick_end(z, start, magnitude);
                 if (!end) throw numerical_error("dissimilar zones: no stick zone carries |Q| inside a bracket");
-                return zone_solver::entry_coefficient(solver_.solve_on_zone(start, *end, b));
+                return zone_solver::entry_coefficient(z.solve(start, *end));
             };
             try {
                 const root r = brent_root(entry, lo.start, hi.start, end_tolerance, 0.0, 200,
                                           "Brent search for the stick zone's start");
-                s = solver_.solve_on_zone(r.x, *stick_end(r.x, magnitude, b), b);
+                s = z.solve(r.x, *stick_end(z, r.x, magnitude));
                 s->iterations = r.iterations;
             } catch (const numerical_error&) {
                 continue;
             }
         }
-        s->checks = solver_.check(*s);
+        s->checks = check(*s);
         if (s->checks.hold()) return *s;
         if (!first) first = s;
     }
     if (first) return *first;  // the caller refuses it: its checks fail
-    throw numerical_error("no three-zone structure (slip, stick, slip in the direction of Q)");
+    throw numerical_error("no three-zone structure carries Q");
+}
+
+double dissimilar_zones::traction(const tangential_solution& s, double r) {
+    // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
+    const double t = solver_.traction(s, r);
+    if (!s.opposite) return t;
+    return t - s.sign * 2.0 * f_ * solver_.normal().pressure(r) * (1.0 - H(r, s.start, s.c0));
+}
+
+double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
+    const double v = solver_.slip_velocity(s, r);
+    if (!s.opposite || s.sticks(r)) return v;
+    const double x = std::clamp(r, -1.0, 1.0);
+    return v - s.sign * 2.0 * f_ * (solver_.G(x) + W(x, s.start, s.c0));
+}
+
+traction_checks dissimilar_zones::check(const tangential_solution& s) {
+    if (!s.opposite) return solver_.check(s);
+    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions: -sign on the
+    // leading, sign on the trailing (200 interior points each, as tangential_solver::check).
+    traction_checks c = solver_.check(tangential_solution{});  // the pressure margin (c0-independent)
+    c.stick_margin = c.slip_margin = std::numeric_limits<double>::infinity();
+    const auto lower = [](double& margin, double v) {
+        if (!(v >= margin)) margin = v;
+    };
+    const normal_solution& normal = solver_.normal();
+    constexpr int points = 200;
+    const auto grid = [](double lo, double hi, int i) {
+        return 0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * (i + 0.5) / points);
+    };
+    for (int i = 0; i < points; ++i) {
+        const double r = grid(s.start, s.c0, i);
+        lower(c.stick_margin, (f_ * normal.pressure(r) - std::fabs(traction(s, r))) / f_);
+        lower(c.slip_margin, -s.sign * slip_velocity(s, grid(-1.0, s.start, i)) / f_);
+        if (s.c0 < 1.0) lower(c.slip_margin, s.sign * slip_velocity(s, grid(s.c0, 1.0, i)) / f_);
+    }
+    c.stick_holds = c.stick_margin >= 0.0;
+    c.slip_holds = c.slip_margin > 0.0;
+    return c;
 }
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {
@@ -235,21 +368,38 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
     return s;
 }
 
-tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess) {
+tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
         throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip)"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     tangential_solution s;
-    try {
-        s = magnitude == f_ ? gross_sliding(b) : three_zones(magnitude, b, guess);
-    } catch (const numerical_error& e) {
-        throw numerical_error(not_built(Q, f_, std::string(e.what()) + "; the answer has other zones"));
+    if (magnitude == f_) {
+        s = gross_sliding(b);
+    } else {
+        // The structure the hint names first (the coarser level's, when extrapolating), then the
+        // other one: both slip zones in the direction of Q, or the leading one against it. The first
+        // whose checks hold is the answer; else one that fails them, for the caller to refuse.
+        std::optional<tangential_solution> found, failed;
+        for (const bool blend : {opposite, !opposite}) {
+            try {
+                tangential_solution t = three_zones(blend ? opposite_directions(b) : equal_directions(b), magnitude, guess);
+                if (t.checks.hold()) {
+                    found = t;
+                    break;
+                }
+                if (!failed) failed = t;
+            } catch (const numerical_error&) {
+            }
+        }
+        if (!found && !failed)
+            throw numerical_error(not_built(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
+        s = found ? *found : *failed;
     }
     s.general = true;
     apply_load_sign(s, Q, "dissimilar zones");
-    s.checks = solver_.check(s);
+    s.checks = check(s);
     return s;
 }
 
@@ -257,9 +407,9 @@ void require_checks(const tangential_solution& s) {
     if (s.checks.hold()) return;
     throw numerical_error(not_built(
         s.Q, s.f,
-        "the three zones slip, stick, slip in the direction of Q fail the checks (3.3)-(3.4) (margins: stick " +
+        "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
             shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
-            "); the answer has slip against Q at the leading edge (the blended stick traction) or five zones"));
+            "); the answer has five zones (slip, stick, reversed slip, stick, slip)"));
 }
 
 }  // namespace roughroll

@@ -74,7 +74,8 @@ double tangential_solver::G(double r) { return G(std::vector<double>{r}).front()
 
 tangential_solution tangential_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
 
-tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing) {
+tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
+                                                     const std::vector<double>* extra) {
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
     // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
     const double rho = 0.5 * (c0 - start);
@@ -89,6 +90,8 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
     if (forcing != 0.0)  // Dundurs' term of (D2), docs/formulation.md 8(e): xi + sigma beta_D p + f G
         for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + forcing * normal_.pressure(r[m]));
+    if (extra)
+        for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + (*extra)[m]);
     std::ostringstream context;
     context.precision(17);
     context << "tangential problem (4.4) at c0 = " << c0;

@@ -159,7 +159,7 @@ private:
     // tangential_; every point is reported at level n (not extrapolated), estimated on three levels.
     std::unique_ptr<dissimilar_zones> dissimilar_;
     std::optional<tangential_solution> last_dissimilar_;  // this level's last point
-    const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess);
+    const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite);
     tangential_solution dissimilar_point(double Q);
     std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
