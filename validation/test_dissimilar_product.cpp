@@ -339,7 +339,9 @@ TEST(DissimilarProduct, OppositeDirectionsAgainstTheGridRoute) {
                                   L1([&](double eta) { return c.traction(s, eta); }, x);
             const double e = c.tangential().G(x) + L1([&](double eta) { return c.normal().pressure(eta); }, x);
             EXPECT_NEAR(c.slip_velocity(s, x), direct - f * e, 1e-11) << x;
-            if (kernel::normal(r).empty()) EXPECT_LT(std::fabs(e), 1e-12);
+            if (kernel::normal(r).empty()) {
+                EXPECT_LT(std::fabs(e), 1e-12);
+            }
         }
         gsl_integration_workspace_free(w);
     }

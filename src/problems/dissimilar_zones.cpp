@@ -110,9 +110,17 @@ std::vector<zone> solution_zones(const tangential_solution& s) {
 }
 
 dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d)
-    : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()),
+    : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()), pressure_b_(solver.normal().b),
       workspace_(make_integration_workspace(quadrature_intervals)) {
     check_beta_d(beta_d);
+    // The pressure's U-series without its exact trailing zeros (Hertz: one term): the same values
+    // (Clenshaw's recurrence stays 0 through them), for the many values W's quadrature takes.
+    while (pressure_b_.size() > 1 && pressure_b_.back() == 0.0) pressure_b_.pop_back();
+}
+
+double dissimilar_zones::pressure(double r) const {
+    if (std::fabs(r) >= 1.0) return 0.0;
+    return u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1), as normal_solution::pressure
 }
 
 double dissimilar_zones::H(double r, double start, double c0) const {
@@ -127,8 +135,7 @@ double dissimilar_zones::W(double r, double start, double c0) {
     // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta,
     // g = p H (zero on [-1, s)). Inside (s, 1) the Cauchy part is taken with g(r) subtracted,
     // int (g(eta) - g(r))/(eta - r) + g(r) log((1 - r)/(r - s)); the breakpoints are s, c0, r, 1.
-    const normal_solution& normal = solver_.normal();
-    const auto g = [&](double eta) { return normal.pressure(eta) * H(eta, start, c0); };
+    const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
     const bool inside = r > start && r < 1.0;
     const double gr = inside ? g(r) : 0.0;
     std::vector<double> points{start, 1.0};
@@ -170,7 +177,7 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
     // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
     gsl_function fn;
-    const auto pressure_theta = [&](double x) { return solver_.normal().pressure(x) * H(x, start, c0); };
+    const auto pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
     fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
     fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
     double on_stick = 0.0, error = 0.0;
@@ -398,8 +405,11 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         s = found ? *found : *failed;
     }
     s.general = true;
+    // The checks of the |Q| problem (three_zones made them) are those of Q: the mirror of 8(h) changes
+    // the signs of p1 and v together.
+    const bool checked = magnitude != f_;
     apply_load_sign(s, Q, "dissimilar zones");
-    s.checks = check(s);
+    if (!checked) s.checks = check(s);
     return s;
 }
 

@@ -112,11 +112,13 @@ private:
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     double W(double r, double start, double c0);  // L1[p H] of the blended zone
     double H(double r, double start, double c0) const;  // 0, Theta, 1
+    double pressure(double r) const;  // p of (4.1), from pressure_b_
 
     tangential_solver& solver_;
     kernel k1_;
     double beta_d_;
     double f_;
+    std::vector<double> pressure_b_;  // the pressure's U coefficients without trailing zeros
     integration_workspace_ptr workspace_;
 };
 
