@@ -294,10 +294,28 @@ void bm_limit_zone_point(benchmark::State& state) {
     std::size_t i = 0;
     for (auto _ : state) benchmark::DoNotOptimize(c.point(Q * (1.0 - 1e-14 * static_cast<double>(i++ % 2))).xi);
 }
+
+// Issue 13, dissimilar rollers at Johnson's level (docs/formulation.md 8(j)): one fresh point (the
+// contact built inside the loop: its levels' points are cached) of aluminium on steel, f = 0.05,
+// arg 0: 0 braked Q/f = -0.75 (both slip zones with Q), 1 driven Q/f = +0.9 (the blended stick
+// zone); arg 1: 0 smooth, 1 the layers (T, A) = (1, 0.5) tangential, (0.5, 2) normal; arg 2: n
+// (method extrapolated, the default); arg 3: 1 for beta_D = 0 at the same load (today's problem).
+void bm_dissimilar_point(benchmark::State& state) {
+    const double beta = state.range(3) == 1 ? 0.0 : 0.1438337435056057;
+    roughness r;
+    if (state.range(1) == 1) r = roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}};
+    const double f = 0.05, Q = state.range(0) == 0 ? -0.75 * f : 0.9 * f;
+    const solver_options o{static_cast<int>(state.range(2)), method::extrapolated};
+    for (auto _ : state) {
+        contact c(r, f, o, dissimilar{beta, coupling_level::johnson});
+        benchmark::DoNotOptimize(c.point(Q).xi);
+    }
+}
 }  // namespace
 
 BENCHMARK(bm_zone_point)->ArgsProduct({{15}, {1, 2}, {128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_zone_point)->ArgsProduct({{0, 1}, {128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_dissimilar_point)->ArgsProduct({{0, 1}, {0, 1}, {64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_zone_point)->ArgsProduct({{2, 6}, {1, 2}, {64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_lu)->Arg(48)->Arg(64)->Arg(96)->Arg(128)->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_normal)->ArgsProduct({{0, 1}, {48, 96, 200}})->Unit(benchmark::kMillisecond);

@@ -81,8 +81,19 @@ py::object physical_dict(const scene& s) {
         return d;
     };
     py::dict d;
-    d["E"] = p.E;
-    d["nu"] = p.nu;
+    // One material (E, nu), or one per cylinder (docs/formulation.md 8(a)): the other form is None.
+    d["E"] = p.materials ? py::object(py::none()) : py::object(py::float_(p.E));
+    d["nu"] = p.materials ? py::object(py::none()) : py::object(py::float_(p.nu));
+    if (p.materials) {
+        for (int i = 0; i < 2; ++i) {
+            py::dict m;
+            m["shear_modulus"] = (*p.materials)[i].mu;
+            m["poisson"] = (*p.materials)[i].nu;
+            d[i == 0 ? "material1" : "material2"] = m;
+        }
+    }
+    d["compliance"] = compliance(p);
+    d["beta_d"] = dundurs_beta(p);
     d["R1"] = p.R1;
     d["R2"] = p.R2;
     d["P2"] = p.P2;
@@ -113,7 +124,7 @@ struct curve_columns {
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
     const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver);
+    contact c(s.surfaces, s.friction, s.solver, s.materials);
     const std::vector<curve_point> curve =
         sweep ? swept_curve(c, points) : creep_curve(c, loads ? *loads : curve_loads(points, s.friction));
     curve_columns out;

@@ -198,6 +198,57 @@ expect physical-R-zero "'R1' must be > 0" -- point "$dir/physR.toml"
 expect physical-two-planes "two planes" -- point "$dir/physplanes.toml"
 expect physical-P2-nan "'P2' must be finite and > 0" -- point "$dir/physP2.toml"
 expect physical-P1-slides "|P1| <= f P2" -- point "$dir/physP1.toml"
+
+# Dissimilar rollers (docs/formulation.md 8): a material per cylinder, beta_d, coupling.
+pair='R1 = 0.05
+R2 = 0.05
+P2 = 1e5
+Q = 0.0
+friction = 0.05
+[cylinder1]
+shear_modulus = 23e9
+poisson = 0.31
+[cylinder2]
+shear_modulus = 82e9
+poisson = 0.28'
+scene pairnu "$(printf '%s\n' "$pair" | sed 's/^poisson = 0.31/poisson = 0.6/')"
+scene pairnulow "$(printf '%s\n' "$pair" | sed 's/^poisson = 0.28/poisson = -1/')"
+scene pairmu "$(printf '%s\n' "$pair" | sed 's/^shear_modulus = 82e9/shear_modulus = 0/')"
+scene pairhalf "$(printf '%s\n' "$pair" | sed 's/^poisson = 0.28//')"
+scene pairone "$(printf '%s\n' "$pair" | sed '/^\[cylinder2\]/,$d')"
+scene pairE "$(printf 'E = 210e9\n%s\n' "$pair")"
+scene pairbeta "$(printf 'beta_d = 0.1\n%s\n' "$pair")"
+scene pairnoP2 "$(printf '%s\n' "$pair" | grep -v '^P2 =')"
+scene mudimless "$(printf 'friction = 0.3\nQ = 0.1\n[cylinder1]\nshear_modulus = 1e9\npoisson = 0.3\n')"
+scene betabig "$(printf 'beta_d = 0.75\n%s\n' "$good")"
+scene betanan "$(printf 'beta_d = nan\n%s\n' "$good")"
+scene betatype "$(printf 'beta_d = "0.1"\n%s\n' "$good")"
+scene coupling "$(printf 'coupling = "strong"\n%s\n' "$good")"
+scene couplingtype "$(printf 'coupling = 1\n%s\n' "$good")"
+scene betafull "$(printf 'beta_d = 0.1\ncoupling = "full"\n%s\n' "$good")"
+scene betaoneparam "$(printf 'beta_d = 0.1\n%s\nmethod = "one-parameter"\n' "$good")"
+scene betasingle "$(printf 'beta_d = 0.1\n%s\nzones = "single"\n' "$good")"
+expect pair-poisson-range "'cylinder1.poisson' must be in (-1, 0.5]" -- point "$dir/pairnu.toml"
+expect pair-poisson-minus-one "'cylinder2.poisson' must be in (-1, 0.5]" -- point "$dir/pairnulow.toml"
+expect pair-shear-modulus "'cylinder2.shear_modulus' must be finite and > 0" -- point "$dir/pairmu.toml"
+expect pair-half-material "needs both shear_modulus and poisson (missing 'poisson')" -- point "$dir/pairhalf.toml"
+expect pair-one-cylinder "missing in 'cylinder2'" -- point "$dir/pairone.toml"
+expect pair-and-E "not both: remove 'E'" -- point "$dir/pairE.toml"
+expect pair-beta-key "'beta_d' is not a key of a physical scene" -- point "$dir/pairbeta.toml"
+expect pair-missing-P2 "needs R1, R2 and P2: missing 'P2'" -- point "$dir/pairnoP2.toml"
+expect material-needs-physical "'cylinder1.shear_modulus' needs a physical scene" -- point "$dir/mudimless.toml"
+expect beta-d-bound "|beta_d| < 0.75" -- point "$dir/betabig.toml"
+expect beta-d-nan "beta_d = nan must be finite" -- point "$dir/betanan.toml"
+expect beta-d-type "'beta_d' must be a number" -- point "$dir/betatype.toml"
+expect coupling-unknown "unknown coupling 'strong'" -- point "$dir/coupling.toml"
+expect coupling-type "toml: 'coupling' must be a string" -- point "$dir/couplingtype.toml"
+expect coupling-full-not-built "coupling 'full' for beta_d != 0 is not built yet" -- point "$dir/betafull.toml"
+expect beta-one-parameter "not available for method 'one-parameter'" -- point "$dir/betaoneparam.toml"
+expect beta-zones-single "zones 'single' with beta_d != 0" -- point "$dir/betasingle.toml"
+scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"
+expect beta-free-rolling "free rolling has five zones" -- point "$dir/betafree.toml"
+expect beta-five-zones "not built yet" -- point "$dir/betafree.toml" --Q 0.0375
+expect beta-sweep "a curve swept in c0" -- curve "$dir/betafree.toml" --sweep --points 3
 expect physical-P1-and-Q "not both" -- point "$dir/physP1Q.toml"
 expect physical-P1-hertz-width "given-load" -- point "$dir/physhertzP1.toml"
 expect physical-width-rule "contact_width" -- point "$dir/physwidth.toml"

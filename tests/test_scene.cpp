@@ -617,5 +617,86 @@ TEST(ReadScene, RecordsTheFilesRead) {
     std::filesystem::remove(path);
 }
 
+
+// docs/formulation.md 8(a): a material per cylinder gives C and Dundurs' beta_D; equal materials
+// written per cylinder are the one-material scene (C = 2 (1 - nu)/mu, beta_D = 0).
+TEST(PhysicalScene, MaterialPerCylinder) {
+    const std::string pair = R"(R1 = 0.05
+R2 = 0.05
+P2 = 1e5
+friction = 0.05
+Q = -0.03
+coupling = "johnson"
+[cylinder1]
+shear_modulus = 23e9
+poisson = 0.31
+[cylinder2]
+shear_modulus = 82e9
+poisson = 0.28
+)";
+    const scene s = parse_scene(pair, source);
+    ASSERT_TRUE(s.physical && s.physical->materials);
+    const double C = 0.69 / 23e9 + 0.72 / 82e9;
+    EXPECT_DOUBLE_EQ(compliance(*s.physical), C);
+    // The pair of the issue: 0.143834 (validation/test_dissimilar.cpp, from the same definition).
+    EXPECT_NEAR(s.materials.beta_d, 0.143834, 5e-7);
+    EXPECT_DOUBLE_EQ(s.materials.beta_d, (0.38 / 23e9 - 0.44 / 82e9) / (2.0 * C));
+    EXPECT_EQ(s.materials.coupling, coupling_level::johnson);
+    // Exchanged rollers: the opposite sign (8(h)).
+    std::string exchanged = pair;
+    exchanged.replace(exchanged.find("23e9"), 4, "82e9");
+    exchanged.replace(exchanged.find("0.31"), 4, "0.28");
+    exchanged.replace(exchanged.rfind("82e9"), 4, "23e9");
+    exchanged.replace(exchanged.rfind("0.28"), 4, "0.31");
+    EXPECT_DOUBLE_EQ(parse_scene(exchanged, source).materials.beta_d, -s.materials.beta_d);
+    // Equal materials per cylinder: beta_D = 0 exactly, and the one-material scene's width and T.
+    const std::string same = R"(R1 = 0.05
+R2 = 0.05
+P2 = 1e5
+friction = 0.3
+Q = 0.1
+[cylinder1]
+shear_modulus = 80e9
+poisson = 0.3
+[cylinder1.tangential]
+k = 4e14
+t = 1.5e6
+[cylinder2]
+shear_modulus = 80e9
+poisson = 0.3
+)";
+    const scene a = parse_scene(same, source);
+    std::string one_text = R"(E = 208e9
+nu = 0.3
+R1 = 0.05
+R2 = 0.05
+P2 = 1e5
+friction = 0.3
+Q = 0.1
+[cylinder1.tangential]
+k = 4e14
+t = 1.5e6
+)";
+    const scene b = parse_scene(one_text, source);
+    EXPECT_EQ(a.materials.beta_d, 0.0);
+    EXPECT_NEAR(compliance(*a.physical), compliance(*b.physical), 1e-15 * compliance(*b.physical));
+    EXPECT_NEAR(hertz_half_width(*a.physical, 1e5), hertz_half_width(*b.physical, 1e5), 1e-15 * hertz_half_width(*b.physical, 1e5));
+    EXPECT_NEAR(a.surfaces.cylinder1.tangential.T, b.surfaces.cylinder1.tangential.T, 1e-14 * b.surfaces.cylinder1.tangential.T);
+    EXPECT_EQ(b.materials.beta_d, 0.0);
+}
+
+TEST(Scene, BetaAndCoupling) {
+    const scene s = parse_scene("friction = 0.05\nQ = -0.03\nbeta_d = -0.2\ncoupling = \"full\"\n", source);
+    EXPECT_EQ(s.materials.beta_d, -0.2);
+    EXPECT_EQ(s.materials.coupling, coupling_level::full);
+    const scene d = parse_scene("friction = 0.05\n", source);
+    EXPECT_EQ(d.materials.beta_d, 0.0);
+    EXPECT_EQ(d.materials.coupling, coupling_level::johnson);
+    // The bound of 8(a): just inside is accepted, 3/4 itself and beyond refused.
+    EXPECT_NO_THROW(parse_scene("friction = 0.05\nbeta_d = 0.7499\n", source));
+    EXPECT_THROW(parse_scene("friction = 0.05\nbeta_d = -0.75\n", source), input_error);
+    EXPECT_THROW(parse_scene("friction = 0.05\ncoupling = \"weak\"\n", source), input_error);
+}
+
 }  // namespace
 }  // namespace roughroll

@@ -34,7 +34,7 @@ struct measurement {
 
 values solve_point(const scene& s, double Q, int n, method how, double* seconds = nullptr) {
     const auto start = std::chrono::steady_clock::now();
-    contact c(s.surfaces, s.friction, solver_options{n, how});
+    contact c(s.surfaces, s.friction, solver_options{n, how}, s.materials);
     const tangential_solution p = c.point(Q);
     if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return {c.normal().lambda, p.c0, p.xi};
@@ -51,7 +51,7 @@ measurement measure(const scene& s, double Q, int n, method how) {
         if (t > 1.0) break;
     }
     std::sort(times.begin(), times.end());
-    contact c(s.surfaces, s.friction, solver_options{n, how});
+    contact c(s.surfaces, s.friction, solver_options{n, how}, s.materials);
     const auto e = c.estimate(c.point(Q));
     return {how, n, times[times.size() / 2], v, e ? e->xi : NAN};
 }

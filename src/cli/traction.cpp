@@ -215,7 +215,7 @@ int run_traction(const traction_options& o) {
 
     const double Q = load_of(s, o.Q);
     const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver);
+    contact c(s.surfaces, s.friction, s.solver, s.materials);
     const tangential_solution solution = c.point(Q);
     const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi
     const normal_solution& normal = c.normal();

@@ -2,6 +2,7 @@
 
 
 #include "roughroll/model/carter.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -19,14 +20,14 @@ nlohmann::json cylinder_json(const cylinder_roughness& c) {
 // The zones of docs/formulation.md section 7, from r = -1 to 1.
 nlohmann::json zones_json(const tangential_solution& s) {
     nlohmann::json zones = nlohmann::json::array();
-    for (const zone& z : zones_of(s))
+    for (const zone& z : solution_zones(s))
         zones.push_back({{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
     return zones;
 }
 
 std::string zones_text(const tangential_solution& s) {
     std::string text;
-    for (const zone& z : zones_of(s)) {
+    for (const zone& z : solution_zones(s)) {
         if (!text.empty()) text += ", ";
         text += (z.stick ? "stick [" : std::string(z.direction > 0 ? "slip+ [" : "slip- [")) + shortest(z.from) + ", " +
                 shortest(z.to) + "]";
@@ -59,6 +60,7 @@ nlohmann::json to_json(const point_report& r) {
                     {"c0", r.estimate->c0},
                     {"xi", r.estimate->xi},
                     {"against", r.estimate->against}};
+    if (r.estimate && r.estimate->start != 0.0) estimate["stick_start"] = r.estimate->start;  // dissimilar rollers
     nlohmann::json si = nullptr;
     if (r.si)
         si = {{"a_m", r.si->a},
@@ -84,6 +86,8 @@ nlohmann::json to_json(const point_report& r) {
         {"stick_start", s.start},
         {"zones", zones_json(s)},
         {"zone_path", zone_path(s)},
+        // Dundurs' beta_D of the solution (docs/formulation.md 8): its forcing is sigma beta_D, sigma = sign.
+        {"beta_d", s.sign * s.forcing},
         {"xi", s.xi},
         {"hertz_load_ratio", r.normal.lambda},
         {"gamma", r.normal.gamma},
@@ -112,8 +116,11 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
         << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
+    if (s.forcing != 0.0)
+        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
+            << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string())
             << ", xi " << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
     else
         out << "  error estimate      unavailable (n/2 too coarse for the kernels, 2n above the largest n)\n";
@@ -152,7 +159,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
-        out << ',' << zones_of(s).size() << ',' << shortest(s.start);
+        out << ',' << solution_zones(s).size() << ',' << shortest(s.start);
         if (si) {
             const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);

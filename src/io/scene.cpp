@@ -103,7 +103,29 @@ term_input read_term(const toml::table& cylinder, std::string_view key, bool phy
 struct cylinder_input {
     term_input tangential, normal;
     std::string profile_file;  // the profile CSV its micro-geometry read, if any
+    std::optional<material> bulk;  // shear_modulus and poisson of a physical scene's cylinder
 };
+
+// A Poisson's ratio: (3.27), (3.26) and C of docs/formulation.md 8(a) divide by 1 - nu, and an
+// isotropic solid has -1 < nu <= 1/2.
+double poisson_at(const toml::node& node, const std::string& source, const std::string& path) {
+    const double nu = number_at(node, source, path);
+    if (!(nu > -1.0 && nu <= 0.5)) fail(source, quoted(path) + " must be in (-1, 0.5] (got " + shortest(nu) + ")");
+    return nu;
+}
+
+// The bulk material of one cylinder of a physical scene (8(a)): both keys or neither.
+std::optional<material> read_material(const toml::table& table, const std::string& path, const std::string& source) {
+    const bool has_mu = table.contains("shear_modulus"), has_nu = table.contains("poisson");
+    if (!has_mu && !has_nu) return std::nullopt;
+    if (!(has_mu && has_nu))
+        fail(source, "table " + quoted(path) + " needs both shear_modulus and poisson (missing '" +
+                         (has_mu ? "poisson" : "shear_modulus") + "')");
+    material m;
+    m.mu = bounded_number(*table.get("shear_modulus"), lower_bound::positive, source, join(path, "shear_modulus"));
+    m.nu = poisson_at(*table.get("poisson"), source, join(path, "poisson"));
+    return m;
+}
 
 // A cylinder's terms, or for a physical scene its micro-geometry: the layer of Sec. 2, whose
 // k, t of (2.11)-(2.14) replace both terms (roughness_parameters.hpp).
@@ -116,10 +138,15 @@ cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool
         if (table->contains("micro_geometry"))
             fail(source, "table " + quoted(join(path, "micro_geometry")) +
                              " needs a physical scene (E, nu, R1, R2, P2): k and t are in SI units");
+        for (const char* key : {"shear_modulus", "poisson"})
+            if (table->contains(key))
+                fail(source, quoted(join(path, key)) +
+                                 " needs a physical scene (R1, R2, P2); a dimensionless scene gives beta_d instead");
         check_keys(*table, {"tangential", "normal"}, source, path);
     } else {
-        check_keys(*table, {"tangential", "normal", "micro_geometry"}, source, path);
+        check_keys(*table, {"tangential", "normal", "micro_geometry", "shear_modulus", "poisson"}, source, path);
     }
+    const std::optional<material> bulk = physical ? read_material(*table, path, source) : std::nullopt;
     const std::string layer_path = join(path, "micro_geometry");
     if (const toml::table* layer = table_at(*table, "micro_geometry", source, layer_path)) {
         if (table->contains("tangential") || table->contains("normal"))
@@ -131,10 +158,11 @@ cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool
         c.tangential.dimensional = stiffness{r.k_tangential, r.t_tangential};
         c.normal.dimensional = stiffness{r.k_normal, r.t_normal};
         if (g.bottom.kind == profile_kind::measured) c.profile_file = g.bottom.measured.source;
+        c.bulk = bulk;
         return c;
     }
     return {read_term(*table, "tangential", physical, source, path),
-            read_term(*table, "normal", physical, source, path), {}};
+            read_term(*table, "normal", physical, source, path), {}, bulk};
 }
 
 // A radius of a physical scene: > 0, and infinite for a plane.
@@ -151,17 +179,32 @@ bool is_physical(const toml::table& root) {
 }
 
 // The materials, radii and loads of a physical scene (physical_scene.hpp); the surfaces
-// are filled in by the caller.
-physical_scene read_physical(const toml::table& root, double friction, const std::string& source) {
-    for (const char* key : {"E", "nu", "R1", "R2", "P2"}) {
-        if (!root.contains(key))
-            fail(source, std::string("a physical scene needs E, nu, R1, R2 and P2: missing '") + key + "'");
-    }
+// are filled in by the caller. `c1`, `c2`: the cylinders' own materials, if given (8(a)).
+physical_scene read_physical(const toml::table& root, double friction, const std::string& source,
+                             const std::optional<material>& c1, const std::optional<material>& c2) {
     physical_scene p;
-    p.E = bounded_number(*root.get("E"), lower_bound::positive, source, "E");
-    p.nu = number_at(*root.get("nu"), source, "nu");
-    // (3.27) and (3.26) divide by 1 - nu and mu = E/(2(1 + nu)): -1 < nu <= 1/2 for an isotropic solid.
-    if (!(p.nu > -1.0 && p.nu <= 0.5)) fail(source, "'nu' must be in (-1, 0.5] (got " + shortest(p.nu) + ")");
+    if (c1 || c2) {
+        // A material per cylinder: both, and not also the one material E, nu.
+        if (!(c1 && c2))
+            fail(source, std::string("a material per cylinder needs shear_modulus and poisson in both [cylinder1] and "
+                                     "[cylinder2]: missing in ") + (c1 ? "'cylinder2'" : "'cylinder1'"));
+        for (const char* key : {"E", "nu"})
+            if (root.contains(key))
+                fail(source, std::string("give one material (E, nu) or one per cylinder (shear_modulus, poisson), not "
+                                         "both: remove '") + key + "'");
+        for (const char* key : {"R1", "R2", "P2"})
+            if (!root.contains(key))
+                fail(source, std::string("a physical scene needs R1, R2 and P2: missing '") + key + "'");
+        p.materials = std::array<material, 2>{*c1, *c2};
+    } else {
+        for (const char* key : {"E", "nu", "R1", "R2", "P2"}) {
+            if (!root.contains(key))
+                fail(source, std::string("a physical scene needs E, nu, R1, R2 and P2: missing '") + key + "'");
+        }
+        p.E = bounded_number(*root.get("E"), lower_bound::positive, source, "E");
+        // (3.27) and (3.26) divide by 1 - nu and mu = E/(2(1 + nu)): -1 < nu <= 1/2 for an isotropic solid.
+        p.nu = poisson_at(*root.get("nu"), source, "nu");
+    }
     p.R1 = radius_at(*root.get("R1"), source, "R1");
     p.R2 = radius_at(*root.get("R2"), source, "R2");
     if (std::isinf(p.R1) && std::isinf(p.R2)) fail(source, "'R1' and 'R2' are both infinite: two planes do not roll");
@@ -227,7 +270,7 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     const toml::table root = parse_toml(text, source);
     check_keys(root,
                {"label", "friction", "Q", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
-                "contact_width"},
+                "contact_width", "beta_d", "coupling"},
                source, "");
 
     scene s;
@@ -255,7 +298,10 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     for (const cylinder_input* c : {&c1, &c2})
         if (!c->profile_file.empty()) s.files.push_back(c->profile_file);
     if (physical) {
-        physical_scene p = read_physical(root, s.friction, source);
+        if (root.contains("beta_d"))
+            fail(source, "'beta_d' is not a key of a physical scene: it follows from the materials (shear_modulus and "
+                         "poisson per cylinder; docs/formulation.md 8(a))");
+        physical_scene p = read_physical(root, s.friction, source, c1.bulk, c2.bulk);
         try {
             // Each derived value is checked where it is made (physical_scene.cpp): a_H and its
             // scales, k and t from T and A, T and A at a_H; the message names the keys.
@@ -267,9 +313,31 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
         }
         // |P1| <= f P2 was checked; the quotient may still round above f by an ulp.
         if (p.P1) s.Q = std::clamp(*p.P1 / p.P2, -s.friction, s.friction);
+        try {
+            s.materials.beta_d = dundurs_beta(p);
+        } catch (const input_error& e) {
+            fail(source, e.what());
+        }
         s.physical = p;
     } else {
         s.surfaces = {dimensionless(c1), dimensionless(c2)};
+        if (const toml::node* beta = root.get("beta_d")) {
+            const double b = number_at(*beta, source, "beta_d");
+            try {
+                check_beta_d(b);
+            } catch (const input_error& e) {
+                fail(source, e.what());
+            }
+            s.materials.beta_d = b;
+        }
+    }
+    if (const toml::node* coupling = root.get("coupling")) {
+        const std::string& name = string_at(*coupling, source, "coupling");
+        try {
+            s.materials.coupling = coupling_from_string(name);
+        } catch (const input_error& e) {
+            fail(source, quoted("coupling") + ": " + e.what());
+        }
     }
     s.solver = read_solver(root, source);
     return s;

@@ -41,7 +41,7 @@ namespace {
 // The contact of a scene whose width is settled first (the scene is modified in place).
 contact settled_contact(scene& s, std::optional<contact_width>& width) {
     width = settle_width(s);
-    return contact(s.surfaces, s.friction, s.solver);
+    return contact(s.surfaces, s.friction, s.solver, s.materials);
 }
 }  // namespace
 

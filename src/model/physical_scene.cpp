@@ -25,7 +25,14 @@ bool normal_positive(double x) { return std::isfinite(x) && x >= DBL_MIN; }
 }
 
 std::string materials(const physical_scene& s) {
-    return "E = " + shortest(s.E) + " Pa, nu = " + shortest(s.nu);
+    if (!s.materials) return "E = " + shortest(s.E) + " Pa, nu = " + shortest(s.nu);
+    const auto one = [](const material& m) { return "mu = " + shortest(m.mu) + " Pa, nu = " + shortest(m.nu); };
+    return "cylinder1 " + one((*s.materials)[0]) + ", cylinder2 " + one((*s.materials)[1]);
+}
+
+// The scene keys of the material(s), for the messages.
+std::string material_keys(const physical_scene& s) {
+    return s.materials ? "'cylinder1.shear_modulus' and 'cylinder2.shear_modulus'" : "'E'";
 }
 
 // mu of (3.26): E/(2 (1 + nu)), infinite for a huge E with nu near -1.
@@ -37,14 +44,15 @@ double shear_modulus_of(const physical_scene& s) {
 
 roughness_term term_at(const physical_scene& s, const stiffness& st, double a, const std::string& name) {
     if (!st.present()) return {};
-    // (3.26)
-    const double mu = shear_modulus_of(s);
-    const roughness_term term{a * mu / (8.0 * (1.0 - s.nu) * st.t), a * std::sqrt(st.k / (2.0 * st.t))};
+    // (3.26) with C of docs/formulation.md 8(a) for 2 (1 - nu)/mu: T = a/(4 C t).
+    const double C = compliance(s);
+    const roughness_term term{a / (4.0 * C * st.t), a * std::sqrt(st.k / (2.0 * st.t))};
     const std::string inputs = "at a = " + shortest(a) + " m, k = " + shortest(st.k) + " Pa/m, t = " + shortest(st.t) +
                                " Pa m, " + materials(s);
     // An underflow to 0 or a subnormal is the smooth limit (a stiff layer): harmless. An
     // overflow is not.
-    if (!std::isfinite(term.T)) out_of_range("'" + name + "': T = a mu/(8 (1 - nu) t) of (3.26)", term.T, inputs, "'" + name + ".t' and 'E'");
+    const std::string formula = s.materials ? "T = a/(4 C t)" : "T = a mu/(8 (1 - nu) t)";
+    if (!std::isfinite(term.T)) out_of_range("'" + name + "': " + formula + " of (3.26)", term.T, inputs, "'" + name + ".t' and " + material_keys(s));
     if (!std::isfinite(term.A)) out_of_range("'" + name + "': A = a sqrt(k/(2 t)) of (3.26)", term.A, inputs, "'" + name + ".k' and '" + name + ".t'");
     return term;
 }
@@ -59,33 +67,53 @@ double physical_scene::radius() const {
     return 1.0 / (1.0 / R1 + 1.0 / R2);
 }
 
+double compliance(const physical_scene& s) {
+    if (!s.materials) return 2.0 * (1.0 - s.nu) / shear_modulus_of(s);  // checked mu, then C finite
+    // docs/formulation.md 8(a): C = (1 - nu1)/mu1 + (1 - nu2)/mu2 = 2/E* in Johnson's notation.
+    const material& m1 = (*s.materials)[0];
+    const material& m2 = (*s.materials)[1];
+    const double C = (1.0 - m1.nu) / m1.mu + (1.0 - m2.nu) / m2.mu;
+    if (!normal_positive(C)) out_of_range("the compliance C = (1 - nu1)/mu1 + (1 - nu2)/mu2", C, materials(s), material_keys(s));
+    return C;
+}
+
+double dundurs_beta(const physical_scene& s) {
+    if (!s.materials) return 0.0;
+    // docs/formulation.md 8(a): beta_D = ((1 - 2 nu1)/mu1 - (1 - 2 nu2)/mu2)/(2 C), |beta_D| < 3/4.
+    const material& m1 = (*s.materials)[0];
+    const material& m2 = (*s.materials)[1];
+    return ((1.0 - 2.0 * m1.nu) / m1.mu - (1.0 - 2.0 * m2.nu) / m2.mu) / (2.0 * compliance(s));
+}
+
 double hertz_half_width(const physical_scene& s, double P) {
-    const double mu = shear_modulus_of(s);
+    const double C = compliance(s);
     const double R = s.radius();
     const std::string inputs = materials(s) + ", R = " + shortest(R) + " m, P = " + shortest(P) + " N/m";
-    const std::string keys = "'E', 'R1', 'R2' and 'P2'";
+    const std::string keys = material_keys(s) + ", 'R1', 'R2' and 'P2'";
+    const std::string keys_list = s.materials ? keys : "'E', 'R1', 'R2' and 'P2'";
     if (!normal_positive(R)) out_of_range("the radius R = R1 R2/(R1 + R2)", R, inputs, "'R1' and 'R2'");
-    // (3.27); where an intermediate product over- or underflows, as a product of square roots,
-    // which does so only where a_H itself does.
-    double a_H = std::sqrt(4.0 * (1.0 - s.nu) * R * P / (pi * mu));
-    if (!normal_positive(a_H)) a_H = std::sqrt(4.0 * (1.0 - s.nu) / pi) * std::sqrt(R) * (std::sqrt(P) / std::sqrt(mu));
-    if (!normal_positive(a_H)) out_of_range("the Hertz half-width a_H of (3.27)", a_H, inputs, keys);
-    // The scales back to SI units (to_si): the pressure P/a and the creep P/(a mu).
-    if (!normal_positive(P / a_H)) out_of_range("the pressure scale P/a_H", P / a_H, inputs, keys);
-    if (!normal_positive(P / a_H / mu)) out_of_range("the creep scale P/(a_H mu)", P / a_H / mu, inputs, keys);
+    // (3.27) with C of 8(a) for 2 (1 - nu)/mu: a_H^2 = 2 C R P/pi; where an intermediate product
+    // over- or underflows, as a product of square roots, which does so only where a_H itself does.
+    double a_H = std::sqrt(2.0 * C * R * P / pi);
+    if (!normal_positive(a_H)) a_H = std::sqrt(2.0 / pi) * std::sqrt(R) * (std::sqrt(P) * std::sqrt(C));
+    if (!normal_positive(a_H)) out_of_range("the Hertz half-width a_H of (3.27)", a_H, inputs, keys_list);
+    // The scales back to SI units (to_si): the pressure P/a and the creep C P/a.
+    if (!normal_positive(P / a_H)) out_of_range("the pressure scale P/a_H", P / a_H, inputs, keys_list);
+    if (!normal_positive(P / a_H * C)) out_of_range("the creep scale C P/a_H", P / a_H * C, inputs, keys_list);
     return a_H;
 }
 
 stiffness stiffness_of(const physical_scene& s, const roughness_term& term, double a, const std::string& name) {
     if (!term.present()) return {};
     // (3.26) solved for t and alpha, then k = 2 t alpha^2 from alpha = sqrt(k/(2t)).
-    const double t = a * shear_modulus_of(s) / (8.0 * (1.0 - s.nu) * term.T);
+    const double t = a / (4.0 * compliance(s) * term.T);  // T = a/(4 C t), C of 8(a)
     const double alpha = term.A / a;
     const stiffness st{2.0 * t * alpha * alpha, t};
     const std::string inputs = "from T = " + shortest(term.T) + ", A = " + shortest(term.A) + " at a_H = " +
                                shortest(a) + " m, " + materials(s);
     const std::string who = name.empty() ? std::string() : "'" + name + "': ";
-    if (!normal_positive(st.t)) out_of_range(who + "t = a mu/(8 (1 - nu) T) of (3.26)", st.t, inputs, "'" + name + ".T'");
+    const std::string formula = s.materials ? "t = a/(4 C T)" : "t = a mu/(8 (1 - nu) T)";
+    if (!normal_positive(st.t)) out_of_range(who + formula + " of (3.26)", st.t, inputs, "'" + name + ".T'");
     if (!std::isfinite(st.k)) out_of_range(who + "k = 2 t (A/a)^2 of (3.26)", st.k, inputs, "'" + name + ".A'");
     return st;
 }
@@ -100,7 +128,7 @@ bool smooth(const physical_scene& s) {
 }
 
 si_point to_si(const physical_scene& s, const contact_width& w, double Q, double f, double c0, double xi) {
-    const double mu = shear_modulus_of(s);
+    const double C = compliance(s);
     const double load = w.load;
     // Smooth cylinders under the same loads: Carter's creep on Hertz's width for `load`.
     const carter_point smooth_point = carter(Q, f);
@@ -112,8 +140,8 @@ si_point to_si(const physical_scene& s, const contact_width& w, double Q, double
     p.P_H = w.lambda * load;
     p.P2 = load;
     p.P1 = Q * load;
-    p.xi1 = 2.0 * (1.0 - s.nu) * load * xi / (w.a * mu);  // xi = a mu xi1 / (2 (1 - nu) P2)
-    p.xi1_carter = 2.0 * (1.0 - s.nu) * load * smooth_point.xi / (a_load * mu);
+    p.xi1 = C * load * xi / w.a;  // xi = a xi1/(C P2), docs/formulation.md 8(a)
+    p.xi1_carter = C * load * smooth_point.xi / a_load;
     p.p_scale = load / w.a;
     p.width_iterations = w.iterations;
     p.surfaces = roughness_at(s, w.a);
@@ -124,7 +152,7 @@ si_point to_si(const physical_scene& s, const contact_width& w, double Q, double
                                       {"the creep xi1", p.xi1},
                                       {"Carter's creep xi1", p.xi1_carter},
                                       {"the Hertz load P_H", p.P_H}})
-        if (!std::isfinite(value)) out_of_range(name, value, inputs, "'E', 'R1', 'R2' and 'P2'");
+        if (!std::isfinite(value)) out_of_range(name, value, inputs, (s.materials ? material_keys(s) : std::string("'E'")) + ", 'R1', 'R2' and 'P2'");
     return p;
 }
 

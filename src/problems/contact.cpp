@@ -9,6 +9,7 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 
 namespace roughroll {
 
@@ -22,9 +23,10 @@ kernel widest_kernel(const roughness& r) {
 }
 }  // namespace
 
-contact::contact(const roughness& surfaces, double f, const solver_options& options)
-    : surfaces_(surfaces), options_(options), f_(f) {
+contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
+    : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
+    check_dissimilar(materials, options);
     const int n = options.nodes();
     if (options.how == method::one_parameter) {
         limit_ = std::make_unique<one_parameter_solver>(surfaces, f, n);
@@ -39,7 +41,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
             throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                    ": the coarse level n/2 is not in the asymptotic range of product integration "
                                    "for these kernels; increase n or use method 'product'");
-        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones});
+        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones}, materials);
     }
     normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how)));
     normal_->how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
@@ -50,6 +52,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     tangential_ = std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces),
                                                       kernel::normal(surfaces), f);
     zones_ = std::make_unique<zone_solver>(*tangential_);
+    if (materials.beta_d != 0.0)
+        dissimilar_ = std::make_unique<dissimilar_zones>(*tangential_, kernel::tangential(surfaces), materials.beta_d);
 }
 
 const normal_solution& contact::normal_level() const { return limit_ ? limit_->normal() : *normal_; }
@@ -86,6 +90,7 @@ tangential_solution contact::zones_for(double Q, tangential_solution s, const ta
 }
 
 tangential_solution contact::point(double Q) {
+    if (dissimilar_) return dissimilar_point(Q);
     // Each level's root search starts from the root of the level below: n/4 (the estimate's
     // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's,
     // with a Newton step on the slope of the level below.
@@ -148,13 +153,14 @@ method contact::level_method() const {
 }
 
 tangential_solution contact::distribution(const tangential_solution& s) {
-    if (!reported_) return s;
+    if (!reported_ || dissimilar_) return s;  // a dissimilar point is level n itself
     if (!last_fine_ || last_fine_->Q != s.Q)
         last_fine_ = s.general ? general_point(s.Q, zone_guess{s.start, s.c0}) : tangential_->solve(s.Q);
     return *last_fine_;
 }
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    if (dissimilar_) return dissimilar_estimate(s);
     if (reported_ && s.general) {
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
@@ -191,7 +197,7 @@ bool contact::build_levels() {
         for (const auto& c : owned_levels_)
             if (c->nodes() == m) return c.get();
         try {
-            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}));
+            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}, materials_));
             return owned_levels_.back().get();
         } catch (const resolution_error&) {
             return nullptr;
@@ -232,7 +238,7 @@ std::optional<tangential_solution> contact::above_finest(const tangential_soluti
     const int m = 2 * nodes();
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
-        if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()});
+        if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
         return swept ? finer_->level_at_stick_end(own.c0, false) : finer_->level_point(s.Q, false);
     } catch (const resolution_error&) {
         return std::nullopt;
@@ -344,6 +350,9 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked) {
 }
 
 contact::swept_point contact::at_stick_end(double c0) {
+    if (dissimilar_)
+        throw input_error("a curve swept in c0 is the paper's single zone, never the answer for beta_d != 0 "
+                          "(docs/formulation.md 8(g)); solve at given loads instead");
     tangential_solution s = level_at_stick_end(c0, true);
     const tangential_solution own = s;
     if (reported_) {
@@ -360,15 +369,101 @@ contact::swept_point contact::at_stick_end(double c0) {
     return {s, estimate_from(s, own, at, true)};
 }
 
+const tangential_solution& contact::dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite) {
+    if (!last_dissimilar_ || !(last_dissimilar_->Q == Q)) last_dissimilar_ = dissimilar_->solve(Q, guess, opposite);
+    return *last_dissimilar_;
+}
+
+tangential_solution contact::dissimilar_point(double Q) {
+    // The estimate's levels below this one first, coarsest first, each from the zone of the level
+    // below (Newton), so that only the coarsest scans the starts of the stick zone.
+    std::optional<zone_guess> guess;
+    bool opposite = false;
+    if (build_levels()) {
+        for (contact* level : levels_) {
+            if (level == nullptr) break;
+            try {
+                const tangential_solution& t = level->dissimilar_level_point(Q, guess, opposite);
+                guess = zone_guess{t.start, t.c0};
+                opposite = t.opposite;
+            } catch (const numerical_error&) {  // this level searches without a guess
+                guess.reset();
+            }
+        }
+    }
+    tangential_solution s = dissimilar_level_point(Q, guess, opposite);
+    require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
+    return s;
+}
+
+std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solution& s) {
+    // Three levels of the level method (n/4, n/2, n where they fit), the rule of error_bound.hpp
+    // for xi, c0 and the start (the reported values are level n's), and for P_H/P2 as reported
+    // (Richardson's for 'extrapolated'). No estimate where the levels do not converge visibly.
+    if (!build_levels()) return std::nullopt;
+    int self = 0;
+    while (levels_[self] != nullptr) ++self;
+    std::array<tangential_solution, 3> at{};
+    for (int i = 0; i < 3; ++i)
+        at[i] = levels_[i] ? levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite) : s;
+    const int order = level_method() == method::product ? 4 : 2;
+    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
+    const rounding_floors floor = floors_at(finest_n, s, s);
+    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
+    error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
+    struct quantity {
+        const char* name;
+        three_levels v;
+        double floor;
+        bool extrapolated;
+        double* out;
+    };
+    const quantity qs[] = {
+        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, reported_ != nullptr, &e.lambda},
+        {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, false, &e.xi},
+        // The ends carry Newton's resolution too (dissimilar_zones.hpp).
+        {"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0 + zone_end_resolution, false, &e.c0},
+        {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, floor.c0 + zone_end_resolution, false,
+         &e.start}};
+    for (const quantity& q : qs) {
+        const error_bound b = bound_error(q.v, order, reported_value{self, q.extrapolated}, q.floor);
+        if (!b.resolved) {
+            std::ostringstream msg;
+            msg.precision(3);
+            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
+                << " (dissimilar rollers): " << q.name << " does not converge visibly over three levels (differences "
+                << q.v.middle - q.v.coarsest << ", " << q.v.finest - q.v.middle << ") at Q = " << s.Q
+                << "; increase n";
+            throw resolution_error(msg.str());
+        }
+        *q.out = b.value;
+        e.bounded = e.bounded || !b.asymptotic;
+    }
+    static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
+    const int first = 2 - self;
+    e.against = std::string(self == 2 ? "n/2" : "2n") + " (dissimilar rollers: level n, not extrapolated; levels " +
+                names[first] + ", " + names[first + 1] + ", " + names[first + 2] +
+                (e.bounded ? "; observed order below " : "; order ") + std::to_string(order) +
+                (e.bounded ? ": bounded)" : " observed)");
+    return e;
+}
+
 double contact::traction(const tangential_solution& d, double r) {
+    if (dissimilar_) return dissimilar_->traction(d, r);  // either structure of 8(g)
     return limit_ ? limit_->traction(d, r) : tangential_->traction(d, r);
 }
 
 double contact::slip_velocity(const tangential_solution& d, double r) {
+    if (dissimilar_) return dissimilar_->slip_velocity(d, r);
     return limit_ ? limit_->slip_velocity(d, r) : tangential_->slip_velocity(d, r);
 }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
+    if (dissimilar_ && d.opposite) {
+        std::vector<double> v(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) v[i] = dissimilar_->slip_velocity(d, r[i]);
+        return v;
+    }
     if (!limit_) return tangential_->slip_velocity(d, r);
     std::vector<double> v(r.size());
     for (std::size_t i = 0; i < r.size(); ++i) v[i] = limit_->slip_velocity(d, r[i]);

@@ -74,7 +74,8 @@ double tangential_solver::G(double r) { return G(std::vector<double>{r}).front()
 
 tangential_solution tangential_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
 
-tangential_solution tangential_solver::solve_on_zone(double start, double c0) {
+tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
+                                                     const std::vector<double>* extra) {
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
     // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
     const double rho = 0.5 * (c0 - start);
@@ -87,6 +88,10 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0) {
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
     const std::vector<double> g = G(r);
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
+    if (forcing != 0.0)  // Dundurs' term of (D2), docs/formulation.md 8(e): xi + sigma beta_D p + f G
+        for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + forcing * normal_.pressure(r[m]));
+    if (extra)
+        for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + (*extra)[m]);
     std::ostringstream context;
     context.precision(17);
     context << "tangential problem (4.4) at c0 = " << c0;
@@ -103,6 +108,7 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0) {
     s.f = f_;
     s.c0 = c0;
     s.start = start;
+    s.forcing = forcing;
     s.xi = gsl_vector_get(x, n_);
     s.Q = f_ + rho * load;  // (4.5)
     s.sign = 1.0;
@@ -300,8 +306,10 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of an extrapolation or an estimate never need one).
     if (!moments_rule_) moments_rule_.emplace(kernel_moments::moments_rule(n_));
     const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, *moments_rule_);
-    for (std::size_t i = 0; i < r.size(); ++i)
+    for (std::size_t i = 0; i < r.size(); ++i) {
         v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() || rho == 0.0 ? 0.0 : lq0((r[i] - s.start) / rho - 1.0));
+        if (s.forcing != 0.0) v[i] += s.forcing * normal_.pressure(r[i]);  // (D2), docs/formulation.md 8(e)
+    }
     return v;
 }
 

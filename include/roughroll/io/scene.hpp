@@ -10,9 +10,15 @@
 //   T = 0.5
 //   A = 0.5
 //   # [cylinder2.tangential], [cylinder2.normal] likewise; a missing table is smooth
+//   beta_d = 0.14                # Dundurs' beta_D, |beta_d| < 0.75 (dimensionless scenes; docs/formulation.md 8)
+//   coupling = "johnson"         # or "full": the level of coupling of dissimilar rollers (8(e))
 //   [solver]
 //   n = 128                      # Gauss-Chebyshev nodes, in [min_nodes, max_nodes]
 //   method = "extrapolated"      # or "product", "paper", "one-parameter" (the limit t -> 0)
+//
+// A physical scene gives one material (E, nu) or one per cylinder: shear_modulus (Pa) and
+// poisson in [cylinder1] and [cylinder2] (roller 1 = cylinder1), from which C and beta_D follow
+// (docs/formulation.md 8(a)); beta_d itself is then not a key.
 //
 // Every key and table not listed above is an error naming it; so is a wrong type,
 // a non-finite or negative T or A, a table with T or A missing, an f outside
@@ -28,6 +34,7 @@
 #include <vector>
 
 #include "roughroll/numerics/method.hpp"
+#include "roughroll/model/dissimilar.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/model/roughness.hpp"
 
@@ -45,6 +52,7 @@ struct scene {
     std::optional<double> Q;
     roughness surfaces;
     solver_options solver;
+    dissimilar materials;  // beta_D and the coupling level (docs/formulation.md 8); beta_D = 0: the paper's
     // Set for a physical scene; `surfaces` are then those at a = a_H(P2) until the
     // contact width is found (find_width), and Q is P1/P2 when P1 is given.
     std::optional<physical_scene> physical;

@@ -1,14 +1,18 @@
 // Physical scenes: materials, radii and loads in SI units, the roughness as the stiffness
 // k, t of (2.10), and the way from them to the dimensionless problem and back.
 //   mu = E / (2 (1 + nu)),  R = R1 R2 / (R1 + R2)                       (quasi-identical materials)
-//   a_H^2 = 4 (1 - nu) R P / (pi mu)                                    (3.27), Hertz's half-width for a load P
-//   T = a mu / (8 (1 - nu) t),   A = a alpha,   alpha = sqrt(k / (2 t))   (3.26)
-//   xi1 = 2 (1 - nu) P2 xi / (a mu),   c = c0 a,   p2(x1) = P2 p(x1/a) / a  (the dimensionless variables of Sec. 3)
+//   C = 2 (1 - nu)/mu, or (1 - nu1)/mu1 + (1 - nu2)/mu2 for a material per cylinder (docs/formulation.md 8(a))
+//   beta_D = ((1 - 2 nu1)/mu1 - (1 - 2 nu2)/mu2) / (2 C)                 (8(a); 0 for one material)
+//   a_H^2 = 2 C R P / pi                                                (3.27), Hertz's half-width for a load P
+//   T = a / (4 C t),   A = a alpha,   alpha = sqrt(k / (2 t))            (3.26)
+//   xi1 = C P2 xi / a,   c = c0 a,   p2(x1) = P2 p(x1/a) / a            (the dimensionless variables of Sec. 3)
+// With one material C = 2 (1 - nu)/mu and these are the paper's formulas.
 // The paper fixes a = a_H and computes lambda = P_H/P2. With a given load P2 the model's
 // half-width a solves  lambda(T(a), A(a)) = (a / a_H(P2))^2  (docs/formulation.md, "A given
 // load"): the normal equation (3.19) with P2 normalised to 1 has the coefficient (a/a_H)^2.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -34,9 +38,17 @@ struct surface_stiffness {
 //   hertz:      the paper's a = a_H(P2); the model then carries P2 / lambda.
 enum class width_rule { given_load, hertz };
 
+// The bulk material of one roller (docs/formulation.md 8(a)).
+struct material {
+    double mu = 0.0;  // shear modulus, Pa
+    double nu = 0.0;  // Poisson's ratio, in (-1, 1/2]
+};
+
 struct physical_scene {
-    double E = 0.0;    // Young's modulus, Pa
-    double nu = 0.0;   // Poisson's ratio
+    double E = 0.0;    // Young's modulus, Pa (one material for both rollers; 0 with `materials`)
+    double nu = 0.0;   // Poisson's ratio (one material)
+    // A material per roller, roller 1 = cylinder1 (docs/formulation.md 8(a)); empty: E, nu for both.
+    std::optional<std::array<material, 2>> materials;
     double R1 = 0.0;   // radii, m (one of them may be infinite: a roller on a plane)
     double R2 = 0.0;
     double P2 = 0.0;   // normal load per unit length, N/m
@@ -44,9 +56,15 @@ struct physical_scene {
     surface_stiffness cylinder1, cylinder2;
     width_rule width = width_rule::given_load;
 
-    double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
+    double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }  // of the one material
     double radius() const;  // R of (3.1)
 };
+
+// C of docs/formulation.md 8(a), the combined compliance that replaces 2 (1 - nu)/mu everywhere
+// (checked: an over- or underflow is an input_error naming the material keys).
+double compliance(const physical_scene& s);
+// Dundurs' beta_D of 8(a) in Johnson's sign (roller 1 = cylinder1): 0 for one material.
+double dundurs_beta(const physical_scene& s);
 
 // Every function below checks what it makes: a value beyond double precision (an
 // overflow, or an underflow of a width or scale to 0 or a subnormal) is an input_error

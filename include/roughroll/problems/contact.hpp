@@ -24,12 +24,14 @@
 #include <vector>
 
 #include "roughroll/model/carter.hpp"
+#include "roughroll/model/dissimilar.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/one_parameter_zones.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -55,11 +57,14 @@ struct error_estimate {
     double Q;             // 0 for a point at a given Q (Q is then the input)
     std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
     bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
+    double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
 };
 
 class contact {
 public:
-    contact(const roughness& surfaces, double f, const solver_options& options);
+    // `materials`: Dundurs' beta_D and the coupling level of dissimilar rollers (docs/formulation.md
+    // section 8); the default beta_D = 0 is the paper's problem, solved by exactly the same calls.
+    contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {});
 
     // The normal solution as reported (lambda extrapolated for method::extrapolated).
     const normal_solution& normal() const;
@@ -141,6 +146,7 @@ private:
     roughness surfaces_;
     solver_options options_;
     double f_;
+    dissimilar materials_;
     std::unique_ptr<contact> companion_;  // method::extrapolated: the coarse level n/2 (product)
     std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
     std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
@@ -150,6 +156,13 @@ private:
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
     std::unique_ptr<zone_solver> zones_;  // the general search, on tangential_
+    // Dissimilar rollers (beta_D != 0, docs/formulation.md 8): the zones of Johnson's level, on
+    // tangential_; every point is reported at level n (not extrapolated), estimated on three levels.
+    std::unique_ptr<dissimilar_zones> dissimilar_;
+    std::optional<tangential_solution> last_dissimilar_;  // this level's last point
+    const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite);
+    tangential_solution dissimilar_point(double Q);
+    std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::unique_ptr<one_parameter_zones> limit_zones_;  // its general search (docs/formulation.md 7(g))
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point

@@ -53,6 +53,14 @@ struct tangential_solution {
     // zone solver found slip on [-1, start) too, in the direction of Q (docs/formulation.md 7).
     double start = -1.0;
     bool general = false;  // found by zone_solver's search rather than the paper's single zone
+    // Dundurs' forcing of the |Q| problem (docs/formulation.md 8(e)): sigma beta_D, with sigma the
+    // slip direction of both slip zones; the stick equation's right side and the slip velocity
+    // gain forcing * p(r). 0 for the paper's problem.
+    double forcing = 0.0;
+    // The leading slip zone slips against the trailing one (dissimilar rollers, 8(g)): on the
+    // stick zone p1 = sign (f p S + q) with S blended from -1 to 1 (dissimilar_zones.hpp), so
+    // traction, slip velocity and checks are dissimilar_zones' own, not this solver's.
+    bool opposite = false;
 
     double rho() const { return 0.5 * (c0 - start); }
     bool sticks(double r) const { return r >= start && r < c0; }  // r on the stick zone [start, c0)
@@ -103,7 +111,12 @@ public:
     // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
     // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
     // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is solve_system.
-    tangential_solution solve_on_zone(double start, double c0);
+    // `forcing`: Dundurs' sigma beta_D of docs/formulation.md 8(e), added as forcing * p(r) to
+    // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`:
+    // values added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1)
+    // (the blended stick zone of 8(g)); s.Q is then f + rho int q still, for the caller to correct.
+    tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
+                                      const std::vector<double>* extra = nullptr);
 
     double G(double r);                                          // (3.25)
     std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]

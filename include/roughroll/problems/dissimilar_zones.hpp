@@ -1,0 +1,125 @@
+// Dissimilar rollers in Johnson's approximation (docs/formulation.md section 8): the pressure of
+// the uncoupled normal problem, and the tangential problem (D2) with Dundurs' forcing,
+//   v(r) = xi - L1[p1](r) + beta_D p(r);  stick: v = 0, |p1| <= f p;  slip: p1 = sigma f p, sigma v > 0;
+//   int p1 = Q                                                                          8(c), 8(e)
+// No stick zone reaches a contact edge when beta_D != 0 (8(g)), so the paper's zone [-1, c0] is
+// never the answer. The structures solved here:
+//   - three zones, slip sigma [-1, s), stick [s, c0], slip sigma (c0, 1] with both slip zones in
+//     the direction sigma = sgn Q. With p1 = sigma (f p + q) on the stick zone and the mirror of
+//     8(h), (beta_D, Q, xi, p1) -> (-beta_D, -Q, -xi, -p1), this is the |Q| problem
+//       L1[q] = xi' + b p + f G,  rho int q = |Q| - f,   b = sigma beta_D,  xi = sigma xi'   8(e)
+//     on the moved zone r = s + rho (t + 1) (tangential_solver::solve_on_zone with forcing b), with
+//     the entry condition psi(-1) = 0 of 7(b) at s > -1 and the exit C0 = 0 built into (4.1).
+//     This is the structure of a braked roller 1 for beta_D > 0 (Q beta_D < 0; 8(g)'s table);
+//   - three zones with the leading slip against Q: slip -sigma [-1, s), stick [s, c0], slip sigma
+//     (c0, 1] (a driven roller 1 for beta_D > 0, 8(g)). In the |Q| frame p1 = -f p on the leading
+//     zone, f p on the trailing one, and on the stick zone p1 = f p S + q with the blend
+//       S = -1 + 2 Theta(t),  Theta(t) = 1/2 + (asin t + t sqrt(1 - t^2))/pi                  8(g)
+//     (Theta rises like (1 + t)^(3/2) and ends like 1 - (1 - t)^(3/2): only half-integer powers at
+//     the ends, so the collocation keeps its order). With H = 0, Theta, 1 on the three zones,
+//     p S = -p + 2 p H, L1[p S] = G + 2 W, W = L1[p H], and
+//       L1[q] = xi' + b p - f G - 2 f W  (stick),  v = xi' + b p - f G - 2 f W - L1[q]  (slip),
+//       Q' = f (2 int p H - 1) + rho int q;
+//     W by adaptive quadrature (GSL qagp, the Cauchy part with its singularity subtracted);
+//   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
+//     point r*: xi' = -min_r (b p + f G) (8(g));
+//   - the complete-slip limit f -> 0 (8(f)), its own special case (complete_slip_creep).
+// Not built (refused with numerical_error naming what is missing, never a number): free rolling
+// Q = 0 and every load whose answer is not one of the structures above (five zones), and
+// coupling "full".
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/model/kernel.hpp"
+
+#include "roughroll/model/dissimilar.hpp"
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_solver.hpp"
+
+namespace roughroll {
+
+// What a contact with these materials and options can solve: beta_D finite with |beta_D| < 3/4;
+// for beta_D != 0, not method 'one-parameter' (its edge behaviour, 8(g), is not derived), not
+// zones 'single' (the paper's zone is never the answer, 8(g)), and not coupling 'full' (not
+// built). Each refusal is one input_error line.
+void check_dissimilar(const dissimilar& materials, const solver_options& options);
+
+// The complete-slip limit f -> 0 at fixed Q/f (docs/formulation.md 8(f)): v = xi + beta_D p, the
+// central band |r| < r_c carries (1 + sgn(beta_D) Q/f)/2 of the load, and xi_0 = -beta_D p(r_c).
+// Needs p even and decreasing in |r| (checked on 2001 points: else input_error). For Hertz and
+// Q = 0, -pi xi_0/(4 beta_D) = cos(phi)/2 = 0.457386 (Bentall and Johnson's 0.457).
+struct complete_slip {
+    double r_c;   // edge of the central band
+    double xi;    // xi_0, divided by nothing: the limit of xi itself (xi = O(beta_D), not O(f))
+};
+complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, double Q_over_f);
+
+// int_lo^hi p(r) dr for the pressure (4.1), in closed form from its U-series (r = cos theta:
+// U_j(r) sqrt(1 - r^2) dr = -sin((j + 1) theta) sin(theta) d theta).
+double load_between(const normal_solution& normal, double lo, double hi);
+
+// How well Newton's method fixes the zone ends (as zone_solver's, docs/formulation.md 7(e)): the
+// entry condition psi(-1) carries rounding of about 1e-13, which moves the ends by a few 1e-12;
+// the estimates of the ends include it as a floor.
+constexpr double zone_end_resolution = 1e-11;
+
+// numerical_error naming the structure not built unless s's checks (3.3)-(3.4) hold: a three-zone
+// answer that fails them is another structure's, never reported.
+void require_checks(const tangential_solution& s);
+
+// The zones of a solution from r = -1 to 1 with their slip directions (zones_of, and the
+// leading zone against the trailing one for a blended stick zone).
+std::vector<zone> solution_zones(const tangential_solution& s);
+
+class dissimilar_zones {
+public:
+    // The tangential solver supplies G, the system (4.4) on any zone with the forcing, the
+    // tractions, slip velocities and checks; it must outlive this workspace. beta_d != 0.
+    // `k1`: K1* of the solver (for W of the blended stick zone).
+    dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d);
+
+    // p1(r) and v(r) (0 on the stick zone) of a solution of this workspace, either structure.
+    double traction(const tangential_solution& s, double r);
+    double slip_velocity(const tangential_solution& s, double r);
+
+    // The point at load Q, |Q| <= f, with its checks (3.3)-(3.4) on every zone (made, not acted
+    // on: a reported point goes through require_checks, a level of an estimate need not);
+    // numerical_error for free rolling and where no three zones carry Q. `guess`: a zone near the one sought (the coarser
+    // level's), the start of Newton's method; without it the starts of the stick zone are scanned.
+    // `opposite`: try the leading slip against Q first (the coarser level's structure).
+    tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false);
+
+private:
+    // The system on the zone [start, c0] of one structure, its load Q' the |Q| problem's.
+    using zone_system = std::function<tangential_solution(double start, double c0)>;
+    struct structure {
+        zone_system solve;
+        std::function<double(double start)> empty_load;  // Q' with no stick zone (c0 = start)
+    };
+    structure equal_directions(double b);
+    structure opposite_directions(double b);
+    tangential_solution three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess);
+    tangential_solution blended(double start, double c0, double b);  // the system with S of 8(g)
+    tangential_solution gross_sliding(double b);
+    std::optional<tangential_solution> newton(const structure& z, double magnitude, double start, double c0);
+    std::optional<double> stick_end(const structure& z, double start, double magnitude);  // Q'(start, c0) = |Q|
+    traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
+    double W(double r, double start, double c0);  // L1[p H] of the blended zone
+    double H(double r, double start, double c0) const;  // 0, Theta, 1
+    double pressure(double r) const;  // p of (4.1), from pressure_b_
+
+    tangential_solver& solver_;
+    kernel k1_;
+    double beta_d_;
+    double f_;
+    std::vector<double> pressure_b_;  // the pressure's U coefficients without trailing zeros
+    integration_workspace_ptr workspace_;
+};
+
+}  // namespace roughroll

@@ -1,0 +1,425 @@
+#include "roughroll/problems/dissimilar_zones.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/numerics/root_search.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int start_scan = 32;            // trial starts of the stick zone
+constexpr int least_samples = 2001;       // samples of b p + f G for its least value (gross sliding)
+constexpr int shape_samples = 2001;       // samples of p for "even and decreasing" (complete slip)
+constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
+constexpr int newton_iterations = 40;
+constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
+// W of the blended zone (qagp): tolerances, and the error GSL's own estimate may keep when it
+// cannot reach them (the integrands have 3/2-power ends and a sqrt at r = 1).
+constexpr std::size_t quadrature_intervals = 400;
+constexpr double quadrature_absolute = 1e-14;
+constexpr double quadrature_relative = 1e-12;
+constexpr double quadrature_accepted = 1e-10;
+
+std::string not_built(double Q, double f, const std::string& why) {
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "dissimilar rollers at Q/f = " << Q / f << ": " << why
+        << " (docs/formulation.md 8(g), 8(j)): not built yet";
+    return msg.str();
+}
+}  // namespace
+
+void check_dissimilar(const dissimilar& materials, const solver_options& options) {
+    check_beta_d(materials.beta_d);
+    if (materials.beta_d == 0.0) return;  // the paper's problem at both coupling levels (8(d))
+    if (options.how == method::one_parameter)
+        throw input_error("beta_d != 0 is not available for method 'one-parameter': its edge behaviour is not "
+                          "derived (docs/formulation.md 8(g)); use 'product' or 'extrapolated'");
+    if (materials.coupling == coupling_level::full)
+        throw input_error("coupling 'full' for beta_d != 0 is not built yet (docs/formulation.md 8(j) item 7); use "
+                          "coupling \"johnson\"");
+    if (options.zones == zone_search::single)
+        throw input_error("zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
+                          "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'");
+}
+
+double load_between(const normal_solution& normal, double lo, double hi) {
+    // p = phi(r) sqrt(1 - r^2), phi = sum_j b_j U_j(r) (4.1). With r = cos theta,
+    // int U_j sqrt(1 - r^2) dr = int sin((j + 1) theta) sin(theta) d theta
+    //   = (1/2) int [cos(j theta) - cos((j + 2) theta)] d theta, from theta(hi) to theta(lo).
+    const double t_lo = std::acos(std::clamp(hi, -1.0, 1.0)), t_hi = std::acos(std::clamp(lo, -1.0, 1.0));
+    const auto primitive = [](int j, double t) {
+        const double first = j == 0 ? t : std::sin(j * t) / j;
+        return 0.5 * (first - std::sin((j + 2) * t) / (j + 2));
+    };
+    double sum = 0.0;
+    for (std::size_t j = 0; j < normal.b.size(); ++j) {
+        const int k = static_cast<int>(j);
+        sum += normal.b[j] * (primitive(k, t_hi) - primitive(k, t_lo));
+    }
+    return sum;
+}
+
+complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, double Q_over_f) {
+    check_beta_d(beta_d);
+    if (beta_d == 0.0) throw input_error("complete slip: beta_d = 0 has no complete-slip creep of order beta_d");
+    if (!(std::fabs(Q_over_f) <= 1.0)) throw input_error("complete slip: |Q/f| must be at most 1");
+    // 8(f) needs p even and decreasing in |r|: then sgn(beta_D) v > 0 exactly on a central band.
+    const double scale = normal.pressure(0.0);
+    double previous = scale;
+    for (int i = 1; i < shape_samples; ++i) {
+        const double r = static_cast<double>(i) / (shape_samples - 1) * (1.0 - 1e-9);
+        const double p = normal.pressure(r), mirrored = normal.pressure(-r);
+        if (std::fabs(p - mirrored) > 1e-10 * scale || p > previous + 1e-12 * scale)
+            throw input_error("complete slip (docs/formulation.md 8(f)): the pressure is not even and decreasing in "
+                              "|r| (at r = " + shortest(r) + "), so the central band of slip is not derived");
+        previous = p;
+    }
+    const double target = 0.5 * (1.0 + (beta_d > 0.0 ? Q_over_f : -Q_over_f));
+    const double total = load_between(normal, -1.0, 1.0);
+    complete_slip c{};
+    if (target <= 0.0) {
+        c.r_c = 0.0;
+    } else if (target >= total) {
+        c.r_c = 1.0;
+    } else {
+        c.r_c = brent_root([&](double r) { return load_between(normal, -r, r) - target; }, 0.0, 1.0, 1e-15, 0.0, 200,
+                           "complete slip: the edge of the central band")
+                    .x;
+    }
+    c.xi = -beta_d * normal.pressure(c.r_c);
+    return c;
+}
+
+std::vector<zone> solution_zones(const tangential_solution& s) {
+    std::vector<zone> z = zones_of(s);
+    if (s.opposite && !z.empty() && !z.front().stick) z.front().direction = -z.front().direction;
+    return z;
+}
+
+dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d)
+    : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()), pressure_b_(solver.normal().b),
+      workspace_(make_integration_workspace(quadrature_intervals)) {
+    check_beta_d(beta_d);
+    // The pressure's U-series without its exact trailing zeros (Hertz: one term): the same values
+    // (Clenshaw's recurrence stays 0 through them), for the many values W's quadrature takes.
+    while (pressure_b_.size() > 1 && pressure_b_.back() == 0.0) pressure_b_.pop_back();
+}
+
+double dissimilar_zones::pressure(double r) const {
+    if (std::fabs(r) >= 1.0) return 0.0;
+    return u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1), as normal_solution::pressure
+}
+
+double dissimilar_zones::H(double r, double start, double c0) const {
+    // 0 on the leading slip zone, Theta(t) on the stick zone, 1 on the trailing slip zone (8(g)).
+    if (r <= start) return 0.0;
+    if (r >= c0) return 1.0;
+    const double t = std::clamp((r - start) / (0.5 * (c0 - start)) - 1.0, -1.0, 1.0);
+    return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt(1.0 - t * t));
+}
+
+double dissimilar_zones::W(double r, double start, double c0) {
+    // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta,
+    // g = p H (zero on [-1, s)). Inside (s, 1) the Cauchy part is taken with g(r) subtracted,
+    // int (g(eta) - g(r))/(eta - r) + g(r) log((1 - r)/(r - s)); the breakpoints are s, c0, r, 1.
+    const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
+    const bool inside = r > start && r < 1.0;
+    const double gr = inside ? g(r) : 0.0;
+    std::vector<double> points{start, 1.0};
+    if (c0 > start && c0 < 1.0) points.push_back(c0);
+    if (inside && r != c0) points.push_back(r);
+    std::sort(points.begin(), points.end());
+    const auto integrate = [&](const std::function<double(double)>& integrand) {
+        gsl_function fn;
+        fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
+        fn.params = const_cast<std::function<double(double)>*>(&integrand);
+        double result = 0.0, error = 0.0;
+        const int status = gsl_integration_qagp(&fn, points.data(), points.size(), quadrature_absolute, quadrature_relative,
+                                                quadrature_intervals, workspace_.get(), &result, &error);
+        // The tolerance is below what every integrand reaches near its 3/2-power ends: accept
+        // GSL's "cannot reach the tolerance" when its own error estimate is still small.
+        if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: W of the blended stick zone");
+        return result;
+    };
+    double w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
+    if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
+    for (const auto& term : k1_.terms())
+        w += term.T * integrate([&](double eta) {
+            const double z = eta - r;
+            return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+        });
+    return w;
+}
+
+tangential_solution dissimilar_zones::blended(double start, double c0, double b) {
+    // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f G - 2 f W on the
+    // stick zone, i.e. the right side of solve_on_zone (xi' + f G + b p) plus -2 f (G + W).
+    const double rho = 0.5 * (c0 - start);
+    const gauss_chebyshev& rule = solver_.normal().rule;
+    std::vector<double> r(rule.collocation.size());
+    for (std::size_t m = 0; m < r.size(); ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;
+    const std::vector<double> g = solver_.G(r);
+    std::vector<double> extra(r.size());
+    for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + W(r[m], start, c0));
+    tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
+    // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
+    gsl_function fn;
+    const auto pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
+    fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
+    fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
+    double on_stick = 0.0, error = 0.0;
+    const int status = gsl_integration_qags(&fn, start, c0, quadrature_absolute, quadrature_relative, quadrature_intervals,
+                                            workspace_.get(), &on_stick, &error);
+    if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: int p Theta");
+    s.Q += 2.0 * f_ * (on_stick + load_between(solver_.normal(), c0, 1.0)) - 2.0 * f_;
+    s.opposite = true;
+    return s;
+}
+
+dissimilar_zones::structure dissimilar_zones::equal_directions(double b) {
+    return {[this, b](double start, double c0) { return solver_.solve_on_zone(start, c0, b); },
+            [this](double) { return f_; }};
+}
+
+dissimilar_zones::structure dissimilar_zones::opposite_directions(double b) {
+    // With no stick zone, p1 = -f p before the start and f p after it.
+    return {[this, b](double start, double c0) { return blended(start, c0, b); },
+            [this](double start) { return f_ * (1.0 - 2.0 * load_between(solver_.normal(), -1.0, start)); }};
+}
+
+std::optional<double> dissimilar_zones::stick_end(const structure& z, double start, double magnitude) {
+    // Q'(start, c0) is the empty zone's load at c0 = start and falls as the zone grows; a start from
+    // which no end carries |Q| has no zone (empty).
+    const auto excess = [&](double c0) { return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude; };
+    if (!(excess(start) > 0.0 && excess(1.0) < 0.0)) return std::nullopt;
+    return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, "Brent search for the stick zone's end").x;
+}
+
+std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
+                                                            double c0) {
+    // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint m and half-length rho, as
+    // zone_solver's (docs/formulation.md 7(e)), on either structure; the Jacobian by forward
+    // differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
+    const auto residual = [&](double m, double rho) {
+        const tangential_solution t = z.solve(m - rho, m + rho);
+        return std::array<double, 2>{(t.Q - magnitude) / f_, zone_solver::entry_coefficient(t)};
+    };
+    double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
+    if (!(rho > 0.0 && m - rho > -1.0 && m + rho <= 1.0)) return std::nullopt;
+    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
+        const auto F = residual(m, rho);
+        const double h = 1e-7 * rho;
+        const auto Fm = residual(m - h, rho);
+        const auto Fr = residual(m, rho - h);
+        const double a = (F[0] - Fm[0]) / h, bq = (F[0] - Fr[0]) / h;
+        const double c = (F[1] - Fm[1]) / h, d = (F[1] - Fr[1]) / h;
+        const double det = a * d - bq * c;
+        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
+        const double dm = -(d * F[0] - bq * F[1]) / det, dr = -(a * F[1] - c * F[0]) / det;
+        double step = 1.0;
+        while (!(rho + step * dr > 0.0 && m + step * (dm - dr) - rho > -1.0 && m + step * (dm + dr) + rho <= 1.0)) {
+            step *= 0.5;
+            if (step < 1e-6) return std::nullopt;
+        }
+        m += step * dm;
+        rho += step * dr;
+        if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
+            tangential_solution s = z.solve(m - rho, m + rho);
+            s.iterations = iteration;
+            return s;
+        }
+    }
+    return std::nullopt;
+}
+
+tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess) {
+    // With a guess (the coarser level's zone): Newton, accepted when its checks hold.
+    if (guess) {
+        if (auto s = newton(z, magnitude, guess->start, guess->c0)) {
+            s->checks = check(*s);
+            if (s->checks.hold()) return *s;
+        }
+    }
+    // Else scan the starts, each with the end that carries |Q|, for sign changes of the entry
+    // condition psi(-1); each bracket in turn (from the leading edge) by Newton from the
+    // interpolated zone, else Brent in the start; the first whose checks hold is the answer.
+    struct trial {
+        double start, end, entry;
+    };
+    std::vector<trial> trials;
+    for (int k = 1; k < start_scan; ++k) {
+        // Clustered towards the edges (Chebyshev), where thin leading slip zones put the start.
+        const double s = -std::cos(M_PI * k / start_scan);
+        if (const auto end = stick_end(z, s, magnitude))
+            trials.push_back({s, *end, zone_solver::entry_coefficient(z.solve(s, *end))});
+    }
+    std::optional<tangential_solution> first;
+    for (std::size_t k = 1; k < trials.size(); ++k) {
+        const trial& lo = trials[k - 1];
+        const trial& hi = trials[k];
+        if (!((lo.entry > 0.0) != (hi.entry > 0.0))) continue;
+        const double w = lo.entry / (lo.entry - hi.entry);
+        std::optional<tangential_solution> s =
+            newton(z, magnitude, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
+        if (!s) {
+            const auto entry = [&](double start) {
+                const auto end = stick_end(z, start, magnitude);
+                if (!end) throw numerical_error("dissimilar zones: no stick zone carries |Q| inside a bracket");
+                return zone_solver::entry_coefficient(z.solve(start, *end));
+            };
+            try {
+                const root r = brent_root(entry, lo.start, hi.start, end_tolerance, 0.0, 200,
+                                          "Brent search for the stick zone's start");
+                s = z.solve(r.x, *stick_end(z, r.x, magnitude));
+                s->iterations = r.iterations;
+            } catch (const numerical_error&) {
+                continue;
+            }
+        }
+        s->checks = check(*s);
+        if (s->checks.hold()) return *s;
+        if (!first) first = s;
+    }
+    if (first) return *first;  // the caller refuses it: its checks fail
+    throw numerical_error("no three-zone structure carries Q");
+}
+
+double dissimilar_zones::traction(const tangential_solution& s, double r) {
+    // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
+    const double t = solver_.traction(s, r);
+    if (!s.opposite) return t;
+    return t - s.sign * 2.0 * f_ * solver_.normal().pressure(r) * (1.0 - H(r, s.start, s.c0));
+}
+
+double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
+    const double v = solver_.slip_velocity(s, r);
+    if (!s.opposite || s.sticks(r)) return v;
+    const double x = std::clamp(r, -1.0, 1.0);
+    return v - s.sign * 2.0 * f_ * (solver_.G(x) + W(x, s.start, s.c0));
+}
+
+traction_checks dissimilar_zones::check(const tangential_solution& s) {
+    if (!s.opposite) return solver_.check(s);
+    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions: -sign on the
+    // leading, sign on the trailing (200 interior points each, as tangential_solver::check).
+    traction_checks c = solver_.check(tangential_solution{});  // the pressure margin (c0-independent)
+    c.stick_margin = c.slip_margin = std::numeric_limits<double>::infinity();
+    const auto lower = [](double& margin, double v) {
+        if (!(v >= margin)) margin = v;
+    };
+    const normal_solution& normal = solver_.normal();
+    constexpr int points = 200;
+    const auto grid = [](double lo, double hi, int i) {
+        return 0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * (i + 0.5) / points);
+    };
+    for (int i = 0; i < points; ++i) {
+        const double r = grid(s.start, s.c0, i);
+        lower(c.stick_margin, (f_ * normal.pressure(r) - std::fabs(traction(s, r))) / f_);
+        lower(c.slip_margin, -s.sign * slip_velocity(s, grid(-1.0, s.start, i)) / f_);
+        if (s.c0 < 1.0) lower(c.slip_margin, s.sign * slip_velocity(s, grid(s.c0, 1.0, i)) / f_);
+    }
+    c.stick_holds = c.stick_margin >= 0.0;
+    c.slip_holds = c.slip_margin > 0.0;
+    return c;
+}
+
+tangential_solution dissimilar_zones::gross_sliding(double b) {
+    // |Q| = f: p1 = f p everywhere, v = xi' + b p + f G >= 0 vanishing at the least point r*,
+    // xi' = -min (b p + f G) (docs/formulation.md 8(g)); samples, then golden section on the bracket.
+    std::vector<double> r(least_samples);
+    for (int i = 0; i < least_samples; ++i) r[i] = 1.0 - 2.0 * i / (least_samples - 1);  // descending
+    const std::vector<double> g = solver_.G(r);
+    const normal_solution& normal = solver_.normal();
+    const auto value_at = [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); };
+    std::vector<double> w(least_samples);
+    for (int i = 0; i < least_samples; ++i) {
+        w[i] = b * normal.pressure(r[i]) + f_ * g[i];
+        if (!std::isfinite(w[i]))
+            throw numerical_error("dissimilar zones: G of (3.25) is not finite (roughness parameters too large?)");
+    }
+    const auto least = static_cast<int>(std::min_element(w.begin(), w.end()) - w.begin());
+    double lo = r[std::min(least + 1, least_samples - 1)], hi = r[std::max(least - 1, 0)];
+    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+    double v1 = value_at(x1), v2 = value_at(x2);
+    while (hi - lo > 1e-12) {
+        if (v1 <= v2) {
+            hi = x2, x2 = x1, v2 = v1;
+            x1 = hi - golden * (hi - lo), v1 = value_at(x1);
+        } else {
+            lo = x1, x1 = x2, v1 = v2;
+            x2 = lo + golden * (hi - lo), v2 = value_at(x2);
+        }
+    }
+    double point = 0.5 * (lo + hi), value = value_at(point);
+    for (double edge : {-1.0, 1.0})
+        if (value_at(edge) <= value) point = edge, value = value_at(edge);
+    tangential_solution s = gross_sliding_solution(f_, 0.0);
+    s.xi = -value;
+    s.c0 = point;
+    s.start = point;
+    s.forcing = b;
+    return s;
+}
+
+tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
+    const double magnitude = load_magnitude(Q, f_);
+    if (magnitude == 0.0)
+        throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip)"));
+    check_load_resolvable(magnitude, f_);
+    const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
+    tangential_solution s;
+    if (magnitude == f_) {
+        s = gross_sliding(b);
+    } else {
+        // The structure the hint names first (the coarser level's, when extrapolating), then the
+        // other one: both slip zones in the direction of Q, or the leading one against it. The first
+        // whose checks hold is the answer; else one that fails them, for the caller to refuse.
+        std::optional<tangential_solution> found, failed;
+        for (const bool blend : {opposite, !opposite}) {
+            try {
+                tangential_solution t = three_zones(blend ? opposite_directions(b) : equal_directions(b), magnitude, guess);
+                if (t.checks.hold()) {
+                    found = t;
+                    break;
+                }
+                if (!failed) failed = t;
+            } catch (const numerical_error&) {
+            }
+        }
+        if (!found && !failed)
+            throw numerical_error(not_built(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
+        s = found ? *found : *failed;
+    }
+    s.general = true;
+    // The checks of the |Q| problem (three_zones made them) are those of Q: the mirror of 8(h) changes
+    // the signs of p1 and v together.
+    const bool checked = magnitude != f_;
+    apply_load_sign(s, Q, "dissimilar zones");
+    if (!checked) s.checks = check(s);
+    return s;
+}
+
+void require_checks(const tangential_solution& s) {
+    if (s.checks.hold()) return;
+    throw numerical_error(not_built(
+        s.Q, s.f,
+        "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
+            shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
+            "); the answer has five zones (slip, stick, reversed slip, stick, slip)"));
+}
+
+}  // namespace roughroll
