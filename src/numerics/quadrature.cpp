@@ -1,5 +1,6 @@
 #include "roughroll/numerics/quadrature.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -112,6 +113,26 @@ double u_series(const std::vector<double>& b, double x) {
         y1 = y0;
     }
     return y1;
+}
+
+void u_series(const std::vector<double>& b, const double* x, double* out, std::size_t count) {
+    // Clenshaw's recurrence is a chain of dependent operations: blocks of points advance
+    // together, in the order of the scalar version, so the compiler can vectorise across them.
+    constexpr std::size_t block = 8;
+    for (std::size_t first = 0; first < count; first += block) {
+        const std::size_t width = std::min(block, count - first);
+        double two_x[block] = {}, y1[block] = {}, y2[block] = {};
+        for (std::size_t i = 0; i < width; ++i) two_x[i] = 2.0 * x[first + i];
+        for (auto j = b.size(); j-- > 0;) {
+            const double bj = b[j];
+            for (std::size_t i = 0; i < block; ++i) {
+                const double y0 = bj + two_x[i] * y1[i] - y2[i];
+                y2[i] = y1[i];
+                y1[i] = y0;
+            }
+        }
+        for (std::size_t i = 0; i < width; ++i) out[first + i] = y1[i];
+    }
 }
 
 double cauchy_u_series(const std::vector<double>& b, double x) {

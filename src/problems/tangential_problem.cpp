@@ -58,15 +58,14 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
 
 std::vector<double> tangential_solver::G(const std::vector<double>& r) {
     // (3.25): the kernel difference integrated on the interpolant of phi, split at its jump
-    // (E8), so that G, and with it Q(c0), is continuous in c0; one sweep for all the points.
+    // (E8), so that G, and with it Q(c0), is continuous in c0. G does not depend on c0: its
+    // kernel part is tabulated once per solver (convolution_table.hpp; its representation
+    // error is bounded below eps times its size, docs/formulation.md "G once per contact").
     std::vector<double> g(r.size());
     for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
     if (dk_.empty()) return g;
-    const auto& b = normal_.b;
-    const auto integrals = sweep(dk_, r, 1, n_ - 1, [&b](double theta, double* out) {
-        *out = u_series(b, std::cos(theta));
-    });
-    for (std::size_t m = 0; m < r.size(); ++m) g[m] += integrals[m];
+    if (!g_table_) g_table_.emplace(dk_, normal_.b);
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] += (*g_table_)(r[m]);
     return g;
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/convolution_table.hpp"
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -135,6 +136,7 @@ private:
     std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
     std::optional<tangential_solution> last_system_;  // of the last load(c0)
     std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
+    std::optional<convolution_table> g_table_;  // the kernel part of G (3.25), once per solver
 };
 
 }  // namespace roughroll
