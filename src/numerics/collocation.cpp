@@ -25,7 +25,10 @@ kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double
     // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
     if (how != method::paper) {  // product, and both levels of extrapolated
         const lagrange_basis basis(rule);
-        sweep_.emplace(rule.collocation, rule.n, rule.n - 1, max_rate, std::cref(basis));
+        sweep_.emplace(rule.collocation, rule.n, rule.n - 1, max_rate,
+                       batch_basis_values([&basis](const double* theta, std::size_t count, double* out) {
+                           basis(theta, count, out);
+                       }));
     }
 }
 
@@ -39,8 +42,11 @@ void kernel_operator::add_to(gsl_matrix* a, const kernel& kern) const {
         return;
     }
     const std::vector<double> m_k = sweep_->apply(kern);
-    for (int m = 0; m <= n; ++m)
-        for (int k = 0; k < n; ++k) *gsl_matrix_ptr(a, m, k) += m_k[static_cast<std::size_t>(m) * n + k];
+    for (int m = 0; m <= n; ++m) {
+        double* row = gsl_matrix_ptr(a, m, 0);
+        const double* add = &m_k[static_cast<std::size_t>(m) * n];
+        for (int k = 0; k < n; ++k) row[k] += add[k];
+    }
 }
 
 void add_kernel_term(gsl_matrix* a, const kernel& kern, const gauss_chebyshev& rule, method how) {

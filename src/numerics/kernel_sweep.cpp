@@ -20,6 +20,13 @@ int segment_order(double rate, double length) { return 12 + static_cast<int>(std
 
 kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
                            const basis_values& values)
+    : kernel_sweep(points, width, degree, max_rate,
+                   batch_basis_values([&values, width](const double* theta, std::size_t count, double* out) {
+                       for (std::size_t i = 0; i < count; ++i) values(theta[i], out + i * width);
+                   })) {}
+
+kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
+                           const batch_basis_values& values)
     : points_(points), width_(width), max_rate_(max_rate) {
     const std::size_t count = points.size();
     for (std::size_t m = 0; m < count; ++m) {
@@ -50,6 +57,7 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
     c_.resize(total);
     w_.resize(total);
     g_.resize(total * width);
+    std::vector<double> thetas(total);
     for (std::size_t i = 0, p = 0; i < pieces; ++i) {
         const double length = b[i + 1] - b[i];
         for (int sgm = 0; sgm < segments[i]; ++sgm) {
@@ -60,41 +68,97 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
                 const double s = std::sin(theta);
                 c_[p] = std::cos(theta);
                 w_[p] = half * rule.weights[j] * s * s;
-                values(theta, &g_[p * width]);
+                thetas[p] = theta;
             }
         }
     }
+    values(thetas.data(), total, g_.data());
 }
 
 std::vector<double> kernel_sweep::apply(const kernel& k) const {
     if (k.max_rate() > max_rate_)
         throw numerical_error("kernel_sweep: the kernel decays faster than the rule was built for");
     const std::size_t count = points_.size();
-    const int width = width_;
+    const std::size_t width = static_cast<std::size_t>(width_);
     const auto& x = points_;
-    std::vector<double> out(count * width, 0.0), acc(width);
-    for (const auto& term : k.terms()) {
-        // Left of x_m (eta > x_m, theta < theta_m, pieces 0..m): + T exp(-A (eta - x_m)).
-        std::fill(acc.begin(), acc.end(), 0.0);
-        for (std::size_t m = 0; m < count; ++m) {
-            const double decay = m == 0 ? 0.0 : std::exp(-term.A * (x[m - 1] - x[m]));
-            for (int v = 0; v < width; ++v) acc[v] *= decay;
-            for (std::size_t p = first_[m]; p < first_[m + 1]; ++p) {
-                const double e = w_[p] * std::exp(-term.A * (c_[p] - x[m]));
-                for (int v = 0; v < width; ++v) acc[v] += e * g_[p * width + v];
+    const auto& terms = k.terms();
+    const std::size_t nt = terms.size();
+    std::vector<double> out(count * width, 0.0);
+    if (nt == 0 || count == 0) return out;
+    // One pass over the quadrature points for every term and both sides (the basis values,
+    // count x width of them, are the memory traffic): piece i lies between x_{i-1} and x_i.
+    // Left of x_m (eta > x_m, pieces 0..m): + T exp(-A (eta - x_m)), accumulated as the pass
+    // goes. Right of x_m (eta < x_m, pieces m+1..M): - T exp(-A (x_m - eta)); each piece's
+    // part, referred to its left end x_{i-1}, is kept and the recurrence runs backwards after.
+    constexpr std::size_t block = 8;
+    std::vector<double> left(nt * width, 0.0), right((count + 1) * nt * width, 0.0), e_left, e_right;
+    for (std::size_t i = 0; i <= count; ++i) {
+        const bool has_left = i < count, has_right = i > 0;
+        if (has_left) {
+            for (std::size_t t = 0; t < nt; ++t) {
+                const double decay = i == 0 ? 0.0 : std::exp(-terms[t].A * (x[i - 1] - x[i]));
+                double* acc = &left[t * width];
+                for (std::size_t v = 0; v < width; ++v) acc[v] *= decay;
             }
-            for (int v = 0; v < width; ++v) out[m * width + v] += term.T * acc[v];
         }
-        // Right of x_m (eta < x_m, pieces m+1..M): - T exp(-A (x_m - eta)).
-        std::fill(acc.begin(), acc.end(), 0.0);
-        for (std::size_t m = count; m-- > 0;) {
-            const double decay = m + 1 == count ? 0.0 : std::exp(-term.A * (x[m] - x[m + 1]));
-            for (int v = 0; v < width; ++v) acc[v] *= decay;
-            for (std::size_t p = first_[m + 1]; p < first_[m + 2]; ++p) {
-                const double e = w_[p] * std::exp(-term.A * (x[m] - c_[p]));
-                for (int v = 0; v < width; ++v) acc[v] += e * g_[p * width + v];
+        double* piece_right = &right[i * nt * width];
+        const std::size_t lo = first_[i], nodes = first_[i + 1] - lo;
+        for (std::size_t t = 0; t < nt; ++t) {
+            // The weights of this piece's points, then the sums over them in blocks of `block`
+            // values held in registers (each value still sums its points in their order).
+            const double A = terms[t].A;
+            e_left.resize(nodes);
+            e_right.resize(nodes);
+            for (std::size_t j = 0; j < nodes; ++j) {
+                const std::size_t p = lo + j;
+                e_left[j] = has_left ? w_[p] * std::exp(-A * (c_[p] - x[i])) : 0.0;
+                e_right[j] = has_right ? w_[p] * std::exp(-A * (x[i - 1] - c_[p])) : 0.0;
             }
-            for (int v = 0; v < width; ++v) out[m * width + v] -= term.T * acc[v];
+            double* acc_left = &left[t * width];
+            double* acc_right = &piece_right[t * width];
+            std::size_t v0 = 0;
+            for (; v0 + block <= width; v0 += block) {
+                double l[block], r[block];
+                for (std::size_t v = 0; v < block; ++v) {
+                    l[v] = acc_left[v0 + v];
+                    r[v] = acc_right[v0 + v];
+                }
+                for (std::size_t j = 0; j < nodes; ++j) {
+                    const double* g = &g_[(lo + j) * width + v0];
+                    const double el = e_left[j], er = e_right[j];
+                    for (std::size_t v = 0; v < block; ++v) {
+                        l[v] += el * g[v];
+                        r[v] += er * g[v];
+                    }
+                }
+                for (std::size_t v = 0; v < block; ++v) {
+                    acc_left[v0 + v] = l[v];
+                    acc_right[v0 + v] = r[v];
+                }
+            }
+            for (; v0 < width; ++v0)
+                for (std::size_t j = 0; j < nodes; ++j) {
+                    const double g = g_[(lo + j) * width + v0];
+                    acc_left[v0] += e_left[j] * g;
+                    acc_right[v0] += e_right[j] * g;
+                }
+        }
+        if (has_left) {
+            for (std::size_t t = 0; t < nt; ++t) {
+                const double* acc = &left[t * width];
+                for (std::size_t v = 0; v < width; ++v) out[i * width + v] += terms[t].T * acc[v];
+            }
+        }
+    }
+    for (std::size_t t = 0; t < nt; ++t) {
+        std::vector<double> acc(width, 0.0);
+        for (std::size_t m = count; m-- > 0;) {
+            const double decay = m + 1 == count ? 0.0 : std::exp(-terms[t].A * (x[m] - x[m + 1]));
+            const double* piece = &right[((m + 1) * nt + t) * width];
+            for (std::size_t v = 0; v < width; ++v) {
+                acc[v] = acc[v] * decay + piece[v];
+                out[m * width + v] -= terms[t].T * acc[v];
+            }
         }
     }
     return out;
@@ -129,6 +193,35 @@ void lagrange_basis::operator()(double theta, double* out) const {
     }
     const double scale = 1.0 / sum;
     for (int k = 0; k < n; ++k) out[k] *= scale;
+}
+
+void lagrange_basis::operator()(const double* theta, std::size_t count, double* out) const {
+    // The scalar formula's operations in its order for each angle; `block` angles advance
+    // together, so that the divisions and the sums run side by side.
+    constexpr std::size_t block = 4;
+    const int n = rule_.n;
+    std::vector<double> t(static_cast<std::size_t>(n) * block);
+    for (std::size_t first = 0; first < count; first += block) {
+        const std::size_t width = std::min(block, count - first);
+        double x[block], sum[block] = {};
+        for (std::size_t i = 0; i < block; ++i) x[i] = std::cos(theta[first + std::min(i, width - 1)]);
+        for (int k = 0; k < n; ++k) {
+            for (std::size_t i = 0; i < block; ++i) {
+                const double v = beta_[k] / (x[i] - rule_.nodes[k]);
+                t[k * block + i] = v;
+                sum[i] += v;
+            }
+        }
+        for (std::size_t i = 0; i < width; ++i) {
+            double* row = out + (first + i) * n;
+            if (!std::isfinite(sum[i])) {  // on a node (or next to one): the scalar formula
+                (*this)(theta[first + i], row);
+                continue;
+            }
+            const double scale = 1.0 / sum[i];
+            for (int k = 0; k < n; ++k) row[k] = t[k * block + i] * scale;
+        }
+    }
 }
 
 }  // namespace roughroll

@@ -332,17 +332,21 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked) {
 contact::swept_point contact::at_stick_end(double c0) {
     tangential_solution s = level_at_stick_end(c0, true);
     const tangential_solution own = s;
+    std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        const tangential_solution coarse = companion_->level_at_stick_end(c0, false);
-        s.Q = richardson(s.Q, coarse.Q);
-        s.xi = richardson(s.xi, coarse.xi);
+        coarse = companion_->level_at_stick_end(c0, false);
+        s.Q = richardson(s.Q, coarse->Q);
+        s.xi = richardson(s.xi, coarse->xi);
         if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
             throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
     }
     if (!build_levels()) return {s, std::nullopt};
     std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->level_at_stick_end(c0, false) : own;
+    for (int i = 0; i < 3; ++i)
+        at[i] = !levels_[i] ? own
+                : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
+                                                            : levels_[i]->level_at_stick_end(c0, false);
     return {s, estimate_from(s, own, at, true)};
 }
 
