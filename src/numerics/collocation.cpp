@@ -26,8 +26,8 @@ kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double
     if (how != method::paper) {  // product, and both levels of extrapolated
         const lagrange_basis basis(rule);
         sweep_.emplace(rule.collocation, rule.n, rule.n - 1, max_rate,
-                       batch_basis_values([&basis](const double* theta, std::size_t count, double* out) {
-                           basis(theta, count, out);
+                       batch_basis_values([&basis](const double*, const double* eta, std::size_t count, double* out) {
+                           basis(eta, count, out);
                        }));
     }
 }

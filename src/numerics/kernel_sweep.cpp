@@ -2,10 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define ROUGHROLL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define ROUGHROLL_VECTOR_CLONES
+#endif
 
 namespace roughroll {
 
@@ -16,12 +23,65 @@ namespace {
 // exp(-A |cos theta - x|) changes by at most A times the segment: segments are also kept
 // below 24/A, and the order grows with A times the segment, to at most 48.
 int segment_order(double rate, double length) { return 12 + static_cast<int>(std::ceil(1.5 * rate * length)); }
+
+// The inner sums of apply(): acc_left[v] += sum_j e_left[j] g[j][v], acc_right likewise, each
+// value summing its points in their order, in blocks of values held in registers. On x86-64
+// also compiled for AVX2 (chosen at run time): wider registers, the same operations (no FMA
+// contraction: AVX2 does not imply FMA), so the same values bit for bit.
+typedef double four __attribute__((vector_size(32)));  // four doubles: one AVX2 register
+
+// Unaligned loads and stores through memcpy (no vector passes a function boundary by value).
+void load(four& v, const double* p) { std::memcpy(&v, p, sizeof v); }
+void store(double* p, const four& v) { std::memcpy(p, &v, sizeof v); }
+
+ROUGHROLL_VECTOR_CLONES
+void accumulate_piece(const double* g, std::size_t width, std::size_t nodes, const double* e_left,
+                      const double* e_right, double* acc_left, double* acc_right) {
+    constexpr std::size_t block = 16;
+    std::size_t v0 = 0;
+    for (; v0 + block <= width; v0 += block) {
+        four l0, l1, l2, l3, r0, r1, r2, r3;
+        load(l0, acc_left + v0), load(l1, acc_left + v0 + 4), load(l2, acc_left + v0 + 8);
+        load(l3, acc_left + v0 + 12);
+        load(r0, acc_right + v0), load(r1, acc_right + v0 + 4), load(r2, acc_right + v0 + 8);
+        load(r3, acc_right + v0 + 12);
+        for (std::size_t j = 0; j < nodes; ++j) {
+            const double* gj = g + j * width + v0;
+            four g0, g1, g2, g3;
+            load(g0, gj), load(g1, gj + 4), load(g2, gj + 8), load(g3, gj + 12);
+            const double el = e_left[j], er = e_right[j];
+            l0 += el * g0;
+            l1 += el * g1;
+            l2 += el * g2;
+            l3 += el * g3;
+            r0 += er * g0;
+            r1 += er * g1;
+            r2 += er * g2;
+            r3 += er * g3;
+        }
+        store(acc_left + v0, l0);
+        store(acc_left + v0 + 4, l1);
+        store(acc_left + v0 + 8, l2);
+        store(acc_left + v0 + 12, l3);
+        store(acc_right + v0, r0);
+        store(acc_right + v0 + 4, r1);
+        store(acc_right + v0 + 8, r2);
+        store(acc_right + v0 + 12, r3);
+    }
+    for (; v0 < width; ++v0)
+        for (std::size_t j = 0; j < nodes; ++j) {
+            const double gj = g[j * width + v0];
+            acc_left[v0] += e_left[j] * gj;
+            acc_right[v0] += e_right[j] * gj;
+        }
+}
 }  // namespace
 
 kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
                            const basis_values& values)
     : kernel_sweep(points, width, degree, max_rate,
-                   batch_basis_values([&values, width](const double* theta, std::size_t count, double* out) {
+                   batch_basis_values([&values, width](const double* theta, const double*, std::size_t count,
+                                                       double* out) {
                        for (std::size_t i = 0; i < count; ++i) values(theta[i], out + i * width);
                    })) {}
 
@@ -72,7 +132,7 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
             }
         }
     }
-    values(thetas.data(), total, g_.data());
+    values(thetas.data(), c_.data(), total, g_.data());
 }
 
 std::vector<double> kernel_sweep::apply(const kernel& k) const {
@@ -90,7 +150,6 @@ std::vector<double> kernel_sweep::apply(const kernel& k) const {
     // Left of x_m (eta > x_m, pieces 0..m): + T exp(-A (eta - x_m)), accumulated as the pass
     // goes. Right of x_m (eta < x_m, pieces m+1..M): - T exp(-A (x_m - eta)); each piece's
     // part, referred to its left end x_{i-1}, is kept and the recurrence runs backwards after.
-    constexpr std::size_t block = 8;
     std::vector<double> left(nt * width, 0.0), right((count + 1) * nt * width, 0.0), e_left, e_right;
     for (std::size_t i = 0; i <= count; ++i) {
         const bool has_left = i < count, has_right = i > 0;
@@ -114,34 +173,8 @@ std::vector<double> kernel_sweep::apply(const kernel& k) const {
                 e_left[j] = has_left ? w_[p] * std::exp(-A * (c_[p] - x[i])) : 0.0;
                 e_right[j] = has_right ? w_[p] * std::exp(-A * (x[i - 1] - c_[p])) : 0.0;
             }
-            double* acc_left = &left[t * width];
-            double* acc_right = &piece_right[t * width];
-            std::size_t v0 = 0;
-            for (; v0 + block <= width; v0 += block) {
-                double l[block], r[block];
-                for (std::size_t v = 0; v < block; ++v) {
-                    l[v] = acc_left[v0 + v];
-                    r[v] = acc_right[v0 + v];
-                }
-                for (std::size_t j = 0; j < nodes; ++j) {
-                    const double* g = &g_[(lo + j) * width + v0];
-                    const double el = e_left[j], er = e_right[j];
-                    for (std::size_t v = 0; v < block; ++v) {
-                        l[v] += el * g[v];
-                        r[v] += er * g[v];
-                    }
-                }
-                for (std::size_t v = 0; v < block; ++v) {
-                    acc_left[v0 + v] = l[v];
-                    acc_right[v0 + v] = r[v];
-                }
-            }
-            for (; v0 < width; ++v0)
-                for (std::size_t j = 0; j < nodes; ++j) {
-                    const double g = g_[(lo + j) * width + v0];
-                    acc_left[v0] += e_left[j] * g;
-                    acc_right[v0] += e_right[j] * g;
-                }
+            accumulate_piece(&g_[lo * width], width, nodes, e_left.data(), e_right.data(), &left[t * width],
+                             &piece_right[t * width]);
         }
         if (has_left) {
             for (std::size_t t = 0; t < nt; ++t) {
@@ -195,27 +228,33 @@ void lagrange_basis::operator()(double theta, double* out) const {
     for (int k = 0; k < n; ++k) out[k] *= scale;
 }
 
-void lagrange_basis::operator()(const double* theta, std::size_t count, double* out) const {
-    // The scalar formula's operations in its order for each angle; `block` angles advance
+void lagrange_basis::operator()(const double* x, std::size_t count, double* out) const {
+    // The scalar formula's operations in its order for each point; `block` points advance
     // together, so that the divisions and the sums run side by side.
     constexpr std::size_t block = 4;
     const int n = rule_.n;
     std::vector<double> t(static_cast<std::size_t>(n) * block);
     for (std::size_t first = 0; first < count; first += block) {
         const std::size_t width = std::min(block, count - first);
-        double x[block], sum[block] = {};
-        for (std::size_t i = 0; i < block; ++i) x[i] = std::cos(theta[first + std::min(i, width - 1)]);
+        double xs[block], sum[block] = {};
+        for (std::size_t i = 0; i < block; ++i) xs[i] = x[first + std::min(i, width - 1)];
         for (int k = 0; k < n; ++k) {
             for (std::size_t i = 0; i < block; ++i) {
-                const double v = beta_[k] / (x[i] - rule_.nodes[k]);
+                const double v = beta_[k] / (xs[i] - rule_.nodes[k]);
                 t[k * block + i] = v;
                 sum[i] += v;
             }
         }
         for (std::size_t i = 0; i < width; ++i) {
             double* row = out + (first + i) * n;
-            if (!std::isfinite(sum[i])) {  // on a node (or next to one): the scalar formula
-                (*this)(theta[first + i], row);
+            if (!std::isfinite(sum[i])) {  // on a node (the unit vector), or next to one
+                const auto hit = std::find(rule_.nodes.begin(), rule_.nodes.end(), xs[i]);
+                if (hit != rule_.nodes.end()) {
+                    std::fill(row, row + n, 0.0);
+                    row[hit - rule_.nodes.begin()] = 1.0;
+                } else {
+                    (*this)(std::acos(xs[i]), row);
+                }
                 continue;
             }
             const double scale = 1.0 / sum[i];

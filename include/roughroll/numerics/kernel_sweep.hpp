@@ -22,8 +22,10 @@ namespace roughroll {
 
 // values(theta, out): writes g_v(cos theta), v < width, into out[0..width).
 using basis_values = std::function<void(double theta, double* out)>;
-// The same for count angles at once: g_v(cos theta[i]) into out[i * width + v].
-using batch_basis_values = std::function<void(const double* theta, std::size_t count, double* out)>;
+// The same for count points at once, theta[i] and eta[i] = cos theta[i]: g_v(eta[i]) into
+// out[i * width + v].
+using batch_basis_values =
+    std::function<void(const double* theta, const double* eta, std::size_t count, double* out)>;
 
 // A workspace for fixed points and functions: the quadrature points of every piece and
 // the basis values there are computed once, and apply() integrates any kernel whose rates
@@ -58,9 +60,9 @@ class lagrange_basis {
 public:
     explicit lagrange_basis(const gauss_chebyshev& rule);
     void operator()(double theta, double* out) const;  // l_k(cos theta), k < n
-    // At count angles, out[i * n + k] = l_k(cos theta[i]): the same values, bit for bit, with
-    // several angles side by side (the sweep's set-up, once per operator).
-    void operator()(const double* theta, std::size_t count, double* out) const;
+    // At count points x[i] (= cos theta), out[i * n + k] = l_k(x[i]): the same values, bit for
+    // bit, with several points side by side (the sweep's set-up, once per operator).
+    void operator()(const double* x, std::size_t count, double* out) const;
 
 private:
     const gauss_chebyshev& rule_;
