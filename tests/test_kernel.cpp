@@ -189,3 +189,22 @@ TEST(ConvolutionTable, BatchedUSeriesIsTheScalarOne) {
     u_series(b, x.data(), out.data(), x.size());
     for (int i = 0; i < 21; ++i) EXPECT_EQ(out[i], u_series(b, x[i]));
 }
+
+TEST(KernelMoments, ClosedFormAtTheEnds) {
+    // integrate_at_end (modified Bessel functions, Miller's recurrence) against the split
+    // Gauss-Legendre moments at r = +-1, for rates from 0 to 2000 and 8 or 200 coefficients.
+    for (int n : {8, 200}) {
+        std::vector<double> b(n);
+        for (int j = 0; j < n; ++j) b[j] = (j % 3 == 1 ? -1.0 : 1.0) * 0.8 / (1.0 + j) + 1e-3 * std::cos(j);
+        for (double A : {0.0, 1e-9, 1e-3, 0.5, 3.0, 40.0, 300.0, 2000.0}) {
+            const kernel k(std::vector<exponential_term>{{0.7, A}, {-0.2, 2.0 * A}});
+            kernel_moments moments(k, n);
+            for (double end : {1.0, -1.0}) {
+                const double exact = moments.integrate(b, end);
+                EXPECT_NEAR(integrate_at_end(k, b, end), exact, 2e-15 * (1.0 + std::fabs(exact)))
+                    << "n = " << n << ", A = " << A << ", end = " << end;
+            }
+        }
+    }
+    EXPECT_THROW(integrate_at_end(kernel(), {1.0}, 0.5), numerical_error);
+}

@@ -132,7 +132,6 @@ private:
     bool carter_;  // smooth in both directions, closed form allowed
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
-    std::optional<gauss_legendre> moments_rule_;  // for kernel_moments of n coefficients, built once
     std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
     std::optional<tangential_solution> last_system_;  // of the last load(c0)
     std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
