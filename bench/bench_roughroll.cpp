@@ -162,10 +162,13 @@ void bm_physical_point(benchmark::State& state) {
     const method how = state.range(0) == 3 ? method::one_parameter : method_of(state.range(0));
     const solver_options o{0, how};
     for (auto _ : state) {
+        // As solve_point does (io/scene_point.cpp): the trial widths and the contact at the width
+        // found share their product-integration workspaces.
+        sweep_cache cache;
         const contact_width w =
-            find_width(*s.physical, [&o](const roughness& r) { return load_ratio(r, o); },
-                       [&o](const roughness& r) { return coarse_load_ratio(r, o); });
-        contact c(roughness_at(*s.physical, w.a), s.friction, o);
+            find_width(*s.physical, [&o, &cache](const roughness& r) { return load_ratio(r, o, &cache); },
+                       [&o, &cache](const roughness& r) { return coarse_load_ratio(r, o, &cache); });
+        contact c(roughness_at(*s.physical, w.a), s.friction, o, &cache);
         benchmark::DoNotOptimize(c.point(*s.Q).xi);
     }
 }

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/convolution_table.hpp"
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
@@ -207,4 +209,31 @@ TEST(KernelMoments, ClosedFormAtTheEnds) {
         }
     }
     EXPECT_THROW(integrate_at_end(kernel(), {1.0}, 0.5), numerical_error);
+}
+
+TEST(SweepCache, SharedWorkspaceGivesTheSameOperator) {
+    // Two normal kernels whose rates differ but need the same workspace (the trial widths of a
+    // width search): the operators from one cache equal, bit for bit, those built alone; a rate
+    // that needs a longer rule gets a workspace of its own.
+    const gauss_chebyshev rule(64);
+    sweep_cache cache;
+    auto matrix_of = [&rule](const kernel& k, sweep_cache* c) {
+        matrix_ptr a = make_matrix(rule.n + 1, rule.n);
+        gsl_matrix_set_zero(a.get());
+        kernel_operator(rule, method::product, k.max_rate(), c).add_to(a.get(), k);
+        return a;
+    };
+    const kernel first(std::vector<exponential_term>{{1.2, 2.06}}), second(std::vector<exponential_term>{{1.3, 2.1}});
+    const kernel steep(std::vector<exponential_term>{{1.3, 40.0}});
+    EXPECT_EQ(kernel_sweep::same_layout_rate(rule.n - 1, 2.06), kernel_sweep::same_layout_rate(rule.n - 1, 2.1));
+    EXPECT_LT(kernel_sweep::same_layout_rate(rule.n - 1, 2.1), 40.0);
+    const auto shared_first = cache.get(rule, first.max_rate());
+    EXPECT_EQ(cache.get(rule, second.max_rate()), shared_first);
+    EXPECT_NE(cache.get(rule, steep.max_rate()), shared_first);
+    for (const kernel* k : {&first, &second, &steep}) {
+        const matrix_ptr alone = matrix_of(*k, nullptr), shared = matrix_of(*k, &cache);
+        for (int m = 0; m <= rule.n; ++m)
+            for (int j = 0; j < rule.n; ++j)
+                ASSERT_EQ(gsl_matrix_get(shared.get(), m, j), gsl_matrix_get(alone.get(), m, j)) << m << ", " << j;
+    }
 }

@@ -23,6 +23,9 @@ namespace {
 // exp(-A |cos theta - x|) changes by at most A times the segment: segments are also kept
 // below 24/A, and the order grows with A times the segment, to at most 48.
 int segment_order(double rate, double length) { return 12 + static_cast<int>(std::ceil(1.5 * rate * length)); }
+double longest_segment(int degree, double max_rate) {
+    return max_rate > 0.0 ? std::min(M_PI / (degree + 2), 24.0 / max_rate) : M_PI / (degree + 2);
+}
 
 // The inner sums of apply(): acc_left[v] += sum_j e_left[j] g[j][v], acc_right likewise, each
 // value summing its points in their order, in blocks of values held in registers. On x86-64
@@ -99,7 +102,7 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
     b.back() = M_PI;
     for (std::size_t m = 0; m < count; ++m) b[m + 1] = std::acos(points[m]);
     const std::size_t pieces = count + 1;
-    const double longest = max_rate > 0.0 ? std::min(M_PI / (degree + 2), 24.0 / max_rate) : M_PI / (degree + 2);
+    const double longest = longest_segment(degree, max_rate);
     const gauss_legendre rule(segment_order(max_rate, longest));
     const std::size_t q = rule.nodes.size();
 
@@ -133,6 +136,18 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
         }
     }
     values(thetas.data(), c_.data(), total, g_.data());
+}
+
+double kernel_sweep::same_layout_rate(int degree, double max_rate) {
+    const double longest = longest_segment(degree, max_rate);
+    if (max_rate <= 0.0 || longest != M_PI / (degree + 2)) return max_rate;
+    // The order 12 + ceil(1.5 A longest) stays while 1.5 A longest <= order - 12; a hair below
+    // that bound, checked, so that rounding never changes the order.
+    const int order = segment_order(max_rate, longest);
+    const double reach = std::min((order - 12) / (1.5 * longest) * (1.0 - 1e-12), 24.0 / longest);
+    if (!(reach >= max_rate) || longest_segment(degree, reach) != longest || segment_order(reach, longest) != order)
+        return max_rate;
+    return reach;
 }
 
 std::vector<double> kernel_sweep::apply(const kernel& k) const {

@@ -22,7 +22,7 @@ kernel widest_kernel(const roughness& r) {
 }
 }  // namespace
 
-contact::contact(const roughness& surfaces, double f, const solver_options& options)
+contact::contact(const roughness& surfaces, double f, const solver_options& options, sweep_cache* cache)
     : surfaces_(surfaces), options_(options), f_(f) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     const int n = options.nodes();
@@ -41,9 +41,11 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
             throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                    ": the coarse level n/2 is not in the asymptotic range of product integration "
                                    "for these kernels; increase n or use method 'product'");
-        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones});
+        companion_ =
+            std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones}, cache);
     }
-    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how)));
+    normal_ =
+        std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how), cache));
     normal_->how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
     if (extrapolate) {
         reported_ = std::make_unique<normal_solution>(*normal_);
@@ -382,30 +384,30 @@ std::vector<contact::distribution_row> contact::distributions(const tangential_s
     return rows;
 }
 
-double load_ratio(const roughness& surfaces, const solver_options& options) {
+double load_ratio(const roughness& surfaces, const solver_options& options, sweep_cache* cache) {
     // The calls of contact's constructor for P_H/P2, in the same order and with the same arguments.
     const int n = options.nodes();
     if (options.how == method::one_parameter)
         return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
     const kernel k2 = kernel::normal(surfaces);
     if (options.how != method::extrapolated || k2.empty()) {
-        return solve_normal(k2, n, level_of(options.how)).lambda;
+        return solve_normal(k2, n, level_of(options.how), cache).lambda;
     }
     if (n / 2 < min_nodes || !in_asymptotic_range(k2, n / 2, method::product))
         throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                ": the coarse level n/2 is not in the asymptotic range of product integration "
                                "for the normal kernel; increase n or use method 'product'");
-    const double coarse = solve_normal(k2, n / 2, method::product).lambda;
-    return richardson(solve_normal(k2, n, method::product).lambda, coarse);
+    const double coarse = solve_normal(k2, n / 2, method::product, cache).lambda;
+    return richardson(solve_normal(k2, n, method::product, cache).lambda, coarse);
 }
 
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options) {
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options, sweep_cache* cache) {
     const int n = options.nodes() / 2;
     if (n < min_nodes)
         throw resolution_error("the cheap level n/2 = " + std::to_string(n) + " is below " + std::to_string(min_nodes));
     if (options.how == method::one_parameter)
         return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
-    return solve_normal(kernel::normal(surfaces), n, level_of(options.how)).lambda;
+    return solve_normal(kernel::normal(surfaces), n, level_of(options.how), cache).lambda;
 }
 
 namespace {

@@ -42,6 +42,12 @@ public:
     // points.size() x width values, row-major.
     std::vector<double> apply(const kernel& k) const;
 
+    // The largest rate whose workspace (quadrature order and segment length) is the one built
+    // for max_rate with this degree: a workspace built for it serves every rate up to it with
+    // the same points, bit for bit (sweep_cache, collocation.hpp). max_rate itself when the
+    // segments shrink with the rate.
+    static double same_layout_rate(int degree, double max_rate);
+
 private:
     std::vector<double> points_;
     int width_;

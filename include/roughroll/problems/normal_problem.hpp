@@ -35,7 +35,8 @@ struct normal_solution {
 class normal_solver {
 public:
     normal_solver(int n, method how);
-    normal_solution solve(const kernel& k2);
+    // `cache`: product-integration workspaces shared with other solves at this n (collocation.hpp).
+    normal_solution solve(const kernel& k2, sweep_cache* cache = nullptr);
 
 private:
     gauss_chebyshev rule_;
@@ -47,6 +48,6 @@ private:
 normal_solution hertz_solution(int n, method how);
 
 // Hertz's closed form when k2 is empty, the solver otherwise.
-normal_solution solve_normal(const kernel& k2, int n, method how);
+normal_solution solve_normal(const kernel& k2, int n, method how, sweep_cache* cache = nullptr);
 
 }  // namespace roughroll
