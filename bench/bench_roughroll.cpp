@@ -164,7 +164,7 @@ void bm_physical_point(benchmark::State& state) {
     for (auto _ : state) {
         // As solve_point does (io/scene_point.cpp): the trial widths and the contact at the width
         // found share their product-integration workspaces.
-        sweep_cache cache;
+        normal_cache cache;
         const contact_width w =
             find_width(*s.physical, [&o, &cache](const roughness& r) { return load_ratio(r, o, &cache); },
                        [&o, &cache](const roughness& r) { return coarse_load_ratio(r, o, &cache); });

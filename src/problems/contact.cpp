@@ -22,7 +22,7 @@ kernel widest_kernel(const roughness& r) {
 }
 }  // namespace
 
-contact::contact(const roughness& surfaces, double f, const solver_options& options, sweep_cache* cache)
+contact::contact(const roughness& surfaces, double f, const solver_options& options, normal_cache* cache)
     : surfaces_(surfaces), options_(options), f_(f) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     const int n = options.nodes();
@@ -384,7 +384,7 @@ std::vector<contact::distribution_row> contact::distributions(const tangential_s
     return rows;
 }
 
-double load_ratio(const roughness& surfaces, const solver_options& options, sweep_cache* cache) {
+double load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
     // The calls of contact's constructor for P_H/P2, in the same order and with the same arguments.
     const int n = options.nodes();
     if (options.how == method::one_parameter)
@@ -401,7 +401,7 @@ double load_ratio(const roughness& surfaces, const solver_options& options, swee
     return richardson(solve_normal(k2, n, method::product, cache).lambda, coarse);
 }
 
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options, sweep_cache* cache) {
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
     const int n = options.nodes() / 2;
     if (n < min_nodes)
         throw resolution_error("the cheap level n/2 = " + std::to_string(n) + " is below " + std::to_string(min_nodes));

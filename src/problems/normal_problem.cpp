@@ -50,8 +50,27 @@ normal_solution hertz_solution(int n, method how) {
     return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr};
 }
 
-normal_solution solve_normal(const kernel& k2, int n, method how, sweep_cache* cache) {
-    return k2.empty() ? hertz_solution(n, how) : normal_solver(n, how).solve(k2, cache);
+namespace {
+bool same_terms(const kernel& a, const kernel& b) {
+    const auto& x = a.terms();
+    const auto& y = b.terms();
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (!(x[i].T == y[i].T && x[i].A == y[i].A)) return false;
+    return true;
+}
+}  // namespace
+
+normal_solution normal_cache::solve(const kernel& k2, int n, method how) {
+    for (const entry& e : solved_)
+        if (e.n == n && e.how == how && same_terms(e.k2, k2)) return e.solution;
+    solved_.push_back({k2, n, how, normal_solver(n, how).solve(k2, &sweeps_)});
+    return solved_.back().solution;
+}
+
+normal_solution solve_normal(const kernel& k2, int n, method how, normal_cache* cache) {
+    if (k2.empty()) return hertz_solution(n, how);
+    return cache ? cache->solve(k2, n, how) : normal_solver(n, how).solve(k2);
 }
 
 }  // namespace roughroll

@@ -58,10 +58,10 @@ struct error_estimate {
 
 class contact {
 public:
-    // `cache`: product-integration workspaces shared with earlier solves of the scene at the same
-    // n (the width search's, collocation.hpp), for the normal problems of this level and its
-    // companion; kept by the operators, not by the contact.
-    contact(const roughness& surfaces, double f, const solver_options& options, sweep_cache* cache = nullptr);
+    // `cache`: the normal problems of the scene solved before (the width search's, whose last
+    // trial is the width found: normal_problem.hpp), for this level and its companion; the
+    // contact keeps copies, not the cache.
+    contact(const roughness& surfaces, double f, const solver_options& options, normal_cache* cache = nullptr);
 
     // The normal solution as reported (lambda extrapolated for method::extrapolated).
     const normal_solution& normal() const;
@@ -163,14 +163,15 @@ private:
 // calls, the same extrapolation), for every method, without the tangential solver: for a
 // root search in the contact width. The extrapolated method's asymptotic-range condition is
 // checked on the normal kernel only (the tangential kernel does not enter P_H/P2).
-double load_ratio(const roughness& surfaces, const solver_options& options, sweep_cache* cache = nullptr);
+// `cache`: the normal problems shared with the other trials of a width search and its contact.
+double load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
 
 // P_H/P2 on the cheap level of `options`: the method's plain discretisation at n/2 (product
 // integration for `extrapolated`, the one-parameter normal problem for `one_parameter`). Its
 // root in the contact width starts the width search at the scene's method (find_width), whose
 // answer is load_ratio's root, not this one's. Throws resolution_error when n/2 < min_nodes or
 // the kernel is beyond the level's resolution.
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options, sweep_cache* cache = nullptr);
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
 
 // One row of a creep curve.
 struct curve_point {
