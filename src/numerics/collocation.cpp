@@ -14,9 +14,13 @@ namespace roughroll {
 
 void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule) {
     const int n = rule.n;
-    for (int m = 0; m <= n; ++m)
-        for (int k = 0; k < n; ++k)
-            *gsl_matrix_ptr(a, m, k) += M_1_PI * rule.weights[k] / (rule.nodes[k] - rule.collocation[m]);
+    const double* w = rule.weights.data();
+    const double* eta = rule.nodes.data();
+    for (int m = 0; m <= n; ++m) {
+        double* row = gsl_matrix_ptr(a, m, 0);
+        const double s = rule.collocation[m];
+        for (int k = 0; k < n; ++k) row[k] += M_1_PI * w[k] / (eta[k] - s);  // vectorised: no call per element
+    }
 }
 
 namespace {
