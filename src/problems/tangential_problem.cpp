@@ -11,7 +11,6 @@
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/kernel_sweep.hpp"
 #include "roughroll/numerics/root_search.hpp"
 
 namespace roughroll {

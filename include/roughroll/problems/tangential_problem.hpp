@@ -106,7 +106,7 @@ public:
     tangential_solution solve_on_zone(double start, double c0);
 
     double G(double r);                                          // (3.25)
-    std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
+    std::vector<double> G(const std::vector<double>& r);         // at points of [-1, 1], in any order
     double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
     // v at many points of the slip zone (any order), in one sweep.
