@@ -1,4 +1,5 @@
 // Kernels (3.23)-(3.24) with errata E1, E2 and their moments against U_j sqrt(1 - x^2).
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -7,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/convolution_table.hpp"
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
 
@@ -142,4 +146,94 @@ TEST(KernelSweep, RejectsUnsortedPoints) {
     auto one = [](double, double* out) { *out = 1.0; };
     EXPECT_THROW(sweep(k, {0.1, 0.2}, 1, 0, one), numerical_error);
     EXPECT_THROW(sweep(k, {1.5}, 1, 0, one), numerical_error);
+}
+
+TEST(ConvolutionTable, AgreesWithSweepAndMoments) {
+    // The table of D(r) = int sqrt(1 - eta^2) phi(eta) K(eta - r) d eta (G of (3.25)) against two
+    // other routes at points that are not its nodes: the two-sided recurrence at sorted points
+    // (kernel_sweep) and the split moments (kernel_moments). Coefficients of a pressure-like
+    // series (decaying, alternating) of n = 8, 64 and 200 terms; rates from 0 to 300.
+    for (int n : {8, 64, 200}) {
+        std::vector<double> b(n);
+        for (int j = 0; j < n; ++j) b[j] = (j % 3 == 1 ? -1.0 : 1.0) * 0.8 / (1.0 + j * j) + 1e-3 * std::sin(j);
+        for (double A : {0.0, 0.5, 3.0, 40.0, 300.0}) {
+            const kernel k(std::vector<exponential_term>{{0.7, A}, {-0.2, 0.25 * A}, {0.4, 0.0}});
+            const convolution_table table(k, b);
+            EXPECT_LE(table.error_bound(), 1e-15 * table.scale());
+            std::vector<double> points{1.0, -1.0};
+            for (int i = 0; i < 301; ++i) points.push_back(std::cos(0.01 + 3.1 * std::sqrt(i / 300.0) * std::sqrt(i / 300.0)));
+            std::sort(points.begin(), points.end(), std::greater<double>());
+            const auto swept = sweep(k, points, 1, n - 1, [&](double theta, double* out) {
+                *out = u_series(b, std::cos(theta));
+            });
+            kernel_moments moments(k, n);
+            double worst = 0.0;
+            for (std::size_t m = 0; m < points.size(); ++m) {
+                const double t = table(points[m]);
+                worst = std::max(worst, std::fabs(t - swept[m]));
+                EXPECT_NEAR(t, swept[m], 4e-15 * table.scale()) << "n = " << n << ", A = " << A << ", r = " << points[m];
+                if (m % 10 == 0) {
+                    EXPECT_NEAR(t, moments.integrate(b, points[m]), 4e-15 * table.scale())
+                        << "n = " << n << ", A = " << A << ", r = " << points[m];
+                }
+            }
+            // Measured: 2.6e-16 to 1.3e-15 of the size bound (the rounding of the routes), with
+            // representation bounds of 6e-19 to 9e-17.
+            EXPECT_GT(worst, 0.0);
+        }
+    }
+}
+
+TEST(ConvolutionTable, BatchedUSeriesIsTheScalarOne) {
+    std::vector<double> b{0.3, -1.2, 0.5, 0.05, -0.3, 0.2, 0.01, -0.07, 0.4};
+    std::vector<double> x, out(21);
+    for (int i = 0; i < 21; ++i) x.push_back(std::cos(0.15 * i));
+    u_series(b, x.data(), out.data(), x.size());
+    for (int i = 0; i < 21; ++i) EXPECT_EQ(out[i], u_series(b, x[i]));
+}
+
+TEST(KernelMoments, ClosedFormAtTheEnds) {
+    // integrate_at_end (modified Bessel functions, Miller's recurrence) against the split
+    // Gauss-Legendre moments at r = +-1, for rates from 0 to 2000 and 8 or 200 coefficients.
+    for (int n : {8, 200}) {
+        std::vector<double> b(n);
+        for (int j = 0; j < n; ++j) b[j] = (j % 3 == 1 ? -1.0 : 1.0) * 0.8 / (1.0 + j) + 1e-3 * std::cos(j);
+        for (double A : {0.0, 1e-9, 1e-3, 0.5, 3.0, 40.0, 300.0, 2000.0}) {
+            const kernel k(std::vector<exponential_term>{{0.7, A}, {-0.2, 2.0 * A}});
+            kernel_moments moments(k, n);
+            for (double end : {1.0, -1.0}) {
+                const double exact = moments.integrate(b, end);
+                EXPECT_NEAR(integrate_at_end(k, b, end), exact, 2e-15 * (1.0 + std::fabs(exact)))
+                    << "n = " << n << ", A = " << A << ", end = " << end;
+            }
+        }
+    }
+    EXPECT_THROW(integrate_at_end(kernel(), {1.0}, 0.5), numerical_error);
+}
+
+TEST(SweepCache, SharedWorkspaceGivesTheSameOperator) {
+    // Two normal kernels whose rates differ but need the same workspace (the trial widths of a
+    // width search): the operators from one cache equal, bit for bit, those built alone; a rate
+    // that needs a longer rule gets a workspace of its own.
+    const gauss_chebyshev rule(64);
+    sweep_cache cache;
+    auto matrix_of = [&rule](const kernel& k, sweep_cache* c) {
+        matrix_ptr a = make_matrix(rule.n + 1, rule.n);
+        gsl_matrix_set_zero(a.get());
+        kernel_operator(rule, method::product, k.max_rate(), c).add_to(a.get(), k);
+        return a;
+    };
+    const kernel first(std::vector<exponential_term>{{1.2, 2.06}}), second(std::vector<exponential_term>{{1.3, 2.1}});
+    const kernel steep(std::vector<exponential_term>{{1.3, 40.0}});
+    EXPECT_EQ(kernel_sweep::same_layout_rate(rule.n - 1, 2.06), kernel_sweep::same_layout_rate(rule.n - 1, 2.1));
+    EXPECT_LT(kernel_sweep::same_layout_rate(rule.n - 1, 2.1), 40.0);
+    const auto shared_first = cache.get(rule, first.max_rate());
+    EXPECT_EQ(cache.get(rule, second.max_rate()), shared_first);
+    EXPECT_NE(cache.get(rule, steep.max_rate()), shared_first);
+    for (const kernel* k : {&first, &second, &steep}) {
+        const matrix_ptr alone = matrix_of(*k, nullptr), shared = matrix_of(*k, &cache);
+        for (int m = 0; m <= rule.n; ++m)
+            for (int j = 0; j < rule.n; ++j)
+                ASSERT_EQ(gsl_matrix_get(shared.get(), m, j), gsl_matrix_get(alone.get(), m, j)) << m << ", " << j;
+    }
 }

@@ -168,3 +168,26 @@ TEST(GivenLoad, BracketStaysWithinTheResolution) {
     EXPECT_GT(w.a, w.a_hertz);
     EXPECT_NEAR(lambda_of(roughness_at(*s.physical, w.a), s), w.lambda, 1e-9 * w.lambda);
 }
+
+TEST(GivenLoad, SharedNormalProblemsGiveTheSamePoint) {
+    // The width search's normal problems (normal_cache: the set-up per n and the solutions) serve
+    // its trials and the contact at the width found; the width, the point and its estimate are
+    // those of the same search and contact without the cache, to the last bit, for each method.
+    for (const char* how : {"product", "extrapolated"}) {
+        scene s = steel(rough_k_t, std::string("[solver]\nmethod = \"") + how + "\"\n");
+        auto search = [&s](normal_cache* cache) {
+            return find_width(*s.physical, [&](const roughness& r) { return load_ratio(r, s.solver, cache); },
+                              [&](const roughness& r) { return coarse_load_ratio(r, s.solver, cache); });
+        };
+        normal_cache cache;
+        const contact_width shared = search(&cache), alone = search(nullptr);
+        ASSERT_EQ(shared.a, alone.a) << how;
+        contact with(roughness_at(*s.physical, shared.a), s.friction, s.solver, {}, &cache);
+        contact without(roughness_at(*s.physical, alone.a), s.friction, s.solver);
+        const tangential_solution p = with.point(*s.Q), q = without.point(*s.Q);
+        EXPECT_EQ(with.normal().lambda, without.normal().lambda) << how;
+        EXPECT_EQ(p.c0, q.c0) << how;
+        EXPECT_EQ(p.xi, q.xi) << how;
+        EXPECT_EQ(with.estimate(p)->xi, without.estimate(q)->xi) << how;
+    }
+}

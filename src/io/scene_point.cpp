@@ -17,13 +17,16 @@ void override_solver(scene& s, std::optional<int> n, const std::optional<std::st
     if (zones_name) s.solver.zones = zone_search_from_string(*zones_name);
 }
 
-std::optional<contact_width> settle_width(scene& s) {
+std::optional<contact_width> settle_width(scene& s, normal_cache* cache) {
     if (!s.physical) return std::nullopt;
     // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone),
-    // searched on the method's cheap level n/2 first and polished at the scene's method.
+    // searched on the method's cheap level n/2 first and polished at the scene's method; the
+    // trials share their product-integration workspaces (collocation.hpp).
+    normal_cache own;
+    normal_cache* shared = cache ? cache : &own;
     const contact_width w = find_width(
-        *s.physical, [&s](const roughness& r) { return load_ratio(r, s.solver); },
-        [&s](const roughness& r) { return coarse_load_ratio(r, s.solver); });
+        *s.physical, [&s, shared](const roughness& r) { return load_ratio(r, s.solver, shared); },
+        [&s, shared](const roughness& r) { return coarse_load_ratio(r, s.solver, shared); });
     s.surfaces = roughness_at(*s.physical, w.a);
     return w;
 }
@@ -40,8 +43,9 @@ point_report scene_point::report() const {
 namespace {
 // The contact of a scene whose width is settled first (the scene is modified in place).
 contact settled_contact(scene& s, std::optional<contact_width>& width) {
-    width = settle_width(s);
-    return contact(s.surfaces, s.friction, s.solver, s.materials);
+    normal_cache cache;
+    width = settle_width(s, &cache);
+    return contact(s.surfaces, s.friction, s.solver, s.materials, &cache);
 }
 }  // namespace
 

@@ -14,19 +14,42 @@ namespace roughroll {
 
 void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule) {
     const int n = rule.n;
-    for (int m = 0; m <= n; ++m)
-        for (int k = 0; k < n; ++k)
-            *gsl_matrix_ptr(a, m, k) += M_1_PI * rule.weights[k] / (rule.nodes[k] - rule.collocation[m]);
+    const double* w = rule.weights.data();
+    const double* eta = rule.nodes.data();
+    for (int m = 0; m <= n; ++m) {
+        double* row = gsl_matrix_ptr(a, m, 0);
+        const double s = rule.collocation[m];
+        for (int k = 0; k < n; ++k) row[k] += M_1_PI * w[k] / (eta[k] - s);  // vectorised: no call per element
+    }
 }
 
-kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double max_rate)
+namespace {
+// The sweep of product integration at the collocation points of `rule`, the Lagrange basis of its
+// nodes integrated against kernels of rates up to max_rate (kernel_sweep.hpp).
+std::shared_ptr<const kernel_sweep> lagrange_sweep(const gauss_chebyshev& rule, double max_rate) {
+    const lagrange_basis basis(rule);
+    return std::make_shared<const kernel_sweep>(
+        rule.collocation, rule.n, rule.n - 1, max_rate,
+        batch_basis_values([&basis](const double*, const double* eta, std::size_t count, double* out) {
+            basis(eta, count, out);
+        }));
+}
+}  // namespace
+
+std::shared_ptr<const kernel_sweep> sweep_cache::get(const gauss_chebyshev& rule, double max_rate) {
+    const double reach = kernel_sweep::same_layout_rate(rule.n - 1, max_rate);
+    for (const entry& e : entries_)
+        if (e.n == rule.n && e.reach == reach) return e.sweep;
+    entries_.push_back({rule.n, reach, lagrange_sweep(rule, reach)});
+    return entries_.back().sweep;
+}
+
+kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double max_rate, sweep_cache* cache)
     : rule_(rule), how_(how), max_rate_(max_rate) {
     // Product integration: int l_k(eta) sqrt(1 - eta^2) K(eta - s_m) d eta for the Lagrange
     // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
-    if (how != method::paper) {  // product, and both levels of extrapolated
-        const lagrange_basis basis(rule);
-        sweep_.emplace(rule.collocation, rule.n, rule.n - 1, max_rate, std::cref(basis));
-    }
+    if (how != method::paper)  // product, and both levels of extrapolated
+        sweep_ = cache ? cache->get(rule, max_rate) : lagrange_sweep(rule, max_rate);
 }
 
 void kernel_operator::add_to(gsl_matrix* a, const kernel& kern) const {
@@ -39,8 +62,11 @@ void kernel_operator::add_to(gsl_matrix* a, const kernel& kern) const {
         return;
     }
     const std::vector<double> m_k = sweep_->apply(kern);
-    for (int m = 0; m <= n; ++m)
-        for (int k = 0; k < n; ++k) *gsl_matrix_ptr(a, m, k) += m_k[static_cast<std::size_t>(m) * n + k];
+    for (int m = 0; m <= n; ++m) {
+        double* row = gsl_matrix_ptr(a, m, 0);
+        const double* add = &m_k[static_cast<std::size_t>(m) * n];
+        for (int k = 0; k < n; ++k) row[k] += add[k];
+    }
 }
 
 void add_kernel_term(gsl_matrix* a, const kernel& kern, const gauss_chebyshev& rule, method how) {

@@ -76,4 +76,55 @@ double kernel_moments::integrate(const std::vector<double>& b, double r) {
     return sum;
 }
 
+namespace {
+// e^{-A} I_m(A) for m = 0..count-1, A > 0, by Miller's backward recurrence
+// I_{m-1} = (2m/A) I_m + I_{m+1} (stable downwards: I_m is the recurrence's minimal solution),
+// started far above both count and the orders where e^{-A} I_m(A) is not negligible (about
+// sqrt(A) beyond A's own scale), and normalised by e^{-A} (I_0 + 2 sum_{m>=1} I_m) = 1.
+std::vector<double> scaled_bessel_i(int count, double A) {
+    const double scale = std::max(static_cast<double>(count), std::min(A, 1e6));
+    const int start = count + 40 + static_cast<int>(std::ceil(std::sqrt(60.0 * scale)));
+    std::vector<double> out(count, 0.0);
+    double above = 0.0, here = 1e-280, sum = 0.0;  // I_{m+1}, I_m (unnormalised), I_0 + 2 sum I_m
+    for (int m = start; m >= 0; --m) {
+        if (m < count) out[m] = here;
+        sum += m == 0 ? here : 2.0 * here;
+        const double below = m > 0 ? 2.0 * m / A * here + above : 0.0;
+        above = here;
+        here = below;
+        if (std::fabs(here) > 1e250) {  // rescale everything kept so far
+            above *= 1e-250;
+            here *= 1e-250;
+            sum *= 1e-250;
+            for (int j = std::max(m, 0); j < count; ++j) out[j] *= 1e-250;
+        }
+    }
+    for (double& v : out) v /= sum;
+    return out;
+}
+}  // namespace
+
+double integrate_at_end(const kernel& k, const std::vector<double>& b, double end) {
+    if (!(end == 1.0 || end == -1.0)) throw numerical_error("integrate_at_end: the end must be 1 or -1");
+    const int n = static_cast<int>(b.size());
+    double total = 0.0;
+    for (const auto& term : k.terms()) {
+        // sum_j (+-1)^j b_j (j + 1) e^{-A} I_{j+1}(A)/A: the moments of e^{A eta} (end = 1) or of
+        // e^{-A eta} (end = -1), times e^{-A}.
+        double sum = 0.0;
+        if (term.A == 0.0) {
+            sum = n > 0 ? 0.5 * b[0] : 0.0;
+        } else {
+            const std::vector<double> i = scaled_bessel_i(n + 2, term.A);
+            for (int j = n; j-- > 0;) {
+                const double sign = end < 0.0 && j % 2 == 1 ? -1.0 : 1.0;
+                sum += sign * b[j] * (j + 1) * i[j + 1] / term.A;
+            }
+        }
+        // eta - end has the sign -end on the whole interval.
+        total += -end * term.T * M_PI * sum;
+    }
+    return total;
+}
+
 }  // namespace roughroll

@@ -1,5 +1,6 @@
 #include "roughroll/numerics/quadrature.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -88,16 +89,29 @@ std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vecto
     // h = pi/(n+1): sin((j+1) t_k) by the recurrence s_{j+1} = 2 cos(t_k) s_j - s_{j-1}.
     const int n = rule.n;
     const double h = M_PI / (n + 1);
+    // Blocks of nodes advance together (the recurrences are independent chains); each b_j
+    // still sums its terms in the order of k.
+    constexpr int block = 4;
     std::vector<double> b(n, 0.0);
-    for (int k = 0; k < n; ++k) {
-        const double t = (k + 1) * h, sin_t = std::sin(t), two_cos = 2.0 * rule.nodes[k];
-        const double scale = M_2_PI * h * sin_t * values[k];
-        double s_prev = 0.0, s = sin_t;
+    for (int first = 0; first < n; first += block) {
+        const int width = std::min(block, n - first);
+        double two_cos[block] = {}, scale[block] = {}, s_prev[block] = {}, s[block] = {};
+        for (int i = 0; i < width; ++i) {
+            const int k = first + i;
+            const double t = (k + 1) * h, sin_t = std::sin(t);
+            two_cos[i] = 2.0 * rule.nodes[k];
+            scale[i] = M_2_PI * h * sin_t * values[k];
+            s[i] = sin_t;
+        }
         for (int j = 0; j < n; ++j) {
-            b[j] += scale * s;
-            const double next = two_cos * s - s_prev;
-            s_prev = s;
-            s = next;
+            double bj = b[j];
+            for (int i = 0; i < width; ++i) bj += scale[i] * s[i];
+            b[j] = bj;
+            for (int i = 0; i < block; ++i) {
+                const double next = two_cos[i] * s[i] - s_prev[i];
+                s_prev[i] = s[i];
+                s[i] = next;
+            }
         }
     }
     return b;
@@ -112,6 +126,26 @@ double u_series(const std::vector<double>& b, double x) {
         y1 = y0;
     }
     return y1;
+}
+
+void u_series(const std::vector<double>& b, const double* x, double* out, std::size_t count) {
+    // Clenshaw's recurrence is a chain of dependent operations: blocks of points advance
+    // together, in the order of the scalar version, so the compiler can vectorise across them.
+    constexpr std::size_t block = 8;
+    for (std::size_t first = 0; first < count; first += block) {
+        const std::size_t width = std::min(block, count - first);
+        double two_x[block] = {}, y1[block] = {}, y2[block] = {};
+        for (std::size_t i = 0; i < width; ++i) two_x[i] = 2.0 * x[first + i];
+        for (auto j = b.size(); j-- > 0;) {
+            const double bj = b[j];
+            for (std::size_t i = 0; i < block; ++i) {
+                const double y0 = bj + two_x[i] * y1[i] - y2[i];
+                y2[i] = y1[i];
+                y1[i] = y0;
+            }
+        }
+        for (std::size_t i = 0; i < width; ++i) out[first + i] = y1[i];
+    }
 }
 
 double cauchy_u_series(const std::vector<double>& b, double x) {

@@ -23,7 +23,8 @@ kernel widest_kernel(const roughness& r) {
 }
 }  // namespace
 
-contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
+contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                 normal_cache* cache)
     : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_dissimilar(materials, options);
@@ -41,9 +42,11 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
             throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                    ": the coarse level n/2 is not in the asymptotic range of product integration "
                                    "for these kernels; increase n or use method 'product'");
-        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones}, materials);
+        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones},
+                                               materials, cache);
     }
-    normal_ = std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how)));
+    normal_ =
+        std::make_unique<normal_solution>(solve_normal(kernel::normal(surfaces), n, level_of(options.how), cache));
     normal_->how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
     if (extrapolate) {
         reported_ = std::make_unique<normal_solution>(*normal_);
@@ -355,17 +358,21 @@ contact::swept_point contact::at_stick_end(double c0) {
                           "(docs/formulation.md 8(g)); solve at given loads instead");
     tangential_solution s = level_at_stick_end(c0, true);
     const tangential_solution own = s;
+    std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        const tangential_solution coarse = companion_->level_at_stick_end(c0, false);
-        s.Q = richardson(s.Q, coarse.Q);
-        s.xi = richardson(s.xi, coarse.xi);
+        coarse = companion_->level_at_stick_end(c0, false);
+        s.Q = richardson(s.Q, coarse->Q);
+        s.xi = richardson(s.xi, coarse->xi);
         if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
             throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
     }
     if (!build_levels()) return {s, std::nullopt};
     std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->level_at_stick_end(c0, false) : own;
+    for (int i = 0; i < 3; ++i)
+        at[i] = !levels_[i] ? own
+                : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
+                                                            : levels_[i]->level_at_stick_end(c0, false);
     return {s, estimate_from(s, own, at, true)};
 }
 
@@ -487,30 +494,30 @@ std::vector<contact::distribution_row> contact::distributions(const tangential_s
     return rows;
 }
 
-double load_ratio(const roughness& surfaces, const solver_options& options) {
+double load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
     // The calls of contact's constructor for P_H/P2, in the same order and with the same arguments.
     const int n = options.nodes();
     if (options.how == method::one_parameter)
         return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
     const kernel k2 = kernel::normal(surfaces);
     if (options.how != method::extrapolated || k2.empty()) {
-        return solve_normal(k2, n, level_of(options.how)).lambda;
+        return solve_normal(k2, n, level_of(options.how), cache).lambda;
     }
     if (n / 2 < min_nodes || !in_asymptotic_range(k2, n / 2, method::product))
         throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                ": the coarse level n/2 is not in the asymptotic range of product integration "
                                "for the normal kernel; increase n or use method 'product'");
-    const double coarse = solve_normal(k2, n / 2, method::product).lambda;
-    return richardson(solve_normal(k2, n, method::product).lambda, coarse);
+    const double coarse = solve_normal(k2, n / 2, method::product, cache).lambda;
+    return richardson(solve_normal(k2, n, method::product, cache).lambda, coarse);
 }
 
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options) {
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
     const int n = options.nodes() / 2;
     if (n < min_nodes)
         throw resolution_error("the cheap level n/2 = " + std::to_string(n) + " is below " + std::to_string(min_nodes));
     if (options.how == method::one_parameter)
         return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
-    return solve_normal(kernel::normal(surfaces), n, level_of(options.how)).lambda;
+    return solve_normal(kernel::normal(surfaces), n, level_of(options.how), cache).lambda;
 }
 
 namespace {

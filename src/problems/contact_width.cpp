@@ -97,8 +97,10 @@ root bracketed_width(const physical_scene& s, const std::function<double(double)
 }
 
 // The root of F by a Newton step from x0 (F(x0) = F0, slope s0 there), then secant steps,
-// until a step is below the Brent search's tolerance (the secant's error is then far below
-// it: superlinear convergence). The root's slope is the last secant's. Nothing when an
+// until the next step is below the Brent search's tolerance: the root returned is the last
+// iterate evaluated, within that tolerance of the secant's next one (whose own error is far
+// smaller: superlinear convergence), so that the normal problems solved at it serve the
+// contact built at the width found (normal_cache). The root's slope is the last secant's. Nothing when an
 // iterate leaves (0, x_max], F or a slope is not finite or zero, or the steps do not converge
 // within max_polish_steps: the caller then searches by bracket and Brent instead.
 std::optional<root> secant_width(const std::function<double(double)>& F, double x0, double F0, double s0,
@@ -111,7 +113,7 @@ std::optional<root> secant_width(const std::function<double(double)>& F, double 
         if (!(std::isfinite(slope) && slope != 0.0)) return std::nullopt;
         const double x = x_prev - F_prev / slope;
         if (!(x > 0.0 && x <= x_max)) return std::nullopt;
-        if (std::fabs(x - x_prev) <= width_tolerance * x) return root{x, step, slope};
+        if (std::fabs(x - x_prev) <= width_tolerance * x) return root{x_prev, step, slope};
         const double Fx = F(x);
         if (!std::isfinite(Fx)) return std::nullopt;
         slope = (Fx - F_prev) / (x - x_prev);

@@ -16,7 +16,7 @@ double normal_solution::pressure(double r) const {
 normal_solver::normal_solver(int n, method how)
     : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
 
-normal_solution normal_solver::solve(const kernel& k2) {
+normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) {
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
     gsl_matrix* a = system_.matrix();
@@ -25,7 +25,7 @@ normal_solution normal_solver::solve(const kernel& k2) {
     gsl_vector_set_zero(rhs);
     // Rows 0..n: collocation (4.2). Columns 0..n-1: phi_k; n: gamma_0n; n+1: lambda.
     add_cauchy_term(a, rule_);
-    auto kernel_term = std::make_shared<const kernel_operator>(rule_, how_, k2.max_rate());
+    auto kernel_term = std::make_shared<const kernel_operator>(rule_, how_, k2.max_rate(), cache);
     kernel_term->add_to(a, k2);
     for (int m = 0; m <= n; ++m) {
         gsl_matrix_set(a, m, n, 1.0);
@@ -50,8 +50,27 @@ normal_solution hertz_solution(int n, method how) {
     return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr};
 }
 
-normal_solution solve_normal(const kernel& k2, int n, method how) {
-    return k2.empty() ? hertz_solution(n, how) : normal_solver(n, how).solve(k2);
+namespace {
+bool same_terms(const kernel& a, const kernel& b) {
+    const auto& x = a.terms();
+    const auto& y = b.terms();
+    if (x.size() != y.size()) return false;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (!(x[i].T == y[i].T && x[i].A == y[i].A)) return false;
+    return true;
+}
+}  // namespace
+
+normal_solution normal_cache::solve(const kernel& k2, int n, method how) {
+    for (const entry& e : solved_)
+        if (e.n == n && e.how == how && same_terms(e.k2, k2)) return e.solution;
+    solved_.push_back({k2, n, how, normal_solver(n, how).solve(k2, &sweeps_)});
+    return solved_.back().solution;
+}
+
+normal_solution solve_normal(const kernel& k2, int n, method how, normal_cache* cache) {
+    if (k2.empty()) return hertz_solution(n, how);
+    return cache ? cache->solve(k2, n, how) : normal_solver(n, how).solve(k2);
 }
 
 }  // namespace roughroll

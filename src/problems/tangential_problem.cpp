@@ -11,7 +11,6 @@
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/kernel_sweep.hpp"
 #include "roughroll/numerics/root_search.hpp"
 
 namespace roughroll {
@@ -58,15 +57,14 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
 
 std::vector<double> tangential_solver::G(const std::vector<double>& r) {
     // (3.25): the kernel difference integrated on the interpolant of phi, split at its jump
-    // (E8), so that G, and with it Q(c0), is continuous in c0; one sweep for all the points.
+    // (E8), so that G, and with it Q(c0), is continuous in c0. G does not depend on c0: its
+    // kernel part is tabulated once per solver (convolution_table.hpp; its representation
+    // error is bounded below eps times its size, docs/formulation.md "G once per contact").
     std::vector<double> g(r.size());
     for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
     if (dk_.empty()) return g;
-    const auto& b = normal_.b;
-    const auto integrals = sweep(dk_, r, 1, n_ - 1, [&b](double theta, double* out) {
-        *out = u_series(b, std::cos(theta));
-    });
-    for (std::size_t m = 0; m < r.size(); ++m) g[m] += integrals[m];
+    if (!g_table_) g_table_.emplace(dk_, normal_.b);
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] += (*g_table_)(r[m]);
     return g;
 }
 
@@ -269,14 +267,13 @@ namespace {
 // term T' exp(-A' (t - tau)) factors as exp(-A' (t - 1)) times its integral at t = 1; for
 // t < -1 (the leading slip zone of docs/formulation.md 7) likewise exp(-A' (-1 - t)) times
 // its integral at t = -1. So the kernel part costs two integrals per term, whatever the
-// number of points.
+// number of points, each in closed form (integrate_at_end, kernel_moments.hpp).
 class stick_operator_outside {
 public:
-    stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b, const gauss_legendre& rule)
-        : psi_b_(psi_b) {
+    stick_operator_outside(const kernel& stretched_k1, const std::vector<double>& psi_b) : psi_b_(psi_b) {
         for (const auto& term : stretched_k1.terms()) {
-            kernel_moments one(kernel({term}), static_cast<int>(psi_b.size()), rule);
-            at_ends_.push_back({term.A, one.integrate(psi_b, 1.0), one.integrate(psi_b, -1.0)});
+            const kernel one({term});
+            at_ends_.push_back({term.A, integrate_at_end(one, psi_b, 1.0), integrate_at_end(one, psi_b, -1.0)});
         }
     }
 
@@ -302,10 +299,7 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of the slip zones, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
-    // The rule for kernel_moments of n coefficients: built on the first slip velocity (levels
-    // of an extrapolation or an estimate never need one).
-    if (!moments_rule_) moments_rule_.emplace(kernel_moments::moments_rule(n_));
-    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b, *moments_rule_);
+    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b);
     for (std::size_t i = 0; i < r.size(); ++i) {
         v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() || rho == 0.0 ? 0.0 : lq0((r[i] - s.start) / rho - 1.0));
         if (s.forcing != 0.0) v[i] += s.forcing * normal_.pressure(r[i]);  // (D2), docs/formulation.md 8(e)

@@ -23,7 +23,8 @@ void override_solver(scene& s, std::optional<int> n, const std::optional<std::st
 // For a physical scene: the contact width for its load (find_width, with lambda as the
 // scene's method reports it), and s.surfaces set to the roughness (3.26) at that width.
 // Nothing for a dimensionless scene.
-std::optional<contact_width> settle_width(scene& s);
+// `cache`: the search's product-integration workspaces, for a contact built at the width found.
+std::optional<contact_width> settle_width(scene& s, normal_cache* cache = nullptr);
 
 // A physical scene's point in SI units (nothing for a dimensionless scene).
 std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t);

@@ -6,7 +6,9 @@
 //                 Lagrange basis of the nodes, by kernel_sweep.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include <gsl/gsl_matrix.h>
 
@@ -23,9 +25,12 @@ void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule);
 // The kernel term for one rule and method. For product integration it keeps the sweep
 // workspace, so the stretched kernels of successive trial c0 (rates up to max_rate) reuse
 // its quadrature points and basis values.
+class sweep_cache;
+
 class kernel_operator {
 public:
-    kernel_operator(const gauss_chebyshev& rule, method how, double max_rate);
+    // `cache` (optional): product-integration workspaces shared with other operators at the same n.
+    kernel_operator(const gauss_chebyshev& rule, method how, double max_rate, sweep_cache* cache = nullptr);
 
     // Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
     void add_to(gsl_matrix* a, const kernel& k) const;
@@ -35,7 +40,26 @@ private:
     gauss_chebyshev rule_;  // a copy: an operator may outlive the solver that built it
     method how_;
     double max_rate_;
-    std::optional<kernel_sweep> sweep_;
+    std::shared_ptr<const kernel_sweep> sweep_;  // product integration only
+};
+
+// The product-integration workspaces (the Lagrange basis at the sweep's quadrature points: the
+// set-up of a normal solve) shared by the solves of one scene at the same n: the trial widths of
+// a width search, whose kernels differ in rate but mostly not in the workspace they need
+// (kernel_sweep::same_layout_rate), and the contact at the width found. An operator given a
+// cache gets the same values, bit for bit, as one that builds its own. One cache per search (not
+// shared between threads); the operators keep their workspaces after it is gone.
+class sweep_cache {
+public:
+    std::shared_ptr<const kernel_sweep> get(const gauss_chebyshev& rule, double max_rate);
+
+private:
+    struct entry {
+        int n;
+        double reach;  // the rate the workspace was built for (same_layout_rate)
+        std::shared_ptr<const kernel_sweep> sweep;
+    };
+    std::vector<entry> entries_;
 };
 
 // One-off: kernel_operator(rule, how, k.max_rate()).add_to(a, k).

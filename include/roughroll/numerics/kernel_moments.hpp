@@ -37,4 +37,14 @@ private:
     std::vector<double> moments_;
 };
 
+// int_{-1}^{1} (sum_j b_j U_j(eta)) sqrt(1 - eta^2) K(eta - end) d eta at end = 1 or -1 (the
+// stick-zone operator at the ends of its interval, for the slip velocity), in closed form: with
+// int_{-1}^{1} U_j(eta) sqrt(1 - eta^2) e^{A eta} d eta = pi (j + 1) I_{j+1}(A)/A (from
+// sin((j+1) t) sin t = [cos(j t) - cos((j+2) t)]/2 and int_0^pi cos(m t) e^{A cos t} dt = pi I_m(A)),
+// a term T exp(-A |z|) sgn z gives -T pi sum_j b_j (j+1) e^{-A} I_{j+1}(A)/A at end = 1 and
+// T pi sum_j (-1)^j b_j (j+1) e^{-A} I_{j+1}(A)/A at end = -1 (U_j(-eta) = (-1)^j U_j(eta));
+// A = 0 gives -+T pi b_0/2. e^{-A} I_m(A) by Miller's backward recurrence, normalised by
+// e^{-A} (I_0(A) + 2 sum_m I_m(A)) = 1.
+double integrate_at_end(const kernel& k, const std::vector<double>& b, double end);
+
 }  // namespace roughroll

@@ -11,6 +11,7 @@
 // kernel_moments (product method, (4.2), (4.4); G of (3.25), E8), at a fraction of the cost.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <vector>
 
@@ -21,6 +22,10 @@ namespace roughroll {
 
 // values(theta, out): writes g_v(cos theta), v < width, into out[0..width).
 using basis_values = std::function<void(double theta, double* out)>;
+// The same for count points at once, theta[i] and eta[i] = cos theta[i]: g_v(eta[i]) into
+// out[i * width + v].
+using batch_basis_values =
+    std::function<void(const double* theta, const double* eta, std::size_t count, double* out)>;
 
 // A workspace for fixed points and functions: the quadrature points of every piece and
 // the basis values there are computed once, and apply() integrates any kernel whose rates
@@ -31,9 +36,17 @@ class kernel_sweep {
 public:
     kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
                  const basis_values& values);
+    kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
+                 const batch_basis_values& values);
 
     // points.size() x width values, row-major.
     std::vector<double> apply(const kernel& k) const;
+
+    // The largest rate whose workspace (quadrature order and segment length) is the one built
+    // for max_rate with this degree: a workspace built for it serves every rate up to it with
+    // the same points, bit for bit (sweep_cache, collocation.hpp). max_rate itself when the
+    // segments shrink with the rate.
+    static double same_layout_rate(int degree, double max_rate);
 
 private:
     std::vector<double> points_;
@@ -53,6 +66,9 @@ class lagrange_basis {
 public:
     explicit lagrange_basis(const gauss_chebyshev& rule);
     void operator()(double theta, double* out) const;  // l_k(cos theta), k < n
+    // At count points x[i] (= cos theta), out[i * n + k] = l_k(x[i]): the same values, bit for
+    // bit, with several points side by side (the sweep's set-up, once per operator).
+    void operator()(const double* x, std::size_t count, double* out) const;
 
 private:
     const gauss_chebyshev& rule_;

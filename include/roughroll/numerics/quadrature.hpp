@@ -9,6 +9,7 @@
 // integrals of the product method, G of (3.25), the checks (3.3)-(3.4)) uses it.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace roughroll {
@@ -46,6 +47,9 @@ std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vecto
 
 // sum_j b_j U_j(x), by Clenshaw's recurrence.
 double u_series(const std::vector<double>& b, double x);
+// The same at count points x[i] into out[i], the points interleaved so that the recurrences
+// run side by side (each value is the one u_series(b, x[i]) gives, bit for bit).
+void u_series(const std::vector<double>& b, const double* x, double* out, std::size_t count);
 
 // The finite Hilbert transform of the weighted series, for any x not +-1:
 //   (1/pi) int_{-1}^{1} sqrt(1-t^2) sum_j b_j U_j(t) / (t - x) dt

@@ -64,7 +64,11 @@ class contact {
 public:
     // `materials`: Dundurs' beta_D and the coupling level of dissimilar rollers (docs/formulation.md
     // section 8); the default beta_D = 0 is the paper's problem, solved by exactly the same calls.
-    contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {});
+    // `cache`: the normal problems of the scene solved before (the width search's, whose last
+    // trial is the width found: normal_problem.hpp), for this level and its companion; the
+    // contact keeps copies, not the cache.
+    contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {},
+            normal_cache* cache = nullptr);
 
     // The normal solution as reported (lambda extrapolated for method::extrapolated).
     const normal_solution& normal() const;
@@ -175,14 +179,15 @@ private:
 // calls, the same extrapolation), for every method, without the tangential solver: for a
 // root search in the contact width. The extrapolated method's asymptotic-range condition is
 // checked on the normal kernel only (the tangential kernel does not enter P_H/P2).
-double load_ratio(const roughness& surfaces, const solver_options& options);
+// `cache`: the normal problems shared with the other trials of a width search and its contact.
+double load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
 
 // P_H/P2 on the cheap level of `options`: the method's plain discretisation at n/2 (product
 // integration for `extrapolated`, the one-parameter normal problem for `one_parameter`). Its
 // root in the contact width starts the width search at the scene's method (find_width), whose
 // answer is load_ratio's root, not this one's. Throws resolution_error when n/2 < min_nodes or
 // the kernel is beyond the level's resolution.
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options);
+double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
 
 // One row of a creep curve.
 struct curve_point {

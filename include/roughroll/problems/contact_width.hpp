@@ -21,8 +21,8 @@ namespace roughroll {
 // when a_H > R/10 already.
 // `cheap_load_ratio`, when given (a coarser discretisation of the same lambda, e.g.
 // coarse_load_ratio), is searched that way first; its root then starts a Newton step (on the
-// cheap level's slope) and secant steps on `load_ratio`'s F until a step is below 1e-12 of a,
-// the Brent search's tolerance. Any failure of the cheap level or of the polish (an iterate
+// cheap level's slope) and secant steps on `load_ratio`'s F until the next step is below 1e-12
+// of a, the Brent search's tolerance (the width returned is the last one evaluated). Any failure of the cheap level or of the polish (an iterate
 // outside (0, R/10], no convergence within 8 steps) falls back to the search above on
 // `load_ratio` alone, so the answer and every refusal are `load_ratio`'s.
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,

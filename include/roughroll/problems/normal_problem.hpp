@@ -35,7 +35,8 @@ struct normal_solution {
 class normal_solver {
 public:
     normal_solver(int n, method how);
-    normal_solution solve(const kernel& k2);
+    // `cache`: product-integration workspaces shared with other solves at this n (collocation.hpp).
+    normal_solution solve(const kernel& k2, sweep_cache* cache = nullptr);
 
 private:
     gauss_chebyshev rule_;
@@ -46,7 +47,28 @@ private:
 // The smooth solution of Hertz, lambda = 1, phi = 2/pi, exact for every n.
 normal_solution hertz_solution(int n, method how);
 
-// Hertz's closed form when k2 is empty, the solver otherwise.
-normal_solution solve_normal(const kernel& k2, int n, method how);
+// The normal problems of one scene solved at a few widths (a width search, then the contact at
+// the width found): their product-integration workspaces per n (sweep_cache), and the solutions
+// themselves, so that the problem for the same kernel, n and method (the contact at the search's
+// last trial width) is the solution found before, not a second solve. One per search, not
+// shared between threads.
+class normal_cache {
+public:
+    // A copy of the solution kept for (k2, n, how), else solved and kept.
+    normal_solution solve(const kernel& k2, int n, method how);
+
+private:
+    struct entry {
+        kernel k2;
+        int n;
+        method how;
+        normal_solution solution;
+    };
+    sweep_cache sweeps_;
+    std::vector<entry> solved_;
+};
+
+// Hertz's closed form when k2 is empty, the solver otherwise (through `cache` when given).
+normal_solution solve_normal(const kernel& k2, int n, method how, normal_cache* cache = nullptr);
 
 }  // namespace roughroll

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/convolution_table.hpp"
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -119,7 +120,7 @@ public:
                                       const std::vector<double>* extra = nullptr);
 
     double G(double r);                                          // (3.25)
-    std::vector<double> G(const std::vector<double>& r);         // at sorted points r_0 >= r_1 >= ... in [-1, 1]
+    std::vector<double> G(const std::vector<double>& r);         // at points of [-1, 1], in any order
     double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
     // v at many points of the slip zone (any order), in one sweep.
@@ -145,10 +146,10 @@ private:
     bool carter_;  // smooth in both directions, closed form allowed
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
-    std::optional<gauss_legendre> moments_rule_;  // for kernel_moments of n coefficients, built once
     std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
     std::optional<tangential_solution> last_system_;  // of the last load(c0)
     std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
+    std::optional<convolution_table> g_table_;  // the kernel part of G (3.25), once per solver
 };
 
 }  // namespace roughroll

@@ -1,0 +1,183 @@
+#include "roughroll/numerics/convolution_table.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int degree = 24;  // N: Chebyshev-Lobatto points 0..N per panel
+constexpr int max_panels = 1000000;
+
+// Chebyshev-Lobatto points of [-1, 1], ascending: s_i = -cos(i pi/N) = cos((N - i) pi/N).
+double lobatto(int i) { return -std::cos(M_PI * i / degree); }
+
+// Values at the N + 1 points -> coefficients c_k of sum_k c_k T_k (the discrete cosine
+// transform of the Lobatto grid); row-major (N+1) x (N+1).
+std::vector<double> values_to_coefficients() {
+    std::vector<double> c((degree + 1) * (degree + 1));
+    for (int k = 0; k <= degree; ++k)
+        for (int i = 0; i <= degree; ++i) {
+            const int m = degree - i;  // s_i = cos(m pi/N)
+            double w = 2.0 / degree * std::cos(M_PI * k * m / degree);
+            if (m == 0 || m == degree) w *= 0.5;
+            if (k == 0 || k == degree) w *= 0.5;
+            c[k * (degree + 1) + i] = w;
+        }
+    return c;
+}
+
+// Values at the points -> int_{-1}^{s_i} of their interpolant: the coefficients of the
+// antiderivative, int T_k = T_{k+1}/(2(k+1)) - T_{k-1}/(2(k-1)) (k >= 2), int T_1 = T_2/4,
+// int T_0 = T_1, made zero at s = -1, evaluated at the points.
+std::vector<double> integration_matrix(const std::vector<double>& to_coefficients) {
+    const int size = degree + 1;
+    std::vector<double> q(size * size);
+    for (int col = 0; col < size; ++col) {
+        std::vector<double> c(degree + 3, 0.0), big(degree + 2, 0.0);
+        for (int k = 0; k <= degree; ++k) c[k] = to_coefficients[k * size + col];
+        big[1] = c[0] - 0.5 * c[2];
+        for (int k = 2; k <= degree + 1; ++k) big[k] = (c[k - 1] - c[k + 1]) / (2.0 * k);
+        double at_minus_one = 0.0;
+        for (int k = 1; k <= degree + 1; ++k) at_minus_one += (k % 2 == 0 ? 1.0 : -1.0) * big[k];
+        big[0] = -at_minus_one;
+        for (int i = 0; i < size; ++i) {
+            double sum = 0.0;
+            for (int k = 0; k <= degree + 1; ++k) sum += big[k] * std::cos(M_PI * k * (degree - i) / degree);
+            q[i * size + col] = sum;
+        }
+    }
+    return q;
+}
+
+// The bound of the Bernstein-ellipse theorem for one rho: 4 M rho^-N/(rho - 1).
+double ellipse_term(double modulus, double rho) { return 4.0 * modulus * std::pow(rho, -degree) / (rho - 1.0); }
+}  // namespace
+
+double convolution_table::panel_bound(int n, double rate, double length) {
+    // For B = sum |b_j| = 1 and |T| = 1 (docs/formulation.md, "G once per contact"):
+    //   integration of h = g exp(...) on each panel, accumulated over the panels of L and of R
+    //   (carried with factors <= 1) and interpolated (Lebesgue constant of the Lobatto points):
+    //     Lambda_N 2 pi min_rho 4 M_h rho^-N/(rho - 1),  M_h = e^{(n+1) y} E_A;
+    //   interpolation of L - R on a panel: 2 min_rho 4 M_L rho^-N/(rho - 1),
+    //     M_L = E_A (pi + (h + x + y) M_h),
+    //   with E_A = exp(A (h + x + cosh y - 1)), h = length/2, y and x the ellipse's half-axes.
+    const double h = 0.5 * length;
+    const double lebesgue = 2.0 / M_PI * std::log(degree + 1.0) + 1.0;
+    double best_h = HUGE_VAL, best_l = HUGE_VAL;
+    for (double rho = 1.05; rho < 1e4; rho *= 1.05) {
+        const double y = 0.5 * h * (rho - 1.0 / rho), x = 0.5 * h * (rho + 1.0 / rho);
+        const double e_a = std::exp(rate * (h + x + std::cosh(y) - 1.0));
+        const double m_h = std::exp((n + 1) * y) * e_a;
+        const double m_l = e_a * (M_PI + (h + x + y) * m_h);
+        best_h = std::min(best_h, ellipse_term(m_h, rho));
+        best_l = std::min(best_l, ellipse_term(m_l, rho));
+    }
+    return lebesgue * 2.0 * M_PI * best_h + 2.0 * best_l;
+}
+
+convolution_table::convolution_table(const kernel& k, const std::vector<double>& b) {
+    const int n = static_cast<int>(b.size());
+    const double rate = k.max_rate();
+    double strength = 0.0, l1 = 0.0;
+    for (const auto& term : k.terms()) strength += std::fabs(term.T);
+    for (double bj : b) l1 += std::fabs(bj);
+    scale_ = M_PI * l1 * strength;
+    // The panel count: from about 8/(n + 1 + A) long panels, finer until the bound of the
+    // representation (relative to the size bound pi B sum |T|) is below eps.
+    int panels = std::max(1, static_cast<int>(std::ceil(M_PI * (n + 1 + rate) / 8.0)));
+    double relative = panel_bound(n, rate, M_PI / panels);
+    while (!(relative <= M_PI * DBL_EPSILON)) {
+        if (panels >= max_panels)
+            throw numerical_error("convolution_table: no panel count meets the representation bound (rate too large)");
+        panels = std::min(max_panels, panels + std::max(1, panels / 4));
+        relative = panel_bound(n, rate, M_PI / panels);
+    }
+    panels_ = panels;
+    length_ = M_PI / panels;
+    bound_ = relative * l1 * strength;
+
+    const int size = degree + 1;
+    const std::vector<double> to_c = values_to_coefficients();
+    const std::vector<double> integrate = integration_matrix(to_c);
+    const double h = 0.5 * length_;
+    // The nodes of every panel (panel j, point i at index j * size + i), cos(theta) and g there.
+    const std::size_t count = static_cast<std::size_t>(panels) * size;
+    std::vector<double> c(count), g(count);
+    for (int j = 0; j < panels; ++j)
+        for (int i = 0; i < size; ++i) {
+            const double theta = i == degree ? (j + 1) * length_ : j * length_ + (lobatto(i) + 1.0) * h;
+            c[j * size + i] = std::cos(theta);
+        }
+    u_series(b, c.data(), g.data(), count);
+    for (std::size_t p = 0; p < count; ++p) g[p] *= 1.0 - c[p] * c[p];  // phi sin^2
+
+    std::vector<double> d(count, 0.0), w(size), grow(size), integral(size);
+    auto integrate_panel = [&](const double* values) {
+        for (int i = 0; i < size; ++i) {
+            double sum = 0.0;
+            for (int m = 0; m < size; ++m) sum += integrate[i * size + m] * values[m];
+            integral[i] = h * sum;
+        }
+    };
+    for (const auto& term : k.terms()) {
+        const double A = term.A;
+        // L, forward from theta = 0 (r = 1), where it is 0.
+        double carried = 0.0;
+        for (int j = 0; j < panels; ++j) {
+            const double* cj = &c[j * size];
+            const double cos_a = std::cos(j * length_);
+            for (int i = 0; i < size; ++i) {
+                grow[i] = std::exp(A * (cos_a - cj[i]));  // >= 1, at most exp(A length)
+                w[i] = g[j * size + i] * grow[i];
+            }
+            integrate_panel(w.data());
+            for (int i = 0; i < size; ++i) d[j * size + i] += term.T * (carried + integral[i]) / grow[i];
+            carried = (carried + integral[degree]) / grow[degree];
+        }
+        // R, backward from theta = pi (r = -1), where it is 0.
+        carried = 0.0;
+        for (int j = panels; j-- > 0;) {
+            const double* cj = &c[j * size];
+            const double cos_b = std::cos((j + 1) * length_);
+            for (int i = 0; i < size; ++i) {
+                grow[i] = std::exp(A * (cj[i] - cos_b));
+                w[i] = g[j * size + i] * grow[i];
+            }
+            integrate_panel(w.data());
+            for (int i = 0; i < size; ++i)
+                d[j * size + i] -= term.T * (carried + integral[degree] - integral[i]) / grow[i];
+            carried = (carried + integral[degree]) / grow[0];
+        }
+    }
+    coefficients_.assign(count, 0.0);
+    for (int j = 0; j < panels; ++j)
+        for (int k2 = 0; k2 < size; ++k2) {
+            double sum = 0.0;
+            for (int i = 0; i < size; ++i) sum += to_c[k2 * size + i] * d[j * size + i];
+            coefficients_[j * size + k2] = sum;
+        }
+}
+
+double convolution_table::operator()(double r) const {
+    const double theta = std::acos(std::max(-1.0, std::min(1.0, r)));
+    const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
+    const double s = 2.0 * (theta - j * length_) / length_ - 1.0;
+    const double* c = &coefficients_[static_cast<std::size_t>(j) * (degree + 1)];
+    // Clenshaw for sum_k c_k T_k(s).
+    double y1 = 0.0, y2 = 0.0;
+    for (int k = degree; k >= 1; --k) {
+        const double y0 = c[k] + 2.0 * s * y1 - y2;
+        y2 = y1;
+        y1 = y0;
+    }
+    return c[0] + s * y1 - y2;
+}
+
+}  // namespace roughroll
