@@ -14,6 +14,8 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
 
 using namespace roughroll;
@@ -154,4 +156,41 @@ TEST(Curve, CsvMarksRefusedRows) {
             EXPECT_EQ(r[column("xi")], shortest(curve[i].solution.xi));
         }
     }
+}
+
+// A physical scene's columns on a refused row: P1 = Q P2 and Carter's xi1 of the given load,
+// xi1 (the refused creep) empty. The units come from data/steel-rollers.toml's materials; the
+// rows from the stiff layer's curve (write_curve_csv only converts them).
+TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
+    scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1.0e5\nfriction = 0.3\n"
+                          "[cylinder1.normal]\nk = 8.0e14\nt = 1.5e6\n",
+                          "steel.toml", ".");
+    const std::optional<contact_width> width = settle_width(s);
+    ASSERT_TRUE(width.has_value());
+    contact c = fresh();
+    const std::vector<double> loads = curve_loads(7, f);
+    const std::vector<curve_point> curve = creep_curve(c, loads);
+    std::ostringstream out;
+    write_curve_csv(out, curve, si_context{*s.physical, *width});
+    std::istringstream in(out.str());
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> header = split(line);
+    ASSERT_EQ(header.size(), 17u);
+    ASSERT_EQ(header[13], "P1_N_per_m");
+    int refused = 0;
+    for (std::size_t i = 0; std::getline(in, line); ++i) {
+        const std::vector<std::string> r = split(line);
+        ASSERT_EQ(r.size(), header.size()) << line;
+        EXPECT_EQ(std::stod(r[13]), loads[i] * 1.0e5);
+        EXPECT_NE(r[15], "");  // Carter's xi1 of the given load
+        if (r.back() == "refused") {
+            ++refused;
+            EXPECT_EQ(r[14], "") << "xi1 of a refused row";
+        } else {
+            EXPECT_EQ(r[14], shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0,
+                                             curve[i].solution.xi).xi1));
+        }
+    }
+    EXPECT_GE(refused, 1);
 }
