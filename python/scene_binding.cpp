@@ -111,7 +111,9 @@ scene overridden(scene s, const solver_keywords& k) {
 }
 
 // The columns of `roughroll curve`'s CSV (output.hpp, write_curve_csv), as arrays; an absent
-// estimate is NaN (an empty CSV field).
+// estimate is NaN (an empty CSV field), and so is every computed number of a refused row
+// (curve_point, contact.hpp), whose zones are 0 (an int array has no NaN) and whose line, the
+// program's stderr line, is in `refused`.
 struct curve_columns {
     std::vector<double> Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter;
     std::vector<char> checks_hold;
@@ -119,8 +121,18 @@ struct curve_columns {
     std::vector<int> zones;            // the number of stick and slip zones (formulation section 7)
     std::vector<double> stick_start;   // the start of the stick zone, -1 in the paper's structure
     std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
+    std::vector<std::string> status;          // "ok" or "refused"
+    std::vector<std::string> refused;         // one line per refused row
     bool physical = false;
 };
+
+// A refused row's solution with a finite creep, for to_si's P1 and Carter's xi1 (which do not
+// depend on it): to_si refuses a non-finite xi1.
+tangential_solution with_creep(tangential_solution t, double xi) {
+    t.xi = xi;
+    t.c0 = 0.0;
+    return t;
+}
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
     const std::optional<contact_width> width = settle_width(s);
@@ -143,9 +155,20 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.c0_error.push_back(row.estimate ? row.estimate->c0 : nan);
         out.xi_error.push_back(row.estimate ? row.estimate->xi : nan);
         out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
-        out.zones.push_back(static_cast<int>(zones_of(t).size()));
+        out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));
         out.stick_start.push_back(t.start);
-        if (const std::optional<si_point> si = si_of(s, width, t)) {
+        out.status.push_back(row.is_refused() ? "refused" : "ok");
+        if (row.is_refused()) {
+            out.refused.push_back(row.refused);
+            if (width) {
+                // As write_curve_csv: P1 and Carter's xi1 of the given load, xi1 (the refused creep) NaN.
+                const bool at_Q = !std::isnan(t.Q);
+                const std::optional<si_point> si = at_Q ? si_of(s, width, with_creep(t, 0.0)) : std::nullopt;
+                out.P1.push_back(si ? si->P1 : nan);
+                out.xi1.push_back(nan);
+                out.xi1_carter.push_back(si ? si->xi1_carter : nan);
+            }
+        } else if (const std::optional<si_point> si = si_of(s, width, t)) {
             out.P1.push_back(si->P1);
             out.xi1.push_back(si->xi1);
             out.xi1_carter.push_back(si->xi1_carter);
@@ -232,6 +255,8 @@ void bind_scene(py::module_& m) {
                 d["Q_error_estimate"] = array_of(c.Q_error);
                 d["zones"] = py::array_t<int>(static_cast<py::ssize_t>(c.zones.size()), c.zones.data());
                 d["stick_start"] = array_of(c.stick_start);
+                d["status"] = c.status;    // a NumPy array of str in roughroll.Scene.curve
+                d["_refused"] = c.refused;  // warned by roughroll.Scene.curve
                 if (c.physical) {
                     d["P1_N_per_m"] = array_of(c.P1);
                     d["xi1"] = array_of(c.xi1);

@@ -20,18 +20,19 @@ Solves release the GIL; solve(..., threads=k) runs many points on k threads.
 import math
 import numbers
 import os
+import warnings
 from collections import namedtuple
 from collections.abc import Mapping
 
 import numpy as np
 
-from ._errors import Error, InputError, NumericalError, ResolutionError
+from ._errors import Error, InputError, NumericalError, RefusedPointWarning, ResolutionError
 from . import _roughroll as _core
 from . import _toml
 from ._results import Point
 
 __all__ = [
-    "Error", "InputError", "ResolutionError", "NumericalError", "Point", "Scene", "read_scene", "scene",
+    "Error", "InputError", "ResolutionError", "NumericalError", "RefusedPointWarning", "Point", "Scene", "read_scene", "scene",
     "point", "solve", "roughness", "carter", "Carter", "kernel", "normal_problem", "REFERENCE",
 ]
 
@@ -182,8 +183,16 @@ class Scene:
         ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)).
         Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
-        slip zones) and stick_start (formulation section 7), and for a
-        physical scene P1_N_per_m, xi1, xi1_carter.  The normal problem is solved once.
+        slip zones) and stick_start (formulation section 7), for a
+        physical scene P1_N_per_m, xi1, xi1_carter, and status ("ok" or "refused", an array of
+        str).  The normal problem is solved once.
+
+        A point the method cannot answer honestly at this n (the program's ``roughroll:
+        refused:`` line and exit status 3) does not stop the curve: its row has status
+        "refused", keeps only its given load (Q, Q_over_f and Carter's columns) or its given c0
+        on a swept curve, has NaN for every computed number (zones 0), and a
+        RefusedPointWarning with the program's line is issued.  ``c["status"] == "ok"`` selects
+        the answered rows.  Bad input and numerical faults still raise, as the program exits 2.
         """
         if not isinstance(sweep, (bool, np.bool_)):
             raise TypeError(f"sweep must be True or False, not {type(sweep).__name__}")
@@ -193,7 +202,11 @@ class Scene:
             loads = _numbers(loads, "loads").tolist()
         # Beyond C++'s int the library's own check answers (its message names no number).
         points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
-        return self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method), _zones(zones))
+        c = self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method), _zones(zones))
+        for line in c.pop("_refused"):
+            warnings.warn(line, RefusedPointWarning, stacklevel=2)
+        c["status"] = np.array(c["status"], dtype=str)
+        return c
 
     def traction(self, Q=None, *, r=None, points=401, method=None, n=None, zones=None):
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.

@@ -21,3 +21,9 @@ class ResolutionError(Error):
 class NumericalError(Error, ArithmeticError):
     """A numerical fault: a GSL status, a singular system, a non-finite result, a root search
     without a bracket."""
+
+
+class RefusedPointWarning(UserWarning):
+    """A point of a creep curve the method cannot answer honestly at this n (the program's
+    ``roughroll: refused:`` line, exit status 3): its row has status "refused" and NaN for every
+    computed number; the rest of the curve is computed."""

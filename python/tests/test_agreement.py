@@ -93,11 +93,52 @@ def test_curve_equals_program_csv(name, args, kw):
     expected = read_csv(out)
     got = roughroll.read_scene(DATA / name).curve(**kw)
     assert set(got) == set(expected)
+    assert_curve_equal(got, expected)
+
+
+def assert_curve_equal(got, expected):
+    refused = [s == "refused" for s in expected["status"]]
     for key, column in expected.items():
         if key == "checks_hold":
             assert got[key].tolist() == [c == "1" for c in column]
+        elif key == "status":
+            assert got[key].tolist() == column
+        elif key == "zones":  # an int array: 0 where the CSV is empty (a refused row)
+            assert got[key].tolist() == [0 if r else int(c) for r, c in zip(refused, column)]
         else:
             np.testing.assert_array_equal(got[key], as_float(column), err_msg=key)
+
+
+# A curve with refused points (issue 10's leftover): a very stiff normal layer at n = 16, where
+# some loads have no honest error estimate. The program exits 3 with one stderr line per
+# refused row; the module gives the same rows (NaN where the CSV is empty) and warns the same
+# lines.
+STIFF = """friction = 0.3
+[cylinder2.normal]
+T = 1e6
+A = 1
+[solver]
+n = 16
+method = "product"
+"""
+
+
+@pytest.mark.parametrize("sweep,points", [(False, 7), (True, 5)], ids=["given-loads", "swept"])
+def test_curve_with_refused_points_equals_program(tmp_path, sweep, points):
+    path = tmp_path / "stiff.toml"
+    path.write_text(STIFF)
+    status, out, err = run("curve", path, "--points", points, *(["--sweep"] if sweep else []))
+    assert status == 3, err
+    expected = read_csv(out)
+    with pytest.warns(roughroll.RefusedPointWarning) as record:
+        got = roughroll.read_scene(path).curve(points=points, sweep=sweep)
+    assert set(got) == set(expected)
+    assert_curve_equal(got, expected)
+    refused = got["status"] == "refused"
+    assert 1 <= refused.sum() < len(refused)
+    assert np.all(np.isnan(got["xi"][refused])) and np.all(np.isfinite(got["xi"][~refused]))
+    lines = [str(w.message) for w in record if issubclass(w.category, roughroll.RefusedPointWarning)]
+    assert ["roughroll: refused: " + line for line in lines] == err.splitlines()
 
 
 def test_curve_at_given_loads_equals_points():

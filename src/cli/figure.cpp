@@ -163,6 +163,10 @@ int run_figure(const figure_options& o) {
     for (const auto& c : curves) {
         contact problem(c.surfaces, figure_friction, options);
         results.push_back(swept_curve(problem, o.points));
+        // A figure is a reproduction, whole or not at all: a refused point aborts it (exit 2),
+        // as before curves learned to go on past one (curve_point, contact.hpp).
+        for (const curve_point& row : results.back())
+            if (row.is_refused()) throw resolution_error("Fig. " + o.which + ": " + row.refused);
     }
 
     std::ostream& out = csv_file.stream();

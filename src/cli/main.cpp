@@ -79,6 +79,18 @@ scene load_scene(const scene_options& o) {
 
 namespace {
 
+// One line on stderr: valid UTF-8, no control character (a path or an option may hold any
+// bytes, which must not reach the terminal raw), and not longer than a screenful.
+int report(const char* kind, const std::string& message, int status) {
+    std::cerr << "roughroll: " << kind << ": " << echo(message, 2000) << "\n";
+    return status;
+}
+
+// The exit status of a curve written whole but with refused points (status = refused rows, one
+// stderr line each): partial output, distinct from bad input and unreachable cases (2), which
+// write nothing (README.md, docs/robustness.md).
+constexpr int partial_output = 3;
+
 int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
     const scene_point p = solve_point(load_scene(o), Q_option);
     if (json)
@@ -100,23 +112,19 @@ int run_curve(const scene_options& o, int points, bool sweep, const std::string&
     if (width) si = si_context{*s.physical, *width};
     if (!file) {
         write_curve_csv(std::cout, curve, si);
-        return 0;
+    } else {
+        write_curve_csv(file->stream(), curve, si);
+        file->commit();
     }
-    write_curve_csv(file->stream(), curve, si);
-    file->commit();
-    return 0;
-}
-
-}  // namespace
-
-namespace {
-// One line on stderr: valid UTF-8, no control character (a path or an option may hold any
-// bytes, which must not reach the terminal raw), and not longer than a screenful.
-int report(const char* kind, const std::string& message, int status) {
-    std::cerr << "roughroll: " << kind << ": " << echo(message, 2000) << "\n";
+    // Each refused point on stderr, once the curve is written (curve_point, contact.hpp).
+    int status = 0;
+    for (const curve_point& row : curve)
+        if (row.is_refused()) status = report("refused", row.refused, partial_output);
     return status;
 }
+
 }  // namespace
+
 
 std::string dump(const nlohmann::json& j) {
     // Every text in roughroll's JSON is valid UTF-8 already (one_line at its source); replace
@@ -126,7 +134,8 @@ std::string dump(const nlohmann::json& j) {
 
 int main(int argc, char** argv) {
     CLI::App app{"roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness\n"
-                 "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach."};
+                 "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach (nothing written);\n"
+                 "3: a curve written with refused points (rows with status 'refused', one stderr line each)."};
     app.require_subcommand(1);
 
     scene_options point_scene;

@@ -1,5 +1,6 @@
 #include "roughroll/io/output.hpp"
 
+#include <cmath>
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
@@ -149,9 +150,29 @@ void write_summary(std::ostream& out, const point_report& r) {
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
            "Q_error_estimate,zones,stick_start"
-        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << "\n";
+        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",status\n";
     for (const auto& row : curve) {
         const auto& s = row.solution;
+        if (row.is_refused()) {
+            // Only what was given: the load Q (creep_curve) with Carter's values at it, or the
+            // stick end c0 (swept_curve); every computed field is empty (curve_point, contact.hpp).
+            const bool at_Q = !std::isnan(s.Q);
+            const auto cell = [](bool given, double x) { return given ? shortest(x) : std::string(); };
+            out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0) << ",,,"
+                << cell(at_Q, row.smooth.xi) << ',' << cell(at_Q, row.smooth.c0) << ",,,,,,";
+            if (si) {
+                // xi1 is the refused creep; P1 and Carter's xi1 depend on the given load alone.
+                out << ',';
+                if (at_Q) {
+                    const si_point p = to_si(si->scene, si->width, s.Q, s.f, 0.0, 0.0);
+                    out << shortest(p.P1) << ",," << shortest(p.xi1_carter);
+                } else {
+                    out << ",,";
+                }
+            }
+            out << ",refused\n";
+            continue;
+        }
         out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
             << shortest(s.xi / s.f) << ',' << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ','
             << (s.checks.hold() ? 1 : 0) << ',';
@@ -164,7 +185,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
         }
-        out << '\n';
+        out << ",ok\n";
     }
 }
 

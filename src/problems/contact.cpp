@@ -524,6 +524,20 @@ namespace {
 void check_curve_points(int points) {
     if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
 }
+
+// A refused row (contact.hpp, curve_point): the given load Q or stick end c0 (the other NaN),
+// NaN for every computed number, so that no refused row can pass for an answer.
+curve_point refused_row(double Q, double c0, double f, const std::string& at, const resolution_error& why) {
+    const double nan = std::nan("");
+    tangential_solution s{};
+    s.Q = Q;
+    s.f = f;
+    s.c0 = c0;
+    s.xi = s.sign = s.rcond = s.load_slope = s.start = nan;
+    s.checks = traction_checks{nan, nan, nan, nan, false, false, false};
+    const carter_point smooth = std::isnan(Q) ? carter_point{nan, nan} : carter(Q, f);
+    return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
+}
 }  // namespace
 
 std::vector<double> curve_loads(int points, double f) {
@@ -545,9 +559,13 @@ std::vector<curve_point> swept_curve(contact& c, int points) {
         // rho = (1 + c0)/2 uniform from 1 to 0: Carter's Q/f = 1 - rho^2, the loads of curve_loads.
         const double rho = 1.0 - static_cast<double>(i) / (points - 1);
         const double c0 = i + 1 == points ? -1.0 : 2.0 * rho - 1.0;
-        contact::swept_point p = c.at_stick_end(c0);
-        const carter_point smooth = carter(p.solution.Q, c.friction());
-        rows.push_back({std::move(p.solution), smooth, p.estimate});
+        try {
+            contact::swept_point p = c.at_stick_end(c0);
+            const carter_point smooth = carter(p.solution.Q, c.friction());
+            rows.push_back({std::move(p.solution), smooth, p.estimate, {}});
+        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
+            rows.push_back(refused_row(std::nan(""), c0, c.friction(), "c0 = " + shortest(c0), e));
+        }
     }
     return rows;
 }
@@ -556,9 +574,14 @@ std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& load
     std::vector<curve_point> rows;
     rows.reserve(loads.size());
     for (double Q : loads) {
-        tangential_solution s = c.point(Q);
-        const auto e = c.estimate(s);
-        rows.push_back({std::move(s), carter(Q, c.friction()), e});
+        try {
+            tangential_solution s = c.point(Q);
+            const auto e = c.estimate(s);
+            rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
+        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
+            rows.push_back(refused_row(Q, std::nan(""), c.friction(),
+                                       "Q = " + shortest(Q) + " (Q/f = " + shortest(Q / c.friction()) + ")", e));
+        }
     }
     return rows;
 }

@@ -189,11 +189,22 @@ double load_ratio(const roughness& surfaces, const solver_options& options, norm
 // the kernel is beyond the level's resolution.
 double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
 
-// One row of a creep curve.
+// One row of a creep curve: solved, or refused. A refused row is a point the method cannot
+// answer honestly at this n (a resolution_error of contact::point, contact::estimate or
+// contact::at_stick_end: the levels do not converge visibly, a load below the resolution);
+// the curve goes on past it. Its `solution` keeps only what was given, the load Q of
+// creep_curve (and `smooth`, Carter's closed form at that Q) or the stick end c0 of
+// swept_curve; every other number is NaN, and `refused` holds one line naming the point and
+// the reason. Only resolution_error is absorbed: input_error (bad input) and numerical_error
+// (a GSL status, a singular or non-finite system, a zone search that finds no structure, any
+// of which may be a bug or a scene-wide fault) still abort the curve (docs/robustness.md).
 struct curve_point {
     tangential_solution solution;
     carter_point smooth;                      // Carter's curve at the same Q
     std::optional<error_estimate> estimate;  // contact::estimate
+    std::string refused;                      // empty: solved; else "Q = ...: <the resolution_error>"
+
+    bool is_refused() const { return !refused.empty(); }
 };
 
 // Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# `roughroll curve` with refused points (README.md "Creep curves", docs/robustness.md): a point
+# without an honest error estimate is a row with status `refused` and its computed fields empty,
+# one stderr line names it, the rest of the curve is computed, and the exit status is 3.
+# Which rows must be refused is decided independently, by `roughroll point --Q` on each load
+# alone (exit 2, "no honest error estimate"); an answered row must be that point's xi.
+# The scene: a very stiff normal layer (T = 1e6, A = 1 on cylinder 2) at n = 16, product.
+# Usage: cli_curve.sh path/to/roughroll
+set -u
+bin=$1
+data="$(cd "$(dirname "$0")/../data" && pwd)"
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+cat >"$dir/stiff.toml" <<'EOF'
+friction = 0.3
+Q = 0.15
+[cylinder2.normal]
+T = 1e6
+A = 1
+[solver]
+n = 16
+method = "product"
+EOF
+
+# column NAME: its index in the header of $dir/out.
+column() { head -1 "$dir/out" | tr ',' '\n' | grep -nx "$1" | cut -d: -f1; }
+
+# --- Given loads: every row against the point solved alone.
+timeout 120 "$bin" curve "$dir/stiff.toml" --points 7 >"$dir/out" 2>"$dir/err"
+status=$?
+[ "$status" -eq 3 ] || fail "stiff curve: exit status $status, expected 3 (partial output)"
+[ "$(head -1 "$dir/out" | awk -F, '{ print $NF }')" = status ] || fail "stiff curve: the last column is not status"
+[ "$(tail -n +2 "$dir/out" | wc -l)" -eq 7 ] || fail "stiff curve: $(tail -n +2 "$dir/out" | wc -l) rows, expected 7"
+width=$(head -1 "$dir/out" | awk -F, '{ print NF }')
+refused=0 answered=0
+while IFS=, read -r Q Qf rest; do
+    row="$Q,$Qf,$rest"
+    [ "$(echo "$row" | awk -F, '{ print NF }')" -eq "$width" ] || fail "row Q = $Q is not $width fields wide: $row"
+    state=${row##*,}
+    timeout 60 "$bin" point "$dir/stiff.toml" --Q "$Q" --json >"$dir/pout" 2>"$dir/perr"
+    pstatus=$?
+    if [ "$pstatus" -eq 2 ] && grep -q "no honest error estimate" "$dir/perr"; then
+        refused=$((refused + 1))
+        [ "$state" = refused ] || fail "Q = $Q: refused alone, '$state' on the curve"
+        # c0, xi, xi_over_f, checks_hold .. stick_start: empty (never a plausible number).
+        for name in c0 xi xi_over_f checks_hold c0_error_estimate xi_error_estimate zones stick_start; do
+            k=$(column "$name")
+            [ -z "$(echo "$row" | cut -d, -f"$k")" ] || fail "Q = $Q refused but $name = $(echo "$row" | cut -d, -f"$k")"
+        done
+        line="roughroll: refused: curve point at Q = $Q (Q/f = $Qf): $(sed 's/^roughroll: error: //' "$dir/perr")"
+        grep -qxF -- "$line" "$dir/err" || fail "Q = $Q: no stderr line '$line'"
+    elif [ "$pstatus" -eq 0 ]; then
+        answered=$((answered + 1))
+        [ "$state" = ok ] || fail "Q = $Q: answered alone, '$state' on the curve"
+        xi=$(echo "$row" | cut -d, -f"$(column xi)")
+        alone=$(grep -m1 '^  "xi":' "$dir/pout" | sed 's/.*: *//; s/,$//')
+        awk -v a="$xi" -v b="$alone" 'BEGIN { exit !(a + 0 == b + 0 && a != "") }' ||
+            fail "Q = $Q: xi = '$xi' on the curve, $alone alone"
+    else
+        fail "Q = $Q alone: exit status $pstatus: $(cat "$dir/perr")"
+    fi
+done < <(tail -n +2 "$dir/out")
+[ "$refused" -ge 1 ] && [ "$answered" -ge 2 ] || fail "the scene must give refused and answered rows ($refused, $answered)"
+[ "$(wc -l <"$dir/err")" -eq "$refused" ] || fail "$(wc -l <"$dir/err") stderr lines for $refused refused points"
+echo "given loads: $answered answered, $refused refused, exit $status"
+
+# --- The same curve into a file: the same CSV, the same status.
+timeout 120 "$bin" curve "$dir/stiff.toml" --points 7 --csv "$dir/curve.csv" >"$dir/out2" 2>"$dir/err2"
+status=$?
+[ "$status" -eq 3 ] || fail "--csv: exit status $status, expected 3"
+cmp -s "$dir/out" "$dir/curve.csv" || fail "--csv: the file differs from stdout's CSV"
+cmp -s "$dir/err" "$dir/err2" || fail "--csv: other stderr lines"
+[ -s "$dir/out2" ] && fail "--csv: something on stdout"
+
+# --- Swept in c0: a refused row keeps its c0, its load (not found) is empty.
+timeout 120 "$bin" curve "$dir/stiff.toml" --points 5 --sweep >"$dir/out" 2>"$dir/err"
+status=$?
+[ "$status" -eq 3 ] || fail "swept: exit status $status, expected 3"
+awk -F, 'NR > 1 && $NF == "refused" { if ($1 != "" || $3 == "" || $4 != "") bad = 1; n++ }
+         END { exit !(n >= 1 && !bad) }' "$dir/out" || fail "swept: refused rows must have c0 only: $(cat "$dir/out")"
+grep -q '^roughroll: refused: curve point at c0 = ' "$dir/err" || fail "swept: no stderr line naming c0"
+[ "$(wc -l <"$dir/err")" -eq "$(grep -c ',refused$' "$dir/out")" ] || fail "swept: one stderr line per refused row"
+
+# --- A curve without a refusal: exit 0, nothing on stderr, every status ok.
+timeout 120 "$bin" curve "$data/fig2a-T1.toml" --points 5 >"$dir/out" 2>"$dir/err"
+status=$?
+[ "$status" -eq 0 ] || fail "clean curve: exit status $status"
+[ -s "$dir/err" ] && fail "clean curve: stderr $(cat "$dir/err")"
+[ "$(tail -n +2 "$dir/out" | grep -c ',ok$')" -eq 5 ] || fail "clean curve: not every row ok"
+
+# --- Bad input still aborts at once: exit 2, one line, nothing written.
+timeout 60 "$bin" curve "$dir/stiff.toml" --points 1 --csv "$dir/bad.csv" >"$dir/out" 2>"$dir/err"
+status=$?
+[ "$status" -eq 2 ] || fail "bad input: exit status $status, expected 2"
+[ "$(wc -l <"$dir/err")" -eq 1 ] || fail "bad input: $(wc -l <"$dir/err") stderr lines"
+[ -e "$dir/bad.csv" ] && fail "bad input: the CSV was written"
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]

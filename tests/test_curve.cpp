@@ -1,0 +1,196 @@
+// Creep curves with a refused point (contact.hpp, curve_point; io/output.hpp, write_curve_csv):
+// a point without an honest error estimate is a refused row, and the curve goes on past it.
+// The scene: a very stiff normal layer (cylinder 2, T = 1e6, A = 1; docs/performance.md) with
+// method product at n = 16, where some loads have levels 4, 8, 16 that do not converge visibly
+// (refused) and others are answered. What each row must be is decided independently of the
+// curve: the same load (or c0) solved alone on a fresh contact, refused or answered.
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
+#include "roughroll/problems/contact.hpp"
+
+using namespace roughroll;
+
+namespace {
+constexpr double f = 0.3;
+
+roughness stiff_layer() {
+    roughness r;
+    r.cylinder2.normal = {1e6, 1.0};
+    return r;
+}
+
+contact fresh() { return contact(stiff_layer(), f, solver_options{16, method::product}); }
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream in(line);
+    while (std::getline(in, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.push_back("");
+    return cells;
+}
+}  // namespace
+
+// Every row as the load solved alone: the same numbers where answered, a refused row (its load,
+// NaN for the rest, the alone-solve's reason) where the alone-solve refuses.
+TEST(Curve, RefusedPointIsARowAndTheCurveGoesOn) {
+    const std::vector<double> loads = curve_loads(7, f);  // the program's `curve --points 7`
+    contact c = fresh();
+    const std::vector<curve_point> curve = creep_curve(c, loads);
+    ASSERT_EQ(curve.size(), loads.size());
+    int refused = 0, answered = 0;
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        const curve_point& row = curve[i];
+        contact alone = fresh();
+        std::string why;
+        tangential_solution s{};
+        std::optional<error_estimate> e;
+        try {
+            s = alone.point(loads[i]);
+            e = alone.estimate(s);
+        } catch (const resolution_error& x) {
+            why = x.what();
+        }
+        if (!why.empty()) {
+            ++refused;
+            ASSERT_TRUE(row.is_refused()) << "Q = " << loads[i];
+            EXPECT_EQ(row.refused, "curve point at Q = " + shortest(loads[i]) + " (Q/f = " + shortest(loads[i] / f) +
+                                       "): " + why);
+            EXPECT_EQ(row.solution.Q, loads[i]);
+            EXPECT_TRUE(std::isnan(row.solution.c0));
+            EXPECT_TRUE(std::isnan(row.solution.xi));
+            EXPECT_FALSE(row.solution.checks.hold());
+            EXPECT_FALSE(row.estimate.has_value());
+            EXPECT_EQ(row.smooth.xi, carter(loads[i], f).xi);  // the closed form at the given load
+        } else {
+            ++answered;
+            ASSERT_FALSE(row.is_refused()) << row.refused;
+            EXPECT_EQ(row.solution.c0, s.c0);
+            EXPECT_EQ(row.solution.xi, s.xi);
+            ASSERT_TRUE(row.estimate && e);
+            EXPECT_EQ(row.estimate->xi, e->xi);
+        }
+    }
+    // The scene must exercise both kinds of rows, or this test proves nothing.
+    EXPECT_GE(refused, 1);
+    EXPECT_GE(answered, 2);
+}
+
+TEST(Curve, SweptRefusedPointKeepsItsStickEnd) {
+    contact c = fresh();
+    const std::vector<curve_point> curve = swept_curve(c, 5);  // c0 = 1, 0.5, 0, -0.5, -1
+    int refused = 0;
+    for (const curve_point& row : curve) {
+        if (!row.is_refused()) continue;
+        ++refused;
+        const double c0 = row.solution.c0;
+        EXPECT_TRUE(std::isnan(row.solution.Q));
+        EXPECT_TRUE(std::isnan(row.solution.xi));
+        EXPECT_TRUE(std::isnan(row.smooth.xi));  // Carter's needs the load, which was not found
+        contact alone = fresh();
+        try {
+            alone.at_stick_end(c0);
+            ADD_FAILURE() << "c0 = " << c0 << " is answered alone but refused on the curve";
+        } catch (const resolution_error& x) {
+            EXPECT_EQ(row.refused, "curve point at c0 = " + shortest(c0) + ": " + std::string(x.what()));
+        }
+    }
+    EXPECT_GE(refused, 1);
+}
+
+// Bad input still aborts the curve at once: a load above f is an input_error, not a row.
+TEST(Curve, BadInputStillAborts) {
+    contact c = fresh();
+    EXPECT_THROW(creep_curve(c, {f * 5.0 / 9.0, 1.5 * f}), input_error);
+    EXPECT_THROW(swept_curve(c, 1), input_error);
+}
+
+// The CSV: every row as wide as the header; a refused row has its load, Carter's columns and
+// status refused, every computed field empty (never a plausible number).
+TEST(Curve, CsvMarksRefusedRows) {
+    const std::vector<double> loads = curve_loads(7, f);
+    contact c = fresh();
+    const std::vector<curve_point> curve = creep_curve(c, loads);
+    int refused = 0;
+    for (const curve_point& row : curve) refused += row.is_refused() ? 1 : 0;
+    ASSERT_GE(refused, 1);
+    ASSERT_LT(refused, 7);
+    std::ostringstream out;
+    write_curve_csv(out, curve);
+    std::istringstream in(out.str());
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> header = split(line);
+    ASSERT_EQ(header.back(), "status");
+    std::vector<std::vector<std::string>> rows;
+    while (std::getline(in, line)) rows.push_back(split(line));
+    ASSERT_EQ(rows.size(), loads.size());
+    const auto column = [&](const char* name) {
+        for (std::size_t k = 0; k < header.size(); ++k)
+            if (header[k] == name) return k;
+        ADD_FAILURE() << "no column " << name;
+        return header.size();
+    };
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const std::vector<std::string>& r = rows[i];
+        ASSERT_EQ(r.size(), header.size()) << "row " << i;
+        EXPECT_EQ(r[column("Q")], shortest(loads[i]));
+        EXPECT_EQ(r[column("xi_carter")], shortest(carter(loads[i], f).xi));
+        if (curve[i].is_refused()) {
+            EXPECT_EQ(r.back(), "refused");
+            for (const char* name : {"c0", "xi", "xi_over_f", "checks_hold", "c0_error_estimate", "xi_error_estimate",
+                                     "Q_error_estimate", "zones", "stick_start"})
+                EXPECT_EQ(r[column(name)], "") << name;
+        } else {
+            EXPECT_EQ(r.back(), "ok");
+            EXPECT_EQ(r[column("xi")], shortest(curve[i].solution.xi));
+        }
+    }
+}
+
+// A physical scene's columns on a refused row: P1 = Q P2 and Carter's xi1 of the given load,
+// xi1 (the refused creep) empty. The units come from data/steel-rollers.toml's materials; the
+// rows from the stiff layer's curve (write_curve_csv only converts them).
+TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
+    scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1.0e5\nfriction = 0.3\n"
+                          "[cylinder1.normal]\nk = 8.0e14\nt = 1.5e6\n",
+                          "steel.toml", ".");
+    const std::optional<contact_width> width = settle_width(s);
+    ASSERT_TRUE(width.has_value());
+    contact c = fresh();
+    const std::vector<double> loads = curve_loads(7, f);
+    const std::vector<curve_point> curve = creep_curve(c, loads);
+    std::ostringstream out;
+    write_curve_csv(out, curve, si_context{*s.physical, *width});
+    std::istringstream in(out.str());
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> header = split(line);
+    ASSERT_EQ(header.size(), 17u);
+    ASSERT_EQ(header[13], "P1_N_per_m");
+    int refused = 0;
+    for (std::size_t i = 0; std::getline(in, line); ++i) {
+        const std::vector<std::string> r = split(line);
+        ASSERT_EQ(r.size(), header.size()) << line;
+        EXPECT_EQ(std::stod(r[13]), loads[i] * 1.0e5);
+        EXPECT_NE(r[15], "");  // Carter's xi1 of the given load
+        if (r.back() == "refused") {
+            ++refused;
+            EXPECT_EQ(r[14], "") << "xi1 of a refused row";
+        } else {
+            EXPECT_EQ(r[14], shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0,
+                                             curve[i].solution.xi).xi1));
+        }
+    }
+    EXPECT_GE(refused, 1);
+}
