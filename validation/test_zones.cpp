@@ -24,29 +24,15 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 #include "test_zones_low_order.hpp"
+#include "zone_scenes.hpp"
 
 using namespace roughroll;
 
 namespace {
 constexpr double f = 0.3;
 
-// K1* far above K2* near the edge: G'(-1) < 0 (found by a scan of random scenes, not tuned).
-roughness tangential_dominates_a() {
-    roughness r;
-    r.cylinder1.tangential = {3.5613, 1.65266};
-    r.cylinder2.tangential = {3.33641, 6.08721};
-    r.cylinder1.normal = {0.112749, 1.75668};
-    r.cylinder2.normal = {0.0338885, 1.17053};
-    return r;
-}
-roughness tangential_dominates_b() {  // fails only near gross sliding (from Q/f ~ 1 - 1e-3 on)
-    roughness r;
-    r.cylinder1.tangential = {5.71149, 0.39556};
-    r.cylinder2.tangential = {1.0744, 0.625575};
-    r.cylinder1.normal = {0.2749, 4.27018};
-    r.cylinder2.normal = {0.0939665, 0.917649};
-    return r;
-}
+using zone_scenes::tangential_dominates_a;
+using zone_scenes::tangential_dominates_b;
 roughness equal_kernels() {  // Fig. 2(a), T = 1
     roughness r;
     r.cylinder1.tangential = {1.0, 0.5};

@@ -17,28 +17,16 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "zone_scenes.hpp"
 
 using namespace roughroll;
 
 namespace {
 constexpr double f = 0.3;
 
-roughness both_rough_a() {  // validation/test_zones.cpp: K1* far above K2* near the edge
-    roughness r;
-    r.cylinder1.tangential = {3.5613, 1.65266};
-    r.cylinder2.tangential = {3.33641, 6.08721};
-    r.cylinder1.normal = {0.112749, 1.75668};
-    r.cylinder2.normal = {0.0338885, 1.17053};
-    return r;
-}
-roughness both_rough_b() {  // fails only from Q/f ~ 1 - 1e-3 on
-    roughness r;
-    r.cylinder1.tangential = {5.71149, 0.39556};
-    r.cylinder2.tangential = {1.0744, 0.625575};
-    r.cylinder1.normal = {0.2749, 4.27018};
-    r.cylinder2.normal = {0.0939665, 0.917649};
-    return r;
-}
+using zone_scenes::tangential_dominates_a;
+using zone_scenes::tangential_dominates_b;
+
 roughness stiff_tangential_layer() {  // the scene of issue 12's near-sliding report
     roughness r;
     r.cylinder1.tangential = {100.0, 1.0};
@@ -68,8 +56,8 @@ void expect_general_and_honest(const roughness& r, const std::vector<double>& lo
 }
 }  // namespace
 
-TEST(ZonesNearSliding, BothRoughA) { expect_general_and_honest(both_rough_a(), {(1.0 - 1e-9) * f, (1.0 - 1e-15) * f}); }
-TEST(ZonesNearSliding, BothRoughB) { expect_general_and_honest(both_rough_b(), {(1.0 - 1e-12) * f, (1.0 - 1e-15) * f}); }
+TEST(ZonesNearSliding, BothRoughA) { expect_general_and_honest(tangential_dominates_a(), {(1.0 - 1e-9) * f, (1.0 - 1e-15) * f}); }
+TEST(ZonesNearSliding, BothRoughB) { expect_general_and_honest(tangential_dominates_b(), {(1.0 - 1e-12) * f, (1.0 - 1e-15) * f}); }
 TEST(ZonesNearSliding, StiffTangentialLayer) { expect_general_and_honest(stiff_tangential_layer(), {0.29999999999999970}); }
 
 // The creep curve at the default method from Q/f = 0.99 to gross sliding: every point on the
@@ -78,7 +66,7 @@ TEST(ZonesNearSliding, StiffTangentialLayer) { expect_general_and_honest(stiff_t
 // of 7(d) (xi(f) - xi = (3/8) f G'' rho^2 with rho ~ (1 - Q/f)^(1/3)): a factor 10^(2/3) = 4.64
 // per decade of 1 - Q/f once rho T is small. So the curve has no jump as it meets xi(f).
 TEST(ZonesNearSliding, CreepCurveThroughTheRegion) {
-    for (const roughness& r : {both_rough_a(), stiff_tangential_layer()}) {
+    for (const roughness& r : {tangential_dominates_a(), stiff_tangential_layer()}) {
         contact c(r, f, solver_options{});
         const tangential_solution sliding = c.point(f);
         std::optional<tangential_solution> last;
