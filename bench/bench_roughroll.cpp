@@ -151,16 +151,23 @@ void bm_limit_swept_point(benchmark::State& state) {
     }
 }
 
+// data/steel-rollers.toml's rollers (k, t given), the method from arg 0 (1 product,
+// 2 extrapolated, 3 one-parameter; n its default).
+scene steel_rollers(const benchmark::State& state) {
+    scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
+                          "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n"
+                          "[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n",
+                          "bench");
+    s.solver = solver_options{0, state.range(0) == 3 ? method::one_parameter : method_of(state.range(0))};
+    return s;
+}
+
 // A physical scene, data/steel-rollers.toml's rollers (k, t given): the half-width for the
 // given load (Brent in a on the normal problem alone at n/2, polished at n), then the point at a given Q (arg: method
 // 1 product, 2 extrapolated, 3 one-parameter; n its default).
 void bm_physical_point(benchmark::State& state) {
-    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
-                                "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n"
-                                "[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n",
-                                "bench");
-    const method how = state.range(0) == 3 ? method::one_parameter : method_of(state.range(0));
-    const solver_options o{0, how};
+    const scene s = steel_rollers(state);
+    const solver_options& o = s.solver;
     for (auto _ : state) {
         // As solve_point does (io/scene_point.cpp): the trial widths and the contact at the width
         // found share their product-integration workspaces.
@@ -177,12 +184,8 @@ void bm_physical_point(benchmark::State& state) {
 // fixed-width point of the same scene, so that bm_physical_point over this is the cost of the
 // width search alone, the unequal kernels of the rollers in both.
 void bm_physical_point_fixed(benchmark::State& state) {
-    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
-                                "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n"
-                                "[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n",
-                                "bench");
-    const method how = state.range(0) == 3 ? method::one_parameter : method_of(state.range(0));
-    const solver_options o{0, how};
+    const scene s = steel_rollers(state);
+    const solver_options& o = s.solver;
     const contact_width w = find_width(*s.physical, [&o](const roughness& r) { return load_ratio(r, o); },
                                        [&o](const roughness& r) { return coarse_load_ratio(r, o); });
     const roughness at = roughness_at(*s.physical, w.a);
