@@ -150,9 +150,8 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
     if (c0 == 1.0) {
         s = full_stick();
     } else if (carter_) {
-        // Smooth: Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho).
-        const double rho = 0.5 * (1.0 + c0);
-        s = carter_solution(f_ * (1.0 - rho) * (1.0 + rho), c0, M_2_PI * f_ * (1.0 - rho));
+        const carter_stick_end smooth = carter_at_stick_end(c0, f_);  // Smooth: Carter's closed form
+        s = carter_solution(smooth.Q, c0, smooth.xi);
     } else {
         s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
     }

@@ -115,6 +115,9 @@ public:
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
     tangential_solution level_at_stick_end(double c0, bool checked);
+    // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
+    // Q +- error) outside [0, f] at an inner c0.
+    void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
     // The point at Q of this contact's own level: cached, so that the levels of an estimate
     // and the coarse level of an extrapolation are solved once per Q.
     // `checked`: with the checks (3.3)-(3.4) (a point reported), or without (a level of an
