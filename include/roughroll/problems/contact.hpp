@@ -86,6 +86,8 @@ public:
 
     // The point whose stick zone ends at c0 in [-1, 1], Q = Q(c0) of (4.5): no root search,
     // a creep curve swept in c0. With its estimate (same rules as estimate(), same refusal).
+    // Also refused (resolution_error) at an inner c0: Q(c0) outside [0, f], or Q +- its
+    // estimate reaching outside [0, f] (no physical point; docs/robustness.md).
     struct swept_point {
         tangential_solution solution;
         std::optional<error_estimate> estimate;
