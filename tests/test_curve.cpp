@@ -4,7 +4,9 @@
 // method product at n = 16, where some loads have levels 4, 8, 16 that do not converge visibly
 // (refused) and others are answered. What each row must be is decided independently of the
 // curve: the same load (or c0) solved alone on a fresh contact, refused or answered.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -164,6 +166,30 @@ TEST(Curve, SweptLoadWhoseIntervalLeavesZeroToFIsRefused) {
         EXPECT_EQ(row.solution.Q, row.solution.c0 == 1.0 ? 0.0 : f);
     }
     EXPECT_GE(interval, 1);
+}
+
+// The checks of a swept point (tangential_solver::check): the stick zone's margin of (3.3),
+// whose U-series are summed for the whole grid at once, equals the scalar route bit for bit:
+// min over the 200 Chebyshev points of [start, c0] of (f p(r) - |p1(r)|)/f, with
+// normal_solution::pressure and tangential_solver::traction one point at a time.
+TEST(Curve, SweptChecksEqualTheScalarRoute) {
+    roughness r;  // Fig. 2a, curve 3 (docs/performance.md)
+    r.cylinder1.tangential = r.cylinder2.tangential = r.cylinder1.normal = r.cylinder2.normal = {1.0, 1.0};
+    for (const int n : {32, 128}) {
+        const normal_solution normal = solve_normal(kernel::normal(r), n, method::product);
+        tangential_solver level(normal, kernel::tangential(r), kernel::normal(r), f);
+        for (const double c0 : {0.98, 0.5, 0.0, -0.5, -0.97}) {
+            const tangential_solution s = level.at_stick_end(c0, true);
+            double margin = std::numeric_limits<double>::infinity();
+            for (int i = 0; i < 200; ++i) {
+                const double x = std::cos(M_PI * (i + 0.5) / 200);
+                const double at = 0.5 * (s.start + s.c0) + 0.5 * (s.c0 - s.start) * x;
+                margin = std::min(margin, (f * normal.pressure(at) - std::fabs(level.traction(s, at))) / f);
+            }
+            EXPECT_EQ(s.checks.stick_margin, margin) << "n = " << n << ", c0 = " << c0;
+            EXPECT_TRUE(s.checks.hold()) << "n = " << n << ", c0 = " << c0;
+        }
+    }
 }
 
 // Bad input still aborts the curve at once: a load above f is an input_error, not a row.

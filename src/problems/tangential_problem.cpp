@@ -1,6 +1,7 @@
 #include "roughroll/problems/tangential_problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -345,12 +346,24 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     }
     c.pressure_margin = *pressure_margin_;
     if (s.c0 > s.start) {
+        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
+        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
+        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
+        std::array<double, check_points> r{}, t{}, phi{}, psi{};
+        const double rho = s.rho();
         for (int i = 0; i < check_points; ++i) {
-            const double r = grid_point(s.start, s.c0, i);
-            const double fp = f_ * normal_.pressure(r);
-            // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() on a stick zone
-            // that starts inside the contact (docs/formulation.md section 7).
-            const double p1 = s.start > -1.0 ? traction(s, r) : fp + q0(s, r);
+            r[i] = grid_point(s.start, s.c0, i);
+            t[i] = (r[i] - s.start) / rho - 1.0;
+        }
+        u_series(normal_.b, r.data(), phi.data(), check_points);
+        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), check_points);
+        for (int i = 0; i < check_points; ++i) {
+            const double fp = f_ * (std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]));
+            const bool inside = !(r[i] <= s.start || r[i] >= s.c0 || s.psi_b.empty());
+            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
+            // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() (sign (f p + q0))
+            // on a stick zone that starts inside the contact (docs/formulation.md section 7).
+            const double p1 = s.start > -1.0 ? s.sign * (fp + q) : fp + q;
             lower(c.stick_margin, (fp - std::fabs(p1)) / f_);
         }
     }
