@@ -277,11 +277,14 @@ public:
         }
     }
 
-    double operator()(double t) const {
-        double sum = cauchy_u_series(psi_b_, t);
-        for (const auto& e : at_ends_)
-            sum += t > 0.0 ? e.at_one * std::exp(-e.rate * (t - 1.0)) : e.at_minus_one * std::exp(-e.rate * (-1.0 - t));
-        return sum;
+    // L1[q0] at the points t[i] into out[i]: the Cauchy transforms summed for all points at once
+    // (cauchy_u_series, bit for bit the scalar one), then the kernel terms in the same order.
+    void operator()(const double* t, double* out, std::size_t count) const {
+        cauchy_u_series(psi_b_, t, out, count);
+        for (std::size_t i = 0; i < count; ++i)
+            for (const auto& e : at_ends_)
+                out[i] += t[i] > 0.0 ? e.at_one * std::exp(-e.rate * (t[i] - 1.0))
+                                     : e.at_minus_one * std::exp(-e.rate * (-1.0 - t[i]));
     }
 
 private:
@@ -299,9 +302,14 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of the slip zones, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
-    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b);
+    std::vector<double> l(r.size(), 0.0);
+    if (!(s.psi_b.empty() || rho == 0.0)) {
+        std::vector<double> t(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) t[i] = (r[i] - s.start) / rho - 1.0;
+        stick_operator_outside(k1_.stretched(rho), s.psi_b)(t.data(), l.data(), t.size());
+    }
     for (std::size_t i = 0; i < r.size(); ++i) {
-        v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() || rho == 0.0 ? 0.0 : lq0((r[i] - s.start) / rho - 1.0));
+        v[i] = s.sign * s.xi + f_ * v[i] - l[i];
         if (s.forcing != 0.0) v[i] += s.forcing * normal_.pressure(r[i]);  // (D2), docs/formulation.md 8(e)
     }
     return v;
