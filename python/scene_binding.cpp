@@ -127,8 +127,10 @@ struct curve_columns {
 };
 
 // A refused row's solution with a finite creep, for to_si's P1 and Carter's xi1 (which do not
-// depend on it): to_si refuses a non-finite xi1.
+// depend on it): to_si refuses a non-finite xi1. On a swept curve (no load found) the load is
+// Carter's at the same c0, for Carter's xi1 only (as write_curve_csv).
 tangential_solution with_creep(tangential_solution t, double xi) {
+    if (std::isnan(t.Q)) t.Q = carter_at_stick_end(t.c0, t.f).Q;
     t.xi = xi;
     t.c0 = 0.0;
     return t;
@@ -161,12 +163,13 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         if (row.is_refused()) {
             out.refused.push_back(row.refused);
             if (width) {
-                // As write_curve_csv: P1 and Carter's xi1 of the given load, xi1 (the refused creep) NaN.
+                // As write_curve_csv: P1 of the given load (NaN on a swept curve), Carter's xi1 at
+                // what was given, xi1 (the refused creep) NaN.
                 const bool at_Q = !std::isnan(t.Q);
-                const std::optional<si_point> si = at_Q ? si_of(s, width, with_creep(t, 0.0)) : std::nullopt;
-                out.P1.push_back(si ? si->P1 : nan);
+                const std::optional<si_point> si = si_of(s, width, with_creep(t, 0.0));
+                out.P1.push_back(at_Q ? si->P1 : nan);
                 out.xi1.push_back(nan);
-                out.xi1_carter.push_back(si ? si->xi1_carter : nan);
+                out.xi1_carter.push_back(si->xi1_carter);
             }
         } else if (const std::optional<si_point> si = si_of(s, width, t)) {
             out.P1.push_back(si->P1);

@@ -83,6 +83,15 @@ awk -F, 'NR > 1 && $NF == "refused" { if ($1 != "" || $3 == "" || $4 != "") bad 
          END { exit !(n >= 1 && !bad) }' "$dir/out" || fail "swept: refused rows must have c0 only: $(cat "$dir/out")"
 grep -q '^roughroll: refused: curve point at c0 = ' "$dir/err" || fail "swept: no stderr line naming c0"
 [ "$(wc -l <"$dir/err")" -eq "$(grep -c ',refused$' "$dir/out")" ] || fail "swept: one stderr line per refused row"
+# A load Q(c0) outside [0, f] (here -28.8 at c0 = 0.5 with method product) is no physical point:
+# refused, never an answered row; Carter's columns (xi_carter, c0_carter) are numbers in every row.
+grep -qi 'nan' "$dir/out" && fail "swept: nan in the CSV: $(grep -i nan "$dir/out")"
+awk -F, -v f=0.3 'NR > 1 && $NF == "ok" && ($1 < 0 || $1 > f) { bad = 1 } END { exit bad }' "$dir/out" ||
+    fail "swept: an answered row with Q outside [0, f]: $(cat "$dir/out")"
+awk -F, 'NR > 1 && ($6 == "" || $7 == "") { bad = 1 } END { exit bad }' "$dir/out" ||
+    fail "swept: a row without Carter's columns: $(cat "$dir/out")"
+grep -q '^roughroll: refused: curve point at c0 = 0.5: Q(c0) = [-0-9.e+]* lies outside \[0, f\] = \[0, 0.3\]' "$dir/err" ||
+    fail "swept: c0 = 0.5 (Q = -28.8) not refused as outside [0, f]: $(cat "$dir/err")"
 
 # --- A curve without a refusal: exit 0, nothing on stderr, every status ok.
 timeout 120 "$bin" curve "$data/fig2a-T1.toml" --points 5 >"$dir/out" 2>"$dir/err"

@@ -4,7 +4,9 @@
 // method product at n = 16, where some loads have levels 4, 8, 16 that do not converge visibly
 // (refused) and others are answered. What each row must be is decided independently of the
 // curve: the same load (or c0) solved alone on a fresh contact, refused or answered.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +19,8 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 
 using namespace roughroll;
 
@@ -96,7 +100,13 @@ TEST(Curve, SweptRefusedPointKeepsItsStickEnd) {
         const double c0 = row.solution.c0;
         EXPECT_TRUE(std::isnan(row.solution.Q));
         EXPECT_TRUE(std::isnan(row.solution.xi));
-        EXPECT_TRUE(std::isnan(row.smooth.xi));  // Carter's needs the load, which was not found
+        // Carter's columns at the same c0 (the load was not found): Carter's load there,
+        // f (1 - rho^2), taken back through carter(Q, f) gives the same stick end and creep.
+        const double rho = 0.5 * (1.0 + c0);
+        const carter_point back = carter(f * (1.0 - rho * rho), f);
+        EXPECT_EQ(row.smooth.c0, c0);
+        EXPECT_NEAR(row.smooth.c0, back.c0, 1e-15);
+        EXPECT_NEAR(row.smooth.xi, back.xi, 1e-15);
         contact alone = fresh();
         try {
             alone.at_stick_end(c0);
@@ -106,6 +116,80 @@ TEST(Curve, SweptRefusedPointKeepsItsStickEnd) {
         }
     }
     EXPECT_GE(refused, 1);
+}
+
+// A load Q(c0) outside [0, f] is no physical point (contact::at_stick_end): such a row, and
+// one whose Q +- its estimate reaches outside [0, f], is refused; no row is answered with
+// Q outside [0, f], and Carter's columns are finite in every row. Which c0 give a load
+// outside is decided independently: the level n solver alone (tangential_solver, method
+// product, no estimate and no refusal), whose Q(c0) is what the curve would have printed.
+TEST(Curve, SweptLoadOutsideZeroToFIsRefused) {
+    const roughness r = stiff_layer();
+    const normal_solution normal = solve_normal(kernel::normal(r), 16, method::product);
+    tangential_solver level(normal, kernel::tangential(r), kernel::normal(r), f);
+    contact c = fresh();
+    const std::vector<curve_point> curve = swept_curve(c, 5);  // c0 = 1, 0.5, 0, -0.5, -1
+    int outside = 0;
+    for (const curve_point& row : curve) {
+        const double c0 = row.solution.c0;
+        EXPECT_TRUE(std::isfinite(row.smooth.c0) && std::isfinite(row.smooth.xi)) << "c0 = " << c0;
+        const double Q = level.at_stick_end(c0, false).Q;
+        if (!(Q >= 0.0 && Q <= f)) {
+            ++outside;
+            EXPECT_TRUE(row.is_refused()) << "c0 = " << c0 << ": Q(c0) = " << Q << " answered";
+            EXPECT_NE(row.refused.find("Q(c0) = " + shortest(Q) + " lies outside [0, f]"), std::string::npos)
+                << row.refused;
+        }
+        if (row.is_refused()) continue;
+        EXPECT_EQ(row.solution.Q, Q);  // method product: the level's own load
+        ASSERT_TRUE(row.estimate.has_value());
+        if (c0 == 1.0 || c0 == -1.0) {  // full stick and gross sliding: Q = 0 and f exactly
+            EXPECT_EQ(row.solution.Q, c0 == 1.0 ? 0.0 : f);
+            continue;
+        }
+        EXPECT_GE(row.solution.Q - row.estimate->Q, 0.0) << "c0 = " << c0;
+        EXPECT_LE(row.solution.Q + row.estimate->Q, f) << "c0 = " << c0;
+    }
+    EXPECT_GE(outside, 2);  // Q = -28.8 at c0 = 0.5 and 10.9 at c0 = 0 before this rule
+}
+
+// The same at n = 64: the loads inside [0, f] whose estimate reaches outside are refused too.
+TEST(Curve, SweptLoadWhoseIntervalLeavesZeroToFIsRefused) {
+    contact c(stiff_layer(), f, solver_options{64, method::product});
+    const std::vector<curve_point> curve = swept_curve(c, 9);
+    int interval = 0;
+    for (const curve_point& row : curve) {
+        if (row.refused.find("(its error estimate) reaches outside [0, f]") != std::string::npos) ++interval;
+        if (row.is_refused()) continue;
+        // Only the ends are answered in this scene, with their exact loads.
+        EXPECT_TRUE(row.solution.c0 == 1.0 || row.solution.c0 == -1.0) << "c0 = " << row.solution.c0;
+        EXPECT_EQ(row.solution.Q, row.solution.c0 == 1.0 ? 0.0 : f);
+    }
+    EXPECT_GE(interval, 1);
+}
+
+// The checks of a swept point (tangential_solver::check): the stick zone's margin of (3.3),
+// whose U-series are summed for the whole grid at once, equals the scalar route bit for bit:
+// min over the 200 Chebyshev points of [start, c0] of (f p(r) - |p1(r)|)/f, with
+// normal_solution::pressure and tangential_solver::traction one point at a time.
+TEST(Curve, SweptChecksEqualTheScalarRoute) {
+    roughness r;  // Fig. 2a, curve 3 (docs/performance.md)
+    r.cylinder1.tangential = r.cylinder2.tangential = r.cylinder1.normal = r.cylinder2.normal = {1.0, 1.0};
+    for (const int n : {32, 128}) {
+        const normal_solution normal = solve_normal(kernel::normal(r), n, method::product);
+        tangential_solver level(normal, kernel::tangential(r), kernel::normal(r), f);
+        for (const double c0 : {0.98, 0.5, 0.0, -0.5, -0.97}) {
+            const tangential_solution s = level.at_stick_end(c0, true);
+            double margin = std::numeric_limits<double>::infinity();
+            for (int i = 0; i < 200; ++i) {
+                const double x = std::cos(M_PI * (i + 0.5) / 200);
+                const double at = 0.5 * (s.start + s.c0) + 0.5 * (s.c0 - s.start) * x;
+                margin = std::min(margin, (f * normal.pressure(at) - std::fabs(level.traction(s, at))) / f);
+            }
+            EXPECT_EQ(s.checks.stick_margin, margin) << "n = " << n << ", c0 = " << c0;
+            EXPECT_TRUE(s.checks.hold()) << "n = " << n << ", c0 = " << c0;
+        }
+    }
 }
 
 // Bad input still aborts the curve at once: a load above f is an input_error, not a row.

@@ -137,6 +137,12 @@ def test_curve_with_refused_points_equals_program(tmp_path, sweep, points):
     refused = got["status"] == "refused"
     assert 1 <= refused.sum() < len(refused)
     assert np.all(np.isnan(got["xi"][refused])) and np.all(np.isfinite(got["xi"][~refused]))
+    # Carter's columns are numbers in every row (at the given load, or at the given c0 on a swept
+    # curve), and no answered row has a load outside [0, f] (the swept curve's Q(c0) = -28.8 at
+    # c0 = 0.5 of this scene is refused: no physical point).
+    assert np.all(np.isfinite(got["xi_carter"])) and np.all(np.isfinite(got["c0_carter"]))
+    f = 0.3
+    assert np.all((got["Q"][~refused] >= 0) & (got["Q"][~refused] <= f))
     lines = [str(w.message) for w in record if issubclass(w.category, roughroll.RefusedPointWarning)]
     assert ["roughroll: refused: " + line for line in lines] == err.splitlines()
 

@@ -154,21 +154,18 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
     for (const auto& row : curve) {
         const auto& s = row.solution;
         if (row.is_refused()) {
-            // Only what was given: the load Q (creep_curve) with Carter's values at it, or the
-            // stick end c0 (swept_curve); every computed field is empty (curve_point, contact.hpp).
+            // Only what was given: the load Q (creep_curve), or the stick end c0 (swept_curve),
+            // with Carter's values at it; every computed field is empty (curve_point, contact.hpp).
             const bool at_Q = !std::isnan(s.Q);
             const auto cell = [](bool given, double x) { return given ? shortest(x) : std::string(); };
             out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0) << ",,,"
-                << cell(at_Q, row.smooth.xi) << ',' << cell(at_Q, row.smooth.c0) << ",,,,,,";
+                << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,";
             if (si) {
-                // xi1 is the refused creep; P1 and Carter's xi1 depend on the given load alone.
-                out << ',';
-                if (at_Q) {
-                    const si_point p = to_si(si->scene, si->width, s.Q, s.f, 0.0, 0.0);
-                    out << shortest(p.P1) << ",," << shortest(p.xi1_carter);
-                } else {
-                    out << ",,";
-                }
+                // xi1 is the refused creep; P1 depends on the given load alone, Carter's xi1 on
+                // Carter's load at what was given (Q, or Carter's Q at the same c0).
+                const double smooth_Q = at_Q ? s.Q : carter_at_stick_end(s.c0, s.f).Q;
+                const si_point p = to_si(si->scene, si->width, smooth_Q, s.f, 0.0, 0.0);
+                out << ',' << cell(at_Q, p.P1) << ",," << shortest(p.xi1_carter);
             }
             out << ",refused\n";
             continue;

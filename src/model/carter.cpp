@@ -13,4 +13,9 @@ carter_point carter(double Q, double f) {
     return {2.0 * rho - 1.0, std::copysign(M_2_PI * f * one_minus_rho, Q)};
 }
 
+carter_stick_end carter_at_stick_end(double c0, double f) {
+    const double rho = 0.5 * (1.0 + c0);
+    return {f * (1.0 - rho) * (1.0 + rho), M_2_PI * f * (1.0 - rho)};
+}
+
 }  // namespace roughroll

@@ -170,4 +170,31 @@ double cauchy_u_series(const std::vector<double>& b, double x) {
     return -sum;
 }
 
+void cauchy_u_series(const std::vector<double>& b, const double* x, double* out, std::size_t count) {
+    // As u_series above: blocks of points outside (-1, 1) advance together, each in the order
+    // of the scalar version; a block with a point inside takes the scalar version.
+    constexpr std::size_t block = 8;
+    for (std::size_t first = 0; first < count; first += block) {
+        const std::size_t width = std::min(block, count - first);
+        bool outside = true;
+        for (std::size_t i = 0; i < width; ++i) outside = outside && !(std::fabs(x[first + i]) < 1.0);
+        if (!outside) {
+            for (std::size_t i = 0; i < width; ++i) out[first + i] = cauchy_u_series(b, x[first + i]);
+            continue;
+        }
+        double z[block] = {}, zp[block] = {}, sum[block] = {};
+        for (std::size_t i = 0; i < width; ++i) {
+            const double xi = x[first + i];
+            z[i] = zp[i] = xi - std::copysign(std::sqrt(xi * xi - 1.0), xi);
+        }
+        for (double bj : b) {
+            for (std::size_t i = 0; i < block; ++i) {
+                sum[i] += bj * zp[i];
+                zp[i] *= z[i];
+            }
+        }
+        for (std::size_t i = 0; i < width; ++i) out[first + i] = -sum[i];
+    }
+}
+
 }  // namespace roughroll

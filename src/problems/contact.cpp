@@ -362,18 +362,47 @@ contact::swept_point contact::at_stick_end(double c0) {
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
         coarse = companion_->level_at_stick_end(c0, false);
-        s.Q = richardson(s.Q, coarse->Q);
+        // Q = 0 and f at c0 = 1 and -1 are exact on every level: kept exact (Carter's columns).
+        if (c0 != 1.0 && c0 != -1.0) s.Q = richardson(s.Q, coarse->Q);
         s.xi = richardson(s.xi, coarse->xi);
         if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
             throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
     }
+    // A load outside [0, f] is no point of this curve (docs/robustness.md, "Curves with refused
+    // points"): the sweep's slip zone carries q = +f p (sign +1), so |q| <= f p of (3.3) gives
+    // |Q| <= f int p = f, and Q(c0) rises from 0 at full stick (c0 = 1) to f (c0 = -1); a negative
+    // Q is the mirror case, whose slip zone is at the other edge. Outside [0, f] the inequalities
+    // fail: n does not resolve the layers, or the single stick zone is not the solution there
+    // (docs/formulation.md 7(c), leading slip: Q(c0) > f near c0 = -1). The ends c0 = +-1 are exact.
+    refuse_load_outside(s, std::nullopt);
     if (!build_levels()) return {s, std::nullopt};
     std::array<tangential_solution, 3> at{};
     for (int i = 0; i < 3; ++i)
         at[i] = !levels_[i] ? own
                 : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
                                                             : levels_[i]->level_at_stick_end(c0, false);
-    return {s, estimate_from(s, own, at, true)};
+    const error_estimate e = estimate_from(s, own, at, true);
+    // The same for the load's error interval: Q +- e.Q reaching beyond [0, f] cannot be told from
+    // full stick or gross sliding (and may be no physical point at all).
+    refuse_load_outside(s, e.Q);
+    return {s, e};
+}
+
+void contact::refuse_load_outside(const tangential_solution& s, std::optional<double> error) const {
+    if (s.c0 == 1.0 || s.c0 == -1.0) return;  // Q = 0 and Q = f exactly (full stick, gross sliding)
+    const double d = error.value_or(0.0);
+    if (s.Q - d >= 0.0 && s.Q + d <= f_) return;
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "Q(c0) = " << shortest(s.Q);
+    if (error) msg << " +- " << *error << " (its error estimate) reaches";
+    else msg << " lies";
+    msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0) << " for method '" << to_string(options_.how)
+        << "' at n = " << nodes() << ": "
+        << (error ? "the load is not resolved there; increase n, or the scene is beyond the method's reach"
+                  : "no physical point (|Q| <= f needs (3.3)-(3.4)): n does not resolve the layers, or the single "
+                    "stick zone is not the solution there; increase n, or solve at given loads");
+    throw resolution_error(msg.str());
 }
 
 const tangential_solution& contact::dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite) {
@@ -526,7 +555,8 @@ void check_curve_points(int points) {
 }
 
 // A refused row (contact.hpp, curve_point): the given load Q or stick end c0 (the other NaN),
-// NaN for every computed number, so that no refused row can pass for an answer.
+// NaN for every computed number, so that no refused row can pass for an answer; Carter's
+// closed form at what was given (at the same c0 on a swept curve), never NaN.
 curve_point refused_row(double Q, double c0, double f, const std::string& at, const resolution_error& why) {
     const double nan = std::nan("");
     tangential_solution s{};
@@ -535,7 +565,7 @@ curve_point refused_row(double Q, double c0, double f, const std::string& at, co
     s.c0 = c0;
     s.xi = s.sign = s.rcond = s.load_slope = s.start = nan;
     s.checks = traction_checks{nan, nan, nan, nan, false, false, false};
-    const carter_point smooth = std::isnan(Q) ? carter_point{nan, nan} : carter(Q, f);
+    const carter_point smooth = std::isnan(Q) ? carter_point{c0, carter_at_stick_end(c0, f).xi} : carter(Q, f);
     return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
 }
 }  // namespace

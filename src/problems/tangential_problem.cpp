@@ -1,6 +1,7 @@
 #include "roughroll/problems/tangential_problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -150,9 +151,8 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
     if (c0 == 1.0) {
         s = full_stick();
     } else if (carter_) {
-        // Smooth: Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho).
-        const double rho = 0.5 * (1.0 + c0);
-        s = carter_solution(f_ * (1.0 - rho) * (1.0 + rho), c0, M_2_PI * f_ * (1.0 - rho));
+        const carter_stick_end smooth = carter_at_stick_end(c0, f_);  // Smooth: Carter's closed form
+        s = carter_solution(smooth.Q, c0, smooth.xi);
     } else {
         s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
     }
@@ -277,11 +277,14 @@ public:
         }
     }
 
-    double operator()(double t) const {
-        double sum = cauchy_u_series(psi_b_, t);
-        for (const auto& e : at_ends_)
-            sum += t > 0.0 ? e.at_one * std::exp(-e.rate * (t - 1.0)) : e.at_minus_one * std::exp(-e.rate * (-1.0 - t));
-        return sum;
+    // L1[q0] at the points t[i] into out[i]: the Cauchy transforms summed for all points at once
+    // (cauchy_u_series, bit for bit the scalar one), then the kernel terms in the same order.
+    void operator()(const double* t, double* out, std::size_t count) const {
+        cauchy_u_series(psi_b_, t, out, count);
+        for (std::size_t i = 0; i < count; ++i)
+            for (const auto& e : at_ends_)
+                out[i] += t[i] > 0.0 ? e.at_one * std::exp(-e.rate * (t[i] - 1.0))
+                                     : e.at_minus_one * std::exp(-e.rate * (-1.0 - t[i]));
     }
 
 private:
@@ -299,9 +302,14 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     // of the slip zones, where L1 is the stick-zone operator evaluated outside its interval.
     std::vector<double> v = G(r);
     const double rho = s.rho();
-    const stick_operator_outside lq0(k1_.stretched(rho), s.psi_b);
+    std::vector<double> l(r.size(), 0.0);
+    if (!(s.psi_b.empty() || rho == 0.0)) {
+        std::vector<double> t(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) t[i] = (r[i] - s.start) / rho - 1.0;
+        stick_operator_outside(k1_.stretched(rho), s.psi_b)(t.data(), l.data(), t.size());
+    }
     for (std::size_t i = 0; i < r.size(); ++i) {
-        v[i] = s.sign * s.xi + f_ * v[i] - (s.psi_b.empty() || rho == 0.0 ? 0.0 : lq0((r[i] - s.start) / rho - 1.0));
+        v[i] = s.sign * s.xi + f_ * v[i] - l[i];
         if (s.forcing != 0.0) v[i] += s.forcing * normal_.pressure(r[i]);  // (D2), docs/formulation.md 8(e)
     }
     return v;
@@ -346,12 +354,24 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     }
     c.pressure_margin = *pressure_margin_;
     if (s.c0 > s.start) {
+        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
+        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
+        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
+        std::array<double, check_points> r{}, t{}, phi{}, psi{};
+        const double rho = s.rho();
         for (int i = 0; i < check_points; ++i) {
-            const double r = grid_point(s.start, s.c0, i);
-            const double fp = f_ * normal_.pressure(r);
-            // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() on a stick zone
-            // that starts inside the contact (docs/formulation.md section 7).
-            const double p1 = s.start > -1.0 ? traction(s, r) : fp + q0(s, r);
+            r[i] = grid_point(s.start, s.c0, i);
+            t[i] = (r[i] - s.start) / rho - 1.0;
+        }
+        u_series(normal_.b, r.data(), phi.data(), check_points);
+        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), check_points);
+        for (int i = 0; i < check_points; ++i) {
+            const double fp = f_ * (std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]));
+            const bool inside = !(r[i] <= s.start || r[i] >= s.c0 || s.psi_b.empty());
+            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
+            // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() (sign (f p + q0))
+            // on a stick zone that starts inside the contact (docs/formulation.md section 7).
+            const double p1 = s.start > -1.0 ? s.sign * (fp + q) : fp + q;
             lower(c.stick_margin, (fp - std::fabs(p1)) / f_);
         }
     }

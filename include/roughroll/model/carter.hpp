@@ -13,4 +13,11 @@ struct carter_point {
 
 carter_point carter(double Q, double f);  // requires f > 0, |Q| <= f
 
+// The same curve by its stick end c0 in [-1, 1] (Q >= 0): Q = f (1 - rho^2), xi = (2 f/pi)(1 - rho).
+struct carter_stick_end {
+    double Q;
+    double xi;
+};
+carter_stick_end carter_at_stick_end(double c0, double f);
+
 }  // namespace roughroll

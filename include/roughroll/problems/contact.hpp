@@ -86,6 +86,8 @@ public:
 
     // The point whose stick zone ends at c0 in [-1, 1], Q = Q(c0) of (4.5): no root search,
     // a creep curve swept in c0. With its estimate (same rules as estimate(), same refusal).
+    // Also refused (resolution_error) at an inner c0: Q(c0) outside [0, f], or Q +- its
+    // estimate reaching outside [0, f] (no physical point; docs/robustness.md).
     struct swept_point {
         tangential_solution solution;
         std::optional<error_estimate> estimate;
@@ -115,6 +117,9 @@ public:
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
     tangential_solution level_at_stick_end(double c0, bool checked);
+    // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
+    // Q +- error) outside [0, f] at an inner c0.
+    void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
     // The point at Q of this contact's own level: cached, so that the levels of an estimate
     // and the coarse level of an extrapolation are solved once per Q.
     // `checked`: with the checks (3.3)-(3.4) (a point reported), or without (a level of an
