@@ -63,9 +63,11 @@ TEST(USeries, BatchedCauchyTransformEqualsTheScalarOne) {
     for (std::size_t i = 0; i < x.size(); ++i) EXPECT_EQ(out[i], cauchy_u_series(b, x[i])) << "x = " << x[i];
     const std::vector<double> one{1.0};
     cauchy_u_series(one, x.data(), out.data(), x.size());
-    for (std::size_t i = 0; i < x.size(); ++i)
-        if (std::fabs(x[i]) > 1.0)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (std::fabs(x[i]) > 1.0) {
             EXPECT_NEAR(out[i], -(x[i] - std::copysign(std::sqrt(x[i] * x[i] - 1.0), x[i])), 1e-15) << "x = " << x[i];
+        }
+    }
 }
 
 TEST(USeries, CauchyTransformInsideAndOutside) {
