@@ -1,7 +1,6 @@
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,6 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 
@@ -211,38 +211,27 @@ std::optional<double> dissimilar_zones::stick_end(const structure& z, double sta
 std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
                                                             double c0) {
     // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint m and half-length rho, as
-    // zone_solver's (docs/formulation.md 7(e)), on either structure; the Jacobian by forward
-    // differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
-    const auto residual = [&](double m, double rho) {
-        const tangential_solution t = z.solve(m - rho, m + rho);
-        return std::array<double, 2>{(t.Q - magnitude) / f_, zone_solver::entry_coefficient(t)};
+    // zone_solver's (docs/formulation.md 7(e)), on either structure (damped_newton); the Jacobian by
+    // backward differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
+    std::optional<tangential_solution> last;  // the solve at the last x, which is the root's
+    newton_problem problem;
+    problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        last = z.solve(x[0] - x[1], x[0] + x[1]);
+        return std::vector<double>{(last->Q - magnitude) / f_, zone_solver::entry_coefficient(*last)};
     };
-    double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
-    if (!(rho > 0.0 && m - rho > -1.0 && m + rho <= 1.0)) return std::nullopt;
-    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
-        const auto F = residual(m, rho);
-        const double h = 1e-7 * rho;
-        const auto Fm = residual(m - h, rho);
-        const auto Fr = residual(m, rho - h);
-        const double a = (F[0] - Fm[0]) / h, bq = (F[0] - Fr[0]) / h;
-        const double c = (F[1] - Fm[1]) / h, d = (F[1] - Fr[1]) / h;
-        const double det = a * d - bq * c;
-        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
-        const double dm = -(d * F[0] - bq * F[1]) / det, dr = -(a * F[1] - c * F[0]) / det;
-        double step = 1.0;
-        while (!(rho + step * dr > 0.0 && m + step * (dm - dr) - rho > -1.0 && m + step * (dm + dr) + rho <= 1.0)) {
-            step *= 0.5;
-            if (step < 1e-6) return std::nullopt;
-        }
-        m += step * dm;
-        rho += step * dr;
-        if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
-            tangential_solution s = z.solve(m - rho, m + rho);
-            s.iterations = iteration;
-            return s;
-        }
-    }
-    return std::nullopt;
+    problem.inside = [](const std::vector<double>& x) {
+        return x[1] > 0.0 && x[0] - x[1] > -1.0 && x[0] + x[1] <= 1.0;
+    };
+    problem.difference_step = [](const std::vector<double>& x, std::size_t) { return -1e-7 * x[1]; };
+    problem.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
+        return std::fabs(dx[0]) + std::fabs(dx[1]);
+    };
+    const auto root =
+        damped_newton(problem, {0.5 * (start + c0), 0.5 * (c0 - start)}, {newton_iterations, newton_tolerance, 1e-6});
+    if (!root) return std::nullopt;
+    tangential_solution s = *last;
+    s.iterations = root->iterations;
+    return s;
 }
 
 tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess) {
