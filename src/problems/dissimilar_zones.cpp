@@ -13,6 +13,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
+#include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 
@@ -327,35 +328,16 @@ traction_checks dissimilar_zones::check(const tangential_solution& s) {
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {
     // |Q| = f: p1 = f p everywhere, v = xi' + b p + f G >= 0 vanishing at the least point r*,
-    // xi' = -min (b p + f G) (docs/formulation.md 8(g)); samples, then golden section on the bracket.
-    std::vector<double> r(least_samples);
-    for (int i = 0; i < least_samples; ++i) r[i] = 1.0 - 2.0 * i / (least_samples - 1);  // descending
-    const std::vector<double> g = solver_.G(r);
+    // xi' = -min (b p + f G) (docs/formulation.md 8(g)): samples, golden section, both edges.
     const normal_solution& normal = solver_.normal();
-    const auto value_at = [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); };
-    std::vector<double> w(least_samples);
-    for (int i = 0; i < least_samples; ++i) {
-        w[i] = b * normal.pressure(r[i]) + f_ * g[i];
-        if (!std::isfinite(w[i]))
-            throw numerical_error("dissimilar zones: G of (3.25) is not finite (roughness parameters too large?)");
-    }
-    const auto least = static_cast<int>(std::min_element(w.begin(), w.end()) - w.begin());
-    double lo = r[std::min(least + 1, least_samples - 1)], hi = r[std::max(least - 1, 0)];
-    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
-    double v1 = value_at(x1), v2 = value_at(x2);
-    while (hi - lo > 1e-12) {
-        if (v1 <= v2) {
-            hi = x2, x2 = x1, v2 = v1;
-            x1 = hi - golden * (hi - lo), v1 = value_at(x1);
-        } else {
-            lo = x1, x1 = x2, v1 = v2;
-            x2 = lo + golden * (hi - lo), v2 = value_at(x2);
-        }
-    }
-    double point = 0.5 * (lo + hi), value = value_at(point);
-    for (double edge : {-1.0, 1.0})
-        if (value_at(edge) <= value) point = edge, value = value_at(edge);
+    const least_value least = least_on_contact(
+        [&](const std::vector<double>& r) {
+            std::vector<double> w = solver_.G(r);
+            for (std::size_t i = 0; i < r.size(); ++i) w[i] = b * normal.pressure(r[i]) + f_ * w[i];
+            return w;
+        },
+        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true, "dissimilar zones");
+    const double point = least.r, value = least.value;
     tangential_solution s = gross_sliding_solution(f_, 0.0);
     s.xi = -value;
     s.c0 = point;
