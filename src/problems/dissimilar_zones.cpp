@@ -165,6 +165,19 @@ double dissimilar_zones::W(double r, double start, double c0) {
     return w;
 }
 
+double dissimilar_zones::load_under_H(double start, double c0) {
+    // int p H = int_s^c p Theta (qags) + int_c^1 p (closed form, load_between).
+    gsl_function fn;
+    const auto pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
+    fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
+    fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
+    double on_stick = 0.0, error = 0.0;
+    const int status = gsl_integration_qags(&fn, start, c0, quadrature_absolute, quadrature_relative, quadrature_intervals,
+                                            workspace_.get(), &on_stick, &error);
+    if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: int p Theta");
+    return on_stick + load_between(solver_.normal(), c0, 1.0);
+}
+
 tangential_solution dissimilar_zones::blended(double start, double c0, double b) {
     // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f G - 2 f W on the
     // stick zone, i.e. the right side of solve_on_zone (xi' + f G + b p) plus -2 f (G + W).
@@ -177,15 +190,7 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + W(r[m], start, c0));
     tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
     // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
-    gsl_function fn;
-    const auto pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
-    fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
-    fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
-    double on_stick = 0.0, error = 0.0;
-    const int status = gsl_integration_qags(&fn, start, c0, quadrature_absolute, quadrature_relative, quadrature_intervals,
-                                            workspace_.get(), &on_stick, &error);
-    if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: int p Theta");
-    s.Q += 2.0 * f_ * (on_stick + load_between(solver_.normal(), c0, 1.0)) - 2.0 * f_;
+    s.Q += 2.0 * f_ * load_under_H(start, c0) - 2.0 * f_;
     s.opposite = true;
     return s;
 }
