@@ -3,7 +3,10 @@
 // the independent grid route (no structure assumed), free rolling and Bentall and Johnson's
 // driven case Q/f = +0.75 at f = 0.05, aluminium on steel.
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+
+#include <gsl/gsl_math.h>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -21,35 +24,102 @@ const double beta_al_st = [] {
     return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
 }();
 
-// The ends of the two stick zones of a grid solution with five runs (slip-, stick, slip+, stick, slip-).
-std::vector<double> grid_ends(const validation::grid_solution& g) {
-    const auto runs = g.runs();
-    if (runs.size() != 5) return {};
-    return {runs[1].from, runs[1].to, runs[3].from, runs[3].to};
+// The product's five zones at (f, Q), n = 32, found without a guess (dissimilar_zones::five_zones).
+five_zone_solution product(double f, double Q, int n = 32) {
+    const normal_solution hertz = hertz_solution(n, method::product);
+    tangential_solver t(hertz, kernel{}, kernel{}, f, false);
+    dissimilar_zones d(t, kernel{}, beta_al_st);
+    const auto s = d.five_zones(Q);
+    if (!s) throw numerical_error("five zones: no start converged");
+    return *s;
+}
+
+// The product against the grid route: the grid's five runs, its creep within the route's error (the
+// order-1 Richardson value of N = 100, 200 within their spread), the ends within two cells of N = 200.
+double against_grid(double f, double Q) {
+    const five_zone_solution s = product(f, Q);
+    std::printf("f = %.3f, Q/f = %.2f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f (Newton %d, sweeps %d); margins stick "
+                "%.2e, slip %.2e\n", f, Q / f, s.s1, s.c1, s.s2, s.c2, s.xi, s.iterations, s.sweeps,
+                s.checks.stick_margin, s.checks.slip_margin);
+    EXPECT_TRUE(s.checks.hold()) << s.checks.stick_margin << " " << s.checks.slip_margin;
+    EXPECT_NEAR(s.Q, Q, 1e-14);
+    const normal_solution hertz = hertz_solution(32, method::product);
+    std::vector<double> xi;
+    std::vector<validation::grid_solution::run> runs;
+    for (int N : {100, 200}) {
+        const auto g = validation::solve_on_grid(hertz, kernel{}, f, Q, N, 0, beta_al_st);
+        xi.push_back(g.xi);
+        runs = g.runs();
+        std::printf("  grid N = %d: xi %.9f, %zu runs\n", N, g.xi, runs.size());
+    }
+    const double richardson = 2.0 * xi[1] - xi[0], spread = std::fabs(xi[1] - xi[0]);
+    std::printf("  product - grid(200) %.2e, product - Richardson %.2e, spread %.2e\n", s.xi - xi[1], s.xi - richardson, spread);
+    EXPECT_LT(std::fabs(s.xi - richardson), spread);
+    EXPECT_EQ(runs.size(), 5u);
+    if (runs.size() != 5u) return s.xi;
+    const std::vector<int> states{-1, 0, 1, 0, -1};
+    const std::vector<double> ends{s.s1, s.c1, s.s2, s.c2};
+    for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(runs[k].state, states[k]);
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(ends[k], runs[k].to, 0.02) << "end " << k;
+    return s.xi;
 }
 }  // namespace
 
-TEST(DissimilarFiveZones, Explore) {
+// Free rolling (Q = 0), the structure 8(g) saw on the grid, at f = 0.05 and 0.1; and 8(f): its creep
+// lies between the complete-slip limit -2/pi cos(phi) beta_D and the no-slip limit Q/pi - 4 beta_D/pi^2,
+// and moves towards no slip as f grows.
+TEST(DissimilarFiveZones, FreeRollingAgainstTheGridRoute) {
+    const double xi05 = against_grid(0.05, 0.0), xi10 = against_grid(0.1, 0.0);
+    const double no_slip = -4.0 * beta_al_st / (M_PI * M_PI), complete = -0.5823613 * beta_al_st;
+    std::printf("complete slip %.7f < xi(0.05) %.7f < xi(0.1) %.7f < no slip %.7f\n", complete, xi05, xi10, no_slip);
+    EXPECT_LT(complete, xi05);
+    EXPECT_LT(xi05, xi10);
+    EXPECT_LT(xi10, no_slip);
+}
+
+// Bentall and Johnson's driven case Q/f = +0.75, f = 0.05: the three zones of the grid (its cells
+// cannot hold the trailing layer) plus a trailing stick zone and slip- layer within 1e-3 of r = 1,
+// where the three zones had v < 0 (DissimilarProduct.DrivenAtThreeQuartersHasATrailingLayer).
+TEST(DissimilarFiveZones, DrivenAtThreeQuarters) {
+    const double f = 0.05, Q = 0.75 * f;
+    const five_zone_solution s = product(f, Q);
+    std::printf("Q/f = 0.75: stick [%.9f, %.9f], [%.9f, %.9f], xi %.10f; margins %.2e, %.2e\n", s.s1, s.c1, s.s2, s.c2,
+                s.xi, s.checks.stick_margin, s.checks.slip_margin);
+    EXPECT_TRUE(s.checks.hold());
+    EXPECT_GT(s.s2, 0.999);
+    const normal_solution hertz = hertz_solution(32, method::product);
+    const auto g100 = validation::solve_on_grid(hertz, kernel{}, f, Q, 100, 0, beta_al_st);
+    const auto g200 = validation::solve_on_grid(hertz, kernel{}, f, Q, 200, 0, beta_al_st);
+    const auto runs = g200.runs();
+    ASSERT_EQ(runs.size(), 3u);
+    EXPECT_NEAR(s.s1, runs[0].to, 0.02);
+    EXPECT_NEAR(s.c1, runs[1].to, 0.02);
+    const double richardson = 2.0 * g200.xi - g100.xi, spread = std::fabs(g200.xi - g100.xi);
+    std::printf("  grid %.9f, %.9f; product - Richardson %.2e, spread %.2e\n", g100.xi, g200.xi, s.xi - richardson, spread);
+    EXPECT_LT(std::fabs(s.xi - richardson), spread);
+}
+
+// Convergence in n and the honest estimate: the difference of n = 16 and 32 bounds the distance of
+// n = 32 from n = 64, for the creep and the four ends (free rolling, f = 0.05).
+TEST(DissimilarFiveZones, ConvergesInN) {
     const double f = 0.05;
-    for (double Q_over_f : {0.0, 0.25, 0.5, 0.75}) {
-        const normal_solution hertz = hertz_solution(32, method::product);
+    const five_zone_solution b = product(f, 0.0, 32);
+    // The other levels by Newton from n = 32's ends, as the levels of an estimate are found.
+    const auto level = [&](int n) {
+        const normal_solution hertz = hertz_solution(n, method::product);
         tangential_solver t(hertz, kernel{}, kernel{}, f, false);
         dissimilar_zones d(t, kernel{}, beta_al_st);
-        const auto g = validation::solve_on_grid(hertz, kernel{}, f, Q_over_f * f, 200, 0, beta_al_st);
-        std::vector<double> ends = grid_ends(g);
-        std::printf("Q/f %.2f grid xi %.8f runs %zu\n", Q_over_f, g.xi, g.runs().size());
-        for (const auto& r : g.runs()) std::printf("   [%.3f, %.3f] %d\n", r.from, r.to, r.state);
-        if (ends.empty()) {
-            const auto runs = g.runs();
-            ends = {runs[1].from, runs[1].to, 0.99, 0.995};
-        }
-        const auto s = d.five_zones(Q_over_f * f, ends);
-        if (!s) {
-            std::printf("  no convergence\n");
-            continue;
-        }
-        std::printf("  product: [%.9f, %.9f] [%.9f, %.9f] xi %.10f Q %.3e it %d sweeps %d stick %.3e slip %.3e\n", s->s1,
-                    s->c1, s->s2, s->c2, s->xi, s->Q - Q_over_f * f, s->iterations, s->sweeps, s->checks.stick_margin,
-                    s->checks.slip_margin);
+        const auto s = d.five_zones(0.0, {b.s1, b.c1, b.s2, b.c2});
+        if (!s) throw numerical_error("five zones: Newton from the n = 32 ends did not converge");
+        EXPECT_TRUE(s->checks.hold()) << n;
+        return *s;
+    };
+    const five_zone_solution a = level(16), c = level(64);
+    const auto row = [](const five_zone_solution& s) { return std::vector<double>{s.xi, s.s1, s.c1, s.s2, s.c2}; };
+    const auto ra = row(a), rb = row(b), rc = row(c);
+    for (std::size_t k = 0; k < ra.size(); ++k) {
+        std::printf("  quantity %zu: n = 16/32 %.2e, 32/64 %.2e\n", k, std::fabs(rb[k] - ra[k]), std::fabs(rc[k] - rb[k]));
+        EXPECT_LE(std::fabs(rc[k] - rb[k]), std::max(std::fabs(rb[k] - ra[k]), 1e-11)) << k;
     }
 }
+

@@ -81,7 +81,11 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
     std::optional<five_zone_solution> last;
     newton_problem problem;
     problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
-        last = five_zone_system(x[0] - x[1], x[0] + x[1], x[2] - x[3], x[2] + x[3]);
+        try {
+            last = five_zone_system(x[0] - x[1], x[0] + x[1], x[2] - x[3], x[2] + x[3]);
+        } catch (const numerical_error&) {
+            return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
+        }
         return std::vector<double>{(last->Q - Q) / f_, zone_solver::entry_coefficient(last->zone1),
                                    zone_solver::entry_coefficient(last->zone2), (last->zone1.xi - last->zone2.xi) / f_};
     };
@@ -148,6 +152,50 @@ traction_checks dissimilar_zones::check(const five_zone_solution& s) {
     c.stick_holds = c.stick_margin >= 0.0;
     c.slip_holds = c.slip_margin > 0.0;
     return c;
+}
+
+}  // namespace roughroll
+
+namespace roughroll {
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
+    if (!(beta_d_ > 0.0)) throw input_error("five zones: built for beta_d > 0 (exchange the rollers, 8(h))");
+    if (!(Q >= 0.0 && Q < f_)) throw input_error("five zones without a guess: 0 <= Q < f");
+    // The three zones slip-, stick [s, c], slip+ solve their equations at these loads but leave
+    // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
+    // where their v turns negative, halfway to the edge.
+    const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
+        tangential_solution three;
+        try {
+            three = three_zones(opposite_directions(beta_d_), load, std::nullopt);
+        } catch (const numerical_error&) {
+            return std::nullopt;
+        }
+        constexpr int samples = 400;
+        for (int i = 1; i <= samples; ++i) {
+            const double r = three.c0 + (1.0 - three.c0) * i / samples;
+            if (!(slip_velocity(three, r) < 0.0)) continue;
+            const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
+            return five_zones(load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
+        }
+        return std::nullopt;  // v > 0 up to the edge: the three zones are the answer
+    };
+    if (auto s = from_three_zones(Q)) return s;
+    // Free rolling (no three zones carry Q = 0) and loads whose three zones give no start: from the
+    // lowest load Q/f = k/8 above Q whose three zones give a start, down to Q in steps of f/16,
+    // Newton from the previous ends each time.
+    for (int k = 1; k < 8; ++k) {
+        const double from = k * f_ / 8.0;
+        if (from <= Q) continue;
+        auto s = from_three_zones(from);
+        if (!s) continue;
+        for (double load = from - f_ / 16.0; s; load -= f_ / 16.0) {
+            const double target = std::max(load, Q);
+            s = five_zones(target, {s->s1, s->c1, s->s2, s->c2});
+            if (target == Q) return s;
+        }
+    }
+    return std::nullopt;
 }
 
 }  // namespace roughroll

@@ -114,6 +114,10 @@ public:
     // Five zones at load Q, |Q| < f, beta_D > 0, by Newton in the four ends from `ends` = (s1, c1,
     // s2, c2) (damped_newton); empty when Newton does not converge. The checks are made, not acted on.
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends);
+    // Five zones at load Q, 0 <= Q < f, without a guess: Newton from the three zones of a driven
+    // roller 1 at the same Q (the leading slip against Q, which fail (3.4) near the trailing edge)
+    // and a trailing stick zone where their v turns negative. Empty when no start converges.
+    std::optional<five_zone_solution> five_zones(double Q);
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
     five_zone_solution five_zone_system(double s1, double c1, double s2, double c2);
     double traction(const five_zone_solution& s, double r);      // p1(r)
