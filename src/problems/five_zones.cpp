@@ -165,31 +165,32 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
     // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
     // where their v turns negative, halfway to the edge.
     const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
-        tangential_solution three;
         try {
-            three = three_zones(opposite_directions(beta_d_), load, std::nullopt);
+            const tangential_solution three = three_zones(opposite_directions(beta_d_), load, std::nullopt);
+            constexpr int samples = 400;
+            for (int i = 1; i <= samples; ++i) {
+                const double r = three.c0 + (1.0 - three.c0) * i / samples;
+                if (!(slip_velocity(three, r) < 0.0)) continue;
+                const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
+                return five_zones(load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
+            }
         } catch (const numerical_error&) {
-            return std::nullopt;
-        }
-        constexpr int samples = 400;
-        for (int i = 1; i <= samples; ++i) {
-            const double r = three.c0 + (1.0 - three.c0) * i / samples;
-            if (!(slip_velocity(three, r) < 0.0)) continue;
-            const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
-            return five_zones(load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
+            // no three zones carry this load, or W fails on them: no start from here
         }
         return std::nullopt;  // v > 0 up to the edge: the three zones are the answer
     };
-    if (auto s = from_three_zones(Q)) return s;
-    // Free rolling (no three zones carry Q = 0) and loads whose three zones give no start: from the
-    // lowest load Q/f = k/8 above Q whose three zones give a start, down to Q in steps of f/16,
-    // Newton from the previous ends each time.
-    for (int k = 1; k < 8; ++k) {
+    if (Q > 0.0)
+        if (auto s = from_three_zones(Q)) return s;
+    // Free rolling (no three zones carry Q = 0) and loads whose three zones give no start: from a
+    // load Q/f = k/8 above Q whose three zones give one (each scan costs about as much as the whole
+    // continuation: Q/f = 1/4 first, where they did for f = 0.05 and 0.1), down to Q in steps of
+    // f/8, Newton from the previous ends each time.
+    for (const int k : {2, 4, 1, 3, 5, 6, 7}) {
         const double from = k * f_ / 8.0;
         if (from <= Q) continue;
         auto s = from_three_zones(from);
         if (!s) continue;
-        for (double load = from - f_ / 16.0; s; load -= f_ / 16.0) {
+        for (double load = from - f_ / 8.0; s; load -= f_ / 8.0) {
             const double target = std::max(load, Q);
             s = five_zones(target, {s->s1, s->c1, s->s2, s->c2});
             if (target == Q) return s;
