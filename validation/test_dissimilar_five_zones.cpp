@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "test_zones_low_order.hpp"
 
@@ -25,10 +26,9 @@ const double beta_al_st = [] {
 }();
 
 // The product's five zones at (f, Q), n = 32, found without a guess (dissimilar_zones::five_zones).
-five_zone_solution product(double f, double Q, int n = 32) {
-    const normal_solution hertz = hertz_solution(n, method::product);
-    tangential_solver t(hertz, kernel{}, kernel{}, f, false);
-    dissimilar_zones d(t, kernel{}, beta_al_st);
+five_zone_solution product(double f, double Q, int n = 32, const roughness& r = roughness{}) {
+    contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    dissimilar_zones d(c.tangential(), kernel::tangential(r), beta_al_st);
     const auto s = d.five_zones(Q);
     if (!s) throw numerical_error("five zones: no start converged");
     return *s;
@@ -36,18 +36,19 @@ five_zone_solution product(double f, double Q, int n = 32) {
 
 // The product against the grid route: the grid's five runs, its creep within the route's error (the
 // order-1 Richardson value of N = 100, 200 within their spread), the ends within two cells of N = 200.
-double against_grid(double f, double Q) {
-    const five_zone_solution s = product(f, Q);
+double against_grid(double f, double Q, const roughness& r = roughness{}) {
+    const five_zone_solution s = product(f, Q, 32, r);
     std::printf("f = %.3f, Q/f = %.2f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f (Newton %d, sweeps %d); margins stick "
                 "%.2e, slip %.2e\n", f, Q / f, s.s1, s.c1, s.s2, s.c2, s.xi, s.iterations, s.sweeps,
                 s.checks.stick_margin, s.checks.slip_margin);
     EXPECT_TRUE(s.checks.hold()) << s.checks.stick_margin << " " << s.checks.slip_margin;
     EXPECT_NEAR(s.Q, Q, 1e-14);
-    const normal_solution hertz = hertz_solution(32, method::product);
+    contact c(r, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    const normal_solution& hertz = c.normal();
     std::vector<double> xi;
     std::vector<validation::grid_solution::run> runs;
     for (int N : {100, 200}) {
-        const auto g = validation::solve_on_grid(hertz, kernel{}, f, Q, N, 0, beta_al_st);
+        const auto g = validation::solve_on_grid(hertz, kernel::tangential(r), f, Q, N, 0, beta_al_st);
         xi.push_back(g.xi);
         runs = g.runs();
         std::printf("  grid N = %d: xi %.9f, %zu runs\n", N, g.xi, runs.size());
@@ -77,6 +78,12 @@ TEST(DissimilarFiveZones, FreeRollingAgainstTheGridRoute) {
     EXPECT_LT(xi10, no_slip);
 }
 
+// The same with a rough layer on roller 1 (tangential (T, A) = (1, 0.5), normal (0.5, 2), as
+// DissimilarProduct's): the pressure is the rough normal solution, G and W carry K1*.
+TEST(DissimilarFiveZones, RoughFreeRollingAgainstTheGridRoute) {
+    against_grid(0.05, 0.0, roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}});
+}
+
 // Bentall and Johnson's driven case Q/f = +0.75, f = 0.05: the three zones of the grid (its cells
 // cannot hold the trailing layer) plus a trailing stick zone and slip- layer within 1e-3 of r = 1,
 // where the three zones had v < 0 (DissimilarProduct.DrivenAtThreeQuartersHasATrailingLayer).
@@ -103,23 +110,25 @@ TEST(DissimilarFiveZones, DrivenAtThreeQuarters) {
 // n = 32 from n = 64, for the creep and the four ends (free rolling, f = 0.05).
 TEST(DissimilarFiveZones, ConvergesInN) {
     const double f = 0.05;
-    const five_zone_solution b = product(f, 0.0, 32);
-    // The other levels by Newton from n = 32's ends, as the levels of an estimate are found.
-    const auto level = [&](int n) {
-        const normal_solution hertz = hertz_solution(n, method::product);
-        tangential_solver t(hertz, kernel{}, kernel{}, f, false);
-        dissimilar_zones d(t, kernel{}, beta_al_st);
-        const auto s = d.five_zones(0.0, {b.s1, b.c1, b.s2, b.c2});
-        if (!s) throw numerical_error("five zones: Newton from the n = 32 ends did not converge");
-        EXPECT_TRUE(s->checks.hold()) << n;
-        return *s;
-    };
-    const five_zone_solution a = level(16), c = level(64);
-    const auto row = [](const five_zone_solution& s) { return std::vector<double>{s.xi, s.s1, s.c1, s.s2, s.c2}; };
-    const auto ra = row(a), rb = row(b), rc = row(c);
-    for (std::size_t k = 0; k < ra.size(); ++k) {
-        std::printf("  quantity %zu: n = 16/32 %.2e, 32/64 %.2e\n", k, std::fabs(rb[k] - ra[k]), std::fabs(rc[k] - rb[k]));
-        EXPECT_LE(std::fabs(rc[k] - rb[k]), std::max(std::fabs(rb[k] - ra[k]), 1e-11)) << k;
+    for (const roughness& r : {roughness{}, roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}}}) {
+        const five_zone_solution b = product(f, 0.0, 32, r);
+        // The other levels by Newton from n = 32's ends, as the levels of an estimate are found.
+        const auto level = [&](int n) {
+            contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+            dissimilar_zones d(c.tangential(), kernel::tangential(r), beta_al_st);
+            const auto s = d.five_zones(0.0, {b.s1, b.c1, b.s2, b.c2});
+            if (!s) throw numerical_error("five zones: Newton from the n = 32 ends did not converge");
+            EXPECT_TRUE(s->checks.hold()) << n;
+            return *s;
+        };
+        const five_zone_solution a = level(16), c = level(64);
+        const auto row = [](const five_zone_solution& s) { return std::vector<double>{s.xi, s.s1, s.c1, s.s2, s.c2}; };
+        const auto ra = row(a), rb = row(b), rc = row(c);
+        const char* names[] = {"xi", "s1", "c1", "s2", "c2"};
+        for (std::size_t k = 0; k < ra.size(); ++k) {
+            std::printf("  %s %s: n = 16/32 %.2e, 32/64 %.2e\n", r.smooth() ? "smooth" : "rough", names[k],
+                        std::fabs(rb[k] - ra[k]), std::fabs(rc[k] - rb[k]));
+            EXPECT_LE(std::fabs(rc[k] - rb[k]), std::max(std::fabs(rb[k] - ra[k]), zone_end_resolution)) << k;
+        }
     }
 }
-
