@@ -132,3 +132,27 @@ TEST(DissimilarFiveZones, ConvergesInN) {
         }
     }
 }
+
+// 8(h): exchanging the rollers, (beta_D, Q) -> (-beta_D, -Q), gives the same ends and the opposite
+// creep, traction and slip velocity, to the bit (the same equations in the frame beta_D > 0).
+TEST(DissimilarFiveZones, RollersExchanged) {
+    const double f = 0.05;
+    for (double Q : {0.0, 0.75 * f}) {
+        contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+        dissimilar_zones d(c.tangential(), kernel{}, beta_al_st), e(c.tangential(), kernel{}, -beta_al_st);
+        const auto a = d.five_zones(Q), b = e.five_zones(-Q);
+        ASSERT_TRUE(a && b);
+        EXPECT_EQ(a->s1, b->s1);
+        EXPECT_EQ(a->c1, b->c1);
+        EXPECT_EQ(a->s2, b->s2);
+        EXPECT_EQ(a->c2, b->c2);
+        EXPECT_EQ(a->xi, -b->xi);
+        EXPECT_EQ(a->Q, -b->Q);
+        EXPECT_TRUE(b->checks.hold());
+        for (double r : {-0.95, -0.5, 0.0, 0.7, 0.93, 0.99, 0.9999}) {
+            EXPECT_EQ(d.traction(*a, r), -e.traction(*b, r)) << r;
+            EXPECT_EQ(d.slip_velocity(*a, r), -e.slip_velocity(*b, r)) << r;
+        }
+        EXPECT_THROW(e.five_zones(0.5 * f), input_error);  // beta_D < 0: driven is Q < 0
+    }
+}

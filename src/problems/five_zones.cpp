@@ -22,10 +22,13 @@ constexpr int newton_iterations = 40;
 }  // namespace
 
 double dissimilar_zones::S(const five_zone_solution& s, double r) const {
-    return -1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2);
+    return s.sign * (-1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2));
 }
 
 five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2) {
+    // Solved in the frame beta_D > 0; for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v
+    // with the opposite sign and the same ends.
+    const double beta = std::fabs(beta_d_);
     const gauss_chebyshev& rule = solver_.normal().rule;
     const std::size_t m_count = rule.collocation.size();
     std::vector<double> r1(m_count), r2(m_count);
@@ -46,37 +49,37 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
         const std::vector<double> v = solver_.slip_velocity(t, r);
         const std::vector<double> g = solver_.G(r);
         std::vector<double> out(r.size());
-        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + beta_d_ * pressure(r[m]) + f_ * g[m]);
+        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + beta * pressure(r[m]) + f_ * g[m]);
         return out;
     };
     five_zone_solution s{};
     s.f = f_;
     s.s1 = s1, s.c1 = c1, s.s2 = s2, s.c2 = c2;
-    s.zone1 = solver_.solve_on_zone(s1, c1, beta_d_, &base1);
-    s.zone2 = solver_.solve_on_zone(s2, c2, beta_d_, &base2);
+    s.zone1 = solver_.solve_on_zone(s1, c1, beta, &base1);
+    s.zone2 = solver_.solve_on_zone(s2, c2, beta, &base2);
     double previous = s.zone1.xi + s.zone2.xi;
     for (s.sweeps = 1;; ++s.sweeps) {
         std::vector<double> e1 = minus_operator(s.zone2, r1);
         for (std::size_t m = 0; m < m_count; ++m) e1[m] += base1[m];
-        s.zone1 = solver_.solve_on_zone(s1, c1, beta_d_, &e1);
+        s.zone1 = solver_.solve_on_zone(s1, c1, beta, &e1);
         std::vector<double> e2 = minus_operator(s.zone1, r2);
         for (std::size_t m = 0; m < m_count; ++m) e2[m] += base2[m];
-        s.zone2 = solver_.solve_on_zone(s2, c2, beta_d_, &e2);
+        s.zone2 = solver_.solve_on_zone(s2, c2, beta, &e2);
         const double now = s.zone1.xi + s.zone2.xi;
         if (std::fabs(now - previous) <= sweep_tolerance * f_) break;
         if (s.sweeps == max_sweeps || !std::isfinite(now))
             throw numerical_error("five zones: the coupling of the two stick zones does not converge");
         previous = now;
     }
-    s.xi = s.zone1.xi;
+    s.sign = beta_d_ > 0.0 ? 1.0 : -1.0;
+    s.xi = s.sign * s.zone1.xi;
     // Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2; solve_on_zone's Q is f + rho int q.
-    s.Q = f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_);
+    s.Q = s.sign * (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_));
     s.zone1.opposite = s.zone2.opposite = true;
     return s;
 }
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends) {
-    if (!(beta_d_ > 0.0)) throw input_error("five zones: built for beta_d > 0 (exchange the rollers, 8(h))");
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     std::optional<five_zone_solution> last;
     newton_problem problem;
@@ -112,7 +115,7 @@ double dissimilar_zones::traction(const five_zone_solution& s, double r) {
     for (const tangential_solution* t : {&s.zone1, &s.zone2})
         if (r > t->start && r < t->c0 && !t->psi_b.empty()) {
             const double u = (r - t->start) / t->rho() - 1.0;
-            p1 += u_series(t->psi_b, u) * std::sqrt(std::max(0.0, 1.0 - u * u));
+            p1 += s.sign * u_series(t->psi_b, u) * std::sqrt(std::max(0.0, 1.0 - u * u));
         }
     return p1;
 }
@@ -121,10 +124,10 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
     // v = xi + b p - f G - 2 f W1 + 2 f W2 - L1[q1] - L1[q2], with -L1[q_k] = v_k - (xi_k + b p + f G).
     if ((r >= s.s1 && r <= s.c1) || (r >= s.s2 && r <= s.c2)) return 0.0;
     const double x = std::clamp(r, -1.0, 1.0);
-    const double g = solver_.G(x), bp = beta_d_ * pressure(x);
-    double v = s.xi + bp - f_ * g - 2.0 * f_ * (W(x, s.s1, s.c1) - W(x, s.s2, s.c2));
+    const double g = solver_.G(x), bp = std::fabs(beta_d_) * pressure(x);  // in the frame beta_D > 0
+    double v = s.sign * s.xi + bp - f_ * g - 2.0 * f_ * (W(x, s.s1, s.c1) - W(x, s.s2, s.c2));
     for (const tangential_solution* t : {&s.zone1, &s.zone2}) v += solver_.slip_velocity(*t, x) - (t->xi + bp + f_ * g);
-    return v;
+    return s.sign * v;
 }
 
 traction_checks dissimilar_zones::check(const five_zone_solution& s) {
@@ -159,20 +162,23 @@ traction_checks dissimilar_zones::check(const five_zone_solution& s) {
 namespace roughroll {
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
-    if (!(beta_d_ > 0.0)) throw input_error("five zones: built for beta_d > 0 (exchange the rollers, 8(h))");
-    if (!(Q >= 0.0 && Q < f_)) throw input_error("five zones without a guess: 0 <= Q < f");
+    // In the frame beta_D > 0 (8(h)): the load sign * Q, 0 <= sign * Q < f.
+    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
+    if (!(sign * Q >= 0.0 && sign * Q < f_))
+        throw input_error("five zones without a guess: 0 <= Q < f for beta_d > 0 (-f < Q <= 0 for beta_d < 0)");
+    Q *= sign;
     // The three zones slip-, stick [s, c], slip+ solve their equations at these loads but leave
     // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
     // where their v turns negative, halfway to the edge.
     const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
         try {
-            const tangential_solution three = three_zones(opposite_directions(beta_d_), load, std::nullopt);
+            const tangential_solution three = three_zones(opposite_directions(std::fabs(beta_d_)), load, std::nullopt);
             constexpr int samples = 400;
             for (int i = 1; i <= samples; ++i) {
                 const double r = three.c0 + (1.0 - three.c0) * i / samples;
                 if (!(slip_velocity(three, r) < 0.0)) continue;
                 const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
-                return five_zones(load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
+                return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
             }
         } catch (const numerical_error&) {
             // no three zones carry this load, or W fails on them: no start from here
@@ -192,7 +198,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
         if (!s) continue;
         for (double load = from - f_ / 8.0; s; load -= f_ / 8.0) {
             const double target = std::max(load, Q);
-            s = five_zones(target, {s->s1, s->c1, s->s2, s->c2});
+            s = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2});
             if (target == Q) return s;
         }
     }
