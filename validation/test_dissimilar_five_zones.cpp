@@ -156,3 +156,22 @@ TEST(DissimilarFiveZones, RollersExchanged) {
         EXPECT_THROW(e.five_zones(0.5 * f), input_error);  // beta_D < 0: driven is Q < 0
     }
 }
+
+// Robustness: scenes a rounding apart find the same answer (a 1-ulp change of beta_D once made
+// Newton's last continuation step fail at n = 64, and sampling v at 1 - 1e-16 made W's qagp
+// report round-off; both fixed: steps halved where Newton fails, r kept off the breakpoints).
+TEST(DissimilarFiveZones, NearbyScenesAllSolve) {
+    const double f = 0.05;
+    for (int n : {32, 64}) {
+        const double reference = product(f, 0.0, n).xi;
+        for (double beta : {beta_al_st * (1.0 - 1e-15), 0.1438337435056057, beta_al_st * (1.0 + 1e-9)}) {
+            contact c(roughness{}, f, solver_options{n, method::product}, dissimilar{beta, coupling_level::johnson});
+            dissimilar_zones d(c.tangential(), kernel{}, beta);
+            const auto s = d.five_zones(0.0);
+            ASSERT_TRUE(s) << beta << " " << n;
+            EXPECT_TRUE(s->checks.hold());
+            // xi is about -0.47 beta_D here: a relative change 1e-9 of beta_D moves it by about 1e-10.
+            EXPECT_NEAR(s->xi, reference, 1e-9) << beta << " " << n;
+        }
+    }
+}

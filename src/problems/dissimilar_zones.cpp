@@ -141,7 +141,10 @@ double dissimilar_zones::W(double r, double start, double c0) {
     const double gr = inside ? g(r) : 0.0;
     std::vector<double> points{start, 1.0};
     if (c0 > start && c0 < 1.0) points.push_back(c0);
-    if (inside && r != c0) points.push_back(r);
+    // r as a breakpoint only away from the others: an interval of a few ulp (r = 1 - 1e-16, reached by
+    // sampling towards the edge) leaves qagp nothing to bisect, and reports round-off.
+    constexpr double apart = 1e-9;
+    if (inside && std::fabs(r - c0) > apart && 1.0 - r > apart && r - start > apart) points.push_back(r);
     std::sort(points.begin(), points.end());
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         gsl_function fn;

@@ -170,37 +170,50 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
     // The three zones slip-, stick [s, c], slip+ solve their equations at these loads but leave
     // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
     // where their v turns negative, halfway to the edge.
+    bool three_hold = false;  // v > 0 up to the edge on the three zones at the last load tried
     const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
+        three_hold = false;
         try {
             const tangential_solution three = three_zones(opposite_directions(std::fabs(beta_d_)), load, std::nullopt);
             constexpr int samples = 400;
             for (int i = 1; i <= samples; ++i) {
-                const double r = three.c0 + (1.0 - three.c0) * i / samples;
+                const double r = i == samples ? 1.0 : three.c0 + (1.0 - three.c0) * i / samples;
                 if (!(slip_velocity(three, r) < 0.0)) continue;
                 const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
                 return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
             }
+            three_hold = true;  // v > 0 up to the edge: the three zones are the answer
         } catch (const numerical_error&) {
             // no three zones carry this load, or W fails on them: no start from here
         }
-        return std::nullopt;  // v > 0 up to the edge: the three zones are the answer
+        return std::nullopt;
     };
-    if (Q > 0.0)
+    if (Q > 0.0) {
         if (auto s = from_three_zones(Q)) return s;
+        if (three_hold) return std::nullopt;  // not five zones: dissimilar_zones::solve answers it
+    }
     // Free rolling (no three zones carry Q = 0) and loads whose three zones give no start: from a
     // load Q/f = k/8 above Q whose three zones give one (each scan costs about as much as the whole
     // continuation: Q/f = 1/4 first, where they did for f = 0.05 and 0.1), down to Q in steps of
-    // f/8, Newton from the previous ends each time.
+    // f/8 (halved where Newton fails), Newton from the previous ends each time.
     for (const int k : {2, 4, 1, 3, 5, 6, 7}) {
         const double from = k * f_ / 8.0;
         if (from <= Q) continue;
         auto s = from_three_zones(from);
         if (!s) continue;
-        for (double load = from - f_ / 8.0; s; load -= f_ / 8.0) {
-            const double target = std::max(load, Q);
-            s = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2});
-            if (target == Q) return s;
+        // Steps of f/8, halved (down to f/128) where Newton fails, doubled again after a success.
+        double load = from, step = f_ / 8.0;
+        while (load > Q && step >= f_ / 128.0) {
+            const double target = std::max(load - step, Q);
+            if (auto t = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2})) {
+                s = t;
+                load = target;
+                step = std::min(2.0 * step, f_ / 8.0);
+            } else {
+                step *= 0.5;
+            }
         }
+        if (load == Q) return s;
     }
     return std::nullopt;
 }

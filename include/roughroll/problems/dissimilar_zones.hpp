@@ -117,7 +117,8 @@ public:
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends);
     // Five zones at load Q, 0 <= Q/sgn(beta_D) < f, without a guess: Newton from the three zones of a driven
     // roller 1 at the same Q (the leading slip against Q, which fail (3.4) near the trailing edge)
-    // and a trailing stick zone where their v turns negative. Empty when no start converges.
+    // and a trailing stick zone where their v turns negative. Empty when no start converges, and when
+    // those three zones keep v > 0 up to the trailing edge (then they are the answer, not five zones).
     std::optional<five_zone_solution> five_zones(double Q);
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
     five_zone_solution five_zone_system(double s1, double c1, double s2, double c2);
