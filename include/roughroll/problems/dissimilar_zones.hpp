@@ -24,9 +24,11 @@
 //   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
 //     point r*: xi' = -min_r (b p + f G) (8(g));
 //   - the complete-slip limit f -> 0 (8(f)), its own special case (complete_slip_creep).
-// Not built (refused with numerical_error naming what is missing, never a number): free rolling
-// Q = 0 and every load whose answer is not one of the structures above (five zones), and
-// coupling "full".
+//   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling and a driven roller 1
+//     below Q/f ~ 0.9, by five_zones (five_zones.cpp; below), not yet through solve().
+// Not built in solve() (refused with numerical_error naming what is missing, never a number): free
+// rolling Q = 0 and every load whose answer is not one of the three-zone structures above (five
+// zones), and coupling "full".
 #pragma once
 
 #include <functional>
