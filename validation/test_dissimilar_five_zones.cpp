@@ -155,6 +155,9 @@ TEST(DissimilarFiveZones, RollersExchanged) {
             EXPECT_EQ(d.slip_velocity(*a, r), -e.slip_velocity(*b, r)) << r;
         }
         EXPECT_THROW(e.five_zones(0.5 * f), input_error);  // beta_D < 0: driven is Q < 0
+        EXPECT_THROW(d.five_zones(f), input_error);
+        EXPECT_THROW(d.five_zones(0.0, {-0.5, 0.5}), input_error);
+        EXPECT_FALSE(d.five_zones(0.0, {-0.5, 0.6, 0.5, 0.9}));  // overlapping zones: outside, no Newton
     }
 }
 

@@ -81,6 +81,7 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
+    if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     std::optional<five_zone_solution> last;
     newton_problem problem;
     problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
