@@ -180,3 +180,28 @@ TEST(DissimilarFiveZones, NearbyScenesAllSolve) {
         EXPECT_NEAR(s->xi, reference, 1e-9) << beta << " " << n;
     }
 }
+
+// 8(f), towards no slip: free rolling from f = 0.1 to 0.2 in steps of 0.025, each by Newton from the
+// previous f's ends (by 8(h) the ends depend on beta_D/f alone, so they are near). The edge zones
+// thin like 2 exp(-pi f/beta_D) (8(g)), and the creep's distance from the no-slip limit
+// -4 beta_D/pi^2 falls by the same factor per step, exp(-pi 0.025/beta_D) = 0.579 (measured within 5 %).
+TEST(DissimilarFiveZones, TowardsNoSlip) {
+    const double no_slip = -4.0 * beta_al_st / (M_PI * M_PI);
+    std::vector<double> ends, distance;
+    for (double f : {0.1, 0.125, 0.15, 0.175, 0.2}) {
+        contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+        dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
+        const auto s = ends.empty() ? d.five_zones(0.0) : d.five_zones(0.0, ends);
+        ASSERT_TRUE(s) << f;
+        EXPECT_TRUE(s->checks.hold()) << f;
+        ends = {s->s1, s->c1, s->s2, s->c2};
+        distance.push_back(s->xi - no_slip);
+        std::printf("f = %.3f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f, xi - no slip %.3e\n", f, s->s1, s->c1, s->s2,
+                    s->c2, s->xi, distance.back());
+    }
+    const double expected = std::exp(-M_PI * 0.025 / beta_al_st);
+    for (std::size_t k = 1; k < distance.size(); ++k) {
+        EXPECT_LT(distance[k], 0.0);
+        EXPECT_NEAR(distance[k] / distance[k - 1], expected, 0.05 * expected) << k;
+    }
+}
