@@ -205,3 +205,21 @@ TEST(DissimilarFiveZones, TowardsNoSlip) {
         EXPECT_NEAR(distance[k] / distance[k - 1], expected, 0.05 * expected) << k;
     }
 }
+
+// 8(f), towards complete slip: free rolling at f = 0.05, 0.04, 0.03, 0.025 (without a guess) moves
+// monotonically towards -0.5823613 beta_D (Bentall and Johnson's 0.457), staying above it.
+TEST(DissimilarFiveZones, TowardsCompleteSlip) {
+    const double complete = -0.5823613 * beta_al_st;
+    double previous = 0.0;
+    for (double f : {0.05, 0.04, 0.03, 0.025}) {
+        const five_zone_solution s = product(f, 0.0);
+        EXPECT_TRUE(s.checks.hold()) << f;
+        std::printf("f = %.3f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f, xi - complete slip %.3e\n", f, s.s1, s.c1, s.s2,
+                    s.c2, s.xi, s.xi - complete);
+        EXPECT_GT(s.xi, complete);
+        if (previous != 0.0) {
+            EXPECT_LT(s.xi, previous);
+        }
+        previous = s.xi;
+    }
+}
