@@ -336,8 +336,29 @@ void bm_dissimilar_point(benchmark::State& state) {
         benchmark::DoNotOptimize(c.point(Q).xi);
     }
 }
+
+// Issue 13, five zones (docs/formulation.md 8(j) item 4): one fresh point of aluminium on steel at
+// f = 0.05 by dissimilar_zones::five_zones without a guess (product integration at n, no levels);
+// arg 0: 0 free rolling (the start from Q/f = 1/4 and two continuation steps), 1 driven Q/f = +0.75
+// (Bentall and Johnson's case, smooth: the start from its own three zones); arg 1: 0 smooth, 1 the
+// layers of bm_dissimilar_point (free rolling only: driven at 0.75 they keep three zones); arg 2: n.
+void bm_five_zones(benchmark::State& state) {
+    const double beta = 0.1438337435056057, f = 0.05, Q = state.range(0) == 0 ? 0.0 : 0.75 * f;
+    roughness r;
+    if (state.range(1) == 1) r = roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}};
+    for (auto _ : state) {
+        contact c(r, f, solver_options{static_cast<int>(state.range(2)), method::product},
+                  dissimilar{beta, coupling_level::johnson});
+        dissimilar_zones d(c.tangential(), kernel::tangential(r), beta);
+        const auto s = d.five_zones(Q);
+        if (!s) state.SkipWithError("five zones: no answer");
+        benchmark::DoNotOptimize(s ? s->xi : 0.0);
+    }
+}
 }  // namespace
 
+BENCHMARK(bm_five_zones)->ArgsProduct({{0, 1}, {0}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+BENCHMARK(bm_five_zones)->ArgsProduct({{0}, {1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_zone_point)->ArgsProduct({{15}, {1, 2}, {128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_zone_point)->ArgsProduct({{0, 1}, {128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_dissimilar_point)->ArgsProduct({{0, 1}, {0, 1}, {64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);

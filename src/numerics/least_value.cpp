@@ -8,13 +8,14 @@
 namespace roughroll {
 
 least_value least_on_contact(const std::function<std::vector<double>(const std::vector<double>&)>& sampled,
-                             const std::function<double(double)>& value, int samples) {
+                             const std::function<double(double)>& value, int samples, bool trailing_edge,
+                             const std::string& who) {
     std::vector<double> r(samples);
     for (int i = 0; i < samples; ++i) r[i] = 1.0 - 2.0 * i / (samples - 1);  // descending
     const std::vector<double> g = sampled(r);
     for (double v : g)
         if (!std::isfinite(v))
-            throw numerical_error("zone solver: G of (3.25) is not finite (roughness parameters too large?)");
+            throw numerical_error(who + ": G of (3.25) is not finite (roughness parameters too large?)");
     const auto least = static_cast<int>(std::min_element(g.begin(), g.end()) - g.begin());
     double lo = r[std::min(least + 1, samples - 1)], hi = r[std::max(least - 1, 0)];
     // Golden section on the sample's bracket (the function is smooth inside (-1, 1)).
@@ -31,8 +32,11 @@ least_value least_on_contact(const std::function<std::vector<double>(const std::
         }
     }
     least_value out{0.5 * (lo + hi), value(0.5 * (lo + hi))};
-    const double at_edge = value(-1.0);
-    if (at_edge <= out.value) out = {-1.0, at_edge};
+    for (double edge : {-1.0, 1.0}) {
+        if (edge == 1.0 && !trailing_edge) break;
+        const double at_edge = value(edge);
+        if (at_edge <= out.value) out = {edge, at_edge};
+    }
     return out;
 }
 

@@ -1,7 +1,6 @@
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,6 +12,8 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/damped_newton.hpp"
+#include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 
@@ -140,7 +141,10 @@ double dissimilar_zones::W(double r, double start, double c0) {
     const double gr = inside ? g(r) : 0.0;
     std::vector<double> points{start, 1.0};
     if (c0 > start && c0 < 1.0) points.push_back(c0);
-    if (inside && r != c0) points.push_back(r);
+    // r as a breakpoint only away from the others: an interval of a few ulp (r = 1 - 1e-16, reached by
+    // sampling towards the edge) leaves qagp nothing to bisect, and reports round-off.
+    constexpr double apart = 1e-9;
+    if (inside && std::fabs(r - c0) > apart && 1.0 - r > apart && r - start > apart) points.push_back(r);
     std::sort(points.begin(), points.end());
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         gsl_function fn;
@@ -164,6 +168,19 @@ double dissimilar_zones::W(double r, double start, double c0) {
     return w;
 }
 
+double dissimilar_zones::load_under_H(double start, double c0) {
+    // int p H = int_s^c p Theta (qags) + int_c^1 p (closed form, load_between).
+    gsl_function fn;
+    const auto pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
+    fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
+    fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
+    double on_stick = 0.0, error = 0.0;
+    const int status = gsl_integration_qags(&fn, start, c0, quadrature_absolute, quadrature_relative, quadrature_intervals,
+                                            workspace_.get(), &on_stick, &error);
+    if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: int p Theta");
+    return on_stick + load_between(solver_.normal(), c0, 1.0);
+}
+
 tangential_solution dissimilar_zones::blended(double start, double c0, double b) {
     // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f G - 2 f W on the
     // stick zone, i.e. the right side of solve_on_zone (xi' + f G + b p) plus -2 f (G + W).
@@ -176,15 +193,7 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + W(r[m], start, c0));
     tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
     // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
-    gsl_function fn;
-    const auto pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
-    fn.function = [](double x, void* p) { return (*static_cast<const decltype(pressure_theta)*>(p))(x); };
-    fn.params = const_cast<void*>(static_cast<const void*>(&pressure_theta));
-    double on_stick = 0.0, error = 0.0;
-    const int status = gsl_integration_qags(&fn, start, c0, quadrature_absolute, quadrature_relative, quadrature_intervals,
-                                            workspace_.get(), &on_stick, &error);
-    if (status != GSL_SUCCESS && !(error < quadrature_accepted)) gsl_check(status, "dissimilar zones: int p Theta");
-    s.Q += 2.0 * f_ * (on_stick + load_between(solver_.normal(), c0, 1.0)) - 2.0 * f_;
+    s.Q += 2.0 * f_ * load_under_H(start, c0) - 2.0 * f_;
     s.opposite = true;
     return s;
 }
@@ -211,38 +220,27 @@ std::optional<double> dissimilar_zones::stick_end(const structure& z, double sta
 std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
                                                             double c0) {
     // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint m and half-length rho, as
-    // zone_solver's (docs/formulation.md 7(e)), on either structure; the Jacobian by forward
-    // differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
-    const auto residual = [&](double m, double rho) {
-        const tangential_solution t = z.solve(m - rho, m + rho);
-        return std::array<double, 2>{(t.Q - magnitude) / f_, zone_solver::entry_coefficient(t)};
+    // zone_solver's (docs/formulation.md 7(e)), on either structure (damped_newton); the Jacobian by
+    // backward differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
+    std::optional<tangential_solution> last;  // the solve at the last x, which is the root's
+    newton_problem problem;
+    problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        last = z.solve(x[0] - x[1], x[0] + x[1]);
+        return std::vector<double>{(last->Q - magnitude) / f_, zone_solver::entry_coefficient(*last)};
     };
-    double m = 0.5 * (start + c0), rho = 0.5 * (c0 - start);
-    if (!(rho > 0.0 && m - rho > -1.0 && m + rho <= 1.0)) return std::nullopt;
-    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
-        const auto F = residual(m, rho);
-        const double h = 1e-7 * rho;
-        const auto Fm = residual(m - h, rho);
-        const auto Fr = residual(m, rho - h);
-        const double a = (F[0] - Fm[0]) / h, bq = (F[0] - Fr[0]) / h;
-        const double c = (F[1] - Fm[1]) / h, d = (F[1] - Fr[1]) / h;
-        const double det = a * d - bq * c;
-        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
-        const double dm = -(d * F[0] - bq * F[1]) / det, dr = -(a * F[1] - c * F[0]) / det;
-        double step = 1.0;
-        while (!(rho + step * dr > 0.0 && m + step * (dm - dr) - rho > -1.0 && m + step * (dm + dr) + rho <= 1.0)) {
-            step *= 0.5;
-            if (step < 1e-6) return std::nullopt;
-        }
-        m += step * dm;
-        rho += step * dr;
-        if (step == 1.0 && std::fabs(dm) + std::fabs(dr) <= newton_tolerance) {
-            tangential_solution s = z.solve(m - rho, m + rho);
-            s.iterations = iteration;
-            return s;
-        }
-    }
-    return std::nullopt;
+    problem.inside = [](const std::vector<double>& x) {
+        return x[1] > 0.0 && x[0] - x[1] > -1.0 && x[0] + x[1] <= 1.0;
+    };
+    problem.difference_step = [](const std::vector<double>& x, std::size_t) { return -1e-7 * x[1]; };
+    problem.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
+        return std::fabs(dx[0]) + std::fabs(dx[1]);
+    };
+    const auto root =
+        damped_newton(problem, {0.5 * (start + c0), 0.5 * (c0 - start)}, {newton_iterations, newton_tolerance, 1e-6});
+    if (!root) return std::nullopt;
+    tangential_solution s = *last;
+    s.iterations = root->iterations;
+    return s;
 }
 
 tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess) {
@@ -338,35 +336,16 @@ traction_checks dissimilar_zones::check(const tangential_solution& s) {
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {
     // |Q| = f: p1 = f p everywhere, v = xi' + b p + f G >= 0 vanishing at the least point r*,
-    // xi' = -min (b p + f G) (docs/formulation.md 8(g)); samples, then golden section on the bracket.
-    std::vector<double> r(least_samples);
-    for (int i = 0; i < least_samples; ++i) r[i] = 1.0 - 2.0 * i / (least_samples - 1);  // descending
-    const std::vector<double> g = solver_.G(r);
+    // xi' = -min (b p + f G) (docs/formulation.md 8(g)): samples, golden section, both edges.
     const normal_solution& normal = solver_.normal();
-    const auto value_at = [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); };
-    std::vector<double> w(least_samples);
-    for (int i = 0; i < least_samples; ++i) {
-        w[i] = b * normal.pressure(r[i]) + f_ * g[i];
-        if (!std::isfinite(w[i]))
-            throw numerical_error("dissimilar zones: G of (3.25) is not finite (roughness parameters too large?)");
-    }
-    const auto least = static_cast<int>(std::min_element(w.begin(), w.end()) - w.begin());
-    double lo = r[std::min(least + 1, least_samples - 1)], hi = r[std::max(least - 1, 0)];
-    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
-    double v1 = value_at(x1), v2 = value_at(x2);
-    while (hi - lo > 1e-12) {
-        if (v1 <= v2) {
-            hi = x2, x2 = x1, v2 = v1;
-            x1 = hi - golden * (hi - lo), v1 = value_at(x1);
-        } else {
-            lo = x1, x1 = x2, v1 = v2;
-            x2 = lo + golden * (hi - lo), v2 = value_at(x2);
-        }
-    }
-    double point = 0.5 * (lo + hi), value = value_at(point);
-    for (double edge : {-1.0, 1.0})
-        if (value_at(edge) <= value) point = edge, value = value_at(edge);
+    const least_value least = least_on_contact(
+        [&](const std::vector<double>& r) {
+            std::vector<double> w = solver_.G(r);
+            for (std::size_t i = 0; i < r.size(); ++i) w[i] = b * normal.pressure(r[i]) + f_ * w[i];
+            return w;
+        },
+        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true, "dissimilar zones");
+    const double point = least.r, value = least.value;
     tangential_solution s = gross_sliding_solution(f_, 0.0);
     s.xi = -value;
     s.c0 = point;
@@ -378,7 +357,8 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
 tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
-        throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip)"));
+        throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
+                                                "which points do not report (dissimilar_zones::five_zones solves them, 8(j) 4a)"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     tangential_solution s;
@@ -419,7 +399,8 @@ void require_checks(const tangential_solution& s) {
         s.Q, s.f,
         "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
             shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
-            "); the answer has five zones (slip, stick, reversed slip, stick, slip)"));
+            "); the answer has five zones (slip, stick, reversed slip, stick, slip), which points do not report "
+            "(dissimilar_zones::five_zones solves them, 8(j) 4a)"));
 }
 
 }  // namespace roughroll

@@ -1,6 +1,5 @@
 #include "roughroll/problems/one_parameter_zones.hpp"
 
-#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -10,6 +9,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
@@ -138,47 +138,12 @@ std::optional<std::pair<double, double>> one_parameter_zones::asymptotic_zone(do
 
 std::optional<tangential_solution> one_parameter_zones::newton(double magnitude, double start, double c0) {
     // Newton on F = (log(-rho int q / (f - |Q|)), E) in the zone's midpoint m and log rho, as
-    // zone_solver's (docs/formulation.md 7(e)): the load in the gap form, relative; E needs no
-    // scale (Newton's step does not depend on the residuals' units). The Jacobian by forward
-    // differences (1e-6 rho in m, 1e-6 in log rho), steps halved to keep -1 < s < c <= 1. It
-    // stops when a full step is below 1e-12 in r; empty when it does not converge.
-    const double gap = f_ - magnitude;
-    const auto residual = [this, gap](double m, double u) -> std::optional<std::array<double, 2>> {
-        const double rho = std::exp(u);
-        if (!(m - rho > -1.0 && m + rho <= 1.0)) return std::nullopt;
-        const tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
-        const double deficit = -rho * M_PI_2 * t.psi_b[0];
-        if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
-        return std::array<double, 2>{std::log(deficit / gap), entry_velocity(t)};
-    };
-    if (!(gap > 0.0 && c0 > start)) return std::nullopt;
-    double m = 0.5 * (start + c0), u = std::log(0.5 * (c0 - start));
-    auto F = residual(m, u);
-    for (int iteration = 1; F && iteration <= newton_iterations; ++iteration) {
-        const double h = 1e-6 * std::exp(u), k = 1e-6;
-        const auto Fm = residual(m - h, u), Fu = residual(m, u - k);
-        if (!Fm || !Fu) return std::nullopt;
-        const double a = ((*F)[0] - (*Fm)[0]) / h, b = ((*F)[0] - (*Fu)[0]) / k;
-        const double c = ((*F)[1] - (*Fm)[1]) / h, d = ((*F)[1] - (*Fu)[1]) / k;
-        const double det = a * d - b * c;
-        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
-        const double dm = -(d * (*F)[0] - b * (*F)[1]) / det, du = -(a * (*F)[1] - c * (*F)[0]) / det;
-        double step = 1.0;
-        std::optional<std::array<double, 2>> next;
-        while (!(next = residual(m + step * dm, u + step * du))) {
-            step *= 0.5;
-            if (step < 1e-6) return std::nullopt;
-        }
-        F = next;
-        m += step * dm;
-        u += step * du;
-        if (step == 1.0 && std::fabs(dm) + std::exp(u) * std::fabs(du) <= newton_tolerance) {
-            tangential_solution s = single_.solve_on_zone(m - std::exp(u), m + std::exp(u));
-            s.iterations = iteration;
-            return s;
-        }
-    }
-    return std::nullopt;
+    // zone_solver's (docs/formulation.md 7(e), 7(g); zone_ends_newton): the load in the gap form,
+    // relative; E needs no scale (Newton's step does not depend on the residuals' units). It stops
+    // when a full step is below 1e-12 in r; empty when it does not converge.
+    return zone_ends_newton([this](double s, double c) { return single_.solve_on_zone(s, c); },
+                            [this](const tangential_solution& t) { return entry_velocity(t); }, f_ - magnitude, start,
+                            c0, newton_iterations, newton_tolerance);
 }
 
 tangential_solution one_parameter_zones::solve(double Q, bool force_general) {

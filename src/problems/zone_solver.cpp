@@ -1,7 +1,6 @@
 #include "roughroll/problems/zone_solver.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -10,6 +9,7 @@
 #include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
@@ -79,56 +79,14 @@ tangential_solution zone_solver::gross_sliding() {
 
 std::optional<tangential_solution> zone_solver::newton(double magnitude, double start, double c0) {
     // Newton on F = (log(-rho int q / (f - |Q|)), psi(-1) / |b_0|) in the zone's midpoint m and
-    // u = log rho (docs/formulation.md 7(e)): both components are relative, so they keep their
-    // digits as the zone collapses at gross sliding (rho -> 0, f - |Q| -> 0), and F_0 is close to
-    // linear in u (rho int q ~ -kappa rho^k), so Newton converges from a zone far off in size, such
-    // as the continuation guess from gross sliding. The Jacobian by forward differences (steps
-    // 1e-6 rho in m, 1e-6 in u), each step halved until -1 < m - rho and m + rho <= 1.
-    // Empty when it does not converge: the caller falls back to Brent.
-    const double gap = f_ - magnitude;
-    if (!(gap > 0.0)) return std::nullopt;
-    const auto residual = [this, gap](double m, double u) -> std::optional<std::array<double, 2>> {
-        const double rho = std::exp(u);
-        const tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
-        const double deficit = -rho * M_PI_2 * t.psi_b[0];
-        if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
-        return std::array<double, 2>{std::log(deficit / gap), entry_coefficient(t) / std::fabs(t.psi_b[0])};
-    };
-    const auto inside = [](double m, double u) {
-        const double rho = std::exp(u);
-        return m - rho > -1.0 && m + rho <= 1.0;
-    };
-    double m = 0.5 * (start + c0), u = std::log(0.5 * (c0 - start));
-    if (!inside(m, u)) return std::nullopt;
-    auto F = residual(m, u);
-    if (!F) return std::nullopt;
-    for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
-        const double rho = std::exp(u), h = 1e-6 * rho, k = 1e-6;
-        const auto Fm = residual(inside(m - h, u) ? m - h : m + h, u);
-        const auto Fu = residual(m, u - k);
-        if (!Fm || !Fu) return std::nullopt;
-        const double hm = inside(m - h, u) ? h : -h;
-        const double a = ((*F)[0] - (*Fm)[0]) / hm, b = ((*F)[0] - (*Fu)[0]) / k;
-        const double c = ((*F)[1] - (*Fm)[1]) / hm, d = ((*F)[1] - (*Fu)[1]) / k;
-        const double det = a * d - b * c;
-        if (!(std::isfinite(det) && det != 0.0)) return std::nullopt;
-        const double dm = -(d * (*F)[0] - b * (*F)[1]) / det, du = -(a * (*F)[1] - c * (*F)[0]) / det;
-        double step = 1.0;
-        std::optional<std::array<double, 2>> next;
-        while (!(inside(m + step * dm, u + step * du) && (next = residual(m + step * dm, u + step * du)))) {
-            step *= 0.5;
-            if (step < 1e-6) return std::nullopt;
-        }
-        F = next;
-        m += step * dm;
-        u += step * du;
-        if (step == 1.0 && std::fabs(dm) + std::exp(u) * std::fabs(du) <= newton_tolerance) {
-            tangential_solution s = single_.solve_on_zone(m - std::exp(u), m + std::exp(u));
-            s.iterations = iteration;
-            return s;
-        }
-    }
-    return std::nullopt;
+    // u = log rho (docs/formulation.md 7(e); zone_ends_newton): both components are relative, so they
+    // keep their digits as the zone collapses at gross sliding (rho -> 0, f - |Q| -> 0), and F_0 is
+    // close to linear in u (rho int q ~ -kappa rho^k), so Newton converges from a zone far off in
+    // size, such as the continuation guess from gross sliding. Empty when it does not converge: the
+    // caller falls back to Brent.
+    const auto entry = [](const tangential_solution& t) { return entry_coefficient(t) / std::fabs(t.psi_b[0]); };
+    return zone_ends_newton([this](double s, double c) { return single_.solve_on_zone(s, c); }, entry, f_ - magnitude,
+                            start, c0, newton_iterations, newton_tolerance);
 }
 
 std::optional<tangential_solution> zone_solver::continuation(double magnitude) {

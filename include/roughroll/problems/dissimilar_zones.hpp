@@ -24,9 +24,11 @@
 //   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
 //     point r*: xi' = -min_r (b p + f G) (8(g));
 //   - the complete-slip limit f -> 0 (8(f)), its own special case (complete_slip_creep).
-// Not built (refused with numerical_error naming what is missing, never a number): free rolling
-// Q = 0 and every load whose answer is not one of the structures above (five zones), and
-// coupling "full".
+//   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling and a driven roller 1
+//     below Q/f ~ 0.9, by five_zones (five_zones.cpp; below), not yet through solve().
+// Not built in solve() (refused with numerical_error naming what is missing, never a number): free
+// rolling Q = 0 and every load whose answer is not one of the three-zone structures above (five
+// zones), and coupling "full".
 #pragma once
 
 #include <functional>
@@ -77,6 +79,23 @@ void require_checks(const tangential_solution& s);
 // leading zone against the trailing one for a blended stick zone).
 std::vector<zone> solution_zones(const tangential_solution& s);
 
+// Five zones (docs/formulation.md 8(g), 8(j)): slip -1 [-1, s1), stick [s1, c1], slip +1 (c1, s2),
+// stick [s2, c2], slip -1 (c2, 1], in the frame beta_D > 0 (the exchange of rollers of 8(h) gives
+// beta_D < 0: Q, xi, p1, v and the slip directions change sign, the ends do not). p1 = f p S + q1 + q2 with S = -1 + 2 H1 - 2 H2, H_k rising as Theta over zone k, and
+//   L1[q1 + q2] = xi + beta_D p - f G - 2 f W1 + 2 f W2  on both stick zones,  W_k = L1[p H_k],
+//   Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2.
+// Each zone's system carries its own constant xi_k (the regularising constant of 8(g)'s counting);
+// the four ends solve Q(ends) = Q, psi1(-1) = 0, psi2(-1) = 0, xi1 = xi2.
+struct five_zone_solution {
+    double Q, f, xi;              // xi = xi1 (= xi2 at the root), both with the sign below
+    double sign = 1.0;            // sgn beta_D: the frame beta_D > 0 maps Q, xi, p1, v by it (8(h))
+    double s1, c1, s2, c2;        // the stick zones [s1, c1], [s2, c2]
+    tangential_solution zone1, zone2;  // each zone's system (its psi and xi_k)
+    traction_checks checks;       // (3.3) on both stick zones, (3.4) with S on the three slip zones
+    int iterations = 0;           // Newton's
+    int sweeps = 0;               // block Gauss-Seidel sweeps of the last system
+};
+
 class dissimilar_zones {
 public:
     // The tangential solver supplies G, the system (4.4) on any zone with the forcing, the
@@ -95,7 +114,23 @@ public:
     // `opposite`: try the leading slip against Q first (the coarser level's structure).
     tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false);
 
+    // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1,
+    // s2, c2) (damped_newton); empty when Newton does not converge. The checks are made, not acted on.
+    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends);
+    // Five zones at load Q, 0 <= Q/sgn(beta_D) < f, without a guess: Newton from the three zones of a driven
+    // roller 1 at the same Q (the leading slip against Q, which fail (3.4) near the trailing edge)
+    // and a trailing stick zone where their v turns negative. Empty when no start converges, and when
+    // those three zones keep v > 0 up to the trailing edge (then they are the answer, not five zones).
+    std::optional<five_zone_solution> five_zones(double Q);
+    // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
+    five_zone_solution five_zone_system(double s1, double c1, double s2, double c2);
+    double traction(const five_zone_solution& s, double r);      // p1(r)
+    double slip_velocity(const five_zone_solution& s, double r);  // v(r), 0 on the stick zones
+    traction_checks check(const five_zone_solution& s);
+
 private:
+    double load_under_H(double start, double c0);  // int p H over [-1, 1] for the zone [start, c0]
+    double S(const five_zone_solution& s, double r) const;  // -1 + 2 H1 - 2 H2
     // The system on the zone [start, c0] of one structure, its load Q' the |Q| problem's.
     using zone_system = std::function<tangential_solution(double start, double c0)>;
     struct structure {

@@ -1,0 +1,42 @@
+// Damped Newton iteration in k unknowns with a forward-difference Jacobian: the search for the
+// ends of the stick zones (docs/formulation.md 7(e), step 2, and 8(j) item 3). For x in R^k,
+//   J_ij = (F_i(x + h_j e_j) - F_i(x)) / h_j,   J dx = -F(x)   (GSL's LU),
+//   x <- x + lambda dx, lambda = 1, 1/2, 1/4, ... until x + lambda dx is inside the domain and F is
+// defined there (lambda >= min_step). It stops after a full step (lambda = 1) whose size, measured by
+// the caller, is at most `tolerance`. Empty when it does not converge: a singular or non-finite
+// Jacobian, no admissible step, F undefined at x0 or at a difference point, or max_iterations spent;
+// the callers then fall back to bracketing (Brent). Whatever F throws passes through.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace roughroll {
+
+struct newton_problem {
+    // F(x); empty where x is off the family the residuals describe (e.g. a zone carrying more than f).
+    std::function<std::optional<std::vector<double>>(const std::vector<double>&)> residual;
+    // The difference step h_j at x (its sign chooses the side: -h is a backward difference).
+    std::function<double(const std::vector<double>& x, std::size_t j)> difference_step;
+    // Where a step may land (the zone inside [-1, 1]); always true when empty.
+    std::function<bool(const std::vector<double>&)> inside;
+    // The size of the step dx taken to x, compared with the tolerance (in r, the zone ends' unit).
+    std::function<double(const std::vector<double>& x, const std::vector<double>& dx)> step_size;
+};
+
+struct newton_options {
+    int max_iterations = 40;
+    double tolerance = 1e-11;
+    double min_step = 1e-6;  // the smallest damping factor lambda
+};
+
+struct newton_root {
+    std::vector<double> x;
+    int iterations;
+};
+
+std::optional<newton_root> damped_newton(const newton_problem& problem, std::vector<double> x0,
+                                         const newton_options& options);
+
+}  // namespace roughroll

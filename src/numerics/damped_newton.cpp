@@ -1,0 +1,79 @@
+#include "roughroll/numerics/damped_newton.hpp"
+
+#include <cmath>
+
+#include <gsl/gsl_linalg.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/gsl_handles.hpp"
+
+namespace roughroll {
+
+namespace {
+// The Newton step dx of J dx = -F by GSL's LU; empty when J is singular (a zero pivot, as the
+// zero determinant the 2 x 2 searches tested before) or anything is not finite.
+std::optional<std::vector<double>> newton_step(const std::vector<std::vector<double>>& J, const std::vector<double>& F) {
+    const std::size_t k = F.size();
+    matrix_ptr a = make_matrix(k, k);
+    vector_ptr b = make_vector(k), x = make_vector(k);
+    permutation_ptr perm = make_permutation(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        if (!std::isfinite(F[i])) return std::nullopt;
+        gsl_vector_set(b.get(), i, -F[i]);
+        for (std::size_t j = 0; j < k; ++j) {
+            if (!std::isfinite(J[i][j])) return std::nullopt;
+            gsl_matrix_set(a.get(), i, j, J[i][j]);
+        }
+    }
+    int signum = 0;
+    gsl_check(gsl_linalg_LU_decomp(a.get(), perm.get(), &signum), "damped Newton: LU decomposition");
+    for (std::size_t i = 0; i < k; ++i)
+        if (!(gsl_matrix_get(a.get(), i, i) != 0.0)) return std::nullopt;
+    gsl_check(gsl_linalg_LU_solve(a.get(), perm.get(), b.get(), x.get()), "damped Newton: LU solve");
+    std::vector<double> dx(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        dx[i] = gsl_vector_get(x.get(), i);
+        if (!std::isfinite(dx[i])) return std::nullopt;
+    }
+    return dx;
+}
+}  // namespace
+
+std::optional<newton_root> damped_newton(const newton_problem& problem, std::vector<double> x,
+                                         const newton_options& options) {
+    const auto inside = [&](const std::vector<double>& y) { return !problem.inside || problem.inside(y); };
+    if (!inside(x)) return std::nullopt;
+    auto F = problem.residual(x);
+    if (!F) return std::nullopt;
+    const std::size_t k = x.size();
+    for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+        // The Jacobian column by column, by forward differences.
+        std::vector<std::vector<double>> J(F->size(), std::vector<double>(k));
+        for (std::size_t j = 0; j < k; ++j) {
+            const double h = problem.difference_step(x, j);
+            std::vector<double> y = x;
+            y[j] += h;
+            const auto Fy = problem.residual(y);
+            if (!Fy) return std::nullopt;
+            for (std::size_t i = 0; i < F->size(); ++i) J[i][j] = ((*Fy)[i] - (*F)[i]) / h;
+        }
+        const auto dx = newton_step(J, *F);
+        if (!dx) return std::nullopt;
+        // Damping: halve the step until it lands inside and F is defined there.
+        double step = 1.0;
+        std::vector<double> next(k);
+        std::optional<std::vector<double>> F_next;
+        for (;;) {
+            for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + step * (*dx)[j];
+            if (inside(next) && (F_next = problem.residual(next))) break;
+            step *= 0.5;
+            if (step < options.min_step) return std::nullopt;
+        }
+        x = next;
+        F = F_next;
+        if (step == 1.0 && problem.step_size(x, *dx) <= options.tolerance) return newton_root{x, iteration};
+    }
+    return std::nullopt;
+}
+
+}  // namespace roughroll

@@ -1,0 +1,222 @@
+// Five zones of dissimilar rollers (docs/formulation.md 8(g), 8(j) items 3-4): slip -1, stick,
+// slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling and of a driven roller 1
+// below Q/f ~ 0.9. The blend of 8(g) with two stick zones, each with its own collocation system
+// (tangential_solver::solve_on_zone) whose right side carries the other zone's L1[q] (block
+// Gauss-Seidel), and Newton (damped_newton) in the four ends.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/damped_newton.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int max_sweeps = 200;          // block Gauss-Seidel sweeps of one system
+constexpr double sweep_tolerance = 1e-15;  // on the change of xi1 + xi2 between sweeps, relative to f
+constexpr int newton_iterations = 40;
+}  // namespace
+
+double dissimilar_zones::S(const five_zone_solution& s, double r) const {
+    return s.sign * (-1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2));
+}
+
+five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2) {
+    // Solved in the frame beta_D > 0; for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v
+    // with the opposite sign and the same ends.
+    const double beta = std::fabs(beta_d_);
+    const gauss_chebyshev& rule = solver_.normal().rule;
+    const std::size_t m_count = rule.collocation.size();
+    std::vector<double> r1(m_count), r2(m_count);
+    for (std::size_t m = 0; m < m_count; ++m) {
+        r1[m] = 0.5 * (c1 - s1) * (rule.collocation[m] + 1.0) + s1;
+        r2[m] = 0.5 * (c2 - s2) * (rule.collocation[m] + 1.0) + s2;
+    }
+    // solve_on_zone's right side is xi + b p + f G; the blend's is xi + b p - f G - 2 f W1 + 2 f W2.
+    const auto base = [&](const std::vector<double>& r) {
+        const std::vector<double> g = solver_.G(r);
+        std::vector<double> e(r.size());
+        for (std::size_t m = 0; m < r.size(); ++m) e[m] = -2.0 * f_ * (g[m] + W(r[m], s1, c1) - W(r[m], s2, c2));
+        return e;
+    };
+    const std::vector<double> base1 = base(r1), base2 = base(r2);
+    // -L1[q_k] at points outside zone k: v_k - (xi_k + b p + f G), v_k the zone's own slip velocity.
+    const auto minus_operator = [&](const tangential_solution& t, const std::vector<double>& r) {
+        const std::vector<double> v = solver_.slip_velocity(t, r);
+        const std::vector<double> g = solver_.G(r);
+        std::vector<double> out(r.size());
+        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + beta * pressure(r[m]) + f_ * g[m]);
+        return out;
+    };
+    five_zone_solution s{};
+    s.f = f_;
+    s.s1 = s1, s.c1 = c1, s.s2 = s2, s.c2 = c2;
+    s.zone1 = solver_.solve_on_zone(s1, c1, beta, &base1);
+    s.zone2 = solver_.solve_on_zone(s2, c2, beta, &base2);
+    double previous = s.zone1.xi + s.zone2.xi;
+    for (s.sweeps = 1;; ++s.sweeps) {
+        std::vector<double> e1 = minus_operator(s.zone2, r1);
+        for (std::size_t m = 0; m < m_count; ++m) e1[m] += base1[m];
+        s.zone1 = solver_.solve_on_zone(s1, c1, beta, &e1);
+        std::vector<double> e2 = minus_operator(s.zone1, r2);
+        for (std::size_t m = 0; m < m_count; ++m) e2[m] += base2[m];
+        s.zone2 = solver_.solve_on_zone(s2, c2, beta, &e2);
+        const double now = s.zone1.xi + s.zone2.xi;
+        if (std::fabs(now - previous) <= sweep_tolerance * f_) break;
+        if (s.sweeps == max_sweeps || !std::isfinite(now))
+            throw numerical_error("five zones: the coupling of the two stick zones does not converge");
+        previous = now;
+    }
+    s.sign = beta_d_ > 0.0 ? 1.0 : -1.0;
+    s.xi = s.sign * s.zone1.xi;
+    // Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2; solve_on_zone's Q is f + rho int q.
+    s.Q = s.sign * (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_));
+    s.zone1.opposite = s.zone2.opposite = true;
+    return s;
+}
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends) {
+    if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
+    if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
+    std::optional<five_zone_solution> last;
+    newton_problem problem;
+    problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        try {
+            last = five_zone_system(x[0] - x[1], x[0] + x[1], x[2] - x[3], x[2] + x[3]);
+        } catch (const numerical_error&) {
+            return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
+        }
+        return std::vector<double>{(last->Q - Q) / f_, zone_solver::entry_coefficient(last->zone1),
+                                   zone_solver::entry_coefficient(last->zone2), (last->zone1.xi - last->zone2.xi) / f_};
+    };
+    // x = (m1, rho1, m2, rho2): -1 < s1 < c1 < s2 < c2 < 1.
+    problem.inside = [](const std::vector<double>& x) {
+        return x[1] > 0.0 && x[3] > 0.0 && x[0] - x[1] > -1.0 && x[0] + x[1] < x[2] - x[3] && x[2] + x[3] < 1.0;
+    };
+    problem.difference_step = [](const std::vector<double>& x, std::size_t j) { return -1e-7 * x[j < 2 ? 1 : 3]; };
+    problem.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
+        return std::fabs(dx[0]) + std::fabs(dx[1]) + std::fabs(dx[2]) + std::fabs(dx[3]);
+    };
+    const std::vector<double> x0{0.5 * (ends[0] + ends[1]), 0.5 * (ends[1] - ends[0]), 0.5 * (ends[2] + ends[3]),
+                                 0.5 * (ends[3] - ends[2])};
+    const auto root = damped_newton(problem, x0, {newton_iterations, zone_end_resolution, 1e-6});
+    if (!root) return std::nullopt;
+    five_zone_solution s = *last;
+    s.iterations = root->iterations;
+    s.checks = check(s);
+    return s;
+}
+
+double dissimilar_zones::traction(const five_zone_solution& s, double r) {
+    double p1 = f_ * pressure(r) * S(s, r);
+    for (const tangential_solution* t : {&s.zone1, &s.zone2})
+        if (r > t->start && r < t->c0 && !t->psi_b.empty()) {
+            const double u = (r - t->start) / t->rho() - 1.0;
+            p1 += s.sign * u_series(t->psi_b, u) * std::sqrt(std::max(0.0, 1.0 - u * u));
+        }
+    return p1;
+}
+
+double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
+    // v = xi + b p - f G - 2 f W1 + 2 f W2 - L1[q1] - L1[q2], with -L1[q_k] = v_k - (xi_k + b p + f G).
+    if ((r >= s.s1 && r <= s.c1) || (r >= s.s2 && r <= s.c2)) return 0.0;
+    const double x = std::clamp(r, -1.0, 1.0);
+    const double g = solver_.G(x), bp = std::fabs(beta_d_) * pressure(x);  // in the frame beta_D > 0
+    double v = s.sign * s.xi + bp - f_ * g - 2.0 * f_ * (W(x, s.s1, s.c1) - W(x, s.s2, s.c2));
+    for (const tangential_solution* t : {&s.zone1, &s.zone2}) v += solver_.slip_velocity(*t, x) - (t->xi + bp + f_ * g);
+    return s.sign * v;
+}
+
+traction_checks dissimilar_zones::check(const five_zone_solution& s) {
+    // (3.3) on both stick zones, (3.4) with the direction S on the three slip zones, 200 interior
+    // points each (as tangential_solver::check).
+    traction_checks c = solver_.check(tangential_solution{});  // the pressure margin
+    c.stick_margin = c.slip_margin = std::numeric_limits<double>::infinity();
+    const auto lower = [](double& margin, double v) {
+        if (!(v >= margin)) margin = v;
+    };
+    constexpr int points = 200;
+    const auto grid = [](double lo, double hi, int i) {
+        return 0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * (i + 0.5) / points);
+    };
+    for (int i = 0; i < points; ++i) {
+        for (const auto& [lo, hi] : {std::pair{s.s1, s.c1}, std::pair{s.s2, s.c2}}) {
+            const double r = grid(lo, hi, i);
+            lower(c.stick_margin, (f_ * pressure(r) - std::fabs(traction(s, r))) / f_);
+        }
+        for (const auto& [lo, hi] : {std::pair{-1.0, s.s1}, std::pair{s.c1, s.s2}, std::pair{s.c2, 1.0}}) {
+            const double r = grid(lo, hi, i);
+            lower(c.slip_margin, S(s, r) * slip_velocity(s, r) / f_);
+        }
+    }
+    c.stick_holds = c.stick_margin >= 0.0;
+    c.slip_holds = c.slip_margin > 0.0;
+    return c;
+}
+
+}  // namespace roughroll
+
+namespace roughroll {
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
+    // In the frame beta_D > 0 (8(h)): the load sign * Q, 0 <= sign * Q < f.
+    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
+    if (!(sign * Q >= 0.0 && sign * Q < f_))
+        throw input_error("five zones without a guess: 0 <= Q < f for beta_d > 0 (-f < Q <= 0 for beta_d < 0)");
+    Q *= sign;
+    // The three zones slip-, stick [s, c], slip+ solve their equations at these loads but leave
+    // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
+    // where their v turns negative, halfway to the edge.
+    bool three_hold = false;  // v > 0 up to the edge on the three zones at the last load tried
+    const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
+        three_hold = false;
+        try {
+            const tangential_solution three = three_zones(opposite_directions(std::fabs(beta_d_)), load, std::nullopt);
+            constexpr int samples = 400;
+            for (int i = 1; i <= samples; ++i) {
+                const double r = i == samples ? 1.0 : three.c0 + (1.0 - three.c0) * i / samples;
+                if (!(slip_velocity(three, r) < 0.0)) continue;
+                const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
+                return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
+            }
+            three_hold = true;  // v > 0 up to the edge: the three zones are the answer
+        } catch (const numerical_error&) {
+            // no three zones carry this load, or W fails on them: no start from here
+        }
+        return std::nullopt;
+    };
+    if (Q > 0.0) {
+        if (auto s = from_three_zones(Q)) return s;
+        if (three_hold) return std::nullopt;  // not five zones: dissimilar_zones::solve answers it
+    }
+    // Free rolling (no three zones carry Q = 0) and loads whose three zones give no start: from a
+    // load Q/f = k/8 above Q whose three zones give one (each scan costs about as much as the whole
+    // continuation: Q/f = 1/4 first, where they did for f = 0.05 and 0.1), down to Q in steps of
+    // f/8 (halved where Newton fails), Newton from the previous ends each time.
+    for (const int k : {2, 4, 1, 3, 5, 6, 7}) {
+        const double from = k * f_ / 8.0;
+        if (from <= Q) continue;
+        auto s = from_three_zones(from);
+        if (!s) continue;
+        // Steps of f/8, halved (down to f/128) where Newton fails, doubled again after a success.
+        double load = from, step = f_ / 8.0;
+        while (load > Q && step >= f_ / 128.0) {
+            const double target = std::max(load - step, Q);
+            if (auto t = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2})) {
+                s = t;
+                load = target;
+                step = std::min(2.0 * step, f_ / 8.0);
+            } else {
+                step *= 0.5;
+            }
+        }
+        if (load == Q) return s;
+    }
+    return std::nullopt;
+}
+
+}  // namespace roughroll

@@ -1,0 +1,66 @@
+// The damped Newton of the zone ends (numerics/damped_newton.hpp): a root in three unknowns
+// against its closed form, the damping that keeps the iterate inside its domain, and the empty
+// answers (singular Jacobian, residual undefined at the start, no convergence).
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/numerics/damped_newton.hpp"
+
+using namespace roughroll;
+
+namespace {
+newton_problem with_steps(newton_problem p) {
+    p.difference_step = [](const std::vector<double>&, std::size_t) { return -1e-7; };
+    p.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
+        double sum = 0.0;
+        for (double d : dx) sum += std::fabs(d);
+        return sum;
+    };
+    return p;
+}
+}  // namespace
+
+TEST(DampedNewton, ThreeUnknownsAgainstTheClosedForm) {
+    // x^2 + y + z = 3, x + y^2 - z = 1, exp(z - 1) - x y = 0 has the root (1, 1, 1).
+    newton_problem p;
+    p.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] * x[0] + x[1] + x[2] - 3.0, x[0] + x[1] * x[1] - x[2] - 1.0,
+                                   std::exp(x[2] - 1.0) - x[0] * x[1]};
+    };
+    const auto root = damped_newton(with_steps(p), {1.3, 0.8, 1.2}, {40, 1e-12, 1e-6});
+    ASSERT_TRUE(root);
+    for (double v : root->x) EXPECT_NEAR(v, 1.0, 1e-10);
+    EXPECT_LE(root->iterations, 10);
+}
+
+TEST(DampedNewton, StepsHalvedToStayInside) {
+    // log(x) = 0 from x = 3: the full step 3 - 3 log 3 < 0 leaves x > 0 and is halved; root x = 1.
+    newton_problem p;
+    p.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{std::log(x[0])};
+    };
+    p.inside = [](const std::vector<double>& x) { return x[0] > 0.0; };
+    const auto root = damped_newton(with_steps(p), {3.0}, {40, 1e-12, 1e-6});
+    ASSERT_TRUE(root);
+    EXPECT_NEAR(root->x[0], 1.0, 1e-12);
+}
+
+TEST(DampedNewton, EmptyWhenItCannotConverge) {
+    newton_problem singular;  // F does not depend on y: the Jacobian is singular
+    singular.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] - 1.0, 2.0 * x[0] - 3.0};
+    };
+    EXPECT_FALSE(damped_newton(with_steps(singular), {0.0, 0.0}, {40, 1e-12, 1e-6}));
+
+    newton_problem undefined;  // F undefined at the start
+    undefined.residual = [](const std::vector<double>&) -> std::optional<std::vector<double>> { return std::nullopt; };
+    EXPECT_FALSE(damped_newton(with_steps(undefined), {0.0}, {40, 1e-12, 1e-6}));
+
+    newton_problem no_root;  // x^2 + 1 = 0: the iterates wander and the iterations run out
+    no_root.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] * x[0] + 1.0};
+    };
+    EXPECT_FALSE(damped_newton(with_steps(no_root), {0.5}, {40, 1e-12, 1e-6}));
+}
