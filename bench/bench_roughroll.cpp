@@ -23,6 +23,7 @@
 #include "roughroll/layer/roughness_parameters.hpp"
 #include "roughroll/io/profile_csv.hpp"
 #include "roughroll/io/scene.hpp"
+#include "../validation/zone_scenes.hpp"
 
 using namespace roughroll;
 
@@ -287,19 +288,10 @@ namespace {
 // K2* at the leading edge), Q/f = 1 - 1e-2 or 1 - 1e-6 (arg 0: 2 or 6), by method (arg 1:
 // 1 product, 2 extrapolated), n (arg 2). zones = "auto": the single zone fails its checks, the
 // search follows; the single zone alone (zones = "single") for the comparison is arg 3 = 1.
-roughness tangential_dominates() {
-    roughness r;
-    r.cylinder1.tangential = {3.5613, 1.65266};
-    r.cylinder2.tangential = {3.33641, 6.08721};
-    r.cylinder1.normal = {0.112749, 1.75668};
-    r.cylinder2.normal = {0.0338885, 1.17053};
-    return r;
-}
-
 void bm_zone_point(benchmark::State& state) {
     const solver_options o{static_cast<int>(state.range(2)), method_of(state.range(1)),
                            state.range(3) == 1 ? zone_search::single : zone_search::automatic};
-    contact c(tangential_dominates(), 0.3, o);
+    contact c(zone_scenes::tangential_dominates_a(), 0.3, o);
     const double Q = 0.3 * (1.0 - std::pow(10.0, -static_cast<double>(state.range(0))));
     for (auto _ : state) benchmark::DoNotOptimize(c.point(Q).xi);
 }
