@@ -315,6 +315,7 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
     s.iterations = v.iterations;
     s.rcond = std::min(v.zone1.rcond, v.zone2.rcond);
     s.checks = v.checks;
+    s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
     s.general = true;
     s.opposite = true;
     s.five = std::make_shared<const five_zone_solution>(v);
