@@ -387,7 +387,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
         throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
-                                                "which points do not report (dissimilar_zones::five_zones solves them, 8(j) 4a)"));
+                                                "not three (contact::point solves them by dissimilar_zones::five_zones, 8(j) 4a, 9)"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     tangential_solution s;
@@ -428,8 +428,8 @@ void require_checks(const tangential_solution& s) {
         s.Q, s.f,
         "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
             shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
-            "); the answer has five zones (slip, stick, reversed slip, stick, slip), which points do not report "
-            "(dissimilar_zones::five_zones solves them, 8(j) 4a)"));
+            "); the answer has five zones (slip, stick, reversed slip, stick, slip), which no start found here "
+            "(dissimilar_zones::five_zones starts only where the load drives roller 1, 8(j) 4a, 9)"));
 }
 
 }  // namespace roughroll
