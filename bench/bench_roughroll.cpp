@@ -347,8 +347,23 @@ void bm_five_zones(benchmark::State& state) {
         benchmark::DoNotOptimize(s ? s->xi : 0.0);
     }
 }
+
+// Issue 13, five zones as contact::point reports them (8(j) item 9): one fresh point with its
+// three levels n/4, n/2, n (each from the coarser level's ends) and the estimate, aluminium on
+// steel, f = 0.05, smooth, method extrapolated (the default); arg 0: 0 free rolling, 1 Q/f = +0.75;
+// arg 1: n.
+void bm_five_zone_point(benchmark::State& state) {
+    const double beta = 0.1438337435056057, f = 0.05, Q = state.range(0) == 0 ? 0.0 : 0.75 * f;
+    for (auto _ : state) {
+        contact c(roughness{}, f, solver_options{static_cast<int>(state.range(1)), method::extrapolated},
+                  dissimilar{beta, coupling_level::johnson});
+        const tangential_solution s = c.point(Q);
+        benchmark::DoNotOptimize(c.estimate(s));
+    }
+}
 }  // namespace
 
+BENCHMARK(bm_five_zone_point)->ArgsProduct({{0, 1}, {32, 128}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zones)->ArgsProduct({{0, 1}, {0}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zones)->ArgsProduct({{0}, {1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_zone_point)->ArgsProduct({{15}, {1, 2}, {128}, {0, 1}})->Unit(benchmark::kMillisecond);

@@ -246,8 +246,6 @@ expect coupling-full-not-built "coupling 'full' for beta_d != 0 is not built yet
 expect beta-one-parameter "not available for method 'one-parameter'" -- point "$dir/betaoneparam.toml"
 expect beta-zones-single "zones 'single' with beta_d != 0" -- point "$dir/betasingle.toml"
 scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"
-expect beta-free-rolling "free rolling has five zones" -- point "$dir/betafree.toml"
-expect beta-five-zones "not built yet" -- point "$dir/betafree.toml" --Q 0.0375
 expect beta-sweep "a curve swept in c0" -- curve "$dir/betafree.toml" --sweep --points 3
 expect physical-P1-and-Q "not both" -- point "$dir/physP1Q.toml"
 expect physical-P1-hertz-width "given-load" -- point "$dir/physhertzP1.toml"

@@ -88,6 +88,7 @@ struct plot_facts {
     std::string title;  // first title line (gnuplot enhanced text, escaped)
     double Q, f, c0, xi, lambda;
     double start;  // the stick zone is [start, c0]: start > -1 when slip leads (zone search, formulation 7)
+    double start2 = 2.0, end2 = 2.0;  // five zones (dissimilar rollers, formulation 8(j)): the second stick zone
     double p_max, v_max;
     bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
 };
@@ -148,6 +149,13 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#8c2d04'\n"
                << "set arrow 3 from " << shortest(k.start) << ", graph 0 to " << shortest(k.start)
                << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
+        if (k.end2 <= 1.0)  // five zones: the second stick zone shaded too, its ends dashed
+            gp << "set object 4 rect from " << shortest(k.start2) << ", graph 0 to " << shortest(k.end2)
+               << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
+               << "set arrow 4 from " << shortest(k.start2) << ", graph 0 to " << shortest(k.start2)
+               << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n"
+               << "set arrow 5 from " << shortest(k.end2) << ", graph 0 to " << shortest(k.end2)
+               << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
         // Drawn in this order: the limits over p1 show p1 = f p on the slip zone (3.5).
         // Columns 4 and 5 are f p and -f p; with Q < 0 the limit p1 follows is -f p.
         const std::string limit = negative ? "-f p" : "f p";
@@ -176,7 +184,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                << (left ? " right offset -0.8,0" : " left offset 0.8,0") << " font ',14'\n";
         }
         gp << "plot " << data << curve(7, "lw 3 lc rgb '#2ca02c'", "") << "\n"
-           << "unset label 3\nunset object 1\nunset arrow 1\nunset multiplot\nset output\n";
+           << "unset label 3\nunset object 1\nunset arrow 1\nunset object 4\nunset arrow 4\nunset arrow 5\nunset multiplot\nset output\n";
     }
 }
 
@@ -272,6 +280,8 @@ int run_traction(const traction_options& o) {
     facts.f = f;
     facts.c0 = level.c0;  // the stick zone the plotted tractions have
     facts.start = level.start;
+    facts.start2 = level.start2;
+    facts.end2 = level.end2;
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;

@@ -336,7 +336,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
             msg << "; increase n, or the scene is beyond the method's reach";
             throw resolution_error(msg.str());
         }
-        *q.out = b.value;
+        *q.out = std::max(*q.out, b.value);
         e.bounded = e.bounded || !b.asymptotic;
     }
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
@@ -427,9 +427,49 @@ tangential_solution contact::dissimilar_point(double Q) {
             }
         }
     }
-    tangential_solution s = dissimilar_level_point(Q, guess, opposite);
-    require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
-    return s;
+    try {
+        tangential_solution s = dissimilar_level_point(Q, guess, opposite);
+        require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
+        return s;
+    } catch (const numerical_error& why) {
+        // Free rolling, or three zones that fail (3.3)-(3.4): five zones where the load drives
+        // roller 1 (0 <= Q/sgn(beta_D) < f, 8(j)); else the refusal stands.
+        const double driven = materials_.beta_d > 0.0 ? Q : -Q;
+        if (!(driven >= 0.0 && driven < f_)) throw;
+        std::vector<double> ends;
+        if (build_levels())
+            for (contact* level : levels_) {
+                if (level == nullptr) break;
+                const five_zone_solution* v = level->five_level_point(Q, ends.empty() ? nullptr : &ends);
+                ends = v ? std::vector<double>{v->s1, v->c1, v->s2, v->c2} : std::vector<double>{};
+            }
+        const five_zone_solution* v = five_level_point(Q, ends.empty() ? nullptr : &ends);
+        if (v == nullptr) throw;
+        tangential_solution s = five_zone_point(*v);
+        if (!s.checks.hold())
+            throw numerical_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
+                                  ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
+                                  "(3.3)-(3.4) (margins: stick " + shortest(s.checks.stick_margin) + ", slip " +
+                                  shortest(s.checks.slip_margin) + ", docs/formulation.md 8(j)); increase n");
+        return s;
+    }
+}
+
+const five_zone_solution* contact::five_level_point(double Q, const std::vector<double>* ends) {
+    if (last_five_ && last_five_load_ == Q) return &*last_five_;
+    std::optional<five_zone_solution> v;
+    try {
+        // From the coarser level's ends first (Newton, as the three-zone levels), else from the
+        // three zones of 8(j) item 4 and the continuation in Q (dissimilar_zones::five_zones).
+        if (ends) v = dissimilar_->five_zones(Q, *ends);
+        if (!v) v = dissimilar_->five_zones(Q);
+    } catch (const numerical_error&) {
+        v.reset();  // no five zones found on this level
+    }
+    if (!v) return nullptr;
+    last_five_ = v;
+    last_five_load_ = Q;
+    return &*last_five_;
 }
 
 std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solution& s) {
@@ -440,8 +480,23 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
     int self = 0;
     while (levels_[self] != nullptr) ++self;
     std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i)
-        at[i] = levels_[i] ? levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite) : s;
+    for (int i = 0; i < 3; ++i) {
+        if (!levels_[i]) {
+            at[i] = s;
+        } else if (s.five) {
+            // Five zones (8(j)): each level from this level's ends (Newton), else its own search.
+            const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
+            const five_zone_solution* v = levels_[i]->five_level_point(last_five_load_, &ends);
+            if (v == nullptr)
+                throw resolution_error("no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
+                                       std::to_string(nodes()) + " (dissimilar rollers): level " +
+                                       std::to_string(levels_[i]->nodes()) +
+                                       " finds no five zones at Q = " + shortest(s.Q) + "; increase n");
+            at[i] = five_zone_point(*v);
+        } else {
+            at[i] = levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
+        }
+    }
     const int order = level_method() == method::product ? 4 : 2;
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
     const rounding_floors floor = floors_at(finest_n, s, s);
@@ -460,8 +515,15 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         // The ends carry Newton's resolution too (dissimilar_zones.hpp).
         {"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0 + zone_end_resolution, false, &e.c0},
         {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, floor.c0 + zone_end_resolution, false,
-         &e.start}};
-    for (const quantity& q : qs) {
+         &e.start},
+        // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
+        // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
+        {"the second stick zone's end", {at[0].end2, at[1].end2, at[2].end2}, floor.c0 + zone_end_resolution, false,
+         &e.c0},
+        {"the second stick zone's start", {at[0].start2, at[1].start2, at[2].start2}, floor.c0 + zone_end_resolution,
+         false, &e.start}};
+    for (std::size_t k = 0; k < (s.five ? 6u : 4u); ++k) {  // the second zone's ends for five zones only
+        const quantity& q = qs[k];
         const error_bound b = bound_error(q.v, order, reported_value{self, q.extrapolated}, q.floor);
         if (!b.resolved) {
             std::ostringstream msg;
@@ -472,7 +534,7 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
                 << "; increase n";
             throw resolution_error(msg.str());
         }
-        *q.out = b.value;
+        *q.out = std::max(*q.out, b.value);
         e.bounded = e.bounded || !b.asymptotic;
     }
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};

@@ -105,6 +105,13 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
 }
 
 std::vector<zone> solution_zones(const tangential_solution& s) {
+    if (s.five) {
+        // slip -sign, stick, slip +sign, stick, slip -sign (8(j)), sign = sgn beta_D.
+        const five_zone_solution& v = *s.five;
+        const int d = v.sign > 0.0 ? 1 : -1;
+        return {zone{-1.0, v.s1, false, -d}, zone{v.s1, v.c1, true, 0}, zone{v.c1, v.s2, false, d},
+                zone{v.s2, v.c2, true, 0}, zone{v.c2, 1.0, false, -d}};
+    }
     std::vector<zone> z = zones_of(s);
     if (s.opposite && !z.empty() && !z.front().stick) z.front().direction = -z.front().direction;
     return z;
@@ -295,7 +302,28 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
     throw numerical_error("no three-zone structure carries Q");
 }
 
+tangential_solution five_zone_point(const five_zone_solution& v) {
+    tangential_solution s{};
+    s.Q = v.Q;
+    s.f = v.f;
+    s.xi = v.xi;
+    s.sign = v.sign;
+    s.start = v.s1;
+    s.c0 = v.c1;
+    s.start2 = v.s2;
+    s.end2 = v.c2;
+    s.iterations = v.iterations;
+    s.rcond = std::min(v.zone1.rcond, v.zone2.rcond);
+    s.checks = v.checks;
+    s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
+    s.general = true;
+    s.opposite = true;
+    s.five = std::make_shared<const five_zone_solution>(v);
+    return s;
+}
+
 double dissimilar_zones::traction(const tangential_solution& s, double r) {
+    if (s.five) return traction(*s.five, r);
     // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
     const double t = solver_.traction(s, r);
     if (!s.opposite) return t;
@@ -303,6 +331,7 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
 }
 
 double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
+    if (s.five) return slip_velocity(*s.five, r);
     const double v = solver_.slip_velocity(s, r);
     if (!s.opposite || s.sticks(r)) return v;
     const double x = std::clamp(r, -1.0, 1.0);
@@ -358,7 +387,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
         throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
-                                                "which points do not report (dissimilar_zones::five_zones solves them, 8(j) 4a)"));
+                                                "not three (contact::point solves them by dissimilar_zones::five_zones, 8(j) 4a, 9)"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     tangential_solution s;
@@ -399,8 +428,8 @@ void require_checks(const tangential_solution& s) {
         s.Q, s.f,
         "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
             shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
-            "); the answer has five zones (slip, stick, reversed slip, stick, slip), which points do not report "
-            "(dissimilar_zones::five_zones solves them, 8(j) 4a)"));
+            "); the answer has five zones (slip, stick, reversed slip, stick, slip), which no start found here "
+            "(dissimilar_zones::five_zones starts only where the load drives roller 1, 8(j) 4a, 9)"));
 }
 
 }  // namespace roughroll

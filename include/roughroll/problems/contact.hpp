@@ -171,6 +171,12 @@ private:
     std::optional<tangential_solution> last_dissimilar_;  // this level's last point
     const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite);
     tangential_solution dissimilar_point(double Q);
+    // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the
+    // coarser level's) when given and Newton converges from them, else without a guess; nullptr when
+    // none is found. Cached as last_five_.
+    const five_zone_solution* five_level_point(double Q, const std::vector<double>* ends);
+    std::optional<five_zone_solution> last_five_;  // this level's last five-zone point
+    double last_five_load_ = 0.0;                   // the load it was asked for
     std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::unique_ptr<one_parameter_zones> limit_zones_;  // its general search (docs/formulation.md 7(g))

@@ -96,6 +96,11 @@ struct five_zone_solution {
     int sweeps = 0;               // block Gauss-Seidel sweeps of the last system
 };
 
+// The five zones as a point of contact (contact::point): start, c0 the first stick zone [s1, c1],
+// start2, end2 the second [s2, c2], Q, xi, the checks and the solution itself (`five`), through
+// which dissimilar_zones::traction, slip_velocity and solution_zones answer for all five zones.
+tangential_solution five_zone_point(const five_zone_solution& v);
+
 class dissimilar_zones {
 public:
     // The tangential solver supplies G, the system (4.4) on any zone with the forcing, the

@@ -39,6 +39,8 @@ struct traction_checks {
     bool hold() const { return pressure_holds && stick_holds && slip_holds; }
 };
 
+struct five_zone_solution;  // dissimilar_zones.hpp
+
 struct tangential_solution {
     double Q;      // P1/P2
     double f;      // friction coefficient
@@ -62,9 +64,15 @@ struct tangential_solution {
     // stick zone p1 = sign (f p S + q) with S blended from -1 to 1 (dissimilar_zones.hpp), so
     // traction, slip velocity and checks are dissimilar_zones' own, not this solver's.
     bool opposite = false;
+    // Five zones (dissimilar rollers, docs/formulation.md 8(j)): the second stick zone [start2, end2)
+    // (2, 2 — outside the contact — for every other structure) and the solution of both zones
+    // (dissimilar_zones.hpp), whose traction, slip velocity and checks these are.
+    double start2 = 2.0, end2 = 2.0;
+    std::shared_ptr<const five_zone_solution> five;
 
     double rho() const { return 0.5 * (c0 - start); }
-    bool sticks(double r) const { return r >= start && r < c0; }  // r on the stick zone [start, c0)
+    // r on a stick zone [start, c0) (or the second one [start2, end2) of five zones)
+    bool sticks(double r) const { return (r >= start && r < c0) || (r >= start2 && r < end2); }
 };
 
 // The checks every tangential solver makes on a load Q before solving (and the one-parameter

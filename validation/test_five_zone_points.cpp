@@ -1,0 +1,82 @@
+// `roughroll point --json` at the five-zone loads of dissimilar rollers (docs/formulation.md 8(j)):
+// free rolling and Bentall and Johnson's driven Q/f = +0.75 (f = 0.05, data/aluminium-on-steel.toml,
+// n = 32), against the library's own search (dissimilar_zones::five_zones without a guess), which
+// validate_dissimilar_five_zones checks against the grid route. The CLI reaches its level n from
+// the coarser levels' ends; both are roots of the same equations, so they agree to Newton's resolution.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
+
+using namespace roughroll;
+
+namespace {
+// Dundurs' beta_D of aluminium (roller 1, G = 23 GPa, nu = 0.31) on steel (82 GPa, 0.28), 8(a).
+const double beta_al_st = [] {
+    const double C = 0.69 / 23.0 + 0.72 / 82.0;
+    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
+}();
+
+struct run_result {
+    int status;
+    nlohmann::json out;
+};
+
+run_result run_point(double Q) {
+    const std::string command = std::string(ROUGHROLL_CLI) + " point " + ROUGHROLL_DATA +
+                                "/aluminium-on-steel.toml --n 32 --Q " + std::to_string(Q) + " --json";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) throw std::runtime_error("popen failed");
+    std::string text;
+    char buffer[4096];
+    while (const std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, got);
+    const int status = pclose(pipe);
+    return {status, text.empty() ? nlohmann::json{} : nlohmann::json::parse(text)};
+}
+
+void agrees(double Q) {
+    const double f = 0.05;
+    contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    dissimilar_zones d(c.tangential(), kernel::tangential(roughness{}), beta_al_st);
+    const auto s = d.five_zones(Q);
+    ASSERT_TRUE(s);
+    ASSERT_TRUE(s->checks.hold());
+    const run_result r = run_point(Q);
+    ASSERT_EQ(r.status, 0);
+    const nlohmann::json& j = r.out;
+    std::printf("Q/f = %.2f: CLI xi %.12f, library %.12f; stick [%.9f, %.9f], [%.9f, %.9f]\n", Q / f,
+                j["xi"].get<double>(), s->xi, s->s1, s->c1, s->s2, s->c2);
+    EXPECT_TRUE(j["checks_hold"].get<bool>());
+    EXPECT_TRUE(j["checks"]["stick_traction_bound_3_3"].get<bool>());
+    EXPECT_TRUE(j["checks"]["slip_velocity_positive_3_4"].get<bool>());
+    EXPECT_NEAR(j["Q"].get<double>(), Q, 1e-14);
+    EXPECT_NEAR(j["beta_d"].get<double>(), beta_al_st, 1e-12);  // the materials', as for three zones
+    EXPECT_NEAR(j["xi"].get<double>(), s->xi, 1e-10);
+    EXPECT_NEAR(j["stick_start"].get<double>(), s->s1, 1e-9);
+    EXPECT_NEAR(j["c0"].get<double>(), s->c1, 1e-9);
+    const nlohmann::json& z = j["zones"];
+    ASSERT_EQ(z.size(), 5u);
+    const double ends[] = {-1.0, s->s1, s->c1, s->s2, s->c2, 1.0};
+    const char* states[] = {"slip", "stick", "slip", "stick", "slip"};
+    const int directions[] = {-1, 0, 1, 0, -1};  // beta_D > 0: slip-, stick, slip+, stick, slip- (8(j))
+    for (std::size_t k = 0; k < 5; ++k) {
+        EXPECT_NEAR(z[k]["from"].get<double>(), ends[k], 1e-9) << k;
+        EXPECT_NEAR(z[k]["to"].get<double>(), ends[k + 1], 1e-9) << k;
+        EXPECT_EQ(z[k]["state"].get<std::string>(), states[k]) << k;
+        EXPECT_EQ(z[k]["direction"].get<int>(), directions[k]) << k;
+    }
+    // An honest estimate on three levels, the ends within Newton's resolution and the levels' spread.
+    ASSERT_TRUE(j["error_estimate"].is_object());
+    EXPECT_GT(j["error_estimate"]["xi"].get<double>(), 0.0);
+    EXPECT_LT(j["error_estimate"]["xi"].get<double>(), 1e-6);
+}
+}  // namespace
+
+TEST(FiveZonePoints, FreeRolling) { agrees(0.0); }
+TEST(FiveZonePoints, DrivenBentallJohnson) { agrees(0.75 * 0.05); }
