@@ -89,7 +89,8 @@ struct plot_facts {
     double Q, f, c0, xi, lambda;
     double start;  // the stick zone is [start, c0]: start > -1 when slip leads (zone search, formulation 7)
     double start2 = 2.0, end2 = 2.0;  // five zones (dissimilar rollers, formulation 8(j)): the second stick zone
-    double p_max, v_max;
+    double p_max;
+    double v_low, v_high;  // least and greatest slip velocity, 0 included: v may take both signs (8(g))
     bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
 };
 
@@ -173,9 +174,10 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
            << "set tmargin at screen 0.325\nset bmargin at screen 0.085\n"
            << "set format x '%g'\nset xlabel \"r = x_1/a\"\n"
            << "set ylabel \"slip velocity v\\n(scaled as {/Symbol x})\" offset -1.5,0\n";
-        if (k.v_max > 0.0)
-            gp << "set yrange [" << shortest((negative ? -1.15 : -0.08) * k.v_max) << ":"
-               << shortest((negative ? 0.08 : 1.15) * k.v_max) << "]\n";
+        // Room above (below) a velocity of either sign, a thin margin on a side that is only 0.
+        if (const double span = k.v_high - k.v_low; span > 0.0)
+            gp << "set yrange [" << shortest(k.v_low - (k.v_low < 0.0 ? 0.15 : 0.08) * span) << ":"
+               << shortest(k.v_high + (k.v_high > 0.0 ? 0.15 : 0.08) * span) << "]\n";
         else
             gp << "set yrange [-1:1]\n";
         if (has_stick && has_slip) {
@@ -234,7 +236,7 @@ int run_traction(const traction_options& o) {
     for (int i = 0; i < o.points; ++i) grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
     const std::vector<contact::distribution_row> distributions = c.distributions(level, grid);
     double p_max = 0.0;
-    double v_max = 0.0;
+    double v_low = 0.0, v_high = 0.0;
     for (int i = 0; i < o.points; ++i) {
         traction_row& row = rows[i];
         const contact::distribution_row& d = distributions[i];
@@ -245,7 +247,8 @@ int run_traction(const traction_options& o) {
         row.v = d.v;
         smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
         p_max = std::max(p_max, row.p);
-        v_max = std::max(v_max, std::fabs(row.v));
+        v_low = std::min(v_low, row.v);
+        v_high = std::max(v_high, row.v);
     }
 
     std::ostream& out = csv_file.stream();
@@ -285,7 +288,8 @@ int run_traction(const traction_options& o) {
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;
-    facts.v_max = v_max;
+    facts.v_low = v_low;
+    facts.v_high = v_high;
     facts.checks_hold = solution.checks.hold();
     write_gnuplot(script_file.stream(), csv, stem, facts);
     script_file.commit();
