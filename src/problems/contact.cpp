@@ -446,6 +446,7 @@ tangential_solution contact::dissimilar_point(double Q) {
         const five_zone_solution* v = five_level_point(Q, ends.empty() ? nullptr : &ends);
         if (v == nullptr) throw;
         tangential_solution s = five_zone_point(*v);
+        s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
         if (!s.checks.hold())
             throw numerical_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
                                   ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
