@@ -140,7 +140,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
     const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver, s.materials);
     const std::vector<curve_point> curve =
-        sweep ? swept_curve(c, points) : creep_curve(c, loads ? *loads : curve_loads(points, s.friction));
+        sweep ? swept_curve(c, points) : creep_curve(c, loads ? *loads : curve_loads(points, s.friction, s.materials.beta_d));
     curve_columns out;
     out.physical = width.has_value();
     const double nan = std::nan("");

@@ -107,7 +107,7 @@ int run_curve(const scene_options& o, int points, bool sweep, const std::string&
     if (!csv.empty()) file.emplace(csv, s.files);
     const std::optional<contact_width> width = settle_width(s);
     contact c(s.surfaces, s.friction, s.solver, s.materials);
-    const auto curve = sweep ? swept_curve(c, points) : creep_curve(c, curve_loads(points, s.friction));
+    const auto curve = sweep ? swept_curve(c, points) : creep_curve(c, curve_loads(points, s.friction, s.materials.beta_d));
     std::optional<si_context> si;
     if (width) si = si_context{*s.physical, *width};
     if (!file) {

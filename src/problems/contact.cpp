@@ -432,10 +432,9 @@ tangential_solution contact::dissimilar_point(double Q) {
         require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
         return s;
     } catch (const numerical_error& why) {
-        // Free rolling, or three zones that fail (3.3)-(3.4): five zones where the load drives
-        // roller 1 (0 <= Q/sgn(beta_D) < f, 8(j)); else the refusal stands.
-        const double driven = materials_.beta_d > 0.0 ? Q : -Q;
-        if (!(driven >= 0.0 && driven < f_)) throw;
+        // Free rolling, or three zones that fail (3.3)-(3.4): five zones (|Q| < f; on the braked
+        // side, Q/sgn(beta_D) < 0, until the slip+ zone closes, 8(j) 4a); else the refusal stands.
+        if (!(std::fabs(Q) < f_)) throw;
         std::vector<double> ends;
         if (build_levels())
             for (contact* level : levels_) {
@@ -447,11 +446,14 @@ tangential_solution contact::dissimilar_point(double Q) {
         if (v == nullptr) throw;
         tangential_solution s = five_zone_point(*v);
         s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
+        // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
+        // on steel at n = 32, 8(j) 4a), a resolution_error (a curve's row is refused, not the curve).
         if (!s.checks.hold())
-            throw numerical_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
-                                  ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
-                                  "(3.3)-(3.4) (margins: stick " + shortest(s.checks.stick_margin) + ", slip " +
-                                  shortest(s.checks.slip_margin) + ", docs/formulation.md 8(j)); increase n");
+            throw resolution_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
+                                   ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
+                                   "(3.3)-(3.4) (margins: stick " + shortest(s.checks.stick_margin) + ", slip " +
+                                   shortest(s.checks.slip_margin) + "): a zone is below the collocation's resolution "
+                                   "at n = " + std::to_string(nodes()) + " (docs/formulation.md 8(j)); increase n");
         return s;
     }
 }
@@ -462,7 +464,10 @@ const five_zone_solution* contact::five_level_point(double Q, const std::vector<
     try {
         // From the coarser level's ends first (Newton, as the three-zone levels), else from the
         // three zones of 8(j) item 4 and the continuation in Q (dissimilar_zones::five_zones).
+        // On a curve, the previous row's five zones continued in the load come next (a start only:
+        // the root is the same to Newton's tolerance, validation/test_dissimilar_curve.cpp).
         if (ends) v = dissimilar_->five_zones(Q, *ends);
+        if (!v && last_five_) v = dissimilar_->five_zones_from(Q, *last_five_);
         if (!v) v = dissimilar_->five_zones(Q);
     } catch (const numerical_error&) {
         v.reset();  // no five zones found on this level
@@ -641,6 +646,18 @@ std::vector<double> curve_loads(int points, double f) {
         loads[i] = f * (1.0 - v * v);
     }
     loads.back() = f;  // exactly, so the last point is the onset of gross sliding
+    return loads;
+}
+
+std::vector<double> curve_loads(int points, double f, double beta_d) {
+    if (beta_d == 0.0) return curve_loads(points, f);
+    // Dissimilar rollers: the curve is not odd in Q (8(h)), so -f..f, uniform in Q (the five/three
+    // zone transitions lie near free rolling, 8(j) 4a); the ends exactly -f and f.
+    check_curve_points(points);
+    std::vector<double> loads(points);
+    for (int i = 0; i < points; ++i) loads[i] = f * (2.0 * i - (points - 1)) / (points - 1);
+    loads.front() = -f;
+    loads.back() = f;
     return loads;
 }
 

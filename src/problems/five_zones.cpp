@@ -17,7 +17,12 @@ namespace roughroll {
 
 namespace {
 constexpr int max_sweeps = 200;          // block Gauss-Seidel sweeps of one system
-constexpr double sweep_tolerance = 1e-15;  // on the change of xi1 + xi2 between sweeps, relative to f
+// On the change of xi1 + xi2 between sweeps: 1e-15 f, and the rounding of the sum itself. Without
+// the second term a 2-ulp limit cycle (xi1 + xi2 = -0.1365 at f = 0.05 alternating by 5.6e-17 >
+// 1e-15 f) ran the sweeps out, and Newton, finding the residual undefined at a difference point,
+// gave up: the failures "from f = 0.05's ends at f = 0.049" and from nearby loads (8(j) 4a).
+constexpr double sweep_tolerance = 1e-15;
+constexpr double sweep_rounding = 4.0 * std::numeric_limits<double>::epsilon();
 constexpr int newton_iterations = 40;
 }  // namespace
 
@@ -25,10 +30,10 @@ double dissimilar_zones::S(const five_zone_solution& s, double r) const {
     return s.sign * (-1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2));
 }
 
-five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2) {
-    // Solved in the frame beta_D > 0; for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v
-    // with the opposite sign and the same ends.
-    const double beta = std::fabs(beta_d_);
+five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2, double beta) {
+    // Solved in the frame beta_D > 0 with the forcing beta (|beta_D| but on a continuation in
+    // beta_D/f); for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v with the opposite
+    // sign and the same ends.
     const gauss_chebyshev& rule = solver_.normal().rule;
     const std::size_t m_count = rule.collocation.size();
     std::vector<double> r1(m_count), r2(m_count);
@@ -54,6 +59,7 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     };
     five_zone_solution s{};
     s.f = f_;
+    s.forcing = beta;
     s.s1 = s1, s.c1 = c1, s.s2 = s2, s.c2 = c2;
     s.zone1 = solver_.solve_on_zone(s1, c1, beta, &base1);
     s.zone2 = solver_.solve_on_zone(s2, c2, beta, &base2);
@@ -66,7 +72,7 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
         for (std::size_t m = 0; m < m_count; ++m) e2[m] += base2[m];
         s.zone2 = solver_.solve_on_zone(s2, c2, beta, &e2);
         const double now = s.zone1.xi + s.zone2.xi;
-        if (std::fabs(now - previous) <= sweep_tolerance * f_) break;
+        if (std::fabs(now - previous) <= sweep_tolerance * f_ + sweep_rounding * std::fabs(now)) break;
         if (s.sweeps == max_sweeps || !std::isfinite(now))
             throw numerical_error("five zones: the coupling of the two stick zones does not converge");
         previous = now;
@@ -80,13 +86,17 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
 }
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends) {
+    return five_zones(Q, ends, std::fabs(beta_d_));
+}
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends, double beta) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     std::optional<five_zone_solution> last;
     newton_problem problem;
     problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
         try {
-            last = five_zone_system(x[0] - x[1], x[0] + x[1], x[2] - x[3], x[2] + x[3]);
+            last = five_zone_system(x[0] - x[1], x[0] + x[1], x[2] - x[3], x[2] + x[3], beta);
         } catch (const numerical_error&) {
             return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
         }
@@ -125,7 +135,7 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
     // v = xi + b p - f G - 2 f W1 + 2 f W2 - L1[q1] - L1[q2], with -L1[q_k] = v_k - (xi_k + b p + f G).
     if ((r >= s.s1 && r <= s.c1) || (r >= s.s2 && r <= s.c2)) return 0.0;
     const double x = std::clamp(r, -1.0, 1.0);
-    const double g = solver_.G(x), bp = std::fabs(beta_d_) * pressure(x);  // in the frame beta_D > 0
+    const double g = solver_.G(x), bp = s.forcing * pressure(x);  // in the frame beta_D > 0
     double v = s.sign * s.xi + bp - f_ * g - 2.0 * f_ * (W(x, s.s1, s.c1) - W(x, s.s2, s.c2));
     for (const tangential_solution* t : {&s.zone1, &s.zone2}) v += solver_.slip_velocity(*t, x) - (t->xi + bp + f_ * g);
     return s.sign * v;
@@ -163,10 +173,71 @@ traction_checks dissimilar_zones::check(const five_zone_solution& s) {
 namespace roughroll {
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
-    // In the frame beta_D > 0 (8(h)): the load sign * Q, 0 <= sign * Q < f.
+    // In the frame beta_D > 0 (8(h)): the load sign * Q, |Q| < f.
     const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
-    if (!(sign * Q >= 0.0 && sign * Q < f_))
-        throw input_error("five zones without a guess: 0 <= Q < f for beta_d > 0 (-f < Q <= 0 for beta_d < 0)");
+    if (!(std::fabs(Q) < f_)) throw input_error("five zones without a guess: |Q| < f");
+    Q *= sign;
+    const double beta = std::fabs(beta_d_);
+    // By 8(h) the ends depend on Q/f and beta_D/f alone. The starts below (three zones at loads
+    // Q/f = k/8) were found for beta_D/f from 1.4 to 5.8; outside [1, 6] (f <= 0.02 or f >= 0.15 for
+    // aluminium on steel) free rolling is solved at beta_D/f = 2.875 (f = 0.05's) or 1.5 (near
+    // f = 0.1's) and continued in the forcing to beta_D at this f, then in the load to Q.
+    const double ratio = beta / f_;
+    if (ratio >= 1.0 && ratio <= 6.0) return five_zones_at(sign * Q, beta);
+    const double reach = ratio > 6.0 ? 2.875 : 1.5;
+    auto s = five_zones_at(0.0, reach * f_);
+    if (!s) return std::nullopt;
+    // Steps of a factor 2^(1/4) in the forcing, halved (in the exponent, down to 2^(1/64)) where
+    // Newton fails, doubled again after a success. (Steps of 2^(1/2) from 2.875 down to 0.72 met
+    // a root at f = 0.2 whose checks fail, its slip+ zone 1.5e-4 long, not the one continued in f.)
+    constexpr double largest = 0.25;
+    double b = reach * f_, exponent = largest;
+    const double down = ratio < reach ? -1.0 : 1.0;
+    while (b != beta && exponent >= 1.0 / 64.0) {
+        double next = b * std::pow(2.0, down * exponent);
+        if ((next - beta) * down > 0.0) next = beta;
+        if (auto t = five_zones(0.0, {s->s1, s->c1, s->s2, s->c2}, next)) {
+            s = t;
+            b = next;
+            exponent = std::min(2.0 * exponent, largest);
+        } else {
+            exponent *= 0.5;
+        }
+    }
+    if (b != beta) return std::nullopt;
+    if (Q == 0.0) return s;
+    return continued(s, sign * Q, 0.0);
+}
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones_from(double Q, const five_zone_solution& from) {
+    if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
+    return continued(from, Q, from.sign * from.Q);
+}
+
+std::optional<five_zone_solution> dissimilar_zones::continued(std::optional<five_zone_solution> s, double Q, double load) {
+    // Steps of f/8 in the load, halved (down to f/1024, the slip+ zone closing near the braked
+    // transition, 8(j) 4a) where Newton fails, doubled again after a success; in the frame's loads.
+    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
+    Q *= sign;
+    const double direction = Q < load ? -1.0 : 1.0;
+    double step = f_ / 8.0;
+    while (load != Q && step >= f_ / 1024.0) {
+        double target = load + direction * step;
+        if ((target - Q) * direction > 0.0) target = Q;
+        if (auto t = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2}, s->forcing)) {
+            s = t;
+            load = target;
+            step = std::min(2.0 * step, f_ / 8.0);
+        } else {
+            step *= 0.5;
+        }
+    }
+    if (load != Q) return std::nullopt;
+    return s;
+}
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones_at(double Q, double beta) {
+    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
     Q *= sign;
     // The three zones slip-, stick [s, c], slip+ solve their equations at these loads but leave
     // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
@@ -175,13 +246,13 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
     const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
         three_hold = false;
         try {
-            const tangential_solution three = three_zones(opposite_directions(std::fabs(beta_d_)), load, std::nullopt);
+            const tangential_solution three = three_zones(opposite_directions(beta), load, std::nullopt);
             constexpr int samples = 400;
             for (int i = 1; i <= samples; ++i) {
                 const double r = i == samples ? 1.0 : three.c0 + (1.0 - three.c0) * i / samples;
                 if (!(slip_velocity(three, r) < 0.0)) continue;
                 const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
-                return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)});
+                return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)}, beta);
             }
             three_hold = true;  // v > 0 up to the edge: the three zones are the answer
         } catch (const numerical_error&) {
@@ -193,28 +264,17 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
         if (auto s = from_three_zones(Q)) return s;
         if (three_hold) return std::nullopt;  // not five zones: dissimilar_zones::solve answers it
     }
-    // Free rolling (no three zones carry Q = 0) and loads whose three zones give no start: from a
-    // load Q/f = k/8 above Q whose three zones give one (each scan costs about as much as the whole
-    // continuation: Q/f = 1/4 first, where they did for f = 0.05 and 0.1), down to Q in steps of
-    // f/8 (halved where Newton fails), Newton from the previous ends each time.
+    // Free rolling (no three zones carry Q = 0), the braked side (Q < 0: continued from free
+    // rolling through Q = 0 to where the slip+ zone closes, 8(j) 4a) and loads whose three zones
+    // give no start: from a load Q/f = k/8 above Q whose three zones give one (each scan costs
+    // about as much as the whole continuation: Q/f = 1/4 first, where they did for f = 0.05 and
+    // 0.1), down to Q, Newton from the previous ends each time.
     for (const int k : {2, 4, 1, 3, 5, 6, 7}) {
         const double from = k * f_ / 8.0;
         if (from <= Q) continue;
         auto s = from_three_zones(from);
         if (!s) continue;
-        // Steps of f/8, halved (down to f/128) where Newton fails, doubled again after a success.
-        double load = from, step = f_ / 8.0;
-        while (load > Q && step >= f_ / 128.0) {
-            const double target = std::max(load - step, Q);
-            if (auto t = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2})) {
-                s = t;
-                load = target;
-                step = std::min(2.0 * step, f_ / 8.0);
-            } else {
-                step *= 0.5;
-            }
-        }
-        if (load == Q) return s;
+        return continued(s, sign * Q, from);
     }
     return std::nullopt;
 }

@@ -221,6 +221,10 @@ struct curve_point {
 // Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense
 // near Q = f where the creep curve steepens (there xi ~ sqrt(1 - Q/f)).
 std::vector<double> curve_loads(int points, double f);
+// The default loads of a curve for Dundurs' beta_D: curve_loads(points, f) for beta_D = 0; else
+// `points` loads uniform from -f to f (the creep curve of dissimilar rollers is not odd in Q,
+// docs/formulation.md 8(h)).
+std::vector<double> curve_loads(int points, double f, double beta_d);
 
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads);
 

@@ -89,6 +89,7 @@ std::vector<zone> solution_zones(const tangential_solution& s);
 struct five_zone_solution {
     double Q, f, xi;              // xi = xi1 (= xi2 at the root), both with the sign below
     double sign = 1.0;            // sgn beta_D: the frame beta_D > 0 maps Q, xi, p1, v by it (8(h))
+    double forcing = 0.0;         // the frame's |beta_D| (another value only on a continuation in beta_D/f)
     double s1, c1, s2, c2;        // the stick zones [s1, c1], [s2, c2]
     tangential_solution zone1, zone2;  // each zone's system (its psi and xi_k)
     traction_checks checks;       // (3.3) on both stick zones, (3.4) with S on the three slip zones
@@ -122,18 +123,32 @@ public:
     // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1,
     // s2, c2) (damped_newton); empty when Newton does not converge. The checks are made, not acted on.
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends);
-    // Five zones at load Q, 0 <= Q/sgn(beta_D) < f, without a guess: Newton from the three zones of a driven
+    // The same with the forcing `beta` in place of |beta_D| (the frame's): a step of the continuation
+    // in beta_D/f (8(h): at fixed f the ends depend on beta_D/f alone).
+    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends, double beta);
+    // Five zones at load Q continued in the load from `from` (a curve's previous row; Newton from
+    // each step's ends, steps halved where it fails): empty where the continuation stops.
+    std::optional<five_zone_solution> five_zones_from(double Q, const five_zone_solution& from);
+    // Five zones at load Q, |Q| < f, without a guess: Newton from the three zones of a driven
     // roller 1 at the same Q (the leading slip against Q, which fail (3.4) near the trailing edge)
-    // and a trailing stick zone where their v turns negative. Empty when no start converges, and when
-    // those three zones keep v > 0 up to the trailing edge (then they are the answer, not five zones).
+    // and a trailing stick zone where their v turns negative; else from such three zones at a load
+    // Q/f = k/8 above Q, continued in the load down to Q (through free rolling to the braked side,
+    // Q/sgn(beta_D) < 0, 8(j) 4a); for beta_D/f outside [1, 6] free rolling at beta_D/f = 2.875
+    // continued in the forcing first (8(h), 8(j) 4a). Empty when no start converges, where the
+    // continuation ends (the slip+ zone closes: the three zones of a braked roller 1 are the
+    // answer), and when the driven three zones keep v > 0 up to the trailing edge.
     std::optional<five_zone_solution> five_zones(double Q);
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
-    five_zone_solution five_zone_system(double s1, double c1, double s2, double c2);
+    five_zone_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
     double traction(const five_zone_solution& s, double r);      // p1(r)
     double slip_velocity(const five_zone_solution& s, double r);  // v(r), 0 on the stick zones
     traction_checks check(const five_zone_solution& s);
 
 private:
+    // five_zones(Q) at the forcing beta (the frame's), its starts from the three zones at loads k/8.
+    std::optional<five_zone_solution> five_zones_at(double Q, double beta);
+    // Newton from s's ends at loads stepping from `load` to Q (the frame's loads times sgn beta_D).
+    std::optional<five_zone_solution> continued(std::optional<five_zone_solution> s, double Q, double load);
     double load_under_H(double start, double c0);  // int p H over [-1, 1] for the zone [start, c0]
     double S(const five_zone_solution& s, double r) const;  // -1 + 2 H1 - 2 H2
     // The system on the zone [start, c0] of one structure, its load Q' the |Q| problem's.
