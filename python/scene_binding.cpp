@@ -23,6 +23,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 
 namespace py = pybind11;
 
@@ -157,7 +158,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.c0_error.push_back(row.estimate ? row.estimate->c0 : nan);
         out.xi_error.push_back(row.estimate ? row.estimate->xi : nan);
         out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
-        out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));
+        out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(solution_zones(t).size()));  // five for two stick zones, as the CSV
         out.stick_start.push_back(t.start);
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         if (row.is_refused()) {

@@ -156,6 +156,34 @@ def test_curve_at_given_loads_equals_points():
         assert (c["Q"][i], c["c0"][i], c["xi"][i]) == (p.Q, p.c0, p.xi)
 
 
+# Dissimilar rollers (docs/formulation.md 8(j)): the default loads run from -f to f (the curve is not
+# odd in Q), the module's curve is the program's CSV, the creep rises with the load, and a row is the
+# point at its load (to the bit where no previous row gave a start: the braked three zones; five-zone
+# rows start from the previous row's ends, the same root to Newton's resolution).
+DISSIMILAR = """friction = 0.05
+beta_d = 0.1438337435056057
+[solver]
+n = 16
+"""
+
+
+def test_dissimilar_curve_covers_both_signs_and_equals_program(tmp_path):
+    path = tmp_path / "dissimilar.toml"
+    path.write_text(DISSIMILAR)
+    status, out, err = run("curve", path, "--points", "5")
+    assert status == 0, err
+    expected = read_csv(out)
+    s = roughroll.read_scene(path)
+    got = s.curve(points=5)
+    assert_curve_equal(got, expected)
+    assert got["Q"].tolist() == [-0.05, -0.025, 0.0, 0.025, 0.05]
+    assert np.all(np.diff(got["xi"]) > 0)
+    braked = s.point(-0.025)
+    assert (got["c0"][1], got["xi"][1]) == (braked.c0, braked.xi)
+    free = s.point(0.0)
+    assert abs(got["xi"][2] - free.xi) <= 1e-12
+
+
 # leading-slip.toml takes the general zone search (slip, stick, slip: docs/formulation.md
 # section 7): its stick zone is [start, c0], not [-1, c0].
 @pytest.mark.parametrize("name", ["traction-example.toml", "leading-slip.toml"])

@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
     scene_options curve_scene;
     int points = 51;
     std::string csv;
-    CLI::App* curve = app.add_subcommand("curve", "a creep curve, Q/f from 0 to 1, as CSV");
+    CLI::App* curve = app.add_subcommand("curve", "a creep curve, Q/f from 0 to 1 (-1 to 1 for beta_d != 0), as CSV");
     add_scene_options(curve, curve_scene);
     add_integer(curve, "--points", points, "number of loads (Q/f dense near 1)");
     curve->add_option("--csv", csv, "output file (default: stdout)");

@@ -1,6 +1,6 @@
 // Five zones of dissimilar rollers (docs/formulation.md 8(g), 8(j) items 3-4): slip -1, stick,
-// slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling and of a driven roller 1
-// below Q/f ~ 0.9. The blend of 8(g) with two stick zones, each with its own collocation system
+// slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling, of a driven roller 1
+// below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two stick zones, each with its own collocation system
 // (tangential_solver::solve_on_zone) whose right side carries the other zone's L1[q] (block
 // Gauss-Seidel), and Newton (damped_newton) in the four ends.
 #include <algorithm>

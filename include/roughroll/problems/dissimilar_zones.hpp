@@ -24,8 +24,9 @@
 //   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
 //     point r*: xi' = -min_r (b p + f G) (8(g));
 //   - the complete-slip limit f -> 0 (8(f)), its own special case (complete_slip_creep).
-//   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling and a driven roller 1
-//     below Q/f ~ 0.9, by five_zones (five_zones.cpp; below), not yet through solve().
+//   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling, a driven roller 1
+//     below Q/f ~ 0.9 and a braked one until the slip+ zone closes (Q/f ~ -0.074 at f = 0.05 for
+//     aluminium on steel, 8(j) 4a), by five_zones (five_zones.cpp; below), not through solve().
 // Not built in solve() (refused with numerical_error naming what is missing, never a number): free
 // rolling Q = 0 and every load whose answer is not one of the three-zone structures above (five
 // zones), and coupling "full".
