@@ -1,8 +1,9 @@
 // Five zones of dissimilar rollers (docs/formulation.md 8(g), 8(j) items 3-4): slip -1, stick,
 // slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling, of a driven roller 1
-// below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two stick zones, each with its own collocation system
-// (tangential_solver::solve_on_zone) whose right side carries the other zone's L1[q] (block
-// Gauss-Seidel), and Newton (damped_newton) in the four ends.
+// below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two
+// stick zones, each with its own collocation system (tangential_solver::solve_on_zone) whose right
+// side carries the other zone's L1[q] (block Gauss-Seidel), and Newton (damped_newton) in the four
+// ends; continuations in the load and in beta_D/f (8(h)) where no start is found directly.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -274,7 +275,10 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones_at(double Q, doub
         if (from <= Q) continue;
         auto s = from_three_zones(from);
         if (!s) continue;
-        return continued(s, sign * Q, from);
+        // A driven load another start may still reach; a braked one (Q < 0) is reached through
+        // free rolling from every start alike, so a stop there is the transition: no more starts.
+        auto t = continued(s, sign * Q, from);
+        if (t || Q < 0.0) return t;
     }
     return std::nullopt;
 }
