@@ -179,7 +179,8 @@ class Scene:
         """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
 
         Without ``loads``: ``points`` loads Q/f = 1 - (1 - u)^2, u uniform on [0, 1], each solved
-        for c0 by Brent on (4.5); with ``sweep=True`` the curve is swept in c0 instead
+        for c0 by Brent on (4.5) (for dissimilar rollers, ``beta_d != 0``: Q uniform from -f to f,
+        the curve not being odd in Q, each row the point at its load, formulation 8(j)); with ``sweep=True`` the curve is swept in c0 instead
         ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)).
         Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
