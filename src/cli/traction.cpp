@@ -1,8 +1,8 @@
 // `roughroll traction SCENE`: the tractions of one creep point over the contact, for a
 // reader of the paper to see (3.2)-(3.5) at work. On a grid of r = x1/a over [-1, 1]:
 // the normal pressure p(r) = a p2/P2, the tangential traction p1(r) = a p1/P2 of (3.15),
-// the Coulomb limits +-f p, the zone (stick on [-1, c0), slip on [c0, 1]) and the slip
-// velocity v(r) of (3.6), zero on the stick zone and with the sign of Q on the slip zone.
+// the Coulomb limits +-f p, the zone (stick or slip; the zones' ends in the header) and the slip
+// velocity v(r) of (3.6), zero on a stick zone and with the sign of p1 on a slip zone.
 // Carter's smooth solution for the same Q and f is written beside them for comparison
 // (each solution on its own contact width: both integrate to 1 and to Q).
 #include <algorithm>
@@ -258,7 +258,8 @@ int run_traction(const traction_options& o) {
         << ", xi = " << shortest(solution.xi) << ", P_H/P2 = " << shortest(normal.lambda)
         << ", method = " << to_string(normal.how) << ", n = " << normal.rule.n
         << ", checks = " << (solution.checks.hold() ? "hold" : "VIOLATED") << "\n"
-        << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick on [-1, c0), slip on [c0, 1];"
+        << "# zones (r = x1/a): " << zones_text(level) << "\n"
+        << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick or slip, the zones above;"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
     const std::optional<si_point> si = si_of(s, width, solution);
     if (si)

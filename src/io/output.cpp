@@ -26,6 +26,13 @@ nlohmann::json zones_json(const tangential_solution& s) {
     return zones;
 }
 
+const char* zone_path(const tangential_solution& s) { return s.general ? "general" : "single"; }
+
+std::string term_text(const roughness_term& t) {
+    return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
+}
+}  // namespace
+
 std::string zones_text(const tangential_solution& s) {
     std::string text;
     for (const zone& z : solution_zones(s)) {
@@ -35,13 +42,6 @@ std::string zones_text(const tangential_solution& s) {
     }
     return text;
 }
-
-const char* zone_path(const tangential_solution& s) { return s.general ? "general" : "single"; }
-
-std::string term_text(const roughness_term& t) {
-    return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
-}
-}  // namespace
 
 nlohmann::json to_json(const point_report& r) {
     const auto& s = r.solution;

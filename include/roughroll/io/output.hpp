@@ -30,6 +30,9 @@ struct point_report {
 };
 
 nlohmann::json to_json(const point_report& r);
+// The zones of docs/formulation.md section 7 from r = -1 to 1, as the point's text prints them:
+// "slip- [-1, -0.81], stick [-0.81, 0.69], slip+ [0.69, 0.92], ...".
+std::string zones_text(const tangential_solution& s);
 void write_summary(std::ostream& out, const point_report& r);
 
 // Header Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,
