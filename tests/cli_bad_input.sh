@@ -87,6 +87,13 @@ expect Q-nan-cli "Q" -- point "$dir/good.toml" --Q nan
 expect Q-inf-cli "Q" -- point "$dir/good.toml" --Q inf
 expect Q-above-f "slide" -- point "$dir/Qbig.toml"
 expect Q-below-minus-f "slide" -- point "$dir/good.toml" --Q -0.3000001
+# --friction over the scene's: its range as the key's, and the scene's Q (0.15) checked against it.
+expect friction-cli-zero "--friction" -- point "$dir/good.toml" --friction 0
+expect friction-cli-nan "--friction" -- point "$dir/good.toml" --friction nan
+expect friction-cli-huge "--friction" -- point "$dir/good.toml" --friction 1e13
+expect friction-cli-text "--friction" -- point "$dir/good.toml" --friction abc
+expect friction-cli-below-Q "slide" -- point "$dir/good.toml" --friction 0.1
+expect friction-cli-below-Q-traction "slide" -- traction "$dir/good.toml" --friction 0.1 --out "$dir/t" --no-plot
 expect T-negative "T" -- point "$dir/Tneg.toml"
 expect A-infinite "A" -- point "$dir/Ainf.toml"
 expect A-nan "A" -- point "$dir/Anan.toml"

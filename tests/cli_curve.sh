@@ -107,5 +107,14 @@ status=$?
 [ "$(wc -l <"$dir/err")" -eq 1 ] || fail "bad input: $(wc -l <"$dir/err") stderr lines"
 [ -e "$dir/bad.csv" ] && fail "bad input: the CSV was written"
 
+# --- --friction F is the scene with friction = F: the same curve, byte for byte (fig2a-T1.toml
+# with its friction key replaced; the loads Q/f are the curve's own, so Q scales with f).
+sed 's/^friction = .*/friction = 0.5/' "$data/fig2a-T1.toml" >"$dir/f05.toml"
+grep -qx 'friction = 0.5' "$dir/f05.toml" || fail "--friction: the scene copy has no friction line to replace"
+timeout 120 "$bin" curve "$dir/f05.toml" --points 5 >"$dir/file.csv" 2>"$dir/err" || fail "--friction: the scene copy's curve failed"
+timeout 120 "$bin" curve "$data/fig2a-T1.toml" --friction 0.5 --points 5 >"$dir/option.csv" 2>"$dir/err" ||
+    fail "--friction: the curve with --friction failed: $(cat "$dir/err")"
+cmp -s "$dir/file.csv" "$dir/option.csv" || fail "--friction: the curve differs from the scene with that friction"
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

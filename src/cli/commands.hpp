@@ -15,10 +15,11 @@
 
 namespace roughroll::cli {
 
-// SCENE [--n N] [--method NAME] [--zones HOW]: a scene file and the solver overrides every
-// scene-based subcommand accepts (defined in main.cpp).
+// SCENE [--n N] [--method NAME] [--zones HOW] [--friction F]: a scene file and the overrides
+// every scene-based subcommand accepts (defined in main.cpp).
 struct scene_options {
     std::string path;
+    std::optional<double> friction;
     std::optional<int> n;
     std::optional<std::string> method_name;
     std::optional<std::string> zones_name;

@@ -69,11 +69,13 @@ void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
     cmd->add_option("--zones", o.zones_name, "auto, single or general: how the stick and slip zones are found "
                                              "(overrides solver.zones)");
+    add_number(cmd, "--friction", o.friction, "friction coefficient f (overrides the scene's friction)");
 }
 
 scene load_scene(const scene_options& o) {
     scene s = read_scene(o.path);
     override_solver(s, o.n, o.method_name, o.zones_name);
+    override_friction(s, o.friction);
     return s;
 }
 

@@ -31,6 +31,14 @@ std::string load_problem(double Q, double f) {
     return {};
 }
 
+// Why a friction coefficient cannot be solved with, or "" when it can; the text follows its name.
+std::string friction_problem(double f) {
+    if (f >= min_friction && f <= max_friction) return {};
+    return shortest(f) + " is outside [" + shortest(min_friction) + ", " + shortest(max_friction) +
+           "], the range the solver is validated on (validation/test_stiff.cpp); xi/f depends on Q/f alone, so "
+           "solve with f and Q scaled into it";
+}
+
 // The range is checked on the 64-bit TOML integer, before it is narrowed to int.
 int nodes_at(const toml::node& node, const std::string& source, const std::string& path) {
     if (!node.is_integer()) wrong_type(node, "an integer", source, path);
@@ -279,11 +287,8 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     const toml::node* friction = root.get("friction");
     if (friction == nullptr) fail(source, "missing key 'friction'");
     s.friction = bounded_number(*friction, lower_bound::positive, source, "friction");
-    if (!(s.friction >= min_friction && s.friction <= max_friction)) {
-        fail(source, "'friction' = " + shortest(s.friction) + " is outside [" + shortest(min_friction) + ", " +
-                         shortest(max_friction) + "], the range the solver is validated on (validation/test_stiff.cpp); " +
-                         "xi/f depends on Q/f alone, so solve with f and Q scaled into it");
-    }
+    const std::string range = friction_problem(s.friction);
+    if (!range.empty()) fail(source, "'friction' = " + range);
 
     if (const toml::node* load = root.get("Q")) {
         const double Q = number_at(*load, source, "Q");
@@ -357,6 +362,13 @@ double load_of(const scene& s, std::optional<double> override) {
     const std::string problem = load_problem(*Q, s.friction);
     if (!problem.empty()) throw input_error("Q " + problem);
     return *Q;
+}
+
+void override_friction(scene& s, std::optional<double> friction) {
+    if (!friction) return;
+    const std::string range = friction_problem(*friction);
+    if (!range.empty()) throw input_error("--friction " + range);
+    s.friction = *friction;
 }
 
 }  // namespace roughroll

@@ -74,4 +74,9 @@ scene read_scene(const std::string& path);
 // (the cylinders slide).
 double load_of(const scene& s, std::optional<double> override);
 
+// The command line's --friction over the scene's friction (nothing when not given), checked
+// as the scene's key is: in [min_friction, max_friction]. The load is checked against it by
+// load_of, so a scene's Q above the new f is refused there (--Q may give another).
+void override_friction(scene& s, std::optional<double> friction);
+
 }  // namespace roughroll
