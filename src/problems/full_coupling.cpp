@@ -89,7 +89,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         std::function<double(double)> coupled = [source_zones, source, beta](double r) {
             return beta * source_zones->traction(source, r);
         };
-        auto next = std::make_unique<iterate>(iterate{normal_solver_.solve(k2_, coupled, &sweeps_), nullptr, nullptr, {}});
+        auto next = std::make_unique<iterate>(
+            iterate{normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_), nullptr, nullptr, {}});
         next->normal.how = johnson.how;
         next->tangential = std::make_unique<tangential_solver>(next->normal, k1_, k2_, f_, false);
         next->zones = std::make_unique<dissimilar_zones>(*next->tangential, k1_, beta_d_);

@@ -4,6 +4,7 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/numerics/chebyshev_projection.hpp"
 #include "roughroll/numerics/collocation.hpp"
 
 namespace roughroll {
@@ -16,10 +17,10 @@ double normal_solution::pressure(double r) const {
 normal_solver::normal_solver(int n, method how)
     : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
 
-normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) { return solve(k2, nullptr, cache); }
+normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) { return solve(k2, nullptr, {}, cache); }
 
 normal_solution normal_solver::solve(const kernel& k2, const std::function<double(double)>& coupled,
-                                     sweep_cache* cache) {
+                                     const std::vector<double>& kinks, sweep_cache* cache) {
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
     gsl_matrix* a = system_.matrix();
@@ -37,9 +38,12 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
     // Row n+1: the load (4.3).
     for (int k = 0; k < n; ++k) gsl_matrix_set(a, n + 1, k, rule_.weights[k]);
     gsl_vector_set(rhs, n + 1, 1.0);
-    // (D1): the known beta_D p1 on the right side, -beta_D p1(s_m) (docs/formulation.md 8(e) item 3).
-    if (coupled)
-        for (int m = 0; m <= n; ++m) gsl_vector_set(rhs, m, -coupled(rule_.collocation[m]));
+    // (D1): the known beta_D p1 on the right side (docs/formulation.md 8(e) item 3), as its
+    // Chebyshev projection of degree n at s_m, not its values there (chebyshev_projection.hpp).
+    if (coupled) {
+        const std::vector<double> c = chebyshev_projection(coupled, kinks, n);
+        for (int m = 0; m <= n; ++m) gsl_vector_set(rhs, m, -chebyshev_sum(c, rule_.collocation[m]));
+    }
 
     const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
     normal_solution s{rule_, how_, std::vector<double>(n), {}, gsl_vector_get(x, n + 1), gsl_vector_get(x, n),

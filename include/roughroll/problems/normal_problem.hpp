@@ -47,9 +47,11 @@ public:
     normal_solver(int n, method how);
     // `cache`: product-integration workspaces shared with other solves at this n (collocation.hpp).
     normal_solution solve(const kernel& k2, sweep_cache* cache = nullptr);
-    // (D1) of docs/formulation.md 8(c) at full coupling: `coupled`(r) = beta_D p1(r) known, its
-    // values at the collocation points on the right side; the solution carries it and its offset e.
-    normal_solution solve(const kernel& k2, const std::function<double(double)>& coupled, sweep_cache* cache = nullptr);
+    // (D1) of docs/formulation.md 8(c) at full coupling: `coupled`(r) = beta_D p1(r) known, with
+    // square-root kinks at `kinks` (the zone ends), its Chebyshev projection on the right side;
+    // the solution carries it and its offset e.
+    normal_solution solve(const kernel& k2, const std::function<double(double)>& coupled,
+                          const std::vector<double>& kinks, sweep_cache* cache = nullptr);
 
 private:
     gauss_chebyshev rule_;
