@@ -361,8 +361,23 @@ void bm_five_zone_point(benchmark::State& state) {
         benchmark::DoNotOptimize(c.estimate(s));
     }
 }
+
+// Issue 13, the two coupling levels (docs/formulation.md 8(e)): one fresh point of aluminium on
+// steel at f = 0.05, smooth, product integration at n, no levels and no estimate (at full coupling
+// the estimate refuses these loads at the default n: 8(e)); arg 0: 0 braked Q/f = -0.75 (three
+// zones), 1 free rolling (five zones); arg 1: 0 Johnson's level, 1 full coupling; arg 2: n.
+void bm_coupling_point(benchmark::State& state) {
+    const double beta = 0.1438337435056057, f = 0.05, Q = state.range(0) == 0 ? -0.75 * f : 0.0;
+    const coupling_level level = state.range(1) == 0 ? coupling_level::johnson : coupling_level::full;
+    for (auto _ : state) {
+        contact c(roughness{}, f, solver_options{static_cast<int>(state.range(2)), method::product},
+                  dissimilar{beta, level});
+        benchmark::DoNotOptimize(c.point(Q).xi);
+    }
+}
 }  // namespace
 
+BENCHMARK(bm_coupling_point)->ArgsProduct({{0, 1}, {0, 1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zone_point)->ArgsProduct({{0, 1}, {32, 128}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zones)->ArgsProduct({{0, 1}, {0}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zones)->ArgsProduct({{0}, {1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);

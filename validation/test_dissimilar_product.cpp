@@ -250,7 +250,7 @@ TEST(DissimilarProduct, RollersExchanged) {
     }
 }
 
-// What is not built is refused, never answered: a curve swept in c0, coupling "full". Free rolling
+// What is not built is refused, never answered: a curve swept in c0. Free rolling
 // and Q/f = +0.75 (five zones) are points now, by dissimilar_zones::five_zones (8(j)).
 TEST(DissimilarProduct, StructuresNotBuiltAreRefused) {
     contact c(roughness{}, 0.05, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
@@ -260,8 +260,6 @@ TEST(DissimilarProduct, StructuresNotBuiltAreRefused) {
         EXPECT_TRUE(s.checks.hold());
     }
     EXPECT_THROW(c.at_stick_end(0.0), input_error);
-    EXPECT_THROW(contact(roughness{}, 0.05, solver_options{32, method::product}, dissimilar{0.1, coupling_level::full}),
-                 input_error);
     EXPECT_THROW(contact(roughness{}, 0.05, solver_options{32, method::one_parameter}, dissimilar{0.1}), input_error);
     EXPECT_THROW(contact(roughness{}, 0.05, solver_options{32, method::product}, dissimilar{0.75}), input_error);
 }

@@ -77,8 +77,17 @@ nlohmann::json to_json(const point_report& r) {
               {"width_iterations", r.si->width_iterations},
               {"roughness_at_a", {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
                                   {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
+    nlohmann::json coupling = nullptr;  // docs/formulation.md 8(e): the level, and what full coupling measured
+    if (s.forcing != 0.0) coupling = {{"level", r.coupling ? "full" : "johnson"}};
+    if (r.coupling)
+        coupling.update({{"offset_e", r.coupling->offset},
+                         {"hertz_load_ratio_johnson", r.coupling->lambda_johnson},
+                         {"pressure_max_change", r.coupling->pressure_max_change},
+                         {"iterations", r.coupling->iterations},
+                         {"contraction", r.coupling->contraction}});
     return {
         {"label", r.label},
+        {"coupling", coupling},
         {"si", si},
         {"error_estimate", estimate},
         {"Q", s.Q},
@@ -117,8 +126,14 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
         << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
-    if (s.forcing != 0.0)
+    if (s.forcing != 0.0 && !r.coupling)
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
+    if (s.forcing != 0.0 && r.coupling)
+        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (full coupling: " << r.coupling->iterations
+            << " normal solves after Johnson's, contraction " << shortest(r.coupling->contraction) << ")\n"
+            << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
+            << shortest(r.coupling->lambda_johnson) << "; p_max changed by "
+            << shortest(100.0 * r.coupling->pressure_max_change) << " %)\n";
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
             << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string())

@@ -37,7 +37,9 @@ std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>
 }
 
 point_report scene_point::report() const {
-    return {settled.label, solved.normal(), solution, seconds, estimate, si_of(settled, width, solution)};
+    const coupling_summary* coupled = solved.coupling();
+    return {settled.label, solved.normal(), solution, seconds, estimate, si_of(settled, width, solution),
+            coupled ? std::optional<coupling_summary>(*coupled) : std::nullopt};
 }
 
 namespace {

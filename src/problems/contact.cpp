@@ -57,12 +57,19 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     zones_ = std::make_unique<zone_solver>(*tangential_);
     if (materials.beta_d != 0.0)
         dissimilar_ = std::make_unique<dissimilar_zones>(*tangential_, kernel::tangential(surfaces), materials.beta_d);
+    if (materials.beta_d != 0.0 && materials.coupling == coupling_level::full)
+        coupled_ = std::make_unique<full_coupling>(kernel::tangential(surfaces), kernel::normal(surfaces), n,
+                                                   level_of(options.how), f, materials.beta_d);
 }
 
-const normal_solution& contact::normal_level() const { return limit_ ? limit_->normal() : *normal_; }
+const normal_solution& contact::normal_level() const {
+    if (coupled_load_) return coupled_->normal();
+    return limit_ ? limit_->normal() : *normal_;
+}
 
 const normal_solution& contact::normal() const {
     if (limit_) return limit_->normal();
+    if (coupled_load_) return coupled_->normal();  // level n, not extrapolated (docs/formulation.md 8(e))
     return reported_ ? *reported_ : *normal_;
 }
 
@@ -410,7 +417,38 @@ const tangential_solution& contact::dissimilar_level_point(double Q, std::option
     return *last_dissimilar_;
 }
 
+const coupling_summary* contact::coupling() const { return coupled_load_ ? &coupled_->summary() : nullptr; }
+
+dissimilar_zones& contact::zones_of_point() { return coupled_load_ ? coupled_->zones() : *dissimilar_; }
+
 tangential_solution contact::dissimilar_point(double Q) {
+    const tangential_solution johnson = johnson_point(Q);
+    if (!coupled_) return johnson;
+    return coupled_level_point(Q, johnson, true);
+}
+
+tangential_solution contact::johnson_level_point(double Q, const tangential_solution& near) {
+    if (!near.five) return dissimilar_level_point(Q, zone_guess{near.start, near.c0}, near.opposite);
+    const std::vector<double> ends{near.start, near.c0, near.start2, near.end2};
+    const five_zone_solution* v = five_level_point(Q, &ends);
+    if (v == nullptr)
+        throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) + ": no five zones at Q = " +
+                               shortest(Q) + "; increase n");
+    tangential_solution t = five_zone_point(*v);
+    t.Q = Q;
+    return t;
+}
+
+const tangential_solution& contact::coupled_level_point(double Q, const tangential_solution& johnson, bool checked) {
+    if (coupled_load_ && *coupled_load_ == Q && (coupled_checked_ || !checked)) return coupled_point_;
+    coupled_load_.reset();  // Johnson's pressure and zones until the alternation has converged
+    coupled_point_ = coupled_->solve(*normal_, *dissimilar_, johnson, checked);
+    coupled_load_ = Q;
+    coupled_checked_ = checked;
+    return coupled_point_;
+}
+
+tangential_solution contact::johnson_point(double Q) {
     // The estimate's levels below this one first, coarsest first, each from the zone of the level
     // below (Newton), so that only the coarsest scans the starts of the stick zone.
     std::optional<zone_guess> guess;
@@ -489,6 +527,16 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
     for (int i = 0; i < 3; ++i) {
         if (!levels_[i]) {
             at[i] = s;
+        } else if (coupled_) {
+            // Full coupling (8(e)): each level's own alternation from its own Johnson's point. A level
+            // that cannot be coupled leaves no honest estimate (the point itself was).
+            try {
+                at[i] = levels_[i]->coupled_level_point(s.Q, levels_[i]->johnson_level_point(s.Q, s), false);
+            } catch (const numerical_error& why) {
+                throw resolution_error("no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
+                                       std::to_string(nodes()) + " (dissimilar rollers, full coupling): level " +
+                                       std::to_string(levels_[i]->nodes()) + ": " + why.what());
+            }
         } else if (s.five) {
             // Five zones (8(j)): each level from this level's ends (Newton), else its own search.
             const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
@@ -519,7 +567,9 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         double* out;
     };
     const quantity qs[] = {
-        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, reported_ != nullptr, &e.lambda},
+        // (At full coupling P_H/P2 is level n's, not extrapolated: contact::normal.)
+        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, reported_ != nullptr && !coupled_,
+         &e.lambda},
         {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, false, &e.xi},
         // The ends carry Newton's resolution too (dissimilar_zones.hpp).
         {"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0 + zone_end_resolution, false, &e.c0},
@@ -594,22 +644,22 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
 }
 
 double contact::traction(const tangential_solution& d, double r) {
-    if (dissimilar_) return dissimilar_->traction(d, r);  // either structure of 8(g)
+    if (dissimilar_) return zones_of_point().traction(d, r);  // either structure of 8(g)
     return limit_ ? limit_->traction(d, r) : tangential_->traction(d, r);
 }
 
 double contact::slip_velocity(const tangential_solution& d, double r) {
-    if (dissimilar_) return dissimilar_->slip_velocity(d, r);
+    if (dissimilar_) return zones_of_point().slip_velocity(d, r);
     return limit_ ? limit_->slip_velocity(d, r) : tangential_->slip_velocity(d, r);
 }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
     if (dissimilar_ && d.opposite) {
         std::vector<double> v(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) v[i] = dissimilar_->slip_velocity(d, r[i]);
+        for (std::size_t i = 0; i < r.size(); ++i) v[i] = zones_of_point().slip_velocity(d, r[i]);
         return v;
     }
-    if (!limit_) return tangential_->slip_velocity(d, r);
+    if (!limit_) return (coupled_load_ ? coupled_->tangential() : *tangential_).slip_velocity(d, r);
     std::vector<double> v(r.size());
     for (std::size_t i = 0; i < r.size(); ++i) v[i] = limit_->slip_velocity(d, r[i]);
     return v;

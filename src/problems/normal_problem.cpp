@@ -4,6 +4,7 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/numerics/chebyshev_projection.hpp"
 #include "roughroll/numerics/collocation.hpp"
 
 namespace roughroll {
@@ -16,7 +17,10 @@ double normal_solution::pressure(double r) const {
 normal_solver::normal_solver(int n, method how)
     : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
 
-normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) {
+normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) { return solve(k2, nullptr, {}, cache); }
+
+normal_solution normal_solver::solve(const kernel& k2, const std::function<double(double)>& coupled,
+                                     const std::vector<double>& kinks, sweep_cache* cache) {
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
     gsl_matrix* a = system_.matrix();
@@ -34,12 +38,22 @@ normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) {
     // Row n+1: the load (4.3).
     for (int k = 0; k < n; ++k) gsl_matrix_set(a, n + 1, k, rule_.weights[k]);
     gsl_vector_set(rhs, n + 1, 1.0);
+    // (D1): the known beta_D p1 on the right side (docs/formulation.md 8(e) item 3), as its
+    // Chebyshev projection of degree n at s_m, not its values there (chebyshev_projection.hpp).
+    if (coupled) {
+        const std::vector<double> c = chebyshev_projection(coupled, kinks, n);
+        for (int m = 0; m <= n; ++m) gsl_vector_set(rhs, m, -chebyshev_sum(c, rule_.collocation[m]));
+    }
 
     const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
     normal_solution s{rule_, how_, std::vector<double>(n), {}, gsl_vector_get(x, n + 1), gsl_vector_get(x, n),
-                      system_.rcond(), std::move(kernel_term)};
+                      system_.rcond(), std::move(kernel_term), {}, 0.0};
     for (int k = 0; k < n; ++k) s.phi[k] = gsl_vector_get(x, k);
     s.b = u_coefficients(rule_, s.phi);
+    if (coupled) {
+        s.tangential_term = coupled;
+        s.offset = M_PI * s.gamma / (2.0 * s.lambda);  // gamma_0n = (2/pi) lambda e, 8(c)
+    }
     return s;
 }
 
@@ -47,7 +61,7 @@ normal_solution hertz_solution(int n, method how) {
     gauss_chebyshev rule(n);
     std::vector<double> phi(n, M_2_PI);
     auto b = u_coefficients(rule, phi);
-    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr};
+    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr, {}, 0.0};
 }
 
 namespace {

@@ -63,6 +63,13 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
     // error is bounded below eps times its size, docs/formulation.md "G once per contact").
     std::vector<double> g(r.size());
     for (std::size_t m = 0; m < r.size(); ++m) g[m] = M_2_PI * normal_.lambda * r[m];
+    // Full coupling (docs/formulation.md 8(e) item 2): G = -L1[p] of the pressure solving (D1),
+    // (2/pi) lambda (r + e) + beta_D p1 + int p (K2* - K1*), with p1 itself, kinks and all, not the
+    // polynomial -L1 of the discrete p (which is the projection of that and smooths the kinks at the
+    // zone ends, where the ends are decided: measured in 8(e), the ends then converge no better).
+    if (normal_.tangential_term)
+        for (std::size_t m = 0; m < r.size(); ++m)
+            g[m] += M_2_PI * normal_.lambda * normal_.offset + normal_.tangential_term(r[m]);
     if (dk_.empty()) return g;
     if (!g_table_) g_table_.emplace(dk_, normal_.b);
     for (std::size_t m = 0; m < r.size(); ++m) g[m] += (*g_table_)(r[m]);

@@ -27,6 +27,9 @@ struct point_report {
     double seconds;  // wall time of the normal and tangential solves
     std::optional<error_estimate> estimate;
     std::optional<si_point> si;  // a physical scene's results in SI units
+    // Full coupling of dissimilar rollers (docs/formulation.md 8(e)): what the alternation measured;
+    // empty at Johnson's level.
+    std::optional<coupling_summary> coupling = std::nullopt;
 };
 
 nlohmann::json to_json(const point_report& r);

@@ -32,6 +32,7 @@
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -70,8 +71,13 @@ public:
     contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {},
             normal_cache* cache = nullptr);
 
-    // The normal solution as reported (lambda extrapolated for method::extrapolated).
+    // The normal solution as reported (lambda extrapolated for method::extrapolated). At full
+    // coupling of dissimilar rollers (docs/formulation.md 8(e)) the pressure depends on Q: after a
+    // point, the coupled pressure of that point at level n (not extrapolated); before, Johnson's.
     const normal_solution& normal() const;
+    // What the alternation of full coupling measured at the last point (offset e, iterations,
+    // contraction, pressure change); nullptr at Johnson's level and before a point.
+    const coupling_summary* coupling() const;
     // The two-parameter tangential solver; for method::one_parameter there is none: throws
     // input_error (use traction() and slip_velocity() below, which serve every method).
     tangential_solver& tangential();
@@ -170,7 +176,8 @@ private:
     std::unique_ptr<dissimilar_zones> dissimilar_;
     std::optional<tangential_solution> last_dissimilar_;  // this level's last point
     const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite);
-    tangential_solution dissimilar_point(double Q);
+    tangential_solution dissimilar_point(double Q);  // Johnson's, then coupled_ where it is set
+    tangential_solution johnson_point(double Q);     // Johnson's level, the estimate's levels first
     // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the
     // coarser level's) when given and Newton converges from them, else without a guess; nullptr when
     // none is found. Cached as last_five_.
@@ -178,6 +185,20 @@ private:
     std::optional<five_zone_solution> last_five_;  // this level's last five-zone point
     double last_five_load_ = 0.0;                   // the load it was asked for
     std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
+    // Full coupling (docs/formulation.md 8(e); materials_.coupling == full, beta_D != 0): the
+    // alternation from Johnson's point on this level, cached per Q (coupled_load_).
+    std::unique_ptr<full_coupling> coupled_;
+    std::optional<double> coupled_load_;  // the load of coupled_'s last point; empty: none solved
+    tangential_solution coupled_point_;
+    // Johnson's point at Q of this level near `near` (another level's point: its ends start Newton).
+    tangential_solution johnson_level_point(double Q, const tangential_solution& near);
+    // The fully coupled point at Q of this level from Johnson's point `johnson` of this level;
+    // `checked` as full_coupling::solve (the cache keeps a checked point for an unchecked call).
+    const tangential_solution& coupled_level_point(double Q, const tangential_solution& johnson, bool checked);
+    bool coupled_checked_ = false;
+    // The zones workspace a solution of this contact is evaluated with (the coupled one after a
+    // point at full coupling).
+    dissimilar_zones& zones_of_point();
     std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
     std::unique_ptr<one_parameter_zones> limit_zones_;  // its general search (docs/formulation.md 7(g))
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point

@@ -2,8 +2,13 @@
 //   gamma_0n + sum_k [(1/pi) w_k/(eta_k - s_m) + kernel_mk] phi_k + (2/pi) lambda s_m = 0,
 //   sum_k w_k phi_k = 1,
 // for the n + 2 unknowns phi(eta_k), gamma_0n and lambda = P_H/P2 (E9 for gamma_0n).
+// Dissimilar rollers at full coupling (docs/formulation.md 8(c), 8(e)) solve (D1),
+//   L2[p](r) + beta_D p1(r) = -(2/pi) lambda (r + e),
+// with a known beta_D p1 moved to the right side at the collocation points: the same matrix,
+// right side -beta_D p1(s_m), and gamma_0n = (2/pi) lambda e absorbs the offset e.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -27,6 +32,11 @@ struct normal_solution {
     // with the tangential solver when K1*'s rates do not exceed K2*'s: the Lagrange basis at
     // the sweep's quadrature points is then computed once per level. Empty for Hertz.
     std::shared_ptr<const kernel_operator> kernel_term;
+    // Full coupling of dissimilar rollers (docs/formulation.md 8(e)): beta_D p1(r) of the (D1) this
+    // pressure solves, and its offset e = pi gamma_0n/(2 lambda) (8(c)); G = -L1[p] then gains
+    // (2/pi) lambda e + beta_D p1 (tangential_solver::G). Empty and 0 for the uncoupled problem.
+    std::function<double(double)> tangential_term;
+    double offset = 0.0;
 
     double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2), (4.1)
 };
@@ -37,6 +47,11 @@ public:
     normal_solver(int n, method how);
     // `cache`: product-integration workspaces shared with other solves at this n (collocation.hpp).
     normal_solution solve(const kernel& k2, sweep_cache* cache = nullptr);
+    // (D1) of docs/formulation.md 8(c) at full coupling: `coupled`(r) = beta_D p1(r) known, with
+    // square-root kinks at `kinks` (the zone ends), its Chebyshev projection on the right side;
+    // the solution carries it and its offset e.
+    normal_solution solve(const kernel& k2, const std::function<double(double)>& coupled,
+                          const std::vector<double>& kinks, sweep_cache* cache = nullptr);
 
 private:
     gauss_chebyshev rule_;

@@ -1,0 +1,80 @@
+// Full coupling of dissimilar rollers (docs/formulation.md 8(c), 8(e)): the normal problem (D1)
+// and the tangential problem (D2) solved together by alternation at a fixed width,
+//   (D1)  L2[p](r) + beta_D p1(r) = -(2/pi) lambda (r + e),     int p = 1,
+//   (D2)  v(r) = xi - L1[p1](r) + beta_D p(r);  stick: v = 0, |p1| <= f p;  slip: p1 = sigma f p,
+//         sigma v > 0;  int p1 = Q,
+//   lambda = 1 - int p J - beta_D int p1 r/sqrt(1 - r^2)                                    8(c)
+// from Johnson's point (k = 0: p^(0) the uncoupled pressure, e = 0):
+//   1. tangential solve k: (D2) with beta_D p^(k), and in place of G
+//        G^(k) = -L1[p^(k)] = (2/pi) lambda^(k) (r + e^(k)) + int p^(k) (K2* - K1*) + beta_D p1^(k-1);
+//   2. normal solve k + 1: (D1) with beta_D p1^(k) known on the right side at the collocation points
+//      (normal_solver::solve with the coupled term: the same matrix, gamma_0n = (2/pi) lambda e);
+//   3. iterate, then test: stop when lambda, e, xi and the zone ends change by less than the
+//      tolerances below; numerical_error (one line) after max_iterations or when the changes grow.
+// Each tangential solve is Newton from the previous iterate's ends on the same structure (three
+// zones of either kind, gross sliding, or five zones: dissimilar_zones), with its checks (3.3)-(3.4).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+
+namespace roughroll {
+
+// The alternation's stopping rule (iterate-then-test). lambda, e and xi: absolute changes below
+// 1e-12 (their size is O(1) or less; the rounding of a normal solve is a few 1e-15/rcond); the zone
+// ends: below 10 times Newton's resolution zone_end_resolution (each tangential solve fixes them
+// only to that, so smaller changes are that solve's jitter, not the alternation's).
+constexpr double coupling_value_tolerance = 1e-12;
+constexpr double coupling_end_tolerance = 10.0 * zone_end_resolution;
+constexpr int coupling_max_iterations = 40;
+
+// What the alternation measured, for the report of a point.
+struct coupling_summary {
+    int iterations = 0;             // normal solves after Johnson's
+    double offset = 0.0;            // e = x_c/a of 8(c)
+    double lambda_johnson = 0.0;    // P_H/P2 of Johnson's level
+    double pressure_max_change = 0.0;  // (max p - max p_Johnson)/max p_Johnson
+    double contraction = 0.0;       // the largest ratio of successive changes after the first two steps
+    std::vector<double> changes;    // the largest change of lambda, e, xi per step (the ends' apart)
+};
+
+class full_coupling {
+public:
+    // The level's kernels, n and method, friction and beta_D != 0.
+    full_coupling(const kernel& k1, const kernel& k2, int n, method how, double f, double beta_d);
+    full_coupling(const full_coupling&) = delete;
+    full_coupling& operator=(const full_coupling&) = delete;
+    ~full_coupling();
+
+    // The fully coupled point at Johnson's load `johnson_point.Q`, from Johnson's level: its pressure
+    // `johnson`, its zones workspace (on `johnson`) and its point (k = 0 of the alternation).
+    // `checked`: each step's checks (3.3)-(3.4) must hold (a point reported), else numerical_error;
+    // without, they are made, not acted on (a level of an estimate, as at Johnson's level).
+    const tangential_solution& solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
+                                     const tangential_solution& johnson_point, bool checked);
+
+    // The last solve's pressure p (with lambda, e and its beta_D p1 term), solver and zones, through
+    // which traction, slip velocity and checks of the point are evaluated; valid until the next solve.
+    const normal_solution& normal() const;
+    tangential_solver& tangential();
+    dissimilar_zones& zones();
+    const coupling_summary& summary() const { return summary_; }
+
+private:
+    struct iterate;
+    kernel k1_, k2_;
+    double f_, beta_d_;
+    normal_solver normal_solver_;
+    sweep_cache sweeps_;  // the product-integration workspaces of every normal solve (collocation.hpp)
+    std::unique_ptr<iterate> current_, previous_;
+    coupling_summary summary_;
+};
+
+}  // namespace roughroll

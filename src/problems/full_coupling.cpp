@@ -1,0 +1,147 @@
+#include "roughroll/problems/full_coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+
+namespace roughroll {
+
+namespace {
+constexpr int pressure_samples = 2001;  // samples of p for its maximum (the reported change)
+
+double pressure_maximum(const normal_solution& p) {
+    double m = 0.0;
+    for (int i = 0; i < pressure_samples; ++i) m = std::max(m, p.pressure(-1.0 + 2.0 * i / (pressure_samples - 1.0)));
+    return m;
+}
+
+std::string at_load(double Q, double f) { return "full coupling at Q/f = " + shortest(Q / f) + ": "; }
+}  // namespace
+
+// One step k of the alternation: p^(k) (solving (D1) with beta_D p1^(k-1)), its solver and zones
+// workspace (the tangential solver keeps a reference to `normal`, so an iterate never moves: it
+// is held by unique_ptr), and the point solved on them.
+struct full_coupling::iterate {
+    normal_solution normal;
+    std::unique_ptr<tangential_solver> tangential;
+    std::unique_ptr<dissimilar_zones> zones;
+    tangential_solution s;
+};
+
+full_coupling::full_coupling(const kernel& k1, const kernel& k2, int n, method how, double f, double beta_d)
+    : k1_(k1), k2_(k2), f_(f), beta_d_(beta_d), normal_solver_(n, how) {
+    check_beta_d(beta_d);
+    if (beta_d == 0.0) throw input_error("full coupling: beta_d = 0 is the uncoupled problem (docs/formulation.md 8(d))");
+}
+
+full_coupling::~full_coupling() = default;
+
+const normal_solution& full_coupling::normal() const { return current_->normal; }
+tangential_solver& full_coupling::tangential() { return *current_->tangential; }
+dissimilar_zones& full_coupling::zones() { return *current_->zones; }
+
+namespace {
+// The tangential solve of one step: Newton from the previous iterate's ends on its structure
+// (five zones by their four ends; else three zones or gross sliding by dissimilar_zones::solve,
+// which tries the previous kind first), and the checks (3.3)-(3.4) of the answer (acted on when
+// `checked`: a point reported; a level of an estimate need not hold them, as at Johnson's level).
+tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f, bool checked) {
+    tangential_solution t;
+    if (previous.five) {
+        const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2, previous.end2});
+        if (!v)
+            throw numerical_error(at_load(Q, f) + "Newton finds no five zones from the previous iterate's ends "
+                                  "(the zone structure changes under the coupling; docs/formulation.md 8(e))");
+        t = five_zone_point(*v);
+        t.Q = Q;
+    } else {
+        t = z.solve(Q, zone_guess{previous.start, previous.c0}, previous.opposite);
+    }
+    if (checked && !t.checks.hold())
+        throw numerical_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
+                              shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
+                              "): the zone structure changes under the coupling (docs/formulation.md 8(e)), not built");
+    return t;
+}
+
+// The zone ends of a point (the second zone's are 2 outside five zones).
+std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c0, s.start2, s.end2}; }
+}  // namespace
+
+const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
+                                                const tangential_solution& johnson_point, bool checked) {
+    const double Q = johnson_point.Q;
+    current_.reset();
+    previous_.reset();
+    summary_ = coupling_summary{};
+    summary_.lambda_johnson = johnson.lambda;
+    // The source of beta_D p1^(k) for normal solve k + 1: Johnson's point at k = 0 (its zones
+    // workspace outlives this solve: the contact's), then the current iterate.
+    dissimilar_zones* source_zones = &johnson_zones;
+    tangential_solution source = johnson_point;
+    double lambda = johnson.lambda, offset = 0.0;
+    double previous_change = 0.0;
+    for (int k = 1; k <= coupling_max_iterations; ++k) {
+        const double beta = beta_d_;
+        std::function<double(double)> coupled = [source_zones, source, beta](double r) {
+            return beta * source_zones->traction(source, r);
+        };
+        auto next = std::make_unique<iterate>(
+            iterate{normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_), nullptr, nullptr, {}});
+        next->normal.how = johnson.how;
+        next->tangential = std::make_unique<tangential_solver>(next->normal, k1_, k2_, f_, false);
+        next->zones = std::make_unique<dissimilar_zones>(*next->tangential, k1_, beta_d_);
+        next->s = step(*next->zones, source, Q, f_, checked);
+
+        // Iterate, then test: the changes of lambda, e, xi and the zone ends over this step.
+        const double value_change = std::max({std::fabs(next->normal.lambda - lambda),
+                                              std::fabs(next->normal.offset - offset), std::fabs(next->s.xi - source.xi)});
+        double end_change = 0.0;
+        const std::vector<double> a = ends_of(next->s), b = ends_of(source);
+        for (std::size_t i = 0; i < a.size(); ++i) end_change = std::max(end_change, std::fabs(a[i] - b[i]));
+        if (!(std::isfinite(value_change) && std::isfinite(end_change)))
+            throw numerical_error(at_load(Q, f_) + "the alternation gives a non-finite value at step " + std::to_string(k));
+        summary_.changes.push_back(value_change);
+        if (k > 2 && previous_change > 0.0)
+            summary_.contraction = std::max(summary_.contraction, value_change / previous_change);
+
+        // The iterate before the current one is no longer a source: cut its reference (its G is
+        // never asked again; asking would be a bug, so it throws) and release it.
+        if (current_) current_->normal.tangential_term = [](double) -> double {
+            throw numerical_error("full coupling: a released iterate's G was asked for");
+        };
+        previous_ = std::move(current_);
+        current_ = std::move(next);
+        source_zones = current_->zones.get();
+        source = current_->s;
+        lambda = current_->normal.lambda;
+        offset = current_->normal.offset;
+        summary_.iterations = k;
+
+        if (value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance) {
+            summary_.offset = offset;
+            const double johnson_max = pressure_maximum(johnson);
+            summary_.pressure_max_change = (pressure_maximum(current_->normal) - johnson_max) / johnson_max;
+            return current_->s;
+        }
+        // Growing changes after the first steps: the alternation does not contract here.
+        if (k > 3 && value_change > previous_change && previous_change > summary_.changes[k - 3]) {
+            std::ostringstream msg;
+            msg.precision(3);
+            msg << at_load(Q, f_) << "the alternation does not contract (changes " << summary_.changes[k - 3] << ", "
+                << previous_change << ", " << value_change << "; docs/formulation.md 8(e))";
+            throw numerical_error(msg.str());
+        }
+        previous_change = value_change;
+    }
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations
+        << " steps (last change " << previous_change << "; docs/formulation.md 8(e))";
+    throw numerical_error(msg.str());
+}
+
+}  // namespace roughroll
