@@ -65,15 +65,15 @@ void bind_batch(py::module_& m) {
     m.def(
         "solve_all",
         [](const std::vector<std::pair<scene, std::optional<double>>>& items, int threads, std::optional<int> n,
-           std::optional<std::string> method, std::optional<std::string> zones) {
+           std::optional<std::string> method, std::optional<std::string> zones, std::optional<double> friction) {
             if (threads < 1 || threads > 1024) throw input_error("threads must lie in [1, 1024]");
             std::vector<job> jobs;
             jobs.reserve(items.size());
             for (const auto& [s, Q] : items) jobs.push_back({s, Q});
             py::gil_scoped_release release;
-            return solve_all(jobs, threads, {n, method, zones});
+            return solve_all(jobs, threads, {n, method, zones, friction});
         },
-        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"), py::arg("zones"));
+        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"));
 }
 
 }  // namespace roughroll::python

@@ -26,6 +26,7 @@ struct solver_keywords {
     std::optional<int> n;
     std::optional<std::string> method;
     std::optional<std::string> zones;
+    std::optional<double> friction;  // over the scene's friction, as --friction
 };
 
 // One point of a scene as `roughroll point SCENE --json` prints it (compact), with the

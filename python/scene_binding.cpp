@@ -108,6 +108,7 @@ py::object physical_dict(const scene& s) {
 
 scene overridden(scene s, const solver_keywords& k) {
     override_solver(s, k.n, k.method, k.zones);
+    override_friction(s, k.friction, "friction");
     return s;
 }
 
@@ -231,19 +232,19 @@ void bind_scene(py::module_& m) {
         .def(
             "point_json",
             [](const scene& s, std::optional<double> Q, std::optional<int> n, std::optional<std::string> method,
-               std::optional<std::string> zones) {
+               std::optional<std::string> zones, std::optional<double> friction) {
                 py::gil_scoped_release release;
-                return point_json(s, Q, {n, method, zones});
+                return point_json(s, Q, {n, method, zones, friction});
             },
-            py::arg("Q"), py::arg("n"), py::arg("method"), py::arg("zones"))
+            py::arg("Q"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"))
         .def(
             "curve",
             [](const scene& s, std::optional<std::vector<double>> loads, int points, bool sweep, std::optional<int> n,
-               std::optional<std::string> method, std::optional<std::string> zones) {
+               std::optional<std::string> method, std::optional<std::string> zones, std::optional<double> friction) {
                 curve_columns c;
                 {
                     py::gil_scoped_release release;
-                    c = solve_curve(overridden(s, {n, method, zones}), loads, points, sweep);
+                    c = solve_curve(overridden(s, {n, method, zones, friction}), loads, points, sweep);
                 }
                 py::dict d;
                 d["Q"] = array_of(c.Q);
@@ -268,15 +269,16 @@ void bind_scene(py::module_& m) {
                 }
                 return d;
             },
-            py::arg("loads"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"), py::arg("zones"))
+            py::arg("loads"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"), py::arg("zones"),
+            py::arg("friction"))
         .def(
             "traction",
             [](const scene& s, std::optional<double> Q, std::vector<double> r, std::optional<int> n,
-               std::optional<std::string> method, std::optional<std::string> zones) {
+               std::optional<std::string> method, std::optional<std::string> zones, std::optional<double> friction) {
                 traction_columns t;
                 {
                     py::gil_scoped_release release;
-                    t = solve_traction(overridden(s, {n, method, zones}), Q, std::move(r));
+                    t = solve_traction(overridden(s, {n, method, zones, friction}), Q, std::move(r));
                 }
                 py::dict d;
                 d["point"] = t.point;
@@ -288,7 +290,7 @@ void bind_scene(py::module_& m) {
                 d["c0_distribution"] = t.c0_level;
                 return d;
             },
-            py::arg("Q"), py::arg("r"), py::arg("n"), py::arg("method"), py::arg("zones"));
+            py::arg("Q"), py::arg("r"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"));
 }
 
 }  // namespace roughroll::python

@@ -156,7 +156,7 @@ class Scene:
                         doc="A physical scene's E, nu, R1, R2, P2, P1, width rule, a_H and k, t of (2.10); "
                             "None for a dimensionless scene.")
 
-    def point(self, Q=None, *, method=None, n=None, zones=None):
+    def point(self, Q=None, *, method=None, n=None, zones=None, friction=None):
         """One creep point for the load ``Q`` (default: the scene's Q), as ``roughroll point``.
 
         The normal problem (3.19)-(3.20) gives P_H/P2 and the pressure; the tangential problem
@@ -165,17 +165,18 @@ class Scene:
         solved for the half-width a that carries P2 (docs/formulation.md 2(j)).  ``method``
         ('extrapolated', 'product', 'paper', 'one-parameter'), ``n`` and ``zones`` ('auto',
         'single', 'general': how the stick and slip zones are found, docs/formulation.md section 7)
-        override the scene's [solver] as --method, --n and --zones do.  Returns a Point whose
-        to_dict() is the program's JSON.
+        override the scene's [solver] as --method, --n and --zones do, and ``friction`` the scene's
+        friction coefficient as --friction does (checked as the scene's key; the load is then
+        checked against it).  Returns a Point whose to_dict() is the program's JSON.
         """
-        return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method), _zones(zones)))
+        return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method), _zones(zones), _real(friction, "friction")))
 
-    def points(self, loads, *, method=None, n=None, zones=None, threads=1):
+    def points(self, loads, *, method=None, n=None, zones=None, friction=None, threads=1):
         """Points for many loads, on ``threads`` threads (see roughroll.solve): the same numbers
         as ``[self.point(Q) for Q in loads]``."""
-        return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n, zones=zones)
+        return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n, zones=zones, friction=friction)
 
-    def curve(self, loads=None, *, points=51, sweep=False, method=None, n=None, zones=None):
+    def curve(self, loads=None, *, points=51, sweep=False, method=None, n=None, zones=None, friction=None):
         """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
 
         Without ``loads``: ``points`` loads Q/f = 1 - (1 - u)^2, u uniform on [0, 1], each solved
@@ -203,13 +204,13 @@ class Scene:
             loads = _numbers(loads, "loads").tolist()
         # Beyond C++'s int the library's own check answers (its message names no number).
         points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
-        c = self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method), _zones(zones))
+        c = self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))
         for line in c.pop("_refused"):
             warnings.warn(line, RefusedPointWarning, stacklevel=2)
         c["status"] = np.array(c["status"], dtype=str)
         return c
 
-    def traction(self, Q=None, *, r=None, points=401, method=None, n=None, zones=None):
+    def traction(self, Q=None, *, r=None, points=401, method=None, n=None, zones=None, friction=None):
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.
 
         Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
@@ -225,7 +226,7 @@ class Scene:
             r = [(2 * i - (points - 1)) / (points - 1) for i in range(points)]
         else:
             r = _numbers(r, "r").tolist()
-        t = self._core.traction(_real(Q, "Q"), r, _nodes(n), _method(method), _zones(zones))
+        t = self._core.traction(_real(Q, "Q"), r, _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))
         t["point"] = Point._from_json(t["point"])
         t["f_p"] = t["point"].f * t["p"]
         return t
@@ -258,13 +259,13 @@ def _as_scene(s):
     raise TypeError(f"a scene is a Scene, a dict or a path, not {type(s).__name__}")
 
 
-def point(scene, Q=None, *, method=None, n=None, zones=None):
+def point(scene, Q=None, *, method=None, n=None, zones=None, friction=None):
     """One creep point of ``scene`` (a Scene, a dict of scene keys or a scene file's path):
     ``Scene.point``, the program's ``roughroll point``."""
-    return _as_scene(scene).point(Q, method=method, n=n, zones=zones)
+    return _as_scene(scene).point(Q, method=method, n=n, zones=zones, friction=friction)
 
 
-def solve(items, *, threads=1, method=None, n=None, zones=None):
+def solve(items, *, threads=1, method=None, n=None, zones=None, friction=None):
     """Many creep points, on ``threads`` threads (C++ std::thread, the GIL released).
 
     ``items``: scenes (Scene, dict or path; the scene's Q) or pairs (scene, Q).  Returns the
@@ -285,7 +286,7 @@ def solve(items, *, threads=1, method=None, n=None, zones=None):
         else:
             s, Q = item, None
         jobs.append((_as_scene(s)._core, _real(Q, "Q")))
-    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones))]
+    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))]
 
 
 def roughness(spec, *, base_dir="."):

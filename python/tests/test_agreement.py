@@ -33,6 +33,8 @@ POINTS = [
     ("leading-slip.toml", ["--zones", "single"], {"zones": "single"}),
     ("fig2a-T1.toml", ["--zones", "general", "--method", "product", "--n", "48"],
      {"zones": "general", "method": "product", "n": 48}),
+    # The friction over the scene's (Q = 0.15 stays: Q/f = 0.25).
+    ("fig2a-T1.toml", ["--friction", "0.6"], {"friction": 0.6}),
 ]
 
 
@@ -86,7 +88,8 @@ def as_float(column):
     ("fig2a-T1.toml", ["--points", "9", "--sweep", "--method", "product"], {"points": 9, "sweep": True, "method": "product"}),
     ("fig2a-T0.5.toml", ["--points", "7", "--method", "paper", "--n", "30"], {"points": 7, "method": "paper", "n": 30}),
     ("steel-rollers.toml", ["--points", "5", "--sweep"], {"points": 5, "sweep": True}),
-], ids=["given-loads", "swept", "paper", "physical"])
+    ("fig2a-T1.toml", ["--points", "5", "--friction", "0.45"], {"points": 5, "friction": 0.45}),
+], ids=["given-loads", "swept", "paper", "physical", "friction"])
 def test_curve_equals_program_csv(name, args, kw):
     status, out, err = run("curve", DATA / name, *args)
     assert status == 0, err
@@ -213,3 +216,27 @@ def test_roughness_equals_program_json():
     keys = tomllib.loads(spec.read_text())
     from_dict = roughroll.roughness(keys, base_dir=spec.parent)
     assert {k: v for k, v in from_dict.items() if k != "spec"} == {k: v for k, v in expected.items() if k != "spec"}
+
+
+def test_friction_keyword_is_the_scene_with_that_friction(tmp_path):
+    # friction= replaces the scene's key: the same point as a scene file with that friction.
+    text = (DATA / "fig2a-T1.toml").read_text().replace("friction = 0.3", "friction = 0.6")
+    assert "friction = 0.6" in text
+    path = tmp_path / "f06.toml"
+    path.write_text(text)
+    a = roughroll.read_scene(DATA / "fig2a-T1.toml").point(friction=0.6, n=32, method="product").to_dict()
+    b = roughroll.read_scene(path).point(n=32, method="product").to_dict()
+    assert without_seconds(a) == without_seconds(b)
+    assert a["f"] == 0.6
+
+
+@pytest.mark.parametrize("friction,error,text", [
+    (0.0, roughroll.InputError, "friction 0 is outside"),
+    (math.nan, roughroll.InputError, "friction nan is outside"),
+    (0.1, roughroll.InputError, "slide"),  # the scene's Q = 0.15 above the new f
+    ("0.3", TypeError, "friction must be a number"),
+])
+def test_friction_keyword_refuses_bad_values(friction, error, text):
+    with pytest.raises(error, match=text):
+        roughroll.point(DATA / "fig2a-T1.toml", friction=friction)
+

@@ -371,10 +371,10 @@ double load_of(const scene& s, std::optional<double> override) {
     return *Q;
 }
 
-void override_friction(scene& s, std::optional<double> friction) {
+void override_friction(scene& s, std::optional<double> friction, const std::string& name) {
     if (!friction) return;
     const std::string range = friction_problem(*friction);
-    if (!range.empty()) throw input_error("--friction " + range);
+    if (!range.empty()) throw input_error(name + " " + range);
     s.friction = *friction;
 }
 

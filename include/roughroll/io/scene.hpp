@@ -77,6 +77,7 @@ double load_of(const scene& s, std::optional<double> override);
 // The command line's --friction over the scene's friction (nothing when not given), checked
 // as the scene's key is: in [min_friction, max_friction]. The load is checked against it by
 // load_of, so a scene's Q above the new f is refused there (--Q may give another).
-void override_friction(scene& s, std::optional<double> friction);
+// `name`: how the caller spells it in the one-line refusal ("friction" from Python).
+void override_friction(scene& s, std::optional<double> friction, const std::string& name = "--friction");
 
 }  // namespace roughroll
