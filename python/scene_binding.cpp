@@ -139,14 +139,13 @@ tangential_solution with_creep(tangential_solution t, double xi) {
 }
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
-    const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver, s.materials);
-    const std::vector<curve_point> curve =
-        sweep ? swept_curve(c, points) : creep_curve(c, loads ? *loads : curve_loads(points, s.friction, s.materials.beta_d));
+    const scene_curve c = curve_of(std::move(s), loads, points, sweep);
     curve_columns out;
-    out.physical = width.has_value();
+    out.physical = c.settled.physical.has_value();
     const double nan = std::nan("");
-    for (const curve_point& row : curve) {
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        const curve_point& row = c.rows[i];
+        const std::optional<contact_width> width = out.physical ? std::optional<contact_width>(c.widths[i]) : std::nullopt;
         const tangential_solution& t = row.solution;
         out.Q.push_back(t.Q);
         out.Q_over_f.push_back(t.Q / t.f);
@@ -168,12 +167,12 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
                 // As write_curve_csv: P1 of the given load (NaN on a swept curve), Carter's xi1 at
                 // what was given, xi1 (the refused creep) NaN.
                 const bool at_Q = !std::isnan(t.Q);
-                const std::optional<si_point> si = si_of(s, width, with_creep(t, 0.0));
+                const std::optional<si_point> si = si_of(c.settled, width, with_creep(t, 0.0));
                 out.P1.push_back(at_Q ? si->P1 : nan);
                 out.xi1.push_back(nan);
                 out.xi1_carter.push_back(si->xi1_carter);
             }
-        } else if (const std::optional<si_point> si = si_of(s, width, t)) {
+        } else if (const std::optional<si_point> si = si_of(c.settled, width, t)) {
             out.P1.push_back(si->P1);
             out.xi1.push_back(si->xi1);
             out.xi1_carter.push_back(si->xi1_carter);

@@ -249,7 +249,9 @@ expect beta-d-nan "beta_d = nan must be finite" -- point "$dir/betanan.toml"
 expect beta-d-type "'beta_d' must be a number" -- point "$dir/betatype.toml"
 expect coupling-unknown "unknown coupling 'strong'" -- point "$dir/coupling.toml"
 expect coupling-type "toml: 'coupling' must be a string" -- point "$dir/couplingtype.toml"
-expect coupling-full-physical "\"full\" for a physical scene (a given load" -- point "$dir/pairfull.toml"
+# A physical scene at full coupling settles a width per load (the curve's rows too): a sweep in c0
+# is refused as for every beta_d != 0, before any width is searched.
+expect coupling-full-physical-sweep "a curve swept in c0" -- curve "$dir/pairfull.toml" --sweep --points 3
 expect beta-one-parameter "not available for method 'one-parameter'" -- point "$dir/betaoneparam.toml"
 expect beta-zones-single "zones 'single' with beta_d != 0" -- point "$dir/betasingle.toml"
 scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"

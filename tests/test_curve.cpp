@@ -255,7 +255,7 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
     const std::vector<double> loads = curve_loads(7, f);
     const std::vector<curve_point> curve = creep_curve(c, loads);
     std::ostringstream out;
-    write_curve_csv(out, curve, si_context{*s.physical, *width});
+    write_curve_csv(out, curve, si_context{*s.physical, std::vector<contact_width>(curve.size(), *width)});
     std::istringstream in(out.str());
     std::string line;
     std::getline(in, line);

@@ -6,9 +6,15 @@
 //   - lambda, e and xi converge in n (the projected right side; the point values of p1 at the
 //     collocation points left lambda erratic at 4e-5, 8(e));
 //   - exchanging the rollers (beta_D -> -beta_D) with Q -> -Q gives xi -> -xi, the same pressure;
-//   - beta_D = 0 is today's problem bit for bit (DissimilarProduct.BetaZeroIsTodaysProblemForEveryMethod).
+//   - beta_D = 0 is today's problem bit for bit (DissimilarProduct.BetaZeroIsTodaysProblemForEveryMethod);
+//   - a physical scene's width follows the load at full coupling: lambda(a) = (a/a_H)^2 with the
+//     coupled lambda, checked on a contact built apart at the width found; to first order in beta_D,
+//     lambda - lambda_J = -beta_D int p1_J r/sqrt(1 - r^2) with Johnson's traction p1_J (8(c)),
+//     integrated by GSL's QAWS, and the remainder falls like beta_D^2; the rollers exchanged with
+//     Q -> -Q keep the width; a curve settles each row's width at its load.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -17,6 +23,8 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
+#include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
 
 using namespace roughroll;
@@ -119,3 +127,111 @@ TEST(FullCoupling, FreeRollingAgainstContact) {
     EXPECT_GT(std::fabs(-scale * j.xi - 0.000429), 0.5e-6);
 }
 
+
+namespace {
+// Bentall and Johnson's pair as data/aluminium-on-steel.toml gives it (a_H = 0.1 mm), at full
+// coupling, n = 32 (`product`); `swap` exchanges the rollers, `rough` puts the layer of
+// data/aluminium-on-steel-rough.toml on the aluminium roller (by its k, t: (2.11)-(2.14)).
+scene pair(bool swap = false, const std::string& layer = "") {
+    const std::string al = "shear_modulus = 23e9\npoisson = 0.31\n", st = "shear_modulus = 82e9\npoisson = 0.28\n";
+    const std::string one = swap ? st : al, two = swap ? al : st;
+    const std::string layer1 = swap ? "" : layer, layer2 = swap ? layer : "";
+    return parse_scene("R1 = 0.05\nR2 = 0.05\nP2 = 16201.924377003961\nfriction = 0.05\ncoupling = \"full\"\n"
+                       "[solver]\nn = 32\nmethod = \"product\"\n[cylinder1]\n" + one + layer1 +
+                       "[cylinder2]\n" + two + layer2,
+                       "pair.toml", ".");
+}
+const std::string rough_layer = "[cylinder1.normal]\nk = 5.0e14\nt = 1.0e6\n";  // set below for either roller
+
+// The dimensionless contact of a physical scene at its width, built apart from settle_width.
+contact at_width(const scene& s, double a, coupling_level level) {
+    return contact(roughness_at(*s.physical, a), s.friction, s.solver, dissimilar{dundurs_beta(*s.physical), level});
+}
+
+// int_{-1}^{1} g(r) r / sqrt(1 - r^2) dr by QAWS (weight (1 - r)^(-1/2) (1 + r)^(-1/2)).
+double moment(const std::function<double(double)>& g) {
+    gsl_function F{[](double r, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(r) * r; },
+                   const_cast<std::function<double(double)>*>(&g)};
+    gsl_integration_qaws_table* t = gsl_integration_qaws_table_alloc(-0.5, -0.5, 0, 0);
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
+    double result = 0.0, error = 0.0;
+    const int status = gsl_integration_qaws(&F, -1.0, 1.0, t, 1e-13, 1e-12, 4000, w, &result, &error);
+    gsl_integration_workspace_free(w);
+    gsl_integration_qaws_table_free(t);
+    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && error < 1e-11)) << error;
+    return result;
+}
+}  // namespace
+
+// The smooth pair: Johnson's level is at Hertz's width (lambda = 1), full coupling is not.
+TEST(FullCouplingPhysical, WidthCarriesTheLoadAtTheCoupledLambda) {
+    for (const double Q : {-0.75 * f, -0.5 * f}) {
+        scene s = pair();
+        const contact_width w = *settle_width(s, nullptr, Q);
+        const double x = w.a / w.a_hertz;
+        EXPECT_GT(std::fabs(x - 1.0), 1e-5) << Q;
+        EXPECT_GT(w.iterations, 0) << Q;
+        EXPECT_DOUBLE_EQ(w.load, s.physical->P2);
+        contact c = at_width(s, w.a, coupling_level::full);
+        c.point(Q);
+        EXPECT_NEAR(c.normal().lambda, x * x, 1e-12) << Q;
+        EXPECT_NEAR(w.lambda, x * x, 1e-15) << Q;
+    }
+}
+
+// lambda - 1 = -beta_D int p1 r/sqrt(1 - r^2) (8(c), smooth: no J term) with the coupled p1; with
+// Johnson's p1_J instead the remainder is beta_D int (p1 - p1_J) r/sqrt(...) = O(beta_D^2): halving
+// beta_D (a fictitious pair, the dimensionless contact) divides it by about 4 (3 to 5 allowed: the
+// next order). (lambda - 1 itself is not linear in beta_D: p1_J depends on beta_D.)
+TEST(FullCouplingPhysical, CoupledLambdaToFirstOrderInBeta) {
+    const double Q = -0.75 * f;
+    double remainder[2], shift[2];
+    for (int i = 0; i < 2; ++i) {
+        const double beta = beta_al_st / (1 << i);
+        contact c(roughness{}, f, solver_options{64, method::product}, dissimilar{beta, coupling_level::full});
+        contact j(roughness{}, f, solver_options{64, method::product}, dissimilar{beta, coupling_level::johnson});
+        c.point(Q);
+        const tangential_solution sj = j.point(Q);
+        const double first = -beta * moment([&](double r) { return j.traction(sj, r); });
+        shift[i] = c.normal().lambda - 1.0;
+        remainder[i] = shift[i] - first;
+        EXPECT_LT(std::fabs(remainder[i]), 0.5 * std::fabs(shift[i])) << beta;
+    }
+    std::printf("lambda - 1 = %.6g, %.6g; remainder beyond first order %.6g, %.6g\n", shift[0], shift[1],
+                remainder[0], remainder[1]);
+    EXPECT_GT(remainder[0] / remainder[1], 3.0);
+    EXPECT_LT(remainder[0] / remainder[1], 5.0);
+}
+
+// Roller 1 and 2 exchanged with Q -> -Q (RollersExchanged above): the same pressure, so the same
+// width; also with a rough layer on the aluminium roller, where Johnson's width is not Hertz's.
+TEST(FullCouplingPhysical, RollersExchangedKeepTheWidth) {
+    for (const std::string& layer : {std::string(), rough_layer}) {
+        scene a = pair(false, layer), b = pair(true, layer == rough_layer ? "[cylinder2.normal]\nk = 5.0e14\nt = 1.0e6\n" : "");
+        const contact_width wa = *settle_width(a, nullptr, -0.75 * f), wb = *settle_width(b, nullptr, 0.75 * f);
+        EXPECT_NEAR(wa.a / wb.a, 1.0, 1e-11) << layer;
+        scene j = pair(false, layer);
+        j.materials.coupling = coupling_level::johnson;
+        const contact_width wj = *settle_width(j);
+        EXPECT_GT(std::fabs(wa.a / wj.a - 1.0), 1e-6) << layer;
+        std::printf("%s: a/a_H = %.15g at full coupling (%d steps), %.15g at Johnson's level (%d)\n",
+                    layer.empty() ? "smooth" : "rough", wa.a / wa.a_hertz, wa.iterations, wj.a / wj.a_hertz, wj.iterations);
+        contact c = at_width(a, wa.a, coupling_level::full);
+        c.point(-0.75 * f);
+        EXPECT_NEAR(c.normal().lambda, (wa.a / wa.a_hertz) * (wa.a / wa.a_hertz), 1e-12) << layer;
+    }
+}
+
+// A curve of a physical scene at full coupling settles each row's width at the row's load, as a
+// point does; the widths differ between the loads.
+TEST(FullCouplingPhysical, CurveRowsHaveTheirOwnWidths) {
+    const std::vector<double> loads{-0.75 * f, -0.5 * f};
+    const scene_curve c = curve_of(pair(), loads, 0, false);
+    ASSERT_EQ(c.rows.size(), 2u);
+    ASSERT_EQ(c.widths.size(), 2u);
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        scene s = pair();
+        EXPECT_EQ(c.widths[i].a, settle_width(s, nullptr, loads[i])->a) << i;
+    }
+    EXPECT_GT(std::fabs(c.widths[0].a / c.widths[1].a - 1.0), 1e-6);
+}

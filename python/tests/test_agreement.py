@@ -112,6 +112,24 @@ def assert_curve_equal(got, expected):
             np.testing.assert_array_equal(got[key], as_float(column), err_msg=key)
 
 
+# A physical pair at full coupling: the width follows the tangential load, a width per point and
+# per curve row (docs/formulation.md 8(e)); the curve's row at Q = -f is refused (its estimate),
+# the one at Q = f is not: both rows' SI columns agree.
+def test_physical_full_coupling_equals_program(tmp_path):
+    text = (DATA / "aluminium-on-steel.toml").read_text().replace('coupling = "johnson"', 'coupling = "full"')
+    path = tmp_path / "pair-full.toml"
+    path.write_text(text + '[solver]\nn = 32\nmethod = "product"\n')
+    expected = cli_json("point", path, "--json")
+    got = roughroll.read_scene(path).point().to_dict()
+    assert without_seconds(got) == without_seconds(expected)
+    assert got["si"]["a_over_a_hertz"] != 1.0
+    status, out, err = run("curve", path, "--points", "2")
+    assert status == 3, err
+    curve = roughroll.read_scene(path).curve(points=2)
+    assert_curve_equal(curve, read_csv(out))
+    assert curve["status"].tolist() == ["refused", "ok"]
+
+
 # A curve with refused points (issue 10's leftover): a very stiff normal layer at n = 16, where
 # some loads have no honest error estimate. The program exits 3 with one stderr line per
 # refused row; the module gives the same rows (NaN where the CSV is empty) and warns the same

@@ -83,8 +83,6 @@ ROWS = [
     ("physical-nu-range", PHYSICAL.replace("nu = 0.3", "nu = 0.7"), {}, I),
     ("beta-d-bound", "beta_d = 0.75\n" + GOOD, {}, I),
     ("coupling-unknown", 'coupling = "strong"\n' + GOOD, {}, I),
-    ("coupling-full-physical", 'coupling = "full"\n' + PHYSICAL.replace("E = 210e9\nnu = 0.3\n", "")
-     + "[cylinder1]\nshear_modulus = 23e9\npoisson = 0.31\n[cylinder2]\nshear_modulus = 82e9\npoisson = 0.28\n", {}, I),
     ("pair-poisson-range", PHYSICAL.replace("E = 210e9\nnu = 0.3\n", "")
      + "[cylinder1]\nshear_modulus = 23e9\npoisson = 0.6\n[cylinder2]\nshear_modulus = 82e9\npoisson = 0.28\n", {}, I),
     ("pair-and-E", PHYSICAL + "[cylinder1]\nshear_modulus = 23e9\npoisson = 0.3\n[cylinder2]\nshear_modulus = 82e9\npoisson = 0.28\n", {}, I),

@@ -83,7 +83,7 @@ int run_convergence(const convergence_options& o) {
     output_file csv_file(csv, s.files), script_file(script, s.files);
     for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
 
-    settle_width(s);  // a physical scene: the roughness at the width for its load
+    settle_width(s, nullptr, Q);  // a physical scene: the roughness at the width for its load
     if (s.surfaces.smooth())
         throw input_error("the scene is smooth (no roughness term" + std::string(s.physical ? " at its width" : "") +
                           "): every method gives Carter's closed form exactly at every n, nothing to converge");

@@ -107,11 +107,10 @@ int run_curve(const scene_options& o, int points, bool sweep, const std::string&
     // The output, checked and opened before any work; written whole or not at all.
     std::optional<output_file> file;
     if (!csv.empty()) file.emplace(csv, s.files);
-    const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver, s.materials);
-    const auto curve = sweep ? swept_curve(c, points) : creep_curve(c, curve_loads(points, s.friction, s.materials.beta_d));
+    const scene_curve c = curve_of(std::move(s), std::nullopt, points, sweep);
+    const std::vector<curve_point>& curve = c.rows;
     std::optional<si_context> si;
-    if (width) si = si_context{*s.physical, *width};
+    if (c.settled.physical) si = si_context{*c.settled.physical, c.widths};
     if (!file) {
         write_curve_csv(std::cout, curve, si);
     } else {

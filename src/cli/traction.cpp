@@ -224,7 +224,7 @@ int run_traction(const traction_options& o) {
     for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
 
     const double Q = load_of(s, o.Q);
-    const std::optional<contact_width> width = settle_width(s);
+    const std::optional<contact_width> width = settle_width(s, nullptr, Q);
     contact c(s.surfaces, s.friction, s.solver, s.materials);
     const tangential_solution solution = c.point(Q);
     const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi

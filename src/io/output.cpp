@@ -1,5 +1,7 @@
 #include "roughroll/io/output.hpp"
 
+#include <stdexcept>
+
 #include <cmath>
 
 #include "roughroll/model/carter.hpp"
@@ -166,7 +168,11 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
            "Q_error_estimate,zones,stick_start"
         << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",status\n";
-    for (const auto& row : curve) {
+    if (si && si->widths.size() != curve.size())
+        throw std::invalid_argument("write_curve_csv: " + std::to_string(si->widths.size()) + " widths for " +
+                                    std::to_string(curve.size()) + " rows");
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+        const curve_point& row = curve[i];
         const auto& s = row.solution;
         if (row.is_refused()) {
             // Only what was given: the load Q (creep_curve), or the stick end c0 (swept_curve),
@@ -179,7 +185,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
                 // xi1 is the refused creep; P1 depends on the given load alone, Carter's xi1 on
                 // Carter's load at what was given (Q, or Carter's Q at the same c0).
                 const double smooth_Q = at_Q ? s.Q : carter_at_stick_end(s.c0, s.f).Q;
-                const si_point p = to_si(si->scene, si->width, smooth_Q, s.f, 0.0, 0.0);
+                const si_point p = to_si(si->scene, si->widths[i], smooth_Q, s.f, 0.0, 0.0);
                 out << ',' << cell(at_Q, p.P1) << ",," << shortest(p.xi1_carter);
             }
             out << ",refused\n";
@@ -194,7 +200,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << ",,";
         out << ',' << solution_zones(s).size() << ',' << shortest(s.start);
         if (si) {
-            const si_point p = to_si(si->scene, si->width, s.Q, s.f, s.c0, s.xi);
+            const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
         }
         out << ",ok\n";

@@ -343,13 +343,6 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
         } catch (const input_error& e) {
             fail(source, quoted("coupling") + ": " + e.what());
         }
-        // A given load needs the width to follow it at each normal solve of the alternation
-        // (docs/formulation.md 8(e) item 4, 2(j)): not built.
-        if (physical && s.materials.coupling == coupling_level::full && s.materials.beta_d != 0.0)
-            fail(source, quoted("coupling") + ": \"full\" for a physical scene (a given load, beta_d = " +
-                             shortest(s.materials.beta_d) +
-                             ") is not built yet: the width must follow the load at each normal solve "
-                             "(docs/formulation.md 8(e)); use \"johnson\", or a dimensionless scene");
     }
     s.solver = read_solver(root, source);
     return s;

@@ -17,16 +17,35 @@ void override_solver(scene& s, std::optional<int> n, const std::optional<std::st
     if (zones_name) s.solver.zones = zone_search_from_string(*zones_name);
 }
 
-std::optional<contact_width> settle_width(scene& s, normal_cache* cache) {
+bool width_follows_tangential_load(const scene& s) {
+    return s.physical && s.physical->width == width_rule::given_load && s.materials.beta_d != 0.0 &&
+           s.materials.coupling == coupling_level::full;
+}
+
+std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::optional<double> Q) {
     if (!s.physical) return std::nullopt;
     // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone),
     // searched on the method's cheap level n/2 first and polished at the scene's method; the
     // trials share their product-integration workspaces (collocation.hpp).
     normal_cache own;
     normal_cache* shared = cache ? cache : &own;
-    const contact_width w = find_width(
-        *s.physical, [&s, shared](const roughness& r) { return load_ratio(r, s.solver, shared); },
-        [&s, shared](const roughness& r) { return coarse_load_ratio(r, s.solver, shared); });
+    const auto pressure_alone = [&s, shared](const roughness& r) { return load_ratio(r, s.solver, shared); };
+    contact_width w;
+    if (width_follows_tangential_load(s)) {
+        if (!Q) throw input_error("the width of a physical scene at full coupling follows the tangential load: give Q");
+        // Full coupling: lambda of the coupled point at Q (docs/formulation.md 8(e)); Johnson's
+        // level (the pressure alone) is the cheap level whose root starts the secant polish.
+        const double load = *Q;
+        w = find_width(
+            *s.physical,
+            [&s, shared, load](const roughness& r) {
+                return coupled_load_ratio(r, s.friction, s.solver, s.materials, load, shared);
+            },
+            pressure_alone, true);
+    } else {
+        w = find_width(*s.physical, pressure_alone,
+                       [&s, shared](const roughness& r) { return coarse_load_ratio(r, s.solver, shared); });
+    }
     s.surfaces = roughness_at(*s.physical, w.a);
     return w;
 }
@@ -43,10 +62,10 @@ point_report scene_point::report() const {
 }
 
 namespace {
-// The contact of a scene whose width is settled first (the scene is modified in place).
-contact settled_contact(scene& s, std::optional<contact_width>& width) {
+// The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
+contact settled_contact(scene& s, std::optional<contact_width>& width, double Q) {
     normal_cache cache;
-    width = settle_width(s, &cache);
+    width = settle_width(s, &cache, Q);
     return contact(s.surfaces, s.friction, s.solver, s.materials, &cache);
 }
 }  // namespace
@@ -55,11 +74,46 @@ scene_point solve_point(scene s, std::optional<double> Q_option) {
     const double Q = load_of(s, Q_option);
     const auto start = std::chrono::steady_clock::now();
     std::optional<contact_width> width;
-    contact c = settled_contact(s, width);
+    contact c = settled_contact(s, width, Q);
     const tangential_solution solution = c.point(Q);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::optional<error_estimate> estimate = c.estimate(solution);
     return {std::move(s), width, std::move(c), solution, seconds, estimate};
+}
+
+scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
+    const std::vector<double> Qs = loads ? *loads : curve_loads(points, s.friction, s.materials.beta_d);
+    if (!width_follows_tangential_load(s)) {
+        const std::optional<contact_width> width = settle_width(s);
+        contact c(s.surfaces, s.friction, s.solver, s.materials);
+        std::vector<curve_point> rows = sweep ? swept_curve(c, points) : creep_curve(c, Qs);
+        std::vector<contact_width> widths;
+        if (width) widths.assign(rows.size(), *width);
+        return {std::move(s), std::move(rows), std::move(widths)};
+    }
+    // The width follows the load: Johnson's width (the pressure alone) for refused rows, then
+    // each row at its own width.
+    if (sweep) check_sweepable(s.materials);
+    scene johnson = s;
+    johnson.materials.coupling = coupling_level::johnson;
+    const contact_width johnson_width = *settle_width(johnson);
+    scene_curve out{s, {}, {}};
+    for (const double Q : Qs) {
+        scene at = s;
+        normal_cache cache;
+        try {
+            const contact_width w = *settle_width(at, &cache, Q);
+            contact c(at.surfaces, at.friction, at.solver, at.materials, &cache);
+            std::vector<curve_point> row = creep_curve(c, {Q});
+            out.rows.push_back(std::move(row.front()));
+            out.widths.push_back(w);
+            out.settled = std::move(at);
+        } catch (const resolution_error& e) {
+            out.rows.push_back(refused_load(Q, s.friction, e));
+            out.widths.push_back(johnson_width);
+        }
+    }
+    return out;
 }
 
 }  // namespace roughroll

@@ -359,10 +359,14 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked) {
     return limit_ ? limit_->at_stick_end(c0, checked) : tangential_->at_stick_end(c0, checked);
 }
 
-contact::swept_point contact::at_stick_end(double c0) {
-    if (dissimilar_)
+void check_sweepable(const dissimilar& materials) {
+    if (materials.beta_d != 0.0)
         throw input_error("a curve swept in c0 is the paper's single zone, never the answer for beta_d != 0 "
                           "(docs/formulation.md 8(g)); solve at given loads instead");
+}
+
+contact::swept_point contact::at_stick_end(double c0) {
+    check_sweepable(materials_);
     tangential_solution s = level_at_stick_end(c0, true);
     const tangential_solution own = s;
     std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
@@ -708,6 +712,15 @@ double coarse_load_ratio(const roughness& surfaces, const solver_options& option
     return solve_normal(kernel::normal(surfaces), n, level_of(options.how), cache).lambda;
 }
 
+double coupled_load_ratio(const roughness& surfaces, double f, const solver_options& options,
+                          const dissimilar& materials, double Q, normal_cache* cache) {
+    if (materials.beta_d == 0.0 || materials.coupling != coupling_level::full)
+        throw input_error("coupled_load_ratio: the rollers are not dissimilar at full coupling (use load_ratio)");
+    contact c(surfaces, f, options, materials, cache);
+    c.point(Q);
+    return c.normal().lambda;
+}
+
 namespace {
 void check_curve_points(int points) {
     if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
@@ -728,6 +741,10 @@ curve_point refused_row(double Q, double c0, double f, const std::string& at, co
     return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
 }
 }  // namespace
+
+curve_point refused_load(double Q, double f, const resolution_error& why) {
+    return refused_row(Q, std::nan(""), f, "Q = " + shortest(Q) + " (Q/f = " + shortest(Q / f) + ")", why);
+}
 
 std::vector<double> curve_loads(int points, double f) {
     check_curve_points(points);
@@ -780,8 +797,7 @@ std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& load
             const auto e = c.estimate(s);
             rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
         } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
-            rows.push_back(refused_row(Q, std::nan(""), c.friction(),
-                                       "Q = " + shortest(Q) + " (Q/f = " + shortest(Q / c.friction()) + ")", e));
+            rows.push_back(refused_load(Q, c.friction(), e));
         }
     }
     return rows;

@@ -124,13 +124,14 @@ std::optional<root> secant_width(const std::function<double(double)>& F, double 
 }
 
 contact_width search_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
-                           const std::function<double(const roughness&)>& cheap_load_ratio) {
+                           const std::function<double(const roughness&)>& cheap_load_ratio,
+                           bool lambda_has_traction_term) {
     const double a_H = hertz_half_width(s, s.P2);
     // Widths beyond R/10 are refused whatever the kernels: checked before any solve, so that
     // a wide contact is told so rather than sent to a discretisation that cannot resolve it.
     const double x_max = max_width_over_radius * s.radius() / a_H;
     if (!(1.0 <= x_max)) wide_against_radius(s, a_H, "the Hertz half-width a_H");
-    if (smooth(s)) return {a_H, a_H, 1.0, s.P2, 0};  // Hertz exactly, no kernel to solve
+    if (smooth(s) && !lambda_has_traction_term) return {a_H, a_H, 1.0, s.P2, 0};  // Hertz exactly, no kernel to solve
 
     // In x = a/a_H the model carries P2 where lambda(x) = x^2 (the coefficient of (3.19)
     // for a load normalised to P2; docs/formulation.md 2(j)). Failures name the trial width.
@@ -168,8 +169,9 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
 }  // namespace
 
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
-                         const std::function<double(const roughness&)>& cheap_load_ratio) {
-    return small_against_radius(s, search_width(s, load_ratio, cheap_load_ratio));
+                         const std::function<double(const roughness&)>& cheap_load_ratio,
+                         bool lambda_has_traction_term) {
+    return small_against_radius(s, search_width(s, load_ratio, cheap_load_ratio, lambda_has_traction_term));
 }
 
 }  // namespace roughroll

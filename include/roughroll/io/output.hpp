@@ -42,13 +42,13 @@ void write_summary(std::ostream& out, const point_report& r);
 // xi_error_estimate,Q_error_estimate (empty without an estimate; the c0 estimate is 0 on a
 // curve swept in c0, the Q estimate 0 on a curve at given loads),zones (the number of stick and
 // slip zones),stick_start (-1 in the paper's structure); shortest round-trip digits.
-// For a physical scene (`si` given: its scene and contact width) the columns
-// P1_N_per_m,xi1,xi1_carter follow. The last column, status, is `ok` or `refused`: a refused
+// For a physical scene (`si` given: its scene and each row's contact width, one width for all
+// rows but where the width follows the tangential load) the columns P1_N_per_m,xi1,xi1_carter follow. The last column, status, is `ok` or `refused`: a refused
 // row (curve_point, contact.hpp) has only its given load Q with Q_over_f and Carter's columns
 // (P1_N_per_m and xi1_carter too), or its given c0 on a swept curve; every other field is empty.
 struct si_context {
     physical_scene scene;
-    contact_width width;
+    std::vector<contact_width> widths;  // one per row of the curve
 };
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve,
                      const std::optional<si_context>& si = std::nullopt);

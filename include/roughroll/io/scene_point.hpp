@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
@@ -20,11 +21,20 @@ namespace roughroll {
 void override_solver(scene& s, std::optional<int> n, const std::optional<std::string>& method_name,
                      const std::optional<std::string>& zones_name = std::nullopt);
 
+// Whether the contact width of the scene depends on the tangential load: a physical scene of
+// dissimilar rollers at full coupling, whose lambda = P_H/P2 has the term in p1 (docs/formulation.md
+// 8(c), 8(e)). Its width is settled per load; every other scene's width serves every load.
+bool width_follows_tangential_load(const scene& s);
+
 // For a physical scene: the contact width for its load (find_width, with lambda as the
 // scene's method reports it), and s.surfaces set to the roughness (3.26) at that width.
 // Nothing for a dimensionless scene.
 // `cache`: the search's product-integration workspaces, for a contact built at the width found.
-std::optional<contact_width> settle_width(scene& s, normal_cache* cache = nullptr);
+// `Q`: the tangential load P1/P2, required when width_follows_tangential_load (lambda of the fully
+// coupled point at Q, coupled_load_ratio, searched from the width of Johnson's level, which the
+// pressure alone fixes); ignored otherwise.
+std::optional<contact_width> settle_width(scene& s, normal_cache* cache = nullptr,
+                                          std::optional<double> Q = std::nullopt);
 
 // A physical scene's point in SI units (nothing for a dimensionless scene).
 std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t);
@@ -43,5 +53,18 @@ struct scene_point {
 
 // load_of(s, Q), settle_width, the contact and its point for the load, and its estimate.
 scene_point solve_point(scene s, std::optional<double> Q);
+
+// A creep curve of a scene: creep_curve at `loads` (curve_loads(points, ...) when none), or
+// swept_curve of `points` when `sweep`, with each row's contact width for a physical scene.
+struct scene_curve {
+    scene settled;                      // its surfaces at the (last) width settled
+    std::vector<curve_point> rows;
+    std::vector<contact_width> widths;  // a physical scene: one per row, else empty
+};
+// One width for every row, settled once; where the width follows the tangential load
+// (width_follows_tangential_load), a width per row, settled at the row's load. A row whose width
+// search is refused (resolution_error) is a refused row; its width is Johnson's level's, which
+// carries the same load P2 (a refused row reports only P1 and Carter's creep: both depend on P2 alone).
+scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep);
 
 }  // namespace roughroll

@@ -13,7 +13,7 @@
 namespace roughroll {
 
 // johnson: the pressure uncoupled from the tangential traction (one normal solve, 8(e));
-// full: the alternation of 8(e) (not built yet: refused by contact where beta_D != 0).
+// full: the alternation of 8(e) (full_coupling), the width of a physical scene following the load.
 enum class coupling_level { johnson, full };
 
 std::string to_string(coupling_level c);

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/model/carter.hpp"
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -221,6 +222,13 @@ double load_ratio(const roughness& surfaces, const solver_options& options, norm
 // the kernel is beyond the level's resolution.
 double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
 
+// P_H/P2 of dissimilar rollers at full coupling (docs/formulation.md 8(c), 8(e)): lambda =
+// 1 - int p J - beta_D int p1 r/sqrt(1 - r^2) of the converged alternation at the load Q, as
+// contact(surfaces, f, options, materials).point(Q) leaves it in contact::normal() (level n).
+// It depends on Q through p1: the width of a physical scene follows the tangential load too.
+double coupled_load_ratio(const roughness& surfaces, double f, const solver_options& options,
+                          const dissimilar& materials, double Q, normal_cache* cache = nullptr);
+
 // One row of a creep curve: solved, or refused. A refused row is a point the method cannot
 // answer honestly at this n (a resolution_error of contact::point, contact::estimate or
 // contact::at_stick_end: the levels do not converge visibly, a load below the resolution);
@@ -248,6 +256,11 @@ std::vector<double> curve_loads(int points, double f);
 std::vector<double> curve_loads(int points, double f, double beta_d);
 
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads);
+// The row of creep_curve for a load Q refused by `why`.
+curve_point refused_load(double Q, double f, const resolution_error& why);
+
+// A curve swept in c0 is the paper's single zone: input_error for dissimilar rollers (8(g)).
+void check_sweepable(const dissimilar& materials);
 
 // A creep curve swept in c0 from 1 to -1 (rho = (1 + c0)/2 uniform): one linear solve per
 // point, no root search; the loads are Q(c0), dense near f as in curve_loads.
