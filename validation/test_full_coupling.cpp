@@ -113,6 +113,64 @@ TEST(FullCoupling, RollersExchanged) {
     }
 }
 
+// Gross sliding |Q| = f of smooth rollers, where p1 = sigma f p and (D1) is the Carleman equation
+// (1/pi) PV int p(s)/(s - r) ds + k p(r) = -(2/pi) lambda (r + e), k = beta_D sigma f, solved in closed
+// form (docs/formulation.md 8(e), "Gross sliding in closed form"): with delta = atan k, a = 1/2 + delta/pi,
+//   p = C (1 - r)^a (1 + r)^(1 - a),  C = cos(delta)/(2 pi a (1 - a)),
+//   lambda = 1/(1 - 4 delta^2/pi^2),  e = -2 delta/pi,
+// and the slip velocity sigma v = sigma xi + f (2/pi) lambda (r + e) + sigma beta_D (1 + f^2) p >= 0,
+// vanishing at its least point, fixes xi. The alternation converges to it at order 2 (the basis keeps
+// the square root at both edges, the exponents are 1/2 +- delta/pi), and the point's estimate bounds
+// the error at every n.
+TEST(FullCoupling, GrossSlidingAgainstTheClosedForm) {
+    for (const double sigma : {1.0, -1.0}) {
+        const double k = beta_al_st * sigma * f, delta = std::atan(k), a = 0.5 + delta / M_PI;
+        const double C = std::cos(delta) / (2.0 * M_PI * a * (1.0 - a));
+        const double lambda = 1.0 / (1.0 - 4.0 * delta * delta / (M_PI * M_PI)), e = -2.0 * delta / M_PI;
+        const auto p = [&](double r) { return C * std::pow(1.0 - r, a) * std::pow(1.0 + r, 1.0 - a); };
+        const auto sigma_v = [&](double r) { return f * M_2_PI * lambda * (r + e) + sigma * beta_al_st * (1.0 + f * f) * p(r); };
+        // The least point by golden section on a bracket from 20001 samples (v is convex there).
+        double least = -1.0;
+        for (int i = 0; i <= 20000; ++i) {
+            const double r = -1.0 + i / 10000.0;
+            if (sigma_v(r) < sigma_v(least)) least = r;
+        }
+        double lo = std::max(-1.0, least - 1e-4), hi = std::min(1.0, least + 1e-4);
+        for (int i = 0; i < 200; ++i) {
+            const double m1 = hi - 0.6180339887498949 * (hi - lo), m2 = lo + 0.6180339887498949 * (hi - lo);
+            if (sigma_v(m1) < sigma_v(m2))
+                hi = m2;
+            else
+                lo = m1;
+        }
+        const double xi = -sigma * std::min(sigma_v(0.5 * (lo + hi)), sigma_v(-1.0));
+        double previous_lambda_error = 0.0;
+        for (const int n : {32, 64, 128}) {
+            contact c = full(n);
+            const tangential_solution s = c.point(sigma * f);
+            const double lambda_error = std::fabs(c.normal().lambda - lambda);
+            EXPECT_NEAR(c.normal().offset, e, 1e-9) << sigma << " " << n;
+            EXPECT_NEAR(s.xi, xi, 1e-6) << sigma << " " << n;
+            for (double r : {-0.9, -0.4, 0.0, 0.5, 0.95}) EXPECT_NEAR(c.normal().pressure(r), p(r), 1e-5) << r;
+            // Order 2: the error of P_H/P2 falls by about 4 per doubling of n.
+            if (previous_lambda_error > 0.0) {
+                EXPECT_GT(previous_lambda_error / lambda_error, 3.0) << sigma << " " << n;
+            }
+            previous_lambda_error = lambda_error;
+            std::printf("sigma %+g n %3d: lambda error %.3g, xi error %.3g", sigma, n, lambda_error, std::fabs(s.xi - xi));
+            try {  // an estimate bounds the error, or the point is refused
+                const std::optional<error_estimate> est = c.estimate(s);
+                ASSERT_TRUE(est.has_value());
+                std::printf(" (estimates %.3g, %.3g)\n", est->lambda, est->xi);
+                EXPECT_GE(est->lambda, lambda_error) << sigma << " " << n;
+                EXPECT_GE(est->xi, std::fabs(s.xi - xi)) << sigma << " " << n;
+            } catch (const resolution_error& why) {
+                std::printf(" (refused: %s)\n", why.what());
+            }
+        }
+    }
+}
+
 // CONTACT's free rolling of this pair at f = 0.05 with full coupling, |xi1| = 0.000429 as its user
 // guide is quoted (docs/reproduction.md), with xi1 = (pi a/(2R)) xi, a/R = 0.1/25 (8(f)): full coupling
 // rounds to it at n = 32, Johnson's level does not (0.000428), and the two differ by more than

@@ -292,7 +292,10 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     while (levels_[self] != nullptr) ++self;
     const bool extrapolated = reported_ != nullptr;
     const reported_value which{self, extrapolated};
-    const int order = level_method() == method::product ? 4 : 2;
+    // Full coupling converges at order 2 at best, whatever the level method: the exponents at the
+    // edges shift with the coupling (p ~ (1 - r)^(1/2 + delta/pi) at gross sliding, 8(e)'s closed form,
+    // against which P_H/P2 and xi converge as n^-2), and the basis keeps the square root.
+    const int order = coupled_ ? 2 : level_method() == method::product ? 4 : 2;
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
     auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
     const rounding_floors floor = floors_at(finest_n, s, own);
@@ -555,7 +558,10 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
             at[i] = levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
         }
     }
-    const int order = level_method() == method::product ? 4 : 2;
+    // Full coupling converges at order 2 at best, whatever the level method: the exponents at the
+    // edges shift with the coupling (p ~ (1 - r)^(1/2 + delta/pi) at gross sliding, 8(e)'s closed form,
+    // against which P_H/P2 and xi converge as n^-2), and the basis keeps the square root.
+    const int order = coupled_ ? 2 : level_method() == method::product ? 4 : 2;
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
     const rounding_floors floor = floors_at(finest_n, s, s);
     auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
@@ -590,6 +596,7 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
     // rough pair of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64) must not refuse an
     // n whose finer levels converge. Only where the finer levels show at least order p - 1.
     std::optional<tangential_solution> above;
+    double above_lambda = 0.0;  // full coupling: level 2n's P_H/P2 (its own alternation's)
     bool above_tried = false;
     auto finer_level = [&]() -> const tangential_solution* {
         if (above_tried) return above ? &*above : nullptr;
@@ -598,7 +605,12 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         if (self != 2 || m > max_nodes || !s.checks.hold()) return nullptr;
         try {
             if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-            if (s.five) {
+            if (coupled_) {
+                // Full coupling: the finer level's own alternation, as the levels below (a Johnson's
+                // point at 2n against a coupled n would measure the coupling, not the discretisation).
+                above = finer_->coupled_level_point(s.Q, finer_->johnson_level_point(s.Q, s), false);
+                above_lambda = finer_->normal().lambda;
+            } else if (s.five) {
                 const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
                 if (const five_zone_solution* v = finer_->five_level_point(last_five_load_, &ends))
                     above = five_zone_point(*v);
@@ -615,9 +627,11 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         error_bound b = bound_error(q.v, order, reported_value{self, q.extrapolated}, q.floor);
         three_levels used = q.v;
         int used_coarsest = level_nodes(0);
-        if (!b.resolved && k > 0) {  // P_H/P2 (k = 0) is the normal problem's: estimate_from's rule
+        // P_H/P2 (k = 0) is the normal problem's at Johnson's level (estimate_from's rule), but
+        // depends on the traction at full coupling: there it has the second chance too.
+        if (!b.resolved && (k > 0 || coupled_)) {
             if (const tangential_solution* a = finer_level()) {
-                const double values[] = {0.0, a->xi, a->c0, a->start, a->end2, a->start2};
+                const double values[] = {above_lambda, a->xi, a->c0, a->start, a->end2, a->start2};
                 used = {q.v.middle, q.v.finest, values[k]};
                 used_coarsest = level_nodes(1);
                 b = bound_error(used, order, reported_value{1, false}, q.floor);
