@@ -1,5 +1,19 @@
-// A dense square system solved by GSL's LU (gsl_linalg_LU_decomp/solve), with a
+// A dense square system A x = b solved by GSL's LU (gsl_linalg_LU_decomp/solve), with a
 // singularity test: the reciprocal condition number of the U factor.
+//
+// solve_near() solves a matrix close to the last one factorised (consecutive c0 of a curve
+// swept in c0) by iterative refinement on that factorisation M (docs/formulation.md, "Swept
+// points refined on the previous factorisation"):
+//     x_0 = M^{-1} b,   d_k = M^{-1} (b - A x_k),   x_{k+1} = x_k + d_k,
+// the fixed-point iteration of x = x + M^{-1}(b - A x), whose error contracts by the operator
+// G = I - M^{-1} A. Every ratio |d_{k+1}|/|d_k| (and |d_1|/|x_0|, since d_1 = G x_0) samples
+// |G|; the iteration is kept only while their largest, q, stays at most 1/2, and stops when the
+// correction is at rounding level (|d| <= eps |x|, max norms) and the residual's normwise
+// backward error |b - A x|/(|A| |x| + |b|) is at most a few eps: the accuracy of the LU
+// solution itself. Otherwise, or after max_refinements corrections, A is factorised afresh.
+// With |G| <= q, A = M (I - G) and cond(A) <= cond(M) (1 + q)/(1 - q): the refined solve's
+// reciprocal condition estimate is the factorisation's times (1 - q)/(1 + q), and it is refused
+// below the same threshold as a fresh factorisation's.
 #pragma once
 
 #include <cstddef>
@@ -11,23 +25,45 @@ namespace roughroll {
 
 class dense_system {
 public:
+    static constexpr int krylov_dimension = 8;  // GMRES steps per cycle
+    static constexpr int max_cycles = 2;
+    static constexpr int history_size = 3;  // last solutions kept for the refinement's start
+
     explicit dense_system(std::size_t size);
 
+    // The matrix to assemble before each solve (its contents are not kept by a solve).
     gsl_matrix* matrix() { return a_.get(); }
     gsl_vector* rhs() { return b_.get(); }
 
-    // Factorises the matrix in place and solves; throws numerical_error naming
-    // `context` when GSL fails or the system is singular to working precision.
+    // Factorises the matrix and solves; throws numerical_error naming `context` when GSL
+    // fails or the system is singular to working precision.
     const gsl_vector* solve(const std::string& context);
+    // The same solution to rounding, by refinement on the last factorisation when it
+    // converges (above), else by solve().
+    const gsl_vector* solve_near(const std::string& context);
 
-    double rcond() const { return rcond_; }  // of the last factorisation's U
+    double rcond() const { return rcond_; }  // of the last solve (above)
+    bool refined() const { return refined_; }  // whether the last solve was refined
 
 private:
+    bool refine(const std::string& context);
+    void start(const std::string& context);
+    void remember(const gsl_vector* x);
+    void precondition(const gsl_vector* in, gsl_vector* out, const std::string& context);
+
     std::size_t size_;
-    matrix_ptr a_;
-    vector_ptr b_, x_, work_;
+    matrix_ptr a_, lu_;  // the matrix assembled; the last factorisation (kept for solve_near)
+    vector_ptr b_, x_, work_, residual_, scratch_;
+    matrix_ptr basis_;  // GMRES's Krylov vectors, one per row
+    matrix_ptr history_, candidates_, products_;
+    vector_ptr tau_, coefficients_;
+    int history_count_ = 0, history_next_ = 0;
+    matrix_ptr inverse_;  // M^{-1}, computed by the first refinement on a factorisation
+    bool inverse_valid_ = false;
     permutation_ptr perm_;
-    double rcond_ = 0.0;
+    double rcond_ = 0.0;          // of the last solve
+    double factor_rcond_ = 0.0;   // of lu_'s U
+    bool factorised_ = false, refined_ = false;
 };
 
 }  // namespace roughroll
