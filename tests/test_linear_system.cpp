@@ -1,7 +1,8 @@
 // The dense system's refined solve (numerics/linear_system.hpp): on a matrix near the last one
 // factorised it gives the fresh LU solution to rounding (the LU route is the independent
 // reference); a far matrix falls back to a fresh factorisation (the same solution bit for bit);
-// a singular one is refused as a fresh factorisation refuses it.
+// a singular one is refused as a fresh factorisation refuses it. solve() alone keeps no
+// factorisation to refine on: the first solve_near() factorises.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -47,7 +48,8 @@ double largest(const std::vector<double>& v) {
 TEST(DenseSystem, RefinedSolveAgreesWithTheFreshFactorisation) {
     dense_system swept(order), fresh(order);
     assemble(swept, 0.0);
-    swept.solve("first");
+    swept.solve_near("first");  // no factorisation to refine on: a fresh one
+    EXPECT_FALSE(swept.refined());
     double factor_rcond = swept.rcond();  // of the factorisation refined on
     int refined = 0;
     for (int k = 1; k <= 20; ++k) {  // a sweep in t, steps of 0.02
@@ -71,12 +73,19 @@ TEST(DenseSystem, RefinedSolveAgreesWithTheFreshFactorisation) {
         }
     }
     EXPECT_GE(refined, 15);  // the path under test is taken
+    // solve() and then solve_near(): the matrix assembled over the first factorisation, a fresh one.
+    dense_system plain(order);
+    assemble(plain, 0.0);
+    plain.solve("plain");
+    assemble(plain, 0.02);
+    plain.solve_near("near");
+    EXPECT_FALSE(plain.refined());
 }
 
 TEST(DenseSystem, FarMatrixFallsBackToAFreshFactorisation) {
     dense_system swept(order), fresh(order);
     assemble(swept, 0.0);
-    swept.solve("first");
+    swept.solve_near("first");
     assemble(swept, 0.02);
     swept.solve_near("near");
     ASSERT_TRUE(swept.refined());
@@ -93,7 +102,10 @@ TEST(DenseSystem, FarMatrixFallsBackToAFreshFactorisation) {
 TEST(DenseSystem, SingularNearMatrixIsRefused) {
     dense_system s(order);
     assemble(s, 0.0);
-    s.solve("first");
+    s.solve_near("first");
+    assemble(s, 0.02);
+    s.solve_near("near");
+    ASSERT_TRUE(s.refined());
     assemble(s, 0.0);
     for (std::size_t j = 0; j < order; ++j) gsl_matrix_set(s.matrix(), 1, j, gsl_matrix_get(s.matrix(), 0, j));
     EXPECT_THROW(s.solve_near("singular"), numerical_error);

@@ -44,54 +44,59 @@ double max_row_sum(const gsl_matrix* a) {
 dense_system::dense_system(std::size_t size)
     : size_(size),
       a_(make_matrix(size, size)),
-      lu_(make_matrix(size, size)),
       b_(make_vector(size)),
       x_(make_vector(size)),
       work_(make_vector(3 * size)),
-      residual_(make_vector(size)),
-      scratch_(make_vector(size)),
-      basis_(make_matrix(krylov_dimension + 1, size)),
-      history_(make_matrix(history_size, size)),
-      candidates_(make_matrix(history_size + 1, size)),
-      products_(make_matrix(size, history_size + 1)),
-      tau_(make_vector(history_size + 1)),
-      coefficients_(make_vector(history_size + 1)),
-      inverse_(make_matrix(size, size)),
       perm_(make_permutation(size)) {}
+
+dense_system::refinement::refinement(std::size_t size)
+    : lu(make_matrix(size, size)),
+      inverse(make_matrix(size, size)),
+      basis(make_matrix(krylov_dimension + 1, size)),
+      history(make_matrix(history_size, size)),
+      candidates(make_matrix(history_size + 1, size)),
+      products(make_matrix(size, history_size + 1)),
+      residual(make_vector(size)),
+      scratch(make_vector(size)),
+      tau(make_vector(history_size + 1)),
+      coefficients(make_vector(history_size + 1)) {}
 
 const gsl_vector* dense_system::solve(const std::string& context) {
     refined_ = false;
     factorised_ = false;
     int signum = 0;
-    // Factorised in place, then kept as lu_; the next matrix is assembled in the other buffer.
     gsl_check(gsl_linalg_LU_decomp(a_.get(), perm_.get(), &signum), context + ": LU decomposition");
-    std::swap(a_, lu_);
-    gsl_check(gsl_linalg_tri_upper_rcond(lu_.get(), &rcond_, work_.get()), context + ": condition estimate");
+    // Refining: the factorisation kept as near_->lu, the next matrix assembled in the other buffer.
+    if (near_) std::swap(a_, near_->lu);
+    const gsl_matrix* lu = near_ ? near_->lu.get() : a_.get();
+    gsl_check(gsl_linalg_tri_upper_rcond(lu, &rcond_, work_.get()), context + ": condition estimate");
     if (!(rcond_ > singular_rcond)) refuse_singular(context, rcond_);
-    factor_rcond_ = rcond_;
-    factorised_ = true;
-    inverse_valid_ = false;
-    gsl_check(gsl_linalg_LU_solve(lu_.get(), perm_.get(), b_.get(), x_.get()), context + ": LU solve");
+    gsl_check(gsl_linalg_LU_solve(lu, perm_.get(), b_.get(), x_.get()), context + ": LU solve");
     check_finite(x_.get(), context);
-    remember(x_.get());
+    if (near_) {
+        factor_rcond_ = rcond_;
+        factorised_ = true;
+        near_->inverse_valid = false;
+        remember(x_.get());
+    }
     return x_.get();
 }
 
 void dense_system::remember(const gsl_vector* x) {
-    gsl_vector_view row = gsl_matrix_row(history_.get(), static_cast<std::size_t>(history_next_));
+    gsl_vector_view row = gsl_matrix_row(near_->history.get(), static_cast<std::size_t>(near_->history_next));
     gsl_vector_memcpy(&row.vector, x);
-    history_next_ = (history_next_ + 1) % history_size;
-    history_count_ = std::min(history_count_ + 1, history_size);
+    near_->history_next = (near_->history_next + 1) % history_size;
+    near_->history_count = std::min(near_->history_count + 1, history_size);
 }
 
 void dense_system::precondition(const gsl_vector* in, gsl_vector* out, const std::string& context) {
     // M^{-1} as a matrix, once per factorisation: one gemv per product instead of two triangular
     // solves (twice as fast with GSL's CBLAS at n = 129), over the many solves of a sweep.
-    if (!inverse_valid_) {
-        gsl_check(gsl_linalg_LU_invert(lu_.get(), perm_.get(), inverse_.get()), context + ": inverse (refinement)");
-        inverse_valid_ = true;
+    if (!near_->inverse_valid) {
+        gsl_check(gsl_linalg_LU_invert(near_->lu.get(), perm_.get(), near_->inverse.get()), context + ": inverse (refinement)");
+        near_->inverse_valid = true;
     }
-    gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, inverse_.get(), in, 0.0, out), context + ": refinement product");
+    gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, near_->inverse.get(), in, 0.0, out), context + ": refinement product");
 }
 
 void dense_system::start(const std::string& context) {
@@ -100,36 +105,42 @@ void dense_system::start(const std::string& context) {
     // without knowing the c0 (a few gemv and a QR of n x 4, against GMRES steps saved).
     gsl_vector* x = x_.get();
     precondition(b_.get(), x, context);
-    if (history_count_ == 0) return;
-    const std::size_t k = static_cast<std::size_t>(history_count_) + 1;
-    gsl_matrix_view y = gsl_matrix_submatrix(candidates_.get(), 0, 0, k, size_);  // rows: candidates
-    gsl_matrix_view w = gsl_matrix_submatrix(products_.get(), 0, 0, size_, k);   // columns: A y_i
+    if (near_->history_count == 0) return;
+    const std::size_t k = static_cast<std::size_t>(near_->history_count) + 1;
+    gsl_matrix_view y = gsl_matrix_submatrix(near_->candidates.get(), 0, 0, k, size_);  // rows: candidates
+    gsl_matrix_view w = gsl_matrix_submatrix(near_->products.get(), 0, 0, size_, k);   // columns: A y_i
     gsl_vector_view y0 = gsl_matrix_row(&y.matrix, 0);
     gsl_vector_memcpy(&y0.vector, x);
-    gsl_matrix_const_view past = gsl_matrix_const_submatrix(history_.get(), 0, 0, k - 1, size_);
+    gsl_matrix_const_view past = gsl_matrix_const_submatrix(near_->history.get(), 0, 0, k - 1, size_);
     gsl_matrix_view rest = gsl_matrix_submatrix(&y.matrix, 1, 0, k - 1, size_);
     gsl_matrix_memcpy(&rest.matrix, &past.matrix);
     gsl_check(gsl_blas_dgemm(CblasNoTrans, CblasTrans, 1.0, a_.get(), &y.matrix, 0.0, &w.matrix),
               context + ": refinement start");
-    gsl_vector_view tau = gsl_vector_subvector(tau_.get(), 0, k);
-    gsl_vector_view c = gsl_vector_subvector(coefficients_.get(), 0, k);
+    gsl_vector_view tau = gsl_vector_subvector(near_->tau.get(), 0, k);
+    gsl_vector_view c = gsl_vector_subvector(near_->coefficients.get(), 0, k);
     // A rank-deficient set (a repeated c0) leaves x_0 = M^{-1} b.
     if (gsl_linalg_QR_decomp(&w.matrix, &tau.vector) != GSL_SUCCESS) return;
     for (std::size_t i = 0; i < k; ++i)
         if (!(std::fabs(gsl_matrix_get(&w.matrix, i, i)) > 1e3 * GSL_DBL_EPSILON * max_norm(b_.get()))) return;
-    if (gsl_linalg_QR_lssolve(&w.matrix, &tau.vector, b_.get(), &c.vector, residual_.get()) != GSL_SUCCESS) return;
+    if (gsl_linalg_QR_lssolve(&w.matrix, &tau.vector, b_.get(), &c.vector, near_->residual.get()) != GSL_SUCCESS) return;
     gsl_check(gsl_blas_dgemv(CblasTrans, 1.0, &y.matrix, &c.vector, 0.0, x), context + ": refinement start");
 }
 
 const gsl_vector* dense_system::solve_near(const std::string& context) {
+    if (!near_) {
+        // The factorisation of the last solve() was overwritten by this matrix's assembly:
+        // this one is factorised, and kept from here on.
+        near_ = std::make_unique<refinement>(size_);
+        factorised_ = false;
+    }
     if (factorised_ && refine(context)) return x_.get();
     return solve(context);
 }
 
 bool dense_system::refine(const std::string& context) {
     gsl_vector* x = x_.get();
-    gsl_vector* r = residual_.get();
-    gsl_matrix* v = basis_.get();  // row j: the Krylov vector v_j of M^{-1} A
+    gsl_vector* r = near_->residual.get();
+    gsl_matrix* v = near_->basis.get();  // row j: the Krylov vector v_j of M^{-1} A
     start(context);
     const double a_norm = max_row_sum(a_.get());
     const double b_norm = max_norm(b_.get());
@@ -154,8 +165,8 @@ bool dense_system::refine(const std::string& context) {
         if (cycle == max_cycles) return false;
         // GMRES on M^{-1} A d = M^{-1} r (Saad's algorithm 6.9, modified Gram-Schmidt, Givens
         // rotations), the correction d added to x.
-        gsl_check(gsl_vector_memcpy(scratch_.get(), r), context + ": refinement residual");
-        precondition(scratch_.get(), r, context);
+        gsl_check(gsl_vector_memcpy(near_->scratch.get(), r), context + ": refinement residual");
+        precondition(near_->scratch.get(), r, context);
         const double beta = gsl_blas_dnrm2(r);
         if (!(beta > 0.0) || !std::isfinite(beta)) return false;
         gsl_vector_view v0 = gsl_matrix_row(v, 0);
@@ -168,8 +179,8 @@ bool dense_system::refine(const std::string& context) {
         for (int j = 0; j < krylov_dimension; ++j) {
             gsl_vector_view vj = gsl_matrix_row(v, static_cast<std::size_t>(j));
             gsl_vector_view w = gsl_matrix_row(v, static_cast<std::size_t>(j + 1));
-            gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, a_.get(), &vj.vector, 0.0, scratch_.get()), context + ": refinement product");
-            precondition(scratch_.get(), &w.vector, context);
+            gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, a_.get(), &vj.vector, 0.0, near_->scratch.get()), context + ": refinement product");
+            precondition(near_->scratch.get(), &w.vector, context);
             // |G v_j| = |v_j - M^{-1} A v_j|, in r (free until the next cycle).
             gsl_check(gsl_vector_memcpy(r, &vj.vector), context + ": refinement contraction");
             gsl_check(gsl_vector_sub(r, &w.vector), context + ": refinement contraction");

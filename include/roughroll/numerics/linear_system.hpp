@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 
 #include "roughroll/base/gsl_handles.hpp"
@@ -51,18 +52,27 @@ private:
     void remember(const gsl_vector* x);
     void precondition(const gsl_vector* in, gsl_vector* out, const std::string& context);
 
+    // solve_near's workspace, allocated by its first call (a system never refined, the
+    // normal problems and the points at a given Q, keeps the size it had).
+    struct refinement {
+        explicit refinement(std::size_t size);
+        matrix_ptr lu;        // the last factorisation M (the matrix is assembled in a_)
+        matrix_ptr inverse;   // M^{-1}, formed by the first refinement on a factorisation
+        matrix_ptr basis;     // GMRES's Krylov vectors, one per row
+        matrix_ptr history;   // the last solutions, one per row
+        matrix_ptr candidates, products;  // the start's candidates (rows) and A times them (columns)
+        vector_ptr residual, scratch, tau, coefficients;
+        int history_count = 0, history_next = 0;
+        bool inverse_valid = false;
+    };
+
     std::size_t size_;
-    matrix_ptr a_, lu_;  // the matrix assembled; the last factorisation (kept for solve_near)
-    vector_ptr b_, x_, work_, residual_, scratch_;
-    matrix_ptr basis_;  // GMRES's Krylov vectors, one per row
-    matrix_ptr history_, candidates_, products_;
-    vector_ptr tau_, coefficients_;
-    int history_count_ = 0, history_next_ = 0;
-    matrix_ptr inverse_;  // M^{-1}, computed by the first refinement on a factorisation
-    bool inverse_valid_ = false;
+    matrix_ptr a_;  // the matrix assembled, factorised in place by solve() unless refining
+    vector_ptr b_, x_, work_;
+    std::unique_ptr<refinement> near_;
     permutation_ptr perm_;
     double rcond_ = 0.0;          // of the last solve
-    double factor_rcond_ = 0.0;   // of lu_'s U
+    double factor_rcond_ = 0.0;   // of near_->lu's U
     bool factorised_ = false, refined_ = false;
 };
 
