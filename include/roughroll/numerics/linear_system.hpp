@@ -1,19 +1,17 @@
 // A dense square system A x = b solved by GSL's LU (gsl_linalg_LU_decomp/solve), with a
 // singularity test: the reciprocal condition number of the U factor.
 //
-// solve_near() solves a matrix close to the last one factorised (consecutive c0 of a curve
-// swept in c0) by iterative refinement on that factorisation M (docs/formulation.md, "Swept
-// points refined on the previous factorisation"):
-//     x_0 = M^{-1} b,   d_k = M^{-1} (b - A x_k),   x_{k+1} = x_k + d_k,
-// the fixed-point iteration of x = x + M^{-1}(b - A x), whose error contracts by the operator
-// G = I - M^{-1} A. Every ratio |d_{k+1}|/|d_k| (and |d_1|/|x_0|, since d_1 = G x_0) samples
-// |G|; the iteration is kept only while their largest, q, stays at most 1/2, and stops when the
-// correction is at rounding level (|d| <= eps |x|, max norms) and the residual's normwise
-// backward error |b - A x|/(|A| |x| + |b|) is at most a few eps: the accuracy of the LU
-// solution itself. Otherwise, or after max_refinements corrections, A is factorised afresh.
-// With |G| <= q, A = M (I - G) and cond(A) <= cond(M) (1 + q)/(1 - q): the refined solve's
-// reciprocal condition estimate is the factorisation's times (1 - q)/(1 + q), and it is refused
-// below the same threshold as a fresh factorisation's.
+// solve_near() solves a matrix A close to the last one factorised, M (consecutive c0 of a curve
+// swept in c0), with M as a preconditioner (docs/formulation.md, "Swept points refined on the
+// previous factorisation"): GMRES (Saad, alg. 6.9) on M^{-1} A d = M^{-1} (b - A x), started at
+// the combination of M^{-1} b and the last solutions with the least residual. A solution is kept
+// only when the true residual's normwise backward error |b - A x|/(|A| |x| + |b|) (max norms) is
+// at most 4 eps, the accuracy of the LU solution itself; otherwise A is factorised afresh: when
+// a sample |G v| of G = I - M^{-1} A on a unit vector exceeds q = 1/2, or two cycles of
+// krylov_dimension steps do not reach the test. With |G| <= q, A = M (I - G) and
+// cond(A) <= cond(M) (1 + q)/(1 - q): the refined solve's reciprocal condition estimate is the
+// factorisation's times (1 - q)/(1 + q), q the largest sample, refused below the threshold of a
+// fresh factorisation (which then decides).
 #pragma once
 
 #include <cstddef>
