@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <gsl/gsl_machine.h>
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
@@ -189,6 +190,37 @@ TEST(Curve, SweptChecksEqualTheScalarRoute) {
             EXPECT_EQ(s.checks.stick_margin, margin) << "n = " << n << ", c0 = " << c0;
             EXPECT_TRUE(s.checks.hold()) << "n = " << n << ", c0 = " << c0;
         }
+    }
+}
+
+// A sweep's systems refined on the previous factorisation (dense_system::solve_near) give the
+// load, creep and distribution of the fresh LU route to rounding, equal and unequal kernels.
+TEST(Curve, SweptRefinedSolvesAgreeWithFreshFactorisations) {
+    roughness equal;  // Fig. 2a, curve 3
+    equal.cylinder1.tangential = equal.cylinder2.tangential = equal.cylinder1.normal = equal.cylinder2.normal = {1.0, 1.0};
+    roughness unequal = equal;
+    unequal.cylinder1.tangential = {1.0, 0.5};
+    unequal.cylinder2.normal = {0.8, 0.5};
+    for (const roughness& r : {equal, unequal}) {
+        const normal_solution normal = solve_normal(kernel::normal(r), 128, method::product);
+        tangential_solver swept(normal, kernel::tangential(r), kernel::normal(r), f);
+        tangential_solver fresh(normal, kernel::tangential(r), kernel::normal(r), f);
+        double largest = 0.0;
+        for (int i = 1; i < 50; ++i) {
+            const double c0 = 1.0 - 2.0 * i / 50.0;
+            const tangential_solution a = swept.at_stick_end(c0, false, true);
+            const tangential_solution b = fresh.at_stick_end(c0, false, false);
+            // The solutions differ by the condition number times eps at most; Q = f + rho int q
+            // loses f/Q of that to cancellation near full stick.
+            const double rounding = 8.0 * GSL_DBL_EPSILON / b.rcond;
+            EXPECT_NEAR(a.xi, b.xi, rounding * std::fabs(b.xi)) << "c0 = " << c0;
+            EXPECT_NEAR(a.Q, b.Q, rounding * f) << "c0 = " << c0;
+            ASSERT_EQ(a.psi_b.size(), b.psi_b.size());
+            for (std::size_t j = 0; j < a.psi_b.size(); ++j)
+                EXPECT_NEAR(a.psi_b[j], b.psi_b[j], rounding * std::fabs(b.psi_b[0])) << "c0 = " << c0 << ", j = " << j;
+            largest = std::max(largest, std::fabs(a.xi - b.xi) / std::fabs(b.xi));
+        }
+        EXPECT_GT(largest, 0.0);  // the refined route was taken (a fresh LU each time would agree bit for bit)
     }
 }
 

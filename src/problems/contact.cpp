@@ -249,7 +249,7 @@ std::optional<tangential_solution> contact::above_finest(const tangential_soluti
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
         if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-        return swept ? finer_->level_at_stick_end(own.c0, false) : finer_->level_point(s.Q, false);
+        return swept ? finer_->level_at_stick_end(own.c0, false, sweeping_near_) : finer_->level_point(s.Q, false);
     } catch (const resolution_error&) {
         return std::nullopt;
     }
@@ -358,8 +358,11 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     return e;
 }
 
-tangential_solution contact::level_at_stick_end(double c0, bool checked) {
-    return limit_ ? limit_->at_stick_end(c0, checked) : tangential_->at_stick_end(c0, checked);
+tangential_solution contact::level_at_stick_end(double c0, bool checked, bool near) {
+    // A sweep's consecutive c0 give nearby systems: refined on the previous factorisation
+    // (dense_system::solve_near, docs/formulation.md "Swept points refined on the previous
+    // factorisation"), the same solution to rounding.
+    return limit_ ? limit_->at_stick_end(c0, checked) : tangential_->at_stick_end(c0, checked, near);
 }
 
 void check_sweepable(const dissimilar& materials) {
@@ -370,12 +373,30 @@ void check_sweepable(const dissimilar& materials) {
 
 contact::swept_point contact::at_stick_end(double c0) {
     check_sweepable(materials_);
-    tangential_solution s = level_at_stick_end(c0, true);
+    try {
+        return swept_at(c0);
+    } catch (const resolution_error&) {
+        // A refusal is decided on fresh factorisations, as for the point alone: the refined
+        // route agrees with them only to rounding, and a refusal line quotes Q(c0) to the digit.
+        sweeping_near_ = false;
+        try {
+            swept_point p = swept_at(c0);
+            sweeping_near_ = true;
+            return p;
+        } catch (...) {
+            sweeping_near_ = true;
+            throw;
+        }
+    }
+}
+
+contact::swept_point contact::swept_at(double c0) {
+    tangential_solution s = level_at_stick_end(c0, true, sweeping_near_);
     const tangential_solution own = s;
     std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        coarse = companion_->level_at_stick_end(c0, false);
+        coarse = companion_->level_at_stick_end(c0, false, sweeping_near_);
         // Q = 0 and f at c0 = 1 and -1 are exact on every level: kept exact (Carter's columns).
         if (c0 != 1.0 && c0 != -1.0) s.Q = richardson(s.Q, coarse->Q);
         s.xi = richardson(s.xi, coarse->xi);
@@ -394,7 +415,7 @@ contact::swept_point contact::at_stick_end(double c0) {
     for (int i = 0; i < 3; ++i)
         at[i] = !levels_[i] ? own
                 : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
-                                                            : levels_[i]->level_at_stick_end(c0, false);
+                                                            : levels_[i]->level_at_stick_end(c0, false, sweeping_near_);
     const error_estimate e = estimate_from(s, own, at, true);
     // The same for the load's error interval: Q +- e.Q reaching beyond [0, f] cannot be told from
     // full stick or gross sliding (and may be no physical point at all).

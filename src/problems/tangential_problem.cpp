@@ -78,10 +78,17 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
 
 double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
-tangential_solution tangential_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
+tangential_solution tangential_solver::solve_system(double c0, bool near) {
+    return solve_zone(-1.0, c0, 0.0, nullptr, near);
+}
 
 tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
                                                      const std::vector<double>* extra) {
+    return solve_zone(start, c0, forcing, extra, false);
+}
+
+tangential_solution tangential_solver::solve_zone(double start, double c0, double forcing,
+                                                  const std::vector<double>* extra, bool near) {
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
     // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
     const double rho = 0.5 * (c0 - start);
@@ -102,7 +109,9 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
     context.precision(17);
     context << "tangential problem (4.4) at c0 = " << c0;
     if (start != -1.0) context << ", stick zone from " << start;
-    const gsl_vector* x = system_.solve(context.str());
+    // near: refined on the last factorisation when it converges (linear_system.hpp), the same
+    // solution to rounding.
+    const gsl_vector* x = near ? system_.solve_near(context.str()) : system_.solve(context.str());
 
     std::vector<double> psi(n_);
     double load = 0.0;
@@ -152,7 +161,7 @@ tangential_solution tangential_solver::full_stick() { return full_stick_solution
 
 tangential_solution tangential_solver::gross_sliding() { return gross_sliding_solution(f_, G(-1.0)); }
 
-tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
+tangential_solution tangential_solver::at_stick_end(double c0, bool checked, bool near) {
     if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
     tangential_solution s;
     if (c0 == 1.0) {
@@ -161,7 +170,7 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked) {
         const carter_stick_end smooth = carter_at_stick_end(c0, f_);  // Smooth: Carter's closed form
         s = carter_solution(smooth.Q, c0, smooth.xi);
     } else {
-        s = c0 == -1.0 ? gross_sliding() : solve_system(c0);
+        s = c0 == -1.0 ? gross_sliding() : solve_system(c0, near);
     }
     if (checked) s.checks = check(s);
     return s;

@@ -1,8 +1,21 @@
-// A dense square system solved by GSL's LU (gsl_linalg_LU_decomp/solve), with a
+// A dense square system A x = b solved by GSL's LU (gsl_linalg_LU_decomp/solve), with a
 // singularity test: the reciprocal condition number of the U factor.
+//
+// solve_near() solves a matrix A close to the last one factorised, M (consecutive c0 of a curve
+// swept in c0), with M as a preconditioner (docs/formulation.md, "Swept points refined on the
+// previous factorisation"): GMRES (Saad, alg. 6.9) on M^{-1} A d = M^{-1} (b - A x), started at
+// the combination of M^{-1} b and the last solutions with the least residual. A solution is kept
+// only when the true residual's normwise backward error |b - A x|/(|A| |x| + |b|) (max norms) is
+// at most 4 eps, the accuracy of the LU solution itself; otherwise A is factorised afresh: when
+// a sample |G v| of G = I - M^{-1} A on a unit vector exceeds q = 1/2, or two cycles of
+// krylov_dimension steps do not reach the test. With |G| <= q, A = M (I - G) and
+// cond(A) <= cond(M) (1 + q)/(1 - q): the refined solve's reciprocal condition estimate is the
+// factorisation's times (1 - q)/(1 + q), q the largest sample, refused below the threshold of a
+// fresh factorisation (which then decides).
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 
 #include "roughroll/base/gsl_handles.hpp"
@@ -11,23 +24,54 @@ namespace roughroll {
 
 class dense_system {
 public:
+    static constexpr int krylov_dimension = 8;  // GMRES steps per cycle
+    static constexpr int max_cycles = 2;
+    static constexpr int history_size = 3;  // last solutions kept for the refinement's start
+
     explicit dense_system(std::size_t size);
 
+    // The matrix to assemble before each solve (its contents are not kept by a solve).
     gsl_matrix* matrix() { return a_.get(); }
     gsl_vector* rhs() { return b_.get(); }
 
-    // Factorises the matrix in place and solves; throws numerical_error naming
-    // `context` when GSL fails or the system is singular to working precision.
+    // Factorises the matrix and solves; throws numerical_error naming `context` when GSL
+    // fails or the system is singular to working precision.
     const gsl_vector* solve(const std::string& context);
+    // The same solution to rounding, by refinement on the last factorisation when it
+    // converges (above), else by solve().
+    const gsl_vector* solve_near(const std::string& context);
 
-    double rcond() const { return rcond_; }  // of the last factorisation's U
+    double rcond() const { return rcond_; }  // of the last solve (above)
+    bool refined() const { return refined_; }  // whether the last solve was refined
 
 private:
+    bool refine(const std::string& context);
+    void start(const std::string& context);
+    void remember(const gsl_vector* x);
+    void precondition(const gsl_vector* in, gsl_vector* out, const std::string& context);
+
+    // solve_near's workspace, allocated by its first call (a system never refined, the
+    // normal problems and the points at a given Q, keeps the size it had).
+    struct refinement {
+        explicit refinement(std::size_t size);
+        matrix_ptr lu;        // the last factorisation M (the matrix is assembled in a_)
+        matrix_ptr inverse;   // M^{-1}, formed by the first refinement on a factorisation
+        matrix_ptr basis;     // GMRES's Krylov vectors, one per row
+        matrix_ptr history;   // the last solutions, one per row
+        matrix_ptr candidates, products;  // the start's candidates (rows) and A times them (columns)
+        vector_ptr residual, scratch, tau, coefficients;
+        int history_count = 0, history_next = 0;
+        bool inverse_valid = false;
+    };
+
     std::size_t size_;
-    matrix_ptr a_;
+    matrix_ptr a_;  // the matrix assembled, factorised in place by solve() unless refining
     vector_ptr b_, x_, work_;
+    std::unique_ptr<refinement> near_;
     permutation_ptr perm_;
-    double rcond_ = 0.0;
+    double rcond_ = 0.0;          // of the last solve
+    double factor_rcond_ = 0.0;   // of near_->lu's U
+    bool factorised_ = false, refined_ = false;
 };
 
 }  // namespace roughroll

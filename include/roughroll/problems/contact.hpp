@@ -123,7 +123,9 @@ public:
 
 private:
     // The solution at c0 of this contact's own level (no extrapolation, no estimate).
-    tangential_solution level_at_stick_end(double c0, bool checked);
+    // near: refined on the last factorisation (dense_system::solve_near) while sweeping_near_.
+    tangential_solution level_at_stick_end(double c0, bool checked, bool near);
+    swept_point swept_at(double c0);  // at_stick_end's point, by the route sweeping_near_ picks
     // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
     // Q +- error) outside [0, f] at an inner c0.
     void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
@@ -167,6 +169,7 @@ private:
     std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
     std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
     bool levels_built_ = false;
+    bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
     std::unique_ptr<contact> finer_;  // level 2n: the second chance of a ratio that fails
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty

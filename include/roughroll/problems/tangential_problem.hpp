@@ -115,7 +115,9 @@ public:
     // in c0 needs no root search.
     // `checked` = false skips the checks (3.3)-(3.4) (their fields are then zero): for the
     // coarse level of an extrapolation, whose distributions are not reported.
-    tangential_solution at_stick_end(double c0, bool checked = true);
+    // `near` = true: a point of a sweep in c0, whose system is solved by refinement on the
+    // last factorisation when that converges (dense_system::solve_near), the same to rounding.
+    tangential_solution at_stick_end(double c0, bool checked = true, bool near = false);
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
     // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
     // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
@@ -140,7 +142,9 @@ public:
     traction_checks check(const tangential_solution& s);
 
 private:
-    tangential_solution solve_system(double c0);  // |Q| problem at c0 in (-1, 1]
+    tangential_solution solve_system(double c0, bool near = false);  // |Q| problem at c0 in (-1, 1]
+    tangential_solution solve_zone(double start, double c0, double forcing, const std::vector<double>* extra,
+                                   bool near);  // solve_on_zone; near: as at_stick_end
     tangential_solution full_stick();
     tangential_solution gross_sliding();
     tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
