@@ -184,6 +184,22 @@ TEST(ConvolutionTable, AgreesWithSweepAndMoments) {
     }
 }
 
+TEST(ConvolutionTable, BatchedIsTheScalarOne) {
+    // The points of a stick zone and of a slip grid at once (G of (3.25) per trial c0), in
+    // batches that do not fill the last group of four: the scalar values, bit for bit.
+    std::vector<double> b{0.3, -1.2, 0.5, 0.05, -0.3, 0.2, 0.01, -0.07, 0.4};
+    const convolution_table table(kernel(std::vector<exponential_term>{{0.7, 3.0}, {-0.2, 0.5}}), b);
+    std::vector<double> r;
+    for (int i = 0; i < 23; ++i) r.push_back(std::cos(0.137 * i));
+    r.push_back(1.5);  // clamped to 1
+    for (std::size_t count : {std::size_t{1}, std::size_t{3}, r.size()}) {
+        std::vector<double> out(count);
+        table(r.data(), out.data(), count);
+        for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(out[i], table(r[i])) << "count " << count << ", r = " << r[i];
+    }
+    EXPECT_EQ(table(1.5), table(1.0));
+}
+
 TEST(ConvolutionTable, BatchedUSeriesIsTheScalarOne) {
     std::vector<double> b{0.3, -1.2, 0.5, 0.05, -0.3, 0.2, 0.01, -0.07, 0.4};
     std::vector<double> x, out(21);

@@ -165,19 +165,40 @@ convolution_table::convolution_table(const kernel& k, const std::vector<double>&
         }
 }
 
+namespace {
+// The panel of r and r's variable s in it, in [-1, 1].
+struct panel_point {
+    const double* c;  // the panel's Chebyshev-T coefficients
+    double s;
+};
+}  // namespace
+
 double convolution_table::operator()(double r) const {
-    const double theta = std::acos(std::max(-1.0, std::min(1.0, r)));
-    const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
-    const double s = 2.0 * (theta - j * length_) / length_ - 1.0;
-    const double* c = &coefficients_[static_cast<std::size_t>(j) * (degree + 1)];
-    // Clenshaw for sum_k c_k T_k(s).
-    double y1 = 0.0, y2 = 0.0;
-    for (int k = degree; k >= 1; --k) {
-        const double y0 = c[k] + 2.0 * s * y1 - y2;
-        y2 = y1;
-        y1 = y0;
+    double out = 0.0;
+    (*this)(&r, &out, 1);
+    return out;
+}
+
+void convolution_table::operator()(const double* r, double* out, std::size_t count) const {
+    constexpr std::size_t lanes = 4;
+    for (std::size_t first = 0; first < count; first += lanes) {
+        const std::size_t width = std::min(lanes, count - first);
+        panel_point p[lanes];
+        for (std::size_t i = 0; i < lanes; ++i) {
+            const double theta = std::acos(std::max(-1.0, std::min(1.0, r[first + std::min(i, width - 1)])));
+            const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
+            p[i] = {&coefficients_[static_cast<std::size_t>(j) * (degree + 1)], 2.0 * (theta - j * length_) / length_ - 1.0};
+        }
+        // Clenshaw for sum_k c_k T_k(s), the lanes' steps interleaved.
+        double y1[lanes] = {}, y2[lanes] = {};
+        for (int k = degree; k >= 1; --k)
+            for (std::size_t i = 0; i < lanes; ++i) {
+                const double y0 = p[i].c[k] + 2.0 * p[i].s * y1[i] - y2[i];
+                y2[i] = y1[i];
+                y1[i] = y0;
+            }
+        for (std::size_t i = 0; i < width; ++i) out[first + i] = p[i].c[0] + p[i].s * y1[i] - y2[i];
     }
-    return c[0] + s * y1 - y2;
 }
 
 }  // namespace roughroll

@@ -174,25 +174,35 @@ std::vector<double> kernel_sweep::apply(const kernel& k) const {
     std::vector<double> left(nt * width, 0.0), right((count + 1) * nt * width, 0.0), e_left, e_right;
     for (std::size_t i = 0; i <= count; ++i) {
         const bool has_left = i < count, has_right = i > 0;
-        if (has_left) {
-            for (std::size_t t = 0; t < nt; ++t) {
-                const double decay = i == 0 ? 0.0 : std::exp(-terms[t].A * (x[i - 1] - x[i]));
-                double* acc = &left[t * width];
-                for (std::size_t v = 0; v < width; ++v) acc[v] *= decay;
-            }
-        }
         double* piece_right = &right[i * nt * width];
         const std::size_t lo = first_[i], nodes = first_[i + 1] - lo;
         for (std::size_t t = 0; t < nt; ++t) {
-            // The weights of this piece's points, then the sums over them in blocks of `block`
-            // values held in registers (each value still sums its points in their order).
             const double A = terms[t].A;
+            // exp(-A (x_{i-1} - x_i)): the left sums' decay across this piece (none before the first)
+            const double across = has_left && has_right ? std::exp(-A * (x[i - 1] - x[i])) : 0.0;
+            if (has_left) {
+                double* acc = &left[t * width];
+                for (std::size_t v = 0; v < width; ++v) acc[v] *= across;
+            }
+            // The weights of this piece's points, then the sums over them in blocks of `block`
+            // values held in registers (each value still sums its points in their order). Inside
+            // the contact the two weights of a point multiply to w^2 exp(-A (x_{i-1} - x_i)): one
+            // exponential per point, the other weight a division, while that product is far from
+            // underflow (A (x_{i-1} - x_i) <= 600; the division rounds twice more, at eps).
             e_left.resize(nodes);
             e_right.resize(nodes);
-            for (std::size_t j = 0; j < nodes; ++j) {
-                const std::size_t p = lo + j;
-                e_left[j] = has_left ? w_[p] * std::exp(-A * (c_[p] - x[i])) : 0.0;
-                e_right[j] = has_right ? w_[p] * std::exp(-A * (x[i - 1] - c_[p])) : 0.0;
+            if (has_left && has_right && A * (x[i - 1] - x[i]) <= 600.0) {
+                for (std::size_t j = 0; j < nodes; ++j) {
+                    const std::size_t p = lo + j;
+                    e_left[j] = w_[p] * std::exp(-A * (c_[p] - x[i]));
+                }
+                for (std::size_t j = 0; j < nodes; ++j) e_right[j] = w_[lo + j] * w_[lo + j] * across / e_left[j];
+            } else {
+                for (std::size_t j = 0; j < nodes; ++j) {
+                    const std::size_t p = lo + j;
+                    e_left[j] = has_left ? w_[p] * std::exp(-A * (c_[p] - x[i])) : 0.0;
+                    e_right[j] = has_right ? w_[p] * std::exp(-A * (x[i - 1] - c_[p])) : 0.0;
+                }
             }
             accumulate_piece(&g_[lo * width], width, nodes, e_left.data(), e_right.data(), &left[t * width],
                              &piece_right[t * width]);

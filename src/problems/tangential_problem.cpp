@@ -72,7 +72,9 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
             g[m] += M_2_PI * normal_.lambda * normal_.offset + normal_.tangential_term(r[m]);
     if (dk_.empty()) return g;
     if (!g_table_) g_table_.emplace(dk_, normal_.b);
-    for (std::size_t m = 0; m < r.size(); ++m) g[m] += (*g_table_)(r[m]);
+    std::vector<double> table(r.size());
+    (*g_table_)(r.data(), table.data(), r.size());
+    for (std::size_t m = 0; m < r.size(); ++m) g[m] += table[m];
     return g;
 }
 

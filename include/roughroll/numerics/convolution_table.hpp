@@ -19,6 +19,7 @@
 // bound is below eps = 2.2e-16 times the size bound pi B sum |T_i| of D.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "roughroll/model/kernel.hpp"
@@ -32,6 +33,9 @@ public:
     convolution_table(const kernel& k, const std::vector<double>& b);
 
     double operator()(double r) const;  // D(r), r clamped to [-1, 1]
+    // D(r[i]) into out[i], i < count: the scalar value bit for bit, four points' Clenshaw
+    // recurrences interleaved (each alone is a chain of 24 dependent steps).
+    void operator()(const double* r, double* out, std::size_t count) const;
     int panels() const { return panels_; }
     // The bound on |D - table| (absolute), and the size bound pi B sum |T| it is compared with.
     double error_bound() const { return bound_; }
