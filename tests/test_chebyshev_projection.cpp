@@ -5,41 +5,14 @@
 #include <functional>
 #include <vector>
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
 #include "roughroll/numerics/chebyshev_projection.hpp"
+#include "../validation/chebyshev_by_qagp.hpp"
 
 using namespace roughroll;
 
-namespace {
-
-// c_j = (2 - delta_j0)/pi int_0^pi g(cos t) cos(j t) dt by QAGP, break points at acos(kinks).
-double coefficient_by_qagp(const std::function<double(double)>& g, const std::vector<double>& kinks, int j) {
-    struct data {
-        const std::function<double(double)>* g;
-        int j;
-    } d{&g, j};
-    gsl_function F{[](double t, void* p) {
-                       const auto* d = static_cast<const data*>(p);
-                       return (*d->g)(std::cos(t)) * std::cos(d->j * t);
-                   },
-                   &d};
-    std::vector<double> pts{0.0};
-    for (auto it = kinks.rbegin(); it != kinks.rend(); ++it) pts.push_back(std::acos(*it));  // increasing t
-    pts.push_back(M_PI);
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
-    double result = 0.0, error = 0.0;
-    const int status = gsl_integration_qagp(&F, pts.data(), pts.size(), 1e-13, 0.0, 2000, w, &result, &error);
-    gsl_integration_workspace_free(w);
-    // GSL_EROUND: the requested 1e-13 is at the rounding of the sum; its own error estimate must be below it.
-    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && error < 1e-13)) << j << ": " << error;
-    return (j == 0 ? 1.0 : 2.0) / M_PI * result;
-}
-
-}  // namespace
 
 // p1-like: sqrt(1 - r^2) at the ends, square-root kinks at -0.4 and 0.55 (sorted, increasing).
 TEST(ChebyshevProjection, KinkedFunctionAgainstAdaptiveQuadrature) {
@@ -52,7 +25,7 @@ TEST(ChebyshevProjection, KinkedFunctionAgainstAdaptiveQuadrature) {
     const int N = 40;
     const std::vector<double> c = chebyshev_projection(g, kinks, N);
     ASSERT_EQ(c.size(), static_cast<std::size_t>(N) + 1);
-    for (int j = 0; j <= N; ++j) EXPECT_NEAR(c[j], coefficient_by_qagp(g, kinks, j), 2e-13) << j;
+    for (int j = 0; j <= N; ++j) EXPECT_NEAR(c[j], chebyshev_coefficient_by_qagp(g, kinks, j, 1e-13), 2e-13) << j;
     // The series at an inner point between the kinks converges like N^-3/2 (a square-root kink's
     // coefficients fall like j^-3/2 ... ^-5/2): four times N, at least 4 times smaller.
     const double e40 = std::fabs(chebyshev_sum(c, 0.0) - g(0.0));

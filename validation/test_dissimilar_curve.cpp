@@ -13,15 +13,11 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "aluminium_on_steel.hpp"
 
 using namespace roughroll;
 
 namespace {
-// Dundurs' beta_D of aluminium (roller 1) on steel, 8(a).
-const double beta_al_st = [] {
-    const double C = 0.69 / 23.0 + 0.72 / 82.0;
-    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
-}();
 constexpr double f = 0.05;
 const solver_options options{32, method::extrapolated};  // the CLI's default method
 

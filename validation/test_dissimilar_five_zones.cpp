@@ -14,18 +14,13 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "aluminium_on_steel.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "test_zones_low_order.hpp"
 
 using namespace roughroll;
 
 namespace {
-// Dundurs' beta_D of aluminium (roller 1) on steel, 8(a).
-const double beta_al_st = [] {
-    const double C = 0.69 / 23.0 + 0.72 / 82.0;
-    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
-}();
-
 // The product's five zones at (f, Q), n = 32, found without a guess (dissimilar_zones::five_zones).
 five_zone_solution product(double f, double Q, int n = 32, const roughness& r = roughness{}) {
     contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});

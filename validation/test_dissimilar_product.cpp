@@ -16,6 +16,7 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "aluminium_on_steel.hpp"
 #include "test_zones_low_order.hpp"
 
 using namespace roughroll;
@@ -81,12 +82,6 @@ TEST(DissimilarProduct, EqualMaterialsPerCylinderAreTheOneMaterialScene) {
 // Johnson's level, the three zones of a braked roller 1 (docs/formulation.md 8(e), 8(g)).
 
 namespace {
-
-// Dundurs' beta_D of aluminium (roller 1) on steel, 8(a).
-const double beta_al_st = [] {
-    const double C = 0.69 / 23.0 + 0.72 / 82.0;
-    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
-}();
 
 roughness unequal_layers() { return roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}}; }
 

@@ -12,17 +12,12 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "aluminium_on_steel.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 using namespace roughroll;
 
 namespace {
-// Dundurs' beta_D of aluminium (roller 1, G = 23 GPa, nu = 0.31) on steel (82 GPa, 0.28), 8(a).
-const double beta_al_st = [] {
-    const double C = 0.69 / 23.0 + 0.72 / 82.0;
-    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
-}();
-
 struct run_result {
     int status;
     nlohmann::json out;

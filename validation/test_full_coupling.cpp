@@ -18,51 +18,24 @@
 #include <functional>
 #include <vector>
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "aluminium_on_steel.hpp"
+#include "chebyshev_by_qagp.hpp"
 
 using namespace roughroll;
 
 namespace {
-// Dundurs' beta_D of aluminium (roller 1) on steel, 8(a).
-const double beta_al_st = [] {
-    const double C = 0.69 / 23.0 + 0.72 / 82.0;
-    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
-}();
 const double f = 0.05;
 
 contact full(int n, double beta = beta_al_st) {
     return contact(roughness{}, f, solver_options{n, method::product}, dissimilar{beta, coupling_level::full});
 }
 
-// (2 - delta_j0)/pi int_0^pi g(cos t) cos(j t) dt by QAGP, break points at acos of the ends.
-double coefficient(const std::function<double(double)>& g, std::vector<double> ends, int j) {
-    struct data {
-        const std::function<double(double)>* g;
-        int j;
-    } d{&g, j};
-    gsl_function F{[](double t, void* p) {
-                       const auto* d = static_cast<const data*>(p);
-                       return (*d->g)(std::cos(t)) * std::cos(d->j * t);
-                   },
-                   &d};
-    std::vector<double> pts{0.0, M_PI};
-    for (double r : ends)
-        if (r > -1.0 && r < 1.0) pts.push_back(std::acos(r));
-    std::sort(pts.begin(), pts.end());
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
-    double result = 0.0, error = 0.0;
-    const int status = gsl_integration_qagp(&F, pts.data(), pts.size(), 1e-13, 0.0, 4000, w, &result, &error);
-    gsl_integration_workspace_free(w);
-    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && error < 1e-12)) << j << ": " << error;
-    return (j == 0 ? 1.0 : 2.0) / M_PI * result;
-}
 }  // namespace
 
 TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
@@ -76,9 +49,9 @@ TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
         const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
         // The alternation stops when the traction's changes are below 1e-12 in xi and lambda, so
         // the last p1 and the one p was solved with differ by about that.
-        EXPECT_NEAR(M_2_PI * p.lambda * p.offset, -coefficient(coupled, ends, 0), 1e-10) << Q;
+        EXPECT_NEAR(M_2_PI * p.lambda * p.offset, -chebyshev_coefficient_by_qagp(coupled, ends, 0, 1e-12), 1e-10) << Q;
         for (int j = 1; j <= 32; ++j)
-            EXPECT_NEAR(p.b[j - 1], (j == 1 ? M_2_PI * p.lambda : 0.0) + coefficient(coupled, ends, j), 1e-10)
+            EXPECT_NEAR(p.b[j - 1], (j == 1 ? M_2_PI * p.lambda : 0.0) + chebyshev_coefficient_by_qagp(coupled, ends, j, 1e-12), 1e-10)
                 << "Q = " << Q << ", j = " << j;
         // The coupling matters at this size: the pressure is not Johnson's.
         EXPECT_GT(std::fabs(p.offset), 1e-3);

@@ -1,0 +1,11 @@
+// Bentall and Johnson's pair in the validation tests: aluminium (roller 1, shear modulus 23 GPa,
+// Poisson's ratio 0.31) on steel (82 GPa, 0.28), the pair of scripts/reproduce.
+#pragma once
+
+// Dundurs' beta_D, docs/formulation.md 8(a): ((1 - 2 nu1)/mu1 - (1 - 2 nu2)/mu2) / (2 C),
+// C = (1 - nu1)/mu1 + (1 - nu2)/mu2; written out here, not taken from the library's
+// physical_scene, so that the tests do not share its arithmetic.
+inline const double beta_al_st = [] {
+    const double C = 0.69 / 23.0 + 0.72 / 82.0;
+    return (0.38 / 23.0 - 0.44 / 82.0) / (2.0 * C);
+}();
