@@ -167,6 +167,8 @@ private:
     std::optional<double> stick_end(const structure& z, double start, double magnitude);  // Q'(start, c0) = |Q|
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     double W(double r, double start, double c0);  // L1[p H] of the blended zone
+    // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
+    double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
     double pressure(double r) const;  // p of (4.1), from pressure_b_
 
