@@ -147,7 +147,7 @@ kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int deg
 double kernel_sweep::same_layout_rate(int degree, double max_rate) {
     const double longest = longest_segment(degree, max_rate);
     if (max_rate <= 0.0 || longest != M_PI / (degree + 2)) return max_rate;
-    // The order 12 + ceil(1.5 A longest) stays while 1.5 A longest <= order - 12; a hair below
+    // The order base_order + ceil(1.5 A longest) stays while 1.5 A longest <= order - base_order; a hair below
     // that bound, checked, so that rounding never changes the order.
     const int order = segment_order(max_rate, longest);
     const double reach = std::min((order - base_order) / (1.5 * longest) * (1.0 - 1e-12), 24.0 / longest);

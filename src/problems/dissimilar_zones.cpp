@@ -26,8 +26,9 @@ constexpr int shape_samples = 2001;       // samples of p for "even and decreasi
 constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
-// W of the blended zone (qagp): tolerances, and the error GSL's own estimate may keep when it
-// cannot reach them (the integrands have 3/2-power ends and a sqrt at r = 1).
+// W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
+// integrands' 3/2-power ends and the sqrt at r = 1 analytic): tolerances, and the error GSL's own
+// estimate may keep when it cannot reach them.
 constexpr std::size_t quadrature_intervals = 400;
 constexpr double quadrature_absolute = 1e-14;
 constexpr double quadrature_relative = 1e-12;
