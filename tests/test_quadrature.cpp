@@ -1,11 +1,13 @@
 // Gauss-Chebyshev rule (4.6)-(4.7) and the U-series tools built on it.
 #include <cmath>
+#include <vector>
 
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/normal_problem.hpp"
 
 using namespace roughroll;
 
@@ -80,4 +82,34 @@ TEST(USeries, CauchyTransformInsideAndOutside) {
     const std::vector<double> u2{0.0, 0.0, 1.0};
     const double x = 0.3;
     EXPECT_NEAR(cauchy_u_series(u2, x), -(4 * x * x * x - 3 * x), 1e-15);
+}
+
+TEST(USeries, ExactTrailingZerosChangeNoBit) {
+    // Clenshaw skips a series' exact trailing zeros (a Hertz pressure is one term of n): the
+    // values are those of the series without them, bit for bit, scalar and batched, at points
+    // of either sign (where 2x * 0 is -0).
+    const std::vector<double> short_b{0.3, -1.2, 0.5};
+    std::vector<double> long_b = short_b;
+    long_b.resize(40, 0.0);
+    std::vector<double> x, out(9);
+    for (int i = 0; i < 9; ++i) x.push_back(std::cos(0.37 * i));
+    u_series(long_b, x.data(), out.data(), x.size());
+    for (int i = 0; i < 9; ++i) {
+        EXPECT_EQ(u_series(long_b, x[i]), u_series(short_b, x[i]));
+        EXPECT_EQ(out[i], u_series(short_b, x[i]));
+    }
+    EXPECT_EQ(u_series(std::vector<double>(5, 0.0), 0.4), 0.0);
+}
+
+TEST(HertzSolution, IsOneTermExactly) {
+    // The smooth normal problem's pressure (2/pi) sqrt(1 - r^2): b_0 = 2/pi and every other b_j
+    // exactly 0 (from the node values, u_coefficients left rounding of up to 1.6e-15 in each b_j
+    // at n = 128, summed by every evaluation of p).
+    for (int n : {8, 32, 128}) {
+        const normal_solution h = hertz_solution(n, method::product);
+        ASSERT_EQ(h.b.size(), static_cast<std::size_t>(n));
+        EXPECT_EQ(h.b[0], M_2_PI);
+        for (int j = 1; j < n; ++j) EXPECT_EQ(h.b[j], 0.0) << "n = " << n << ", j = " << j;
+        for (double r : {-0.9, 0.0, 0.3, 0.99}) EXPECT_EQ(h.pressure(r), M_2_PI * std::sqrt(1.0 - r * r)) << r;
+    }
 }

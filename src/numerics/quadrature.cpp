@@ -117,10 +117,20 @@ std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vecto
     return b;
 }
 
+namespace {
+// The length of b without its exact trailing zeros (a Hertz pressure is one term of n): through
+// them Clenshaw's recurrence stays +0 exactly, so skipping them changes no bit.
+std::size_t significant_terms(const std::vector<double>& b) {
+    std::size_t size = b.size();
+    while (size > 1 && b[size - 1] == 0.0) --size;
+    return size;
+}
+}  // namespace
+
 double u_series(const std::vector<double>& b, double x) {
     // Clenshaw: y_j = b_j + 2x y_{j+1} - y_{j+2}; U-series sum is y_0.
     double y1 = 0.0, y2 = 0.0;
-    for (auto j = b.size(); j-- > 0;) {
+    for (auto j = significant_terms(b); j-- > 0;) {
         const double y0 = b[j] + 2.0 * x * y1 - y2;
         y2 = y1;
         y1 = y0;
@@ -136,7 +146,7 @@ void u_series(const std::vector<double>& b, const double* x, double* out, std::s
         const std::size_t width = std::min(block, count - first);
         double two_x[block] = {}, y1[block] = {}, y2[block] = {};
         for (std::size_t i = 0; i < width; ++i) two_x[i] = 2.0 * x[first + i];
-        for (auto j = b.size(); j-- > 0;) {
+        for (auto j = significant_terms(b); j-- > 0;) {
             const double bj = b[j];
             for (std::size_t i = 0; i < block; ++i) {
                 const double y0 = bj + two_x[i] * y1[i] - y2[i];

@@ -58,9 +58,13 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
 }
 
 normal_solution hertz_solution(int n, method how) {
+    // phi = 2/pi (Hertz, lambda = 1): the U-series is b_0 = 2/pi and nothing else, exactly (its
+    // transform from the node values, u_coefficients, left rounding of up to 1.6e-15 in every b_j
+    // at n = 128, which every evaluation of p then summed over n terms).
     gauss_chebyshev rule(n);
     std::vector<double> phi(n, M_2_PI);
-    auto b = u_coefficients(rule, phi);
+    std::vector<double> b(n, 0.0);
+    b[0] = M_2_PI;
     return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr, {}, 0.0};
 }
 
