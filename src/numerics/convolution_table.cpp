@@ -183,16 +183,17 @@ void convolution_table::operator()(const double* r, double* out, std::size_t cou
     constexpr std::size_t lanes = 4;
     for (std::size_t first = 0; first < count; first += lanes) {
         const std::size_t width = std::min(lanes, count - first);
+        // Only the lanes holding points: a single point (the scalar operator) costs one recurrence.
         panel_point p[lanes];
-        for (std::size_t i = 0; i < lanes; ++i) {
-            const double theta = std::acos(std::max(-1.0, std::min(1.0, r[first + std::min(i, width - 1)])));
+        for (std::size_t i = 0; i < width; ++i) {
+            const double theta = std::acos(std::max(-1.0, std::min(1.0, r[first + i])));
             const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
             p[i] = {&coefficients_[static_cast<std::size_t>(j) * (degree + 1)], 2.0 * (theta - j * length_) / length_ - 1.0};
         }
         // Clenshaw for sum_k c_k T_k(s), the lanes' steps interleaved.
         double y1[lanes] = {}, y2[lanes] = {};
         for (int k = degree; k >= 1; --k)
-            for (std::size_t i = 0; i < lanes; ++i) {
+            for (std::size_t i = 0; i < width; ++i) {
                 const double y0 = p[i].c[k] + 2.0 * p[i].s * y1[i] - y2[i];
                 y2[i] = y1[i];
                 y1[i] = y0;

@@ -121,7 +121,8 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
       workspace_(make_integration_workspace(quadrature_intervals)) {
     check_beta_d(beta_d);
     // The pressure's U-series without its exact trailing zeros (Hertz: one term): the same values
-    // (Clenshaw's recurrence stays 0 through them), for the many values W's quadrature takes.
+    // (u_series skips them too, bit for bit), trimmed once here so that the many values W's
+    // quadrature takes do not each scan them.
     while (pressure_b_.size() > 1 && pressure_b_.back() == 0.0) pressure_b_.pop_back();
 }
 
@@ -187,11 +188,11 @@ double dissimilar_zones::integrate_piece(const std::function<double(double)>& in
         const double eta = phi < M_PI_2 ? a + 2.0 * half * s * s : b - 2.0 * half * c * c;
         return integrand(eta) * half * std::sin(phi);
     };
-    const auto integrate = [&](const std::function<double(double)>& f, bool in_eta, double& error) {
+    const auto integrate = [&](const std::function<double(double)>& f, bool in_eta) {
         gsl_function fn;
         fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
         fn.params = const_cast<std::function<double(double)>*>(&f);
-        double result = 0.0;
+        double result = 0.0, error = 0.0;
         const int status =
             in_eta ? gsl_integration_qags(&fn, a, b, quadrature_absolute, quadrature_relative, quadrature_intervals,
                                           workspace_.get(), &result, &error)
@@ -200,10 +201,9 @@ double dissimilar_zones::integrate_piece(const std::function<double(double)>& in
         // Accept GSL's "cannot reach the tolerance" when its own error estimate is still small.
         return std::make_pair(status == GSL_SUCCESS || error < quadrature_accepted ? GSL_SUCCESS : status, result);
     };
-    double error = 0.0;
-    const auto [status, result] = integrate(in_phi, false, error);
+    const auto [status, result] = integrate(in_phi, false);
     if (status == GSL_SUCCESS && std::isfinite(result)) return result;
-    const auto [eta_status, eta_result] = integrate(integrand, true, error);
+    const auto [eta_status, eta_result] = integrate(integrand, true);
     gsl_check(eta_status, what);
     return eta_result;
 }
