@@ -227,6 +227,32 @@ TEST(KernelMoments, ClosedFormAtTheEnds) {
     EXPECT_THROW(integrate_at_end(kernel(), {1.0}, 0.5), numerical_error);
 }
 
+TEST(KernelOperator, ServesEveryRateOfItsLayout) {
+    // An operator built for the normal kernel's rate integrates every rate up to the reach of its
+    // sweep's layout (kernel_sweep::same_layout_rate), with the values, bit for bit, of an operator
+    // built for that rate alone: the tangential solver then shares the normal problem's workspace
+    // for a K1* of another rate (unequal kernels), instead of building a second one. A rate beyond
+    // the reach is refused by the sweep; the paper's node sum takes any rate.
+    const gauss_chebyshev rule(64);
+    const kernel normal(std::vector<exponential_term>{{0.5, 0.5}});
+    const kernel tangential(std::vector<exponential_term>{{0.8, 1.5}, {0.3, 3.0}});
+    const kernel steep(std::vector<exponential_term>{{1.0, 60.0}});
+    const kernel_operator shared(rule, method::product, normal.max_rate());
+    EXPECT_EQ(shared.max_rate(), kernel_sweep::same_layout_rate(rule.n - 1, normal.max_rate()));
+    EXPECT_GE(shared.max_rate(), tangential.max_rate());
+    EXPECT_LT(shared.max_rate(), steep.max_rate());
+    matrix_ptr a = make_matrix(rule.n + 1, rule.n), b = make_matrix(rule.n + 1, rule.n);
+    gsl_matrix_set_zero(a.get());
+    gsl_matrix_set_zero(b.get());
+    shared.add_to(a.get(), tangential);
+    kernel_operator(rule, method::product, tangential.max_rate()).add_to(b.get(), tangential);
+    for (int m = 0; m <= rule.n; ++m)
+        for (int j = 0; j < rule.n; ++j)
+            ASSERT_EQ(gsl_matrix_get(a.get(), m, j), gsl_matrix_get(b.get(), m, j)) << m << ", " << j;
+    EXPECT_THROW(shared.add_to(a.get(), steep), numerical_error);
+    EXPECT_TRUE(std::isinf(kernel_operator(rule, method::paper, normal.max_rate()).max_rate()));
+}
+
 TEST(SweepCache, SharedWorkspaceGivesTheSameOperator) {
     // Two normal kernels whose rates differ but need the same workspace (the trial widths of a
     // width search): the operators from one cache equal, bit for bit, those built alone; a rate

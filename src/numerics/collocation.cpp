@@ -45,11 +45,16 @@ std::shared_ptr<const kernel_sweep> sweep_cache::get(const gauss_chebyshev& rule
 }
 
 kernel_operator::kernel_operator(const gauss_chebyshev& rule, method how, double max_rate, sweep_cache* cache)
-    : rule_(rule), how_(how), max_rate_(max_rate) {
+    : rule_(rule),
+      how_(how),
+      // The paper's node sum takes any rate; a sweep every rate up to the reach of its layout
+      // (kernel_sweep::same_layout_rate), so that a second kernel of another rate, K1* beside
+      // K2*, shares the workspace whenever it fits (tangential_solver), with the same values.
+      max_rate_(how == method::paper ? HUGE_VAL : kernel_sweep::same_layout_rate(rule.n - 1, max_rate)) {
     // Product integration: int l_k(eta) sqrt(1 - eta^2) K(eta - s_m) d eta for the Lagrange
     // basis l_k of the nodes, the jump at eta = s_m integrated exactly (kernel_sweep.hpp).
     if (how != method::paper)  // product, and both levels of extrapolated
-        sweep_ = cache ? cache->get(rule, max_rate) : lagrange_sweep(rule, max_rate);
+        sweep_ = cache ? cache->get(rule, max_rate) : lagrange_sweep(rule, max_rate_);
 }
 
 void kernel_operator::add_to(gsl_matrix* a, const kernel& kern) const {

@@ -34,7 +34,9 @@ public:
 
     // Adds the kernel term of `k` into a(m, k), m <= n, k < n. Nothing when k is empty.
     void add_to(gsl_matrix* a, const kernel& k) const;
-    double max_rate() const { return max_rate_; }  // the fastest decay it integrates
+    // The fastest decay it integrates: at least the max_rate it was built for (the reach of its
+    // sweep's layout; unbounded for the paper's node sum).
+    double max_rate() const { return max_rate_; }
 
 private:
     gauss_chebyshev rule_;  // a copy: an operator may outlive the solver that built it
