@@ -152,6 +152,17 @@ void bm_swept_point_warm(benchmark::State& state) {
     }
 }
 
+// A contact's one-time work with its first point: the contact (normal problems and workspaces of
+// every level), then the swept point at c0 = -0.9, where the unequal-kernel scene's estimate takes
+// its second chance at 2n (args: method, n, scene).
+void bm_contact_first_point(benchmark::State& state) {
+    const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
+    for (auto _ : state) {
+        contact c(scene_of(state.range(2)), 0.3, o);
+        benchmark::DoNotOptimize(c.at_stick_end(-0.9).solution.xi);
+    }
+}
+
 // The one-parameter limit (method::one_parameter), 2T/A^2 = 0.2 normal and tangential (arg 1:
 // 0 equal, 1 tangential 0.1): a point at a given Q (normal solve, Brent, checks), and one point
 // of a curve swept in c0 with the normal solution shared (args: n; scene).
@@ -420,6 +431,7 @@ BENCHMARK(bm_point_estimated)->ArgsProduct({{1, 2}, {96, 128}})->Unit(benchmark:
 BENCHMARK(bm_curve_point)->ArgsProduct({{0, 1, 2}, {96, 128, 200}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_swept_point)->ArgsProduct({{1, 2}, {96, 128}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_swept_point_warm)->ArgsProduct({{2}, {128}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(bm_contact_first_point)->ArgsProduct({{2}, {128}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_point)->ArgsProduct({{64, 128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_swept_point)->ArgsProduct({{128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_physical_point)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
