@@ -401,6 +401,19 @@ void bm_five_zone_point(benchmark::State& state) {
     }
 }
 
+// The same free-rolling point with bm_five_zones' layers (the pressure then has n terms that W
+// sums at every value: u_series_table.hpp); arg: n.
+void bm_five_zone_point_layers(benchmark::State& state) {
+    const double beta = 0.1438337435056057, f = 0.05;
+    const roughness r{{{1.0, 0.5}, {0.5, 2.0}}, {}};
+    for (auto _ : state) {
+        contact c(r, f, solver_options{static_cast<int>(state.range(0)), method::extrapolated},
+                  dissimilar{beta, coupling_level::johnson});
+        const tangential_solution s = c.point(0.0);
+        benchmark::DoNotOptimize(c.estimate(s));
+    }
+}
+
 // Issue 13, the two coupling levels (docs/formulation.md 8(e)): one fresh point of aluminium on
 // steel at f = 0.05, smooth, product integration at n, no levels and no estimate (at full coupling
 // the estimate refuses these loads at the default n: 8(e)); arg 0: 0 braked Q/f = -0.75 (three
@@ -418,6 +431,7 @@ void bm_coupling_point(benchmark::State& state) {
 
 BENCHMARK(bm_coupling_point)->ArgsProduct({{0, 1}, {0, 1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zone_point)->ArgsProduct({{0, 1}, {32, 128}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+BENCHMARK(bm_five_zone_point_layers)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zones)->ArgsProduct({{0, 1}, {0}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_five_zones)->ArgsProduct({{0}, {1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_zone_point)->ArgsProduct({{15}, {1, 2}, {128}, {0, 1}})->Unit(benchmark::kMillisecond);

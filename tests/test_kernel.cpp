@@ -11,8 +11,10 @@
 #include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/convolution_table.hpp"
+#include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
+#include "roughroll/numerics/theta_panels.hpp"
 
 using namespace roughroll;
 
@@ -146,6 +148,74 @@ TEST(KernelSweep, RejectsUnsortedPoints) {
     auto one = [](double, double* out) { *out = 1.0; };
     EXPECT_THROW(sweep(k, {0.1, 0.2}, 1, 0, one), numerical_error);
     EXPECT_THROW(sweep(k, {1.5}, 1, 0, one), numerical_error);
+}
+
+TEST(USeriesTable, AgreesWithTheSeriesWithinItsBound) {
+    // The tabulated pressure sqrt(1 - r^2) sum b_j U_j(r) against the series summed by Clenshaw, for
+    // coefficients that fall algebraically (a rough layer's pressure: none below rounding) and
+    // n from just above a panel's 25 terms to 300, at points uniform in theta and next to both ends.
+    // The two may differ by the table's bound (at most eps B by construction) and the series' own
+    // rounding (n eps B); a panel misplaced or a bound too small shows as far more.
+    for (int n : {26, 64, 128, 300}) {
+        std::vector<double> b(n);
+        double l1 = 0.0;
+        for (int j = 0; j < n; ++j) {
+            b[j] = (j == 0 ? 0.64 : 0.0) + (j % 2 == 0 ? 0.3 : -0.3) / std::pow(1.0 + j, 3.5) + 1e-6 * std::sin(j);
+            l1 += std::fabs(b[j]);
+        }
+        const u_series_table table(b);
+        EXPECT_LE(table.error_bound(), GSL_DBL_EPSILON * l1) << "n = " << n;
+        std::vector<double> r;
+        for (int i = 0; i <= 3000; ++i) r.push_back(std::cos(M_PI * i / 3000.0 + 1e-4 * std::sin(7.0 * i)));
+        for (double d : {1e-3, 1e-8, 1e-13, 1e-16}) r.insert(r.end(), {1.0 - d, -1.0 + d});
+        double worst = 0.0;
+        for (double x : r) {
+            // sqrt((1 - x)(1 + x)): 1 - x^2 would lose eps/(1 - x^2) relative next to the ends.
+            const double series = u_series(b, x) * std::sqrt(std::max(0.0, (1.0 - x) * (1.0 + x)));
+            worst = std::max(worst, std::fabs(table(x) - series));
+        }
+        EXPECT_LE(worst, table.error_bound() + n * GSL_DBL_EPSILON * l1) << "n = " << n << ", " << table.panels() << " panels";
+    }
+    EXPECT_THROW(u_series_table(std::vector<double>{}), numerical_error);
+}
+
+TEST(USeriesTable, PanelBoundHoldsOnCoarsePanels) {
+    // The Bernstein-ellipse bound of u_series_table::panel_bound against the measured error of
+    // theta_panels' interpolant where it is far above rounding: coarse panels (bounds from 1e-3 to
+    // 1e-11) of a series with all |b_j| equal (the largest P for its B) and of a falling one. The
+    // measured error must not exceed the bound; a bound without the growth e^{n y} fails here.
+    const int n = 128;
+    for (int falling = 0; falling < 2; ++falling) {
+        std::vector<double> b(n);
+        double l1 = 0.0;
+        for (int j = 0; j < n; ++j) {
+            b[j] = (j % 3 == 1 ? -1.0 : 1.0) / (falling ? std::pow(1.0 + j, 2.0) : 1.0);
+            l1 += std::fabs(b[j]);
+        }
+        for (int panels : {24, 32, 40}) {
+            theta_panels table(panels);
+            const int size = theta_panels::degree + 1;
+            std::vector<double> values(static_cast<std::size_t>(panels) * size);
+            // P = sum b_j sin((j+1) theta) term by term, at theta = acos r of the r evaluated (r's own
+            // rounding moves theta by eps/sin theta next to the ends, and P with it).
+            auto sines = [&b](double theta) {
+                double sum = 0.0;
+                for (int k = n; k-- > 0;) sum += b[k] * std::sin((k + 1) * theta);
+                return sum;
+            };
+            for (int j = 0; j < panels; ++j)
+                for (int i = 0; i < size; ++i) values[j * size + i] = sines(table.node(j, i));
+            table.set_values(values);
+            const double bound = u_series_table::panel_bound(n, M_PI / panels) * l1;
+            double worst = 0.0;
+            for (int i = 1; i < 4000; ++i) {
+                const double r = std::cos(M_PI * i / 4000.0);
+                worst = std::max(worst, std::fabs(table(r) - sines(std::acos(r))));
+            }
+            EXPECT_LE(worst, bound + n * GSL_DBL_EPSILON * l1) << panels << " panels, falling " << falling;
+            EXPECT_GT(worst, 1e-30);
+        }
+    }
 }
 
 TEST(ConvolutionTable, AgreesWithSweepAndMoments) {

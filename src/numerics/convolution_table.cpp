@@ -8,30 +8,13 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/numerics/theta_panels.hpp"
 
 namespace roughroll {
 
 namespace {
-constexpr int degree = 24;  // N: Chebyshev-Lobatto points 0..N per panel
+constexpr int degree = theta_panels::degree;
 constexpr int max_panels = 1000000;
-
-// Chebyshev-Lobatto points of [-1, 1], ascending: s_i = -cos(i pi/N) = cos((N - i) pi/N).
-double lobatto(int i) { return -std::cos(M_PI * i / degree); }
-
-// Values at the N + 1 points -> coefficients c_k of sum_k c_k T_k (the discrete cosine
-// transform of the Lobatto grid); row-major (N+1) x (N+1).
-std::vector<double> values_to_coefficients() {
-    std::vector<double> c((degree + 1) * (degree + 1));
-    for (int k = 0; k <= degree; ++k)
-        for (int i = 0; i <= degree; ++i) {
-            const int m = degree - i;  // s_i = cos(m pi/N)
-            double w = 2.0 / degree * std::cos(M_PI * k * m / degree);
-            if (m == 0 || m == degree) w *= 0.5;
-            if (k == 0 || k == degree) w *= 0.5;
-            c[k * (degree + 1) + i] = w;
-        }
-    return c;
-}
 
 // Values at the points -> int_{-1}^{s_i} of their interpolant: the coefficients of the
 // antiderivative, int T_k = T_{k+1}/(2(k+1)) - T_{k-1}/(2(k-1)) (k >= 2), int T_1 = T_2/4,
@@ -56,8 +39,6 @@ std::vector<double> integration_matrix(const std::vector<double>& to_coefficient
     return q;
 }
 
-// The bound of the Bernstein-ellipse theorem for one rho: 4 M rho^-N/(rho - 1).
-double ellipse_term(double modulus, double rho) { return 4.0 * modulus * std::pow(rho, -degree) / (rho - 1.0); }
 }  // namespace
 
 double convolution_table::panel_bound(int n, double rate, double length) {
@@ -76,8 +57,8 @@ double convolution_table::panel_bound(int n, double rate, double length) {
         const double e_a = std::exp(rate * (h + x + std::cosh(y) - 1.0));
         const double m_h = std::exp((n + 1) * y) * e_a;
         const double m_l = e_a * (M_PI + (h + x + y) * m_h);
-        best_h = std::min(best_h, ellipse_term(m_h, rho));
-        best_l = std::min(best_l, ellipse_term(m_l, rho));
+        best_h = std::min(best_h, theta_panels::ellipse_term(m_h, rho));
+        best_l = std::min(best_l, theta_panels::ellipse_term(m_l, rho));
     }
     return lebesgue * 2.0 * M_PI * best_h + 2.0 * best_l;
 }
@@ -99,22 +80,18 @@ convolution_table::convolution_table(const kernel& k, const std::vector<double>&
         panels = std::min(max_panels, panels + std::max(1, panels / 4));
         relative = panel_bound(n, rate, M_PI / panels);
     }
-    panels_ = panels;
-    length_ = M_PI / panels;
+    table_ = theta_panels(panels);
+    const double length = table_.length();
     bound_ = relative * l1 * strength;
 
     const int size = degree + 1;
-    const std::vector<double> to_c = values_to_coefficients();
-    const std::vector<double> integrate = integration_matrix(to_c);
-    const double h = 0.5 * length_;
+    const std::vector<double> integrate = integration_matrix(theta_panels::values_to_coefficients());
+    const double h = 0.5 * length;
     // The nodes of every panel (panel j, point i at index j * size + i), cos(theta) and g there.
     const std::size_t count = static_cast<std::size_t>(panels) * size;
     std::vector<double> c(count), g(count);
     for (int j = 0; j < panels; ++j)
-        for (int i = 0; i < size; ++i) {
-            const double theta = i == degree ? (j + 1) * length_ : j * length_ + (lobatto(i) + 1.0) * h;
-            c[j * size + i] = std::cos(theta);
-        }
+        for (int i = 0; i < size; ++i) c[j * size + i] = std::cos(table_.node(j, i));
     u_series(b, c.data(), g.data(), count);
     for (std::size_t p = 0; p < count; ++p) g[p] *= 1.0 - c[p] * c[p];  // phi sin^2
 
@@ -132,7 +109,7 @@ convolution_table::convolution_table(const kernel& k, const std::vector<double>&
         double carried = 0.0;
         for (int j = 0; j < panels; ++j) {
             const double* cj = &c[j * size];
-            const double cos_a = std::cos(j * length_);
+            const double cos_a = std::cos(j * length);
             for (int i = 0; i < size; ++i) {
                 grow[i] = std::exp(A * (cos_a - cj[i]));  // >= 1, at most exp(A length)
                 w[i] = g[j * size + i] * grow[i];
@@ -145,7 +122,7 @@ convolution_table::convolution_table(const kernel& k, const std::vector<double>&
         carried = 0.0;
         for (int j = panels; j-- > 0;) {
             const double* cj = &c[j * size];
-            const double cos_b = std::cos((j + 1) * length_);
+            const double cos_b = std::cos((j + 1) * length);
             for (int i = 0; i < size; ++i) {
                 grow[i] = std::exp(A * (cj[i] - cos_b));
                 w[i] = g[j * size + i] * grow[i];
@@ -156,50 +133,11 @@ convolution_table::convolution_table(const kernel& k, const std::vector<double>&
             carried = (carried + integral[degree]) / grow[0];
         }
     }
-    coefficients_.assign(count, 0.0);
-    for (int j = 0; j < panels; ++j)
-        for (int k2 = 0; k2 < size; ++k2) {
-            double sum = 0.0;
-            for (int i = 0; i < size; ++i) sum += to_c[k2 * size + i] * d[j * size + i];
-            coefficients_[j * size + k2] = sum;
-        }
+    table_.set_values(d);
 }
 
-namespace {
-// The panel of r and r's variable s in it, in [-1, 1].
-struct panel_point {
-    const double* c;  // the panel's Chebyshev-T coefficients
-    double s;
-};
-}  // namespace
+double convolution_table::operator()(double r) const { return table_(r); }
 
-double convolution_table::operator()(double r) const {
-    double out = 0.0;
-    (*this)(&r, &out, 1);
-    return out;
-}
-
-void convolution_table::operator()(const double* r, double* out, std::size_t count) const {
-    constexpr std::size_t lanes = 4;
-    for (std::size_t first = 0; first < count; first += lanes) {
-        const std::size_t width = std::min(lanes, count - first);
-        // Only the lanes holding points: a single point (the scalar operator) costs one recurrence.
-        panel_point p[lanes];
-        for (std::size_t i = 0; i < width; ++i) {
-            const double theta = std::acos(std::max(-1.0, std::min(1.0, r[first + i])));
-            const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
-            p[i] = {&coefficients_[static_cast<std::size_t>(j) * (degree + 1)], 2.0 * (theta - j * length_) / length_ - 1.0};
-        }
-        // Clenshaw for sum_k c_k T_k(s), the lanes' steps interleaved.
-        double y1[lanes] = {}, y2[lanes] = {};
-        for (int k = degree; k >= 1; --k)
-            for (std::size_t i = 0; i < width; ++i) {
-                const double y0 = p[i].c[k] + 2.0 * p[i].s * y1[i] - y2[i];
-                y2[i] = y1[i];
-                y1[i] = y0;
-            }
-        for (std::size_t i = 0; i < width; ++i) out[first + i] = p[i].c[0] + p[i].s * y1[i] - y2[i];
-    }
-}
+void convolution_table::operator()(const double* r, double* out, std::size_t count) const { table_(r, out, count); }
 
 }  // namespace roughroll

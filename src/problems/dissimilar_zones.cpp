@@ -124,10 +124,17 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
     // (u_series skips them too, bit for bit), trimmed once here so that the many values W's
     // quadrature takes do not each scan them.
     while (pressure_b_.size() > 1 && pressure_b_.back() == 0.0) pressure_b_.pop_back();
+    // A rough layer's pressure keeps all n terms (they fall algebraically, not below rounding), and W
+    // takes its values by the hundred thousand per zone solve: a table whose representation error is
+    // bounded by eps sum |b_j| gives them at the cost of an acos and a panel's 25 terms
+    // (u_series_table.hpp). Up to twice that many terms the series is summed as it is (measured
+    // slower with the table at 32 terms; docs/performance.md), and Hertz's one term stays exact.
+    if (pressure_b_.size() > static_cast<std::size_t>(2 * theta_panels::degree + 2)) pressure_table_.emplace(pressure_b_);
 }
 
 double dissimilar_zones::pressure(double r) const {
     if (std::fabs(r) >= 1.0) return 0.0;
+    if (pressure_table_) return (*pressure_table_)(r);
     return u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1), as normal_solution::pressure
 }
 

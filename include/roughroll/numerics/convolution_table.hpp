@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/theta_panels.hpp"
 
 namespace roughroll {
 
@@ -36,7 +37,7 @@ public:
     // D(r[i]) into out[i], i < count: the scalar value bit for bit, four points' Clenshaw
     // recurrences interleaved (each alone is a chain of 24 dependent steps).
     void operator()(const double* r, double* out, std::size_t count) const;
-    int panels() const { return panels_; }
+    int panels() const { return table_.panels(); }
     // The bound on |D - table| (absolute), and the size bound pi B sum |T| it is compared with.
     double error_bound() const { return bound_; }
     double scale() const { return scale_; }
@@ -46,10 +47,8 @@ public:
     static double panel_bound(int n, double rate, double length);
 
 private:
-    int panels_ = 0;
-    double length_ = 0.0;             // pi / panels_
+    theta_panels table_;  // D in theta (theta_panels.hpp)
     double bound_ = 0.0, scale_ = 0.0;
-    std::vector<double> coefficients_;  // panels_ x (degree + 1), Chebyshev-T in the panel variable
 };
 
 }  // namespace roughroll

@@ -41,6 +41,7 @@
 
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/method.hpp"
+#include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 #include "roughroll/problems/zone_solver.hpp"
@@ -170,13 +171,15 @@ private:
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
-    double pressure(double r) const;  // p of (4.1), from pressure_b_
+    double pressure(double r) const;  // p of (4.1), from pressure_b_ or its table
 
     tangential_solver& solver_;
     kernel k1_;
     double beta_d_;
     double f_;
     std::vector<double> pressure_b_;  // the pressure's U coefficients without trailing zeros
+    // The pressure tabulated (u_series_table.hpp) where its series is longer than a panel's.
+    std::optional<u_series_table> pressure_table_;
     integration_workspace_ptr workspace_;
 };
 

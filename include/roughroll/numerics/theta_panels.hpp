@@ -1,0 +1,48 @@
+// A function of r in [-1, 1] kept as Chebyshev series in theta = acos r on P equal panels of
+// [0, pi], the representation that convolution_table (G of (3.25)) and u_series_table (the
+// pressure (4.1) in W of 8(g)) share. On panel j, theta in [j L, (j+1) L] with L = pi/P and
+// s = 2 (theta - j L)/L - 1, f = sum_{k<=N} c_k T_k(s), N = degree, the interpolant of f's values at
+// the panel's Chebyshev-Lobatto points (a discrete cosine transform). Its error is bounded by the
+// Bernstein-ellipse theorem (Trefethen, Approximation Theory and Approximation Practice, Thm 8.2):
+// for f analytic and |f| <= M inside the ellipse E_rho around a panel, 4 M rho^-N/(rho - 1)
+// (docs/formulation.md, "G once per contact").
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace roughroll {
+
+class theta_panels {
+public:
+    static constexpr int degree = 24;  // N: Chebyshev-Lobatto points 0..N per panel
+
+    // Chebyshev-Lobatto points of [-1, 1], ascending: s_i = -cos(i pi/N) = cos((N - i) pi/N).
+    static double lobatto(int i);
+    // Values at the N + 1 points -> coefficients c_k of sum_k c_k T_k; row-major (N+1) x (N+1).
+    static std::vector<double> values_to_coefficients();
+    // The theorem's bound for one rho: 4 M rho^-N/(rho - 1).
+    static double ellipse_term(double modulus, double rho);
+
+    theta_panels() = default;
+    explicit theta_panels(int panels);
+
+    int panels() const { return panels_; }
+    double length() const { return length_; }  // pi / panels
+    // theta of point i of panel j (its end exactly at i = N).
+    double node(int j, int i) const;
+    // The series from f at the nodes, node (j, i) at values[j * (N + 1) + i].
+    void set_values(const std::vector<double>& values);
+
+    double operator()(double r) const;  // f(r), r clamped to [-1, 1]
+    // f(r[i]) into out[i], i < count: the scalar value bit for bit, four points' Clenshaw
+    // recurrences interleaved (each alone is a chain of N dependent steps).
+    void operator()(const double* r, double* out, std::size_t count) const;
+
+private:
+    int panels_ = 0;
+    double length_ = 0.0;
+    std::vector<double> coefficients_;  // panels_ x (degree + 1), Chebyshev-T in the panel variable
+};
+
+}  // namespace roughroll

@@ -1,0 +1,92 @@
+#include "roughroll/numerics/theta_panels.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gsl/gsl_math.h>
+
+namespace roughroll {
+
+double theta_panels::lobatto(int i) { return -std::cos(M_PI * i / degree); }
+
+std::vector<double> theta_panels::values_to_coefficients() {
+    std::vector<double> c((degree + 1) * (degree + 1));
+    for (int k = 0; k <= degree; ++k)
+        for (int i = 0; i <= degree; ++i) {
+            const int m = degree - i;  // s_i = cos(m pi/N)
+            double w = 2.0 / degree * std::cos(M_PI * k * m / degree);
+            if (m == 0 || m == degree) w *= 0.5;
+            if (k == 0 || k == degree) w *= 0.5;
+            c[k * (degree + 1) + i] = w;
+        }
+    return c;
+}
+
+double theta_panels::ellipse_term(double modulus, double rho) { return 4.0 * modulus * std::pow(rho, -degree) / (rho - 1.0); }
+
+theta_panels::theta_panels(int panels) : panels_(panels), length_(M_PI / panels) {}
+
+double theta_panels::node(int j, int i) const {
+    return i == degree ? (j + 1) * length_ : j * length_ + (lobatto(i) + 1.0) * 0.5 * length_;
+}
+
+void theta_panels::set_values(const std::vector<double>& values) {
+    const int size = degree + 1;
+    const std::vector<double> to_c = values_to_coefficients();
+    coefficients_.assign(values.size(), 0.0);
+    for (int j = 0; j < panels_; ++j)
+        for (int k = 0; k < size; ++k) {
+            double sum = 0.0;
+            for (int i = 0; i < size; ++i) sum += to_c[k * size + i] * values[j * size + i];
+            coefficients_[j * size + k] = sum;
+        }
+}
+
+namespace {
+// The panel of r and r's variable s in it, in [-1, 1].
+struct panel_point {
+    const double* c;  // the panel's Chebyshev-T coefficients
+    double s;
+};
+}  // namespace
+
+double theta_panels::operator()(double r) const {
+    // The batched route's operations for one lane, without its lanes (W's quadrature takes single
+    // values by the hundred thousand).
+    const double theta = std::acos(std::max(-1.0, std::min(1.0, r)));
+    const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
+    const double* c = &coefficients_[static_cast<std::size_t>(j) * (degree + 1)];
+    const double s = 2.0 * (theta - j * length_) / length_ - 1.0;
+    double y1 = 0.0, y2 = 0.0;
+    for (int k = degree; k >= 1; --k) {
+        const double y0 = c[k] + 2.0 * s * y1 - y2;
+        y2 = y1;
+        y1 = y0;
+    }
+    return c[0] + s * y1 - y2;
+}
+
+void theta_panels::operator()(const double* r, double* out, std::size_t count) const {
+    constexpr std::size_t lanes = 4;
+    for (std::size_t first = 0; first < count; first += lanes) {
+        const std::size_t width = std::min(lanes, count - first);
+        // Only the lanes holding points: a single point (the scalar operator) costs one recurrence.
+        panel_point p[lanes];
+        for (std::size_t i = 0; i < width; ++i) {
+            const double theta = std::acos(std::max(-1.0, std::min(1.0, r[first + i])));
+            const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
+            p[i] = {&coefficients_[static_cast<std::size_t>(j) * (degree + 1)], 2.0 * (theta - j * length_) / length_ - 1.0};
+        }
+        // Clenshaw for sum_k c_k T_k(s), the lanes' steps interleaved.
+        double y1[lanes] = {}, y2[lanes] = {};
+        for (int k = degree; k >= 1; --k)
+            for (std::size_t i = 0; i < width; ++i) {
+                const double y0 = p[i].c[k] + 2.0 * p[i].s * y1[i] - y2[i];
+                y2[i] = y1[i];
+                y1[i] = y0;
+            }
+        for (std::size_t i = 0; i < width; ++i) out[first + i] = p[i].c[0] + p[i].s * y1[i] - y2[i];
+    }
+}
+
+}  // namespace roughroll
