@@ -216,6 +216,8 @@ TEST(USeriesTable, PanelBoundHoldsOnCoarsePanels) {
             EXPECT_GT(worst, 1e-30);
         }
     }
+    EXPECT_THROW(theta_panels(0), numerical_error);
+    EXPECT_THROW(theta_panels(3).set_values(std::vector<double>(3 * theta_panels::degree)), numerical_error);
 }
 
 TEST(ConvolutionTable, AgreesWithSweepAndMoments) {

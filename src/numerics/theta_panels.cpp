@@ -5,6 +5,8 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/base/error.hpp"
+
 namespace roughroll {
 
 double theta_panels::lobatto(int i) { return -std::cos(M_PI * i / degree); }
@@ -24,7 +26,9 @@ std::vector<double> theta_panels::values_to_coefficients() {
 
 double theta_panels::ellipse_term(double modulus, double rho) { return 4.0 * modulus * std::pow(rho, -degree) / (rho - 1.0); }
 
-theta_panels::theta_panels(int panels) : panels_(panels), length_(M_PI / panels) {}
+theta_panels::theta_panels(int panels) : panels_(panels), length_(M_PI / panels) {
+    if (panels < 1) throw numerical_error("theta_panels: the panel count must be positive");
+}
 
 double theta_panels::node(int j, int i) const {
     return i == degree ? (j + 1) * length_ : j * length_ + (lobatto(i) + 1.0) * 0.5 * length_;
@@ -32,6 +36,8 @@ double theta_panels::node(int j, int i) const {
 
 void theta_panels::set_values(const std::vector<double>& values) {
     const int size = degree + 1;
+    if (values.size() != static_cast<std::size_t>(panels_) * size)
+        throw numerical_error("theta_panels: one value per node expected");
     const std::vector<double> to_c = values_to_coefficients();
     coefficients_.assign(values.size(), 0.0);
     for (int j = 0; j < panels_; ++j)

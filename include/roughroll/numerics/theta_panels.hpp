@@ -25,13 +25,14 @@ public:
     static double ellipse_term(double modulus, double rho);
 
     theta_panels() = default;
-    explicit theta_panels(int panels);
+    explicit theta_panels(int panels);  // throws numerical_error for panels < 1
 
     int panels() const { return panels_; }
     double length() const { return length_; }  // pi / panels
     // theta of point i of panel j (its end exactly at i = N).
     double node(int j, int i) const;
-    // The series from f at the nodes, node (j, i) at values[j * (N + 1) + i].
+    // The series from f at the nodes, node (j, i) at values[j * (N + 1) + i]; throws
+    // numerical_error unless there is one value per node.
     void set_values(const std::vector<double>& values);
 
     double operator()(double r) const;  // f(r), r clamped to [-1, 1]

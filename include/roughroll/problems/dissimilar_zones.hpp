@@ -178,7 +178,7 @@ private:
     double beta_d_;
     double f_;
     std::vector<double> pressure_b_;  // the pressure's U coefficients without trailing zeros
-    // The pressure tabulated (u_series_table.hpp) where its series is longer than a panel's.
+    // The pressure tabulated (u_series_table.hpp) where its series has more than 50 terms.
     std::optional<u_series_table> pressure_table_;
     integration_workspace_ptr workspace_;
 };
