@@ -125,6 +125,9 @@ void bm_curve_point(benchmark::State& state) {
     }
 }
 
+// The i-th c0 of the swept benchmarks' curve: 99 points from 0.98 to -0.98, over again.
+double swept_c0(std::size_t i) { return 0.98 - 1.96 * static_cast<double>(i % 99) / 98; }
+
 // One point of a curve swept in c0 (no root search), with its checks and estimate (scene 0
 // Fig. 2, 1 unequal kernels, 2 equal kernels with unequal kernels' K1*).
 void bm_swept_point(benchmark::State& state) {
@@ -132,7 +135,7 @@ void bm_swept_point(benchmark::State& state) {
     contact c(scene_of(state.range(2)), 0.3, o);
     std::size_t i = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(c.at_stick_end(0.98 - 1.96 * static_cast<double>(i % 99) / 98).solution.xi);
+        benchmark::DoNotOptimize(c.at_stick_end(swept_c0(i)).solution.xi);
         ++i;
     }
 }
@@ -143,11 +146,10 @@ void bm_swept_point(benchmark::State& state) {
 void bm_swept_point_warm(benchmark::State& state) {
     const solver_options o{static_cast<int>(state.range(1)), method_of(state.range(0))};
     contact c(scene_of(state.range(2)), 0.3, o);
-    auto c0_at = [](std::size_t i) { return 0.98 - 1.96 * static_cast<double>(i % 99) / 98; };
-    for (std::size_t i = 0; i < 99; ++i) benchmark::DoNotOptimize(c.at_stick_end(c0_at(i)).solution.xi);
+    for (std::size_t i = 0; i < 99; ++i) benchmark::DoNotOptimize(c.at_stick_end(swept_c0(i)).solution.xi);
     std::size_t i = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(c.at_stick_end(c0_at(i)).solution.xi);
+        benchmark::DoNotOptimize(c.at_stick_end(swept_c0(i)).solution.xi);
         ++i;
     }
 }
@@ -186,7 +188,7 @@ void bm_limit_swept_point(benchmark::State& state) {
     contact c(limit_scene(state.range(1)), 0.3, o);
     std::size_t i = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(c.at_stick_end(0.98 - 1.96 * static_cast<double>(i % 99) / 98).solution.xi);
+        benchmark::DoNotOptimize(c.at_stick_end(swept_c0(i)).solution.xi);
         ++i;
     }
 }

@@ -51,15 +51,11 @@ double convolution_table::panel_bound(int n, double rate, double length) {
     //   with E_A = exp(A (h + x + cosh y - 1)), h = length/2, y and x the ellipse's half-axes.
     const double h = 0.5 * length;
     const double lebesgue = 2.0 / M_PI * std::log(degree + 1.0) + 1.0;
-    double best_h = HUGE_VAL, best_l = HUGE_VAL;
-    for (double rho = 1.05; rho < 1e4; rho *= 1.05) {
-        const double y = 0.5 * h * (rho - 1.0 / rho), x = 0.5 * h * (rho + 1.0 / rho);
-        const double e_a = std::exp(rate * (h + x + std::cosh(y) - 1.0));
-        const double m_h = std::exp((n + 1) * y) * e_a;
-        const double m_l = e_a * (M_PI + (h + x + y) * m_h);
-        best_h = std::min(best_h, theta_panels::ellipse_term(m_h, rho));
-        best_l = std::min(best_l, theta_panels::ellipse_term(m_l, rho));
-    }
+    const auto e_a = [rate, h](double y, double x) { return std::exp(rate * (h + x + std::cosh(y) - 1.0)); };
+    const auto m_h = [n, &e_a](double y, double x) { return std::exp((n + 1) * y) * e_a(y, x); };
+    const double best_h = theta_panels::ellipse_bound(h, m_h);
+    const double best_l =
+        theta_panels::ellipse_bound(h, [h, &e_a, &m_h](double y, double x) { return e_a(y, x) * (M_PI + (h + x + y) * m_h(y, x)); });
     return lebesgue * 2.0 * M_PI * best_h + 2.0 * best_l;
 }
 

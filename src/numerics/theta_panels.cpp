@@ -24,7 +24,16 @@ std::vector<double> theta_panels::values_to_coefficients() {
     return c;
 }
 
-double theta_panels::ellipse_term(double modulus, double rho) { return 4.0 * modulus * std::pow(rho, -degree) / (rho - 1.0); }
+double theta_panels::ellipse_bound(double half_length, const std::function<double(double y, double x)>& modulus) {
+    // min over a grid of rho of 4 M rho^-N/(rho - 1), M the bound on the ellipse of half-axes
+    // y = h (rho - 1/rho)/2 (imaginary) and x = h (rho + 1/rho)/2 (real) around the panel.
+    double best = HUGE_VAL;
+    for (double rho = 1.05; rho < 1e4; rho *= 1.05) {
+        const double y = 0.5 * half_length * (rho - 1.0 / rho), x = 0.5 * half_length * (rho + 1.0 / rho);
+        best = std::min(best, 4.0 * modulus(y, x) * std::pow(rho, -degree) / (rho - 1.0));
+    }
+    return best;
+}
 
 theta_panels::theta_panels(int panels) : panels_(panels), length_(M_PI / panels) {
     if (panels < 1) throw numerical_error("theta_panels: the panel count must be positive");
@@ -48,21 +57,16 @@ void theta_panels::set_values(const std::vector<double>& values) {
         }
 }
 
-namespace {
-// The panel of r and r's variable s in it, in [-1, 1].
-struct panel_point {
-    const double* c;  // the panel's Chebyshev-T coefficients
-    double s;
-};
-}  // namespace
+theta_panels::panel_point theta_panels::locate(double r) const {
+    const double theta = std::acos(std::max(-1.0, std::min(1.0, r)));
+    const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
+    return {&coefficients_[static_cast<std::size_t>(j) * (degree + 1)], 2.0 * (theta - j * length_) / length_ - 1.0};
+}
 
 double theta_panels::operator()(double r) const {
     // The batched route's operations for one lane, without its lanes (W's quadrature takes single
     // values by the hundred thousand).
-    const double theta = std::acos(std::max(-1.0, std::min(1.0, r)));
-    const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
-    const double* c = &coefficients_[static_cast<std::size_t>(j) * (degree + 1)];
-    const double s = 2.0 * (theta - j * length_) / length_ - 1.0;
+    const auto [c, s] = locate(r);
     double y1 = 0.0, y2 = 0.0;
     for (int k = degree; k >= 1; --k) {
         const double y0 = c[k] + 2.0 * s * y1 - y2;
@@ -78,11 +82,7 @@ void theta_panels::operator()(const double* r, double* out, std::size_t count) c
         const std::size_t width = std::min(lanes, count - first);
         // Only the lanes holding points: a single point (the scalar operator) costs one recurrence.
         panel_point p[lanes];
-        for (std::size_t i = 0; i < width; ++i) {
-            const double theta = std::acos(std::max(-1.0, std::min(1.0, r[first + i])));
-            const int j = std::min(panels_ - 1, static_cast<int>(theta / length_));
-            p[i] = {&coefficients_[static_cast<std::size_t>(j) * (degree + 1)], 2.0 * (theta - j * length_) / length_ - 1.0};
-        }
+        for (std::size_t i = 0; i < width; ++i) p[i] = locate(r[first + i]);
         // Clenshaw for sum_k c_k T_k(s), the lanes' steps interleaved.
         double y1[lanes] = {}, y2[lanes] = {};
         for (int k = degree; k >= 1; --k)

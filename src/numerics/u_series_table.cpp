@@ -11,12 +11,8 @@
 namespace roughroll {
 
 double u_series_table::panel_bound(int n, double length) {
-    // min over rho of 4 M rho^-N/(rho - 1), M = e^{n y}, y = h (rho - 1/rho)/2 (class comment).
-    const double h = 0.5 * length;
-    double best = HUGE_VAL;
-    for (double rho = 1.05; rho < 1e4; rho *= 1.05)
-        best = std::min(best, theta_panels::ellipse_term(std::exp(n * 0.5 * h * (rho - 1.0 / rho)), rho));
-    return best;
+    // M = e^{n y} on the ellipse (class comment).
+    return theta_panels::ellipse_bound(0.5 * length, [n](double y, double) { return std::exp(n * y); });
 }
 
 u_series_table::u_series_table(const std::vector<double>& b) {

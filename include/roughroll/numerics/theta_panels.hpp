@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace roughroll {
@@ -21,8 +22,10 @@ public:
     static double lobatto(int i);
     // Values at the N + 1 points -> coefficients c_k of sum_k c_k T_k; row-major (N+1) x (N+1).
     static std::vector<double> values_to_coefficients();
-    // The theorem's bound for one rho: 4 M rho^-N/(rho - 1).
-    static double ellipse_term(double modulus, double rho);
+    // The theorem's bound minimised over rho, for panels of half-length h: min_rho 4 M rho^-N/(rho - 1),
+    // M = modulus(y, x) bounding f on the ellipse of half-axes y = h (rho - 1/rho)/2 (imaginary) and
+    // x = h (rho + 1/rho)/2 (real).
+    static double ellipse_bound(double half_length, const std::function<double(double y, double x)>& modulus);
 
     theta_panels() = default;
     explicit theta_panels(int panels);  // throws numerical_error for panels < 1
@@ -41,6 +44,13 @@ public:
     void operator()(const double* r, double* out, std::size_t count) const;
 
 private:
+    // The panel of r: its Chebyshev-T coefficients, and r's variable s in it, in [-1, 1].
+    struct panel_point {
+        const double* c;
+        double s;
+    };
+    panel_point locate(double r) const;
+
     int panels_ = 0;
     double length_ = 0.0;
     std::vector<double> coefficients_;  // panels_ x (degree + 1), Chebyshev-T in the panel variable
