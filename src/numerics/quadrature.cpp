@@ -117,15 +117,11 @@ std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vecto
     return b;
 }
 
-namespace {
-// The length of b without its exact trailing zeros (a Hertz pressure is one term of n): through
-// them Clenshaw's recurrence stays +0 exactly, so skipping them changes no bit.
 std::size_t significant_terms(const std::vector<double>& b) {
     std::size_t size = b.size();
     while (size > 1 && b[size - 1] == 0.0) --size;
     return size;
 }
-}  // namespace
 
 double u_series(const std::vector<double>& b, double x) {
     // Clenshaw: y_j = b_j + 2x y_{j+1} - y_{j+2}; U-series sum is y_0.

@@ -123,7 +123,7 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
     // The pressure's U-series without its exact trailing zeros (Hertz: one term): the same values
     // (u_series skips them too, bit for bit), trimmed once here so that the many values W's
     // quadrature takes do not each scan them.
-    while (pressure_b_.size() > 1 && pressure_b_.back() == 0.0) pressure_b_.pop_back();
+    pressure_b_.resize(significant_terms(pressure_b_));
     // A rough layer's pressure keeps all n terms (they fall algebraically, not below rounding), and W
     // takes its values by the hundred thousand per zone solve: a table whose representation error is
     // bounded by eps sum |b_j| gives them at the cost of an acos and a panel's 25 terms

@@ -45,6 +45,10 @@ struct gauss_legendre {
 // Coefficients b_0..b_{n-1} of the interpolant of `values` (given at the nodes).
 std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values);
 
+// The length of b without its exact trailing zeros (at least 1 for b not empty; Hertz: 1 of n):
+// through them Clenshaw's recurrence stays +0 exactly, so u_series skips them, bit for bit.
+std::size_t significant_terms(const std::vector<double>& b);
+
 // sum_j b_j U_j(x), by Clenshaw's recurrence.
 double u_series(const std::vector<double>& b, double x);
 // The same at count points x[i] into out[i], the points interleaved so that the recurrences
