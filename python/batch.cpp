@@ -16,6 +16,7 @@
 
 #include "binding.hpp"
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace py = pybind11;
 
@@ -28,8 +29,33 @@ struct job {
     std::optional<double> Q;
 };
 
+// "items[3] (Q = 0.5, scene 'Fig. 2a'): ": which of many items failed, by its index in the
+// caller's list (Python's, from 0) and its load, so a batch's error can be traced to its item.
+std::string item_name(std::size_t i, const job& j) {
+    std::string load = j.Q ? "Q = " + shortest(*j.Q) : j.s.Q ? "the scene's Q = " + shortest(*j.s.Q) : "no Q";
+    if (!j.s.label.empty()) load += ", scene '" + j.s.label + "'";
+    return "items[" + std::to_string(i) + "] (" + load + "): ";
+}
+
+// The same error type, its message prefixed with the item: Python then raises the same
+// exception class (roughroll_module.cpp) with a message naming the item.
+[[noreturn]] void rethrow_naming(const std::exception_ptr& e, const std::string& prefix) {
+    try {
+        std::rethrow_exception(e);
+    } catch (const input_error& x) {
+        throw input_error(prefix + x.what());
+    } catch (const resolution_error& x) {
+        throw resolution_error(prefix + x.what());
+    } catch (const numerical_error& x) {
+        throw numerical_error(prefix + x.what());
+    } catch (const error& x) {
+        throw error(prefix + x.what());
+    }
+    // Anything else (std::bad_alloc) propagates as it is.
+}
+
 // The points' JSON in the jobs' order; the first failing job's error (in the jobs' order) is
-// rethrown after every thread has finished.
+// rethrown, naming the job, after every thread has finished.
 std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, const solver_keywords& k) {
     std::vector<std::string> out(jobs.size());
     std::vector<std::exception_ptr> errors(jobs.size());
@@ -54,8 +80,8 @@ std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, co
     }
     work();
     for (std::thread& t : pool) t.join();
-    for (const std::exception_ptr& e : errors)
-        if (e) std::rethrow_exception(e);
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+        if (errors[i]) rethrow_naming(errors[i], item_name(i, jobs[i]));
     return out;
 }
 

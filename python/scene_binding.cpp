@@ -228,6 +228,8 @@ void bind_scene(py::module_& m) {
         .def_property_readonly("method", [](const scene& s) { return to_string(s.solver.how); })
         .def_property_readonly("roughness", [](const scene& s) { return roughness_dict(s.surfaces); })
         .def_property_readonly("physical", &physical_dict)
+        .def_property_readonly("beta_d", [](const scene& s) { return s.materials.beta_d; })
+        .def_property_readonly("coupling", [](const scene& s) { return to_string(s.materials.coupling); })
         .def(
             "point_json",
             [](const scene& s, std::optional<double> Q, std::optional<int> n, std::optional<std::string> method,

@@ -107,15 +107,23 @@ class Scene:
 
     ``Scene(mapping, **keys)``: from a dict and/or keyword arguments with the keys of the TOML
     format (``label``, ``friction``, ``Q``, ``cylinder1``/``cylinder2`` with ``tangential``/
-    ``normal`` tables of ``T``, ``A`` of (3.26), ``solver`` with ``n``, ``method``; a physical
-    scene's ``E``, ``nu``, ``R1``, ``R2``, ``P2``, ``P1``, ``contact_width``, ``k``, ``t`` of
-    (2.10) and ``micro_geometry`` tables (2.6)-(2.14)); nested dicts are tables, ``None`` leaves
-    a key out; a relative ``profile_csv`` is relative to ``base_dir``.  Every key not in the
-    format, every wrong type or value raises InputError naming it, as for a file.
+    ``normal`` tables of ``T``, ``A`` of (3.26), ``beta_d``, ``coupling``, ``solver`` with ``n``,
+    ``method``; a physical scene's ``E``, ``nu`` (or ``shear_modulus``, ``poisson`` in
+    ``cylinder1``/``cylinder2``), ``R1``, ``R2``, ``P2``, ``P1``, ``contact_width``, ``k``, ``t``
+    of (2.10) and ``micro_geometry`` tables (2.6)-(2.14)); nested dicts are tables, ``None``
+    leaves a key out; a relative ``profile_csv`` is relative to ``base_dir``.  Every key not in
+    the format, every wrong type or value raises InputError naming it, as for a file.
     ``read_scene(path)`` reads a file.
+
+    A scene is immutable and keeps the text it was read from (``to_dict()``), so it pickles,
+    copies and deep-copies: unpickling parses that text again with the same checks, a relative
+    ``profile_csv`` being read from the same absolute folder (``base_dir``), which must exist
+    where the scene is unpickled (a Dask worker on the same machine or a shared file system).
+    ``replace(**keys)`` varies a scene; two scenes are equal when their keys
+    (``to_dict()``) and ``base_dir`` are.
     """
 
-    __slots__ = ("_core", "_source")
+    __slots__ = ("_core", "_source", "_text", "_base_dir", "_hash")
 
     def __init__(self, mapping=None, /, *, base_dir=".", **keys):
         data = {}
@@ -124,24 +132,47 @@ class Scene:
                 raise TypeError(f"a scene is a dict (or keyword arguments), not {type(mapping).__name__}")
             data.update(mapping)
         data.update(keys)
-        self._core = _core._Scene.parse(_toml.dumps(data), "scene", _path(base_dir, "base_dir"))
-        self._source = "scene"
+        base_dir = _path(base_dir, "base_dir")
+        text = _toml.dumps(data)
+        self._set(_core._Scene.parse(text, "scene", base_dir), "scene", text, base_dir)
+
+    def _set(self, core, source, text, base_dir):
+        self._core = core
+        self._source = source
+        self._text = text
+        # Absolute, so that a scene unpickled in another working folder reads the same files.
+        self._base_dir = os.path.abspath(base_dir or ".")
+        self._hash = None
 
     @classmethod
-    def _wrap(cls, core, source):
+    def _wrap(cls, core, source, text, base_dir):
         s = cls.__new__(cls)
-        s._core = core
-        s._source = source
+        s._set(core, source, text, base_dir)
         return s
 
     @classmethod
     def from_toml(cls, text, source="scene", base_dir="."):
-        """A scene from TOML text (the scene file format); ``source`` names it in messages."""
+        """A scene from TOML text (the scene file format).
+
+        Parameters
+        ----------
+        text : str
+            The scene, as a scene file holds it.
+        source : str
+            Names the scene in error messages.
+        base_dir : str or os.PathLike
+            The folder a relative ``profile_csv`` is relative to.
+
+        Returns
+        -------
+        Scene
+        """
         if not isinstance(text, str):
             raise TypeError(f"text must be a str, not {type(text).__name__}")
         if not isinstance(source, str):
             raise TypeError(f"source must be a str, not {type(source).__name__}")
-        return cls._wrap(_core._Scene.parse(text, source, _path(base_dir, "base_dir")), source)
+        base_dir = _path(base_dir, "base_dir")
+        return cls._wrap(_core._Scene.parse(text, source, base_dir), source, text, base_dir)
 
     # What the scene says (after its checks).
     label = property(lambda self: self._core.label, doc="The scene's label ('' when none).")
@@ -155,6 +186,70 @@ class Scene:
     physical = property(lambda self: self._core.physical,
                         doc="A physical scene's E, nu, R1, R2, P2, P1, width rule, a_H and k, t of (2.10); "
                             "None for a dimensionless scene.")
+    beta_d = property(lambda self: self._core.beta_d,
+                      doc="Dundurs' beta_D (docs/formulation.md 8(a)): 0 for similar rollers.")
+    coupling = property(lambda self: self._core.coupling,
+                        doc="The coupling of dissimilar rollers: 'johnson' or 'full' (docs/formulation.md 8(e)).")
+    source = property(lambda self: self._source, doc="The name of the scene in messages (a file's path, or 'scene').")
+    base_dir = property(lambda self: self._base_dir,
+                        doc="The absolute folder a relative profile_csv is relative to (a file's own folder).")
+
+    def to_dict(self):
+        """The scene's keys as a (nested) dict, as its file or dict gave them.
+
+        Returns
+        -------
+        dict
+            The keys of the scene file (tables as dicts), without the defaults the checks fill
+            in; ``Scene(s.to_dict(), base_dir=s.base_dir)`` is a scene equal to ``s``.  A
+            relative ``profile_csv`` stays relative (to ``base_dir``).
+        """
+        return _toml.loads(self._text)
+
+    def replace(self, **keys):
+        """A new scene: this one with ``keys`` replaced (the scene as a template).
+
+        Parameters
+        ----------
+        **keys
+            Keys of the scene format.  A dict replaces inside a table, key by key
+            (``solver={"n": 96}`` keeps the method), ``None`` removes a key or a table
+            (``cylinder1=None``: a smooth roller 1).  For example
+            ``read_scene("data/steel-rollers.toml").replace(P2=2e5, P1=None, Q=0.1)``.
+
+        Returns
+        -------
+        Scene
+            Checked as a file is (InputError naming a wrong key or value).  Its ``base_dir``
+            is this scene's: a relative ``profile_csv`` still names a file beside the original
+            scene file.
+        """
+        data = _merged(self.to_dict(), keys)
+        source = self._source if not keys else f"{self._source} (with {', '.join(keys)} replaced)"
+        return Scene.from_toml(_toml.dumps(data), source, self._base_dir)
+
+    def __reduce__(self):
+        # The text and its folder, parsed again on unpickling: the same checks, the same scene.
+        return (_scene_from_source, (self._text, self._source, self._base_dir))
+
+    # Immutable: a copy is the scene itself (as for a tuple of numbers).
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
+
+    def __eq__(self, other):
+        if not isinstance(other, Scene):
+            return NotImplemented
+        if self._base_dir != other._base_dir:
+            return False
+        return self._text == other._text or self.to_dict() == other.to_dict()
+
+    def __hash__(self):
+        if self._hash is None:
+            self._hash = hash((_frozen(self.to_dict()), self._base_dir))
+        return self._hash
 
     def point(self, Q=None, *, method=None, n=None, zones=None, friction=None):
         """One creep point for the load ``Q`` (default: the scene's Q), as ``roughroll point``.
@@ -232,16 +327,76 @@ class Scene:
         return t
 
     def __repr__(self):
+        # Everything that tells two scenes apart at a glance: a rough and a smooth scene, steel
+        # and aluminium, Johnson's and full coupling print differently.
         kind = "physical " if self.physical else ""
-        label = f"{self.label!r}, " if self.label else ""
-        return f"<roughroll {kind}Scene {label}f={self.friction!r}, Q={self.Q!r}, method={self.method!r}, n={self.n}>"
+        parts = [repr(self.label)] if self.label else []
+        parts.append(f"f={self.friction!r}")
+        p = self.physical
+        if p is None:
+            parts.append(f"Q={self.Q!r}")
+            parts.append(_describe_surfaces(self.roughness, ("T", "A")))
+        else:
+            if p["E"] is not None:
+                parts.append(f"E={p['E']!r}, nu={p['nu']!r}")
+            else:
+                parts.append(", ".join(f"{c}(shear_modulus={p[m]['shear_modulus']!r}, poisson={p[m]['poisson']!r})"
+                                       for c, m in (("cylinder1", "material1"), ("cylinder2", "material2"))))
+            parts.append(f"R1={p['R1']!r}, R2={p['R2']!r}, P2={p['P2']!r}, P1={p['P1']!r} (Q={self.Q!r})")
+            parts.append(_describe_surfaces(p, ("k", "t")))
+            parts.append(f"contact_width={p['contact_width']!r}")
+        if self.beta_d != 0 or self.coupling != "johnson":
+            parts.append(f"beta_d={self.beta_d!r}, coupling={self.coupling!r}")
+        parts.append(f"method={self.method!r}, n={self.n}")
+        return f"<roughroll {kind}Scene " + ", ".join(parts) + ">"
+
+
+def _describe_surfaces(surfaces, names):
+    """'cylinder1 tangential T=0.5 A=0.5 normal T=1 A=0.5, cylinder2 smooth' (or 'smooth')."""
+    out = []
+    for c in ("cylinder1", "cylinder2"):
+        terms = [(d, surfaces[c][d]) for d in ("tangential", "normal") if surfaces[c][d] is not None]
+        if terms:
+            out.append(c + " " + " ".join(f"{d} {names[0]}={t[names[0]]!r} {names[1]}={t[names[1]]!r}" for d, t in terms))
+        else:
+            out.append(c + " smooth")
+    return "smooth" if all(o.endswith(" smooth") for o in out) else ", ".join(out)
+
+
+def _merged(data, keys):
+    out = dict(data)
+    for k, v in keys.items():
+        if v is None:
+            out.pop(k, None)
+        elif isinstance(v, Mapping) and isinstance(out.get(k), Mapping):
+            out[k] = _merged(out[k], v)
+        else:
+            out[k] = v
+    return out
+
+
+def _frozen(x):
+    if isinstance(x, Mapping):
+        return frozenset((k, _frozen(v)) for k, v in x.items())
+    if isinstance(x, list):
+        return tuple(_frozen(v) for v in x)
+    return x
+
+
+def _scene_from_source(text, source, base_dir):
+    """A scene parsed from its text (how a pickled Scene is rebuilt)."""
+    return Scene._wrap(_core._Scene.parse(text, source, base_dir), source, text, base_dir)
 
 
 def read_scene(path):
     """The scene file at ``path`` (TOML, README "Scene files"), checked strictly: InputError
     with the file's name and the problem, as the command line prints it."""
     path = _path(path, "scene file")
-    return Scene._wrap(_core._Scene.read(path), path)
+    core = _core._Scene.read(path)
+    # The bytes the library has just read and checked, kept for to_dict() and pickling.
+    with open(path, "rb") as f:
+        text = f.read()
+    return Scene._wrap(core, path, text, os.path.dirname(path))
 
 
 def scene(mapping=None, /, *, base_dir=".", **keys):
@@ -268,15 +423,40 @@ def point(scene, Q=None, *, method=None, n=None, zones=None, friction=None):
 def solve(items, *, threads=1, method=None, n=None, zones=None, friction=None):
     """Many creep points, on ``threads`` threads (C++ std::thread, the GIL released).
 
-    ``items``: scenes (Scene, dict or path; the scene's Q) or pairs (scene, Q).  Returns the
-    Points in the items' order, with exactly the numbers of the serial loop
-    ``[point(s, Q, method=method, n=n) for s, Q in items]`` (each point is independent: its own
-    contact and workspaces).  The first failing item (in order) raises its error after all ran.
+    Parameters
+    ----------
+    items : iterable
+        Scenes (Scene, dict or path; the scene's Q) or pairs (scene, Q).
+    threads : int
+        Threads to solve on, at most 1024; -1 means one per core this process may run on,
+        -2 one fewer, and so on (scipy's ``workers=-1``).
+    method, n, zones, friction
+        As for ``Scene.point``, for every item.
+
+    Returns
+    -------
+    list of Point
+        In the items' order, with exactly the numbers of the serial loop
+        ``[point(s, Q, method=method, n=n) for s, Q in items]`` (each point is independent:
+        its own contact and workspaces).
+
+    Raises
+    ------
+    Error
+        The first failing item's (in the items' order, after all ran), of the class the item
+        alone would raise, its message starting with the item: ``items[3] (Q = 0.5, scene
+        'Fig. 2a'): |Q| = 0.5 exceeds f = 0.3``.
     """
     if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
         raise TypeError(f"threads must be an integer, not {type(threads).__name__}")
+    threads = int(threads)
+    if threads < 0:
+        cores = _cores()
+        if threads + 1 + cores < 1:
+            raise InputError(f"threads = {threads} leaves no thread of the {cores} cores")
+        threads = min(threads + 1 + cores, 1024)
     if not 1 <= threads <= 1024:
-        raise InputError(f"threads must lie in [1, 1024] (got {threads})")
+        raise InputError(f"threads must lie in [1, 1024], or be negative (-1: every core) (got {threads})")
     jobs = []
     for item in items:
         if isinstance(item, tuple):
@@ -287,6 +467,14 @@ def solve(items, *, threads=1, method=None, n=None, zones=None, friction=None):
             s, Q = item, None
         jobs.append((_as_scene(s)._core, _real(Q, "Q")))
     return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))]
+
+
+def _cores():
+    """The cores this process may run on (its affinity, as a container or taskset limits it)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
 
 
 def roughness(spec, *, base_dir="."):

@@ -32,10 +32,26 @@ class Point:
         return copy.deepcopy(self._data)
 
     def __getattr__(self, name):
+        # Reached only when the slot and the class have no such name.  While _data is unset
+        # (an object pickle or copy has allocated but not yet filled) looking it up here would
+        # call __getattr__ again without end: it is simply missing then.
+        if name == "_data" or (name.startswith("__") and name.endswith("__")):
+            raise AttributeError(name)
         try:
             return self._data[name]
         except KeyError:
             raise AttributeError(f"a point has no field {name!r}") from None
+
+    # A point is its JSON object: pickled, copied and deep-copied as that object (so a point
+    # returned by a Dask task, a multiprocessing or joblib worker arrives equal).
+    def __reduce__(self):
+        return (Point, (self._data,))
+
+    def __copy__(self):
+        return Point(self._data)
+
+    def __deepcopy__(self, memo):
+        return Point(copy.deepcopy(self._data, memo))
 
     def __setattr__(self, name, value):
         raise AttributeError("a point is read-only")

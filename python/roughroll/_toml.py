@@ -85,3 +85,18 @@ def _table(mapping, path, lines):
         lines.append(f"{name} = {_value(v, path + [k])}")
     for k, _, v in tables:
         _table(v, path + [k], lines)
+
+
+def loads(text):
+    """The (nested) dict of scene text (str, or the bytes of a file), by Python's own TOML reader
+    (the library has already checked the text: this only gives its keys back)."""
+    try:
+        import tomllib
+    except ImportError:  # Python < 3.11
+        try:
+            import tomli as tomllib
+        except ImportError:
+            raise ImportError("a scene's keys need Python 3.11's tomllib or the package tomli") from None
+    if isinstance(text, bytes):
+        text = text.decode("utf-8-sig")  # a BOM, as the library allows
+    return tomllib.loads(text)

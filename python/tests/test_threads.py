@@ -81,3 +81,29 @@ def test_batch_error_is_the_first_failing_item():
     good = roughroll.read_scene(DATA / "fig2a-T1.toml")
     with pytest.raises(roughroll.InputError, match=r"\|Q\| = 0.5 exceeds f = 0.3"):
         roughroll.solve([(good, 0.1), (good, 0.5), (good, float("nan"))], threads=2)
+
+
+def test_threads_minus_one_is_every_core(monkeypatch):
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    items = [(s, 0.05 * k) for k in range(1, 5)]
+    serial = [without_seconds(p.to_dict()) for p in roughroll.solve(items, method="product", n=48)]
+    for threads in (-1, -2):
+        got = roughroll.solve(items, threads=threads, method="product", n=48)
+        assert [without_seconds(p.to_dict()) for p in got] == serial
+    monkeypatch.setattr(roughroll, "_cores", lambda: 2)
+    roughroll.solve(items[:1], threads=-2)  # one thread left
+    with pytest.raises(roughroll.InputError, match=r"threads = -3 leaves no thread of the 2 cores"):
+        roughroll.solve(items[:1], threads=-3)
+
+
+def test_batch_error_names_the_item():
+    good = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    smooth = roughroll.Scene(friction=0.3)  # no Q, no label
+    with pytest.raises(roughroll.InputError) as e:
+        roughroll.solve([(good, 0.1), good, (good, 0.5), (good, float("nan"))], threads=2)
+    assert str(e.value) == ("items[2] (Q = 0.5, scene 'Fig. 2a, curve 3: T_1^(1) = T_1^(2) = 1, A_1^(1) = A_1^(2) = 0.5'): "
+                            "Q must satisfy |Q| <= f, but |Q| = 0.5 exceeds f = 0.3: the cylinders slide")
+    with pytest.raises(roughroll.InputError, match=r"^items\[1\] \(no Q\): no load Q given"):
+        roughroll.solve([good, smooth])
+    with pytest.raises(roughroll.InputError, match=r"^items\[0\] \(the scene's Q = 0.15, scene 'Fig. 2a"):
+        roughroll.solve([good], method="nonesuch")
