@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <system_error>
 
@@ -67,9 +68,8 @@ int write_all(int fd, const std::string& text) {
     return 0;
 }
 
-}  // namespace
-
-void check_output(const fs::path& path, const std::vector<std::string>& inputs) {
+// The checks of check_output but writability: output_stem's stem is never written itself.
+void check_path(const fs::path& path, const std::vector<std::string>& inputs) {
     if (has_control(path.string()))
         throw input_error("output path " + in_quotes(path) +
                           " holds a control character: refused (gnuplot would take a newline in it for the end of a command)");
@@ -82,6 +82,58 @@ void check_output(const fs::path& path, const std::vector<std::string>& inputs) 
     }
 }
 
+// A file that exists but that the user could not open for writing (mode 0444, another user's,
+// a read-only mount) is refused as the shell's `> FILE` would refuse it: the rename that
+// replaces it needs only the folder to be writable, so it would replace the file silently.
+// Effective ids (AT_EACCESS), the ones open() is judged by; root passes, as with `>`.
+void check_writable(const fs::path& path) {
+    if (::faccessat(AT_FDCWD, path.c_str(), W_OK, AT_EACCESS) == 0 || errno == ENOENT) return;
+    const int error = errno;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return;  // a dangling symbolic link names a new file
+    throw input_error("cannot write " + in_quotes(path) + ": the file exists and is not writable (" + reason(error) +
+                      ")");
+}
+
+// Why the image gnuplot wrote at `file` is not whole, or "" when it is. gnuplot exits 0 when
+// its writes fail (a full disk leaves an empty PNG or an SVG cut midway), so its exit status
+// alone cannot tell: a PNG must end with its IEND chunk, an SVG with its closing tag.
+std::string image_problem(const fs::path& file, const std::string& extension) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(file, ec);
+    if (!fs::exists(status)) return "gnuplot wrote no such image";
+    if (!fs::is_regular_file(status)) return "gnuplot's image is not a regular file";
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec) return "cannot read gnuplot's image: " + ec.message();
+    if (size == 0) return "gnuplot wrote an empty image (a full disk?)";
+    // The end of the file is all the checks need: an incomplete file is cut at its end.
+    std::ifstream in(file, std::ios::binary);
+    const std::uintmax_t tail_size = std::min<std::uintmax_t>(size, 4096);
+    std::string tail(static_cast<std::size_t>(tail_size), '\0');
+    in.seekg(static_cast<std::streamoff>(size - tail_size));
+    if (!in.read(&tail[0], static_cast<std::streamsize>(tail.size()))) return "cannot read gnuplot's image";
+    if (extension == ".png") {
+        // The IEND chunk: length 0, type IEND, its CRC.
+        static const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+        if (tail.size() < iend.size() || tail.compare(tail.size() - iend.size(), iend.size(), iend) != 0)
+            return "the PNG gnuplot wrote is incomplete (no IEND chunk at its end; a full disk?)";
+    } else if (extension == ".svg") {
+        const std::size_t end = tail.find_last_not_of(" \t\r\n");
+        const std::string closing = "</svg>";
+        if (end == std::string::npos || end + 1 < closing.size() ||
+            tail.compare(end + 1 - closing.size(), closing.size(), closing) != 0)
+            return "the SVG gnuplot wrote is incomplete (it does not end with </svg>; a full disk?)";
+    }
+    return "";
+}
+
+}  // namespace
+
+void check_output(const fs::path& path, const std::vector<std::string>& inputs) {
+    check_path(path, inputs);
+    check_writable(path);
+}
+
 fs::path output_stem(const std::string& dir, const std::string& name) {
     // Checked before the folder is made: a newline must not create a folder either.
     if (has_control(dir))
@@ -91,7 +143,7 @@ fs::path output_stem(const std::string& dir, const std::string& name) {
     fs::create_directories(dir, ec);
     if (ec) throw input_error("cannot create output folder " + in_quotes(dir) + ": " + ec.message());
     const fs::path stem = fs::absolute(fs::path(dir) / name);
-    check_output(stem, {});
+    check_path(stem, {});
     return stem;
 }
 
@@ -201,6 +253,14 @@ void run_gnuplot(const fs::path& script, const fs::path& stem, const std::vector
         throw numerical_error("gnuplot failed on " + in_quotes(script) + ": " +
                               (last.empty() ? "exit status " + std::to_string(status) : echo(last, 300)) +
                               "; the CSV is written");
+    }
+    // Every image checked before any is renamed: a failure leaves all of the earlier run's.
+    for (std::size_t i = 0; i < extensions.size(); ++i) {
+        const std::string problem = image_problem(images[i], extensions[i]);
+        if (problem.empty()) continue;
+        clean();
+        throw input_error("cannot write " + in_quotes(stem.string() + extensions[i]) + ": " + problem +
+                          "; no image was replaced");
     }
     for (std::size_t i = 0; i < extensions.size(); ++i) {
         const fs::path target = stem.string() + extensions[i];

@@ -16,7 +16,8 @@
 namespace roughroll::cli {
 
 // input_error unless `path` can be an output: no control character in it, not a directory,
-// not one of `inputs` (the same file, by fs::equivalent).
+// not one of `inputs` (the same file, by fs::equivalent), and, when it exists, writable by
+// the user ("... is not writable"), as `> FILE` in a shell would require.
 void check_output(const std::filesystem::path& path, const std::vector<std::string>& inputs);
 
 // Creates `dir` if needed and returns the absolute path dir/name (without extension),
@@ -60,8 +61,10 @@ std::string gnuplot_path(const std::filesystem::path& p);
 std::string gnuplot_output_stem(const std::filesystem::path& stem);
 
 // Runs gnuplot on the script, whose images `stem` + each of `extensions` are written under
-// a temporary stem and renamed into place when gnuplot succeeds. A failure is a
-// numerical_error with gnuplot's own last message on one line (the data files are written).
+// a temporary stem and renamed into place when gnuplot succeeds and every image is whole
+// (not empty; a PNG ends with its IEND chunk, an SVG with </svg>). A failure is an error with
+// gnuplot's own last message, or the image and what is wrong with it, on one line; the
+// temporary images are removed and no earlier image is replaced (the data files are written).
 void run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& stem,
                  const std::vector<std::string>& extensions);
 
