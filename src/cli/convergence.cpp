@@ -123,7 +123,8 @@ int run_convergence(const convergence_options& o) {
     }
 
     std::ostream& out = csv_file.stream();
-    out << "# roughroll convergence " << one_line(o.scene.path) << ", Q = " << shortest(Q) << "; errors against the extrapolated "
+    out << "# roughroll " << version() << "\n"
+        << "# roughroll convergence " << one_line(o.scene.path) << ", Q = " << shortest(Q) << "; errors against the extrapolated "
         << "method at n = 512 (relative for P_H/P2 and xi, absolute for c0)\n"
         << "method,n,seconds,err_lambda,err_c0,err_xi,err_max,estimate_xi\n";
     for (const auto& m : rows) {

@@ -170,6 +170,7 @@ int run_figure(const figure_options& o) {
     }
 
     std::ostream& out = csv_file.stream();
+    out << "# roughroll " << version() << "\n";
     out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes()
         << "; curves swept in c0, each with its own Q(c0)\n";
     out << "c0";

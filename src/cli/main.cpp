@@ -107,16 +107,15 @@ int run_curve(const scene_options& o, int points, bool sweep, const std::string&
     // The output, checked and opened before any work; written whole or not at all.
     std::optional<output_file> file;
     if (!csv.empty()) file.emplace(csv, s.files);
+    const curve_header header{o.path, s.label, s.friction, s.solver, sweep, s.physical.has_value()};
     const scene_curve c = curve_of(std::move(s), std::nullopt, points, sweep);
     const std::vector<curve_point>& curve = c.rows;
     std::optional<si_context> si;
     if (c.settled.physical) si = si_context{*c.settled.physical, c.widths};
-    if (!file) {
-        write_curve_csv(std::cout, curve, si);
-    } else {
-        write_curve_csv(file->stream(), curve, si);
-        file->commit();
-    }
+    std::ostream& out = file ? file->stream() : std::cout;
+    write_curve_header(out, header);
+    write_curve_csv(out, curve, si);
+    if (file) file->commit();
     // Each refused point on stderr, once the curve is written (curve_point, contact.hpp).
     int status = 0;
     for (const curve_point& row : curve)
@@ -138,6 +137,8 @@ int main(int argc, char** argv) {
                  "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach (nothing written);\n"
                  "3: a curve written with refused points (rows with status 'refused', one stderr line each)."};
     app.require_subcommand(1);
+    // "roughroll X.Y.Z" on stdout, exit 0, as GNU programs print it.
+    app.set_version_flag("--version", std::string("roughroll ") + version(), "print roughroll's version and exit");
 
     scene_options point_scene;
     std::optional<double> Q;
@@ -181,7 +182,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e);  // --help
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
         return report("error", e.what(), 2);
     }
 

@@ -252,7 +252,8 @@ int run_traction(const traction_options& o) {
     }
 
     std::ostream& out = csv_file.stream();
-    out << "# roughroll traction " << one_line(o.scene.path) << (s.label.empty() ? "" : ": ") << one_line(s.label)
+    out << "# roughroll " << version() << "\n"
+        << "# roughroll traction " << one_line(o.scene.path) << (s.label.empty() ? "" : ": ") << one_line(s.label)
         << "\n"
         << "# Q = " << shortest(Q) << ", f = " << shortest(f) << ", c0 = " << shortest(solution.c0)
         << ", xi = " << shortest(solution.xi) << ", P_H/P2 = " << shortest(normal.lambda)

@@ -8,7 +8,14 @@
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
+// The build systems define it from the VERSION file (CMakeLists.txt, Makefile.am).
+#ifndef ROUGHROLL_VERSION
+#error "ROUGHROLL_VERSION (the VERSION file's X.Y.Z) must be defined when output.cpp is compiled"
+#endif
+
 namespace roughroll {
+
+const char* version() { return ROUGHROLL_VERSION; }
 
 namespace {
 nlohmann::json term_json(const roughness_term& t) {
@@ -114,6 +121,7 @@ nlohmann::json to_json(const point_report& r) {
         {"rcond_normal", r.normal.rcond},
         {"rcond_tangential", s.rcond},
         {"reference", paper_reference},
+        {"version", version()},
     };
 }
 
@@ -162,6 +170,26 @@ void write_summary(std::ostream& out, const point_report& r) {
     };
     cylinder("cylinder 1", p.surfaces.cylinder1);
     cylinder("cylinder 2", p.surfaces.cylinder2);
+}
+
+void write_curve_header(std::ostream& out, const curve_header& h) {
+    out << "# roughroll " << version() << "\n"
+        << "# roughroll curve " << one_line(h.scene_path) << (h.label.empty() ? "" : ": ") << one_line(h.label) << "\n"
+        << "# f = " << shortest(h.friction) << ", method = " << to_string(h.solver.how) << ", n = " << h.solver.nodes()
+        << ", zones = " << to_string(h.solver.zones) << "; "
+        << (h.swept ? "swept in c0: each row's load Q(c0) is found for its stick zone end c0"
+                    : "loads given: Q/f over the curve's range, dense near gross sliding")
+        << "\n"
+        << "# Q = P1/P2, Q_over_f = Q/f; c0 = c/a, the stick zone's end (r = x1/a); xi: the creep, dimensionless "
+           "(docs/formulation.md), xi_over_f = xi/f; xi_carter, c0_carter: Carter's smooth cylinders, same f, at the "
+           "row's load (swept: at its c0)\n"
+           "# checks_hold: 1 when p >= 0, (3.3) and (3.4) hold on the solver's grids; c0_error_estimate, "
+           "xi_error_estimate, Q_error_estimate: the estimates of their errors (empty: none)\n"
+           "# zones: the number of stick and slip zones; stick_start: r where the stick zone starts (-1: at the "
+           "leading edge); status: ok, or refused (only the given Q or c0 and Carter's columns filled)\n";
+    if (h.physical)
+        out << "# SI: P1_N_per_m = Q P2, the tangential load in N/m; xi1 = C P2 xi/a, the creep ratio (dimensionless); "
+               "xi1_carter: Carter's creep ratio for the same loads on smooth cylinders\n";
 }
 
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {

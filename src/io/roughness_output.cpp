@@ -36,6 +36,7 @@ nlohmann::json to_json(const std::string& spec, const micro_geometry& g, const r
     j["units"] = {{"k", "Pa/m"}, {"t", "Pa m"}, {"alpha", "1/m"}, {"a", "m"}, {"a3_h1", "1"},
                   {"a33", "1/m"}, {"a_h1", "m"}, {"a_h1_squared", "m"}};
     j["reference"] = paper_reference;
+    j["version"] = version();
     return j;
 }
 

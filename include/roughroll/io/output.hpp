@@ -20,6 +20,11 @@ inline constexpr const char* paper_reference =
     "V. Pauk, M. Wo\u017aniak, Rolling contact of long elastic cylinders with surface roughness described by a "
     "two parameter model (roughroll solves its corrected formulation, docs/formulation.md)";
 
+// roughroll's version, X.Y.Z of the VERSION file (the build systems pass it in): `roughroll
+// --version` prints it, every JSON output carries it as "version", and every CSV the program
+// writes starts with the line "# roughroll X.Y.Z", so that a result names the code that made it.
+const char* version();
+
 struct point_report {
     std::string label;
     const normal_solution& normal;
@@ -52,5 +57,19 @@ struct si_context {
 };
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve,
                      const std::optional<si_context>& si = std::nullopt);
+
+// The `#` lines `roughroll curve` writes before write_curve_csv's header, as the traction CSV
+// has them: "# roughroll X.Y.Z", the scene (its file and label), how the curve was solved
+// (f, method, n, zone search, given loads or swept in c0), and each column's meaning and unit
+// (the SI columns' too when `physical`). Every line starts with '#': CSV readers skip them.
+struct curve_header {
+    std::string scene_path;
+    std::string label;
+    double friction;
+    solver_options solver;
+    bool swept;     // loads Q(c0) of a sweep in c0, else the curve's given loads
+    bool physical;  // the columns P1_N_per_m, xi1, xi1_carter follow
+};
+void write_curve_header(std::ostream& out, const curve_header& h);
 
 }  // namespace roughroll
