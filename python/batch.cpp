@@ -2,9 +2,13 @@
 // independent scene_point (its own contact, workspaces and GSL objects: the library keeps no
 // global state), so the points can be solved concurrently; each thread takes the next job
 // from an atomic counter and writes its own slot, and the results are in the jobs' order
-// whatever the schedule: the same numbers as the serial loop. The GIL is released meanwhile.
+// whatever the schedule: the same numbers as the serial loop. The GIL is released meanwhile,
+// except for the calling thread's brief checks for Ctrl-C between points.
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -55,31 +59,68 @@ std::string item_name(std::size_t i, const job& j) {
 }
 
 // The points' JSON in the jobs' order; the first failing job's error (in the jobs' order) is
-// rethrown, naming the job, after every thread has finished.
+// rethrown, naming the job, after every thread has finished. The calling thread solves nothing:
+// it waits, and every 0.1 s takes the GIL to run Python's signal handlers (they run only there),
+// so Ctrl-C stops the batch between points: no thread takes another job, the points being
+// solved finish (one point itself is not interruptible), and KeyboardInterrupt is raised.
 std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, const solver_keywords& k) {
     std::vector<std::string> out(jobs.size());
     std::vector<std::exception_ptr> errors(jobs.size());
     std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    std::mutex m;
+    std::condition_variable finished;
+    std::size_t running = 0;
     const auto work = [&]() noexcept {
-        for (std::size_t i = next++; i < jobs.size(); i = next++) {
+        for (std::size_t i = next++; i < jobs.size() && !stop; i = next++) {
             try {
                 out[i] = point_json(jobs[i].s, jobs[i].Q, k);
             } catch (...) {
                 errors[i] = std::current_exception();
             }
         }
+        {
+            const std::lock_guard<std::mutex> lock(m);
+            --running;
+        }
+        finished.notify_one();
     };
     std::vector<std::thread> pool;
-    const std::size_t extra = std::min<std::size_t>(static_cast<std::size_t>(threads), jobs.size());
-    for (std::size_t t = 1; t < extra; ++t) {
+    const std::size_t wanted = std::min<std::size_t>(static_cast<std::size_t>(threads), jobs.size());
+    for (std::size_t t = 0; t < wanted; ++t) {
         try {
+            const std::lock_guard<std::mutex> lock(m);
             pool.emplace_back(work);
+            ++running;  // under the lock: the thread cannot count itself out before it is in
         } catch (const std::system_error&) {
             break;  // fewer threads than asked for: the rest of the jobs run on those there are
         }
     }
-    work();
+    bool interrupted = false;
+    if (pool.empty() && !jobs.empty()) {
+        running = 1;
+        work();  // no thread at all: this one solves (and cannot watch for Ctrl-C meanwhile)
+    }
+    {
+        std::unique_lock<std::mutex> lock(m);
+        while (!finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; })) {
+            lock.unlock();
+            {
+                const py::gil_scoped_acquire gil;
+                interrupted = PyErr_CheckSignals() != 0;
+            }
+            lock.lock();
+            if (interrupted) {
+                stop = true;
+                break;
+            }
+        }
+    }
     for (std::thread& t : pool) t.join();
+    if (interrupted) {
+        const py::gil_scoped_acquire gil;
+        throw py::error_already_set();  // KeyboardInterrupt, or whatever the handler raised
+    }
     for (std::size_t i = 0; i < jobs.size(); ++i)
         if (errors[i]) rethrow_naming(errors[i], item_name(i, jobs[i]));
     return out;

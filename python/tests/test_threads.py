@@ -1,6 +1,8 @@
 """The batch call solves on several threads with exactly the serial loop's numbers, and the GIL
 is released while the library solves."""
 
+import subprocess
+import sys
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -107,3 +109,38 @@ def test_batch_error_names_the_item():
         roughroll.solve([good, smooth])
     with pytest.raises(roughroll.InputError, match=r"^items\[0\] \(the scene's Q = 0.15, scene 'Fig. 2a"):
         roughroll.solve([good], method="nonesuch")
+
+
+INTERRUPT = r"""
+import os, signal, sys, threading, time
+import roughroll
+s = roughroll.read_scene(sys.argv[1])
+t0 = time.monotonic()
+roughroll.solve([(s, 0.1)] * 4, method="paper", n=400)
+one = (time.monotonic() - t0) / 4
+items = [(s, 0.3 * k / 41) for k in range(1, 41)] * 5
+tasks = len(os.listdir("/proc/self/task"))
+timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+timer.start()
+t0 = time.monotonic()
+try:
+    roughroll.solve(items, threads=2, method="paper", n=400)
+    print("returned", time.monotonic() - t0, len(items) * one)
+except KeyboardInterrupt:
+    elapsed = time.monotonic() - t0
+    timer.join()
+    print("interrupted", elapsed, len(items) * one, len(os.listdir("/proc/self/task")) - tasks)
+"""
+
+
+def test_ctrl_c_stops_a_batch_between_points():
+    # In a process of its own: SIGINT there cannot stop this test session.
+    r = subprocess.run([sys.executable, "-c", INTERRUPT, str(DATA / "fig2a-T1.toml")], capture_output=True,
+                       text=True, timeout=900)
+    assert r.returncode == 0, r.stderr
+    what, elapsed, serial, *threads = r.stdout.split()
+    assert what == "interrupted", r.stdout
+    # Uninterrupted, two threads take at least half the serial time; stopped at 0.5 s plus the
+    # points in flight, far less (the bound scales with this machine's speed as measured).
+    assert float(elapsed) < float(serial) / 4, r.stdout
+    assert threads == ["0"], "a thread of the batch is still running"
