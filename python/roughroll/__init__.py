@@ -17,12 +17,15 @@ ArithmeticError), all subclasses of roughroll.Error, with the command line's one
 Solves release the GIL; solve(..., threads=k) runs many points on k threads.
 """
 
+from __future__ import annotations
+
 import math
 import numbers
 import os
 import warnings
 from collections import namedtuple
 from collections.abc import Mapping
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Union
 
 import numpy as np
 
@@ -194,7 +197,7 @@ class Scene:
     base_dir = property(lambda self: self._base_dir,
                         doc="The absolute folder a relative profile_csv is relative to (a file's own folder).")
 
-    def to_dict(self):
+    def to_dict(self) -> Dict[str, Any]:
         """The scene's keys as a (nested) dict, as its file or dict gave them.
 
         Returns
@@ -206,7 +209,7 @@ class Scene:
         """
         return _toml.loads(self._text)
 
-    def replace(self, **keys):
+    def replace(self, **keys) -> "Scene":
         """A new scene: this one with ``keys`` replaced (the scene as a template).
 
         Parameters
@@ -251,29 +254,100 @@ class Scene:
             self._hash = hash((_frozen(self.to_dict()), self._base_dir))
         return self._hash
 
-    def point(self, Q=None, *, method=None, n=None, zones=None, friction=None):
-        """One creep point for the load ``Q`` (default: the scene's Q), as ``roughroll point``.
+    def point(self, Q: Optional[float] = None, *, method: Optional[str] = None, n: Optional[int] = None,
+              zones: Optional[str] = None, friction: Optional[float] = None) -> Point:
+        """One creep point for the load ``Q``, as ``roughroll point``.
 
         The normal problem (3.19)-(3.20) gives P_H/P2 and the pressure; the tangential problem
         (3.21)-(3.22) is solved for c0 with Q(c0) of (4.5) = Q by Brent's method, giving the
         creep xi; the checks (3.3)-(3.4) are made on the solution.  A physical scene is first
-        solved for the half-width a that carries P2 (docs/formulation.md 2(j)).  ``method``
-        ('extrapolated', 'product', 'paper', 'one-parameter'), ``n`` and ``zones`` ('auto',
-        'single', 'general': how the stick and slip zones are found, docs/formulation.md section 7)
-        override the scene's [solver] as --method, --n and --zones do, and ``friction`` the scene's
-        friction coefficient as --friction does (checked as the scene's key; the load is then
-        checked against it).  Returns a Point whose to_dict() is the program's JSON.
+        solved for the half-width a that carries P2 (docs/formulation.md 2(j)).
+
+        Parameters
+        ----------
+        Q : float, optional
+            The load P1/P2, |Q| <= f; default: the scene's Q.
+        method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
+            Overrides the scene's ``[solver] method``, as ``--method``.
+        n : int, optional
+            Gauss-Chebyshev nodes (4.6), over the scene's ``[solver] n``, as ``--n``.
+        zones : {'auto', 'single', 'general'}, optional
+            How the stick and slip zones are found (docs/formulation.md section 7), as ``--zones``.
+        friction : float, optional
+            Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
+            the load is then checked against it).
+
+        Returns
+        -------
+        Point
+            Its ``to_dict()`` is the program's JSON for the same scene and options.
+
+        Raises
+        ------
+        InputError
+            No load, |Q| > f, a bad method, n or zones (the program's message).
+        ResolutionError, NumericalError
+            A point the discretisation cannot resolve; a numerical fault.
         """
         return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method), _zones(zones), _real(friction, "friction")))
 
-    def points(self, loads, *, method=None, n=None, zones=None, friction=None, threads=1):
-        """Points for many loads, on ``threads`` threads (see roughroll.solve): the same numbers
-        as ``[self.point(Q) for Q in loads]``."""
+    def points(self, loads: Sequence[float], *, method: Optional[str] = None, n: Optional[int] = None,
+               zones: Optional[str] = None, friction: Optional[float] = None, threads: int = 1) -> List[Point]:
+        """Points for many loads, on ``threads`` threads (see ``roughroll.solve``).
+
+        Parameters
+        ----------
+        loads : sequence of float
+            The loads Q = P1/P2.
+        threads : int
+            Threads to solve on; -1: every core (as scipy's ``workers=-1``).
+        method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
+            Overrides the scene's ``[solver] method``, as ``--method``.
+        n : int, optional
+            Gauss-Chebyshev nodes (4.6), over the scene's ``[solver] n``, as ``--n``.
+        zones : {'auto', 'single', 'general'}, optional
+            How the stick and slip zones are found (docs/formulation.md section 7), as ``--zones``.
+        friction : float, optional
+            Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
+            the load is then checked against it).
+
+        Returns
+        -------
+        list of Point
+            The same numbers as ``[self.point(Q) for Q in loads]``.
+        """
         return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n, zones=zones, friction=friction)
 
-    def curve(self, loads=None, *, points=51, sweep=False, method=None, n=None, zones=None, friction=None):
+    def curve(self, loads: Optional[Sequence[float]] = None, *, points: int = 51, sweep: bool = False,
+              method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
+              friction: Optional[float] = None) -> Dict[str, np.ndarray]:
         """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
 
+        Parameters
+        ----------
+        loads : sequence of float, optional
+            The loads Q of the rows; default: ``points`` loads chosen as below.
+        points : int
+            The rows of a curve without ``loads``.
+        sweep : bool
+            Sweep the curve in c0 instead of solving each load.
+        method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
+            Overrides the scene's ``[solver] method``, as ``--method``.
+        n : int, optional
+            Gauss-Chebyshev nodes (4.6), over the scene's ``[solver] n``, as ``--n``.
+        zones : {'auto', 'single', 'general'}, optional
+            How the stick and slip zones are found (docs/formulation.md section 7), as ``--zones``.
+        friction : float, optional
+            Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
+            the load is then checked against it).
+
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            The columns described in the notes, one entry per row.
+
+        Notes
+        -----
         Without ``loads``: ``points`` loads Q/f = 1 - (1 - u)^2, u uniform on [0, 1], each solved
         for c0 by Brent on (4.5) (for dissimilar rollers, ``beta_d != 0``: Q uniform from -f to f,
         the curve not being odd in Q, each row the point at its load, formulation 8(j)); with ``sweep=True`` the curve is swept in c0 instead
@@ -305,9 +379,36 @@ class Scene:
         c["status"] = np.array(c["status"], dtype=str)
         return c
 
-    def traction(self, Q=None, *, r=None, points=401, method=None, n=None, zones=None, friction=None):
+    def traction(self, Q: Optional[float] = None, *, r: Optional[Sequence[float]] = None, points: int = 401,
+                 method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
+                 friction: Optional[float] = None) -> Dict[str, Any]:
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.
 
+        Parameters
+        ----------
+        Q : float, optional
+            The load; default: the scene's Q.
+        r : sequence of float, optional
+            The grid, each in [-1, 1]; default: ``points`` points evenly from -1 to 1.
+        points : int
+            The default grid's points, in [3, 100000].
+        method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
+            Overrides the scene's ``[solver] method``, as ``--method``.
+        n : int, optional
+            Gauss-Chebyshev nodes (4.6), over the scene's ``[solver] n``, as ``--n``.
+        zones : {'auto', 'single', 'general'}, optional
+            How the stick and slip zones are found (docs/formulation.md section 7), as ``--zones``.
+        friction : float, optional
+            Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
+            the load is then checked against it).
+
+        Returns
+        -------
+        dict
+            The keys in the notes: the Point and NumPy arrays on the grid.
+
+        Notes
+        -----
         Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
         traction a p1/P2 of (3.15)), ``slip_velocity`` (v of (3.6), 0 on the stick zone),
         ``stick`` (start <= r < c0: the stick zone, which starts at -1 in the paper's structure), ``f_p`` (the Coulomb limit f p of (3.3)) and ``c0_distribution``
@@ -388,9 +489,24 @@ def _scene_from_source(text, source, base_dir):
     return Scene._wrap(_core._Scene.parse(text, source, base_dir), source, text, base_dir)
 
 
-def read_scene(path):
-    """The scene file at ``path`` (TOML, README "Scene files"), checked strictly: InputError
-    with the file's name and the problem, as the command line prints it."""
+def read_scene(path: Union[str, "os.PathLike[str]"]) -> Scene:
+    """The scene file at ``path`` (TOML, README "Scene files"), checked strictly.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The scene file; a relative ``profile_csv`` in it is relative to its folder.
+
+    Returns
+    -------
+    Scene
+        Keeping the file's text (``to_dict()``, pickling) and folder (``base_dir``).
+
+    Raises
+    ------
+    InputError
+        With the file's name and the problem, as the command line prints it.
+    """
     path = _path(path, "scene file")
     core = _core._Scene.read(path)
     # The bytes the library has just read and checked, kept for to_dict() and pickling.
@@ -399,8 +515,8 @@ def read_scene(path):
     return Scene._wrap(core, path, text, os.path.dirname(path))
 
 
-def scene(mapping=None, /, *, base_dir=".", **keys):
-    """A Scene from a dict and/or keyword arguments (the keys of a scene file)."""
+def scene(mapping: Optional[Mapping] = None, /, *, base_dir: Union[str, "os.PathLike[str]"] = ".", **keys) -> Scene:
+    """A Scene from a dict and/or keyword arguments (the keys of a scene file): ``Scene(...)``."""
     return Scene(mapping, base_dir=base_dir, **keys)
 
 
@@ -414,13 +530,16 @@ def _as_scene(s):
     raise TypeError(f"a scene is a Scene, a dict or a path, not {type(s).__name__}")
 
 
-def point(scene, Q=None, *, method=None, n=None, zones=None, friction=None):
+def point(scene: Union[Scene, Mapping, str, "os.PathLike[str]"], Q: Optional[float] = None, *,
+          method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
+          friction: Optional[float] = None) -> Point:
     """One creep point of ``scene`` (a Scene, a dict of scene keys or a scene file's path):
     ``Scene.point``, the program's ``roughroll point``."""
     return _as_scene(scene).point(Q, method=method, n=n, zones=zones, friction=friction)
 
 
-def solve(items, *, threads=1, method=None, n=None, zones=None, friction=None):
+def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = None, n: Optional[int] = None,
+          zones: Optional[str] = None, friction: Optional[float] = None) -> List[Point]:
     """Many creep points, on ``threads`` threads (C++ std::thread, the GIL released).
 
     Parameters
@@ -432,6 +551,9 @@ def solve(items, *, threads=1, method=None, n=None, zones=None, friction=None):
         -2 one fewer, and so on (scipy's ``workers=-1``).
     method, n, zones, friction
         As for ``Scene.point``, for every item.
+
+    Ctrl-C stops the batch between points (the points being solved finish first) and raises
+    KeyboardInterrupt; one point alone cannot be interrupted.
 
     Returns
     -------
