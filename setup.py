@@ -24,11 +24,25 @@ ROOT = os.path.dirname(os.path.abspath(__file__))
 BUILD_BASE = os.path.join(ROOT, "build-pip")
 
 
+def configured_elsewhere(build):
+    """Whether the CMake cache in build belongs to another source folder."""
+    try:
+        with open(os.path.join(build, "CMakeCache.txt"), encoding="utf-8", errors="replace") as f:
+            for line in f:
+                if line.startswith("CMAKE_HOME_DIRECTORY:"):
+                    return os.path.realpath(line.split("=", 1)[1].strip()) != os.path.realpath(ROOT)
+    except FileNotFoundError:
+        pass
+    return False
+
+
 class CMakeBuild(build_ext):
     """Configures and builds roughroll_python with CMake, then copies the module it made."""
 
     def build_extension(self, ext):
         build = os.path.abspath(os.environ.get("ROUGHROLL_CMAKE_BUILD_DIR") or os.path.join(BUILD_BASE, "cmake"))
+        if not os.environ.get("ROUGHROLL_CMAKE_BUILD_DIR") and configured_elsewhere(build):
+            shutil.rmtree(build)  # a moved or copied source tree: CMake refuses a cache of another source
         configure = ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                      # Only the module: no tests, benchmarks or their libraries needed.
                      "-DBUILD_TESTING=OFF", "-DROUGHROLL_BENCHMARKS=OFF", "-DROUGHROLL_PYTHON=ON",

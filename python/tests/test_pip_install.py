@@ -40,8 +40,16 @@ def source_files(root):
 
 
 def sync(root, target):
-    """Copies root's source files to target, keeping modification times (so make sees what changed)."""
-    for name in source_files(root):
+    """Copies root's source files to target, keeping modification times (so make sees what changed),
+    and removes the files root no longer has (pip's and CMake's build-pip/ apart)."""
+    names = source_files(root)
+    keep = set(names)
+    if target.exists():
+        for path in target.rglob("*"):
+            name = path.relative_to(target)
+            if path.is_file() and name.parts[0] != "build-pip" and str(name) not in keep:
+                path.unlink()
+    for name in names:
         src, dst = root / name, target / name
         st = src.stat()
         if dst.exists() and dst.stat().st_mtime_ns == st.st_mtime_ns and dst.stat().st_size == st.st_size:
