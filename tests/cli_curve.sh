@@ -8,6 +8,7 @@
 # Usage: cli_curve.sh path/to/roughroll
 set -u
 bin=$1
+hang_guard=${ROUGHROLL_HANG_GUARD:-900}  # against hangs, not a speed limit (cli_expect.sh)
 data="$(cd "$(dirname "$0")/../data" && pwd)"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -33,7 +34,7 @@ data_lines() { cp "$1" "$1.full" && sed -i '/^#/d' "$1"; }
 column() { head -1 "$dir/out" | tr ',' '\n' | grep -nx "$1" | cut -d: -f1; }
 
 # --- Given loads: every row against the point solved alone.
-timeout 120 "$bin" curve "$dir/stiff.toml" --points 7 >"$dir/out" 2>"$dir/err"
+timeout "$hang_guard" "$bin" curve "$dir/stiff.toml" --points 7 >"$dir/out" 2>"$dir/err"
 status=$?
 data_lines "$dir/out"
 [ "$status" -eq 3 ] || fail "stiff curve: exit status $status, expected 3 (partial output)"
@@ -45,7 +46,7 @@ while IFS=, read -r Q Qf rest; do
     row="$Q,$Qf,$rest"
     [ "$(echo "$row" | awk -F, '{ print NF }')" -eq "$width" ] || fail "row Q = $Q is not $width fields wide: $row"
     state=${row##*,}
-    timeout 60 "$bin" point "$dir/stiff.toml" --Q "$Q" --json >"$dir/pout" 2>"$dir/perr"
+    timeout "$hang_guard" "$bin" point "$dir/stiff.toml" --Q "$Q" --json >"$dir/pout" 2>"$dir/perr"
     pstatus=$?
     if [ "$pstatus" -eq 2 ] && grep -q "no honest error estimate" "$dir/perr"; then
         refused=$((refused + 1))
@@ -73,7 +74,7 @@ done < <(tail -n +2 "$dir/out")
 echo "given loads: $answered answered, $refused refused, exit $status"
 
 # --- The same curve into a file: the same CSV, the same status.
-timeout 120 "$bin" curve "$dir/stiff.toml" --points 7 --csv "$dir/curve.csv" >"$dir/out2" 2>"$dir/err2"
+timeout "$hang_guard" "$bin" curve "$dir/stiff.toml" --points 7 --csv "$dir/curve.csv" >"$dir/out2" 2>"$dir/err2"
 status=$?
 [ "$status" -eq 3 ] || fail "--csv: exit status $status, expected 3"
 cmp -s "$dir/out.full" "$dir/curve.csv" || fail "--csv: the file differs from stdout's CSV"
@@ -81,7 +82,7 @@ cmp -s "$dir/err" "$dir/err2" || fail "--csv: other stderr lines"
 [ -s "$dir/out2" ] && fail "--csv: something on stdout"
 
 # --- Swept in c0: a refused row keeps its c0, its load (not found) is empty.
-timeout 120 "$bin" curve "$dir/stiff.toml" --points 5 --sweep >"$dir/out" 2>"$dir/err"
+timeout "$hang_guard" "$bin" curve "$dir/stiff.toml" --points 5 --sweep >"$dir/out" 2>"$dir/err"
 status=$?
 data_lines "$dir/out"
 [ "$status" -eq 3 ] || fail "swept: exit status $status, expected 3"
@@ -100,7 +101,7 @@ grep -q '^roughroll: refused: curve point at c0 = 0.5: Q(c0) = [-0-9.e+]* lies o
     fail "swept: c0 = 0.5 (Q = -28.8) not refused as outside [0, f]: $(cat "$dir/err")"
 
 # --- A curve without a refusal: exit 0, nothing on stderr, every status ok.
-timeout 120 "$bin" curve "$data/fig2a-T1.toml" --points 5 >"$dir/out" 2>"$dir/err"
+timeout "$hang_guard" "$bin" curve "$data/fig2a-T1.toml" --points 5 >"$dir/out" 2>"$dir/err"
 status=$?
 data_lines "$dir/out"
 [ "$status" -eq 0 ] || fail "clean curve: exit status $status"
@@ -108,7 +109,7 @@ data_lines "$dir/out"
 [ "$(tail -n +2 "$dir/out" | grep -c ',ok$')" -eq 5 ] || fail "clean curve: not every row ok"
 
 # --- Bad input still aborts at once: exit 2, one line, nothing written.
-timeout 60 "$bin" curve "$dir/stiff.toml" --points 1 --csv "$dir/bad.csv" >"$dir/out" 2>"$dir/err"
+timeout "$hang_guard" "$bin" curve "$dir/stiff.toml" --points 1 --csv "$dir/bad.csv" >"$dir/out" 2>"$dir/err"
 status=$?
 [ "$status" -eq 2 ] || fail "bad input: exit status $status, expected 2"
 [ "$(wc -l <"$dir/err")" -eq 1 ] || fail "bad input: $(wc -l <"$dir/err") stderr lines"
@@ -118,8 +119,8 @@ status=$?
 # with its friction key replaced; the loads Q/f are the curve's own, so Q scales with f).
 sed 's/^friction = .*/friction = 0.5/' "$data/fig2a-T1.toml" >"$dir/f05.toml"
 grep -qx 'friction = 0.5' "$dir/f05.toml" || fail "--friction: the scene copy has no friction line to replace"
-timeout 120 "$bin" curve "$dir/f05.toml" --points 5 >"$dir/file.csv" 2>"$dir/err" || fail "--friction: the scene copy's curve failed"
-timeout 120 "$bin" curve "$data/fig2a-T1.toml" --friction 0.5 --points 5 >"$dir/option.csv" 2>"$dir/err" ||
+timeout "$hang_guard" "$bin" curve "$dir/f05.toml" --points 5 >"$dir/file.csv" 2>"$dir/err" || fail "--friction: the scene copy's curve failed"
+timeout "$hang_guard" "$bin" curve "$data/fig2a-T1.toml" --friction 0.5 --points 5 >"$dir/option.csv" 2>"$dir/err" ||
     fail "--friction: the curve with --friction failed: $(cat "$dir/err")"
 # The same but the line naming the scene file.
 cmp -s <(grep -v '^# roughroll curve ' "$dir/file.csv") <(grep -v '^# roughroll curve ' "$dir/option.csv") ||

@@ -3,10 +3,13 @@
 # (case-insensitive) and nothing on stdout. Needs $bin, $dir and $failures from the caller;
 # runs the program under the command in the array `as_user` when it is set.
 as_user=()
+# A guard against hangs, not a speed limit: the slowest call of the CLI tests takes a few
+# seconds in Release and under a minute with the sanitizers on a loaded machine (docs/robustness.md).
+hang_guard=${ROUGHROLL_HANG_GUARD:-900}
 expect() {
     local name=$1 keyword=$2
     shift 3
-    timeout 60 ${as_user[@]+"${as_user[@]}"} "$bin" "$@" >"$dir/out" 2>"$dir/err"
+    timeout "$hang_guard" ${as_user[@]+"${as_user[@]}"} "$bin" "$@" >"$dir/out" 2>"$dir/err"
     local status=$? lines
     lines=$(wc -l <"$dir/err")
     if [ "$status" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -qiF -- "$keyword" "$dir/err" || [ -s "$dir/out" ]; then

@@ -7,6 +7,10 @@
 #include <cstdio>
 #include <string>
 
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -106,4 +110,43 @@ TEST(FiveZonePoints, RoughPairSecondChanceBoundsTheError) {
            "the second stick zone's end (its bound folded into c0's)");
     within(r.out["stick_start"].get<double>(), fine.out["stick_start"].get<double>(),
            e_fine["stick_start"].get<double>(), e["stick_start"].get<double>(), "stick start");
+}
+
+// A refusal that needs a solve first (moved here from tests/cli_bad_input.sh, whose rows must be
+// refused before any solve: this one took 60 s under the sanitizers on a busy machine): free
+// rolling of the pair at f = 0.2 and n = 16, whose five zones' edge layers are thinner than the
+// collocation resolves (docs/formulation.md 8(j) 4a). Exit 2, one stderr line, nothing on stdout.
+TEST(FiveZonePoints, ZoneBelowResolutionIsOneLineAndExitTwo) {
+    char folder[] = "/tmp/roughroll-refusal-XXXXXX";
+    ASSERT_NE(mkdtemp(folder), nullptr);
+    const std::string dir = folder, scene = dir + "/betawide.toml";
+    {
+        FILE* out = std::fopen(scene.c_str(), "w");
+        ASSERT_NE(out, nullptr);
+        std::fputs("friction = 0.2\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 16\nmethod = \"product\"\n", out);
+        std::fclose(out);
+    }
+    const std::string command = std::string(ROUGHROLL_CLI) + " point " + scene + " >" + dir + "/out 2>" + dir + "/err";
+    const int status = std::system(command.c_str());
+    const auto slurp = [](const std::string& path) {
+        std::string text;
+        if (FILE* in = std::fopen(path.c_str(), "r")) {
+            char buffer[4096];
+            while (const std::size_t got = std::fread(buffer, 1, sizeof buffer, in)) text.append(buffer, got);
+            std::fclose(in);
+        }
+        return text;
+    };
+    const std::string out = slurp(dir + "/out"), err = slurp(dir + "/err");
+    std::printf("%s", err.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    EXPECT_TRUE(out.empty());
+    ASSERT_FALSE(err.empty());
+    EXPECT_EQ(err.find('\n'), err.size() - 1) << "one line";
+    EXPECT_NE(err.find("resolution"), std::string::npos);
+    std::remove((dir + "/out").c_str());
+    std::remove((dir + "/err").c_str());
+    std::remove(scene.c_str());
+    rmdir(folder);
 }

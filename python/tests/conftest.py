@@ -24,7 +24,7 @@ def program():
 
 def run(*args, cwd=None):
     """The program's exit status, stdout and stderr."""
-    r = subprocess.run([program(), *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=120)
+    r = subprocess.run([program(), *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=900)  # a hang guard, not a speed limit
     return r.returncode, r.stdout, r.stderr
 
 

@@ -183,6 +183,15 @@ tangential_solution contact::distribution(const tangential_solution& s) {
 }
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    // The levels' differences measure how a solution of the discrete equations moves with n; where
+    // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.
+    // They are still solved: where they do not converge the point is refused, as any other.
+    std::optional<error_estimate> e = levels_estimate(s);
+    if (!s.checks.hold()) return std::nullopt;
+    return e;
+}
+
+std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
     if (dissimilar_) return dissimilar_estimate(s);
     if (reported_ && s.general) {
         // A point of the general path is level n itself, not extrapolated: the difference from
@@ -262,8 +271,13 @@ std::optional<tangential_solution> contact::above_finest(const tangential_soluti
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
         if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-        return swept ? finer_->level_at_stick_end(own.c0, false, sweeping_near_) : finer_->level_point(s.Q, false);
+        if (swept) return finer_->level_at_stick_end(own.c0, false, sweeping_near_);
+        // On the zone path of s, as the other levels (estimate()).
+        return s.general ? finer_->general_point(s.Q, zone_guess{s.start, s.c0}) : finer_->level_point(s.Q, false);
     } catch (const resolution_error&) {
+        return std::nullopt;
+    } catch (const numerical_error&) {  // the general search finds no zone at 2n: no fourth level
+        if (!s.general) throw;
         return std::nullopt;
     }
 }
@@ -324,24 +338,42 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     else
         qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0, &e.c0});
     const int coarsest_n = levels_[0] ? levels_[0]->nodes() : nodes();
-    bool second_chance = false;
+    bool second_chance = false, confirmed = false;
+    // Three levels that look converged can still be pre-asymptotic (docs/performance.md, "How the
+    // error estimates are made", the fourth level): where they show less than the method's order,
+    // and always for the one-parameter limit, whose c0 error changes with c0's place among the nodes
+    // and can pass near zero at one level, level 2n confirms: the estimate is also bounded from
+    // n/2, n, 2n, and the point is refused where those do not converge visibly.
+    const bool always_confirm = options_.how == method::one_parameter;
     for (const quantity& q : qs) {
         error_bound b = bound_error(q.v, order, which, q.floor);
         three_levels used = q.v;
         int used_coarsest_n = coarsest_n;
-        if (!b.resolved && own.checks.hold()) {
-            // A second chance one level finer, n/2, n, 2n (error_bound.hpp): where n/4 is still
-            // pre-asymptotic for this quantity. Only for a solution whose inequalities (3.3)-(3.4)
-            // hold, and only where the finer levels show at least order p - 1: three
-            // pre-asymptotic levels of a very stiff layer can look convergent by chance.
+        const bool confirm = b.resolved && (always_confirm || !b.asymptotic);
+        if ((!b.resolved && own.checks.hold()) || confirm) {
+            // One level finer, n/2, n, 2n (error_bound.hpp). Where the first three gave no estimate
+            // (a second chance, where n/4 is still pre-asymptotic for this quantity): only for a
+            // solution whose inequalities (3.3)-(3.4) hold, and only where the finer levels show at
+            // least order p - 1, since three pre-asymptotic levels of a very stiff layer can look
+            // convergent by chance. Where they gave one (a confirmation): the larger of the two.
             if (const std::optional<tangential_solution> above = above_finest(s, own, swept)) {
                 const int i = static_cast<int>(&q - qs.data());
                 const double v = i == 0 ? finer_->normal_level().lambda : i == 1 ? above->xi : swept ? above->Q : above->c0;
-                used = {q.v.middle, q.v.finest, v};
+                const three_levels finer{q.v.middle, q.v.finest, v};
+                error_bound fb = bound_error(finer, order, reported_value{1, extrapolated}, q.floor);
+                if (confirm) {
+                    if (fb.resolved) {
+                        fb.value = std::max(fb.value, b.value);
+                        fb.asymptotic = fb.asymptotic && b.asymptotic;
+                    }
+                    confirmed = true;
+                } else {
+                    if (!(fb.ratio >= std::ldexp(1.0, order - 1))) fb.resolved = false;
+                    second_chance = second_chance || fb.resolved;
+                }
+                b = fb;
+                used = finer;
                 used_coarsest_n = 2 * coarsest_n;
-                b = bound_error(used, order, reported_value{1, extrapolated}, q.floor);
-                if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
-                second_chance = second_chance || b.resolved;
             }
         }
         if (!b.resolved) {
@@ -353,7 +385,8 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
                 << ", " << used.finest - used.middle << ")";
             if (!swept) msg << " at Q = " << s.Q;
             else msg << " at c0 = " << s.c0;
-            msg << "; increase n, or the scene is beyond the method's reach";
+            msg << (nodes() < max_nodes ? "; increase n, or the scene is beyond the method's reach"
+                                                     : "; the scene is beyond the method's reach at the largest n");
             throw resolution_error(msg.str());
         }
         *q.out = std::max(*q.out, b.value);
@@ -363,6 +396,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     const int first = 2 - self;  // index of the coarsest level's name
     e.against = std::string(extrapolated ? "level n" : self == 2 ? "n/2" : "2n") + " (levels " + names[first] + ", " +
                 names[first + 1] + ", " + names[first + 2] + (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
+                (confirmed ? "; confirmed on n/2, n, 2n" : "") +
                 (e.bounded ? "; observed order below " : "; order ") + std::to_string(order) +
                 (e.bounded ? ": bounded)" : " observed)");
     return e;
@@ -430,6 +464,7 @@ contact::swept_point contact::swept_at(double c0) {
     // The same for the load's error interval: Q +- e.Q reaching beyond [0, f] cannot be told from
     // full stick or gross sliding (and may be no physical point at all).
     refuse_load_outside(s, e.Q);
+    if (!s.checks.hold()) return {s, std::nullopt};  // as estimate(): no bound for such a point
     return {s, e};
 }
 
@@ -797,7 +832,7 @@ curve_point refused_row(double Q, double c0, double f, const std::string& at, co
     s.f = f;
     s.c0 = c0;
     s.xi = s.sign = s.rcond = s.load_slope = s.start = nan;
-    s.checks = traction_checks{nan, nan, nan, nan, false, false, false};
+    s.checks = traction_checks{nan, nan, nan, nan, nan, false, false, false};
     const carter_point smooth = std::isnan(Q) ? carter_point{c0, carter_at_stick_end(c0, f).xi} : carter(Q, f);
     return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
 }

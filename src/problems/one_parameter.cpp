@@ -269,7 +269,8 @@ traction_checks one_parameter_solver::check(const tangential_solution& s) const 
     // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q.
     c.stick_rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
     c.stick_holds = c.stick_margin >= -c.stick_rounding;
-    c.slip_holds = c.slip_margin > 0.0;
+    c.slip_rounding = c.stick_rounding;  // (3.4)'s floor, as tangential_solver::check's
+    c.slip_holds = c.slip_margin > -c.slip_rounding;
     return c;
 }
 

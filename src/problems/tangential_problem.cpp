@@ -410,7 +410,12 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     c.stick_rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max({1.0, std::fabs(normal_.lambda),
                                                                              k1_.strength(), dk_.strength()})) / f_;
     c.stick_holds = c.stick_margin >= -c.stick_rounding;
-    c.slip_holds = c.slip_margin > 0.0;
+    // (3.4) likewise: the slip velocity (3.6) is what is left of the same terms, xi + f G minus the
+    // kernels' action on p1, off the stick zone; near gross sliding it is that small too and its
+    // margin is rounding (measured -2e-12 .. -5e-11 on the general search's right zones), so it
+    // carries the same floor.
+    c.slip_rounding = c.stick_rounding;
+    c.slip_holds = c.slip_margin > -c.slip_rounding;
     return c;
 }
 

@@ -101,9 +101,13 @@ public:
     };
     swept_point at_stick_end(double c0);
 
-    // The estimate for a solution s of this contact (solves the other two levels at s.Q).
+    // The estimate for a solution s of this contact (solves the other two levels at s.Q, and level
+    // 2n where those show less than the method's order, or for the one-parameter limit always).
     // Throws resolution_error when the levels give no honest estimate (see error_estimate).
-    // Empty only when no three levels fit in [min_nodes, max_nodes] (never for n >= 8).
+    // Empty when s fails its checks (3.3)-(3.4) (no level difference bounds the error of such an
+    // answer: it is not the model's solution; the levels are still solved, and refuse the point
+    // where they do not converge) or when no three levels fit in [min_nodes, max_nodes] (never
+    // for n >= 8).
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
     // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone) for a
@@ -136,6 +140,8 @@ private:
     // `guess`: a c0 near the root (the level below's), where the root search starts.
     const tangential_solution& level_point(double Q, bool checked, std::optional<double> guess = std::nullopt,
                                            std::optional<double> slope = std::nullopt);
+    // estimate() before its check of s's inequalities: the levels' estimate, or its refusal.
+    std::optional<error_estimate> levels_estimate(const tangential_solution& s);
     int nodes() const { return options_.nodes(); }
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
     method level_method() const;  // product for extrapolated, else the method itself

@@ -32,6 +32,7 @@ struct traction_checks {
     double stick_margin;     // (3.3) min of (f p - |p1|)/f on the stick zone
     double slip_margin;      // (3.4) min of v/f on the slip zone (v with the sign of Q)
     double stick_rounding = 0.0;  // the stick margin's rounding floor: (3.3) holds when margin >= -floor
+    double slip_rounding = 0.0;   // the slip margin's: (3.4) holds when margin > -floor
     bool pressure_holds;
     bool stick_holds;
     bool slip_holds;
