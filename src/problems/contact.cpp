@@ -94,6 +94,8 @@ tangential_solution contact::zones_for(double Q, tangential_solution s, const ta
     try {
         tangential_solution g = general_point(Q, guess);
         return g.checks.hold() ? g : s;
+    } catch (const resolution_error&) {  // no zone of the general structure (zone_solver.hpp)
+        return s;
     } catch (const numerical_error&) {
         return s;
     }
@@ -495,6 +497,8 @@ const coupling_summary* contact::coupling() const { return coupled_load_ ? &coup
 dissimilar_zones& contact::zones_of_point() { return coupled_load_ ? coupled_->zones() : *dissimilar_; }
 
 tangential_solution contact::dissimilar_point(double Q) {
+    // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
+    check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
     const tangential_solution johnson = johnson_point(Q);
     if (!coupled_) return johnson;
     return coupled_level_point(Q, johnson, true);
@@ -506,7 +510,8 @@ tangential_solution contact::johnson_level_point(double Q, const tangential_solu
     const five_zone_solution* v = five_level_point(Q, &ends);
     if (v == nullptr)
         throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) + ": no five zones at Q = " +
-                               shortest(Q) + "; increase n");
+                               shortest(Q) + " from the neighbouring level's zones (the five zones change "
+                               "between levels); another n may find them");
     tangential_solution t = five_zone_point(*v);
     t.Q = Q;
     return t;
@@ -533,18 +538,19 @@ tangential_solution contact::johnson_point(double Q) {
                 const tangential_solution& t = level->dissimilar_level_point(Q, guess, opposite);
                 guess = zone_guess{t.start, t.c0};
                 opposite = t.opposite;
-            } catch (const numerical_error&) {  // this level searches without a guess
+            } catch (const resolution_error&) {  // no three zones on this level: the next searches without a guess
+                guess.reset();
+            } catch (const numerical_error&) {
                 guess.reset();
             }
         }
     }
-    try {
-        tangential_solution s = dissimilar_level_point(Q, guess, opposite);
-        require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
-        return s;
-    } catch (const numerical_error& why) {
-        // Free rolling, or three zones that fail (3.3)-(3.4): five zones (|Q| < f; on the braked
-        // side, Q/sgn(beta_D) < 0, until the slip+ zone closes, 8(j) 4a); else the refusal stands.
+    // Free rolling, no three zones, or three zones that fail (3.3)-(3.4) (resolution_error), or a
+    // numerical fault of their search: five zones (|Q| < f; on the braked side, Q/sgn(beta_D) < 0,
+    // until the slip+ zone closes, 8(j) 4a). Where none are found either, the first error stands:
+    // a fault aborts; a structure not found at this n is a refusal (a curve's refused row,
+    // docs/robustness.md), saying so.
+    const auto five_or = [&](const error& why) -> tangential_solution {
         if (!(std::fabs(Q) < f_)) throw;
         std::vector<double> ends;
         if (build_levels())
@@ -554,7 +560,13 @@ tangential_solution contact::johnson_point(double Q) {
                 ends = v ? std::vector<double>{v->s1, v->c1, v->s2, v->c2} : std::vector<double>{};
             }
         const five_zone_solution* v = five_level_point(Q, ends.empty() ? nullptr : &ends);
-        if (v == nullptr) throw;
+        if (v == nullptr) {
+            if (dynamic_cast<const resolution_error*>(&why) == nullptr) throw;
+            throw resolution_error(std::string(why.what()) + "; no five zones (slip, stick, reversed slip, stick, "
+                                   "slip) are found at n = " + std::to_string(nodes()) +
+                                   " either (their search starts from the coarser levels' zones): another n may "
+                                   "find them");
+        }
         tangential_solution s = five_zone_point(*v);
         s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
         // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
@@ -564,8 +576,19 @@ tangential_solution contact::johnson_point(double Q) {
                                    ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
                                    "(3.3)-(3.4) (margins: stick " + shortest(s.checks.stick_margin) + ", slip " +
                                    shortest(s.checks.slip_margin) + "): a zone is below the collocation's resolution "
-                                   "at n = " + std::to_string(nodes()) + " (docs/formulation.md 8(j)); increase n");
+                                   "at n = " + std::to_string(nodes()) + " (docs/formulation.md 8(j)); " +
+                                   (nodes() < max_nodes ? "a larger n (at most " + std::to_string(max_nodes) + ") may resolve it"
+                                                        : "n is at its largest, so this load is beyond the method's reach"));
         return s;
+    };
+    try {
+        tangential_solution s = dissimilar_level_point(Q, guess, opposite);
+        require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
+        return s;
+    } catch (const resolution_error& why) {
+        return five_or(why);
+    } catch (const numerical_error& why) {
+        return five_or(why);
     }
 }
 
@@ -618,7 +641,10 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
                 throw resolution_error("no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
                                        std::to_string(nodes()) + " (dissimilar rollers): level " +
                                        std::to_string(levels_[i]->nodes()) +
-                                       " finds no five zones at Q = " + shortest(s.Q) + "; increase n");
+                                       " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
+                                       (nodes() < max_nodes ? "another n (at most " + std::to_string(max_nodes) +
+                                                                  ") may find them"
+                                                            : "n is at its largest, so the load is beyond the method's reach"));
             at[i] = five_zone_point(*v);
         } else {
             at[i] = levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
@@ -721,8 +747,10 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
             msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
                 << " (dissimilar rollers): " << q.name << " does not converge visibly over the levels n = "
                 << used_coarsest << ", " << 2 * used_coarsest << ", " << 4 * used_coarsest << " (differences "
-                << used.middle - used.coarsest << ", " << used.finest - used.middle << ") at Q = " << s.Q
-                << "; increase n";
+                << used.middle - used.coarsest << ", " << used.finest - used.middle << ") at Q = " << s.Q << "; ";
+            // A larger n helps only where its levels fit below max_nodes (the finest is n, or 2n above).
+            if (nodes() < max_nodes) msg << "a larger n (at most " << max_nodes << ") may converge";
+            else msg << "n is at its largest, so the load is beyond the method's reach";
             throw resolution_error(msg.str());
         }
         *q.out = std::max(*q.out, b.value);

@@ -35,11 +35,12 @@ constexpr double quadrature_absolute = 1e-14;
 constexpr double quadrature_relative = 1e-12;
 constexpr double quadrature_accepted = 1e-10;
 
-std::string not_built(double Q, double f, const std::string& why) {
+// Why no three zones answer a load (a resolution_error: no zone of that structure at this n, which a
+// point answers by five zones or refuses; never a numerical fault, docs/robustness.md).
+std::string no_three_zones(double Q, double f, const std::string& why) {
     std::ostringstream msg;
     msg.precision(6);
-    msg << "dissimilar rollers at Q/f = " << Q / f << ": " << why
-        << " (docs/formulation.md 8(g), 8(j)): not built yet";
+    msg << "dissimilar rollers at Q/f = " << Q / f << ": " << why << " (docs/formulation.md 8(g), 8(j))";
     return msg.str();
 }
 }  // namespace
@@ -53,6 +54,47 @@ void check_dissimilar(const dissimilar& materials, const solver_options& options
     if (options.zones == zone_search::single)
         throw input_error("zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
                           "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'");
+}
+
+namespace {
+// kappa of leading_zone_estimate at the load Q (docs/formulation.md 8(j) item 11).
+double edge_kappa(double beta_d, double f, double Q) {
+    // With beta_D small against f, p1 is the beta_D = 0 traction plus the no-slip term of 8(g), whose
+    // ratio to f p grows like (|beta_D|/(pi f)) log(2/(1 + r)) at the leading edge; Carter's traction
+    // there has p1/(f p) = sgn(Q) (1 - sqrt(rho)), rho = sqrt(1 - |Q|/f) (2(f): q/(f p) -> sqrt(rho) as
+    // r -> -1). The term pushes p1 towards -sgn(beta_D) f p (8(g): slip -sgn(beta_D) at the leading
+    // edge), so it reaches the slip limit where its ratio exceeds kappa = sqrt(rho) for Q beta_D < 0 (a
+    // braked roller 1: slip with Q), 2 - sqrt(rho) for Q beta_D > 0 (driven: slip against Q), 1 at free
+    // rolling: a leading slip zone 2 exp(-pi f kappa/|beta_D|) thick.
+    const double rho = std::sqrt(std::max(0.0, 1.0 - std::fabs(Q) / f));
+    return Q == 0.0 ? 1.0 : Q * beta_d < 0.0 ? std::sqrt(rho) : 2.0 - std::sqrt(rho);
+}
+}  // namespace
+
+double leading_zone_estimate(double beta_d, double f, double Q) {
+    if (beta_d == 0.0) return 0.0;
+    return 2.0 * std::exp(-M_PI * f * edge_kappa(beta_d, f, Q) / std::fabs(beta_d));
+}
+
+double thinnest_edge_zone(int n) {
+    // A hundredth of the collocation's node spacing (pi^2/2)/n^2 at the end of a zone of half-length 1
+    // (docs/formulation.md 8(j) item 11: measured, zones of a few times the spacing are resolved).
+    return 0.01 * 0.5 * M_PI * M_PI / (static_cast<double>(n) * n);
+}
+
+void check_edge_zones_resolvable(double beta_d, double f, double Q, int n) {
+    if (beta_d == 0.0 || !(std::fabs(Q) < f)) return;  // gross sliding: no zones to find (8(g))
+    const double thickness = leading_zone_estimate(beta_d, f, Q), thinnest = thinnest_edge_zone(n);
+    if (thickness >= thinnest) return;
+    // The |beta_D| at which the estimate reaches the thinnest zone: pi f kappa/log(2/thinnest).
+    const double needed = M_PI * f * edge_kappa(beta_d, f, Q) / std::log(2.0 / thinnest);
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "beta_d = " << beta_d << " is below what the dissimilar zone search resolves at Q/f = " << Q / f
+        << " and n = " << n << " (|beta_d| >= " << needed << " needed: the slip zone at the leading edge, about "
+        << thickness << " thick, is thinner than " << thinnest << ", docs/formulation.md 8(j) item 11); set beta_d = 0 "
+        << "(equal materials) for the paper's problem, whose results differ by O(beta_d)";
+    throw resolution_error(msg.str());
 }
 
 double load_between(const normal_solution& normal, double lo, double hi) {
@@ -166,8 +208,41 @@ double dissimilar_zones::W(double r, double start, double c0) {
             total += integrate_piece(integrand, points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
         return total;
     };
-    double w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
-    if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
+    // r within `apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
+    // constant g(r) leaves (g(eta) - g(r))/(eta - r) ~ -1/(sqrt(1 - eta) + sqrt(1 - r)), a spike of
+    // height 1/sqrt(1 - r) and width 1 - r at eta = 1 that no quadrature resolves (GSL: round-off).
+    // There g = sqrt(1 - eta) h(eta) on the last piece [a, 1], h = phi(eta) sqrt(1 + eta) H smooth
+    // ((4.1)), and sqrt(1 - eta) h(r) is subtracted instead: the rest, sqrt(1 - eta) (h(eta) - h(r))/
+    // (eta - r), is smooth times the square root that integrate_piece makes analytic, and with
+    // u = sqrt(1 - eta), d = sqrt(1 - r), U = sqrt(1 - a) (docs/formulation.md 8(j) item 3)
+    //   PV int_a^1 sqrt(1 - eta)/(eta - r) d eta = int_0^U 2 u^2/(d^2 - u^2) du = -2 U + d log((U + d)/(U - d)).
+    // The pieces below a (r outside them) carry no subtraction. p at eta near 1 from sqrt((1 - eta)(1 + eta)),
+    // exact for the node eta, where 1 - eta^2 loses 1 - eta's digits.
+    const double a = points[points.size() - 2];
+    double w = 0.0;
+    if (inside && !(1.0 - r > apart) && r - a > apart) {
+        const auto edge_pressure = [&](double eta) {
+            if (!(eta < 1.0)) return 0.0;
+            return pressure_table_ ? (*pressure_table_)(eta)
+                                   : u_series(pressure_b_, eta) * std::sqrt((1.0 - eta) * (1.0 + eta));
+        };
+        const double hr = u_series(pressure_b_, r) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r), the series
+        const double d = std::sqrt(1.0 - r), U = std::sqrt(1.0 - a);
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            const bool last = i + 2 == points.size();
+            w += integrate_piece(
+                [&](double eta) {
+                    if (eta == r) return 0.0;  // a bounded integrand's single point
+                    const double ge = edge_pressure(eta) * H(eta, start, c0);
+                    return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
+                },
+                points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+        }
+        w = M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
+    } else {
+        w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
+        if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
+    }
     for (const auto& term : k1_.terms())
         w += term.T * integrate([&](double eta) {
             const double z = eta - r;
@@ -333,7 +408,7 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
         if (!first) first = s;
     }
     if (first) return *first;  // the caller refuses it: its checks fail
-    throw numerical_error("no three-zone structure carries Q");
+    throw resolution_error("no three-zone structure carries Q");  // of this kind: solve tries the other
 }
 
 tangential_solution five_zone_point(const five_zone_solution& v) {
@@ -420,8 +495,8 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
 tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
-        throw numerical_error(not_built(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
-                                                "not three (contact::point solves them by dissimilar_zones::five_zones, 8(j) 4a, 9)"));
+        throw resolution_error(no_three_zones(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
+                                                "not three"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     tangential_solution s;
@@ -431,7 +506,10 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         // The structure the hint names first (the coarser level's, when extrapolating), then the
         // other one: both slip zones in the direction of Q, or the leading one against it. The first
         // whose checks hold is the answer; else one that fails them, for the caller to refuse.
+        // A structure with no zone is a resolution_error; a numerical fault (a GSL status, a singular
+        // system) of either search is kept and, where neither structure answers, rethrown as the fault.
         std::optional<tangential_solution> found, failed;
+        std::optional<numerical_error> fault;
         for (const bool blend : {opposite, !opposite}) {
             try {
                 tangential_solution t = three_zones(blend ? opposite_directions(b) : equal_directions(b), magnitude, guess);
@@ -440,11 +518,14 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
                     break;
                 }
                 if (!failed) failed = t;
-            } catch (const numerical_error&) {
+            } catch (const resolution_error&) {
+            } catch (const numerical_error& e) {
+                if (!fault) fault = e;
             }
         }
+        if (!found && !failed && fault) throw *fault;
         if (!found && !failed)
-            throw numerical_error(not_built(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
+            throw resolution_error(no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
         s = found ? *found : *failed;
     }
     s.general = true;
@@ -458,12 +539,10 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
 
 void require_checks(const tangential_solution& s) {
     if (s.checks.hold()) return;
-    throw numerical_error(not_built(
+    throw resolution_error(no_three_zones(
         s.Q, s.f,
         "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
-            shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
-            "); the answer has five zones (slip, stick, reversed slip, stick, slip), which no start found here "
-            "(dissimilar_zones::five_zones starts only where the load drives roller 1, 8(j) 4a, 9)"));
+            shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) + ")"));
 }
 
 }  // namespace roughroll

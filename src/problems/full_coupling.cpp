@@ -48,22 +48,25 @@ namespace {
 // (five zones by their four ends; else three zones or gross sliding by dissimilar_zones::solve,
 // which tries the previous kind first), and the checks (3.3)-(3.4) of the answer (acted on when
 // `checked`: a point reported; a level of an estimate need not hold them, as at Johnson's level).
+// A structure the alternation cannot follow is a resolution_error (a curve's refused row), not a fault.
 tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f, bool checked) {
     tangential_solution t;
     if (previous.five) {
         const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2, previous.end2});
         if (!v)
-            throw numerical_error(at_load(Q, f) + "Newton finds no five zones from the previous iterate's ends "
-                                  "(the zone structure changes under the coupling; docs/formulation.md 8(e))");
+            throw resolution_error(at_load(Q, f) + "Newton finds no five zones from the previous iterate's ends "
+                                   "(the zone structure changes under the coupling; docs/formulation.md 8(e)), "
+                                   "which the alternation does not follow; coupling = \"johnson\" answers the load");
         t = five_zone_point(*v);
         t.Q = Q;
     } else {
         t = z.solve(Q, zone_guess{previous.start, previous.c0}, previous.opposite);
     }
     if (checked && !t.checks.hold())
-        throw numerical_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
-                              shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
-                              "): the zone structure changes under the coupling (docs/formulation.md 8(e)), not built");
+        throw resolution_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
+                               shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
+                               "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
+                               "the alternation does not follow; coupling = \"johnson\" answers the load");
     return t;
 }
 

@@ -108,7 +108,10 @@ tangential_solution one_parameter_zones::general(double magnitude, std::optional
         else lo = trial, lo_entry = e, lo_end = *end;
     }
     if (std::isnan(hi))
-        throw numerical_error(
+        // No zone of this structure (not a numerical fault): a refusal of the point (resolution_error),
+        // which zones = "auto" answers with the paper's zone, its checks failed, where that zone exists
+        // (contact::zones_for); a curve refuses the row (docs/robustness.md).
+        throw resolution_error(
             "one-parameter zone search: the entry condition v(s-) = 0 has no root on the scanned starts of the "
             "stick zone (a structure the solver does not cover)");
     // Newton from the interpolated zone; Brent on the bracket when it fails.

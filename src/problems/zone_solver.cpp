@@ -185,7 +185,10 @@ tangential_solution zone_solver::general(double magnitude, std::optional<zone_gu
         else lo = trial, lo_entry = e, lo_end = end;
     }
     if (std::isnan(hi))
-        throw numerical_error(
+        // No zone of this structure (not a numerical fault): a refusal of the point (resolution_error),
+        // which zones = "auto" answers with the paper's zone, its checks failed, where that zone exists
+        // (contact::zones_for); a curve refuses the row (docs/robustness.md).
+        throw resolution_error(
             "zone solver: the entry condition psi(-1) = 0 has no root on the scanned starts of the stick zone "
             "(a structure the solver does not cover)");
     const double w = lo_entry / (lo_entry - hi_entry);

@@ -27,7 +27,7 @@
 //   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling, a driven roller 1
 //     below Q/f ~ 0.9 and a braked one until the slip+ zone closes (Q/f ~ -0.074 at f = 0.05 for
 //     aluminium on steel, 8(j) 4a), by five_zones (five_zones.cpp; below), not through solve().
-// Not built in solve() (refused with numerical_error naming what is missing, never a number): free
+// Not built in solve() (refused with resolution_error naming what is missing, never a number): free
 // rolling Q = 0 and every load whose answer is not one of the three-zone structures above (five
 // zones), and coupling "full".
 #pragma once
@@ -64,6 +64,16 @@ struct complete_slip {
 };
 complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, double Q_over_f);
 
+// The thickness of the slip zone at the leading edge for |beta_D| small against f, 2 exp(-pi f kappa/|beta_D|)
+// with kappa from Carter's traction at the load (docs/formulation.md 8(j) item 11). Below
+// thinnest_edge_zone(n), a hundredth of the collocation's end spacing (pi^2/2)/n^2, no point is resolved
+// at n (measured there), and contact::point refuses the load at once (check_edge_zones_resolvable: a
+// resolution_error saying which |beta_d| is needed, or beta_d = 0) instead of after minutes of search.
+// Gross sliding |Q| = f is never refused.
+double leading_zone_estimate(double beta_d, double f, double Q);
+double thinnest_edge_zone(int n);
+void check_edge_zones_resolvable(double beta_d, double f, double Q, int n);
+
 // int_lo^hi p(r) dr for the pressure (4.1), in closed form from its U-series (r = cos theta:
 // U_j(r) sqrt(1 - r^2) dr = -sin((j + 1) theta) sin(theta) d theta).
 double load_between(const normal_solution& normal, double lo, double hi);
@@ -73,7 +83,7 @@ double load_between(const normal_solution& normal, double lo, double hi);
 // the estimates of the ends include it as a floor.
 constexpr double zone_end_resolution = 1e-11;
 
-// numerical_error naming the structure not built unless s's checks (3.3)-(3.4) hold: a three-zone
+// resolution_error naming the failed checks unless s's checks (3.3)-(3.4) hold: a three-zone
 // answer that fails them is another structure's, never reported.
 void require_checks(const tangential_solution& s);
 
@@ -117,7 +127,8 @@ public:
 
     // The point at load Q, |Q| <= f, with its checks (3.3)-(3.4) on every zone (made, not acted
     // on: a reported point goes through require_checks, a level of an estimate need not);
-    // numerical_error for free rolling and where no three zones carry Q. `guess`: a zone near the one sought (the coarser
+    // resolution_error for free rolling and where no three zones carry Q (numerical_error only for a
+    // numerical fault of the searches: a GSL status, a singular system). `guess`: a zone near the one sought (the coarser
     // level's), the start of Newton's method; without it the starts of the stick zone are scanned.
     // `opposite`: try the leading slip against Q first (the coarser level's structure).
     tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false);

@@ -13,7 +13,7 @@
 //   - gross sliding |Q| = f: stick only at the point r* where G is least, xi = -f min G.
 // (s, c0) solve Q(s, c0) = |Q| (in the gap form rho int q + (f - |Q|), 7(d)) and E = 0 by
 // Newton's method in (m, log rho) from a scanned bracket of s, nested Brent searches as the
-// fallback. Other structures are not solved: the search throws numerical_error, and an answer
+// fallback. Other structures are not solved: the search throws resolution_error, and an answer
 // that fails its checks is reported as such.
 #pragma once
 

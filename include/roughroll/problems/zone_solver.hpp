@@ -15,7 +15,7 @@
 //     xi = -f min G (7(d)).
 // (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 by Newton's method from a guess or a
 // scanned bracket, with nested Brent searches as the fallback. Other structures (slip against
-// Q, several stick zones) are not solved: the search throws numerical_error when the entry
+// Q, several stick zones) are not solved: the search throws resolution_error when the entry
 // condition has no root, and an answer of the wrong structure fails the checks (3.3)-(3.4),
 // which are made on every zone; contact's zones = "auto" then keeps the single zone.
 #pragma once
