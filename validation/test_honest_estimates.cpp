@@ -11,12 +11,16 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
 
@@ -230,4 +234,24 @@ TEST(HonestEstimates, OneParameterConfirmedOnAFourthLevel) {
     const reference ref =
         two_routes(r, f, Q, solver_options{1000, method::one_parameter}, solver_options{768, method::one_parameter});
     for (int n : {64, 128, 256}) honest_or_refused_at(r, f, Q, solver_options{n, method::one_parameter}, ref);
+}
+
+// Issue 23, 1: a point whose checks fail had carried an estimate as if it bounded its error (the
+// one-parameter limit with eps1 = 2 T/A^2 = 0.1 tangential, eps2 = 0.3 normal at Q/f = 0.9999,
+// n = 128: xi +- 1.3e-5, while the general zones at n = 256 are 7.2e-4 away). Now the point
+// reports no estimate, and says why, in the JSON and the text.
+TEST(HonestEstimates, FlaggedPointSaysWhyItHasNoEstimate) {
+    const scene sc = parse_scene("friction = 0.3\nQ = 0.29997\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
+                                 "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\nn = 128\n",
+                                 "flagged.toml");
+    const scene_point p = solve_point(sc, std::nullopt);
+    ASSERT_FALSE(p.solution.checks.hold());
+    EXPECT_FALSE(p.estimate.has_value());
+    const nlohmann::json j = to_json(p.report());
+    EXPECT_TRUE(j["error_estimate"].is_null());
+    ASSERT_TRUE(j["error_estimate_absent"].is_string());
+    EXPECT_NE(j["error_estimate_absent"].get<std::string>().find("checks (3.3)-(3.4) fail"), std::string::npos);
+    std::ostringstream text;
+    write_summary(text, p.report());
+    EXPECT_NE(text.str().find("error estimate      none: the checks (3.3)-(3.4) fail"), std::string::npos) << text.str();
 }

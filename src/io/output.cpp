@@ -52,6 +52,17 @@ std::string zones_text(const tangential_solution& s) {
     return text;
 }
 
+namespace {
+// Why a point carries no error estimate (contact::estimate); empty when it carries one.
+std::string no_estimate_reason(const point_report& r) {
+    if (r.estimate) return "";
+    if (!r.solution.checks.hold())
+        return "none: the checks (3.3)-(3.4) fail, so this answer is not the model's solution and no difference "
+               "between levels bounds its error";
+    return "unavailable (n/2 too coarse for the kernels, 2n above the largest n)";
+}
+}  // namespace
+
 nlohmann::json to_json(const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
@@ -63,6 +74,7 @@ nlohmann::json to_json(const point_report& r) {
         {"stick_margin", s.checks.stick_margin},
         {"slip_margin", s.checks.slip_margin},
         {"stick_margin_rounding", s.checks.stick_rounding},
+        {"slip_margin_rounding", s.checks.slip_rounding},
     };
     nlohmann::json estimate = nullptr;
     if (r.estimate)
@@ -99,6 +111,7 @@ nlohmann::json to_json(const point_report& r) {
         {"coupling", coupling},
         {"si", si},
         {"error_estimate", estimate},
+        {"error_estimate_absent", r.estimate ? nlohmann::json(nullptr) : nlohmann::json(no_estimate_reason(r))},
         {"Q", s.Q},
         {"f", s.f},
         {"c0", s.c0},
@@ -149,7 +162,7 @@ void write_summary(std::ostream& out, const point_report& r) {
             << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string())
             << ", xi " << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
     else
-        out << "  error estimate      unavailable (n/2 too coarse for the kernels, 2n above the largest n)\n";
+        out << "  error estimate      " << no_estimate_reason(r) << "\n";
     out << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "
         << shortest(s.checks.pressure_margin) << ", stick " << shortest(s.checks.stick_margin) << ", slip "
         << shortest(s.checks.slip_margin) << ")\n"
