@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/io/scene.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "aluminium_on_steel.hpp"
@@ -121,4 +122,28 @@ TEST(RefusedRows, OneParameterZoneSearchWithoutARoot) {
     EXPECT_NE(rows[1].refused.find("no root"), std::string::npos) << rows[1].refused;
     EXPECT_TRUE(std::isnan(rows[1].solution.xi));
     EXPECT_FALSE(rows[2].is_refused());
+}
+
+// A layer thickness that puts k or t of (2.11)-(2.14) beyond double precision is bad input naming its
+// file and keys (before: "H = 1e+300 m with mu0 = ... outside the range of double precision" alone,
+// from the library's conditions, with neither file nor key).
+TEST(LayerInput, ThicknessBeyondDoublePrecisionNamesFileAndKeys) {
+    for (const char* H : {"1e300", "1e-303"}) {
+        const std::string text = std::string("friction = 0.05\nQ = 0.0\nE = 210e9\nnu = 0.3\nR1 = 0.05\nR2 = 0.05\n"
+                                             "P2 = 16201.9\n"
+                                             "[cylinder1.micro_geometry]\nlambda0 = 3.7526e10\nmu0 = 2.3e10\nH = ") +
+                                 H + "\nl = 2.5e-4\nprofile = \"sine\"\ndelta = 0.0\ndecay = \"linear\"\n";
+        try {
+            (void)parse_scene(text, "layer.toml");
+            ADD_FAILURE() << "accepted H = " << H;
+        } catch (const input_error& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.rfind("layer.toml: ", 0), 0u) << what;
+            EXPECT_NE(what.find("outside the range of double precision"), std::string::npos) << what;
+            EXPECT_NE(what.find("check 'cylinder1.micro_geometry.H', 'cylinder1.micro_geometry.mu0' and "
+                                "'cylinder1.micro_geometry.lambda0'"),
+                      std::string::npos)
+                << what;
+        }
+    }
 }

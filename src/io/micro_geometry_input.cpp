@@ -92,6 +92,10 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
     } else if (table.contains("profile_csv")) {
         fail(source, quoted(key("profile_csv")) + " is not used by " + kind + " (only by \"measured\")");
     }
+    // The layer's range names neither file nor key by itself: both here, with the keys to change.
+    const std::string range = layer_range_violation(g.material);
+    if (!range.empty())
+        fail(source, range + ": check " + quoted(key("H")) + ", " + quoted(key("mu0")) + " and " + quoted(key("lambda0")));
     check_conditions(g);
     return g;
 }

@@ -267,18 +267,8 @@ void layer_violations(const layer& m, std::vector<std::string>& out) {
     positive("H", m.H);
     positive("l", m.l);
     if (!out.empty()) return;
-    // k is mu0/H to (lambda0 + 2 mu0)/H and t mu0 H to (lambda0 + 2 mu0) H, times factors of
-    // order 1 of the shapes: both must fit in double precision, with a margin of 1e3.
-    const double stiff = m.lambda0 + 2.0 * m.mu0, margin = 1e3;
-    const bool k_fits = stiff / m.H <= DBL_MAX / margin && m.mu0 / m.H >= DBL_MIN * margin;
-    const bool t_fits = stiff * m.H <= DBL_MAX / margin && m.mu0 * m.H >= DBL_MIN * margin;
-    if (!(k_fits && t_fits)) {
-        out.push_back("H = " + shortest(m.H) + " m with mu0 = " + shortest(m.mu0) + " Pa, lambda0 = " +
-                      shortest(m.lambda0) + " Pa puts " + (k_fits ? "t (mu0 H to (lambda0 + 2 mu0) H = " +
-                      shortest(m.mu0 * m.H) + " to " + shortest(stiff * m.H) + " Pa m)" : "k (mu0/H to (lambda0 + 2 mu0)/H = " +
-                      shortest(m.mu0 / m.H) + " to " + shortest(stiff / m.H) + " Pa/m)") +
-                      " outside the range of double precision (1e3 DBL_MIN to DBL_MAX/1e3)");
-    }
+    std::string range = layer_range_violation(m);
+    if (!range.empty()) out.push_back(std::move(range));
 }
 
 // 0 <= h0 < H on every sample of a measured profile, naming its line.
@@ -348,6 +338,24 @@ void profile_violations(const micro_geometry& g, std::vector<std::string>& out) 
 }
 
 }  // namespace
+
+std::string layer_range_violation(const layer& m) {
+    if (!(std::isfinite(m.lambda0) && m.lambda0 >= 0.0 && std::isfinite(m.mu0) && m.mu0 > 0.0 && std::isfinite(m.H) &&
+          m.H > 0.0))
+        return "";  // condition_violations names the invalid value
+    // k is mu0/H to (lambda0 + 2 mu0)/H and t mu0 H to (lambda0 + 2 mu0) H, times factors of
+    // order 1 of the shapes: both must fit in double precision, with a margin of 1e3.
+    const double stiff = m.lambda0 + 2.0 * m.mu0, margin = 1e3;
+    const bool k_fits = stiff / m.H <= DBL_MAX / margin && m.mu0 / m.H >= DBL_MIN * margin;
+    const bool t_fits = stiff * m.H <= DBL_MAX / margin && m.mu0 * m.H >= DBL_MIN * margin;
+    if (k_fits && t_fits) return "";
+    return "H = " + shortest(m.H) + " m with mu0 = " + shortest(m.mu0) + " Pa, lambda0 = " + shortest(m.lambda0) +
+           " Pa puts " +
+           (k_fits ? "t (mu0 H to (lambda0 + 2 mu0) H = " + shortest(m.mu0 * m.H) + " to " + shortest(stiff * m.H) + " Pa m)"
+                   : "k (mu0/H to (lambda0 + 2 mu0)/H = " + shortest(m.mu0 / m.H) + " to " + shortest(stiff / m.H) +
+                         " Pa/m)") +
+           " outside the range of double precision (1e3 DBL_MIN to DBL_MAX/1e3)";
+}
 
 std::vector<std::string> condition_violations(const micro_geometry& g) {
     std::vector<std::string> out;

@@ -168,6 +168,11 @@ std::vector<std::string> condition_violations(const micro_geometry& g);
 // Throws input_error with the first of condition_violations, if any.
 void check_conditions(const micro_geometry& g);
 
+// The layer's part of condition_violations that names no value out of range by itself: H with mu0 and
+// lambda0 putting k ~ mu0/H or t ~ mu0 H of (2.11)-(2.14) beyond double precision (a reader prefixes
+// its file and keys). Empty when they fit, or when a value is itself invalid (condition_violations).
+std::string layer_range_violation(const layer& m);
+
 // The decay conditions for any d: d(0) = 1 and d(H) = 0 to 1e-12, and d' < 0 at 1000 interior
 // points of (0, H) (a sampled check: built-in decays pass it exactly; a function given here
 // is a test's or a future user's). `name` names the decay in the messages.
