@@ -3,7 +3,8 @@
 # fenced ```cpp block of README.md, compiles it against the source tree's headers (it includes
 # only roughroll/roughroll.hpp) and the library just built, runs it on data/fig2a-T1.toml and
 # checks that its c0, xi and P_H/P2 are those of `roughroll point data/fig2a-T1.toml --json`
-# (the same build), digit for digit, and that it exits 2 with one line on a missing file.
+# (the same build), digit for digit, that the README shows that very output (the first fenced
+# block after the cpp block), and that it exits 2 with one line on a missing file.
 # Usage: readme_example.sh PROGRAM LIBRARY [CXX [CXXFLAGS]]
 #   PROGRAM   the roughroll program of the same build
 #   LIBRARY   the library file (libroughroll_core.a, or the shared one)
@@ -45,6 +46,15 @@ if ! "$dir/example" "$src/data/fig2a-T1.toml" >"$dir/out" 2>"$dir/err"; then
     fail "the example failed on data/fig2a-T1.toml: $(cat "$dir/err")"
 fi
 cat "$dir/out"
+# The README shows that output in the first fenced block after the cpp block: the same text.
+awk '/^```cpp[[:space:]]*$/ { after = 1; next } after == 1 && /^```/ { after = 2; next }
+     after == 2 && /^```/ { if (inside) exit; inside = 1; next } inside { print }' \
+    "$src/README.md" >"$dir/shown"
+if diff -u "$dir/shown" "$dir/out" >"$dir/diff"; then
+    echo "ok   the README shows this output"
+else
+    fail "the README shows another output than the example prints:"; cat "$dir/diff"
+fi
 if ! "$bin" point "$src/data/fig2a-T1.toml" --json >"$dir/json" 2>"$dir/err"; then
     fail "roughroll point --json failed: $(cat "$dir/err")"
 fi
