@@ -139,7 +139,13 @@ tangential_solution with_creep(tangential_solution t, double xi) {
 }
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
-    const scene_curve c = curve_of(std::move(s), loads, points, sweep);
+    // Ctrl-C between rows: the solve runs without the GIL, so the signal handler only sets a flag
+    // that PyErr_CheckSignals reads (with the GIL); a KeyboardInterrupt ends the curve there.
+    const auto interrupted = [] {
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    };
+    const scene_curve c = curve_of(std::move(s), loads, points, sweep, interrupted);
     curve_columns out;
     out.physical = c.settled.physical.has_value();
     const double nan = std::nan("");

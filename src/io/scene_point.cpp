@@ -81,12 +81,13 @@ scene_point solve_point(scene s, std::optional<double> Q_option) {
     return {std::move(s), width, std::move(c), solution, seconds, estimate};
 }
 
-scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
+scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
+                     const std::function<void()>& before_row) {
     const std::vector<double> Qs = loads ? *loads : curve_loads(points, s.friction, s.materials.beta_d);
     if (!width_follows_tangential_load(s)) {
         const std::optional<contact_width> width = settle_width(s);
         contact c(s.surfaces, s.friction, s.solver, s.materials);
-        std::vector<curve_point> rows = sweep ? swept_curve(c, points) : creep_curve(c, Qs);
+        std::vector<curve_point> rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, Qs, before_row);
         std::vector<contact_width> widths;
         if (width) widths.assign(rows.size(), *width);
         return {std::move(s), std::move(rows), std::move(widths)};
@@ -99,6 +100,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
     const contact_width johnson_width = *settle_width(johnson);
     scene_curve out{s, {}, {}};
     for (const double Q : Qs) {
+        if (before_row) before_row();
         scene at = s;
         normal_cache cache;
         try {

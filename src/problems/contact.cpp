@@ -893,7 +893,7 @@ std::vector<double> curve_loads(int points, double f, double beta_d) {
     return loads;
 }
 
-std::vector<curve_point> swept_curve(contact& c, int points) {
+std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row) {
     check_curve_points(points);
     std::vector<curve_point> rows;
     rows.reserve(points);
@@ -901,6 +901,7 @@ std::vector<curve_point> swept_curve(contact& c, int points) {
         // rho = (1 + c0)/2 uniform from 1 to 0: Carter's Q/f = 1 - rho^2, the loads of curve_loads.
         const double rho = 1.0 - static_cast<double>(i) / (points - 1);
         const double c0 = i + 1 == points ? -1.0 : 2.0 * rho - 1.0;
+        if (before_row) before_row();
         try {
             contact::swept_point p = c.at_stick_end(c0);
             const carter_point smooth = carter(p.solution.Q, c.friction());
@@ -912,10 +913,12 @@ std::vector<curve_point> swept_curve(contact& c, int points) {
     return rows;
 }
 
-std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads) {
+std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
+                                     const std::function<void()>& before_row) {
     std::vector<curve_point> rows;
     rows.reserve(loads.size());
     for (double Q : loads) {
+        if (before_row) before_row();
         try {
             tangential_solution s = c.point(Q);
             const auto e = c.estimate(s);

@@ -4,6 +4,7 @@
 // error estimate and its SI units. One implementation, so that both print the same numbers.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,8 @@ struct scene_curve {
 // (width_follows_tangential_load), a width per row, settled at the row's load. A row whose width
 // search is refused (resolution_error) is a refused row; its width is Johnson's level's, which
 // carries the same load P2 (a refused row reports only P1 and Carter's creep: both depend on P2 alone).
-scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep);
+// `before_row`: as creep_curve's, called before each row.
+scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
+                     const std::function<void()>& before_row = {});
 
 }  // namespace roughroll

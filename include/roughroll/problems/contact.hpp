@@ -19,6 +19,7 @@
 
 #include <memory>
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -264,7 +265,10 @@ std::vector<double> curve_loads(int points, double f);
 // docs/formulation.md 8(h)).
 std::vector<double> curve_loads(int points, double f, double beta_d);
 
-std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads);
+// `before_row`, when set, is called before each row: a caller's hook between rows (the Python
+// module checks for Ctrl-C there); what it throws ends the curve.
+std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
+                                     const std::function<void()>& before_row = {});
 // The row of creep_curve for a load Q refused by `why`.
 curve_point refused_load(double Q, double f, const resolution_error& why);
 
@@ -273,6 +277,6 @@ void check_sweepable(const dissimilar& materials);
 
 // A creep curve swept in c0 from 1 to -1 (rho = (1 + c0)/2 uniform): one linear solve per
 // point, no root search; the loads are Q(c0), dense near f as in curve_loads.
-std::vector<curve_point> swept_curve(contact& c, int points);
+std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {});
 
 }  // namespace roughroll
