@@ -1,8 +1,11 @@
 // Subcommands of the CLI that live in their own files, and the scene options they share.
 #pragma once
 
+#include <filesystem>
 #include <optional>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -26,6 +29,15 @@ struct scene_options {
 };
 
 void add_scene_options(CLI::App* cmd, scene_options& o);
+// The overrides alone (--n, --method, --zones, --friction), for a command with its own SCENE.
+void add_scene_overrides(CLI::App* cmd, scene_options& o);
+
+// --progress and --quiet of the commands that work long (set_progress, output_files.hpp).
+struct progress_options {
+    bool shown = false;  // --progress: progress lines even when stderr is not a terminal
+    bool quiet = false;  // --quiet: none
+};
+void add_progress_options(CLI::App* cmd, progress_options& o);
 
 // Numeric options read by the one rule of text.hpp: an empty value, trailing text or a
 // literal that underflows (1e-400) is a parse error naming the option; CLI11's own
@@ -40,6 +52,23 @@ std::string dump(const nlohmann::json& j);
 scene load_scene(const scene_options& o);  // the file, with the command line's overrides
 
 // settle_width and si_of, shared with the Python module: roughroll/io/scene_point.hpp.
+
+// One scene's curve in `roughroll curve --plot` (figure.cpp).
+struct curve_plot_scene {
+    std::filesystem::path csv;  // its CSV, beside the script
+    std::string title;          // the scene's label, or its file name
+    double friction = 0.0;
+    bool physical = false;      // the CSV has P1_N_per_m, xi1, xi1_carter
+    bool swept = false;         // loads Q(c0): a refused row has no load to place it at
+    bool two_sided = false;     // loads from -f to f (beta_d != 0)
+    int refused = 0;            // refused rows
+};
+
+// The gnuplot script of `roughroll curve --plot`: xi/f against Q/f of every scene over Carter's
+// smooth curve, refused rows as ticks on the Q/f axis (or a note where they have no load), and
+// for physical scenes a second panel xi1 against P1 in N/mm with each scene's smooth rollers.
+void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem,
+                         const std::vector<curve_plot_scene>& scenes);
 
 struct figure_options {
     std::string which;      // "2a" or "2b"

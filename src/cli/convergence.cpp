@@ -88,10 +88,12 @@ int run_convergence(const convergence_options& o) {
         throw input_error("the scene is smooth (no roughness term" + std::string(s.physical ? " at its width" : "") +
                           "): every method gives Carter's closed form exactly at every n, nothing to converge");
 
+    progress("convergence: the reference, extrapolated at n = 512");
     const values ref = solve_point(s, Q, 512, method::extrapolated);
     std::printf("reference (extrapolated, n = 512): P_H/P2 = %.15g, c0 = %.15g, xi = %.15g\n", ref.lambda, ref.c0,
                 ref.xi);
     try {
+        progress("convergence: the independent check, the paper's scheme at n = 300 and 600");
         const values a = solve_point(s, Q, 300, method::paper), b = solve_point(s, Q, 600, method::paper);
         auto r2 = [](double coarse, double fine) { return (4.0 * fine - coarse) / 3.0; };
         std::printf("independent check (paper scheme, 300 and 600, extrapolated for order 2): relative differences "
@@ -109,6 +111,7 @@ int run_convergence(const convergence_options& o) {
     for (method how : {method::paper, method::product, method::extrapolated}) {
         for (int n : ladder) {
             measurement m{};
+            progress("convergence: " + to_string(how) + ", n = " + std::to_string(n));
             try {
                 m = measure(s, Q, n, how);
             } catch (const resolution_error&) {
@@ -138,7 +141,9 @@ int run_convergence(const convergence_options& o) {
 
     std::ostream& gp = script_file.stream();
     gp << gnuplot_output_stem(stem) << "set datafile separator ','\nset logscale xy\nset grid\nset key top right box opaque\n"
-       << "set format y '10^{%L}'\n"
+       // Powers of ten on both axes (the default printed 0.000010 ... 10.00000, the last one
+       // cut at the right edge, which the right margin now leaves room for).
+       << "set format x '10^{%L}'\nset format y '10^{%L}'\nset rmargin 5\n"
        << "set xlabel 'run time of one point (s): normal solve, Brent search for c_0, checks'\n"
        << "set ylabel 'largest error in P_H/P_2, c_0, {/Symbol x} (relative; c_0 absolute)'\n"
        << "set title 'Error against run time: " << gnuplot_path(name) << ", Q = " << shortest(Q) << "' noenhanced\n";
@@ -148,7 +153,7 @@ int run_convergence(const convergence_options& o) {
         gp << "set terminal " << t[0] << "\nset output out.'" << t[1] << "'\nplot ";
         const char* sep = "";
         for (method how : {method::paper, method::product, method::extrapolated}) {
-            gp << sep << "'" << gnuplot_path(csv) << "' using 3:(strcol(1) eq '" << to_string(how)
+            gp << sep << "'" << gnuplot_path(csv.filename()) << "' using 3:(strcol(1) eq '" << to_string(how)
                << "' ? $7 : NaN) with linespoints lw 2 pt 7 title '" << to_string(how) << "'";
             sep = ", \\\n     ";
         }

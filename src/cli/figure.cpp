@@ -87,6 +87,8 @@ void write_table(output_file& file, const std::string& which, const std::vector<
         md << "| " << c.legend << " |";
         std::vector<std::pair<double, std::optional<double>>> xi;
         for (double r : ratios) {
+            progress("Fig. " + which + " table: " + one_line(c.legend) + ", Q/f = " + shortest(r) +
+                     " with its error estimate");
             const tangential_solution s = problem.point(r * figure_friction);
             const auto e = problem.estimate(s);
             if (e) lambda_estimate = e->lambda;
@@ -105,7 +107,7 @@ void write_gnuplot(output_file& script, const std::filesystem::path& csv, const 
     std::ostream& gp = script.stream();
     gp << gnuplot_output_stem(stem) << "# Fig. " << which << " of Pauk & Wozniak, written by roughroll figure " << which << "\n"
        << "set datafile separator ','\n"
-       << "set key top left box opaque font ',10'\n"
+       << "set key top left box opaque spacing 1.15\n"  // the ticks' font: readable
        << "set grid\n"
        << "set xlabel 'Q/f = P_1/(f P_2)  (dimensionless)'\n"
        << "set ylabel '{/Symbol x}/f  (dimensionless creep / f)'\n"
@@ -113,16 +115,17 @@ void write_gnuplot(output_file& script, const std::filesystem::path& csv, const 
        << "set title 'Fig. " << which << ": creep force-creep curves, second cylinder smooth'\n";
     const char* terminals[][2] = {{"svg size 900,640 enhanced font 'Helvetica,13'", ".svg"},
                                   {"pngcairo size 1200,850 enhanced font 'Helvetica,13'", ".png"}};
+    const std::string data = "'" + gnuplot_path(csv.filename()) + "'";  // beside the script
     for (const auto& t : terminals) {
         gp << "set terminal " << t[0] << "\n"
-           << "set output out.'" << t[1] << "'\n"
-           << "plot '" << gnuplot_path(csv) << "' using 2:3 with lines lw 2 title '" << curves[0].legend << "'";
-        for (std::size_t i = 1; i < curves.size(); ++i)
-            gp << ", \\\n     '' using " << 2 + 2 * i << ":" << 3 + 2 * i << " with lines lw 2 title '"
-               << curves[i].legend << "'";
-        // Carter last and dashed, so that a curve lying on it (T = 0) stays visible.
-        gp << ", \\\n     '' using " << 2 + 2 * curves.size() << ":" << 3 + 2 * curves.size()
-           << " with lines lw 1.5 dt 2 lc rgb 'black' title 'Carter (smooth cylinders)'";
+           << "set output out.'" << t[1] << "'\n";
+        // Carter first, wide and light: curve 1 (T = 0) lies on it and stays visible on top.
+        gp << "plot " << data << " using " << 2 + 2 * curves.size() << ":" << 3 + 2 * curves.size()
+           << " with lines lw 7 lc rgb '#c4c4c4' title 'Carter (smooth cylinders)'";
+        const char* dash[] = {"", " dt 2", " dt 4"};
+        for (std::size_t i = 0; i < curves.size(); ++i)
+            gp << ", \\\n     '' using " << 2 + 2 * i << ":" << 3 + 2 * i << " with lines lw 2.5" << dash[i % 3]
+               << " title '" << curves[i].legend << "'";
         gp << "\n";
     }
     gp << "unset output\n";
@@ -161,6 +164,7 @@ int run_figure(const figure_options& o) {
     // Carter's share the c0 grid, each has its own loads Q(c0).
     std::vector<std::vector<curve_point>> results;
     for (const auto& c : curves) {
+        progress("Fig. " + o.which + ": " + one_line(c.legend) + ": " + std::to_string(o.points) + " points swept in c0");
         contact problem(c.surfaces, figure_friction, options);
         results.push_back(swept_curve(problem, o.points));
         // A figure is a reproduction, whole or not at all: a refused point aborts it (exit 2),
@@ -196,6 +200,113 @@ int run_figure(const figure_options& o) {
     if (!o.plot) return 0;
     run_gnuplot(stem.string() + ".gp", stem, {".svg", ".png"});
     return 0;
+}
+
+// --- roughroll curve --plot ---------------------------------------------------------------
+
+namespace {
+
+const char* const palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+
+// The plot commands of one scene in one panel: its curve (solved rows only), and its refused
+// rows as ticks on the x axis (the y2 axis spans [0, 1]: ticks 6 % of the panel high), or, on
+// a curve swept in c0 (a refused row has no load there), a note in the key.
+void scene_curves(std::ostream& gp, const curve_plot_scene& s, const std::string& colour, const std::string& x,
+                  const std::string& y, bool named, const char*& sep) {
+    const std::string data = "'" + gnuplot_path(s.csv.filename()) + "'";
+    gp << sep << data << " using " << x << ":(strcol('status') eq 'ok' ? " << y
+       << " : NaN) with linespoints lw 2.5 pt 7 ps 0.55 lc rgb '" << colour << "' title \"" << gnuplot_text(s.title)
+       << "\"";
+    sep = ", \\\n     ";
+    if (s.refused == 0) return;
+    // Short: the key must fit under a panel (the reasons are the program's stderr lines).
+    const std::string note = (named ? gnuplot_text(s.title) + ": " : std::string()) + std::to_string(s.refused) +
+                             " refused row" + (s.refused == 1 ? "" : "s");
+    if (s.swept)
+        gp << sep << "NaN with lines lw 0 lc rgb '#ffffff' title \"" << note << " (no load to place them)\"";
+    else
+        gp << sep << data << " using " << x << ":(strcol('status') eq 'refused' ? 0 : NaN):(0):(0.06) axes x1y2 "
+           << "with vectors nohead lw 3 lc rgb '" << colour << "' title \"" << note << " (ticks at their load)\"";
+}
+
+}  // namespace
+
+void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, const std::vector<curve_plot_scene>& scenes) {
+    bool physical = false, two_sided = false;
+    for (const auto& s : scenes) {
+        physical = physical || s.physical;
+        two_sided = two_sided || s.two_sided;
+    }
+    // The keys' lines (a refused row adds a line to its scene): both panels get the bottom
+    // margin of the longer key, so that their frames line up.
+    int rows1 = 1, rows2 = 0, physical_scenes = 0;
+    for (const auto& s : scenes) {
+        rows1 += 1 + (s.refused > 0);
+        if (s.physical) {
+            rows2 += 2 + (s.refused > 0);
+            ++physical_scenes;
+        }
+    }
+    const double bottom = 0.11 + 0.034 * std::max(rows1, rows2);
+    const std::string title = scenes.size() == 1 ? "Creep curve: " + gnuplot_text(scenes[0].title) : "Creep curves";
+    gp << "# Creep curves, written by roughroll curve --plot. Data: the CSVs beside this script\n"
+       << "# (solved rows: status ok; refused rows: ticks on the load axis).\n"
+       << gnuplot_output_stem(stem)
+       << "set datafile separator ','\n"
+       << "set datafile columnheaders  # the CSV's header row names the columns (its # lines are skipped)\n"
+       << "# Carter's smooth rollers (Johnson, Contact Mechanics 8.4): xi/f = (2/pi)(1 - sqrt(1 - Q/f)), odd in Q.\n"
+       << "carter(q) = sgn(q) * 2/pi * (1 - sqrt(1 - abs(q)))\n"
+       << "set samples 600\n"
+       << "set grid back lc rgb '#d8d8d8'\n"
+       << "set border lw 1.2\n"
+       << "set y2range [0:1]\nunset y2tics\n"
+       // The key's font as the ticks' (the terminal's): readable at the size the figure is seen.
+       // below the panel: long scene labels hide no curve; one entry a line, text after its sample.
+       // (width -6: the SVG terminal overestimates the width of escaped text and warns that a
+       // title does not fit where the PNG shows it fitting with room to spare).
+       << "set key below box Left reverse spacing 1.15 samplen 2.5 maxcols 1 width -6\n";
+    const char* terminals[][2] = {
+        // The SVG as the PNG (the two-panel keys need the width: gnuplot warns when a title does not fit).
+        {physical ? "svg size 1800,820 enhanced font 'Helvetica,15' background '#ffffff'"
+                  : "svg size 1100,830 enhanced font 'Helvetica,15' background '#ffffff'", ".svg"},
+        {physical ? "pngcairo size 1800,820 enhanced font 'Helvetica,15'" : "pngcairo size 1100,830 enhanced font 'Helvetica,15'",
+         ".png"}};
+    for (const auto& t : terminals) {
+        gp << "\nset terminal " << t[0] << "\nset output out.'" << t[1] << "'\n";
+        gp << "set multiplot layout 1," << (physical ? 2 : 1) << " title \"" << title << "\"\n";
+        gp << "set tmargin at screen 0.88\nset bmargin at screen " << shortest(bottom) << "\n";
+        // Panel 1: dimensionless, Carter's curve under the scenes' (wide and light, so that a
+        // curve lying on it stays visible).
+        gp << "set xlabel 'Q/f = P_1/(f P_2)'\nset ylabel '{/Symbol x}/f   (creep / friction coefficient)'\n"
+           << "set format y '%g'\n"
+           << "set xrange [" << (two_sided ? "-1" : "0") << ":1]\nset yrange [" << (two_sided ? "*" : "0") << ":*]\n"
+           << (physical ? "set title 'dimensionless'\n" : "unset title\n")
+           << "plot carter(x) with lines lw 7 lc rgb '#c4c4c4' title 'Carter: smooth rollers'";
+        const char* sep = ", \\\n     ";
+        for (std::size_t k = 0; k < scenes.size(); ++k)
+            scene_curves(gp, scenes[k], palette[k % std::size(palette)], "(column('Q_over_f'))",
+                         "column('xi_over_f')", scenes.size() > 1, sep);
+        gp << "\n";
+        if (physical) {
+            // Panel 2: the physical scenes in N/mm and creep, each over its own smooth rollers
+            // (Carter's xi1 at the same P1: the width, radii and moduli of the scene).
+            gp << "set xlabel 'P_1  (N/mm)'\nset ylabel 'creep {/Symbol x}_1'\nset format y '%h'\n"
+               << "set xrange [*:*]\nset yrange [*:*]\nset title 'physical scenes, SI units'\nplot ";
+            const char* sep2 = "";
+            for (std::size_t k = 0; k < scenes.size(); ++k) {
+                if (!scenes[k].physical) continue;
+                const std::string colour = palette[k % std::size(palette)];
+                gp << sep2 << "'" << gnuplot_path(scenes[k].csv.filename())
+                   << "' using (column('P1_N_per_m')/1000):(column('xi1_carter')) with lines lw 2 dt 2 lc rgb '" << colour
+                   << "' title \"the same rollers smooth (Carter)"
+                   << (physical_scenes > 1 ? ": " + gnuplot_text(scenes[k].title) : std::string()) << "\"";
+                sep2 = ", \\\n     ";
+                scene_curves(gp, scenes[k], colour, "(column('P1_N_per_m')/1000)", "column('xi1')", scenes.size() > 1, sep2);
+            }
+            gp << "\n";
+        }
+        gp << "unset multiplot\nset output\n";
+    }
 }
 
 }  // namespace roughroll::cli

@@ -1,6 +1,14 @@
 // The roughroll command line: scene files in, creep points, curves and figures out.
 // Exit status: 0 success, 2 invalid input or a case beyond reach (one line on stderr).
+#include <unistd.h>
+
+#include <algorithm>
 #include <charconv>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <memory>
+#include <sstream>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -43,28 +51,47 @@ double number_option(const std::string& name, const std::string& text) {
 }
 }  // namespace
 
+// The options of a plain value show it as their default in --help (a function option has no
+// variable for CLI11 to capture it from).
 CLI::Option* add_number(CLI::App* cmd, const std::string& name, double& value, const std::string& help) {
     return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help);
+        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help)
+        ->type_name("NUMBER")
+        ->default_str(shortest(value));
 }
 
 CLI::Option* add_number(CLI::App* cmd, const std::string& name, std::optional<double>& value, const std::string& help) {
     return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help);
+        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help)
+        ->type_name("NUMBER");
 }
 
 CLI::Option* add_integer(CLI::App* cmd, const std::string& name, std::optional<int>& value, const std::string& help) {
     return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help);
+        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help)
+        ->type_name("INT");
 }
 
 CLI::Option* add_integer(CLI::App* cmd, const std::string& name, int& value, const std::string& help) {
     return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help);
+        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help)
+        ->type_name("INT")
+        ->default_str(std::to_string(value));
+}
+
+void add_progress_options(CLI::App* cmd, progress_options& o) {
+    CLI::Option* shown = cmd->add_flag("--progress", o.shown,
+                                       "one line per point, row or level on stderr even when stderr is not a terminal");
+    cmd->add_flag("--quiet", o.quiet, "no progress lines (they are shown by default when stderr is a terminal)")
+        ->excludes(shown);
 }
 
 void add_scene_options(CLI::App* cmd, scene_options& o) {
     cmd->add_option("SCENE", o.path, "scene file (TOML)")->required();
+    add_scene_overrides(cmd, o);
+}
+
+void add_scene_overrides(CLI::App* cmd, scene_options& o) {
     add_integer(cmd, "--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
     cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
     cmd->add_option("--zones", o.zones_name, "auto, single or general: how the stick and slip zones are found "
@@ -94,7 +121,15 @@ int report(const char* kind, const std::string& message, int status) {
 constexpr int partial_output = 3;
 
 int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
-    const scene_point p = solve_point(load_scene(o), Q_option);
+    scene s = load_scene(o);
+    const std::string name = std::filesystem::path(o.path).filename().string();
+    progress(name + ": solving the point" + (s.physical ? " (its contact width first)" : ""));
+    const auto start = std::chrono::steady_clock::now();
+    const scene_point p = solve_point(std::move(s), Q_option);
+    std::ostringstream line;
+    line << name << ": solved in " << std::setprecision(3)
+         << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s";
+    progress(line.str());
     if (json)
         std::cout << dump(to_json(p.report())) << "\n";
     else
@@ -102,24 +137,162 @@ int run_point(const scene_options& o, std::optional<double> Q_option, bool json)
     return 0;
 }
 
-int run_curve(const scene_options& o, int points, bool sweep, const std::string& csv) {
-    scene s = load_scene(o);
-    // The output, checked and opened before any work; written whole or not at all.
-    std::optional<output_file> file;
-    if (!csv.empty()) file.emplace(csv, s.files);
-    const curve_header header{o.path, s.label, s.friction, s.solver, sweep, s.physical.has_value()};
-    const scene_curve c = curve_of(std::move(s), std::nullopt, points, sweep);
-    const std::vector<curve_point>& curve = c.rows;
-    std::optional<si_context> si;
-    if (c.settled.physical) si = si_context{*c.settled.physical, c.widths};
-    std::ostream& out = file ? file->stream() : std::cout;
-    write_curve_header(out, header);
-    write_curve_csv(out, curve, si);
-    if (file) file->commit();
-    // Each refused point on stderr, once the curve is written (curve_point, contact.hpp).
+// x with `digits` significant digits: a progress line's value, not a result.
+std::string number_text(double x, int digits) {
+    std::ostringstream s;
+    s << std::setprecision(digits) << x;
+    return s.str();
+}
+
+// curve_of with one progress line per row. Without progress it is curve_of itself; with it,
+// curve_of's own steps a row at a time: creep_curve solves its loads one by one on one
+// contact, in order, so the rows are the same numbers (tests/cli_curve_plot.sh compares the CSVs).
+scene_curve curve_with_progress(scene s, int points, bool sweep, const std::string& name) {
+    if (!progress_shown()) return curve_of(std::move(s), std::nullopt, points, sweep);
+    const auto start = std::chrono::steady_clock::now();
+    const auto seconds = [&start]() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    const auto row_line = [&](std::size_t i, std::size_t count, const curve_point& row) {
+        const tangential_solution& t = row.solution;
+        std::ostringstream line;
+        line << name << ": row " << i + 1 << "/" << count << ", Q/f = " << std::setprecision(4) << t.Q / t.f << ": "
+             << (row.is_refused() ? std::string("refused") : "xi/f = " + number_text(t.xi / t.f, 4)) << " ("
+             << std::setprecision(3) << seconds() << " s so far)";
+        progress(line.str());
+    };
+    if (sweep) {  // one linear solve per point, the whole sweep in one call (swept_curve)
+        progress(name + ": " + std::to_string(points) + " points swept in c0");
+        scene_curve c = curve_of(std::move(s), std::nullopt, points, sweep);
+        std::ostringstream line;
+        line << name << ": swept, " << std::setprecision(3) << seconds() << " s";
+        progress(line.str());
+        return c;
+    }
+    const std::vector<double> Qs = curve_loads(points, s.friction, s.materials.beta_d);
+    if (width_follows_tangential_load(s)) {
+        // curve_of settles a width per row there: one load at a time is the same work.
+        scene_curve out{s, {}, {}};
+        for (std::size_t i = 0; i < Qs.size(); ++i) {
+            scene_curve one = curve_of(s, std::vector<double>{Qs[i]}, 1, false);
+            row_line(i, Qs.size(), one.rows.front());
+            if (!one.rows.front().is_refused()) out.settled = std::move(one.settled);
+            out.rows.push_back(std::move(one.rows.front()));
+            out.widths.push_back(one.widths.front());
+        }
+        return out;
+    }
+    progress(name + ": " + std::to_string(Qs.size()) + " loads" + (s.physical ? ", contact width first" : ""));
+    const std::optional<contact_width> width = settle_width(s);
+    contact c(s.surfaces, s.friction, s.solver, s.materials);
+    std::vector<curve_point> rows;
+    for (std::size_t i = 0; i < Qs.size(); ++i) {
+        rows.push_back(std::move(creep_curve(c, {Qs[i]}).front()));
+        row_line(i, Qs.size(), rows.back());
+    }
+    std::vector<contact_width> widths;
+    if (width) widths.assign(rows.size(), *width);
+    return {std::move(s), std::move(rows), std::move(widths)};
+}
+
+struct curve_options {
+    scene_options scene;               // the overrides; scene.path unused
+    std::vector<std::string> paths;    // one scene, or several overlaid in one plot
+    int points = 51;
+    bool sweep = false;
+    std::string csv;
+    bool plot = false;
+};
+
+// The CSV of each scene: --csv itself for one scene; for several, FILE's stem-SCENE.csv beside it.
+std::vector<std::filesystem::path> curve_csv_paths(const curve_options& o) {
+    namespace fs = std::filesystem;
+    if (o.paths.size() == 1) return {fs::path(o.csv)};
+    const fs::path csv(o.csv);
+    const fs::path stem = csv.extension() == ".csv" ? fs::path(csv).replace_extension() : csv;
+    std::vector<fs::path> out;
+    for (const std::string& p : o.paths) {
+        const fs::path one = stem.string() + "-" + fs::path(p).stem().string() + ".csv";
+        if (std::find(out.begin(), out.end(), one) != out.end())
+            throw input_error("two scenes are named '" + echo(fs::path(p).stem().string()) +
+                              "': their CSVs would be the same file " + "'" + echo(one.string()) + "'");
+        out.push_back(one);
+    }
+    return out;
+}
+
+int run_curve(const curve_options& o) {
+    namespace fs = std::filesystem;
+    if (o.plot && o.csv.empty())
+        throw input_error("--plot needs --csv FILE: the plot is written beside the CSV (FILE's stem .gp, .svg, .png)");
+    if (o.paths.size() > 1 && o.csv.empty())
+        throw input_error("several scenes need --csv FILE: each scene's curve goes to FILE's stem-SCENE.csv");
+    // Every scene read and every output checked and opened before any work; written whole or not at all.
+    std::vector<scene> scenes;
+    std::vector<std::string> inputs;
+    for (const std::string& path : o.paths) {
+        scene_options so = o.scene;
+        so.path = path;
+        scenes.push_back(load_scene(so));
+        inputs.insert(inputs.end(), scenes.back().files.begin(), scenes.back().files.end());
+        if (o.sweep) check_sweepable(scenes.back().materials);
+    }
+    std::vector<fs::path> csv_paths;
+    std::vector<std::unique_ptr<output_file>> files;
+    if (!o.csv.empty()) {
+        csv_paths = curve_csv_paths(o);
+        for (const fs::path& p : csv_paths) files.push_back(std::make_unique<output_file>(p, inputs));
+    }
+    // The plot beside the CSV: FILE.csv -> FILE.gp, FILE.svg, FILE.png.
+    fs::path stem;
+    std::unique_ptr<output_file> script;
+    if (o.plot) {
+        const fs::path csv(o.csv);
+        stem = csv.extension() == ".csv" ? fs::path(csv).replace_extension() : csv;
+        const fs::path gp = stem.string() + ".gp";
+        if (std::find(csv_paths.begin(), csv_paths.end(), gp) != csv_paths.end())
+            throw input_error("--csv '" + echo(o.csv) + "' is the plot's script: name the CSV FILE.csv");
+        std::vector<std::string> taken = inputs;
+        for (const fs::path& p : csv_paths) taken.push_back(p.string());
+        script = std::make_unique<output_file>(gp, taken);
+        for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, taken);
+    }
+
+    std::vector<curve_plot_scene> plotted;
+    std::vector<std::vector<curve_point>> all_rows;
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+        scene& s = scenes[k];
+        const std::string& path = o.paths[k];
+        const curve_header header{path, s.label, s.friction, s.solver, o.sweep, s.physical.has_value()};
+        curve_plot_scene facts;
+        facts.csv = csv_paths.empty() ? fs::path() : csv_paths[k];
+        facts.title = s.label.empty() ? fs::path(path).filename().string() : s.label;
+        facts.friction = s.friction;
+        facts.physical = s.physical.has_value();
+        facts.swept = o.sweep;
+        facts.two_sided = s.materials.beta_d != 0.0;
+        const scene_curve c = curve_with_progress(std::move(s), o.points, o.sweep, fs::path(path).filename().string());
+        std::optional<si_context> si;
+        if (c.settled.physical) si = si_context{*c.settled.physical, c.widths};
+        std::ostream& out = files.empty() ? std::cout : files[k]->stream();
+        write_curve_header(out, header);
+        write_curve_csv(out, c.rows, si);
+        for (const curve_point& row : c.rows)
+            if (row.is_refused()) ++facts.refused;
+        plotted.push_back(facts);
+        all_rows.push_back(c.rows);
+    }
+    for (auto& file : files) file->commit();
+    if (o.plot) {
+        write_curve_gnuplot(script->stream(), stem, plotted);
+        script->commit();
+        run_gnuplot(stem.string() + ".gp", stem, {".svg", ".png"});
+    }
+    // Each refused point on stderr, once the curves are written (curve_point, contact.hpp).
     int status = 0;
-    for (const curve_point& row : curve)
-        if (row.is_refused()) status = report("refused", row.refused, partial_output);
+    for (const auto& rows : all_rows)
+        for (const curve_point& row : rows)
+            if (row.is_refused()) status = report("refused", row.refused, partial_output);
     return status;
 }
 
@@ -137,6 +310,8 @@ int main(int argc, char** argv) {
                  "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach (nothing written);\n"
                  "3: a curve written with refused points (rows with status 'refused', one stderr line each)."};
     app.require_subcommand(1);
+    // Every option's default in --help (subcommands inherit this; function options set theirs).
+    app.option_defaults()->always_capture_default();
     // "roughroll X.Y.Z" on stdout, exit 0, as GNU programs print it.
     app.set_version_flag("--version", std::string("roughroll ") + version(), "print roughroll's version and exit");
 
@@ -148,17 +323,22 @@ int main(int argc, char** argv) {
     add_number(point, "--Q", Q, "tangential load P1/P2 (overrides the scene's Q)");
     point->add_flag("--json", json, "one JSON object on stdout");
 
-    scene_options curve_scene;
-    int points = 51;
-    std::string csv;
-    CLI::App* curve = app.add_subcommand("curve", "a creep curve, Q/f from 0 to 1 (-1 to 1 for beta_d != 0), as CSV");
-    add_scene_options(curve, curve_scene);
-    add_integer(curve, "--points", points, "number of loads (Q/f dense near 1)");
-    curve->add_option("--csv", csv, "output file (default: stdout)");
-    bool sweep = false;
-    curve->add_flag("--sweep", sweep,
+    curve_options curve_o;
+    CLI::App* curve = app.add_subcommand(
+        "curve", "a creep curve, Q/f from 0 to 1 (-1 to 1 for beta_d != 0), as CSV; with --plot, its figure "
+                 "(several scenes: their curves overlaid)");
+    curve->add_option("SCENE", curve_o.paths, "scene file(s) (TOML); several need --csv")
+        ->required()
+        ->default_str("");  // no default to show (the captured one is "[]")
+    add_scene_overrides(curve, curve_o.scene);
+    add_integer(curve, "--points", curve_o.points, "number of loads (Q/f dense near 1)");
+    curve->add_option("--csv", curve_o.csv, "output file (default: stdout); several scenes: FILE's stem-SCENE.csv");
+    curve->add_flag("--sweep", curve_o.sweep,
                     "sweep the stick-zone end c0 instead of solving for given loads: one linear solve per point, "
                     "no root search, loads Q(c0)");
+    curve->add_flag("--plot", curve_o.plot,
+                    "xi/f against Q/f with Carter's curve (physical scenes also xi1 against P1) as gnuplot script, "
+                    "SVG and PNG beside the CSV");
 
     figure_options fig;
     CLI::App* figure = app.add_subcommand("figure", "reproduce the paper's Fig. 2a or 2b (CSV, SVG, PNG)");
@@ -179,6 +359,9 @@ int main(int argc, char** argv) {
         app.add_subcommand("roughness", "roughness parameters k, t, alpha (2.11)-(2.15) from a micro-geometry spec");
     add_roughness_options(roughness_cmd, rough);
 
+    progress_options progress_o;
+    for (CLI::App* cmd : {point, curve, figure, traction, convergence}) add_progress_options(cmd, progress_o);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -186,10 +369,14 @@ int main(int argc, char** argv) {
         return report("error", e.what(), 2);
     }
 
+    // Progress on a terminal's stderr, or wherever with --progress; never with --quiet: a
+    // script's or a test's stderr holds only the errors (one line per bad input).
+    set_progress(!progress_o.quiet && (progress_o.shown || ::isatty(STDERR_FILENO) == 1));
+
     try {
         int status = 2;
         if (*point) status = run_point(point_scene, Q, json);
-        else if (*curve) status = run_curve(curve_scene, points, sweep, csv);
+        else if (*curve) status = run_curve(curve_o);
         else if (*figure) status = run_figure(fig);
         else if (*convergence) status = run_convergence(conv);
         else if (*traction) status = run_traction(trac);

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <string_view>
 #include <system_error>
 
 #include "roughroll/base/error.hpp"
@@ -204,15 +205,50 @@ std::string gnuplot_path(const fs::path& p) {
     return out;
 }
 
+std::string gnuplot_text(const std::string& text) {
+    std::string out;
+    for (const char c : one_line(text)) {
+        if (c == '`') {
+            out += "\\140";
+        } else if (c == '"') {
+            out += "\\\"";
+        } else if (c == '\\') {
+            out += "\\\\\\\\";
+        } else {
+            if (std::string_view("^_@&~{}").find(c) != std::string_view::npos) out += "\\\\";
+            out += c;
+        }
+    }
+    return out;
+}
+
+
 std::string gnuplot_output_stem(const fs::path& stem) {
-    return "# The images are out.svg and out.png; gnuplot -e \"out='OTHER'\" writes OTHER.svg, OTHER.png.\n"
-           "if (!exists(\"out\")) out = '" + gnuplot_path(stem) + "'\n";
+    const std::string name = stem.filename().string();
+    return "# Paths are relative to this script's folder: re-plot with  cd FOLDER && gnuplot " + name + ".gp\n"
+           "# The images are out.svg and out.png; gnuplot -e \"out='OTHER'\" writes OTHER.svg, OTHER.png.\n"
+           "if (!exists(\"out\")) out = '" + gnuplot_path(name) + "'\n";
+}
+
+namespace {
+bool progress_on = false;
+}
+
+void set_progress(bool on) { progress_on = on; }
+
+bool progress_shown() { return progress_on; }
+
+void progress(const std::string& line) {
+    if (!progress_on) return;
+    // Unbuffered stderr, one whole line per call: it is seen as the work goes on.
+    std::cerr << "roughroll: " << echo(line, 300) << std::endl;
 }
 
 void run_gnuplot(const fs::path& script, const fs::path& stem, const std::vector<std::string>& extensions) {
     int error = 0;
     fs::path temporary;
-    const int fd = new_temporary(stem, temporary, error);
+    // Absolute: gnuplot runs in the script's folder, where its relative paths point.
+    const int fd = new_temporary(fs::absolute(stem), temporary, error);
     if (fd >= 0) ::close(fd);
     if (fd < 0) throw input_error("cannot write " + in_quotes(stem.string() + extensions.front()) + ": " + reason(error));
     std::vector<fs::path> images;
@@ -223,8 +259,10 @@ void run_gnuplot(const fs::path& script, const fs::path& stem, const std::vector
         for (const fs::path& image : images) fs::remove(image, ec);
     };
     // gnuplot's messages are read, not passed to the terminal: one line of them is the reason.
-    const std::string command = "gnuplot -e " + shell_word("out='" + gnuplot_path(temporary) + "'") + " " +
-                                shell_word(script.string()) + " 2>&1";
+    const fs::path folder = fs::absolute(script).parent_path();
+    const std::string command = "cd " + shell_word(folder.string()) + " && gnuplot -e " +
+                                shell_word("out='" + gnuplot_path(temporary) + "'") + " " +
+                                shell_word(script.filename().string()) + " 2>&1";
     FILE* pipe = ::popen(command.c_str(), "r");
     if (pipe == nullptr) {
         clean();

@@ -56,16 +56,32 @@ void finish_stdout();
 // A path inside a single-quoted gnuplot string (check_output has refused control characters).
 std::string gnuplot_path(const std::filesystem::path& p);
 
-// The lines a gnuplot script starts with when it writes stem.EXT: `out` is the stem, unless
-// the command line set it (run_gnuplot does, to a temporary stem).
+// Text inside a double-quoted gnuplot string with enhanced text on: the enhanced-text
+// control characters are escaped (\\_ in the script reaches the text processor as \_),
+// so that "T_1^(1)" prints as written; " and \ are escaped for the string itself, and a
+// backquote is written as its octal escape \140: gnuplot runs `...` as a shell command
+// even inside a double-quoted string (a label or a file name must not run anything).
+std::string gnuplot_text(const std::string& text);
+
+// The lines a gnuplot script starts with when it writes stem.EXT: `out` is the stem's file
+// name, unless the command line set it (run_gnuplot does, to a temporary stem). Every path in
+// a script is relative to the script's own folder (its data files lie beside it), so that a
+// moved or copied folder can be re-plotted: `cd FOLDER && gnuplot NAME.gp`.
 std::string gnuplot_output_stem(const std::filesystem::path& stem);
 
-// Runs gnuplot on the script, whose images `stem` + each of `extensions` are written under
+// Runs gnuplot on the script, in the script's folder (its paths are relative to it), whose images `stem` + each of `extensions` are written under
 // a temporary stem and renamed into place when gnuplot succeeds and every image is whole
 // (not empty; a PNG ends with its IEND chunk, an SVG with </svg>). A failure is an error with
 // gnuplot's own last message, or the image and what is wrong with it, on one line; the
 // temporary images are removed and no earlier image is replaced (the data files are written).
 void run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& stem,
                  const std::vector<std::string>& extensions);
+
+// Progress of long work on stderr (issue 25): one line per point, row or level, "roughroll: "
+// first. Shown when stderr is a terminal or with --progress, never with --quiet; never on
+// stdout or in a file, so that the outputs are the same with or without it.
+void set_progress(bool on);
+bool progress_shown();
+void progress(const std::string& line);
 
 }  // namespace roughroll::cli

@@ -7,6 +7,7 @@
 // (each solution on its own contact width: both integrate to 1 and to Q).
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -46,28 +47,6 @@ void smooth_tractions(double r, double Q, double f, double& p, double& p1) {
     p1 = (Q < 0.0 ? -1.0 : 1.0) * (f * p + q0);
 }
 
-// Text inside a double-quoted gnuplot string with enhanced text on: the enhanced-text
-// control characters are escaped (\\_ in the script reaches the text processor as \_),
-// so that "T_1^(1)" prints as written; " and \ are escaped for the string itself, and a
-// backquote is written as its octal escape \140: gnuplot runs `...` as a shell command
-// even inside a double-quoted string (a label or a file name must not run anything).
-std::string gnuplot_text(const std::string& text) {
-    std::string out;
-    for (const char c : one_line(text)) {
-        if (c == '`') {
-            out += "\\140";
-        } else if (c == '"') {
-            out += "\\\"";
-        } else if (c == '\\') {
-            out += "\\\\\\\\";
-        } else {
-            if (std::string_view("^_@&~{}").find(c) != std::string_view::npos) out += "\\\\";
-            out += c;
-        }
-    }
-    return out;
-}
-
 // x with `digits` significant digits, for the plot's labels.
 std::string number(double x, int digits) {
     std::ostringstream s;
@@ -99,12 +78,13 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     const double f = k.f;
     const bool negative = k.Q < 0.0;  // the mirror case: p1 follows -f p on the slip zone
     // y range of the tractions: the pressure on top with room for the key, -f p below.
-    const double y_top = 1.45 * k.p_max;
+    // The key (in the ticks' font) fills the top third of the panel: the pressure stays below it.
+    const double y_top = 1.75 * k.p_max;
     const double y_bottom = -1.25 * f * k.p_max;
     const bool has_stick = k.c0 > k.start;
     const bool leading_slip = k.start > -1.0;
     const bool has_slip = k.c0 < 1.0;
-    const std::string data = "'" + gnuplot_path(csv) + "'";
+    const std::string data = "'" + gnuplot_path(csv.filename()) + "'";  // beside the script
     const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + number(k.Q / f, 3) + "),   f = " +
                                  shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) + ",   {/Symbol x} = " +
                                  number(k.xi, 3) + ",   P_H/P_2 = " + number(k.lambda, 4) +
@@ -134,7 +114,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
            << "set xzeroaxis lt 1 lw 1 lc rgb '#808080'\n"
            // The key in the upper corner away from c0, so that it hides no zone boundary.
            << "set key top " << (k.c0 > 0.0 ? "left" : "right")
-           << " box opaque samplen 2.5 spacing 1.1 font ',12' width 1\n";
+           << " box opaque samplen 2.5 spacing 1.1 width 1\n";  // the ticks' font, not smaller
         if (has_stick)
             gp << "set object 1 rect from " << shortest(k.start)
                << ", graph 0 to c0, graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
@@ -195,8 +175,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
 void add_traction_options(CLI::App* cmd, traction_options& o) {
     add_scene_options(cmd, o.scene);
     add_number(cmd, "--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
-    add_integer(cmd, "--points", o.points, "grid points on [-1, 1] (default 401)");
-    cmd->add_option("--out", o.out, "output folder, created if missing (default: figures)");
+    add_integer(cmd, "--points", o.points, "grid points on [-1, 1]");
+    cmd->add_option("--out", o.out, "output folder, created if missing");
     cmd->add_option("--name", o.name, "file stem after 'traction-' (default: the scene file's stem)");
     cmd->add_flag("!--no-plot", o.plot, "write the CSV and the gnuplot script only");
 }
@@ -224,10 +204,20 @@ int run_traction(const traction_options& o) {
     for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
 
     const double Q = load_of(s, o.Q);
+    progress("traction " + name + ": solving the point at Q = " + shortest(Q) +
+             (s.physical ? " (its contact width first)" : ""));
+    const auto start = std::chrono::steady_clock::now();
     const std::optional<contact_width> width = settle_width(s, nullptr, Q);
     contact c(s.surfaces, s.friction, s.solver, s.materials);
     const tangential_solution solution = c.point(Q);
     const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi
+    {
+        std::ostringstream line;
+        line << "traction " << name << ": solved in " << std::setprecision(3)
+             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s; tractions on "
+             << o.points << " points";
+        progress(line.str());
+    }
     const normal_solution& normal = c.normal();
     const double f = s.friction;
 
