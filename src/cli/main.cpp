@@ -144,55 +144,36 @@ std::string number_text(double x, int digits) {
     return s.str();
 }
 
-// curve_of with one progress line per row. Without progress it is curve_of itself; with it,
-// curve_of's own steps a row at a time: creep_curve solves its loads one by one on one
-// contact, in order, so the rows are the same numbers (tests/cli_curve_plot.sh compares the CSVs).
+// curve_of with one progress line before each row (its hook, called between rows: the rows are
+// the same numbers with or without it; tests/cli_curve_plot.sh compares the CSVs).
 scene_curve curve_with_progress(scene s, int points, bool sweep, const std::string& name) {
     if (!progress_shown()) return curve_of(std::move(s), std::nullopt, points, sweep);
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&start]() {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return number_text(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3);
     };
-    const auto row_line = [&](std::size_t i, std::size_t count, const curve_point& row) {
-        const tangential_solution& t = row.solution;
-        std::ostringstream line;
-        line << name << ": row " << i + 1 << "/" << count << ", Q/f = " << std::setprecision(4) << t.Q / t.f << ": "
-             << (row.is_refused() ? std::string("refused") : "xi/f = " + number_text(t.xi / t.f, 4)) << " ("
-             << std::setprecision(3) << seconds() << " s so far)";
-        progress(line.str());
-    };
-    if (sweep) {  // one linear solve per point, the whole sweep in one call (swept_curve)
-        progress(name + ": " + std::to_string(points) + " points swept in c0");
-        scene_curve c = curve_of(std::move(s), std::nullopt, points, sweep);
-        std::ostringstream line;
-        line << name << ": swept, " << std::setprecision(3) << seconds() << " s";
-        progress(line.str());
-        return c;
-    }
+    // The row's load as curve_of chooses it: Q/f given, or the stick end c0 of a sweep
+    // (swept_curve: rho = (1 + c0)/2 uniform from 1 to 0).
     const std::vector<double> Qs = curve_loads(points, s.friction, s.materials.beta_d);
-    if (width_follows_tangential_load(s)) {
-        // curve_of settles a width per row there: one load at a time is the same work.
-        scene_curve out{s, {}, {}};
-        for (std::size_t i = 0; i < Qs.size(); ++i) {
-            scene_curve one = curve_of(s, std::vector<double>{Qs[i]}, 1, false);
-            row_line(i, Qs.size(), one.rows.front());
-            if (!one.rows.front().is_refused()) out.settled = std::move(one.settled);
-            out.rows.push_back(std::move(one.rows.front()));
-            out.widths.push_back(one.widths.front());
+    const double f = s.friction;
+    std::size_t row = 0;
+    progress(name + ": " + std::to_string(points) + (sweep ? " points swept in c0" : " loads") +
+             (s.physical ? " (contact width first)" : ""));
+    const auto before_row = [&]() {
+        std::string what;
+        if (sweep) {
+            const double rho = 1.0 - static_cast<double>(row) / (points - 1);
+            what = "c0 = " + number_text(row + 1 == static_cast<std::size_t>(points) ? -1.0 : 2.0 * rho - 1.0, 4);
+        } else if (row < Qs.size()) {
+            what = "Q/f = " + number_text(Qs[row] / f, 4);
         }
-        return out;
-    }
-    progress(name + ": " + std::to_string(Qs.size()) + " loads" + (s.physical ? ", contact width first" : ""));
-    const std::optional<contact_width> width = settle_width(s);
-    contact c(s.surfaces, s.friction, s.solver, s.materials);
-    std::vector<curve_point> rows;
-    for (std::size_t i = 0; i < Qs.size(); ++i) {
-        rows.push_back(std::move(creep_curve(c, {Qs[i]}).front()));
-        row_line(i, Qs.size(), rows.back());
-    }
-    std::vector<contact_width> widths;
-    if (width) widths.assign(rows.size(), *width);
-    return {std::move(s), std::move(rows), std::move(widths)};
+        progress(name + ": row " + std::to_string(row + 1) + "/" + std::to_string(points) + ", " + what + " (" +
+                 seconds() + " s so far)");
+        ++row;
+    };
+    scene_curve c = curve_of(std::move(s), std::nullopt, points, sweep, before_row);
+    progress(name + ": done in " + seconds() + " s");
+    return c;
 }
 
 struct curve_options {
