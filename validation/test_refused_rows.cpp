@@ -12,6 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "aluminium_on_steel.hpp"
@@ -146,4 +147,25 @@ TEST(LayerInput, ThicknessBeyondDoublePrecisionNamesFileAndKeys) {
                 << what;
         }
     }
+}
+
+// The rough pair's curve (data/aluminium-on-steel-rough.toml) at n = 32: at Q/f = -0.16 the three zones
+// fail (3.3)-(3.4) (slip margin -5.5e-9) and no five zones are found at this n (n = 64 answers the
+// load). Before, that row's numerical_error ("... not built yet") aborted `roughroll curve` with exit 2
+// after 80 s and nothing written; now the row is refused, saying another n may find the zones, and the
+// curve goes on (the row before it, Q/f = -0.2, answered; at n = 32 the whole curve ends with exit 3,
+// 37 of 51 rows answered).
+TEST(RefusedRows, RoughPairRowWithoutItsZonesIsRefusedNotAborted) {
+    scene s = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel-rough.toml");
+    override_solver(s, 32, std::nullopt);
+    const std::vector<double> all = curve_loads(51, s.friction, s.materials.beta_d);
+    const std::vector<double> loads{all[20], all[21]};  // Q/f = -0.2, -0.16
+    ASSERT_DOUBLE_EQ(loads[1] / s.friction, -0.16);
+    const scene_curve curve = curve_of(s, loads, 0, false);
+    ASSERT_EQ(curve.rows.size(), 2u);
+    EXPECT_FALSE(curve.rows[0].is_refused()) << curve.rows[0].refused;
+    EXPECT_TRUE(curve.rows[1].is_refused());
+    EXPECT_NE(curve.rows[1].refused.find("fail the checks"), std::string::npos) << curve.rows[1].refused;
+    EXPECT_NE(curve.rows[1].refused.find("another n may find them"), std::string::npos) << curve.rows[1].refused;
+    EXPECT_EQ(curve.rows[1].refused.find("not built yet"), std::string::npos) << curve.rows[1].refused;
 }
