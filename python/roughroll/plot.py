@@ -107,7 +107,7 @@ def creep_curve(curve, ax=None, carter=True, *, label=None, units="auto"):
     if carter and si:
         xc = np.asarray(curve["xi1_carter"], dtype=float)[order]
         ax.plot(x, xc, ls="--", lw=1.4, color=colour, zorder=2,
-                label=(label + ": " if label else "") + "the same rollers smooth (Carter)")
+                label="Carter: the same rollers smooth")  # in the curve's colour: whose is clear
     refused = ~ok
     n = int(refused.sum())
     if n:

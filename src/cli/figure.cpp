@@ -223,7 +223,7 @@ void scene_curves(std::ostream& gp, const curve_plot_scene& s, const std::string
     const std::string note = (named ? gnuplot_text(s.title) + ": " : std::string()) + std::to_string(s.refused) +
                              " refused row" + (s.refused == 1 ? "" : "s");
     if (s.swept)
-        gp << sep << "NaN with lines lw 0 lc rgb '#ffffff' title \"" << note << " (no load to place them)\"";
+        gp << sep << "NaN with lines lw 0 lc rgb '#ffffff' title \"" << note << " (swept in c_0: no load to place at)\"";
     else
         gp << sep << data << " using " << x << ":(strcol('status') eq 'refused' ? 0 : NaN):(0):(0.06) axes x1y2 "
            << "with vectors nohead lw 3 lc rgb '" << colour << "' title \"" << note << " (ticks at their load)\"";
@@ -243,10 +243,11 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, co
     for (const auto& s : scenes) {
         rows1 += 1 + (s.refused > 0);
         if (s.physical) {
-            rows2 += 2 + (s.refused > 0);
+            rows2 += 1 + (s.refused > 0);
             ++physical_scenes;
         }
     }
+    rows2 += physical_scenes > 0;  // the smooth rollers' entry
     const double bottom = 0.11 + 0.034 * std::max(rows1, rows2);
     const std::string title = scenes.size() == 1 ? "Creep curve: " + gnuplot_text(scenes[0].title) : "Creep curves";
     gp << "# Creep curves, written by roughroll curve --plot. Data: the CSVs beside this script\n"
@@ -298,8 +299,11 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, co
                 const std::string colour = palette[k % std::size(palette)];
                 gp << sep2 << "'" << gnuplot_path(scenes[k].csv.filename())
                    << "' using (column('P1_N_per_m')/1000):(column('xi1_carter')) with lines lw 2 dt 2 lc rgb '" << colour
-                   << "' title \"the same rollers smooth (Carter)"
-                   << (physical_scenes > 1 ? ": " + gnuplot_text(scenes[k].title) : std::string()) << "\"";
+                   << "' "
+                   // One key entry for the dashed lines: the colour says whose (a long name would not fit).
+                   << (sep2[0] == '\0' ? (physical_scenes > 1 ? "title \"dashed: each scene's rollers smooth (Carter)\""
+                                                               : "title \"the same rollers smooth (Carter)\"")
+                                        : "notitle");
                 sep2 = ", \\\n     ";
                 scene_curves(gp, scenes[k], colour, "(column('P1_N_per_m')/1000)", "column('xi1')", scenes.size() > 1, sep2);
             }
