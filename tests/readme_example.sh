@@ -8,7 +8,8 @@
 # Usage: readme_example.sh PROGRAM LIBRARY [CXX [CXXFLAGS]]
 #   PROGRAM   the roughroll program of the same build
 #   LIBRARY   the library file (libroughroll_core.a, or the shared one)
-#   CXX       the C++ compiler (default c++); CXXFLAGS the build's flags (sanitizers included)
+#   CXX       the C++ compiler, with any words of its own (default c++); CXXFLAGS the build's
+#             flags (sanitizers included)
 set -u
 [ $# -ge 2 ] || { echo "usage: $0 PROGRAM LIBRARY [CXX [CXXFLAGS]]" >&2; exit 2; }
 bin=$1
@@ -33,7 +34,9 @@ fi
 # --- Compile and link it: the static library's dependencies (GSL, toml++) from pkg-config.
 libs=$(pkg-config --libs gsl tomlplusplus 2>/dev/null) || libs="-lgsl -lgslcblas -lm -ltomlplusplus"
 # shellcheck disable=SC2086  # CXXFLAGS and the libraries are lists of words
-if ! "$cxx" -std=c++17 $cxxflags -I"$src/include" "$dir/example.cpp" -o "$dir/example" \
+# CXX may hold words of its own (autoconf's "g++ -std=c++17").
+read -r -a compiler <<<"$cxx"
+if ! "${compiler[@]}" -std=c++17 $cxxflags -I"$src/include" "$dir/example.cpp" -o "$dir/example" \
         "$lib" -Wl,-rpath,"$(cd "$(dirname "$lib")" && pwd)" $libs >"$dir/compile.log" 2>&1; then
     cat "$dir/compile.log"
     echo "FAIL the README's example does not compile"
