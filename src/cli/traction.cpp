@@ -21,6 +21,7 @@
 #include "cli/output_files.hpp"
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/io/output.hpp"
 #include "roughroll/base/error.hpp"
 
@@ -58,16 +59,16 @@ std::string number(double x, int digits) {
 // cairo terminals snap exactly horizontal segments wider than a pixel to the pixel grid,
 // which notches a curve at its flat top; a monotone cubic (no overshoot) through the
 // points, drawn on sub-pixel samples (set samples), avoids that and changes nothing else.
-std::string curve(int column, const std::string& style, const std::string& title) {
-    return " using 1:" + std::to_string(column) + " smooth mcsplines with lines " + style +
+std::string curve(int column, const std::string& style, const std::string& title, bool right_axis = false) {
+    return " using 1:" + std::to_string(column) + (right_axis ? " axes x1y2" : "") +
+           " smooth mcsplines with lines " + style +
            (title.empty() ? std::string(" notitle") : " title \"" + title + "\"");
 }
 
 struct plot_facts {
     std::string title;  // first title line (gnuplot enhanced text, escaped)
     double Q, f, c0, xi, lambda;
-    double start;  // the stick zone is [start, c0]: start > -1 when slip leads (zone search, formulation 7)
-    double start2 = 2.0, end2 = 2.0;  // five zones (dissimilar rollers, formulation 8(j)): the second stick zone
+    std::vector<zone> zones;  // from r = -1 to 1: one, three or five (formulation 7, 8(j))
     double p_max;
     double v_low, v_high;  // least and greatest slip velocity, 0 included: v may take both signs (8(g))
     bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
@@ -81,9 +82,13 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     // The key (in the ticks' font) fills the top third of the panel: the pressure stays below it.
     const double y_top = 1.75 * k.p_max;
     const double y_bottom = -1.25 * f * k.p_max;
-    const bool has_stick = k.c0 > k.start;
-    const bool leading_slip = k.start > -1.0;
-    const bool has_slip = k.c0 < 1.0;
+    // Where f is small, p1 (at most f p) would be a flat line on p's scale: p1, +-f p and
+    // Carter's p1 go on a right axis f times the left one, so that f p there is drawn where p
+    // is on the left (p1 = f p on a slip zone still reads as p1 on its limit).
+    const bool right_axis = f < 0.25;
+    const bool has_stick = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return z.stick; });
+    const bool has_slip = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return !z.stick; });
+    const int load_sign = k.Q > 0.0 ? 1 : k.Q < 0.0 ? -1 : 0;
     const std::string data = "'" + gnuplot_path(csv.filename()) + "'";  // beside the script
     const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + number(k.Q / f, 3) + "),   f = " +
                                  shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) + ",   {/Symbol x} = " +
@@ -98,7 +103,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
        << "set samples 2000\n"  // sub-pixel steps for the monotone cubics of curve()
        << "set grid back lc rgb '#d8d8d8'\n"
        << "set border lw 1.2\n"
-       << "set lmargin at screen 0.13\nset rmargin at screen 0.975\n";
+       << "set lmargin at screen 0.13\nset rmargin at screen " << (right_axis ? "0.88" : "0.975") << "\n";
     const char* terminals[][2] = {{"svg size 1000,760 enhanced font 'Helvetica,14' background '#ffffff'", ".svg"},
                                   {"pngcairo size 1300,990 enhanced font 'Helvetica,15'", ".png"}};
     for (const auto& t : terminals) {
@@ -107,50 +112,69 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
            << "set multiplot title \"" << k.title << "\\n" << subtitle << "\"\n";
 
         // Upper panel: the tractions, the zones named above the frame.
-        gp << "set tmargin at screen 0.87\nset bmargin at screen 0.355\n"
+        // (0.83: room above the frame for two rows of narrow zones' names under the title)
+        gp << "set tmargin at screen 0.83\nset bmargin at screen 0.355\n"
            << "unset xlabel\nset format x ''\nset format y '%g'\n"
            << "set ylabel \"a p_2/P_2,   a p_1/P_2   (dimensionless)\" offset -1.5,0\n"
            << "set yrange [" << shortest(y_bottom) << ":" << shortest(y_top) << "]\n"
            << "set xzeroaxis lt 1 lw 1 lc rgb '#808080'\n"
-           // The key in the upper corner away from c0, so that it hides no zone boundary.
-           << "set key top " << (k.c0 > 0.0 ? "left" : "right")
-           << " box opaque samplen 2.5 spacing 1.1 width 1\n";  // the ticks' font, not smaller
-        if (has_stick)
-            gp << "set object 1 rect from " << shortest(k.start)
-               << ", graph 0 to c0, graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
-               << "set label 1 \"stick zone\" at " << shortest(0.5 * (k.start + k.c0))
-               << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#1f4e79'\n";
-        if (has_slip)
-            gp << "set label 2 \"slip zone\" at " << shortest(0.5 * (k.c0 + 1.0))
-               << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#8c2d04'\n";
-        if (has_stick && has_slip)
-            gp << "set arrow 1 from c0, graph 0 to c0, graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
-        if (leading_slip)
-            gp << "set label 3 \"slip\" at " << shortest(0.5 * (-1.0 + k.start))
-               << ", graph 1 offset 0,0.8 center font ',14' tc rgb '#8c2d04'\n"
-               << "set arrow 3 from " << shortest(k.start) << ", graph 0 to " << shortest(k.start)
-               << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
-        if (k.end2 <= 1.0)  // five zones: the second stick zone shaded too, its ends dashed
-            gp << "set object 4 rect from " << shortest(k.start2) << ", graph 0 to " << shortest(k.end2)
-               << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n"
-               << "set arrow 4 from " << shortest(k.start2) << ", graph 0 to " << shortest(k.start2)
-               << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n"
-               << "set arrow 5 from " << shortest(k.end2) << ", graph 0 to " << shortest(k.end2)
-               << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
+           // The key in two columns of three across the top, over the room left above the
+           // pressure: in the ticks' font (not smaller), it stays clear of the curves.
+           << "set key top center maxrows 3 box opaque samplen 2.5 spacing 1.1 width 1\n";
+        // Every zone shaded (stick) and named above the frame: a wide one over itself, a narrow
+        // one (under an eighth of the contact) on a row of its own above, from its side of the
+        // contact, and one thinner than a line (under 2 % of it) marked by a line of its colour.
+        int id = 10, left_row = 1, right_row = 1;
+        for (std::size_t i = 0; i < k.zones.size(); ++i, ++id) {
+            const zone& z = k.zones[i];
+            const double width = z.to - z.from, mid = 0.5 * (z.from + z.to);
+            const std::string colour = z.stick ? "#1f4e79" : "#8c2d04";
+            std::string name = z.stick ? "stick zone"
+                               : load_sign == 0 ? (z.direction > 0 ? "slip, p_1 > 0" : "slip, p_1 < 0")
+                               : z.direction == load_sign ? "slip zone" : "reversed slip";
+            if (z.stick)
+                gp << "set object " << id << " rect from " << shortest(z.from) << ", graph 0 to " << shortest(z.to)
+                   << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n";
+            if (width < 0.04) {
+                name += " (" + number(width, 2) + " a wide)";
+                gp << "set arrow " << id << " from " << shortest(mid) << ", graph 0 to " << shortest(mid)
+                   << ", graph 1 nohead lw 2.5 lc rgb '" << colour << "' front\n";
+            }
+            std::string where = " center";
+            int row = 0;
+            if (width < 0.25) {
+                row = mid > 0.0 ? right_row++ : left_row++;
+                where = mid > 0.0 ? " right" : " left";
+            }
+            gp << "set label " << id << " \"" << name << "\" at " << shortest(std::clamp(mid, -1.0, 1.0))
+               << ", graph 1 offset 0," << shortest(0.8 + 1.25 * row) << where << " font ',14' tc rgb '" << colour
+               << "'\n";
+            if (i > 0)  // the boundary with the zone before, dashed
+                gp << "set arrow " << 100 + id << " from " << shortest(z.from) << ", graph 0 to " << shortest(z.from)
+                   << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
+        }
+        if (right_axis)
+            gp << "set yrange [" << shortest(y_bottom / f) << ":" << shortest(y_top) << "]\n"
+               << "set y2range [" << shortest(y_bottom) << ":" << shortest(y_top * f) << "]\n"
+               << "set ytics nomirror\nset y2tics format '%g' tc rgb '#1f77b4'\n"
+               << "set ylabel \"a p_2/P_2   (dimensionless)\" offset -1.5,0\n"
+               << "set y2label \"a p_1/P_2 and {/Symbol \\261} f p   (right axis: f = " << shortest(f)
+               << ")\" tc rgb '#1f77b4'\n";
         // Drawn in this order: the limits over p1 show p1 = f p on the slip zone (3.5).
         // Columns 4 and 5 are f p and -f p; with Q < 0 the limit p1 follows is -f p.
         const std::string limit = negative ? "-f p" : "f p";
         const std::string other = negative ? "f p" : "-f p";
+        const std::string right;  // the right axis' label names its curves: short key entries fit two columns
         gp << "plot " << data << curve(2, "lw 3 lc rgb '#000000'", "normal pressure p") << ", \\\n     ''"
-           << curve(3, "lw 3.5 lc rgb '#1f77b4'", "tangential traction p_1") << ", \\\n     ''"
-           << curve(negative ? 5 : 4, "lw 1.5 lc rgb '#d62728'", "limit " + limit) << ", \\\n     ''"
-           << curve(negative ? 4 : 5, "lw 1.5 dt 2 lc rgb '#d62728'", other) << ", \\\n     ''"
-           << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth cylinders)") << ", \\\n     ''"
-           << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth cylinders)") << "\n";
+           << curve(3, "lw 3.5 lc rgb '#1f77b4'", "tangential traction p_1" + right, right_axis) << ", \\\n     ''"
+           << curve(negative ? 5 : 4, "lw 1.5 lc rgb '#d62728'", "limit " + limit + right, right_axis) << ", \\\n     ''"
+           << curve(negative ? 4 : 5, "lw 1.5 dt 2 lc rgb '#d62728'", other, right_axis) << ", \\\n     ''"
+           << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth)") << ", \\\n     ''"
+           << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth)", right_axis) << "\n";
 
         // Lower panel: the slip velocity, zero on the stick zone (3.2), with the sign of Q
         // on the slip zone (3.4); c0 named beside the dashed line, on the stick side.
-        gp << "unset label 1\nunset label 2\nunset label 3\nunset key\n"
+        gp << "unset label\nunset key\nunset y2tics\nunset y2label\nset ytics mirror\n"
            << "set tmargin at screen 0.325\nset bmargin at screen 0.085\n"
            << "set format x '%g'\nset xlabel \"r = x_1/a\"\n"
            << "set ylabel \"slip velocity v\\n(scaled as {/Symbol x})\" offset -1.5,0\n";
@@ -166,7 +190,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                << (left ? " right offset -0.8,0" : " left offset 0.8,0") << " font ',14'\n";
         }
         gp << "plot " << data << curve(7, "lw 3 lc rgb '#2ca02c'", "") << "\n"
-           << "unset label 3\nunset object 1\nunset arrow 1\nunset object 4\nunset arrow 4\nunset arrow 5\nunset multiplot\nset output\n";
+           << "unset label\nunset object\nunset arrow\nunset multiplot\nset output\n";
     }
 }
 
@@ -274,9 +298,7 @@ int run_traction(const traction_options& o) {
     facts.Q = Q;
     facts.f = f;
     facts.c0 = level.c0;  // the stick zone the plotted tractions have
-    facts.start = level.start;
-    facts.start2 = level.start2;
-    facts.end2 = level.end2;
+    facts.zones = solution_zones(level);  // the zones the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;
