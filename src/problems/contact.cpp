@@ -347,11 +347,17 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     // and can pass near zero at one level, level 2n confirms: the estimate is also bounded from
     // n/2, n, 2n, and the point is refused where those do not converge visibly.
     const bool always_confirm = options_.how == method::one_parameter;
+    // An observed order far above the method's (ratio beyond 2^(p+2)) is no sign of the asymptotic
+    // range either: a coarsest level far off, or a middle level that lies near the limit by chance
+    // (paper at n = 16 near gross sliding: ratio 50 over 4, 8, 16, then a sign change and 6 times
+    // the estimate at 32).
+    const double too_fast = std::ldexp(1.0, order + 2);
     for (const quantity& q : qs) {
         error_bound b = bound_error(q.v, order, which, q.floor);
         three_levels used = q.v;
         int used_coarsest_n = coarsest_n;
-        const bool confirm = b.resolved && (always_confirm || !b.asymptotic);
+        const bool rounding = std::fabs(q.v.finest - q.v.middle) <= q.floor;  // the ratio then means nothing
+        const bool confirm = b.resolved && (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
         if ((!b.resolved && own.checks.hold()) || confirm) {
             // One level finer, n/2, n, 2n (error_bound.hpp). Where the first three gave no estimate
             // (a second chance, where n/4 is still pre-asymptotic for this quantity): only for a

@@ -4,8 +4,8 @@
 // a method of order p has rho -> 2^p in its asymptotic range, where the error of v_2 is
 // d2/(2^p - 1) and Richardson's value v_2 + d2/(2^p - 1) is better still. The rule:
 //   - the observed ratio is at least 0.7 * 2^p (observed order >= p - 1/2): the classic
-//     estimates hold, |d2| for v_2 (an overestimate by about 2^p - 1) and |d2|/(2^p - 1)
-//     for Richardson's value;
+//     estimates hold, |d2| for v_2 (an overestimate by about 2^p - 1) and 2 |d2|/(2^p - 1)
+//     for Richardson's value (its distance from v_2 plus v_2's own error, about as much);
 //   - 1.5 <= |rho| < 0.7 * 2^p (observed order below the assumed one), or rho negative (the
 //     error changes sign between levels) with |rho| >= min(4, 0.7 * 2^p) (it still contracts
 //     at least as an order-2 method's): the error of v_2 is at most |d2| max(2, 2/(|rho| - 1)) (a
