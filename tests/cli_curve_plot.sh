@@ -136,6 +136,24 @@ if run figure 0 figure 2a --points 5 --n 16 --no-plot --out "$dir/fig"; then
     replot figure "$dir/fig" fig2a.gp fig2a.png fig2a.svg
 fi
 
+# --- The traction plot of aluminium on steel at Q/f = +0.75 (five zones, f = 0.05): every zone
+# named (the two at the trailing edge, 3e-4 a wide, too), p1 on a right axis f times p's.
+mkdir -p "$dir/five"
+if run traction-five 0 traction "$data/aluminium-on-steel.toml" --n 16 --Q 0.0375 --no-plot --out "$dir/five" --name al; then
+    before=$failures
+    gp="$dir/five/traction-al.gp"
+    # One terminal's labels (the script draws the SVG, then the PNG): the zones from the CSV's header.
+    zones=$(grep -c '^set label [0-9]* "\(stick zone\|slip zone\|reversed slip\|slip, p_1\)' "$gp")
+    [ "$zones" -eq 10 ] || fail "traction-five: $zones zone labels in the script, expected 5 per terminal"
+    [ "$(grep -c '^set label [0-9]* "reversed slip' "$gp")" -eq 4 ] || fail "traction-five: the reversed slip zones are not both named"
+    grep -q 'a wide)' "$gp" || fail "traction-five: the narrow trailing zones are not marked"
+    grep -q 'axes x1y2' "$gp" || fail "traction-five: p1 (f = 0.05) not on the right axis"
+    (cd "$dir/five" && gnuplot traction-al.gp) 2>"$dir/gp-err" && [ ! -s "$dir/gp-err" ] ||
+        fail "traction-five: gnuplot: $(head -2 "$dir/gp-err")"
+    whole_png "$dir/five/traction-al.png" || fail "traction-five: traction-al.png missing or not whole"
+    [ "$failures" -eq "$before" ] && echo "ok   traction-five: five zones named, p1 on the right axis"
+fi
+
 # --- Bad input: one stderr line, exit 2, nothing written.
 expect plot-without-csv "--plot needs --csv" -- curve "$data/traction-example.toml" --points 3 --plot
 expect several-without-csv "several scenes need --csv" -- curve "$data/traction-example.toml" "$data/fig2a-T0.toml" --points 3
@@ -154,6 +172,14 @@ if run progress 0 curve "$data/traction-example.toml" --points 5 --progress; the
         { [ -s "$dir/err" ] && fail "no-progress: stderr not empty on a non-terminal: $(head -2 "$dir/err")"; }
     cmp -s "$dir/out" "$dir/with-progress" || fail "progress: --progress changed stdout"
     [ "$rows" -eq 5 ] && echo "ok   progress: 5 row lines with --progress, none without, stdout the same"
+fi
+# A traction's progress: a line before its point and one after, nothing in its files.
+if run progress-traction 0 traction "$data/traction-example.toml" --points 21 --no-plot --out "$dir/pt" --name a --progress; then
+    [ "$(grep -c '^roughroll: traction a: ' "$dir/err")" -eq 2 ] || fail "progress-traction: $(cat "$dir/err")"
+    run no-progress-traction 0 traction "$data/traction-example.toml" --points 21 --no-plot --out "$dir/pt" --name b &&
+        { [ -s "$dir/err" ] && fail "no-progress-traction: stderr not empty"; }
+    cmp -s <(tail -n +2 "$dir/pt/traction-a.csv") <(tail -n +2 "$dir/pt/traction-b.csv") ||
+        fail "progress-traction: --progress changed the CSV"
 fi
 # The physical scene's CSV with --progress (its width once, then the rows) is the same too.
 if run progress-physical 0 curve "$data/steel-rollers.toml" --points 4 --progress; then
