@@ -76,9 +76,9 @@ TEST(DissimilarSmallBeta, RefusedAtOnceWithWhatToDo) {
             EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
         }
         // Gross sliding: v = xi + beta_D p + f G >= 0 (8(j) item 6): at Q = f, xi = 2 f/pi (the leading
-        // edge). (At Q = -f the least point r* = -f/sqrt(beta_D^2 + f^2) lies 2e-10 from the edge, and
-        // the slip margin of (3.4) is rounding, -8e-16: issue 23's margin floor, not this test's.)
+        // edge); at Q = -f, -(2/pi) sqrt(beta_D^2 + f^2) (its slip margin is rounding, within (3.4)'s floor).
         EXPECT_NEAR(c.point(f).xi, 2.0 * f / M_PI, 1e-12);
+        EXPECT_NEAR(c.point(-f).xi, -2.0 / M_PI * std::sqrt(1e-12 + f * f), 1e-12);
     }
 }
 
