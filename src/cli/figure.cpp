@@ -87,8 +87,8 @@ void write_table(output_file& file, const std::string& which, const std::vector<
         md << "| " << c.legend << " |";
         std::vector<std::pair<double, std::optional<double>>> xi;
         for (double r : ratios) {
-            progress("Fig. " + which + " table: " + one_line(c.legend) + ", Q/f = " + shortest(r) +
-                     " with its error estimate");
+            progress("Fig. " + which + " table: curve " + std::to_string(&c - curves.data() + 1) + "/" +
+                     std::to_string(curves.size()) + ", Q/f = " + shortest(r) + " with its error estimate");
             const tangential_solution s = problem.point(r * figure_friction);
             const auto e = problem.estimate(s);
             if (e) lambda_estimate = e->lambda;
@@ -164,7 +164,8 @@ int run_figure(const figure_options& o) {
     // Carter's share the c0 grid, each has its own loads Q(c0).
     std::vector<std::vector<curve_point>> results;
     for (const auto& c : curves) {
-        progress("Fig. " + o.which + ": " + one_line(c.legend) + ": " + std::to_string(o.points) + " points swept in c0");
+        progress("Fig. " + o.which + ": curve " + std::to_string(results.size() + 1) + "/" + std::to_string(curves.size()) +
+                 ", " + std::to_string(o.points) + " points swept in c0");
         contact problem(c.surfaces, figure_friction, options);
         results.push_back(swept_curve(problem, o.points));
         // A figure is a reproduction, whole or not at all: a refused point aborts it (exit 2),
