@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -59,8 +60,12 @@ std::string number(double x, int digits) {
 // cairo terminals snap exactly horizontal segments wider than a pixel to the pixel grid,
 // which notches a curve at its flat top; a monotone cubic (no overshoot) through the
 // points, drawn on sub-pixel samples (set samples), avoids that and changes nothing else.
-std::string curve(int column, const std::string& style, const std::string& title, bool right_axis = false) {
-    return " using 1:" + std::to_string(column) + (right_axis ? " axes x1y2" : "") +
+// The script's scales xs, ps (the contact's; 1 and 1 for a dimensionless scene) carry r and p to
+// mm and MPa; xh, ph those of the smooth cylinders' own width (Hertz's and Carter's columns).
+std::string curve(int column, const std::string& style, const std::string& title, bool right_axis = false,
+                  bool smooth_width = false) {
+    const std::string x = smooth_width ? "xh" : "xs", y = column == 7 ? "1" : smooth_width ? "ph" : "ps";
+    return " using ($1*" + x + "):($" + std::to_string(column) + "*" + y + ")" + (right_axis ? " axes x1y2" : "") +
            " smooth mcsplines with lines " + style +
            (title.empty() ? std::string(" notitle") : " title \"" + title + "\"");
 }
@@ -72,6 +77,7 @@ struct plot_facts {
     double p_max;
     double v_low, v_high;  // least and greatest slip velocity, 0 included: v may take both signs (8(g))
     bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
+    std::optional<si_point> si;  // a physical scene: drawn in mm and MPa
 };
 
 void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std::filesystem::path& stem,
@@ -86,6 +92,13 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     // Carter's p1 go on a right axis f times the left one, so that f p there is drawn where p
     // is on the left (p1 = f p on a slip zone still reads as p1 on its limit).
     const bool right_axis = f < 0.25;
+    // A physical scene in mm and MPa (issue 25): x1 = r a, p2 = p P2/a; Hertz's and Carter's
+    // smooth tractions on their own half-width a_H. Every position below is r times xs.
+    const double xs = k.si ? k.si->a * 1e3 : 1.0, ps = k.si ? k.si->p_scale * 1e-6 : 1.0;
+    const double xh = k.si ? k.si->a_hertz * 1e3 : 1.0, ph = k.si ? k.si->P2 / k.si->a_hertz * 1e-6 : 1.0;
+    const double x_end = std::max(xs, xh);
+    const std::string p_unit = k.si ? "   (MPa)" : "   (dimensionless)";
+    const std::string p_name = k.si ? "p_2" : "a p_2/P_2", p1_name = k.si ? "p_1" : "a p_1/P_2";
     const bool has_stick = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return z.stick; });
     const bool has_slip = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return !z.stick; });
     const int load_sign = k.Q > 0.0 ? 1 : k.Q < 0.0 ? -1 : 0;
@@ -99,7 +112,10 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
        << gnuplot_output_stem(stem)
        << "set datafile separator ','\n"
        << "c0 = " << shortest(k.c0) << "\n"
-       << "set xrange [-1:1]\n"
+       << "# Scales: r -> x (xs: the contact's, xh: the smooth cylinders'), p -> pressure (ps, ph)\n"
+       << "xs = " << shortest(xs) << "\nps = " << shortest(ps) << "\nxh = " << shortest(xh) << "\nph = " << shortest(ph)
+       << "\n"
+       << "set xrange [" << shortest(-x_end) << ":" << shortest(x_end) << "]\n"
        << "set samples 2000\n"  // sub-pixel steps for the monotone cubics of curve()
        << "set grid back lc rgb '#d8d8d8'\n"
        << "set border lw 1.2\n"
@@ -115,8 +131,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
         // (0.83: room above the frame for two rows of narrow zones' names under the title)
         gp << "set tmargin at screen 0.83\nset bmargin at screen 0.355\n"
            << "unset xlabel\nset format x ''\nset format y '%g'\n"
-           << "set ylabel \"a p_2/P_2,   a p_1/P_2   (dimensionless)\" offset -1.5,0\n"
-           << "set yrange [" << shortest(y_bottom) << ":" << shortest(y_top) << "]\n"
+           << "set ylabel \"" << p_name << ",   " << p1_name << p_unit << "\" offset -1.5,0\n"
+           << "set yrange [" << shortest(y_bottom * ps) << ":" << shortest(y_top * ps) << "]\n"
            << "set xzeroaxis lt 1 lw 1 lc rgb '#808080'\n"
            // The key in two columns of three across the top, over the room left above the
            // pressure: in the ticks' font (not smaller), it stays clear of the curves.
@@ -133,11 +149,11 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                                : load_sign == 0 ? (z.direction > 0 ? "slip, p_1 > 0" : "slip, p_1 < 0")
                                : z.direction == load_sign ? "slip zone" : "reversed slip";
             if (z.stick)
-                gp << "set object " << id << " rect from " << shortest(z.from) << ", graph 0 to " << shortest(z.to)
+                gp << "set object " << id << " rect from " << shortest(z.from * xs) << ", graph 0 to " << shortest(z.to * xs)
                    << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n";
             if (width < 0.04) {
                 name += " (" + number(width, 2) + " a wide)";
-                gp << "set arrow " << id << " from " << shortest(mid) << ", graph 0 to " << shortest(mid)
+                gp << "set arrow " << id << " from " << shortest(mid * xs) << ", graph 0 to " << shortest(mid * xs)
                    << ", graph 1 nohead lw 2.5 lc rgb '" << colour << "' front\n";
             }
             std::string where = " center";
@@ -146,20 +162,20 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                 row = mid > 0.0 ? right_row++ : left_row++;
                 where = mid > 0.0 ? " right" : " left";
             }
-            gp << "set label " << id << " \"" << name << "\" at " << shortest(std::clamp(mid, -1.0, 1.0))
+            gp << "set label " << id << " \"" << name << "\" at " << shortest(std::clamp(mid, -1.0, 1.0) * xs)
                << ", graph 1 offset 0," << shortest(0.8 + 1.25 * row) << where << " font ',14' tc rgb '" << colour
                << "'\n";
             if (i > 0)  // the boundary with the zone before, dashed
-                gp << "set arrow " << 100 + id << " from " << shortest(z.from) << ", graph 0 to " << shortest(z.from)
+                gp << "set arrow " << 100 + id << " from " << shortest(z.from * xs) << ", graph 0 to " << shortest(z.from * xs)
                    << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
         }
         if (right_axis)
-            gp << "set yrange [" << shortest(y_bottom / f) << ":" << shortest(y_top) << "]\n"
-               << "set y2range [" << shortest(y_bottom) << ":" << shortest(y_top * f) << "]\n"
+            gp << "set yrange [" << shortest(y_bottom / f * ps) << ":" << shortest(y_top * ps) << "]\n"
+               << "set y2range [" << shortest(y_bottom * ps) << ":" << shortest(y_top * f * ps) << "]\n"
                << "set ytics nomirror\nset y2tics format '%g' tc rgb '#1f77b4'\n"
-               << "set ylabel \"a p_2/P_2   (dimensionless)\" offset -1.5,0\n"
-               << "set y2label \"a p_1/P_2 and {/Symbol \\261} f p   (right axis: f = " << shortest(f)
-               << ")\" tc rgb '#1f77b4'\n";
+               << "set ylabel \"" << p_name << p_unit << "\" offset -1.5,0\n"
+               << "set y2label \"" << p1_name << " and {/Symbol \\261} f p" << (k.si ? " (MPa)" : "")
+               << "   (right axis: f = " << shortest(f) << ")\" tc rgb '#1f77b4'\n";
         // Drawn in this order: the limits over p1 show p1 = f p on the slip zone (3.5).
         // Columns 4 and 5 are f p and -f p; with Q < 0 the limit p1 follows is -f p.
         const std::string limit = negative ? "-f p" : "f p";
@@ -169,14 +185,14 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
            << curve(3, "lw 3.5 lc rgb '#1f77b4'", "tangential traction p_1" + right, right_axis) << ", \\\n     ''"
            << curve(negative ? 5 : 4, "lw 1.5 lc rgb '#d62728'", "limit " + limit + right, right_axis) << ", \\\n     ''"
            << curve(negative ? 4 : 5, "lw 1.5 dt 2 lc rgb '#d62728'", other, right_axis) << ", \\\n     ''"
-           << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth)") << ", \\\n     ''"
-           << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth)", right_axis) << "\n";
+           << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth)", false, true) << ", \\\n     ''"
+           << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth)", right_axis, true) << "\n";
 
         // Lower panel: the slip velocity, zero on the stick zone (3.2), with the sign of Q
         // on the slip zone (3.4); c0 named beside the dashed line, on the stick side.
         gp << "unset label\nunset key\nunset y2tics\nunset y2label\nset ytics mirror\n"
            << "set tmargin at screen 0.325\nset bmargin at screen 0.085\n"
-           << "set format x '%g'\nset xlabel \"r = x_1/a\"\n"
+           << "set format x '%g'\nset xlabel \"" << (k.si ? "x_1   (mm)" : "r = x_1/a") << "\"\n"
            << "set ylabel \"slip velocity v\\n(scaled as {/Symbol x})\" offset -1.5,0\n";
         // Room above (below) a velocity of either sign, a thin margin on a side that is only 0.
         if (const double span = k.v_high - k.v_low; span > 0.0)
@@ -186,7 +202,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
             gp << "set yrange [-1:1]\n";
         if (has_stick && has_slip) {
             const bool left = k.c0 > -0.55;
-            gp << "set label 3 \"c_0 = " << number(k.c0, 3) << "\" at c0, graph " << (negative ? 0.25 : 0.6)
+            gp << "set label 3 \"" << (k.si ? "c = " + number(k.c0 * xs, 3) + " mm" : "c_0 = " + number(k.c0, 3))
+               << "\" at c0*xs, graph " << (negative ? 0.25 : 0.6)
                << (left ? " right offset -0.8,0" : " left offset 0.8,0") << " font ',14'\n";
         }
         gp << "plot " << data << curve(7, "lw 3 lc rgb '#2ca02c'", "") << "\n"
@@ -305,6 +322,7 @@ int run_traction(const traction_options& o) {
     facts.v_low = v_low;
     facts.v_high = v_high;
     facts.checks_hold = solution.checks.hold();
+    facts.si = si;
     write_gnuplot(script_file.stream(), csv, stem, facts);
     script_file.commit();
     if (!o.plot) return 0;
