@@ -100,3 +100,27 @@ TEST(ZonesNearSliding, CreepCurveThroughTheRegion) {
         EXPECT_NEAR(ratio, law, 0.01);
     }
 }
+
+// Issue 23, 2: the slip margin of (3.4) near gross sliding is rounding as the stick margin is
+// (docs/performance.md): on this scene, found by a scan of random scenes at 1 - Q/f = 1e-9 ..
+// 1e-14 with the general search, the general zones' slip margin was -1.6e-12 (its floor 2.6e-11),
+// so the automatic search fell back to the single zone, flagged (its c0 4.6e-5 away, its stick
+// margin -5.8e-6). Now the general zones are the answer, their checks holding to rounding, and
+// they agree with n = 384 within the estimate.
+TEST(ZonesNearSliding, SlipMarginToRounding) {
+    roughness r;
+    r.cylinder1.tangential = {77.0519855624016, 0.022170355706766127};
+    r.cylinder2.normal = {0.12072143524600101, 0.026762910745037824};
+    const double friction = 0.9336121355946893, Q = 0.9336121355937557;  // 1 - Q/f = 1e-12
+    contact c(r, friction, solver_options{96, method::product});
+    const tangential_solution s = c.point(Q);
+    EXPECT_TRUE(s.general);
+    EXPECT_TRUE(s.checks.hold()) << "slip margin " << s.checks.slip_margin << ", floor " << s.checks.slip_rounding;
+    EXPECT_LT(s.checks.slip_margin, 0.0) << "the case needs the floor";
+    const std::optional<error_estimate> e = c.estimate(s);
+    ASSERT_TRUE(e.has_value());
+    contact finer(r, friction, solver_options{384, method::product, zone_search::general});
+    const tangential_solution sf = finer.point(Q);
+    EXPECT_LE(std::fabs(s.c0 - sf.c0), e->c0);
+    EXPECT_LE(std::fabs(s.xi - sf.xi), e->xi);
+}
