@@ -169,3 +169,20 @@ TEST(RefusedRows, RoughPairRowWithoutItsZonesIsRefusedNotAborted) {
     EXPECT_NE(curve.rows[1].refused.find("another n may find them"), std::string::npos) << curve.rows[1].refused;
     EXPECT_EQ(curve.rows[1].refused.find("not built yet"), std::string::npos) << curve.rows[1].refused;
 }
+
+// A swept row of the ground steel rollers (data/steel-rollers-ground.toml, the README's scene) at
+// c0 = -0.65: Q(c0) moves by 1e-8 from n/4 to n/2 and then alternates, -8.0e-11, +8.0e-11 over
+// n/2, n, 2n. The fourth level (docs/performance.md) had refused the row (not visibly converging);
+// levels that alternate without growing put level n within their band: answered, and its estimate
+// bounds the distance to product integration at n = 512 at the same c0.
+TEST(RefusedRows, SweptRowWhoseFinerLevelsAlternateIsAnswered) {
+    const scene_curve c = curve_of(read_scene(ROUGHROLL_DATA "/steel-rollers-ground.toml"), std::nullopt, 41, true);
+    const curve_point& row = c.rows.at(33);
+    ASSERT_NEAR(row.solution.c0, -0.65, 1e-12);
+    ASSERT_FALSE(row.is_refused()) << row.refused;
+    ASSERT_TRUE(row.estimate.has_value());
+    contact fine(c.settled.surfaces, c.settled.friction, solver_options{512, method::product});
+    const contact::swept_point f = fine.at_stick_end(row.solution.c0);
+    EXPECT_LE(std::fabs(row.solution.Q - f.solution.Q), row.estimate->Q);
+    EXPECT_LE(std::fabs(row.solution.xi - f.solution.xi), row.estimate->xi);
+}
