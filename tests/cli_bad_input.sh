@@ -258,6 +258,11 @@ scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn =
 expect beta-sweep "a curve swept in c0" -- curve "$dir/betafree.toml" --sweep --points 3
 # (A zone below the resolution is refused only after a solve: validate_five_zone_points tests it,
 # without a wall-clock limit. Every row here is refused before any solve.)
+# "increase n" only where a larger n can help (issue 23): kernels that no n up to 1000 resolves at n/2.
+scene steepall "$(printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 100000\n[solver]\nn = 1000\n')"
+expect extrapolated-beyond-every-n "use method 'product' (no n up to 1000 resolves them at n/2)" -- point "$dir/steepall.toml"
+scene steep "$(printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 300\n')"
+expect extrapolated-larger-n "increase n (at most 1000) or use method 'product'" -- point "$dir/steep.toml"
 expect physical-P1-and-Q "not both" -- point "$dir/physP1Q.toml"
 expect physical-P1-hertz-width "given-load" -- point "$dir/physhertzP1.toml"
 expect physical-width-rule "contact_width" -- point "$dir/physwidth.toml"

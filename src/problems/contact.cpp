@@ -17,6 +17,14 @@ namespace {
 // Richardson's rule for an error ~ C n^-4: levels n and n/2.
 double richardson(double fine, double coarse) { return (16.0 * fine - coarse) / 15.0; }
 
+// What can help where extrapolated's level n/2 is below the kernels' resolution: a larger n only
+// where the largest one puts its n/2 in range.
+std::string coarse_level_advice(const kernel& k, int n) {
+    if (n < max_nodes && in_asymptotic_range(k, max_nodes / 2, method::product))
+        return "increase n (at most " + std::to_string(max_nodes) + ") or use method 'product'";
+    return "use method 'product' (no n up to " + std::to_string(max_nodes) + " resolves them at n/2)";
+}
+
 kernel widest_kernel(const roughness& r) {
     const double rate = std::max(kernel::normal(r).max_rate(), kernel::tangential(r).max_rate());
     return kernel(std::vector<exponential_term>{{1.0, rate}});
@@ -41,7 +49,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
         if (n / 2 < min_nodes || !in_asymptotic_range(widest_kernel(surfaces), n / 2, method::product))
             throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                    ": the coarse level n/2 is not in the asymptotic range of product integration "
-                                   "for these kernels; increase n or use method 'product'");
+                                   "for these kernels; " +
+                                   coarse_level_advice(widest_kernel(surfaces), n));
         companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones},
                                                materials, cache);
     }
@@ -498,9 +507,12 @@ void contact::refuse_load_outside(const tangential_solution& s, std::optional<do
     else msg << " lies";
     msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0) << " for method '" << to_string(options_.how)
         << "' at n = " << nodes() << ": "
-        << (error ? "the load is not resolved there; increase n, or the scene is beyond the method's reach"
-                  : "no physical point (|Q| <= f needs (3.3)-(3.4)): n does not resolve the layers, or the single "
-                    "stick zone is not the solution there; increase n, or solve at given loads");
+        << (error ? std::string("the load is not resolved there; ") +
+                        (nodes() < max_nodes ? "increase n, or the scene is beyond the method's reach"
+                                             : "n is at its largest, so the scene is beyond the method's reach")
+                  : std::string("no physical point (|Q| <= f needs (3.3)-(3.4)): n does not resolve the layers, or the "
+                                "single stick zone is not the solution there; ") +
+                        (nodes() < max_nodes ? "increase n, or solve at given loads" : "solve at given loads"));
     throw resolution_error(msg.str());
 }
 
@@ -839,7 +851,7 @@ double load_ratio(const roughness& surfaces, const solver_options& options, norm
     if (n / 2 < min_nodes || !in_asymptotic_range(k2, n / 2, method::product))
         throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
                                ": the coarse level n/2 is not in the asymptotic range of product integration "
-                               "for the normal kernel; increase n or use method 'product'");
+                               "for the normal kernel; " + coarse_level_advice(k2, n));
     const double coarse = solve_normal(k2, n / 2, method::product, cache).lambda;
     return richardson(solve_normal(k2, n, method::product, cache).lambda, coarse);
 }

@@ -253,7 +253,7 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
                 std::ostringstream msg;
                 msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
                     << "its full-stick load Q(c0 = 1) = " << at_full_stick << " plus its rounding " << rounding
-                    << " is not below |Q|; increase n";
+                    << " is not below |Q|; " << (n_ < max_nodes ? "increase n" : "n is at its largest: a larger load");
                 throw resolution_error(msg.str());
             }
         };
