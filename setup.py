@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """pip's build of the Python package roughroll (pyproject.toml): the extension roughroll._roughroll
 is built by the project's own CMakeLists.txt (the target roughroll_python, with roughroll_core),
 not by setuptools, and copied into the wheel beside python/roughroll/*.py.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Timings of the solvers on Fig. 2's moderate scene (T = A = 0.5, equal kernels) and on
 // an unequal-kernel scene. Run: build/bench/bench_roughroll --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true   (medians are what docs/performance.md quotes)

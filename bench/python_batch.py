@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Timing of roughroll.solve(..., threads=k): one batch of creep points on 1 and 2 threads.
 
 Usage: PYTHONPATH=build/python /usr/bin/python3 bench/python_batch.py [REPEATS]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target on the profile CSV reader: roughroll::parse_profile_csv on arbitrary bytes,
 // then, on every profile it accepts, the condition checks and the periodic spline.
 //

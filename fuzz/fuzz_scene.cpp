@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target on the scene reader: roughroll::parse_scene on arbitrary bytes, then
 // roughroll::load_of on every scene it accepts, without and with an override Q.
 //

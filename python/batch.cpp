@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Many creep points on several threads: roughroll.solve(..., threads=k). Each point is an
 // independent scene_point (its own contact, workspaces and GSL objects: the library keeps no
 // global state), so the points can be solved concurrently; each thread takes the next job

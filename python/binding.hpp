@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The extension roughroll._roughroll (pybind11), one file per idea:
 //   roughroll_module.cpp  the module and the translation of roughroll's errors into Python's
 //   scene_binding.cpp     scenes, a point (the program's JSON), creep curves, tractions

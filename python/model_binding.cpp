@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pieces of the model a reader of the paper meets on the way to a creep point, for the
 // notebooks and for anyone checking a step by hand:
 //   kernel(terms, z):       K*(z) = sum T exp(-A |z|) sgn z, (3.23)-(3.24) with E1, E2 (kernel.hpp);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The module roughroll._roughroll and the bridge from roughroll's typed errors
 // (base/error.hpp) to the Python exceptions of roughroll._errors:
 //   input_error -> InputError (a ValueError), resolution_error -> ResolutionError,

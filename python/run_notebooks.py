@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Executes every notebook of a folder (default: notebooks/) with nbclient and fails on any error.
 
 Usage: run_notebooks.py [--output DIR] [FOLDER] [NAME ...]   (CTest python_notebooks;

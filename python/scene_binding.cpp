@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scenes, points, creep curves and tractions for Python: the same library calls as the
 // command line's `point`, `curve` and `traction` (src/cli), so the same numbers.
 //   point:    solve_point (io/scene_point.hpp): the width of a physical scene (formulation 2(j)),

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The CMake build and the autotools build compile the same .cpp files: compares the sources
 # of the library (roughroll_core), the program (roughroll), the test programs (every
 # add_executable of tests/ and validation/, `foreach(name ...)` lists expanded) and the shell

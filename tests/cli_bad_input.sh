@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every kind of bad input makes `roughroll` exit 2 with exactly one line on stderr that
 # names the problem, and nothing on stdout. Usage: cli_bad_input.sh path/to/roughroll
 set -u

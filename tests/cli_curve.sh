@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `roughroll curve` with refused points (README.md "Creep curves", docs/robustness.md): a point
 # without an honest error estimate is a row with status `refused` and its computed fields empty,
 # one stderr line names it, the rest of the curve is computed, and the exit status is 3.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `roughroll curve --plot` and the gnuplot scripts of every command (issue 25, items 4 and 5):
 #  - curve --plot writes FILE.gp, FILE.svg and FILE.png beside the CSV (a whole PNG, gnuplot's
 #    stderr empty); several scenes overlaid (FILE-SCENE.csv each, equal to the scene's curve

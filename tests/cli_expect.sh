@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Sourced by the CLI tests (cli_bad_input.sh, cli_roughness.sh): the one check of a bad input.
 # expect NAME KEYWORD -- ARGS...: `$bin ARGS` exits 2 with one stderr line containing KEYWORD
 # (case-insensitive) and nothing on stdout. Needs $bin, $dir and $failures from the caller;

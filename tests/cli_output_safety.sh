@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Outputs are safe (issue 23, section 3): an image gnuplot could not write whole, or an output
 # file the user may not write, costs exit 2 with one stderr line naming the file, and the files
 # of an earlier run stay as they were.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `roughroll roughness SPEC [--json]` on the specs of data/roughness/: the JSON keys, and the
 # values of the two closed forms of docs/roughness-parameters.md (flat profile and sine profile,
 # linear decay) to 1e-10; then every kind of bad spec or profile CSV: exit 2, one stderr line

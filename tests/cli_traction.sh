@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `roughroll traction --no-plot` on scenes of data/: the CSV has its header and K rows,
 # and the tractions satisfy the paper's conditions on the grid:
 #   p >= 0;  |p1| <= f p (3.3, everywhere, to 1e-12);  p1 = f p on the slip zone (3.5, to 1e-12);

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every result names the code that made it (issue 25, item 3): `roughroll --version` prints
 # "roughroll X.Y.Z" (the VERSION file) and exits 0; every JSON output has "version": "X.Y.Z";
 # every CSV the program writes starts with the line "# roughroll X.Y.Z", and the curve CSV's

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs an already-built roughroll into a temporary prefix and builds tests/consumer against
 # it twice, with CMake's find_package(roughroll) and with pkg-config; runs both consumers.
 # Fails (non-zero) when the install, a build or a consumer's check fails.

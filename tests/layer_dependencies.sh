@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Dependencies point one way, from the command line down to the mathematics. The layers, from
 # the bottom (src/LAYER and include/roughroll/LAYER, the same names in both trees):
 #   base      errors, GSL handles, number formatting

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The README's C++ program compiles and tells the truth (issue 25, item 6): extracts the one
 # fenced ```cpp block of README.md, compiles it against the source tree's headers (it includes
 # only roughroll/roughroll.hpp) and the library just built, runs it on data/fig2a-T1.toml and

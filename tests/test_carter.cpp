@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Carter's closed form, as written in the literature: xi1 = (f a/R)(1 - sqrt(1 - Q/f)),
 // in the paper's units xi = (2f/pi)(1 - sqrt(1 - Q/f)) and (1 + c0)/2 = sqrt(1 - Q/f).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // chebyshev_projection (docs/formulation.md 8(e), "The coupled right side") against an independent
 // route: each coefficient by GSL's adaptive QAGP in t = acos r with the kinks as break points,
 // for a function with square-root kinks inside and square-root ends; a polynomial is reproduced.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Creep curves with a refused point (contact.hpp, curve_point; io/output.hpp, write_curve_csv):
 // a point without an honest error estimate is a refused row, and the curve goes on past it.
 // The scene: a very stiff normal layer (cylinder 2, T = 1e6, A = 1; docs/performance.md) with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The damped Newton of the zone ends (numerics/damped_newton.hpp): a root in three unknowns
 // against its closed form, the damping that keeps the iterate inside its domain, and the empty
 // answers (singular Jacobian, residual undefined at the start, no convergence).

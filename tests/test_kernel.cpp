@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Kernels (3.23)-(3.24) with errata E1, E2 and their moments against U_j sqrt(1 - x^2).
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Unit tests of the one-parameter limit's pieces (src/problems/one_parameter.cpp): the compliances
 // 2T/A^2, the symmetry of the normal solution, and p' from the normal equation against a
 // difference quotient of the pressure series.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The dense system's refined solve (numerics/linear_system.hpp): on a matrix near the last one
 // factorised it gives the fresh LU solution to rounding (the LU route is the independent
 // reference); a far matrix falls back to a fresh factorisation (the same solution bit for bit);

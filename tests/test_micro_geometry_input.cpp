@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The micro-geometry reader (micro_geometry_input.hpp) and the profile CSV reader
 // (profile_csv.hpp): good input read exactly, every kind of bad input one message naming the
 // file and the key or line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gauss-Chebyshev rule (4.6)-(4.7) and the U-series tools built on it.
 #include <cmath>
 #include <vector>

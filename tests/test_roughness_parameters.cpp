@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The roughness parameters (2.6)-(2.15) against closed forms derived by hand
 // (docs/roughness-parameters.md, "Closed forms"), and the paper's conditions.
 #include "roughroll/layer/roughness_parameters.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // base/text: messages as one line of valid UTF-8, cut echoes, and the one rule by which a
 // number written as text is read (issue 11).
 #include "roughroll/base/text.hpp"

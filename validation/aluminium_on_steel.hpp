@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bentall and Johnson's pair in the validation tests: aluminium (roller 1, shear modulus 23 GPa,
 // Poisson's ratio 0.31) on steel (82 GPa, 0.28), the pair of scripts/reproduce.
 #pragma once

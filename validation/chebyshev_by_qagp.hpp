@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A Chebyshev coefficient of a function with kinks, by GSL's adaptive QAGP: the reference the
 // projections of numerics/chebyshev_projection and the full coupling's pressure are checked
 // against (a route that shares nothing with them but the definition).

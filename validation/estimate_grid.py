@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Random-scene study of roughroll's printed error estimates (issue 23, section 1).
 
 For each case (scene, Q, method, n) runs

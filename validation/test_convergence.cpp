@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Convergence of the rough solution as n grows. The reference comes from the other
 // discretisation (product integration at large n), not from the same scheme, and the
 // observed orders are measured: about 2 for the paper's node sums (the kernels jump at

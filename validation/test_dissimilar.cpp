@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dissimilar rollers (docs/formulation.md section 8), by the independent low-order route only
 // (test_zones_low_order.hpp with the beta_D term of Johnson's approximation: pressure
 // uncoupled, v = xi - L1[p1] + beta_D p). The product does not solve this problem yet; these

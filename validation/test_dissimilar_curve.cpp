@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Creep curves of dissimilar rollers over -f..f (docs/formulation.md 8(h), 8(j) items 4a and 9):
 // aluminium on steel, f = 0.05, n = 32, Johnson's level. Each row is solved as contact::point
 // would; five-zone rows start from the previous row's ends (continued in the load), a start only.

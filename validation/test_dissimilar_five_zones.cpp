@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Five zones of dissimilar rollers (docs/formulation.md 8(g), 8(j)): slip-, stick, slip+, stick,
 // slip- (beta_D > 0), by the product's two-zone collocation and Newton in the four ends, against
 // the independent grid route (no structure assumed), free rolling and Bentall and Johnson's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dissimilar rollers solved by the product (docs/formulation.md section 8, Johnson's approximation):
 //   beta_D = 0 is the paper's problem by exactly the same calls, at both coupling levels, for every
 //   method, smooth and rough (8(d)); equal materials written per cylinder are the one-material scene.

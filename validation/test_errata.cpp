@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The errata of docs/formulation.md (section 4) that change a number, each shown by solving the
 // paper as printed next to the consistent formulation the library solves. The printed
 // variants live here only: the library never solves them.

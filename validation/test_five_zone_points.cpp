@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roughroll point --json` at the five-zone loads of dissimilar rollers (docs/formulation.md 8(j)):
 // free rolling and Bentall and Johnson's driven Q/f = +0.75 (f = 0.05, data/aluminium-on-steel.toml,
 // n = 32), against the library's own search (dissimilar_zones::five_zones without a guess), which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Full coupling of dissimilar rollers (docs/formulation.md 8(e)): the alternation of (D1) and (D2).
 //   - the converged pair is self-consistent: the pressure's Chebyshev-U coefficients b solve the
 //     projection of (D1), b_{j-1} = (2/pi) lambda delta_j1 + c_j[beta_D p1] and (2/pi) lambda e = -c_0[beta_D p1],

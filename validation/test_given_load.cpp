@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Physical scenes (physical_scene.hpp): Hertz's and Carter's dimensional formulas for smooth
 // rollers, the half-width found for a given load carrying exactly that load, the paper's
 // convention (a = a_H) reproducing the dimensionless problem, and the units scaling out.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Issue 10: an error estimate that never under-reports. Over a grid of stiff layers (T up to
 // 1e6, A from 1e-3 to 30, on either cylinder, in either direction, so that the kernels are
 // unequal), the unequal-kernel scene of data/, and loads from near full stick to near gross

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one-parameter limit (docs/formulation.md, "The one-parameter limit"): the two-parameter
 // solution converges to it as A grows with 2T/A^2 fixed, at a rate that tends to O(1/A); the
 // limit solver converges at order 2 in n; eps -> 0 gives Hertz/Carter; large eps gives the

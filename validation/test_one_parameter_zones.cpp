@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Issue 12, the one-parameter limit with a normal layer softer than the tangential one
 // (eps2 > eps1) near gross sliding (docs/formulation.md 6 and 7(g)): G'(-1) = -infinity, the
 // paper's zone carries p1 > f p at its leading end from Q/f ~ 0.997 on (stick margin -1.1e-3 at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Physical claims of the paper and of docs/formulation.md (2(c), 2(h)), on every solution:
 // P_H/P2 > 1 (roughness adds compliance, E2), creep above Carter's (Sec. 4), the
 // inequalities (3.3)-(3.4), and the special loads Q = 0, |Q| = f, Q < 0.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Issue 23: rows that cannot be answered are refused as rows (resolution_error, which creep_curve
 // absorbs) rather than aborting a curve; the traction and slip velocity of dissimilar rollers up to the
 // trailing edge r = 1 (W of the blended zones, docs/formulation.md 8(j) item 3); small beta_D refused

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The smooth-cylinder limit: the numerical scheme itself (not the closed-form path)
 // reproduces Carter's xi = (2f/pi)(1 - sqrt(1 - Q/f)), (1 + c0)/2 = sqrt(1 - Q/f) to 1e-12,
 // for both methods, several n, and Q/f from 1e-6 to 1 - 1e-6 (and the mirror Q < 0).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stiff and extreme cases: every case either returns a result whose error estimate is
 // honest (not below the difference from a finer solution) with the paper's inequalities
 // holding, or is refused with a resolution_error naming why. Never a silent wrong number.

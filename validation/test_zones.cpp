@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The zone solver (docs/formulation.md section 7) and the independent low-order route
 // (test_zones_low_order.hpp: full traction on a uniform grid, Kalker's upwind slip, rolling
 // to the steady state, no zones assumed). Where the paper's structure holds it returns

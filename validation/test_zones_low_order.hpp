@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The independent, low-order route to the tangential problem (docs/formulation.md 7(f)):
 // no assumption about the zone structure, in the way of Kalker's CONTACT. The contact [-1, 1]
 // is cut into N equal cells, the traction p1 is constant on each, and the tangential

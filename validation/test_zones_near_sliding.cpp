@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Issue 12 near gross sliding (docs/formulation.md 7(d)): 1 - |Q|/f from 1e-9 down to 1e-15, on
 // scenes where the paper's zone fails there (G'(-1) < 0: unequal kernels with both cylinders
 // rough, and one stiff tangential layer T = 100, A = 1 whose G is least at r* = -0.94). At every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scenes where the paper's single stick zone fails its checks (docs/formulation.md 7(c)):
 // unequal kernels with both cylinders rough, K1* far above K2* near the edge, so G'(-1) < 0.
 // Found by a scan of random scenes, not tuned; shared by the zone-search validations.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // roughroll's public interface in one include: what a program on the library needs for the
 // rolling contact of a scene (README.md, "A program on the library").
 //

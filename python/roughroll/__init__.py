@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness.
 
 The C++ library of the project (the consistent formulation of Pauk & Wozniak's model,

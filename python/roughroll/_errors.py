@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """roughroll's errors as Python exceptions.
 
 Each carries the one-line message the command line prints after ``roughroll: error:``

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Result objects: a creep point with every field of ``roughroll point SCENE --json``."""
 
 import copy

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Scene and spec text from Python dicts, so that a dict is checked by the same code as a file.
 
 The dict is written as TOML (every value as it is: an int stays an integer, a float a float,

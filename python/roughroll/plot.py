@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Plots of roughroll's results on matplotlib: creep curves, tractions and slip velocities.
 
 Each function draws on the given Axes (a new figure's when ``ax`` is None) and returns it, so

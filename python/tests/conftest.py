@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Shared fixtures: the program built beside the module (for agreement tests) and the data folder.
 
 CTest (python/CMakeLists.txt) sets PYTHONPATH to the build's module folder, ROUGHROLL_PROGRAM to

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The module and the program give the same numbers, bit for bit: points (every field of the
 JSON but the wall time), curves (the CSV's shortest round-trip digits parse to the same
 doubles), tractions, roughness parameters; scenes from dicts equal scenes from files."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Every bad input of docs/robustness.md that applies to the Python API raises the matching
 exception with the program's one-line message (word for word, compared with the program's
 stderr); Python-only mistakes (wrong types, None, NaN, huge arrays) raise and never crash."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Scenes and points through a real Dask cluster: a scheduler and two workers, separate processes
 on 127.0.0.1 started here (in another working folder, with the module on PYTHONPATH only), tasks
 that capture scenes and return points equal to the serial loop's."""

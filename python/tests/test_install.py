@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """`cmake --install` puts the package where Debian's python3 finds it: under the prefix, in the
 folder ROUGHROLL_PYTHON_INSTALL_DIR, which is on sys.path for the default prefix /usr/local."""
 

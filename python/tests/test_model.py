@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The model's pieces against independent routes: Carter's closed form written out here, the
 kernel formula (3.23)-(3.24), the quadrature rule (4.6)-(4.7) and Hertz's solution."""
 

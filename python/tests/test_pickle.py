@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Points, curves, tractions and scenes travel: pickle, copy and deep-copy give equal objects, and
 a scene unpickled elsewhere solves to the same numbers.  Scenes as templates (to_dict, replace)
 and a repr that tells scenes apart."""

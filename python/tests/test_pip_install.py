@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """`pip install .` works offline in a venv over Debian's python3 (pyproject.toml, setup.py driving
 the project's CMake), and the installed package imports and solves from any folder.
 

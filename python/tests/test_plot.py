@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """roughroll.plot (issue 25, 4): each drawing written to a PNG that is whole and not blank.
 
 The figures are looked at by a person (docs/reproduction.md); here each must draw without an

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The batch call solves on several threads with exactly the serial loop's numbers, and the GIL
 is released while the library solves."""
 

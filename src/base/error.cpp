@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Subcommands of the CLI that live in their own files, and the scene options they share.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roughroll convergence SCENE`: error against run time for every method (the
 // work-precision study of docs/performance.md). The reference is the extrapolated method
 // at n = 512, checked against an independent route: the paper's node-sum scheme at 300

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roughroll figure 2a|2b`: the paper's Fig. 2, creep force-creep curves xi/f against Q/f
 // for the roughness parameters of its caption, with Carter's smooth curve for comparison.
 // G of (3.25) does not involve f, so the stick problem divided by f depends on Q/f alone:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The roughroll command line: scene files in, creep points, curves and figures out.
 // Exit status: 0 success, 2 invalid input or a case beyond reach (one line on stderr).
 #include <unistd.h>

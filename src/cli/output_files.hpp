@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the subcommands that write files share: output paths checked before any work, files
 // written whole or not at all, paths quoted for gnuplot and the shell, and the gnuplot run.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roughroll roughness SPEC [--json]`: the roughness parameters k, t, alpha of (2.11)-(2.15)
 // of a micro-geometry spec (micro_geometry_input.hpp), with the averages (2.9) they use and the
 // quadrature's error estimates. SI units: k in Pa/m, t in Pa m, alpha in 1/m.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `roughroll traction SCENE`: the tractions of one creep point over the contact, for a
 // reader of the paper to see (3.2)-(3.5) at work. On a grid of r = x1/a over [-1, 1]:
 // the normal pressure p(r) = a p2/P2, the tangential traction p1(r) = a p1/P2 of (3.15),

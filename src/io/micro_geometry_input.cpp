@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/io/micro_geometry_input.hpp"
 #include "micro_geometry_table.hpp"
 

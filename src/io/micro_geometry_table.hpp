@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The micro-geometry table of a TOML document (a spec file's root, or a physical scene's
 // [cylinderN.micro_geometry]), read by the keys of roughroll/io/micro_geometry_input.hpp.
 // Internal to the library (not installed): toml++ stays out of the public headers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Strict reading of TOML input files (scenes, roughness specs): every key known, every value
 // of the right type and range, every problem one line naming the file and the dotted key.
 // Internal to the library (not installed): the readers of scene.cpp and micro_geometry_input.cpp.

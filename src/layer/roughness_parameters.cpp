@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/layer/roughness_parameters.hpp"
 
 #include <algorithm>

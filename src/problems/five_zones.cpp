@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Five zones of dissimilar rollers (docs/formulation.md 8(g), 8(j) items 3-4): slip -1, stick,
 // slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling, of a driven roller 1
 // below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/numerics/root_search.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A program outside roughroll, built against an installed copy by tests/install_consumer.sh
 // (with find_package(roughroll) and with pkg-config). It parses a scene (which links toml++
 // through the library), solves the smooth scene's creep point with the numerical scheme itself

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Typed errors of roughroll and the bridge from GSL status codes to them.
 //
 // GSL's default error handler aborts the process; roughroll turns it off once

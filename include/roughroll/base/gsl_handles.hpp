@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RAII owners of GSL objects: std::unique_ptr with GSL's own _free functions.
 #pragma once
 

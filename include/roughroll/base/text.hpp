@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How numbers and messages are written as text, everywhere in roughroll, and the one rule
 // by which a number written as text is read.
 #pragma once

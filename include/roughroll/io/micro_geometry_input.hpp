@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading a micro-geometry from TOML, strictly: every key known, every value of the right type
 // and range, every problem one line naming the file and the key, as the scene reader does.
 // The keys, the same at a spec file's root and in a table of a scene:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Results as the user reads them: one creep point as JSON or text, a creep curve as CSV.
 #pragma once
 

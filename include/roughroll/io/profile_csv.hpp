@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A measured profile h0(x1) of (2.1) from CSV text: one period of `x1, h0` samples in metres.
 // The rules (docs/roughness-parameters.md, "Measured profiles"):
 //   - lines end in \n (a \r before it is dropped); blank lines and lines whose first

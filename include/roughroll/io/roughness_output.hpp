@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The roughness parameters (2.11)-(2.15) of a micro-geometry as JSON: what `roughroll
 // roughness SPEC --json` prints and the Python module's roughroll.roughness returns.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scene files (TOML): the inputs of one rolling contact, checked strictly.
 //
 //   label = "Fig. 2a, curve 2"   # optional, names the scene in outputs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One creep point of a scene as the command line (`roughroll point`) and the Python module
 // report it: the solver overrides checked like the scene file's, the contact width of a
 // physical scene (docs/formulation.md 2(j)), the point of (3.21)-(3.22) for the load, its

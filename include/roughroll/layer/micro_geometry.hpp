@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The micro-geometry of a rough surface layer, Section 2 of the paper: the layer
 //   Omega = {(x1, x2): h0(x1) < x2 < H}                                        (2.1)
 // of mean thickness H over an l-periodic profile h0, the l-periodic micro-shape function h,

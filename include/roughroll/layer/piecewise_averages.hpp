@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The averages (2.9) of the layer integrals (2.6)-(2.8) piece by piece, without adaptive
 // quadrature: the route for measured profiles, whose profilometer traces have 1e4 to 1e6
 // samples (docs/roughness-parameters.md, "Piecewise rule"). Two ideas:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The roughness parameters k, t and alpha of (2.10)-(2.15) from the micro-geometry, by GSL's
 // adaptive quadrature or, for measured profiles, a fixed rule piece by piece
 // (piecewise_averages.hpp). For each x1 the layer integrals over x2 in [h0(x1), H]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Carter's closed form for smooth cylinders (the T = 0 limit of (3.19)-(3.22)):
 //   lambda = P_H/P2 = 1,  p(r) = (2/pi) sqrt(1 - r^2),
 //   (1 + c0)/2 = sqrt(1 - Q/f),  xi = (2 f/pi) (1 - sqrt(1 - Q/f)),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dissimilar rollers: Dundurs' coupling parameter and the level of coupling (docs/formulation.md
 // section 8). With C = (1 - nu1)/mu1 + (1 - nu2)/mu2,
 //   beta_D = ((1 - 2 nu1)/mu1 - (1 - 2 nu2)/mu2) / (2 C)                    8(a), roller 1 = cylinder1

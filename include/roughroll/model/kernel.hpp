@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The roughness kernels (3.23)-(3.24), with errata E1 and E2:
 //   K_i*(z) = [T_1^(i) exp(-A_1^(i) |z|) + T_2^(i) exp(-A_2^(i) |z|)] sgn z,
 // i = 1 tangential, i = 2 normal. The overall sign is + (E2: roughness adds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Physical scenes: materials, radii and loads in SI units, the roughness as the stiffness
 // k, t of (2.10), and the way from them to the dimensionless problem and back.
 //   mu = E / (2 (1 + nu)),  R = R1 R2 / (R1 + R2)                       (quasi-identical materials)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dimensionless roughness parameters of the two-parameter model, (3.26):
 //   T_beta^(i) = a mu / (8 (1 - nu) t_beta^(i)),   A_beta^(i) = a alpha_beta^(i),
 // i = 1 tangential, i = 2 normal; beta = 1, 2 the cylinder.

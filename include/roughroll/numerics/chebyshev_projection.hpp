@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The truncated Chebyshev series of a function with square-root kinks at known points
 // (docs/formulation.md 8(e), "The coupled right side"):
 //   P_N g(r) = sum_{j<=N} c_j T_j(r),  c_j = (2 - delta_j0)/pi int_0^pi g(cos t) cos(j t) dt.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The discrete operators shared by the normal (4.2) and tangential (4.4) systems:
 // row m is the collocation point s_m, column k the nodal unknown at eta_k.
 //   Cauchy term:  (1/pi) w_k / (eta_k - s_m)           (exact for the interpolant)

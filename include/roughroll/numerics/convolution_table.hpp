@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The convolution of a kernel with a weighted Chebyshev-U series, tabulated once so that it
 // costs O(1) per point (G of (3.25), E8, whose points move with c0 while the function does not):
 //   D(r) = int_{-1}^{1} sqrt(1 - eta^2) phi(eta) K(eta - r) d eta,  phi = sum_{j<n} b_j U_j,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Damped Newton iteration in k unknowns with a forward-difference Jacobian: the search for the
 // ends of the stick zones (docs/formulation.md 7(e), step 2, and 8(j) item 3). For x in R^k,
 //   J_ij = (F_i(x + h_j e_j) - F_i(x)) / h_j,   J dx = -F(x)   (GSL's LU),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An error bound for one quantity from three levels of a discretisation, n_0, 2 n_0, 4 n_0
 // nodes (docs/performance.md, "How the error estimates are made"). With the differences
 //   d1 = v_1 - v_0,   d2 = v_2 - v_1,   rho = d1/d2,

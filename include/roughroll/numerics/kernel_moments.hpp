@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Moments of the roughness kernel against the Chebyshev-U basis, for the product method
 // ((4.2), (4.4)) and G of (3.25) (E8): the kernel of model/kernel.hpp integrated exactly
 // across its jump.

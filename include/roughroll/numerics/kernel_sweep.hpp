@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Product integration of the kernel against many functions at many points in O(q n^2):
 //   out(m, v) = int_{-1}^{1} g_v(eta) sqrt(1 - eta^2) K(eta - x_m) d eta,
 // for points x_0 >= x_1 >= ... in [-1, 1] and functions g_v given through their values.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The least value of a function smooth inside [-1, 1]: where the stick zone shrinks to a point
 // at gross sliding, v = xi + f G >= 0 with equality at the point where G is least
 // (docs/formulation.md 7(d)). Sampled at `samples` points (its values taken together, as a

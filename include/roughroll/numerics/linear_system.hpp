@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A dense square system A x = b solved by GSL's LU (gsl_linalg_LU_decomp/solve), with a
 // singularity test: the reciprocal condition number of the U factor.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The discretisations of the kernel terms of (4.2) and (4.4).
 //   paper:   the node sum  sum_k w_k phi_k K(eta_k - s_m)  of (4.2), (4.4) as printed.
 //   product: product integration, int phi_n(eta) sqrt(1-eta^2) K(eta - s_m) d eta with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gauss-Chebyshev quadrature of the second kind, (4.6)-(4.7), and the
 // Chebyshev-U series that interpolates a function known at its nodes.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A scalar root by gsl_root_fsolver_brent, GSL's iterate-then-test loop: the root search
 // for c0 at a given Q (Sec. 4, after (4.5)) and for the half-width a at a given load
 // (physical_scene.hpp). Exceptions thrown by the function pass through GSL's C frames safely.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A function of r in [-1, 1] kept as Chebyshev series in theta = acos r on P equal panels of
 // [0, pi], the representation that convolution_table (G of (3.25)) and u_series_table (the
 // pressure (4.1) in W of 8(g)) share. On panel j, theta in [j L, (j+1) L] with L = pi/P and

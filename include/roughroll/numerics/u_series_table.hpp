@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The weighted U-series of a traction, p(r) = sqrt(1 - r^2) sum_{j<n} b_j U_j(r) ((4.1), the
 // pressure), tabulated so that a value costs O(1) instead of the n steps of Clenshaw's recurrence:
 // W of the blended stick zone (8(g)) integrates p adaptively, hundreds of thousands of values per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One scene's rolling contact: the normal problem solved once (Hertz's closed form
 // when the normal kernel is empty) and shared by every creep point of a curve.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The half-width a of a physical scene (docs/formulation.md 2(j)): the width at which the
 // model carries the given load P2, lambda(T(a), A(a)) = (a / a_H(P2))^2, found by Brent on
 // the normal problem alone (on a cheap level first, then polished); or the paper's a = a_H.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dissimilar rollers in Johnson's approximation (docs/formulation.md section 8): the pressure of
 // the uncoupled normal problem, and the tangential problem (D2) with Dundurs' forcing,
 //   v(r) = xi - L1[p1](r) + beta_D p(r);  stick: v = 0, |p1| <= f p;  slip: p1 = sigma f p, sigma v > 0;

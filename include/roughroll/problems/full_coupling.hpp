@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Full coupling of dissimilar rollers (docs/formulation.md 8(c), 8(e)): the normal problem (D1)
 // and the tangential problem (D2) solved together by alternation at a fixed width,
 //   (D1)  L2[p](r) + beta_D p1(r) = -(2/pi) lambda (r + e),     int p = 1,

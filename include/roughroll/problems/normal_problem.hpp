@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The normal problem (3.19)-(3.20) with a = a_H, discretised by (4.2)-(4.3), (4.6)-(4.7):
 //   gamma_0n + sum_k [(1/pi) w_k/(eta_k - s_m) + kernel_mk] phi_k + (2/pi) lambda s_m = 0,
 //   sum_k w_k phi_k = 1,

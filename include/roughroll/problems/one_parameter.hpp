@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one-parameter (Winkler-layer) model of the paper's reference [2]: the limit
 // t^(i) -> 0 of the two-parameter model, T, A -> infinity with 2T/A^2 fixed
 // (docs/formulation.md, "The one-parameter limit"). Each kernel term acting on a smooth p

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The zones where the physics puts them in the one-parameter limit (docs/formulation.md 7(g)):
 // the complementarity form of (3.2)-(3.4) for the Winkler-layer operator H + eps1 d/dr, for
 // Q >= 0 (Q < 0 is the mirror). The structures solved:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tangential problem (3.21)-(3.22) with errata E4-E8. The stick zone is the
 // leading part [-1, c0] of the contact, r = rho (t + 1) - 1 with rho = (1 + c0)/2 (E4),
 // and p1 = f p + q0 there, p1 = f p on the slip zone (3.15). In the stick variable t:

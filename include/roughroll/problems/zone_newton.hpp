@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ends of one stick zone by Newton (docs/formulation.md 7(e), step 2; 7(g) for the
 // one-parameter limit): in the zone's midpoint m and u = log rho, rho the half-length, on
 //   F_0 = log(-rho (pi/2) psi_0 / (f - |Q|))   (the load's gap f - Q(s, c) = -rho int q, relative),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tangential problem with the zone structure found, not assumed (docs/formulation.md,
 // section 7). The complementarity form of (3.2)-(3.4), for Q >= 0 (Q < 0 is the mirror):
 //   stick zone:  v = xi - L1[p1] = 0,          |p1| <= f p                     (3.2), (3.3)
