@@ -695,20 +695,24 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         bool extrapolated;
         double* out;
     };
+    // Each level's ends are Newton's within zone_end_resolution, so the difference of two levels
+    // carries up to twice that: below it, a difference is that noise, not a ratio (free rolling of
+    // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11).
+    const double ends_floor = floor.c0 + 2.0 * zone_end_resolution;
     const quantity qs[] = {
         // (At full coupling P_H/P2 is level n's, not extrapolated: contact::normal.)
         {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, reported_ != nullptr && !coupled_,
          &e.lambda},
         {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, false, &e.xi},
         // The ends carry Newton's resolution too (dissimilar_zones.hpp).
-        {"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0 + zone_end_resolution, false, &e.c0},
-        {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, floor.c0 + zone_end_resolution, false,
+        {"c0", {at[0].c0, at[1].c0, at[2].c0}, ends_floor, false, &e.c0},
+        {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, ends_floor, false,
          &e.start},
         // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
         // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
-        {"the second stick zone's end", {at[0].end2, at[1].end2, at[2].end2}, floor.c0 + zone_end_resolution, false,
+        {"the second stick zone's end", {at[0].end2, at[1].end2, at[2].end2}, ends_floor, false,
          &e.c0},
-        {"the second stick zone's start", {at[0].start2, at[1].start2, at[2].start2}, floor.c0 + zone_end_resolution,
+        {"the second stick zone's start", {at[0].start2, at[1].start2, at[2].start2}, ends_floor,
          false, &e.start}};
     // The second chance of estimate_from, one level finer (n/2, n, 2n), where n is the finest level
     // and the solution's checks hold: an n/4 that oscillates (the second stick zone's end of the
