@@ -205,3 +205,18 @@ TEST(DissimilarEnds, NewtonNoiseBetweenLevelsIsNotDivergence) {
     EXPECT_TRUE(b.resolved);
     EXPECT_GE(b.value, 1.08e-11);
 }
+
+// The ground rollers at Q/f = 0.9856 (a row of the README's curve): c0 over n/4, n/2, n is estimated
+// at 9.5e-8, and n/2, n, 2n still shrink but slowly (-6.2e-10, -5.1e-10, ratio 1.2). The fourth level
+// had refused the point (no visible order); the bounded rule's tail with that ratio bounds it, and the
+// estimate holds against product integration at n = 512 (4.7e-10 away; n = 1000 agrees to 2e-12).
+TEST(RefusedRows, SlowlyShrinkingFinerLevelsAreBoundedNotRefused) {
+    scene s = read_scene(ROUGHROLL_DATA "/steel-rollers-ground.toml");
+    const scene_point p = solve_point(s, 0.29568);
+    ASSERT_TRUE(p.estimate.has_value());
+    ASSERT_TRUE(p.solution.checks.hold());
+    contact fine(p.settled.surfaces, p.settled.friction, solver_options{512, method::product});
+    const tangential_solution f = fine.point(0.29568);
+    EXPECT_LE(std::fabs(p.solution.c0 - f.c0), p.estimate->c0);
+    EXPECT_LE(std::fabs(p.solution.xi - f.xi), p.estimate->xi);
+}
