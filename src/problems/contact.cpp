@@ -378,29 +378,9 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
                 const int i = static_cast<int>(&q - qs.data());
                 const double v = i == 0 ? finer_->normal_level().lambda : i == 1 ? above->xi : swept ? above->Q : above->c0;
                 const three_levels finer{q.v.middle, q.v.finest, v};
-                error_bound fb = bound_error(finer, order, reported_value{1, extrapolated}, q.floor);
+                error_bound fb = confirm ? confirm_error(finer, order, extrapolated, q.floor)
+                                         : bound_error(finer, order, reported_value{1, extrapolated}, q.floor);
                 if (confirm) {
-                    const double d1 = finer.middle - finer.coarsest, d2 = finer.finest - finer.middle;
-                    if (!fb.resolved && d1 * d2 < 0.0 && std::fabs(d2) <= std::fabs(d1)) {
-                        // n/2, n, 2n alternate without growing, after n/4, n/2, n converged: level
-                        // n sits in a band of the last two steps' width around the limit (a swept
-                        // Q(c0) of data/steel-rollers-ground.toml at c0 = -0.65: -8.0e-11, +8.0e-11,
-                        // where n/4 -> n/2 moved by 1e-8). Twice the wider step, as the bounded rule.
-                        const double width = 2.0 * std::max(std::fabs(d1), std::fabs(d2));
-                        fb.value = (extrapolated ? std::fabs(d1) / (std::ldexp(1.0, order) - 1.0) : 0.0) + width + q.floor;
-                        fb.resolved = true;
-                        fb.asymptotic = false;
-                    } else if (!fb.resolved && d1 * d2 > 0.0 && std::fabs(d1) > std::fabs(d2)) {
-                        // n/2, n, 2n still shrink, too slowly to show an order (ratio r below 1.5):
-                        // the bounded rule's geometric tail, |d2| (1 + 2/(r - 1)), with that ratio
-                        // (the ground rollers' c0 at Q/f = 0.9856: -6.2e-10, -5.1e-10 after n/4, n/2, n
-                        // estimated 9.5e-8; the error against n = 1000 is 4.7e-10).
-                        const double r = std::fabs(d1 / d2);
-                        fb.value = (extrapolated ? std::fabs(d1) / (std::ldexp(1.0, order) - 1.0) : 0.0) +
-                                   std::fabs(d2) * (1.0 + 2.0 / (r - 1.0)) + q.floor;
-                        fb.resolved = std::isfinite(fb.value);
-                        fb.asymptotic = false;
-                    }
                     if (fb.resolved) {
                         fb.value = std::max(fb.value, b.value);
                         fb.asymptotic = fb.asymptotic && b.asymptotic;

@@ -48,6 +48,15 @@ struct error_bound {
 
 error_bound bound_error(const three_levels& v, int order, reported_value which, double rounding_floor);
 
+// The bound of the middle level (or Richardson's value from it and the coarsest, `extrapolated`)
+// from n/2, n, 2n, where n/4, n/2, n already gave an estimate that this fourth level confirms
+// (contact's estimates, docs/performance.md "A fourth level confirms"): bound_error's rule, and
+// where that sees no visible order, levels that alternate without growing (d1 d2 < 0,
+// |d2| <= |d1|: level n within twice the wider step of the limit) or that still shrink too slowly
+// to show an order (1 < d1/d2 < 1.5: the bounded rule's tail |d2| (1 + 2/(r - 1))); levels that
+// grow stay unresolved.
+error_bound confirm_error(const three_levels& v, int order, bool extrapolated, double rounding_floor);
+
 // The rounding floor of a quantity computed by a dense solve of order about n (LU with
 // partial pivoting, whose backward error is a small multiple of n eps in practice; the
 // growth factors of these diagonally dominated Cauchy systems are O(1)) or a sum of n terms:
