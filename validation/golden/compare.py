@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Compare two folders written by validation/golden/run (issue 24: pin the outputs before moving code).
+
+    validation/golden/compare.py REFERENCE NEW
+
+Every number must be identical, or have moved by no more than its error estimate: a JSON point's
+c0, xi, hertz_load_ratio and stick_start against its error_estimate entries, a curve row's c0, xi and Q
+against its *_error_estimate columns; a derived number (xi_over_f, the SI values) against the largest
+relative estimate of its point or row. Estimates themselves may change (listed). Timings and the
+version are ignored. Exit 0 when nothing moved outside its estimate, 1 otherwise; one line per change.
+"""
+import csv
+import json
+import math
+import sys
+from pathlib import Path
+
+IGNORED = {"seconds", "version"}
+ESTIMATED = {"c0": "c0", "xi": "xi", "hertz_load_ratio": "hertz_load_ratio", "stick_start": "stick_start"}
+
+
+def flatten(value, prefix=""):
+    if isinstance(value, dict):
+        for k, v in value.items():
+            yield from flatten(v, f"{prefix}.{k}" if prefix else k)
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            yield from flatten(v, f"{prefix}[{i}]")
+    else:
+        yield prefix, value
+
+
+def relative_scale(values, estimates):
+    """The largest relative estimate of a record: the allowance of its derived numbers."""
+    worst = 0.0
+    for key, est in estimates.items():
+        v = values.get(key)
+        if isinstance(v, (int, float)) and isinstance(est, (int, float)) and v != 0:
+            worst = max(worst, abs(est) / abs(v))
+    return worst
+
+
+class Report:
+    def __init__(self):
+        self.outside = 0
+        self.lines = []
+
+    def note(self, kind, where, text):
+        if kind == "OUTSIDE":
+            self.outside += 1
+        self.lines.append(f"{kind:9s} {where}: {text}")
+
+
+def compare_numbers(report, where, key, old, new, allowance):
+    if old == new or (isinstance(old, float) and isinstance(new, float) and math.isnan(old) and math.isnan(new)):
+        return
+    if not (isinstance(old, (int, float)) and isinstance(new, (int, float))) or isinstance(old, bool):
+        report.note("OUTSIDE", where, f"{key}: {old!r} -> {new!r}")
+        return
+    diff = abs(new - old)
+    kind = "within" if allowance is not None and diff <= allowance else "OUTSIDE"
+    report.note(kind, where, f"{key}: {old!r} -> {new!r} (moved {diff:.3g}, estimate {allowance if allowance is None else f'{allowance:.3g}'})")
+
+
+def compare_json(report, name, old, new):
+    old_flat, new_flat = dict(flatten(old)), dict(flatten(new))
+    old_est = old.get("error_estimate") or {}
+    new_est = new.get("error_estimate") or {}
+    scale = max(relative_scale(old, old_est), relative_scale(new, new_est))
+    for key in sorted(set(old_flat) | set(new_flat)):
+        if key.split(".")[-1] in IGNORED:
+            continue
+        if key not in old_flat or key not in new_flat:
+            report.note("OUTSIDE", name, f"{key} only in {'new' if key in new_flat else 'reference'}")
+            continue
+        o, n = old_flat[key], new_flat[key]
+        if o == n:
+            continue
+        if key.startswith("error_estimate"):
+            report.note("estimate", name, f"{key}: {o!r} -> {n!r}")
+            continue
+        allowance = None
+        if key in ESTIMATED and isinstance(old_est.get(key), (int, float)):
+            allowance = max(old_est[key], new_est.get(key) or 0.0)
+        elif isinstance(o, (int, float)) and not isinstance(o, bool) and scale > 0:
+            allowance = scale * abs(o)
+        compare_numbers(report, name, key, o, n, allowance)
+
+
+def read_csv(path):
+    lines = path.read_text().splitlines()
+    header = [l for l in lines if l.startswith("#") and not l.startswith("# roughroll ")]
+    rows = list(csv.DictReader([l for l in lines if not l.startswith("#")]))
+    return header, rows
+
+
+def number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def compare_csv(report, name, old_path, new_path):
+    old_header, old_rows = read_csv(old_path)
+    new_header, new_rows = read_csv(new_path)
+    if old_header != new_header:
+        report.note("OUTSIDE", name, "header lines differ")
+    if len(old_rows) != len(new_rows):
+        report.note("OUTSIDE", name, f"{len(old_rows)} rows -> {len(new_rows)}")
+        return
+    for i, (o, n) in enumerate(zip(old_rows, new_rows)):
+        if list(o) != list(n):
+            report.note("OUTSIDE", name, "columns differ")
+            return
+        estimates = {k[: -len("_error_estimate")]: number(v) for k, v in o.items()
+                     if k.endswith("_error_estimate") and v != ""}
+        new_estimates = {k[: -len("_error_estimate")]: number(v) for k, v in n.items()
+                         if k.endswith("_error_estimate") and v != ""}
+        values = {k: number(v) for k, v in o.items()}
+        scale = max(relative_scale(values, estimates), relative_scale(values, new_estimates))
+        for key in o:
+            if o[key] == n[key]:
+                continue
+            if key.endswith("_error_estimate"):
+                report.note("estimate", f"{name} row {i}", f"{key}: {o[key]} -> {n[key]}")
+                continue
+            ov, nv = number(o[key]), number(n[key])
+            allowance = None
+            if key in estimates and isinstance(estimates[key], float):
+                allowance = max(estimates[key], new_estimates.get(key, 0.0) or 0.0)
+            elif isinstance(ov, float) and scale > 0:
+                allowance = scale * abs(ov)
+            compare_numbers(report, f"{name} row {i}", key, ov, nv, allowance)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: compare.py REFERENCE NEW")
+    old_dir, new_dir = Path(sys.argv[1]), Path(sys.argv[2])
+    report = Report()
+    old_files = {p.relative_to(old_dir) for p in old_dir.rglob("*") if p.is_file()}
+    new_files = {p.relative_to(new_dir) for p in new_dir.rglob("*") if p.is_file()}
+    for missing in sorted(old_files ^ new_files):
+        report.note("OUTSIDE", str(missing), "only in " + ("new" if missing in new_files else "reference"))
+    for rel in sorted(old_files & new_files):
+        old_path, new_path = old_dir / rel, new_dir / rel
+        if old_path.read_bytes() == new_path.read_bytes():
+            continue
+        if rel.suffix == ".json":
+            try:
+                compare_json(report, str(rel), json.loads(old_path.read_text()), json.loads(new_path.read_text()))
+            except json.JSONDecodeError:  # a refusal's one line
+                report.note("OUTSIDE", str(rel), f"{old_path.read_text().strip()!r} -> {new_path.read_text().strip()!r}")
+        elif rel.suffix == ".csv":
+            compare_csv(report, str(rel), old_path, new_path)
+        else:
+            report.note("OUTSIDE", str(rel), f"{old_path.read_text().strip()!r} -> {new_path.read_text().strip()!r}")
+    print("\n".join(report.lines) if report.lines else "identical")
+    print(f"{len(old_files & new_files)} files compared; {report.outside} changes outside their estimates")
+    sys.exit(1 if report.outside else 0)
+
+
+if __name__ == "__main__":
+    main()
