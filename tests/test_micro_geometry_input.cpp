@@ -257,5 +257,40 @@ TEST(ProfileCsv, EachBadLine) {
     EXPECT_TRUE(csv_rejects("0,1\n1,\001\n", ":2", {"h0 '\\x01' is not a number"}));
 }
 
+// A measured profile as arrays (issue 25: Python's NumPy arrays of the CSV's columns): the same
+// samples as the CSV, and the CSV's rules, each sample named by its index.
+const std::string array_spec = "lambda0 = 1\nmu0 = 1\nH = 1\nl = 4\nprofile = \"measured\"\ndecay = \"linear\"\n";
+
+TEST_F(MeasuredSpec, ArraysAreTheCsvsSamples) {
+    write("profiles/p.csv", "x1,h0\n0,0.1\n1,0.2\n2,0.3\n3,0.2\n4,0.1\n");
+    write("spec.toml", measured_spec);
+    const micro_geometry csv = read_roughness_spec((dir_ / "spec.toml").string());
+    const micro_geometry arrays = parse_roughness_spec(
+        array_spec + "profile_x1 = [0, 1.0, 2, 3, 4]\nprofile_h0 = [0.1, 0.2, 0.3, 0.2, 0.1]\n", source, ".");
+    EXPECT_EQ(arrays.bottom.measured.x1, csv.bottom.measured.x1);  // the closing point dropped
+    EXPECT_EQ(arrays.bottom.measured.h0, csv.bottom.measured.h0);
+    EXPECT_EQ(arrays.bottom.measured.lines, (std::vector<int>{0, 1, 2, 3}));
+}
+
+TEST(MicroGeometryInput, ArrayMistakes) {
+    const std::string x4 = "profile_x1 = [0, 1, 2, 3]\n", h4 = "profile_h0 = [0.1, 0.2, 0.3, 0.2]\n";
+    EXPECT_TRUE(rejects(array_spec + x4, {"missing key 'profile_h0'"}));
+    EXPECT_TRUE(rejects(array_spec + x4 + "profile_h0 = [0.1, 0.2, 0.3]\n",
+                        {"'profile_x1' has 4 samples but 'profile_h0' has 3"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 1, 2]\nprofile_h0 = [0.1, 0.2, 0.3]\n",
+                        {"needs at least 4 samples", "'profile_x1' has 3"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 1, nan, 3]\n" + h4,
+                        {"'profile_x1' and 'profile_h0' at index:2: x1 = nan is not finite"}));
+    EXPECT_TRUE(rejects(array_spec + x4 + "profile_h0 = [0.1, inf, 0.3, 0.2]\n", {"index:1: h0 = inf is not finite"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 2, 1, 3]\n" + h4, {"index:2: x1 = 1 does not increase"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [1, 2, 3, 3.5]\n" + h4, {"index:0: the first sample must be at x1 = 0"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 1, 2, 5]\n" + h4, {"index:3: x1 = 5 is beyond the period l = 4"}));
+    EXPECT_TRUE(rejects(array_spec + x4 + "profile_h0 = [0.1, -0.2, 0.3, 0.2]\n", {"index:1: h0 = -0.2 is below 0"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 1, \"2\", 3]\n" + h4, {"'profile_x1[2]' must be a number"}));
+    EXPECT_TRUE(rejects(array_spec + "profile_x1 = 0\n" + h4, {"'profile_x1' must be an array of numbers"}));
+    EXPECT_TRUE(rejects(array_spec + x4 + h4 + "profile_csv = \"p.csv\"\n", {"not both"}));
+    EXPECT_TRUE(rejects(good + x4 + h4, {"'profile_x1' is not used by profile = \"sine\""}));
+}
+
 }  // namespace
 }  // namespace roughroll

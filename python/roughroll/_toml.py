@@ -56,6 +56,11 @@ def _value(v, path):
         return repr(x)
     if isinstance(v, (str, os.PathLike)):
         return _string(os.fspath(v) if not isinstance(v, str) else v)
+    if hasattr(v, "ndim") and hasattr(v, "tolist"):  # a NumPy array (a measured profile's x1, h0)
+        if v.ndim != 1:
+            raise TypeError(f"{_where(path)}: an array of {v.ndim} dimensions is not a scene value "
+                            "(give a one-dimensional array)")
+        v = v.tolist()
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_value(x, path) for x in v) + "]"
     if isinstance(v, Mapping):  # inside an array: an inline table

@@ -3,6 +3,7 @@
 #include "micro_geometry_table.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/io/profile_csv.hpp"
@@ -34,6 +35,18 @@ Kind choice(const toml::node& node, const std::pair<const char*, Kind> (&names)[
     fail(source, quoted(path) + " must be one of " + all + " (got \"" + echo(name) + "\")");
 }
 
+// An array of numbers (a measured profile's x1 or h0); each element is checked by the profile's
+// rules (profile_from_arrays), which name its index.
+std::vector<double> numbers_at(const toml::node& node, const std::string& source, const std::string& path) {
+    const toml::array* array = node.as_array();
+    if (array == nullptr) wrong_type(node, "an array of numbers", source, path);
+    std::vector<double> out;
+    out.reserve(array->size());
+    for (std::size_t i = 0; i < array->size(); ++i)
+        out.push_back(number_at(*array->get(i), source, path + "[" + std::to_string(i) + "]"));
+    return out;
+}
+
 constexpr std::pair<const char*, profile_kind> profile_names[] = {{"flat", profile_kind::flat},
                                                                   {"sine", profile_kind::sine},
                                                                   {"sawtooth", profile_kind::sawtooth},
@@ -49,8 +62,8 @@ constexpr std::pair<const char*, normal_factor> factor_names[] = {{"derived", no
 
 micro_geometry read_micro_geometry(const toml::table& table, const std::string& source, const std::string& path,
                                    const std::filesystem::path& base_dir) {
-    check_keys(table, {"lambda0", "mu0", "H", "l", "profile", "delta", "profile_csv", "micro_shape", "decay",
-                       "factor_2_12"},
+    check_keys(table, {"lambda0", "mu0", "H", "l", "profile", "delta", "profile_csv", "profile_x1", "profile_h0",
+                       "micro_shape", "decay", "factor_2_12"},
                source, path);
     const auto key = [&path](std::string_view name) { return join(path, name); };
     micro_geometry g;
@@ -79,7 +92,28 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
         fail(source, quoted(key("delta")) + " is not used by " + kind + " (only by \"sine\" and \"sawtooth\")");
     }
 
-    if (g.bottom.kind == profile_kind::measured) {
+    const bool has_arrays = table.contains("profile_x1") || table.contains("profile_h0");
+    if (g.bottom.kind == profile_kind::measured && has_arrays) {
+        // The samples as arrays (Python's NumPy arrays of the CSV's columns): both, and no file.
+        if (table.contains("profile_csv"))
+            fail(source, "give the measured profile as " + quoted(key("profile_csv")) + " or as " +
+                             quoted(key("profile_x1")) + " and " + quoted(key("profile_h0")) + ", not both");
+        const std::vector<double> x1 = numbers_at(required(table, "profile_x1", source, path), source, key("profile_x1"));
+        const std::vector<double> h0 = numbers_at(required(table, "profile_h0", source, path), source, key("profile_h0"));
+        if (x1.size() != h0.size())
+            fail(source, quoted(key("profile_x1")) + " has " + std::to_string(x1.size()) + " samples but " +
+                             quoted(key("profile_h0")) + " has " + std::to_string(h0.size()) +
+                             ": give one h0 per x1");
+        if (x1.size() < static_cast<std::size_t>(min_profile_samples))
+            fail(source, "a measured profile needs at least " + std::to_string(min_profile_samples) +
+                             " samples over one period: " + quoted(key("profile_x1")) + " has " +
+                             std::to_string(x1.size()));
+        // Sample i named by its index (from 0), as a CSV's by its line: "<source>: '...profile_x1' and
+        // '...profile_h0' at index:3: x1 = ... does not increase".
+        const std::string where =
+            source + ": " + quoted(key("profile_x1")) + " and " + quoted(key("profile_h0")) + " at index";
+        g.bottom.measured = profile_from_arrays(x1, h0, where, g.material.l);
+    } else if (g.bottom.kind == profile_kind::measured) {
         const std::string& file = string_at(required(table, "profile_csv", source, path), source, key("profile_csv"));
         if (file.empty()) fail(source, quoted(key("profile_csv")) + " must not be empty");
         const std::filesystem::path csv = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file)
@@ -90,8 +124,10 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
             // The CSV's own message names its file and line; the prefix names the spec and key.
             fail(source, quoted(key("profile_csv")) + ": " + e.what());
         }
-    } else if (table.contains("profile_csv")) {
-        fail(source, quoted(key("profile_csv")) + " is not used by " + kind + " (only by \"measured\")");
+    } else {
+        for (const char* name : {"profile_csv", "profile_x1", "profile_h0"})
+            if (table.contains(name))
+                fail(source, quoted(key(name)) + " is not used by " + kind + " (only by \"measured\")");
     }
     // The layer's range names neither file nor key by itself: both here, with the keys to change.
     const std::string range = layer_range_violation(g.material);

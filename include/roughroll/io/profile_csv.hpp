@@ -18,6 +18,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "roughroll/layer/micro_geometry.hpp"
 
@@ -28,6 +29,12 @@ constexpr int min_profile_samples = 4;
 
 // Parses CSV text for a profile of period l (finite, > 0); `source` names it in messages.
 profile_samples parse_profile_csv(std::string_view text, const std::string& source, double l);
+
+// The same profile from arrays of x1 and h0 (a scene's profile_x1 and profile_h0, Python's NumPy
+// arrays), by the same rules from x1 = 0 on; sample i (from 0) is named "<source>:<i>: <what>",
+// as a CSV names its line. Arrays of different lengths are an input_error too.
+profile_samples profile_from_arrays(const std::vector<double>& x1, const std::vector<double>& h0,
+                                    const std::string& source, double l);
 
 // Reads and parses the file at `path` (a missing or unreadable file is an input_error
 // "cannot read profile file '<path>': <reason>").
