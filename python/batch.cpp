@@ -14,6 +14,7 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -31,13 +32,17 @@ namespace {
 
 struct job {
     scene s;
-    std::optional<double> Q;
+    std::optional<load_given> load;
 };
 
 // "items[3] (Q = 0.5, scene 'Fig. 2a'): ": which of many items failed, by its index in the
 // caller's list (Python's, from 0) and its load, so a batch's error can be traced to its item.
 std::string item_name(std::size_t i, const job& j) {
-    std::string load = j.Q ? "Q = " + shortest(*j.Q) : j.s.Q ? "the scene's Q = " + shortest(*j.s.Q) : "no Q";
+    const auto given = [](const load_given& l) {
+        const char* name = l.kind == load_kind::Q ? "Q" : l.kind == load_kind::Q_over_f ? "Q_over_f" : "P1";
+        return std::string(name) + " = " + shortest(l.value);
+    };
+    std::string load = j.load ? given(*j.load) : j.s.Q ? "the scene's Q = " + shortest(*j.s.Q) : "no Q";
     if (!j.s.label.empty()) load += ", scene '" + j.s.label + "'";
     return "items[" + std::to_string(i) + "] (" + load + "): ";
 }
@@ -75,7 +80,7 @@ std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, co
     const auto work = [&]() noexcept {
         for (std::size_t i = next++; i < jobs.size() && !stop; i = next++) {
             try {
-                out[i] = point_json(jobs[i].s, jobs[i].Q, k);
+                out[i] = point_json(jobs[i].s, jobs[i].load, k);
             } catch (...) {
                 errors[i] = std::current_exception();
             }
@@ -132,12 +137,15 @@ std::vector<std::string> solve_all(const std::vector<job>& jobs, int threads, co
 void bind_batch(py::module_& m) {
     m.def(
         "solve_all",
-        [](const std::vector<std::pair<scene, std::optional<double>>>& items, int threads, std::optional<int> n,
-           std::optional<std::string> method, std::optional<std::string> zones, std::optional<double> friction) {
+        // items: (scene, Q, Q_over_f, P1), at most one load given (load_keywords).
+        [](const std::vector<std::tuple<scene, std::optional<double>, std::optional<double>, std::optional<double>>>&
+               items,
+           int threads, std::optional<int> n, std::optional<std::string> method, std::optional<std::string> zones,
+           std::optional<double> friction) {
             if (threads < 1 || threads > 1024) throw input_error("threads must lie in [1, 1024]");
             std::vector<job> jobs;
             jobs.reserve(items.size());
-            for (const auto& [s, Q] : items) jobs.push_back({s, Q});
+            for (const auto& [s, Q, Q_over_f, P1] : items) jobs.push_back({s, load_keywords(Q, Q_over_f, P1)});
             py::gil_scoped_release release;
             return solve_all(jobs, threads, {n, method, zones, friction});
         },

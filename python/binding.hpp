@@ -30,8 +30,13 @@ struct solver_keywords {
     std::optional<double> friction;  // over the scene's friction, as --friction
 };
 
+// The Python keywords Q=, Q_over_f=, P1=: the command line's --Q, --Q-over-f, --P1, at most one
+// (an input_error naming them otherwise); nothing when none is given (the scene's load).
+std::optional<load_given> load_keywords(std::optional<double> Q, std::optional<double> Q_over_f,
+                                        std::optional<double> P1);
+
 // One point of a scene as `roughroll point SCENE --json` prints it (compact), with the
 // solver keywords over the scene's [solver] table. Runs without the GIL.
-std::string point_json(scene s, std::optional<double> Q, const solver_keywords& k);
+std::string point_json(scene s, const std::optional<load_given>& load, const solver_keywords& k);
 
 }  // namespace roughroll::python

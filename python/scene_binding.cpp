@@ -24,6 +24,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/io/traction_table.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 namespace py = pybind11;
@@ -188,35 +189,59 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
     return out;
 }
 
+// The columns of `roughroll traction`'s CSV (traction_table.hpp, the same rows), and the point.
 struct traction_columns {
     std::string point;  // the point's JSON
-    std::vector<double> r, p, p1, v;
+    std::vector<double> r, p, p1, v, p_hertz, p1_carter;
     std::vector<char> stick;
+    std::vector<double> x1_m, p2_Pa, p1_Pa;  // a physical scene's
+    bool physical = false;
     double c0_level;  // the stick zone the distributions have (level n when extrapolating)
 };
 
-traction_columns solve_traction(scene s, std::optional<double> Q, std::vector<double> grid) {
+traction_columns solve_traction(scene s, const std::optional<load_given>& load, const std::vector<double>& grid) {
     for (const double r : grid)
         if (!(r >= -1.0 && r <= 1.0)) throw input_error("r must lie in [-1, 1] (got " + shortest(r) + ")");
-    scene_point sp = solve_point(std::move(s), Q);
+    const double Q = load_of(s, load), f = s.friction;  // as the program's traction: the load asked for
+    scene_point sp = solve_point(std::move(s), load);
     const tangential_solution level = sp.solved.distribution(sp.solution);
+    const point_report report = sp.report();
     traction_columns out;
-    out.point = to_json(sp.report()).dump();
+    out.point = to_json(report).dump();
     out.c0_level = level.c0;
-    for (const contact::distribution_row& row : sp.solved.distributions(level, grid)) {
+    out.physical = report.si.has_value();
+    for (const traction_row& row :
+         traction_table(sp.solved, level, grid, Q, f, report.si)) {
+        out.r.push_back(row.r);
         out.p.push_back(row.p);
         out.p1.push_back(row.p1);
         out.v.push_back(row.v);
         out.stick.push_back(row.stick ? 1 : 0);
+        out.p_hertz.push_back(row.p_hertz);
+        out.p1_carter.push_back(row.p1_carter);
+        if (out.physical) {
+            out.x1_m.push_back(*row.x1_m);
+            out.p2_Pa.push_back(*row.p2_Pa);
+            out.p1_Pa.push_back(*row.p1_Pa);
+        }
     }
-    out.r = std::move(grid);
     return out;
 }
 
 }  // namespace
 
-std::string point_json(scene s, std::optional<double> Q, const solver_keywords& k) {
-    return to_json(solve_point(overridden(std::move(s), k), Q).report()).dump();
+std::optional<load_given> load_keywords(std::optional<double> Q, std::optional<double> Q_over_f,
+                                        std::optional<double> P1) {
+    if (int(Q.has_value()) + int(Q_over_f.has_value()) + int(P1.has_value()) > 1)
+        throw input_error("give the load once, as Q, Q_over_f or P1, not several");
+    if (Q) return load_given(load_kind::Q, *Q);
+    if (Q_over_f) return load_given(load_kind::Q_over_f, *Q_over_f);
+    if (P1) return load_given(load_kind::P1, *P1);
+    return std::nullopt;
+}
+
+std::string point_json(scene s, const std::optional<load_given>& load, const solver_keywords& k) {
+    return to_json(solve_point(overridden(std::move(s), k), load).report()).dump();
 }
 
 void bind_scene(py::module_& m) {
@@ -231,6 +256,9 @@ void bind_scene(py::module_& m) {
         .def_property_readonly("label", [](const scene& s) { return s.label; })
         .def_property_readonly("friction", [](const scene& s) { return s.friction; })
         .def_property_readonly("Q", [](const scene& s) { return s.Q; })
+        .def_property_readonly("Q_over_f", [](const scene& s) {
+            return s.Q_over_f ? s.Q_over_f : s.Q ? std::optional<double>(*s.Q / s.friction) : std::nullopt;
+        })
         .def_property_readonly("n", [](const scene& s) { return s.solver.nodes(); })
         .def_property_readonly("method", [](const scene& s) { return to_string(s.solver.how); })
         .def_property_readonly("roughness", [](const scene& s) { return roughness_dict(s.surfaces); })
@@ -239,12 +267,14 @@ void bind_scene(py::module_& m) {
         .def_property_readonly("coupling", [](const scene& s) { return to_string(s.materials.coupling); })
         .def(
             "point_json",
-            [](const scene& s, std::optional<double> Q, std::optional<int> n, std::optional<std::string> method,
-               std::optional<std::string> zones, std::optional<double> friction) {
+            [](const scene& s, std::optional<double> Q, std::optional<double> Q_over_f, std::optional<double> P1,
+               std::optional<int> n, std::optional<std::string> method, std::optional<std::string> zones,
+               std::optional<double> friction) {
+                const std::optional<load_given> load = load_keywords(Q, Q_over_f, P1);
                 py::gil_scoped_release release;
-                return point_json(s, Q, {n, method, zones, friction});
+                return point_json(s, load, {n, method, zones, friction});
             },
-            py::arg("Q"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"))
+            py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"))
         .def(
             "curve",
             [](const scene& s, std::optional<std::vector<double>> loads, int points, bool sweep, std::optional<int> n,
@@ -281,12 +311,14 @@ void bind_scene(py::module_& m) {
             py::arg("friction"))
         .def(
             "traction",
-            [](const scene& s, std::optional<double> Q, std::vector<double> r, std::optional<int> n,
-               std::optional<std::string> method, std::optional<std::string> zones, std::optional<double> friction) {
+            [](const scene& s, std::optional<double> Q, std::optional<double> Q_over_f, std::optional<double> P1,
+               std::vector<double> r, std::optional<int> n, std::optional<std::string> method,
+               std::optional<std::string> zones, std::optional<double> friction) {
+                const std::optional<load_given> load = load_keywords(Q, Q_over_f, P1);
                 traction_columns t;
                 {
                     py::gil_scoped_release release;
-                    t = solve_traction(overridden(s, {n, method, zones, friction}), Q, std::move(r));
+                    t = solve_traction(overridden(s, {n, method, zones, friction}), load, r);
                 }
                 py::dict d;
                 d["point"] = t.point;
@@ -295,10 +327,18 @@ void bind_scene(py::module_& m) {
                 d["p1"] = array_of(t.p1);
                 d["slip_velocity"] = array_of(t.v);
                 d["stick"] = bool_array_of(t.stick);
+                d["p_hertz"] = array_of(t.p_hertz);
+                d["p1_carter"] = array_of(t.p1_carter);
+                if (t.physical) {
+                    d["x1_m"] = array_of(t.x1_m);
+                    d["p2_Pa"] = array_of(t.p2_Pa);
+                    d["p1_Pa"] = array_of(t.p1_Pa);
+                }
                 d["c0_distribution"] = t.c0_level;
                 return d;
             },
-            py::arg("Q"), py::arg("r"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"));
+            py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("r"), py::arg("n"), py::arg("method"),
+            py::arg("zones"), py::arg("friction"));
 }
 
 }  // namespace roughroll::python

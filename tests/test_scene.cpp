@@ -383,7 +383,7 @@ TEST(LoadOf, SceneLoadWithoutOverride) { EXPECT_EQ(load_of(with_friction(0.3, 0.
 
 TEST(LoadOf, NoLoadGiven) {
     EXPECT_EQ(load_error(with_friction(0.3, std::nullopt), std::nullopt),
-              "no load Q given: set Q in the scene or pass --Q");
+              "no load Q given: set Q (or Q_over_f) in the scene or pass --Q (or --Q-over-f)");
 }
 
 TEST(LoadOf, LimitsAccepted) {
@@ -697,6 +697,91 @@ TEST(Scene, BetaAndCoupling) {
     EXPECT_NO_THROW(parse_scene("friction = 0.05\nbeta_d = 0.7499\n", source));
     EXPECT_THROW(parse_scene("friction = 0.05\nbeta_d = -0.75\n", source), input_error);
     EXPECT_THROW(parse_scene("friction = 0.05\ncoupling = \"weak\"\n", source), input_error);
+}
+
+// A load given as Q/f (issue 25): the key Q_over_f, Q = (Q/f) f, and the ratio kept under
+// another friction; one load only; |Q/f| <= 1 and finite.
+TEST(LoadRatio, SceneKeyGivesQ) {
+    const scene s = parse_scene("friction = 0.3\nQ_over_f = 0.5\n", source);
+    ASSERT_TRUE(s.Q && s.Q_over_f);
+    EXPECT_EQ(*s.Q, 0.15);
+    EXPECT_EQ(*s.Q_over_f, 0.5);
+    EXPECT_EQ(load_of(s, std::nullopt), 0.15);
+    const scene edge = parse_scene("friction = 0.3\nQ_over_f = -1\n", source);
+    EXPECT_EQ(load_of(edge, std::nullopt), -0.3);
+}
+
+TEST(LoadRatio, FollowsTheFrictionOverride) {
+    scene s = parse_scene("friction = 0.3\nQ_over_f = 0.5\n", source);
+    override_friction(s, 0.2);
+    EXPECT_EQ(load_of(s, std::nullopt), 0.1);
+    scene q = parse_scene("friction = 0.3\nQ = 0.15\n", source);  // a Q stays Q
+    override_friction(q, 0.2);
+    EXPECT_EQ(load_of(q, std::nullopt), 0.15);
+}
+
+TEST(LoadRatio, OneLoadOnly) {
+    EXPECT_TRUE(rejects("friction = 0.3\nQ = 0.1\nQ_over_f = 0.5\n", {"'Q' or 'Q_over_f', not both"}));
+    EXPECT_TRUE(rejects("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1e4\nQ_over_f = 0.5\n"
+                        "friction = 0.3\n",
+                        {"'Q_over_f' or 'P1', not both"}));
+}
+
+TEST(LoadRatio, RangeAndFiniteness) {
+    for (const char* bad : {"1.5", "-1.0000001", "nan", "inf", "-inf"})
+        EXPECT_TRUE(rejects(std::string("friction = 0.3\nQ_over_f = ") + bad + "\n", {"'Q_over_f' must"})) << bad;
+    EXPECT_TRUE(rejects("friction = 0.3\nQ_over_f = 2\n", {"|Q/f| = 2 exceeds 1: the cylinders slide"}));
+    EXPECT_TRUE(rejects("friction = 0.3\nQ_over_f = \"half\"\n", {"Q_over_f"}));
+}
+
+// The largest double below 1 is not gross sliding: Q stays below f (rounding is monotone).
+TEST(LoadRatio, JustBelowGrossSliding) {
+    const double q = std::nextafter(1.0, 0.0);
+    for (const double f : {0.3, 0.25, 0.49999999999999994, 1e-12, 7.0, 1e12}) {
+        const scene s = with_friction(f, std::nullopt);
+        const double Q = load_of(s, load_given(load_kind::Q_over_f, q));
+        EXPECT_LT(Q, f) << f;
+        EXPECT_LT(Q / f, 1.0) << f;
+    }
+}
+
+TEST(LoadRatio, Overrides) {
+    const scene s = with_friction(0.3, 0.1);
+    EXPECT_EQ(load_of(s, load_given(load_kind::Q_over_f, 0.5)), 0.15);
+    EXPECT_EQ(load_of(s, load_given(load_kind::Q_over_f, -1.0)), -0.3);
+    const auto error = [&s](double q) {
+        try {
+            (void)load_of(s, load_given(load_kind::Q_over_f, q));
+        } catch (const input_error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(error(1.5), "Q_over_f must lie in [-1, 1], but |Q/f| = 1.5 exceeds 1: the cylinders slide");
+    EXPECT_EQ(error(std::numeric_limits<double>::infinity()), "Q_over_f must be finite (got inf)");
+}
+
+// P1 (N/m) over a physical scene's load: Q = P1/P2; refused for a dimensionless scene, beyond
+// f P2, and at the Hertz width.
+TEST(LoadP1, Overrides) {
+    const scene s = parse_scene(physical_scene_text, source);
+    EXPECT_EQ(load_of(s, load_given(load_kind::P1, 1e4)), 0.1);
+    EXPECT_EQ(load_of(s, load_given(load_kind::P1, -3e4)), -0.3);
+    const auto error = [](const scene& sc, double P1) {
+        try {
+            (void)load_of(sc, load_given(load_kind::P1, P1));
+        } catch (const input_error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(error(s, 30001.0).find("P1 must satisfy |P1| <= f P2"), std::string::npos);
+    EXPECT_NE(error(s, std::nan("")).find("P1 must be finite"), std::string::npos);
+    EXPECT_NE(error(with_friction(0.3, 0.1), 1e4).find("P1 (N/m) needs a physical scene"), std::string::npos);
+    const scene hertz = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nQ = 0.1\n"
+                                    "contact_width = \"hertz\"\nfriction = 0.3\n",
+                                    source);
+    EXPECT_NE(error(hertz, 1e4).find("given-load"), std::string::npos);
 }
 
 }  // namespace

@@ -110,7 +110,7 @@ class Scene:
     """The inputs of one rolling contact, checked as a scene file is (README, "Scene files").
 
     ``Scene(mapping, **keys)``: from a dict and/or keyword arguments with the keys of the TOML
-    format (``label``, ``friction``, ``Q``, ``cylinder1``/``cylinder2`` with ``tangential``/
+    format (``label``, ``friction``, ``Q`` or ``Q_over_f``, ``cylinder1``/``cylinder2`` with ``tangential``/
     ``normal`` tables of ``T``, ``A`` of (3.26), ``beta_d``, ``coupling``, ``solver`` with ``n``,
     ``method``; a physical scene's ``E``, ``nu`` (or ``shear_modulus``, ``poisson`` in
     ``cylinder1``/``cylinder2``), ``R1``, ``R2``, ``P2``, ``P1``, ``contact_width``, ``k``, ``t``
@@ -181,7 +181,10 @@ class Scene:
     # What the scene says (after its checks).
     label = property(lambda self: self._core.label, doc="The scene's label ('' when none).")
     friction = property(lambda self: self._core.friction, doc="The friction coefficient f.")
-    Q = property(lambda self: self._core.Q, doc="The scene's load Q = P1/P2 (P1/P2 of a physical scene), or None.")
+    Q = property(lambda self: self._core.Q,
+                 doc="The scene's load Q = P1/P2 (P1/P2 of a physical scene, (Q/f) f of Q_over_f), or None.")
+    Q_over_f = property(lambda self: self._core.Q_over_f,
+                        doc="The scene's load as Q/f (as given by the key Q_over_f, else Q/f), or None.")
     n = property(lambda self: self._core.n, doc="The Gauss-Chebyshev nodes (4.6) the scene's method uses.")
     method = property(lambda self: self._core.method, doc="The scene's method.")
     roughness = property(lambda self: self._core.roughness,
@@ -255,8 +258,9 @@ class Scene:
             self._hash = hash((_frozen(self.to_dict()), self._base_dir))
         return self._hash
 
-    def point(self, Q: Optional[float] = None, *, method: Optional[str] = None, n: Optional[int] = None,
-              zones: Optional[str] = None, friction: Optional[float] = None) -> Point:
+    def point(self, Q: Optional[float] = None, *, Q_over_f: Optional[float] = None, P1: Optional[float] = None,
+              method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
+              friction: Optional[float] = None) -> Point:
         """One creep point for the load ``Q``, as ``roughroll point``.
 
         The normal problem (3.19)-(3.20) gives P_H/P2 and the pressure; the tangential problem
@@ -267,7 +271,12 @@ class Scene:
         Parameters
         ----------
         Q : float, optional
-            The load P1/P2, |Q| <= f; default: the scene's Q.
+            The load P1/P2, |Q| <= f, as ``--Q``; default: the scene's load.
+        Q_over_f : float, optional
+            The load as Q/f in [-1, 1], as ``--Q-over-f`` (Q = (Q/f) f, at ``friction`` if given).
+        P1 : float, optional
+            The tangential load in N/m of a physical scene, |P1| <= f P2, as ``--P1``.  At most one
+            of ``Q``, ``Q_over_f`` and ``P1``.
         method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
             Overrides the scene's ``[solver] method``, as ``--method``.
         n : int, optional
@@ -286,13 +295,16 @@ class Scene:
         Raises
         ------
         InputError
-            No load, |Q| > f, a bad method, n or zones (the program's message).
+            No load, |Q| > f, |Q/f| > 1, |P1| > f P2, P1 for a dimensionless scene, two loads,
+            a bad method, n or zones (the program's message).
         ResolutionError, NumericalError
             A point the discretisation cannot resolve; a numerical fault.
         """
-        return Point._from_json(self._core.point_json(_real(Q, "Q"), _nodes(n), _method(method), _zones(zones), _real(friction, "friction")))
+        return Point._from_json(self._core.point_json(_real(Q, "Q"), _real(Q_over_f, "Q_over_f"), _real(P1, "P1"),
+                                                      _nodes(n), _method(method), _zones(zones), _real(friction, "friction")))
 
-    def points(self, loads: Sequence[float], *, method: Optional[str] = None, n: Optional[int] = None,
+    def points(self, loads: Optional[Sequence[float]] = None, *, Q_over_f: Optional[Sequence[float]] = None,
+               P1: Optional[Sequence[float]] = None, method: Optional[str] = None, n: Optional[int] = None,
                zones: Optional[str] = None, friction: Optional[float] = None, threads: int = 1) -> List[Point]:
         """Points for many loads, on ``threads`` threads (see ``roughroll.solve``).
 
@@ -300,6 +312,11 @@ class Scene:
         ----------
         loads : sequence of float
             The loads Q = P1/P2.
+        Q_over_f : sequence of float
+            Or the loads as Q/f (``--Q-over-f``).
+        P1 : sequence of float
+            Or, for a physical scene, as P1 in N/m (``--P1``).  One of ``loads``, ``Q_over_f``
+            and ``P1``.
         threads : int
             Threads to solve on; -1: every core (as scipy's ``workers=-1``).
         method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
@@ -317,7 +334,13 @@ class Scene:
         list of Point
             The same numbers as ``[self.point(Q) for Q in loads]``.
         """
-        return solve([(self, Q) for Q in _numbers(loads, "loads")], threads=threads, method=method, n=n, zones=zones, friction=friction)
+        given = [(k, v) for k, v in (("Q", loads), ("Q_over_f", Q_over_f), ("P1", P1)) if v is not None]
+        if len(given) != 1:
+            raise InputError("give the loads once, as loads (Q), Q_over_f or P1")
+        key, values = given[0]
+        name = "loads" if key == "Q" else key
+        return solve([(self, {key: x}) for x in _numbers(values, name)], threads=threads, method=method, n=n,
+                     zones=zones, friction=friction)
 
     def curve(self, loads: Optional[Sequence[float]] = None, *, points: int = 51, sweep: bool = False,
               method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
@@ -380,15 +403,21 @@ class Scene:
         c["status"] = np.array(c["status"], dtype=str)
         return c
 
-    def traction(self, Q: Optional[float] = None, *, r: Optional[Sequence[float]] = None, points: int = 401,
-                 method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
+    def traction(self, Q: Optional[float] = None, *, Q_over_f: Optional[float] = None, P1: Optional[float] = None,
+                 r: Optional[Sequence[float]] = None, points: int = 401, method: Optional[str] = None,
+                 n: Optional[int] = None, zones: Optional[str] = None,
                  friction: Optional[float] = None) -> Dict[str, Any]:
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.
 
         Parameters
         ----------
         Q : float, optional
-            The load; default: the scene's Q.
+            The load P1/P2; default: the scene's load.
+        Q_over_f : float, optional
+            The load as Q/f in [-1, 1], as ``--Q-over-f``.
+        P1 : float, optional
+            The tangential load in N/m of a physical scene, as ``--P1``.  At most one of ``Q``,
+            ``Q_over_f`` and ``P1``.
         r : sequence of float, optional
             The grid, each in [-1, 1]; default: ``points`` points evenly from -1 to 1.
         points : int
@@ -412,9 +441,13 @@ class Scene:
         -----
         Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
         traction a p1/P2 of (3.15)), ``slip_velocity`` (v of (3.6), 0 on the stick zone),
-        ``stick`` (start <= r < c0: the stick zone, which starts at -1 in the paper's structure), ``f_p`` (the Coulomb limit f p of (3.3)) and ``c0_distribution``
-        (the stick zone of the distributions: level n's when extrapolating).  Default grid: the
-        program's, ``points`` points from -1 to 1.
+        ``stick`` (start <= r < c0: the stick zone, which starts at -1 in the paper's structure), ``f_p`` (the Coulomb limit f p of (3.3)),
+        ``p_hertz`` and ``p1_carter`` (smooth cylinders at the same Q and f, each on its own
+        half-width: Hertz's pressure and Carter's traction, dimensionless as ``p`` and ``p1``) and
+        ``c0_distribution`` (the stick zone of the distributions: level n's when extrapolating);
+        for a physical scene also ``x1_m`` (r a, m), ``p2_Pa`` and ``p1_Pa`` (p P2/a, p1 P2/a,
+        Pa).  The columns of ``roughroll traction``'s CSV, computed by the same code.  Default
+        grid: the program's, ``points`` points from -1 to 1.
         """
         if r is None:
             points = _integer(points, "points")
@@ -423,7 +456,8 @@ class Scene:
             r = [(2 * i - (points - 1)) / (points - 1) for i in range(points)]
         else:
             r = _numbers(r, "r").tolist()
-        t = self._core.traction(_real(Q, "Q"), r, _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))
+        t = self._core.traction(_real(Q, "Q"), _real(Q_over_f, "Q_over_f"), _real(P1, "P1"), r, _nodes(n),
+                                _method(method), _zones(zones), _real(friction, "friction"))
         t["point"] = Point._from_json(t["point"])
         t["f_p"] = t["point"].f * t["p"]
         return t
@@ -532,11 +566,12 @@ def _as_scene(s):
 
 
 def point(scene: Union[Scene, Mapping, str, "os.PathLike[str]"], Q: Optional[float] = None, *,
+          Q_over_f: Optional[float] = None, P1: Optional[float] = None,
           method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
           friction: Optional[float] = None) -> Point:
     """One creep point of ``scene`` (a Scene, a dict of scene keys or a scene file's path):
     ``Scene.point``, the program's ``roughroll point``."""
-    return _as_scene(scene).point(Q, method=method, n=n, zones=zones, friction=friction)
+    return _as_scene(scene).point(Q, Q_over_f=Q_over_f, P1=P1, method=method, n=n, zones=zones, friction=friction)
 
 
 def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = None, n: Optional[int] = None,
@@ -546,7 +581,8 @@ def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = Non
     Parameters
     ----------
     items : iterable
-        Scenes (Scene, dict or path; the scene's Q) or pairs (scene, Q).
+        Scenes (Scene, dict or path; the scene's load) or pairs (scene, Q), the load also as
+        (scene, {"Q_over_f": q}) or, for a physical scene, (scene, {"P1": P1}) (N/m).
     threads : int
         Threads to solve on, at most 1024; -1 means one per core this process may run on,
         -2 one fewer, and so on (scipy's ``workers=-1``).
@@ -584,12 +620,22 @@ def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = Non
     for item in items:
         if isinstance(item, tuple):
             if len(item) != 2:
-                raise TypeError("an item is a scene or a pair (scene, Q)")
-            s, Q = item
+                raise TypeError("an item is a scene or a pair (scene, Q) or (scene, {'Q_over_f': q}) or (scene, {'P1': P1})")
+            s, load = item
         else:
-            s, Q = item, None
-        jobs.append((_as_scene(s)._core, _real(Q, "Q")))
+            s, load = item, None
+        jobs.append((_as_scene(s)._core, *_load(load)))
     return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))]
+
+
+def _load(load):
+    """(Q, Q_over_f, P1) of an item's load: a number Q, or a dict of one of the three keys."""
+    if isinstance(load, Mapping):
+        unknown = set(load) - {"Q", "Q_over_f", "P1"}
+        if unknown:
+            raise TypeError(f"a load is given by the key Q, Q_over_f or P1, not {sorted(map(str, unknown))}")
+        return tuple(_real(load.get(k), k) for k in ("Q", "Q_over_f", "P1"))
+    return (_real(load, "Q"), None, None)
 
 
 def _cores():

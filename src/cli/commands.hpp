@@ -33,6 +33,14 @@ void add_scene_options(CLI::App* cmd, scene_options& o);
 // The overrides alone (--n, --method, --zones, --friction), for a command with its own SCENE.
 void add_scene_overrides(CLI::App* cmd, scene_options& o);
 
+// The load of one point, as --Q (P1/P2), --Q-over-f (Q/f) or --P1 (N/m, physical scenes): at most
+// one of them (CLI11 refuses two), over the scene's load (load_of, io/scene.hpp).
+struct load_options {
+    std::optional<double> Q, Q_over_f, P1;
+    std::optional<load_given> given() const;
+};
+void add_load_options(CLI::App* cmd, load_options& o);
+
 // --progress and --quiet of the commands that work long (set_progress, output_files.hpp).
 struct progress_options {
     bool shown = false;  // --progress: progress lines even when stderr is not a terminal
@@ -86,7 +94,7 @@ int run_figure(const figure_options& o);
 // `roughroll traction SCENE`: p, p1, +-f p and v on a grid of r, as CSV, gnuplot, SVG, PNG.
 struct traction_options {
     scene_options scene;
-    std::optional<double> Q;  // overrides the scene's Q
+    load_options load;        // overrides the scene's load
     int points = 401;         // grid points on [-1, 1]
     std::string out = "figures";
     std::string name;         // file stem after "traction-" (default: the scene file's stem)
@@ -98,7 +106,7 @@ int run_traction(const traction_options& o);
 
 struct convergence_options {
     scene_options scene;
-    std::optional<double> Q;  // overrides the scene's Q
+    load_options load;        // overrides the scene's load
     std::string out = "figures";
     double max_seconds = 2.0;  // a method's ladder stops after a point slower than this
     bool plot = true;

@@ -65,7 +65,7 @@ double relative(double value, double reference) {
 
 void add_convergence_options(CLI::App* cmd, convergence_options& o) {
     cmd->add_option("SCENE", o.scene.path, "scene file (TOML)")->required();
-    add_number(cmd, "--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
+    add_load_options(cmd, o.load);
     cmd->add_option("--out", o.out, "output folder for the CSV and the plot");
     add_number(cmd, "--max-seconds", o.max_seconds, "stop a method's ladder once a point takes longer")
         ->check(CLI::Range(0.001, 600.0));
@@ -74,7 +74,7 @@ void add_convergence_options(CLI::App* cmd, convergence_options& o) {
 
 int run_convergence(const convergence_options& o) {
     scene s = load_scene(o.scene);
-    const double Q = load_of(s, o.Q);
+    const double Q = load_of(s, o.load.given());
     if (Q == 0.0) throw input_error("Q = 0 is solved exactly without a discretisation: nothing to converge");
     // The outputs, checked and opened before the minutes of work.
     const std::string name = "convergence-" + std::filesystem::path(o.scene.path).stem().string();

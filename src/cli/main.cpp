@@ -80,6 +80,24 @@ CLI::Option* add_integer(CLI::App* cmd, const std::string& name, int& value, con
         ->default_str(std::to_string(value));
 }
 
+std::optional<load_given> load_options::given() const {
+    if (Q) return load_given(load_kind::Q, *Q);
+    if (Q_over_f) return load_given(load_kind::Q_over_f, *Q_over_f);
+    if (P1) return load_given(load_kind::P1, *P1);
+    return std::nullopt;
+}
+
+void add_load_options(CLI::App* cmd, load_options& o) {
+    CLI::Option* Q = add_number(cmd, "--Q", o.Q, "tangential load Q = P1/P2 (overrides the scene's load)");
+    CLI::Option* ratio =
+        add_number(cmd, "--Q-over-f", o.Q_over_f, "tangential load as Q/f in [-1, 1] (overrides the scene's load)");
+    CLI::Option* P1 = add_number(cmd, "--P1", o.P1,
+                                 "tangential load P1 in N/m, physical scenes only (overrides the scene's load)");
+    Q->excludes(ratio)->excludes(P1);
+    ratio->excludes(Q)->excludes(P1);
+    P1->excludes(Q)->excludes(ratio);
+}
+
 void add_progress_options(CLI::App* cmd, progress_options& o) {
     CLI::Option* shown = cmd->add_flag("--progress", o.shown,
                                        "one line per point, row or level on stderr even when stderr is not a terminal");
@@ -121,12 +139,12 @@ int report(const char* kind, const std::string& message, int status) {
 // write nothing (README.md, docs/robustness.md).
 constexpr int partial_output = 3;
 
-int run_point(const scene_options& o, std::optional<double> Q_option, bool json) {
+int run_point(const scene_options& o, const load_options& load, bool json) {
     scene s = load_scene(o);
     const std::string name = std::filesystem::path(o.path).filename().string();
     progress(name + ": solving the point" + (s.physical ? " (its contact width first)" : ""));
     const auto start = std::chrono::steady_clock::now();
-    const scene_point p = solve_point(std::move(s), Q_option);
+    const scene_point p = solve_point(std::move(s), load.given());
     std::ostringstream line;
     line << name << ": solved in " << std::setprecision(3)
          << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s";
@@ -166,7 +184,7 @@ scene_curve curve_with_progress(scene s, int points, bool sweep, const std::stri
             const double rho = 1.0 - static_cast<double>(row) / (points - 1);
             what = "c0 = " + number_text(row + 1 == static_cast<std::size_t>(points) ? -1.0 : 2.0 * rho - 1.0, 4);
         } else if (row < Qs.size()) {
-            what = "Q/f = " + number_text(Qs[row] / f, 4);
+            what = "Q/f = " + ratio_text(Qs[row] / f, 4);
         }
         progress(name + ": row " + std::to_string(row + 1) + "/" + std::to_string(points) + ", " + what + " (" +
                  seconds() + " s so far)");
@@ -298,11 +316,11 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("roughroll ") + version(), "print roughroll's version and exit");
 
     scene_options point_scene;
-    std::optional<double> Q;
+    load_options point_load;
     bool json = false;
     CLI::App* point = app.add_subcommand("point", "one creep point: c0, xi and P_H/P2 for a given Q");
     add_scene_options(point, point_scene);
-    add_number(point, "--Q", Q, "tangential load P1/P2 (overrides the scene's Q)");
+    add_load_options(point, point_load);
     point->add_flag("--json", json, "one JSON object on stdout");
 
     curve_options curve_o;
@@ -357,7 +375,7 @@ int main(int argc, char** argv) {
 
     try {
         int status = 2;
-        if (*point) status = run_point(point_scene, Q, json);
+        if (*point) status = run_point(point_scene, point_load, json);
         else if (*curve) status = run_curve(curve_o);
         else if (*figure) status = run_figure(fig);
         else if (*convergence) status = run_convergence(conv);

@@ -25,30 +25,12 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/io/output.hpp"
+#include "roughroll/io/traction_table.hpp"
 #include "roughroll/base/error.hpp"
 
 namespace roughroll::cli {
 
 namespace {
-
-constexpr double two_over_pi = 0.636619772367581343076;
-
-struct traction_row {
-    double r, p, p1, v, p_smooth, p1_smooth;
-    bool stick;
-};
-
-// Carter's smooth tractions at r: Hertz's p = (2/pi) sqrt(1 - r^2) and
-// p1 = f p - (2 f/pi) sqrt(rho^2 - (r + 1 - rho)^2) on the stick zone [-1, c0],
-// rho = (1 + c0)/2, with the sign of Q.
-void smooth_tractions(double r, double Q, double f, double& p, double& p1) {
-    const carter_point cp = carter(Q, f);
-    const double rho = 0.5 * (1.0 + cp.c0);
-    p = two_over_pi * std::sqrt(std::max(0.0, 1.0 - r * r));
-    const double d = r + 1.0 - rho;
-    const double q0 = r < cp.c0 ? -two_over_pi * f * std::sqrt(std::max(0.0, rho * rho - d * d)) : 0.0;
-    p1 = (Q < 0.0 ? -1.0 : 1.0) * (f * p + q0);
-}
 
 // x with `digits` significant digits, for the plot's labels.
 std::string number(double x, int digits) {
@@ -104,7 +86,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     const bool has_slip = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return !z.stick; });
     const int load_sign = k.Q > 0.0 ? 1 : k.Q < 0.0 ? -1 : 0;
     const std::string data = "'" + gnuplot_path(csv.filename()) + "'";  // beside the script
-    const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + number(k.Q / f, 3) + "),   f = " +
+    const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + ratio_text(k.Q / f, 3) + "),   f = " +
                                  shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) + ",   {/Symbol x} = " +
                                  number(k.xi, 3) + ",   P_H/P_2 = " + number(k.lambda, 4) +
                                  (k.checks_hold ? "" : "   (checks (3.3), (3.4) VIOLATED)");
@@ -216,7 +198,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
 
 void add_traction_options(CLI::App* cmd, traction_options& o) {
     add_scene_options(cmd, o.scene);
-    add_number(cmd, "--Q", o.Q, "tangential load P1/P2 (overrides the scene's Q)");
+    add_load_options(cmd, o.load);
     add_integer(cmd, "--points", o.points, "grid points on [-1, 1]");
     cmd->add_option("--out", o.out, "output folder, created if missing");
     cmd->add_option("--name", o.name, "file stem after 'traction-' (default: the scene file's stem)");
@@ -245,7 +227,7 @@ int run_traction(const traction_options& o) {
     output_file csv_file(csv, s.files), script_file(script, s.files);
     for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
 
-    const double Q = load_of(s, o.Q);
+    const double Q = load_of(s, o.load.given());
     progress("traction " + name + ": solving the point at Q = " + shortest(Q) +
              (s.physical ? " (its contact width first)" : ""));
     const auto start = std::chrono::steady_clock::now();
@@ -263,21 +245,13 @@ int run_traction(const traction_options& o) {
     const normal_solution& normal = c.normal();
     const double f = s.friction;
 
-    std::vector<traction_row> rows(static_cast<std::size_t>(o.points));
-    std::vector<double> grid(rows.size());
+    std::vector<double> grid(static_cast<std::size_t>(o.points));
     for (int i = 0; i < o.points; ++i) grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
-    const std::vector<contact::distribution_row> distributions = c.distributions(level, grid);
+    const std::optional<si_point> si = si_of(s, width, solution);
+    const std::vector<traction_row> rows = traction_table(c, level, grid, Q, f, si);
     double p_max = 0.0;
     double v_low = 0.0, v_high = 0.0;
-    for (int i = 0; i < o.points; ++i) {
-        traction_row& row = rows[i];
-        const contact::distribution_row& d = distributions[i];
-        row.r = d.r;
-        row.p = d.p;
-        row.p1 = d.p1;
-        row.stick = d.stick;
-        row.v = d.v;
-        smooth_tractions(row.r, Q, f, row.p_smooth, row.p1_smooth);
+    for (const traction_row& row : rows) {
         p_max = std::max(p_max, row.p);
         v_low = std::min(v_low, row.v);
         v_high = std::max(v_high, row.v);
@@ -294,7 +268,6 @@ int run_traction(const traction_options& o) {
         << "# zones (r = x1/a): " << zones_text(level) << "\n"
         << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick or slip, the zones above;"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
-    const std::optional<si_point> si = si_of(s, width, solution);
     if (si)
         out << "# SI: a = " << shortest(si->a) << " m (Hertz " << shortest(si->a_hertz) << " m), P2 = "
             << shortest(si->P2) << " N/m, xi1 = " << shortest(si->xi1) << "; x1_m = r a, p2_Pa = p P2/a, p1_Pa = p1 P2/a\n";
@@ -302,10 +275,8 @@ int run_traction(const traction_options& o) {
     for (const auto& row : rows) {
         out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p)
             << ',' << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ',' << shortest(row.v) << ','
-            << shortest(row.p_smooth) << ',' << shortest(row.p1_smooth);
-        if (si)
-            out << ',' << shortest(row.r * si->a) << ',' << shortest(row.p * si->p_scale) << ','
-                << shortest(row.p1 * si->p_scale);
+            << shortest(row.p_hertz) << ',' << shortest(row.p1_carter);
+        if (si) out << ',' << shortest(*row.x1_m) << ',' << shortest(*row.p2_Pa) << ',' << shortest(*row.p1_Pa);
         out << '\n';
     }
     csv_file.commit();

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/io/output.hpp"
 
-#include <stdexcept>
-
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
@@ -17,6 +20,16 @@
 namespace roughroll {
 
 const char* version() { return ROUGHROLL_VERSION; }
+
+std::string ratio_text(double q, int digits) {
+    for (int d = std::max(digits, 1); d < 17; ++d) {
+        std::ostringstream text;
+        text << std::setprecision(d) << q;
+        if (std::fabs(q) == 1.0 || !std::isfinite(q) || std::fabs(std::strtod(text.str().c_str(), nullptr)) != 1.0)
+            return text.str();
+    }
+    return shortest(q);
+}
 
 namespace {
 nlohmann::json term_json(const roughness_term& t) {
@@ -143,7 +156,8 @@ void write_summary(std::ostream& out, const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
     if (!r.label.empty()) out << one_line(r.label) << "\n";  // no control character reaches the terminal
-    out << "  Q = P1/P2           " << shortest(s.Q) << "   (f = " << shortest(s.f) << ")\n"
+    out << "  Q = P1/P2           " << shortest(s.Q) << "   (Q/f = " << shortest(s.Q / s.f) << ", f = " << shortest(s.f)
+        << ")\n"
         << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
         << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
         << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"

@@ -32,6 +32,33 @@ std::string load_problem(double Q, double f) {
     return {};
 }
 
+// Why a load given as Q/f = q cannot be solved for, or "" when it can; the text follows the name
+// of Q/f. Q = q f with |q| <= 1 rounds to |Q| <= f (rounding is monotone), so |q| <= 1 is the
+// whole condition.
+std::string ratio_problem(double q) {
+    if (!std::isfinite(q)) return "must be finite (got " + shortest(q) + ")";
+    if (!(std::fabs(q) <= 1.0))
+        return "must lie in [-1, 1], but |Q/f| = " + shortest(std::fabs(q)) + " exceeds 1: the cylinders slide";
+    return {};
+}
+
+// Why a load P1 (N/m) of physical scene p cannot be solved for with friction f, or "" when it can;
+// the text follows the name of P1.
+std::string tangential_load_problem(double P1, double f, const physical_scene& p) {
+    if (p.width == width_rule::hertz)
+        return "needs contact_width = \"given-load\": at the Hertz width the model carries P2/lambda, not P2; give "
+               "Q = P1/P2 instead";
+    if (!std::isfinite(P1)) return "must be finite (got " + shortest(P1) + ")";
+    if (!(std::fabs(P1) <= f * p.P2))
+        return "must satisfy |P1| <= f P2, but |P1| = " + shortest(std::fabs(P1)) + " N/m exceeds f P2 = " +
+               shortest(f * p.P2) + " N/m: the cylinders slide";
+    return {};
+}
+
+// Q = P1/P2 of a load P1 checked by tangential_load_problem: |P1| <= f P2, but the quotient may
+// still round above f by an ulp.
+double load_ratio_of(double P1, double f, const physical_scene& p) { return std::clamp(P1 / p.P2, -f, f); }
+
 // Why a friction coefficient cannot be solved with, or "" when it can; the text follows its name.
 std::string friction_problem(double f) {
     if (f >= min_friction && f <= max_friction) return {};
@@ -228,16 +255,9 @@ physical_scene read_physical(const toml::table& root, double friction, const std
             fail(source, "'contact_width' must be \"given-load\" or \"hertz\" (got \"" + echo(rule) + "\")");
     }
     if (const toml::node* load = root.get("P1")) {
-        if (root.contains("Q")) fail(source, "give 'P1' or 'Q', not both");
-        if (p.width == width_rule::hertz)
-            fail(source, "'P1' needs contact_width = \"given-load\": at the Hertz width the model carries P2/lambda, "
-                         "not P2; give Q = P1/P2 instead");
         const double P1 = number_at(*load, source, "P1");
-        if (!std::isfinite(P1)) fail(source, "'P1' must be finite (got " + shortest(P1) + ")");
-        if (!(std::fabs(P1) <= friction * p.P2)) {
-            fail(source, "'P1' must satisfy |P1| <= f P2, but |P1| = " + shortest(std::fabs(P1)) + " N/m exceeds f P2 = " +
-                             shortest(friction * p.P2) + " N/m: the cylinders slide");
-        }
+        const std::string problem = tangential_load_problem(P1, friction, p);
+        if (!problem.empty()) fail(source, "'P1' " + problem);
         p.P1 = P1;
     }
     return p;
@@ -278,7 +298,7 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
 scene parse_scene(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
     const toml::table root = parse_toml(text, source);
     check_keys(root,
-               {"label", "friction", "Q", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
+               {"label", "friction", "Q", "Q_over_f", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
                 "contact_width", "beta_d", "coupling"},
                source, "");
 
@@ -291,11 +311,24 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     const std::string range = friction_problem(s.friction);
     if (!range.empty()) fail(source, "'friction' = " + range);
 
+    // The load once: as Q, as Q/f or (a physical scene) as P1.
+    std::vector<std::string> loads;
+    for (const char* key : {"Q", "Q_over_f", "P1"})
+        if (root.contains(key)) loads.push_back(quoted(key));
+    if (loads.size() > 1)
+        fail(source, "give " + loads[0] + " or " + loads[1] + ", not both: the load is given once, as Q, Q_over_f or P1");
     if (const toml::node* load = root.get("Q")) {
         const double Q = number_at(*load, source, "Q");
         const std::string problem = load_problem(Q, s.friction);
         if (!problem.empty()) fail(source, "'Q' " + problem);
         s.Q = Q;
+    }
+    if (const toml::node* load = root.get("Q_over_f")) {
+        const double q = number_at(*load, source, "Q_over_f");
+        const std::string problem = ratio_problem(q);
+        if (!problem.empty()) fail(source, "'Q_over_f' " + problem);
+        s.Q_over_f = q;
+        s.Q = q * s.friction;
     }
 
     const bool physical = is_physical(root);
@@ -317,8 +350,7 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
         } catch (const input_error& e) {
             fail(source, e.what());
         }
-        // |P1| <= f P2 was checked; the quotient may still round above f by an ulp.
-        if (p.P1) s.Q = std::clamp(*p.P1 / p.P2, -s.friction, s.friction);
+        if (p.P1) s.Q = load_ratio_of(*p.P1, s.friction, p);
         try {
             s.materials.beta_d = dundurs_beta(p);
         } catch (const input_error& e) {
@@ -356,13 +388,35 @@ scene read_scene(const std::string& path) {
     return s;
 }
 
-double load_of(const scene& s, std::optional<double> override) {
+double load_of(const scene& s, const std::optional<load_given>& override) {
     // The command line wins, so one scene file can be solved for several loads.
-    const std::optional<double> Q = override ? override : s.Q;
-    if (!Q) throw input_error("no load Q given: set Q in the scene or pass --Q");
-    const std::string problem = load_problem(*Q, s.friction);
+    const double f = s.friction;
+    if (!override) {
+        if (!s.Q) throw input_error("no load Q given: set Q (or Q_over_f) in the scene or pass --Q (or --Q-over-f)");
+        const std::string problem = load_problem(*s.Q, f);
+        if (!problem.empty()) throw input_error("Q " + problem);
+        return *s.Q;
+    }
+    const double x = override->value;
+    switch (override->kind) {
+        case load_kind::Q:
+            break;
+        case load_kind::Q_over_f: {
+            const std::string problem = ratio_problem(x);
+            if (!problem.empty()) throw input_error("Q_over_f " + problem);
+            return x * f;
+        }
+        case load_kind::P1: {
+            if (!s.physical)
+                throw input_error("P1 (N/m) needs a physical scene (E, nu, R1, R2, P2): give the load as Q or Q_over_f");
+            const std::string problem = tangential_load_problem(x, f, *s.physical);
+            if (!problem.empty()) throw input_error("P1 " + problem);
+            return load_ratio_of(x, f, *s.physical);
+        }
+    }
+    const std::string problem = load_problem(x, f);
     if (!problem.empty()) throw input_error("Q " + problem);
-    return *Q;
+    return x;
 }
 
 void override_friction(scene& s, std::optional<double> friction, const std::string& name) {
@@ -370,6 +424,7 @@ void override_friction(scene& s, std::optional<double> friction, const std::stri
     const std::string range = friction_problem(*friction);
     if (!range.empty()) throw input_error(name + " " + range);
     s.friction = *friction;
+    if (s.Q_over_f) s.Q = *s.Q_over_f * s.friction;  // the scene's ratio kept (scene.hpp)
 }
 
 }  // namespace roughroll

@@ -71,8 +71,8 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q)
 }
 }  // namespace
 
-scene_point solve_point(scene s, std::optional<double> Q_option) {
-    const double Q = load_of(s, Q_option);
+scene_point solve_point(scene s, const std::optional<load_given>& load) {
+    const double Q = load_of(s, load);
     const auto start = std::chrono::steady_clock::now();
     std::optional<contact_width> width;
     contact c = settled_contact(s, width, Q);

@@ -26,6 +26,11 @@ inline constexpr const char* paper_reference =
 // writes starts with the line "# roughroll X.Y.Z", so that a result names the code that made it.
 const char* version();
 
+// A load ratio Q/f for a label or a progress line: `digits` significant digits, or more where
+// fewer would print a ratio below 1 in magnitude as +-1, gross sliding (Q/f = 1 - 1e-9 is
+// "0.999999999", not "1"); shortest round-trip digits at most.
+std::string ratio_text(double q, int digits);
+
 struct point_report {
     std::string label;
     const normal_solution& normal;

@@ -4,6 +4,7 @@
 //   label = "Fig. 2a, curve 2"   # optional, names the scene in outputs
 //   friction = 0.3               # f in [min_friction, max_friction] (required)
 //   Q = 0.15                     # P1/P2, optional (the command line may give it)
+//   # Q_over_f = 0.5             # or the load as Q/f in [-1, 1] (not both; P1 in N/m for a physical scene)
 //   [cylinder1.tangential]       # T_1^(1), A_1^(1) of (3.26)
 //   T = 0.5
 //   A = 0.5
@@ -47,10 +48,25 @@ namespace roughroll {
 constexpr double min_friction = 1e-12;
 constexpr double max_friction = 1e12;
 
+// A load as its user gives it (a scene key, a command-line option, a Python keyword): Q = P1/P2
+// of (3.22), its ratio Q/f to the friction (xi/f depends on Q/f alone), or P1 in N/m (a physical
+// scene's, Q = P1/P2).
+// A plain number is a Q, as the library's callers have always given it.
+enum class load_kind { Q, Q_over_f, P1 };
+struct load_given {
+    load_kind kind = load_kind::Q;
+    double value = 0.0;
+    load_given(double Q) : value(Q) {}  // NOLINT(google-explicit-constructor): a number is a Q
+    load_given(load_kind k, double v) : kind(k), value(v) {}
+};
+
 struct scene {
     std::string label;
     double friction = 0.0;
     std::optional<double> Q;
+    // Set when the scene gives its load as Q/f: Q is then Q_over_f f, and follows a friction
+    // given on the command line (override_friction).
+    std::optional<double> Q_over_f;
     roughness surfaces;
     solver_options solver;
     dissimilar materials;  // beta_D and the coupling level (docs/formulation.md 8); beta_D = 0: the paper's
@@ -70,14 +86,18 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
 // Reads and parses a scene file; a missing, unreadable or non-regular file is an input_error.
 scene read_scene(const std::string& path);
 
-// The load to solve for: `override` (the command line) if given, else the scene's Q.
-// Throws input_error when neither is given, when Q is not finite, or when |Q| > f
-// (the cylinders slide).
-double load_of(const scene& s, std::optional<double> override);
+// The load to solve for: `override` (the command line's --Q, --Q-over-f or --P1, the Python
+// keywords Q=, Q_over_f=, P1=) if given, else the scene's Q; Q = (Q/f) f, or P1/P2 of a physical
+// scene. Throws input_error with one line (naming the load as the scene keys Q, Q_over_f, P1)
+// when no load is given, when it is not finite, when |Q| > f, |Q/f| > 1 or |P1| > f P2 (the
+// cylinders slide), and for P1 in a dimensionless scene or at contact_width = "hertz" (whose
+// model carries P2/lambda, not P2).
+double load_of(const scene& s, const std::optional<load_given>& override);
 
 // The command line's --friction over the scene's friction (nothing when not given), checked
 // as the scene's key is: in [min_friction, max_friction]. The load is checked against it by
-// load_of, so a scene's Q above the new f is refused there (--Q may give another).
+// load_of, so a scene's Q above the new f is refused there (--Q may give another). A scene
+// that gives Q_over_f keeps its ratio: its Q becomes Q_over_f times the new f.
 // `name`: how the caller spells it in the one-line refusal ("friction" from Python).
 void override_friction(scene& s, std::optional<double> friction, const std::string& name = "--friction");
 

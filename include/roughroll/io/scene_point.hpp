@@ -53,8 +53,8 @@ struct scene_point {
     point_report report() const;  // what to_json and write_summary print
 };
 
-// load_of(s, Q), settle_width, the contact and its point for the load, and its estimate.
-scene_point solve_point(scene s, std::optional<double> Q);
+// load_of(s, load), settle_width, the contact and its point for the load, and its estimate.
+scene_point solve_point(scene s, const std::optional<load_given>& load);
 
 // A creep curve of a scene: creep_curve at `loads` (curve_loads(points, ...) when none), or
 // swept_curve of `points` when `sweep`, with each row's contact width for a physical scene.
