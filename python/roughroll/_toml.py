@@ -60,6 +60,10 @@ def _value(v, path):
         if v.ndim != 1:
             raise TypeError(f"{_where(path)}: an array of {v.ndim} dimensions is not a scene value "
                             "(give a one-dimensional array)")
+        if getattr(v.dtype, "kind", "") == "f":
+            # A float array at once (a profile of 1e6 samples): repr is _value's text for every
+            # float, nan, inf and -inf included.
+            return "[" + ", ".join(map(repr, v.tolist())) + "]"
         v = v.tolist()
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_value(x, path) for x in v) + "]"

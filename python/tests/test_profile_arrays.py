@@ -99,3 +99,11 @@ def test_wrong_shapes_and_mixtures():
     # Plain lists work as arrays do.
     assert roughroll.roughness(dict(BASE, profile_x1=X.tolist(), profile_h0=H.tolist())) == \
         roughroll.roughness(dict(BASE, profile_x1=X, profile_h0=H))
+
+
+def test_float_arrays_are_written_as_their_lists():
+    # The fast path for float arrays writes what the element-wise one writes, nan and inf included.
+    from roughroll import _toml
+    v = np.array([0.0, 1e-300, -2.5, np.nan, np.inf, -np.inf, 1 / 3, 5e-324 * 0])
+    assert _toml.dumps({"a": v}) == _toml.dumps({"a": [float(e) for e in v]})
+    assert _toml.dumps({"a": np.array([1, 2])}) == _toml.dumps({"a": [1, 2]})
