@@ -277,12 +277,19 @@ void bind_scene(py::module_& m) {
             py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"))
         .def(
             "curve",
-            [](const scene& s, std::optional<std::vector<double>> loads, int points, bool sweep, std::optional<int> n,
-               std::optional<std::string> method, std::optional<std::string> zones, std::optional<double> friction) {
+            [](const scene& s, std::optional<std::vector<double>> loads, std::optional<std::vector<double>> ratios,
+               int points, bool sweep, std::optional<int> n, std::optional<std::string> method,
+               std::optional<std::string> zones, std::optional<double> friction) {
                 curve_columns c;
                 {
                     py::gil_scoped_release release;
-                    c = solve_curve(overridden(s, {n, method, zones, friction}), loads, points, sweep);
+                    scene o = overridden(s, {n, method, zones, friction});
+                    if (ratios) {
+                        // Each load Q/f as a point's (load_of): the same checks and the same Q = (Q/f) f.
+                        loads.emplace();
+                        for (const double q : *ratios) loads->push_back(load_of(o, load_given(load_kind::Q_over_f, q)));
+                    }
+                    c = solve_curve(std::move(o), loads, points, sweep);
                 }
                 py::dict d;
                 d["Q"] = array_of(c.Q);
@@ -307,8 +314,8 @@ void bind_scene(py::module_& m) {
                 }
                 return d;
             },
-            py::arg("loads"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"), py::arg("zones"),
-            py::arg("friction"))
+            py::arg("loads"), py::arg("Q_over_f"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"),
+            py::arg("zones"), py::arg("friction"))
         .def(
             "traction",
             [](const scene& s, std::optional<double> Q, std::optional<double> Q_over_f, std::optional<double> P1,

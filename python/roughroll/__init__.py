@@ -342,7 +342,8 @@ class Scene:
         return solve([(self, {key: x}) for x in _numbers(values, name)], threads=threads, method=method, n=n,
                      zones=zones, friction=friction)
 
-    def curve(self, loads: Optional[Sequence[float]] = None, *, points: int = 51, sweep: bool = False,
+    def curve(self, loads: Optional[Sequence[float]] = None, *, Q_over_f: Optional[Sequence[float]] = None,
+              points: int = 51, sweep: bool = False,
               method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
               friction: Optional[float] = None) -> Dict[str, np.ndarray]:
         """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
@@ -351,6 +352,8 @@ class Scene:
         ----------
         loads : sequence of float, optional
             The loads Q of the rows; default: ``points`` loads chosen as below.
+        Q_over_f : sequence of float, optional
+            Or the loads as Q/f, each in [-1, 1] (Q = (Q/f) f at ``friction`` if given).
         points : int
             The rows of a curve without ``loads``.
         sweep : bool
@@ -391,13 +394,18 @@ class Scene:
         """
         if not isinstance(sweep, (bool, np.bool_)):
             raise TypeError(f"sweep must be True or False, not {type(sweep).__name__}")
-        if loads is not None:
+        if loads is not None and Q_over_f is not None:
+            raise InputError("give the loads once, as loads (Q) or Q_over_f")
+        if loads is not None or Q_over_f is not None:
             if sweep:
                 raise InputError("a curve swept in c0 chooses its own loads: give loads or sweep=True, not both")
+        if loads is not None:
             loads = _numbers(loads, "loads").tolist()
+        if Q_over_f is not None:
+            Q_over_f = _numbers(Q_over_f, "Q_over_f").tolist()
         # Beyond C++'s int the library's own check answers (its message names no number).
         points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
-        c = self._core.curve(loads, points, bool(sweep), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))
+        c = self._core.curve(loads, Q_over_f, points, bool(sweep), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))
         for line in c.pop("_refused"):
             warnings.warn(line, RefusedPointWarning, stacklevel=2)
         c["status"] = np.array(c["status"], dtype=str)

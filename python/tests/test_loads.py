@@ -121,3 +121,19 @@ def test_many_points():
         roughroll.solve([(s, {"q": 0.1})])
     with pytest.raises(roughroll.InputError, match="give the loads once"):
         s.points([0.1], Q_over_f=[0.5])
+
+
+def test_curve_at_ratios():
+    s = roughroll.read_scene(DATA / "fig2a-T1.toml")
+    by_ratio = s.curve(Q_over_f=[0.0, 0.5, -0.5, 1.0], n=32)
+    by_q = s.curve([0.0, 0.15, -0.15, 0.3], n=32)
+    for key in ("Q", "Q_over_f", "c0", "xi", "xi_carter"):
+        np.testing.assert_array_equal(by_ratio[key], by_q[key], err_msg=key)
+    # At another friction the ratios stay ratios.
+    np.testing.assert_array_equal(s.curve(Q_over_f=[0.5], friction=0.2, n=32)["Q"], [0.1])
+    with pytest.raises(roughroll.InputError, match="Q_over_f must lie in"):
+        s.curve(Q_over_f=[0.5, 1.5], n=32)
+    with pytest.raises(roughroll.InputError, match="give the loads once"):
+        s.curve([0.1], Q_over_f=[0.5])
+    with pytest.raises(roughroll.InputError, match="sweep"):
+        s.curve(Q_over_f=[0.5], sweep=True)
