@@ -210,8 +210,7 @@ traction_columns solve_traction(scene s, const std::optional<load_given>& load, 
     out.point = to_json(report).dump();
     out.c0_level = level.c0;
     out.physical = report.si.has_value();
-    for (const traction_row& row :
-         traction_table(sp.solved, level, grid, Q, f, report.si)) {
+    for (const traction_row& row : traction_table(sp.solved, level, grid, Q, f, report.si)) {
         out.r.push_back(row.r);
         out.p.push_back(row.p);
         out.p1.push_back(row.p1);
@@ -274,7 +273,8 @@ void bind_scene(py::module_& m) {
                 py::gil_scoped_release release;
                 return point_json(s, load, {n, method, zones, friction});
             },
-            py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"))
+            py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("n"), py::arg("method"), py::arg("zones"),
+            py::arg("friction"))
         .def(
             "curve",
             [](const scene& s, std::optional<std::vector<double>> loads, std::optional<std::vector<double>> ratios,

@@ -98,8 +98,10 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
         if (table.contains("profile_csv"))
             fail(source, "give the measured profile as " + quoted(key("profile_csv")) + " or as " +
                              quoted(key("profile_x1")) + " and " + quoted(key("profile_h0")) + ", not both");
-        const std::vector<double> x1 = numbers_at(required(table, "profile_x1", source, path), source, key("profile_x1"));
-        const std::vector<double> h0 = numbers_at(required(table, "profile_h0", source, path), source, key("profile_h0"));
+        const std::vector<double> x1 =
+            numbers_at(required(table, "profile_x1", source, path), source, key("profile_x1"));
+        const std::vector<double> h0 =
+            numbers_at(required(table, "profile_h0", source, path), source, key("profile_h0"));
         if (x1.size() != h0.size())
             fail(source, quoted(key("profile_x1")) + " has " + std::to_string(x1.size()) + " samples but " +
                              quoted(key("profile_h0")) + " has " + std::to_string(h0.size()) +

@@ -42,8 +42,8 @@ public:
         if (x == l_) {
             // The periodic closing point: allowed only as a repeat of the first sample.
             if (h != samples_.h0.front()) {
-                fail(at, "the closing point x1 = l = " + shortest(l_) + " has h0 = " + shortest(h) +
-                             ", not the h0 = " + shortest(samples_.h0.front()) + " of x1 = 0 (the profile is periodic)");
+                fail(at, "the closing point x1 = l = " + shortest(l_) + " has h0 = " + shortest(h) + ", not the h0 = " +
+                             shortest(samples_.h0.front()) + " of x1 = 0 (the profile is periodic)");
             }
             closed_ = true;
             return;

@@ -298,8 +298,8 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
 scene parse_scene(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
     const toml::table root = parse_toml(text, source);
     check_keys(root,
-               {"label", "friction", "Q", "Q_over_f", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2", "P1",
-                "contact_width", "beta_d", "coupling"},
+               {"label", "friction", "Q", "Q_over_f", "cylinder1", "cylinder2", "solver", "E", "nu", "R1", "R2", "P2",
+                "P1", "contact_width", "beta_d", "coupling"},
                source, "");
 
     scene s;
@@ -316,7 +316,8 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
     for (const char* key : {"Q", "Q_over_f", "P1"})
         if (root.contains(key)) loads.push_back(quoted(key));
     if (loads.size() > 1)
-        fail(source, "give " + loads[0] + " or " + loads[1] + ", not both: the load is given once, as Q, Q_over_f or P1");
+        fail(source,
+             "give " + loads[0] + " or " + loads[1] + ", not both: the load is given once, as Q, Q_over_f or P1");
     if (const toml::node* load = root.get("Q")) {
         const double Q = number_at(*load, source, "Q");
         const std::string problem = load_problem(Q, s.friction);
@@ -408,7 +409,8 @@ double load_of(const scene& s, const std::optional<load_given>& override) {
         }
         case load_kind::P1: {
             if (!s.physical)
-                throw input_error("P1 (N/m) needs a physical scene (E, nu, R1, R2, P2): give the load as Q or Q_over_f");
+                throw input_error(
+                    "P1 (N/m) needs a physical scene (E, nu, R1, R2, P2): give the load as Q or Q_over_f");
             const std::string problem = tangential_load_problem(x, f, *s.physical);
             if (!problem.empty()) throw input_error("P1 " + problem);
             return load_ratio_of(x, f, *s.physical);
