@@ -24,6 +24,8 @@
 #include "roughroll/layer/roughness_parameters.hpp"
 #include "roughroll/io/profile_csv.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/problems/creep_curve.hpp"
+#include "roughroll/problems/load_ratio.hpp"
 #include "../validation/zone_scenes.hpp"
 
 using namespace roughroll;

@@ -26,6 +26,7 @@
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/io/traction_table.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 namespace py = pybind11;
 

@@ -23,6 +23,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 using namespace roughroll;
 

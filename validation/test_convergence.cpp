@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 using namespace roughroll;
 

@@ -14,6 +14,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 #include "aluminium_on_steel.hpp"
 
 using namespace roughroll;

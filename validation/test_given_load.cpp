@@ -11,6 +11,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/problems/load_ratio.hpp"
 
 using namespace roughroll;
 

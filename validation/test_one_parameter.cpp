@@ -12,6 +12,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/one_parameter.hpp"
+#include "roughroll/problems/load_ratio.hpp"
 
 using namespace roughroll;
 

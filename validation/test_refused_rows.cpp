@@ -17,6 +17,7 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 #include "aluminium_on_steel.hpp"
 
 using namespace roughroll;

@@ -24,6 +24,7 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/zone_solver.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 #include "test_zones_low_order.hpp"
 #include "zone_scenes.hpp"
 

@@ -8,6 +8,7 @@
 //                                        them (io/scene_point.hpp)
 //   contact, tangential_solution,        one scene's contact: its normal solution, points, the
 //   normal_solution, error_estimate      stick and slip zones, tractions (problems/contact.hpp)
+//   creep_curve, swept_curve, curve_loads  a contact's creep curve, row by row (problems/creep_curve.hpp)
 //   si_point, contact_width              a physical scene's results in SI units (model/physical_scene.hpp)
 //   carter, carter_at_stick_end          Carter's closed form for smooth cylinders (model/carter.hpp)
 //   to_json, write_summary, version      the program's JSON and text reports (io/output.hpp)
@@ -27,3 +28,4 @@
 #include "roughroll/model/carter.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/creep_curve.hpp"

@@ -23,6 +23,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/io/output.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 namespace roughroll::cli {
 

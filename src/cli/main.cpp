@@ -26,6 +26,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 namespace roughroll::cli {
 

@@ -11,6 +11,7 @@
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_solver.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 // The build systems define it from the VERSION file (CMakeLists.txt, Makefile.am).
 #ifndef ROUGHROLL_VERSION
@@ -80,6 +81,7 @@ std::string no_estimate_reason(const point_report& r) {
 nlohmann::json to_json(const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
+    const pressure_peak peak = peak_of(r.normal);
     nlohmann::json checks = {
         {"pressure_nonnegative", s.checks.pressure_holds},
         {"stick_traction_bound_3_3", s.checks.stick_holds},
@@ -109,6 +111,8 @@ nlohmann::json to_json(const point_report& r) {
               {"xi1", r.si->xi1},
               {"xi1_carter", r.si->xi1_carter},
               {"p_centre_Pa", r.si->p_scale * r.normal.pressure(0.0)},
+              {"p_peak_Pa", r.si->p_scale * peak.p},
+              {"x_peak_m", r.si->a * peak.r},
               {"width_iterations", r.si->width_iterations},
               {"roughness_at_a", {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
                                   {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
@@ -117,7 +121,7 @@ nlohmann::json to_json(const point_report& r) {
     if (r.coupling)
         coupling.update({{"offset_e", r.coupling->offset},
                          {"hertz_load_ratio_johnson", r.coupling->lambda_johnson},
-                         {"pressure_max_change", r.coupling->pressure_max_change},
+                         {"peak_pressure_change", r.coupling->peak_pressure_change},
                          {"iterations", r.coupling->iterations},
                          {"contraction", r.coupling->contraction}});
     return {
@@ -136,6 +140,7 @@ nlohmann::json to_json(const point_report& r) {
         {"beta_d", s.sign * s.forcing},
         {"xi", s.xi},
         {"hertz_load_ratio", r.normal.lambda},
+        {"pressure_peak", {{"r", peak.r}, {"p", peak.p}}},
         {"gamma", r.normal.gamma},
         {"n", r.normal.rule.n},
         {"method", to_string(r.normal.how)},
@@ -155,10 +160,13 @@ nlohmann::json to_json(const point_report& r) {
 void write_summary(std::ostream& out, const point_report& r) {
     const auto& s = r.solution;
     const carter_point smooth = carter(s.Q, s.f);
+    const pressure_peak peak = peak_of(r.normal);
     if (!r.label.empty()) out << one_line(r.label) << "\n";  // no control character reaches the terminal
     out << "  Q = P1/P2           " << shortest(s.Q) << "   (Q/f = " << shortest(s.Q / s.f) << ", f = " << shortest(s.f)
         << ")\n"
         << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
+        << "  peak pressure p     " << shortest(peak.p) << " P2/a at r = " << shortest(peak.r)
+        << "\n"
         << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
         << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
@@ -170,8 +178,8 @@ void write_summary(std::ostream& out, const point_report& r) {
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (full coupling: " << r.coupling->iterations
             << " normal solves after Johnson's, contraction " << shortest(r.coupling->contraction) << ")\n"
             << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
-            << shortest(r.coupling->lambda_johnson) << "; p_max changed by "
-            << shortest(100.0 * r.coupling->pressure_max_change) << " %)\n";
+            << shortest(r.coupling->lambda_johnson) << "; peak pressure at the same P2 changed by "
+            << shortest(100.0 * r.coupling->peak_pressure_change) << " %)\n";
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
             << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string())
@@ -191,6 +199,8 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  loads P2, P1        " << shortest(p.P2) << " N/m, " << shortest(p.P1) << " N/m\n"
         << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"
         << "  pressure at centre  " << shortest(p.p_scale * r.normal.pressure(0.0)) << " Pa\n"
+        << "  peak pressure       " << shortest(p.p_scale * peak.p) << " Pa at x1 = "
+        << shortest(p.a * peak.r) << " m\n"
         << "  creep xi1           " << shortest(p.xi1) << "   (Carter, smooth: " << shortest(p.xi1_carter) << ")\n";
     const auto cylinder = [&out](const char* name, const cylinder_roughness& c) {
         out << "  " << name << " at a     tangential " << term_text(c.tangential) << "; normal " << term_text(c.normal)

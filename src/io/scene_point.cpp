@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/creep_curve.hpp"
+#include "roughroll/problems/load_ratio.hpp"
 
 namespace roughroll {
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -84,6 +85,17 @@ bool in_asymptotic_range(const kernel& k, int n, method how) {
     // (validation/test_stiff.cpp), the error falls at the method's order from there on.
     const double rate = k.max_rate(), h = M_PI / (n + 1);
     return how == method::paper ? rate * h <= 0.125 : rate * 0.5 * h * h <= 0.25;
+}
+
+void check_extrapolation_range(const kernel& k, int n, const char* which) {
+    if (n / 2 >= min_nodes && in_asymptotic_range(k, n / 2, method::product)) return;
+    const std::string advice = n < max_nodes && in_asymptotic_range(k, max_nodes / 2, method::product)
+                                   ? "increase n (at most " + std::to_string(max_nodes) + ") or use method 'product'"
+                                   : "use method 'product' (no n up to " + std::to_string(max_nodes) +
+                                         " resolves them at n/2)";
+    throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
+                           ": the coarse level n/2 is not in the asymptotic range of product integration for " +
+                           which + "; " + advice);
 }
 
 void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what) {

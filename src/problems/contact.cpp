@@ -15,17 +15,6 @@
 namespace roughroll {
 
 namespace {
-// Richardson's rule for an error ~ C n^-4: levels n and n/2.
-double richardson(double fine, double coarse) { return (16.0 * fine - coarse) / 15.0; }
-
-// What can help where extrapolated's level n/2 is below the kernels' resolution: a larger n only
-// where the largest one puts its n/2 in range.
-std::string coarse_level_advice(const kernel& k, int n) {
-    if (n < max_nodes && in_asymptotic_range(k, max_nodes / 2, method::product))
-        return "increase n (at most " + std::to_string(max_nodes) + ") or use method 'product'";
-    return "use method 'product' (no n up to " + std::to_string(max_nodes) + " resolves them at n/2)";
-}
-
 kernel widest_kernel(const roughness& r) {
     const double rate = std::max(kernel::normal(r).max_rate(), kernel::tangential(r).max_rate());
     return kernel(std::vector<exponential_term>{{1.0, rate}});
@@ -47,11 +36,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
                                                                        kernel::tangential(surfaces).empty());
     if (extrapolate) {
         // Richardson's rule holds only where the error already falls like n^-4.
-        if (n / 2 < min_nodes || !in_asymptotic_range(widest_kernel(surfaces), n / 2, method::product))
-            throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
-                                   ": the coarse level n/2 is not in the asymptotic range of product integration "
-                                   "for these kernels; " +
-                                   coarse_level_advice(widest_kernel(surfaces), n));
+        check_extrapolation_range(widest_kernel(surfaces), n, "these kernels");
         companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones},
                                                materials, cache);
     }
@@ -830,126 +815,6 @@ std::vector<contact::distribution_row> contact::distributions(const tangential_s
         row.v = row.stick ? 0.0 : velocity[i];
         if (!std::isfinite(row.p) || !std::isfinite(row.p1) || !std::isfinite(row.v))
             throw numerical_error("non-finite traction at r = " + shortest(row.r));
-    }
-    return rows;
-}
-
-double load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
-    // The calls of contact's constructor for P_H/P2, in the same order and with the same arguments.
-    const int n = options.nodes();
-    if (options.how == method::one_parameter)
-        return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
-    const kernel k2 = kernel::normal(surfaces);
-    if (options.how != method::extrapolated || k2.empty()) {
-        return solve_normal(k2, n, level_of(options.how), cache).lambda;
-    }
-    if (n / 2 < min_nodes || !in_asymptotic_range(k2, n / 2, method::product))
-        throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
-                               ": the coarse level n/2 is not in the asymptotic range of product integration "
-                               "for the normal kernel; " + coarse_level_advice(k2, n));
-    const double coarse = solve_normal(k2, n / 2, method::product, cache).lambda;
-    return richardson(solve_normal(k2, n, method::product, cache).lambda, coarse);
-}
-
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
-    const int n = options.nodes() / 2;
-    if (n < min_nodes)
-        throw resolution_error("the cheap level n/2 = " + std::to_string(n) + " is below " + std::to_string(min_nodes));
-    if (options.how == method::one_parameter)
-        return one_parameter_normal(one_parameter_compliances(surfaces).normal, n).lambda;
-    return solve_normal(kernel::normal(surfaces), n, level_of(options.how), cache).lambda;
-}
-
-double coupled_load_ratio(const roughness& surfaces, double f, const solver_options& options,
-                          const dissimilar& materials, double Q, normal_cache* cache) {
-    if (materials.beta_d == 0.0 || materials.coupling != coupling_level::full)
-        throw input_error("coupled_load_ratio: the rollers are not dissimilar at full coupling (use load_ratio)");
-    contact c(surfaces, f, options, materials, cache);
-    c.point(Q);
-    return c.normal().lambda;
-}
-
-namespace {
-void check_curve_points(int points) {
-    if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
-}
-
-// A refused row (contact.hpp, curve_point): the given load Q or stick end c0 (the other NaN),
-// NaN for every computed number, so that no refused row can pass for an answer; Carter's
-// closed form at what was given (at the same c0 on a swept curve), never NaN.
-curve_point refused_row(double Q, double c0, double f, const std::string& at, const resolution_error& why) {
-    const double nan = std::nan("");
-    tangential_solution s{};
-    s.Q = Q;
-    s.f = f;
-    s.c0 = c0;
-    s.xi = s.sign = s.rcond = s.load_slope = s.start = nan;
-    s.checks = traction_checks{nan, nan, nan, nan, nan, false, false, false};
-    const carter_point smooth = std::isnan(Q) ? carter_point{c0, carter_at_stick_end(c0, f).xi} : carter(Q, f);
-    return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
-}
-}  // namespace
-
-curve_point refused_load(double Q, double f, const resolution_error& why) {
-    return refused_row(Q, std::nan(""), f, "Q = " + shortest(Q) + " (Q/f = " + shortest(Q / f) + ")", why);
-}
-
-std::vector<double> curve_loads(int points, double f) {
-    check_curve_points(points);
-    std::vector<double> loads(points);
-    for (int i = 0; i < points; ++i) {
-        const double v = 1.0 - static_cast<double>(i) / (points - 1);  // 1 - u
-        loads[i] = f * (1.0 - v * v);
-    }
-    loads.back() = f;  // exactly, so the last point is the onset of gross sliding
-    return loads;
-}
-
-std::vector<double> curve_loads(int points, double f, double beta_d) {
-    if (beta_d == 0.0) return curve_loads(points, f);
-    // Dissimilar rollers: the curve is not odd in Q (8(h)), so -f..f, uniform in Q (the five/three
-    // zone transitions lie near free rolling, 8(j) 4a); the ends exactly -f and f.
-    check_curve_points(points);
-    std::vector<double> loads(points);
-    for (int i = 0; i < points; ++i) loads[i] = f * (2.0 * i - (points - 1)) / (points - 1);
-    loads.front() = -f;
-    loads.back() = f;
-    return loads;
-}
-
-std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row) {
-    check_curve_points(points);
-    std::vector<curve_point> rows;
-    rows.reserve(points);
-    for (int i = 0; i < points; ++i) {
-        // rho = (1 + c0)/2 uniform from 1 to 0: Carter's Q/f = 1 - rho^2, the loads of curve_loads.
-        const double rho = 1.0 - static_cast<double>(i) / (points - 1);
-        const double c0 = i + 1 == points ? -1.0 : 2.0 * rho - 1.0;
-        if (before_row) before_row();
-        try {
-            contact::swept_point p = c.at_stick_end(c0);
-            const carter_point smooth = carter(p.solution.Q, c.friction());
-            rows.push_back({std::move(p.solution), smooth, p.estimate, {}});
-        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
-            rows.push_back(refused_row(std::nan(""), c0, c.friction(), "c0 = " + shortest(c0), e));
-        }
-    }
-    return rows;
-}
-
-std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
-                                     const std::function<void()>& before_row) {
-    std::vector<curve_point> rows;
-    rows.reserve(loads.size());
-    for (double Q : loads) {
-        if (before_row) before_row();
-        try {
-            tangential_solution s = c.point(Q);
-            const auto e = c.estimate(s);
-            rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
-        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
-            rows.push_back(refused_load(Q, c.friction(), e));
-        }
     }
     return rows;
 }

@@ -9,6 +9,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/load_ratio.hpp"
 
 namespace roughroll {
 

@@ -11,14 +11,6 @@
 namespace roughroll {
 
 namespace {
-constexpr int pressure_samples = 2001;  // samples of p for its maximum (the reported change)
-
-double pressure_maximum(const normal_solution& p) {
-    double m = 0.0;
-    for (int i = 0; i < pressure_samples; ++i) m = std::max(m, p.pressure(-1.0 + 2.0 * i / (pressure_samples - 1.0)));
-    return m;
-}
-
 std::string at_load(double Q, double f) { return "full coupling at Q/f = " + shortest(Q / f) + ": "; }
 }  // namespace
 
@@ -132,8 +124,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
 
         if (value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance) {
             summary_.offset = offset;
-            const double johnson_max = pressure_maximum(johnson);
-            summary_.pressure_max_change = (pressure_maximum(current_->normal) - johnson_max) / johnson_max;
+            summary_.peak_pressure_change = peak_of(current_->normal).p / peak_of(johnson).p *
+                                                std::sqrt(johnson.lambda / current_->normal.lambda) - 1.0;
             return current_->s;
         }
         // Growing changes after the first steps: the alternation does not contract here (changes

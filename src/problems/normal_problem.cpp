@@ -2,17 +2,32 @@
 #include "roughroll/problems/normal_problem.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <gsl/gsl_math.h>
 
 #include "roughroll/numerics/chebyshev_projection.hpp"
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/least_value.hpp"
 
 namespace roughroll {
 
 double normal_solution::pressure(double r) const {
     if (std::fabs(r) >= 1.0) return 0.0;
     return u_series(b, r) * std::sqrt(1.0 - r * r);
+}
+
+pressure_peak peak_of(const normal_solution& s) {
+    // The least value of -p; -p is 0 at both edges, so no edge is the answer.
+    const auto minus_p = [&s](double r) { return -s.pressure(r); };
+    const least_value least = least_on_contact(
+        [&](const std::vector<double>& r) {
+            std::vector<double> v(r.size());
+            for (std::size_t i = 0; i < r.size(); ++i) v[i] = minus_p(r[i]);
+            return v;
+        },
+        minus_p, 2001, true, "peak pressure");
+    return {least.r, -least.value};
 }
 
 normal_solver::normal_solver(int n, method how)

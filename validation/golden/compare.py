@@ -8,7 +8,7 @@ Every number must be identical, or have moved by no more than its error estimate
 c0, xi, hertz_load_ratio and stick_start against its error_estimate entries, a curve row's c0, xi and Q
 against its *_error_estimate columns; a derived number (xi_over_f, the SI values) against the largest
 relative estimate of its point or row. Estimates themselves may change (listed). Timings and the
-version are ignored. Exit 0 when nothing moved outside its estimate, 1 otherwise; one line per change.
+version are ignored; a JSON key only in NEW is listed as added. Exit 0 when nothing moved outside its estimate, 1 otherwise; one line per change.
 """
 import csv
 import json
@@ -71,8 +71,11 @@ def compare_json(report, name, old, new):
     for key in sorted(set(old_flat) | set(new_flat)):
         if key.split(".")[-1] in IGNORED:
             continue
-        if key not in old_flat or key not in new_flat:
-            report.note("OUTSIDE", name, f"{key} only in {'new' if key in new_flat else 'reference'}")
+        if key not in old_flat:  # a new output: nothing pinned moved
+            report.note("added", name, f"{key} = {new_flat[key]!r}")
+            continue
+        if key not in new_flat:
+            report.note("OUTSIDE", name, f"{key} only in the reference")
             continue
         o, n = old_flat[key], new_flat[key]
         if o == n:

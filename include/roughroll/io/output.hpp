@@ -12,6 +12,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 namespace roughroll {
 

@@ -14,6 +14,7 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/contact_width.hpp"
+#include "roughroll/problems/creep_curve.hpp"
 
 namespace roughroll {
 

@@ -72,6 +72,12 @@ void add_kernel_term(gsl_matrix* a, const kernel& k, const gauss_chebyshev& rule
 // 4 product) from n on: the condition for n/2 to serve as the error estimate's companion.
 bool in_asymptotic_range(const kernel& k, int n, method how);
 
+// Richardson's rule of method::extrapolated holds where the error already falls like n^-4: throws
+// resolution_error unless its coarse level n/2 is at least min_nodes and in the asymptotic range of
+// product integration for `k`. `which` names the kernels ("the normal kernel"); the message says
+// what can help (a larger n only where one puts n/2 in range).
+void check_extrapolation_range(const kernel& k, int n, const char* which);
+
 // Throws resolution_error when `k` varies faster than `how` resolves with this n.
 // `what` names the kernel in the message ("K2* (normal)").
 void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what);

@@ -219,65 +219,7 @@ private:
     bool last_level_point_checked_ = false;
 };
 
-// P_H/P2 alone, exactly as contact(surfaces, f, options).normal().lambda reports it (the same
-// calls, the same extrapolation), for every method, without the tangential solver: for a
-// root search in the contact width. The extrapolated method's asymptotic-range condition is
-// checked on the normal kernel only (the tangential kernel does not enter P_H/P2).
-// `cache`: the normal problems shared with the other trials of a width search and its contact.
-double load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
-
-// P_H/P2 on the cheap level of `options`: the method's plain discretisation at n/2 (product
-// integration for `extrapolated`, the one-parameter normal problem for `one_parameter`). Its
-// root in the contact width starts the width search at the scene's method (find_width), whose
-// answer is load_ratio's root, not this one's. Throws resolution_error when n/2 < min_nodes or
-// the kernel is beyond the level's resolution.
-double coarse_load_ratio(const roughness& surfaces, const solver_options& options, normal_cache* cache = nullptr);
-
-// P_H/P2 of dissimilar rollers at full coupling (docs/formulation.md 8(c), 8(e)): lambda =
-// 1 - int p J - beta_D int p1 r/sqrt(1 - r^2) of the converged alternation at the load Q, as
-// contact(surfaces, f, options, materials).point(Q) leaves it in contact::normal() (level n).
-// It depends on Q through p1: the width of a physical scene follows the tangential load too.
-double coupled_load_ratio(const roughness& surfaces, double f, const solver_options& options,
-                          const dissimilar& materials, double Q, normal_cache* cache = nullptr);
-
-// One row of a creep curve: solved, or refused. A refused row is a point the method cannot
-// answer honestly at this n (a resolution_error of contact::point, contact::estimate or
-// contact::at_stick_end: the levels do not converge visibly, a load below the resolution);
-// the curve goes on past it. Its `solution` keeps only what was given, the load Q of
-// creep_curve (and `smooth`, Carter's closed form at that Q) or the stick end c0 of
-// swept_curve; every other number is NaN, and `refused` holds one line naming the point and
-// the reason. Only resolution_error is absorbed: input_error (bad input) and numerical_error
-// (a GSL status, a singular or non-finite system, a zone search that finds no structure, any
-// of which may be a bug or a scene-wide fault) still abort the curve (docs/robustness.md).
-struct curve_point {
-    tangential_solution solution;
-    carter_point smooth;                      // Carter's curve at the same Q
-    std::optional<error_estimate> estimate;  // contact::estimate
-    std::string refused;                      // empty: solved; else "Q = ...: <the resolution_error>"
-
-    bool is_refused() const { return !refused.empty(); }
-};
-
-// Q/f = 1 - (1 - u)^2 for u uniform on [0, 1]: `points` loads from 0 to f, dense
-// near Q = f where the creep curve steepens (there xi ~ sqrt(1 - Q/f)).
-std::vector<double> curve_loads(int points, double f);
-// The default loads of a curve for Dundurs' beta_D: curve_loads(points, f) for beta_D = 0; else
-// `points` loads uniform from -f to f (the creep curve of dissimilar rollers is not odd in Q,
-// docs/formulation.md 8(h)).
-std::vector<double> curve_loads(int points, double f, double beta_d);
-
-// `before_row`, when set, is called before each row: a caller's hook between rows (the Python
-// module checks for Ctrl-C there); what it throws ends the curve.
-std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
-                                     const std::function<void()>& before_row = {});
-// The row of creep_curve for a load Q refused by `why`.
-curve_point refused_load(double Q, double f, const resolution_error& why);
-
-// A curve swept in c0 is the paper's single zone: input_error for dissimilar rollers (8(g)).
+// A curve swept in c0 (contact::at_stick_end) is the paper's single zone: input_error for dissimilar rollers (8(g)).
 void check_sweepable(const dissimilar& materials);
-
-// A creep curve swept in c0 from 1 to -1 (rho = (1 + c0)/2 uniform): one linear solve per
-// point, no root search; the loads are Q(c0), dense near f as in curve_loads.
-std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {});
 
 }  // namespace roughroll

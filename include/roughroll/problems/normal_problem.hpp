@@ -42,6 +42,14 @@ struct normal_solution {
     double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2), (4.1)
 };
 
+// The peak of the pressure p(r) of (4.1) on (-1, 1): its value (in units of P2/a) and position r.
+// Sampled at 2001 points and refined by golden section (least_value.hpp): the value to rounding,
+// r to about 1e-8 (a flat maximum); Hertz's peak is 2/pi at r = 0.
+struct pressure_peak {
+    double r, p;
+};
+pressure_peak peak_of(const normal_solution& s);
+
 // Explicit workspace: the (n+2)x(n+2) system, allocated once per n.
 class normal_solver {
 public:

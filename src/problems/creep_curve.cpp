@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughroll/problems/creep_curve.hpp"
+
+#include <cmath>
+
+#include "roughroll/base/text.hpp"
+
+namespace roughroll {
+
+namespace {
+void check_curve_points(int points) {
+    if (points < 2 || points > 100000) throw input_error("a curve needs between 2 and 100000 points");
+}
+
+// A refused row (contact.hpp, curve_point): the given load Q or stick end c0 (the other NaN),
+// NaN for every computed number, so that no refused row can pass for an answer; Carter's
+// closed form at what was given (at the same c0 on a swept curve), never NaN.
+curve_point refused_row(double Q, double c0, double f, const std::string& at, const resolution_error& why) {
+    const double nan = std::nan("");
+    tangential_solution s{};
+    s.Q = Q;
+    s.f = f;
+    s.c0 = c0;
+    s.xi = s.sign = s.rcond = s.load_slope = s.start = nan;
+    s.checks = traction_checks{nan, nan, nan, nan, nan, false, false, false};
+    const carter_point smooth = std::isnan(Q) ? carter_point{c0, carter_at_stick_end(c0, f).xi} : carter(Q, f);
+    return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
+}
+}  // namespace
+
+curve_point refused_load(double Q, double f, const resolution_error& why) {
+    return refused_row(Q, std::nan(""), f, "Q = " + shortest(Q) + " (Q/f = " + shortest(Q / f) + ")", why);
+}
+
+std::vector<double> curve_loads(int points, double f) {
+    check_curve_points(points);
+    std::vector<double> loads(points);
+    for (int i = 0; i < points; ++i) {
+        const double v = 1.0 - static_cast<double>(i) / (points - 1);  // 1 - u
+        loads[i] = f * (1.0 - v * v);
+    }
+    loads.back() = f;  // exactly, so the last point is the onset of gross sliding
+    return loads;
+}
+
+std::vector<double> curve_loads(int points, double f, double beta_d) {
+    if (beta_d == 0.0) return curve_loads(points, f);
+    // Dissimilar rollers: the curve is not odd in Q (8(h)), so -f..f, uniform in Q (the five/three
+    // zone transitions lie near free rolling, 8(j) 4a); the ends exactly -f and f.
+    check_curve_points(points);
+    std::vector<double> loads(points);
+    for (int i = 0; i < points; ++i) loads[i] = f * (2.0 * i - (points - 1)) / (points - 1);
+    loads.front() = -f;
+    loads.back() = f;
+    return loads;
+}
+
+std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row) {
+    check_curve_points(points);
+    std::vector<curve_point> rows;
+    rows.reserve(points);
+    for (int i = 0; i < points; ++i) {
+        // rho = (1 + c0)/2 uniform from 1 to 0: Carter's Q/f = 1 - rho^2, the loads of curve_loads.
+        const double rho = 1.0 - static_cast<double>(i) / (points - 1);
+        const double c0 = i + 1 == points ? -1.0 : 2.0 * rho - 1.0;
+        if (before_row) before_row();
+        try {
+            contact::swept_point p = c.at_stick_end(c0);
+            const carter_point smooth = carter(p.solution.Q, c.friction());
+            rows.push_back({std::move(p.solution), smooth, p.estimate, {}});
+        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
+            rows.push_back(refused_row(std::nan(""), c0, c.friction(), "c0 = " + shortest(c0), e));
+        }
+    }
+    return rows;
+}
+
+std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
+                                     const std::function<void()>& before_row) {
+    std::vector<curve_point> rows;
+    rows.reserve(loads.size());
+    for (double Q : loads) {
+        if (before_row) before_row();
+        try {
+            tangential_solution s = c.point(Q);
+            const auto e = c.estimate(s);
+            rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
+        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
+            rows.push_back(refused_load(Q, c.friction(), e));
+        }
+    }
+    return rows;
+}
+
+}  // namespace roughroll
