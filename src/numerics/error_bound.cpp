@@ -45,6 +45,14 @@ double stick_system_floor(int n, double scale) {
     return growth * rounding_floor(n, scale);
 }
 
+double entry_ends_floor(int n, double scale, double rho, double b0) {
+    if (!(rho > 0.0) || !(b0 != 0.0)) return 0.0;
+    // sum_{j < n} (j + 1) eps scale: the weights |U_j(-1)| of psi(-1) on each coefficient's rounding.
+    const double m = std::max(n, 1);
+    const double entry = 0.5 * m * (m + 1.0) * DBL_EPSILON * std::fabs(scale);
+    return rho * entry / std::fabs(b0);
+}
+
 error_bound bound_error(const three_levels& v, int order, reported_value which, double floor) {
     const double full = std::ldexp(1.0, order);  // 2^p
     const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;

@@ -672,8 +672,18 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
     };
     // Each level's ends are Newton's within zone_end_resolution, so the difference of two levels
     // carries up to twice that: below it, a difference is that noise, not a ratio (free rolling of
-    // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11).
-    const double ends_floor = floor.c0 + 2.0 * zone_end_resolution;
+    // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11). Near gross
+    // sliding the entry condition's rounding moves the ends by rho/|b_0| times it (formulation 8(m),
+    // entry_ends_floor; the braked pair at Q = -0.049999 had been refused on -5.3e-11, -4.1e-10), at
+    // the finest level used: m = finest_n, or 2n for the second chance below.
+    const double terms = std::fabs(s.xi) + std::fabs(s.forcing) * std::max(1.0, std::fabs(normal().lambda)) +
+                         f_ * std::max({1.0, std::fabs(normal().lambda), kernel::tangential(surfaces_).strength(),
+                                        kernel::normal(surfaces_).strength()});
+    const auto ends_floor_at = [&](int m) {
+        return floor.c0 + 2.0 * zone_end_resolution +
+               (s.psi_b.empty() ? 0.0 : entry_ends_floor(m, terms, s.rho(), s.psi_b[0]));
+    };
+    const double ends_floor = ends_floor_at(finest_n);
     const quantity qs[] = {
         // (At full coupling P_H/P2 is level n's, not extrapolated: contact::normal.)
         {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, reported_ != nullptr && !coupled_,
@@ -746,7 +756,7 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
                 const double values[] = {0.0, a->xi, a->c0, a->start, a->end2, a->start2};
                 used = {q.v.middle, q.v.finest, values[k]};
                 used_coarsest = level_nodes(1);
-                b = bound_error(used, order, reported_value{1, false}, q.floor);
+                b = bound_error(used, order, reported_value{1, false}, k >= 2 ? ends_floor_at(2 * nodes()) : q.floor);
                 if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
             }
         }

@@ -71,4 +71,14 @@ double rounding_floor(int n, double scale);
 // rounding alone); the floor takes twice that, 8.
 double stick_system_floor(int n, double scale);
 
+// The rounding floor of zone ends fixed by the entry condition psi(-1) = 0 (7(b); the dissimilar
+// zones of 8(g)), near gross sliding (docs/formulation.md 8(m)): psi(-1) = sum_j b_j U_j(-1) with
+// |U_j(-1)| = j + 1 weighs the rounding of the n coefficients, each about eps `scale` (`scale` the
+// size of the terms of the right-hand side the traction cancels), by up to n: eps scale n (n + 1)/2
+// (measured 0.3 to 0.4 of it, growing like n^2, on Bentall and Johnson's braked pair). The
+// entry condition's slope in the start is (3/2)|b_0|/rho, b_0 ~ -f G'' rho^2/2 (7(d)), so the ends
+// move by rho/|b_0| times that rounding (the factor 2/3 kept as margin): 1/rho as the stick zone
+// shrinks. 0 where b_0 is 0 or rho is not positive (no such zone).
+double entry_ends_floor(int n, double scale, double rho, double b0);
+
 }  // namespace roughroll
