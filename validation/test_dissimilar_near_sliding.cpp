@@ -5,10 +5,13 @@
 // -4.1e-10: the rounding of the entry condition psi(-1), which grows like n^2 and moves the start by
 // rho/|b_0| = 814 times it (docs/formulation.md 8(m)); the point had been refused as not converging
 // visibly. The zone-end floor entry_ends_floor takes that rounding in: the point is answered, and
-// its estimates bound the distance from two other routes, each within its own estimate.
+// its estimates bound the distance from three other routes: n = 32, n = 512 (each within its own
+// estimate) and n = 512 with the entry condition summed over its first coefficients only.
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
+#include <utility>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -19,6 +22,9 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+#include "aluminium_on_steel.hpp"
 
 using namespace roughroll;
 
@@ -46,6 +52,41 @@ std::optional<routed> at(int n, double Q) {
         ADD_FAILURE() << "n = " << n << " refused: " << e.what();
         return std::nullopt;
     }
+}
+
+// An independent route with little rounding at any n: the zone ends with psi(-1) summed over its
+// first 24 coefficients only. The smooth pair's psi is b_0 + b_1 U_1 to leading order (7(d)); at
+// n = 512 |b_10| is 2e-17, rounding, so the truncation drops only the rounding that the full sum
+// weighs by up to n (8(m)). Secant steps in the start on that entry condition and in the end on
+// the load, from (s, c), at the braked load -Q in the |Q| frame (forcing -beta_D).
+std::pair<double, double> truncated_entry_ends(int n, double Q, double s, double c) {
+    constexpr double f = 0.05;
+    const normal_solution normal = solve_normal(kernel{}, n, method::product);
+    tangential_solver ts(normal, kernel{}, kernel{}, f);
+    const auto entry = [&](double start, double end) {
+        const tangential_solution t = ts.solve_on_zone(start, end, -beta_al_st);
+        double psi = 0.0;
+        for (std::size_t j = 0; j < 24 && j < t.psi_b.size(); ++j)
+            psi += t.psi_b[j] * (j % 2 ? -1.0 : 1.0) * static_cast<double>(j + 1);  // U_j(-1)
+        return psi;
+    };
+    const auto load = [&](double start, double end) { return ts.solve_on_zone(start, end, -beta_al_st).Q - std::fabs(Q); };
+    const auto secant = [](const std::function<double(double)>& g, double x) {
+        double x0 = x, x1 = x + 1e-7, g0 = g(x0), g1 = g(x1);
+        for (int k = 0; k < 8 && g1 != g0; ++k) {
+            const double x2 = x1 - g1 * (x1 - x0) / (g1 - g0);
+            x0 = x1;
+            g0 = g1;
+            x1 = x2;
+            g1 = g(x1);
+        }
+        return x1;
+    };
+    for (int sweep = 0; sweep < 4; ++sweep) {
+        s = secant([&](double x) { return entry(x, c); }, s);
+        c = secant([&](double x) { return load(s, x); }, c);
+    }
+    return {s, c};
 }
 
 }  // namespace
@@ -79,6 +120,15 @@ TEST(DissimilarNearSliding, BrakedPairAnsweredAtTheDefaultNWithBoundsThatHold) {
     // The n = 32 route's rounding is 16 times below n = 128's: its distance alone stays within.
     EXPECT_LE(std::fabs(s.start - coarse->solution.start), p->estimate.start);
     EXPECT_LE(std::fabs(s.c0 - coarse->solution.c0), p->estimate.c0);
+    // The truncated entry at n = 512 (the limit to about 1e-11, and n = 32's to 3e-11): n = 128 and
+    // n = 512 each within their own bounds of it.
+    const auto [ts, tc] = truncated_entry_ends(512, braked, s.start, s.c0);
+    std::printf("  truncated entry, n = 512: start %.15f c0 %.15f: %.2e %.2e (n = 512: %.2e)\n", ts, tc,
+                std::fabs(s.start - ts), std::fabs(s.c0 - tc), std::fabs(fine->solution.start - ts));
+    EXPECT_NEAR(ts, coarse->solution.start, 3e-11);
+    EXPECT_LE(std::fabs(s.start - ts), p->estimate.start);
+    EXPECT_LE(std::fabs(s.c0 - tc), p->estimate.c0);
+    EXPECT_LE(std::fabs(fine->solution.start - ts), fine->estimate.start);
 }
 
 // The floor reads rounding as rounding, not divergence: on the braked point's zone (rho = 0.0228,
