@@ -44,12 +44,12 @@ std::optional<routed> at(int n, double Q) {
     try {
         const scene_point p = solve_point(s, Q);
         if (!p.estimate) {
-            ADD_FAILURE() << "n = " << n << ": no estimate";
+            ADD_FAILURE() << "n = " << s.solver.nodes() << ": no estimate";
             return std::nullopt;
         }
         return routed{p.solution, *p.estimate};
     } catch (const resolution_error& e) {
-        ADD_FAILURE() << "n = " << n << " refused: " << e.what();
+        ADD_FAILURE() << "n = " << s.solver.nodes() << " refused: " << e.what();
         return std::nullopt;
     }
 }
