@@ -9,6 +9,7 @@
 // text from dicts; what reaches C++ is typed, and every value check is the library's own.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,13 @@ std::optional<load_given> load_keywords(std::optional<double> Q, std::optional<d
 
 // One point of a scene as `roughroll point SCENE --json` prints it (compact), with the
 // solver keywords over the scene's [solver] table. Runs without the GIL.
-std::string point_json(scene s, const std::optional<load_given>& load, const solver_keywords& k);
+// `checkpoint`: called before each level's solve (contact::set_checkpoint); check_signals for a
+// point solved on the interpreter's thread, nothing for a batch's workers (which watch for Ctrl-C
+// themselves, batch.cpp).
+std::string point_json(scene s, const std::optional<load_given>& load, const solver_keywords& k,
+                       const std::function<void()>& checkpoint = {});
+// Ctrl-C during a solve that runs without the GIL: the signal handler only sets a flag that
+// PyErr_CheckSignals reads (with the GIL); a KeyboardInterrupt (error_already_set) ends the solve.
+void check_signals();
 
 }  // namespace roughroll::python

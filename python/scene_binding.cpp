@@ -25,7 +25,7 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/io/traction_table.hpp"
-#include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 
 namespace py = pybind11;
@@ -142,13 +142,8 @@ tangential_solution with_creep(tangential_solution t, double xi) {
 }
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
-    // Ctrl-C between rows: the solve runs without the GIL, so the signal handler only sets a flag
-    // that PyErr_CheckSignals reads (with the GIL); a KeyboardInterrupt ends the curve there.
-    const auto interrupted = [] {
-        py::gil_scoped_acquire gil;
-        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    };
-    const scene_curve c = curve_of(std::move(s), loads, points, sweep, interrupted);
+    // Ctrl-C between rows and between the levels of a row.
+    const scene_curve c = curve_of(std::move(s), loads, points, sweep, check_signals);
     curve_columns out;
     out.physical = c.settled.physical.has_value();
     const double nan = std::nan("");
@@ -167,7 +162,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.c0_error.push_back(row.estimate ? row.estimate->c0 : nan);
         out.xi_error.push_back(row.estimate ? row.estimate->xi : nan);
         out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
-        out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(solution_zones(t).size()));  // five for two stick zones, as the CSV
+        out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));  // five for two stick zones, as the CSV
         out.stick_start.push_back(t.start);
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         if (row.is_refused()) {
@@ -204,7 +199,7 @@ traction_columns solve_traction(scene s, const std::optional<load_given>& load, 
     for (const double r : grid)
         if (!(r >= -1.0 && r <= 1.0)) throw input_error("r must lie in [-1, 1] (got " + shortest(r) + ")");
     const double Q = load_of(s, load), f = s.friction;  // as the program's traction: the load asked for
-    scene_point sp = solve_point(std::move(s), load);
+    scene_point sp = solve_point(std::move(s), load, check_signals);
     const tangential_solution level = sp.solved.distribution(sp.solution);
     const point_report report = sp.report();
     traction_columns out;
@@ -240,8 +235,14 @@ std::optional<load_given> load_keywords(std::optional<double> Q, std::optional<d
     return std::nullopt;
 }
 
-std::string point_json(scene s, const std::optional<load_given>& load, const solver_keywords& k) {
-    return to_json(solve_point(overridden(std::move(s), k), load).report()).dump();
+void check_signals() {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+std::string point_json(scene s, const std::optional<load_given>& load, const solver_keywords& k,
+                       const std::function<void()>& checkpoint) {
+    return to_json(solve_point(overridden(std::move(s), k), load, checkpoint).report()).dump();
 }
 
 void bind_scene(py::module_& m) {
@@ -272,7 +273,7 @@ void bind_scene(py::module_& m) {
                std::optional<double> friction) {
                 const std::optional<load_given> load = load_keywords(Q, Q_over_f, P1);
                 py::gil_scoped_release release;
-                return point_json(s, load, {n, method, zones, friction});
+                return point_json(s, load, {n, method, zones, friction}, check_signals);
             },
             py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("n"), py::arg("method"), py::arg("zones"),
             py::arg("friction"))

@@ -236,7 +236,7 @@ TEST(DissimilarProduct, RollersExchanged) {
             const tangential_solution driven = a.point(0.5 * f);
             ASSERT_TRUE(driven.five);
             EXPECT_TRUE(driven.checks.hold());
-            EXPECT_EQ(solution_zones(driven).size(), 5u);
+            EXPECT_EQ(zones_of(driven).size(), 5u);
         } else {
             const tangential_solution driven = a.point(0.5 * f);
             EXPECT_TRUE(driven.opposite && driven.checks.hold());
@@ -299,7 +299,7 @@ TEST(DissimilarProduct, OppositeDirectionsAgainstTheGridRoute) {
         const tangential_solution s = c.point(Q);
         ASSERT_TRUE(s.checks.hold());
         ASSERT_TRUE(s.opposite);
-        const std::vector<zone> z = solution_zones(s);
+        const std::vector<zone> z = zones_of(s);
         ASSERT_EQ(z.size(), 3u);
         EXPECT_EQ(z[0].direction, -1);
         EXPECT_EQ(z[2].direction, 1);

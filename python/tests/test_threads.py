@@ -177,3 +177,37 @@ def test_ctrl_c_stops_a_curve_between_rows():
     # Stopped at 0.5 s plus the row in flight: far less than the whole curve (the bound scales with
     # this machine's speed as measured in the same process).
     assert float(elapsed) < float(whole) / 4, r.stdout
+
+
+POINT_INTERRUPT = r"""
+import os, signal, sys, threading, time
+import roughroll
+s = roughroll.read_scene(sys.argv[1]).replace(coupling="full")
+t0 = time.monotonic()
+s.point(0.0, n=32)
+whole = time.monotonic() - t0
+timer = threading.Timer(0.1 * whole, os.kill, (os.getpid(), signal.SIGINT))
+timer.start()
+t0 = time.monotonic()
+try:
+    s.point(0.0, n=32)
+    print("returned", time.monotonic() - t0, whole)
+except KeyboardInterrupt:
+    timer.join()
+    print("interrupted", time.monotonic() - t0, whole)
+"""
+
+
+def test_ctrl_c_stops_a_single_point_between_levels():
+    # Issue 23, 4: one long point (full coupling: the width search's coupled points, the alternation's
+    # steps, the estimate's levels) ran to its end under Ctrl-C; the contact's checkpoint now raises
+    # KeyboardInterrupt before the next level or alternation step.
+    r = subprocess.run([sys.executable, "-c", POINT_INTERRUPT, str(DATA / "aluminium-on-steel.toml")],
+                       capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr
+    what, elapsed, whole = r.stdout.split()
+    assert what == "interrupted", r.stdout
+    # Interrupted at a tenth of the point's own time (measured in the same process just before): it
+    # stops at the next of its many checkpoints, well before the end (a returned point, or one that
+    # ran to the end and was interrupted only after, takes the whole time).
+    assert float(elapsed) < 0.6 * float(whole), r.stdout

@@ -23,7 +23,7 @@
 #include "cli/output_files.hpp"
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact.hpp"
-#include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/traction_table.hpp"
 #include "roughroll/base/error.hpp"
@@ -287,7 +287,7 @@ int run_traction(const traction_options& o) {
     facts.Q = Q;
     facts.f = f;
     facts.c0 = level.c0;  // the stick zone the plotted tractions have
-    facts.zones = solution_zones(level);  // the zones the plotted tractions have
+    facts.zones = zones_of(level);  // the zones the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;

@@ -9,8 +9,7 @@
 #include <stdexcept>
 
 #include "roughroll/model/carter.hpp"
-#include "roughroll/problems/dissimilar_zones.hpp"
-#include "roughroll/problems/zone_solver.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 
 // The build systems define it from the VERSION file (CMakeLists.txt, Makefile.am).
@@ -45,7 +44,7 @@ nlohmann::json cylinder_json(const cylinder_roughness& c) {
 // The zones of docs/formulation.md section 7, from r = -1 to 1.
 nlohmann::json zones_json(const tangential_solution& s) {
     nlohmann::json zones = nlohmann::json::array();
-    for (const zone& z : solution_zones(s))
+    for (const zone& z : zones_of(s))
         zones.push_back({{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
     return zones;
 }
@@ -59,7 +58,7 @@ std::string term_text(const roughness_term& t) {
 
 std::string zones_text(const tangential_solution& s) {
     std::string text;
-    for (const zone& z : solution_zones(s)) {
+    for (const zone& z : zones_of(s)) {
         if (!text.empty()) text += ", ";
         text += (z.stick ? "stick [" : std::string(z.direction > 0 ? "slip+ [" : "slip- [")) + shortest(z.from) + ", " +
                 shortest(z.to) + "]";
@@ -264,7 +263,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
-        out << ',' << solution_zones(s).size() << ',' << shortest(s.start);
+        out << ',' << zones_of(s).size() << ',' << shortest(s.start);
         if (si) {
             const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);

@@ -25,7 +25,8 @@ bool width_follows_tangential_load(const scene& s) {
            s.materials.coupling == coupling_level::full;
 }
 
-std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::optional<double> Q) {
+std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::optional<double> Q,
+                                          const std::function<void()>& checkpoint) {
     if (!s.physical) return std::nullopt;
     // lambda = P_H/P2 at a trial width, as the scene's method reports it (the normal problem alone),
     // searched on the method's cheap level n/2 first and polished at the scene's method; the
@@ -41,8 +42,8 @@ std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::op
         const double load = *Q;
         w = find_width(
             *s.physical,
-            [&s, shared, load](const roughness& r) {
-                return coupled_load_ratio(r, s.friction, s.solver, s.materials, load, shared);
+            [&s, shared, load, &checkpoint](const roughness& r) {
+                return coupled_load_ratio(r, s.friction, s.solver, s.materials, load, shared, checkpoint);
             },
             pressure_alone, true);
     } else {
@@ -66,18 +67,21 @@ point_report scene_point::report() const {
 
 namespace {
 // The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
-contact settled_contact(scene& s, std::optional<contact_width>& width, double Q) {
+contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
+                        const std::function<void()>& checkpoint) {
     normal_cache cache;
-    width = settle_width(s, &cache, Q);
-    return contact(s.surfaces, s.friction, s.solver, s.materials, &cache);
+    width = settle_width(s, &cache, Q, checkpoint);
+    contact c(s.surfaces, s.friction, s.solver, s.materials, &cache);
+    c.set_checkpoint(checkpoint);
+    return c;
 }
 }  // namespace
 
-scene_point solve_point(scene s, const std::optional<load_given>& load) {
+scene_point solve_point(scene s, const std::optional<load_given>& load, const std::function<void()>& checkpoint) {
     const double Q = load_of(s, load);
     const auto start = std::chrono::steady_clock::now();
     std::optional<contact_width> width;
-    contact c = settled_contact(s, width, Q);
+    contact c = settled_contact(s, width, Q, checkpoint);
     const tangential_solution solution = c.point(Q);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::optional<error_estimate> estimate = c.estimate(solution);
@@ -90,6 +94,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
     if (!width_follows_tangential_load(s)) {
         const std::optional<contact_width> width = settle_width(s);
         contact c(s.surfaces, s.friction, s.solver, s.materials);
+        c.set_checkpoint(before_row);
         std::vector<curve_point> rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, Qs, before_row);
         std::vector<contact_width> widths;
         if (width) widths.assign(rows.size(), *width);
@@ -107,8 +112,9 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
         scene at = s;
         normal_cache cache;
         try {
-            const contact_width w = *settle_width(at, &cache, Q);
+            const contact_width w = *settle_width(at, &cache, Q, before_row);
             contact c(at.surfaces, at.friction, at.solver, at.materials, &cache);
+            c.set_checkpoint(before_row);
             std::vector<curve_point> row = creep_curve(c, {Q});
             out.rows.push_back(std::move(row.front()));
             out.widths.push_back(w);

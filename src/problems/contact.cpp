@@ -57,6 +57,14 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
                                                    level_of(options.how), f, materials.beta_d);
 }
 
+void contact::set_checkpoint(std::function<void()> hook) {
+    checkpoint_ = std::move(hook);
+    for (contact* c : {companion_.get(), finer_.get()})
+        if (c) c->set_checkpoint(checkpoint_);
+    for (const auto& c : owned_levels_) c->set_checkpoint(checkpoint_);
+    if (coupled_) coupled_->set_checkpoint(checkpoint_);
+}
+
 const normal_solution& contact::normal_level() const {
     if (coupled_load_) return coupled_->normal();
     return limit_ ? limit_->normal() : *normal_;
@@ -76,6 +84,7 @@ tangential_solver& contact::tangential() {
 }
 
 tangential_solution contact::general_point(double Q, std::optional<zone_guess> guess) {
+    checkpoint();
     if (limit_zones_) return limit_zones_->solve(Q, true);
     return zones_->solve(Q, true, guess);
 }
@@ -161,6 +170,7 @@ tangential_solution contact::point(double Q) {
 
 const tangential_solution& contact::level_point(double Q, bool checked, std::optional<double> guess,
                                                 std::optional<double> slope) {
+    checkpoint();
     if (!last_level_point_ || !(last_level_point_->Q == Q) || (checked && !last_level_point_checked_)) {
         last_level_point_ = limit_ ? limit_->solve(Q, guess) : tangential_->solve(Q, guess, checked, slope);
         last_level_point_checked_ = checked || limit_;
@@ -227,6 +237,7 @@ bool contact::build_levels() {
             if (c->nodes() == m) return c.get();
         try {
             owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}, materials_));
+            owned_levels_.back()->set_checkpoint(checkpoint_);
             return owned_levels_.back().get();
         } catch (const resolution_error&) {
             return nullptr;
@@ -267,7 +278,10 @@ std::optional<tangential_solution> contact::above_finest(const tangential_soluti
     const int m = 2 * nodes();
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
-        if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
+        if (!finer_) {
+            finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
+            finer_->set_checkpoint(checkpoint_);
+        }
         if (swept) return finer_->level_at_stick_end(own.c0, false, sweeping_near_);
         // On the zone path of s, as the other levels (estimate()).
         return s.general ? finer_->general_point(s.Q, zone_guess{s.start, s.c0}) : finer_->level_point(s.Q, false);
@@ -493,6 +507,7 @@ void contact::refuse_load_outside(const tangential_solution& s, std::optional<do
 }
 
 const tangential_solution& contact::dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite) {
+    checkpoint();
     if (!last_dissimilar_ || !(last_dissimilar_->Q == Q)) last_dissimilar_ = dissimilar_->solve(Q, guess, opposite);
     return *last_dissimilar_;
 }
@@ -523,6 +538,7 @@ tangential_solution contact::johnson_level_point(double Q, const tangential_solu
 }
 
 const tangential_solution& contact::coupled_level_point(double Q, const tangential_solution& johnson, bool checked) {
+    checkpoint();
     if (coupled_load_ && *coupled_load_ == Q && (coupled_checked_ || !checked)) return coupled_point_;
     coupled_load_.reset();  // Johnson's pressure and zones until the alternation has converged
     coupled_point_ = coupled_->solve(*normal_, *dissimilar_, johnson, checked);
@@ -598,6 +614,7 @@ tangential_solution contact::johnson_point(double Q) {
 }
 
 const five_zone_solution* contact::five_level_point(double Q, const std::vector<double>* ends) {
+    checkpoint();
     if (last_five_ && last_five_load_ == Q) return &*last_five_;
     std::optional<five_zone_solution> v;
     try {
@@ -711,7 +728,10 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         const int m = 2 * nodes();
         if (self != 2 || m > max_nodes || !s.checks.hold()) return nullptr;
         try {
-            if (!finer_) finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
+            if (!finer_) {
+            finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
+            finer_->set_checkpoint(checkpoint_);
+        }
             if (coupled_) {
                 // Full coupling: the finer level's own alternation, as the levels below (a Johnson's
                 // point at 2n against a coupled n would measure the coupling, not the discretisation).

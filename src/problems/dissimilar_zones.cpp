@@ -146,19 +146,6 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
     return c;
 }
 
-std::vector<zone> solution_zones(const tangential_solution& s) {
-    if (s.five) {
-        // slip -sign, stick, slip +sign, stick, slip -sign (8(j)), sign = sgn beta_D.
-        const five_zone_solution& v = *s.five;
-        const int d = v.sign > 0.0 ? 1 : -1;
-        return {zone{-1.0, v.s1, false, -d}, zone{v.s1, v.c1, true, 0}, zone{v.c1, v.s2, false, d},
-                zone{v.s2, v.c2, true, 0}, zone{v.c2, 1.0, false, -d}};
-    }
-    std::vector<zone> z = zones_of(s);
-    if (s.opposite && !z.empty() && !z.front().stick) z.front().direction = -z.front().direction;
-    return z;
-}
-
 dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d)
     : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()), pressure_b_(solver.normal().b),
       workspace_(make_integration_workspace(quadrature_intervals)) {

@@ -81,6 +81,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     double lambda = johnson.lambda, offset = 0.0;
     double previous_change = 0.0;
     for (int k = 1; k <= coupling_max_iterations; ++k) {
+        if (checkpoint_) checkpoint_();
         const double beta = beta_d_;
         std::function<double(double)> coupled = [source_zones, source, beta](double r) {
             return beta * source_zones->traction(source, r);

@@ -32,10 +32,12 @@ double coarse_load_ratio(const roughness& surfaces, const solver_options& option
 }
 
 double coupled_load_ratio(const roughness& surfaces, double f, const solver_options& options,
-                          const dissimilar& materials, double Q, normal_cache* cache) {
+                          const dissimilar& materials, double Q, normal_cache* cache,
+                          const std::function<void()>& checkpoint) {
     if (materials.beta_d == 0.0 || materials.coupling != coupling_level::full)
         throw input_error("coupled_load_ratio: the rollers are not dissimilar at full coupling (use load_ratio)");
     contact c(surfaces, f, options, materials, cache);
+    c.set_checkpoint(checkpoint);
     c.point(Q);
     return c.normal().lambda;
 }

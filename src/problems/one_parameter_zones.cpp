@@ -113,8 +113,9 @@ tangential_solution one_parameter_zones::general(double magnitude, std::optional
         // which zones = "auto" answers with the paper's zone, its checks failed, where that zone exists
         // (contact::zones_for); a curve refuses the row (docs/robustness.md).
         throw resolution_error(
-            "one-parameter zone search: the entry condition v(s-) = 0 has no root on the scanned starts of the "
-            "stick zone (a structure the solver does not cover)");
+            "one-parameter zone search: no stick zone between two slip zones carries this load (the entry "
+            "condition v(s-) = 0 has no root on the scanned starts): its zones have another structure; "
+            "zones = \"auto\" reports the paper's single zone with its checks where it exists");
     // Newton from the interpolated zone; Brent on the bracket when it fails.
     const double w = std::isnan(lo_entry) ? 1.0 : lo_entry / (lo_entry - hi_entry);
     if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;

@@ -37,15 +37,6 @@ double zone_solver::load_excess(const tangential_solution& t, double magnitude) 
     return t.rho() * integral + (f_ - magnitude);
 }
 
-std::vector<zone> zones_of(const tangential_solution& s) {
-    const int direction = s.sign < 0.0 ? -1 : 1;
-    std::vector<zone> z;
-    if (s.start > -1.0) z.push_back({-1.0, s.start, false, direction});
-    z.push_back({s.start, s.c0, true, 0});
-    if (s.c0 < 1.0) z.push_back({s.c0, 1.0, false, direction});
-    return z;
-}
-
 zone_solver::zone_solver(tangential_solver& single) : single_(single), f_(single.friction()) {}
 
 double zone_solver::entry_coefficient(const tangential_solution& s) {
@@ -190,8 +181,9 @@ tangential_solution zone_solver::general(double magnitude, std::optional<zone_gu
         // which zones = "auto" answers with the paper's zone, its checks failed, where that zone exists
         // (contact::zones_for); a curve refuses the row (docs/robustness.md).
         throw resolution_error(
-            "zone solver: the entry condition psi(-1) = 0 has no root on the scanned starts of the stick zone "
-            "(a structure the solver does not cover)");
+            "general zone search: no stick zone between two slip zones carries this load (the entry condition "
+            "psi(-1) = 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" "
+            "reports the paper's single zone with its checks");
     const double w = lo_entry / (lo_entry - hi_entry);
     if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;
     const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");

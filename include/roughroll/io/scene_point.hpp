@@ -36,8 +36,10 @@ bool width_follows_tangential_load(const scene& s);
 // `Q`: the tangential load P1/P2, required when width_follows_tangential_load (lambda of the fully
 // coupled point at Q, coupled_load_ratio, searched from the width of Johnson's level, which the
 // pressure alone fixes); ignored otherwise.
+// `checkpoint`: contact::set_checkpoint's hook for the coupled points of the search.
 std::optional<contact_width> settle_width(scene& s, normal_cache* cache = nullptr,
-                                          std::optional<double> Q = std::nullopt);
+                                          std::optional<double> Q = std::nullopt,
+                                          const std::function<void()>& checkpoint = {});
 
 // A physical scene's point in SI units (nothing for a dimensionless scene).
 std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t);
@@ -55,7 +57,8 @@ struct scene_point {
 };
 
 // load_of(s, load), settle_width, the contact and its point for the load, and its estimate.
-scene_point solve_point(scene s, const std::optional<load_given>& load);
+// `checkpoint`: called before each level's solve (contact::set_checkpoint); what it throws ends the solve.
+scene_point solve_point(scene s, const std::optional<load_given>& load, const std::function<void()>& checkpoint = {});
 
 // A creep curve of a scene: creep_curve at `loads` (curve_loads(points, ...) when none), or
 // swept_curve of `points` when `sweep`, with each row's contact width for a physical scene.
@@ -68,7 +71,8 @@ struct scene_curve {
 // (width_follows_tangential_load), a width per row, settled at the row's load. A row whose width
 // search is refused (resolution_error) is a refused row; its width is Johnson's level's, which
 // carries the same load P2 (a refused row reports only P1 and Carter's creep: both depend on P2 alone).
-// `before_row`: as creep_curve's, called before each row.
+// `before_row`: as creep_curve's, called before each row, and before each level's solve of a row
+// (contact::set_checkpoint).
 scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
                      const std::function<void()>& before_row = {});
 

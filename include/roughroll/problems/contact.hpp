@@ -88,6 +88,12 @@ public:
 
     tangential_solution point(double Q);
 
+    // A caller's hook, called before each level's solve (and each step of full coupling's
+    // alternation) of point(), estimate() and at_stick_end(): what it throws ends the solve there
+    // (the Python module raises KeyboardInterrupt on Ctrl-C). The contact's caches are then as
+    // after any failed solve: a later point solves again.
+    void set_checkpoint(std::function<void()> hook);
+
     // The solution whose distributions (tractions, slip velocity) belong with s: s itself,
     // or for method::extrapolated the level-n solution at the same Q, whose c0 and xi are
     // level n's (within the error estimate of the extrapolated ones).
@@ -217,6 +223,10 @@ private:
     std::optional<tangential_solution> last_coarse_;  // level n/2 of the last general-path point
     std::optional<tangential_solution> last_level_point_;  // level_point's cache
     bool last_level_point_checked_ = false;
+    std::function<void()> checkpoint_;
+    void checkpoint() const {
+        if (checkpoint_) checkpoint_();
+    }
 };
 
 // A curve swept in c0 (contact::at_stick_end) is the paper's single zone: input_error for dissimilar rollers (8(g)).

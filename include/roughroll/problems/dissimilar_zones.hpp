@@ -88,10 +88,6 @@ constexpr double zone_end_resolution = 1e-11;
 // answer that fails them is another structure's, never reported.
 void require_checks(const tangential_solution& s);
 
-// The zones of a solution from r = -1 to 1 with their slip directions (zones_of, and the
-// leading zone against the trailing one for a blended stick zone).
-std::vector<zone> solution_zones(const tangential_solution& s);
-
 // Five zones (docs/formulation.md 8(g), 8(j)): slip -1 [-1, s1), stick [s1, c1], slip +1 (c1, s2),
 // stick [s2, c2], slip -1 (c2, 1], in the frame beta_D > 0 (the exchange of rollers of 8(h) gives
 // beta_D < 0: Q, xi, p1, v and the slip directions change sign, the ends do not). p1 = f p S + q1 + q2 with S = -1 + 2 H1 - 2 H2, H_k rising as Theta over zone k, and
@@ -112,7 +108,7 @@ struct five_zone_solution {
 
 // The five zones as a point of contact (contact::point): start, c0 the first stick zone [s1, c1],
 // start2, end2 the second [s2, c2], Q, xi, the checks and the solution itself (`five`), through
-// which dissimilar_zones::traction, slip_velocity and solution_zones answer for all five zones.
+// which dissimilar_zones::traction, slip_velocity and zones_of (zone_layout.hpp) answer for all five zones.
 tangential_solution five_zone_point(const five_zone_solution& v);
 
 class dissimilar_zones {

@@ -16,6 +16,7 @@
 // zones of either kind, gross sliding, or five zones: dissimilar_zones), with its checks (3.3)-(3.4).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -57,6 +58,9 @@ public:
     full_coupling& operator=(const full_coupling&) = delete;
     ~full_coupling();
 
+    // Called before each step of the alternation (contact::set_checkpoint): what it throws ends it.
+    void set_checkpoint(std::function<void()> hook) { checkpoint_ = std::move(hook); }
+
     // The fully coupled point at Johnson's load `johnson_point.Q`, from Johnson's level: its pressure
     // `johnson`, its zones workspace (on `johnson`) and its point (k = 0 of the alternation).
     // `checked`: each step's checks (3.3)-(3.4) must hold (a point reported), else numerical_error;
@@ -79,6 +83,7 @@ private:
     sweep_cache sweeps_;  // the product-integration workspaces of every normal solve (collocation.hpp)
     std::unique_ptr<iterate> current_, previous_;
     coupling_summary summary_;
+    std::function<void()> checkpoint_;
 };
 
 }  // namespace roughroll

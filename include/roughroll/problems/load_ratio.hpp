@@ -3,6 +3,8 @@
 // contact width of a physical scene (contact_width.hpp), by exactly the calls contact makes.
 #pragma once
 
+#include <functional>
+
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
@@ -28,7 +30,9 @@ double coarse_load_ratio(const roughness& surfaces, const solver_options& option
 // 1 - int p J - beta_D int p1 r/sqrt(1 - r^2) of the converged alternation at the load Q, as
 // contact(surfaces, f, options, materials).point(Q) leaves it in contact::normal() (level n).
 // It depends on Q through p1: the width of a physical scene follows the tangential load too.
+// `checkpoint`: contact::set_checkpoint's hook for the point solved.
 double coupled_load_ratio(const roughness& surfaces, double f, const solver_options& options,
-                          const dissimilar& materials, double Q, normal_cache* cache = nullptr);
+                          const dissimilar& materials, double Q, normal_cache* cache = nullptr,
+                          const std::function<void()>& checkpoint = {});
 
 }  // namespace roughroll

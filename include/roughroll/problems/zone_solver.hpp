@@ -25,19 +25,9 @@
 #include <vector>
 
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
-
-// One zone of the contact in r = x1/a.
-struct zone {
-    double from, to;
-    bool stick;
-    int direction;  // slip: +1 or -1, the sign of p1 there (and of the slip velocity, (3.4)); stick: 0
-};
-
-// The zones of a solution from r = -1 to 1: [-1, start) slip when start > -1, [start, c0]
-// stick (a point at gross sliding), (c0, 1] slip when c0 < 1; slip in the direction of Q.
-std::vector<zone> zones_of(const tangential_solution& s);
 
 // A zone near the one sought (the coarse level's, when extrapolating).
 struct zone_guess {
