@@ -153,3 +153,25 @@ TEST(DissimilarNearSliding, FloorTakesRoundingNotDivergence) {
     EXPECT_LT(entry_ends_floor(256, terms, 0.5, -0.015), 1e-10);
     EXPECT_EQ(entry_ends_floor(256, terms, 0.5, 0.0), 0.0);  // no zone's b_0: no floor, not infinity
 }
+
+// The driven side (Q > 0: the leading slip zone against the trailing one, 8(g)) near gross sliding:
+// the stick zone closes on the leading edge, its start 4.5e-3 off it at Q/f = 0.998, inside the
+// three-zone scan's first trial start (1 - cos(pi/32) = 4.8e-3 off the edge). It had been refused at
+// every n ("no three-zone structure carries Q"); the scan's starts closer to the edge (dissimilar_zones.cpp,
+// only where the scan finds nothing) answer it, at the default n and at n = 256, each within the
+// other's estimate.
+TEST(DissimilarNearSliding, DrivenPairAnsweredWhereTheLeadingSlipZoneIsThin) {
+    const double Q = 0.998 * 0.05;
+    const auto fine = at(256, Q);
+    const auto point = at(0, Q);
+    ASSERT_TRUE(point && fine);
+    const tangential_solution& s = point->solution;
+    EXPECT_TRUE(s.checks.hold());
+    EXPECT_GT(s.start, -1.0);
+    EXPECT_LT(s.start, -1.0 + 4.8e-3);  // inside the scan's first trial start
+    EXPECT_TRUE(s.opposite);             // slip- on the leading zone, slip+ on the trailing one
+    const double both = point->estimate.start + fine->estimate.start;
+    EXPECT_LE(std::fabs(s.start - fine->solution.start), both);
+    EXPECT_LE(std::fabs(s.c0 - fine->solution.c0), point->estimate.c0 + fine->estimate.c0);
+    EXPECT_LE(std::fabs(s.xi - fine->solution.xi), point->estimate.xi + fine->estimate.xi);
+}

@@ -586,7 +586,8 @@ tangential_solution contact::johnson_point(double Q) {
             throw resolution_error(std::string(why.what()) + "; no five zones (slip, stick, reversed slip, stick, "
                                    "slip) are found at n = " + std::to_string(nodes()) +
                                    " either (their search starts from the coarser levels' zones): another n may "
-                                   "find them");
+                                   "find them, except on the driven side closer than Q/f = 0.998 to gross sliding, "
+                                   "which no n reaches yet (docs/robustness.md)");
         }
         tangential_solution s = five_zone_point(*v);
         s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)

@@ -369,34 +369,58 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
             trials.push_back({s, *end, zone_solver::entry_coefficient(z.solve(s, *end))});
     }
     std::optional<tangential_solution> first;
-    for (std::size_t k = 1; k < trials.size(); ++k) {
-        const trial& lo = trials[k - 1];
-        const trial& hi = trials[k];
-        if (!((lo.entry > 0.0) != (hi.entry > 0.0))) continue;
-        const double w = lo.entry / (lo.entry - hi.entry);
-        std::optional<tangential_solution> s =
-            newton(z, magnitude, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
-        if (!s) {
-            const auto entry = [&](double start) {
-                const auto end = stick_end(z, start, magnitude);
-                if (!end) throw numerical_error("dissimilar zones: no stick zone carries |Q| inside a bracket");
-                return zone_solver::entry_coefficient(z.solve(start, *end));
-            };
-            try {
-                const root r = brent_root(entry, lo.start, hi.start, end_tolerance, 0.0, 200,
-                                          "Brent search for the stick zone's start");
-                s = z.solve(r.x, *stick_end(z, r.x, magnitude));
-                s->iterations = r.iterations;
-            } catch (const numerical_error&) {
-                continue;
+    // The brackets of consecutive trials in turn; the answer whose checks hold, else the first found.
+    const auto brackets = [&](const std::vector<trial>& trials) -> std::optional<tangential_solution> {
+        for (std::size_t k = 1; k < trials.size(); ++k) {
+            const trial& lo = trials[k - 1];
+            const trial& hi = trials[k];
+            if (!((lo.entry > 0.0) != (hi.entry > 0.0))) continue;
+            const double w = lo.entry / (lo.entry - hi.entry);
+            std::optional<tangential_solution> s =
+                newton(z, magnitude, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
+            if (!s) {
+                const auto entry = [&](double start) {
+                    const auto end = stick_end(z, start, magnitude);
+                    if (!end) throw numerical_error("dissimilar zones: no stick zone carries |Q| inside a bracket");
+                    return zone_solver::entry_coefficient(z.solve(start, *end));
+                };
+                try {
+                    const root r = brent_root(entry, lo.start, hi.start, end_tolerance, 0.0, 200,
+                                              "Brent search for the stick zone's start");
+                    s = z.solve(r.x, *stick_end(z, r.x, magnitude));
+                    s->iterations = r.iterations;
+                } catch (const numerical_error&) {
+                    continue;
+                }
             }
+            s->checks = check(*s);
+            if (s->checks.hold()) return s;
+            if (!first) first = s;
         }
-        s->checks = check(*s);
-        if (s->checks.hold()) return *s;
-        if (!first) first = s;
+        return std::nullopt;
+    };
+    if (auto s = brackets(trials)) return *s;
+    if (!first && !trials.empty()) {
+        // Near gross sliding the leading slip zone thins below the scan's first start, 1 - cos(pi/32)
+        // = 4.8e-3 from the edge (the stick zone closes on the leading edge as 7(d)'s does, its
+        // start 1 + s ~ (1 - |Q|/f)^(2/3)): starts geometrically closer to the edge, down to 1e-12,
+        // before the first trial. Only where the scan found nothing, so that no other answer changes.
+        std::vector<trial> edge;
+        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) {
+            const double start = -1.0 + gap;
+            if (const auto end = stick_end(z, start, magnitude))
+                edge.push_back({start, *end, zone_solver::entry_coefficient(z.solve(start, *end))});
+        }
+        edge.push_back(trials.front());
+        if (auto s = brackets(edge)) return *s;
     }
     if (first) return *first;  // the caller refuses it: its checks fail
-    throw resolution_error("no three-zone structure carries Q");  // of this kind: solve tries the other
+    // Of this kind: solve tries the other. The message is the user's where no caller answers the load.
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "dissimilar rollers at |Q|/f = " << magnitude / f_ << ": no three zones carry the load at n = "
+        << solver_.normal().rule.n << "; another n may find them (docs/formulation.md 8(g), 8(j))";
+    throw resolution_error(msg.str());
 }
 
 tangential_solution five_zone_point(const five_zone_solution& v) {

@@ -257,8 +257,8 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones_at(double Q, doub
                 return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)}, beta);
             }
             three_hold = true;  // v > 0 up to the edge: the three zones are the answer
-        } catch (const numerical_error&) {
-            // no three zones carry this load, or W fails on them: no start from here
+        } catch (const error&) {
+            // no three zones carry this load (resolution_error), or W fails on them: no start from here
         }
         return std::nullopt;
     };
