@@ -141,15 +141,16 @@ void bind_batch(py::module_& m) {
         [](const std::vector<std::tuple<scene, std::optional<double>, std::optional<double>, std::optional<double>>>&
                items,
            int threads, std::optional<int> n, std::optional<std::string> method, std::optional<std::string> zones,
-           std::optional<double> friction) {
+           std::optional<double> friction, std::optional<double> tolerance) {
             if (threads < 1 || threads > 1024) throw input_error("threads must lie in [1, 1024]");
             std::vector<job> jobs;
             jobs.reserve(items.size());
             for (const auto& [s, Q, Q_over_f, P1] : items) jobs.push_back({s, load_keywords(Q, Q_over_f, P1)});
             py::gil_scoped_release release;
-            return solve_all(jobs, threads, {n, method, zones, friction});
+            return solve_all(jobs, threads, {n, method, zones, friction, tolerance});
         },
-        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"));
+        py::arg("items"), py::arg("threads"), py::arg("n"), py::arg("method"), py::arg("zones"), py::arg("friction"),
+        py::arg("tolerance") = py::none());
 }
 
 }  // namespace roughroll::python

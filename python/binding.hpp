@@ -29,6 +29,7 @@ struct solver_keywords {
     std::optional<std::string> method;
     std::optional<std::string> zones;
     std::optional<double> friction;  // over the scene's friction, as --friction
+    std::optional<double> tolerance;  // the ladder's, as --tolerance (over solver.n and solver.tolerance)
 };
 
 // The Python keywords Q=, Q_over_f=, P1=: the command line's --Q, --Q-over-f, --P1, at most one

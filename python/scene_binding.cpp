@@ -110,7 +110,7 @@ py::object physical_dict(const scene& s) {
 }
 
 scene overridden(scene s, const solver_keywords& k) {
-    override_solver(s, k.n, k.method, k.zones);
+    override_solver(s, k.n, k.method, k.zones, k.tolerance);
     override_friction(s, k.friction, "friction");
     return s;
 }
@@ -126,6 +126,7 @@ struct curve_columns {
     std::vector<int> zones;            // the number of stick and slip zones (formulation section 7)
     std::vector<double> stick_start;   // the start of the stick zone, -1 in the paper's structure
     std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
+    std::vector<int> n;                       // each row's n (the ladder's rung; 0 for a refused row)
     std::vector<std::string> status;          // "ok" or "refused"
     std::vector<std::string> refused;         // one line per refused row
     bool physical = false;
@@ -165,6 +166,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));  // five for two stick zones, as the CSV
         out.stick_start.push_back(t.start);
         out.status.push_back(row.is_refused() ? "refused" : "ok");
+        out.n.push_back(c.nodes[i]);
         if (row.is_refused()) {
             out.refused.push_back(row.refused);
             if (width) {
@@ -261,6 +263,11 @@ void bind_scene(py::module_& m) {
             return s.Q_over_f ? s.Q_over_f : s.Q ? std::optional<double>(*s.Q / s.friction) : std::nullopt;
         })
         .def_property_readonly("n", [](const scene& s) { return s.solver.nodes(); })
+        .def_property_readonly("tolerance",  // the ladder's (level_ladder.hpp); None with an explicit n
+                               [](const scene& s) {
+                                   return s.solver.n != 0 ? std::optional<double>()
+                                                          : s.solver.tolerance.value_or(default_tolerance);
+                               })
         .def_property_readonly("method", [](const scene& s) { return to_string(s.solver.how); })
         .def_property_readonly("roughness", [](const scene& s) { return roughness_dict(s.surfaces); })
         .def_property_readonly("physical", &physical_dict)
@@ -270,22 +277,22 @@ void bind_scene(py::module_& m) {
             "point_json",
             [](const scene& s, std::optional<double> Q, std::optional<double> Q_over_f, std::optional<double> P1,
                std::optional<int> n, std::optional<std::string> method, std::optional<std::string> zones,
-               std::optional<double> friction) {
+               std::optional<double> friction, std::optional<double> tolerance) {
                 const std::optional<load_given> load = load_keywords(Q, Q_over_f, P1);
                 py::gil_scoped_release release;
-                return point_json(s, load, {n, method, zones, friction}, check_signals);
+                return point_json(s, load, {n, method, zones, friction, tolerance}, check_signals);
             },
             py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("n"), py::arg("method"), py::arg("zones"),
-            py::arg("friction"))
+            py::arg("friction"), py::arg("tolerance") = py::none())
         .def(
             "curve",
             [](const scene& s, std::optional<std::vector<double>> loads, std::optional<std::vector<double>> ratios,
                int points, bool sweep, std::optional<int> n, std::optional<std::string> method,
-               std::optional<std::string> zones, std::optional<double> friction) {
+               std::optional<std::string> zones, std::optional<double> friction, std::optional<double> tolerance) {
                 curve_columns c;
                 {
                     py::gil_scoped_release release;
-                    scene o = overridden(s, {n, method, zones, friction});
+                    scene o = overridden(s, {n, method, zones, friction, tolerance});
                     if (ratios) {
                         // Each load Q/f as a point's (load_of): the same checks and the same Q = (Q/f) f.
                         loads.emplace();
@@ -307,6 +314,7 @@ void bind_scene(py::module_& m) {
                 d["Q_error_estimate"] = array_of(c.Q_error);
                 d["zones"] = py::array_t<int>(static_cast<py::ssize_t>(c.zones.size()), c.zones.data());
                 d["stick_start"] = array_of(c.stick_start);
+                d["n"] = py::array_t<int>(static_cast<py::ssize_t>(c.n.size()), c.n.data());
                 d["status"] = c.status;    // a NumPy array of str in roughroll.Scene.curve
                 d["_refused"] = c.refused;  // warned by roughroll.Scene.curve
                 if (c.physical) {
@@ -317,17 +325,17 @@ void bind_scene(py::module_& m) {
                 return d;
             },
             py::arg("loads"), py::arg("Q_over_f"), py::arg("points"), py::arg("sweep"), py::arg("n"), py::arg("method"),
-            py::arg("zones"), py::arg("friction"))
+            py::arg("zones"), py::arg("friction"), py::arg("tolerance") = py::none())
         .def(
             "traction",
             [](const scene& s, std::optional<double> Q, std::optional<double> Q_over_f, std::optional<double> P1,
                std::vector<double> r, std::optional<int> n, std::optional<std::string> method,
-               std::optional<std::string> zones, std::optional<double> friction) {
+               std::optional<std::string> zones, std::optional<double> friction, std::optional<double> tolerance) {
                 const std::optional<load_given> load = load_keywords(Q, Q_over_f, P1);
                 traction_columns t;
                 {
                     py::gil_scoped_release release;
-                    t = solve_traction(overridden(s, {n, method, zones, friction}), load, r);
+                    t = solve_traction(overridden(s, {n, method, zones, friction, tolerance}), load, r);
                 }
                 py::dict d;
                 d["point"] = t.point;
@@ -347,7 +355,7 @@ void bind_scene(py::module_& m) {
                 return d;
             },
             py::arg("Q"), py::arg("Q_over_f"), py::arg("P1"), py::arg("r"), py::arg("n"), py::arg("method"),
-            py::arg("zones"), py::arg("friction"));
+            py::arg("zones"), py::arg("friction"), py::arg("tolerance") = py::none());
 }
 
 }  // namespace roughroll::python

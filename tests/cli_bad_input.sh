@@ -88,6 +88,22 @@ expect Q-nan-cli "Q" -- point "$dir/good.toml" --Q nan
 expect Q-inf-cli "Q" -- point "$dir/good.toml" --Q inf
 expect Q-above-f "slide" -- point "$dir/Qbig.toml"
 expect Q-below-minus-f "slide" -- point "$dir/good.toml" --Q -0.3000001
+# The ladder's tolerance (problems/level_ladder.hpp): in (0, 1) and finite, as the key and as
+# --tolerance, and not beside an n given in the same place (refused before any solve).
+scene tolzero "$(printf '%s\n' "$good" | sed 's/^n = 20/tolerance = 0/')"
+scene tolbig "$(printf '%s\n' "$good" | sed 's/^n = 20/tolerance = 2/')"
+scene tolnan "$(printf '%s\n' "$good" | sed 's/^n = 20/tolerance = nan/')"
+scene tolwithn "$(printf '%s\ntolerance = 1e-6' "$good")"
+expect tolerance-key-zero "solver.tolerance" -- point "$dir/tolzero.toml"
+expect tolerance-key-big "solver.tolerance" -- point "$dir/tolbig.toml"
+expect tolerance-key-nan "solver.tolerance" -- point "$dir/tolnan.toml"
+expect tolerance-key-with-n "solver.tolerance" -- point "$dir/tolwithn.toml"
+expect tolerance-cli-zero "tolerance" -- point "$dir/good.toml" --tolerance 0
+expect tolerance-cli-negative "tolerance" -- point "$dir/good.toml" --tolerance -1e-6
+expect tolerance-cli-one "tolerance" -- curve "$dir/good.toml" --tolerance 1
+expect tolerance-cli-inf "tolerance" -- point "$dir/good.toml" --tolerance inf
+expect tolerance-cli-text "--tolerance" -- point "$dir/good.toml" --tolerance abc
+expect tolerance-cli-with-n "tolerance" -- point "$dir/good.toml" --tolerance 1e-6 --n 64
 # --friction over the scene's: its range as the key's, and the scene's Q (0.15) checked against it.
 expect friction-cli-zero "--friction" -- point "$dir/good.toml" --friction 0
 expect friction-cli-nan "--friction" -- point "$dir/good.toml" --friction nan
@@ -262,7 +278,8 @@ expect beta-sweep "a curve swept in c0" -- curve "$dir/betafree.toml" --sweep --
 # "increase n" only where a larger n can help (issue 23): kernels that no n up to 1000 resolves at n/2.
 scene steepall "$(printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 100000\n[solver]\nn = 1000\n')"
 expect extrapolated-beyond-every-n "use method 'product' (no n up to 1000 resolves them at n/2)" -- point "$dir/steepall.toml"
-scene steep "$(printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 300\n')"
+# (At an explicit n: without one the ladder takes that advice itself, answering at n = 256: cli_ladder.sh.)
+scene steep "$(printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 300\n[solver]\nn = 128\n')"
 expect extrapolated-larger-n "increase n (at most 1000) or use method 'product'" -- point "$dir/steep.toml"
 expect physical-P1-and-Q "not both" -- point "$dir/physP1Q.toml"
 expect physical-P1-hertz-width "given-load" -- point "$dir/physhertzP1.toml"

@@ -298,8 +298,9 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
     std::string line;
     std::getline(in, line);
     const std::vector<std::string> header = split(line);
-    ASSERT_EQ(header.size(), 17u);
+    ASSERT_EQ(header.size(), 18u);
     ASSERT_EQ(header[13], "P1_N_per_m");
+    ASSERT_EQ(header[16], "n");  // each row's n (empty: not given to write_curve_csv)
     int refused = 0;
     for (std::size_t i = 0; std::getline(in, line); ++i) {
         const std::vector<std::string> r = split(line);

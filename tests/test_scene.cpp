@@ -233,7 +233,7 @@ TEST(Scene, UnknownKeyInsideTerm) {
 }
 
 TEST(Scene, UnknownKeyInsideSolver) {
-    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\ntolerance = 1e-9\n", {"unknown key 'solver.tolerance'"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\ntol = 1e-9\n", {"unknown key 'solver.tol'"}));
 }
 
 TEST(Scene, UnknownTable) {

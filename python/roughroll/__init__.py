@@ -185,7 +185,11 @@ class Scene:
                  doc="The scene's load Q = P1/P2 (P1/P2 of a physical scene, (Q/f) f of Q_over_f), or None.")
     Q_over_f = property(lambda self: self._core.Q_over_f,
                         doc="The scene's load as Q/f (as given by the key Q_over_f, else Q/f), or None.")
-    n = property(lambda self: self._core.n, doc="The Gauss-Chebyshev nodes (4.6) the scene's method uses.")
+    n = property(lambda self: self._core.n, doc="The Gauss-Chebyshev nodes (4.6) the scene's method uses "
+                                                "(without solver.n: the method's default, the ladder's first rung).")
+    tolerance = property(lambda self: self._core.tolerance,
+                         doc="The relative tolerance with which n is chosen (solver.tolerance, default 1e-4); "
+                             "None when the scene gives n.")
     method = property(lambda self: self._core.method, doc="The scene's method.")
     roughness = property(lambda self: self._core.roughness,
                          doc="T, A of (3.26) per cylinder and direction (None: smooth); for a physical "
@@ -260,7 +264,7 @@ class Scene:
 
     def point(self, Q: Optional[float] = None, *, Q_over_f: Optional[float] = None, P1: Optional[float] = None,
               method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
-              friction: Optional[float] = None) -> Point:
+              friction: Optional[float] = None, tolerance: Optional[float] = None) -> Point:
         """One creep point for the load ``Q``, as ``roughroll point``.
 
         The normal problem (3.19)-(3.20) gives P_H/P2 and the pressure; the tangential problem
@@ -286,6 +290,10 @@ class Scene:
         friction : float, optional
             Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
             the load is then checked against it).
+        tolerance : float, optional
+            The relative accuracy every error estimate must meet, in (0, 1), as ``--tolerance``:
+            n is chosen from the method's default up to 1000 (over the scene's ``[solver] n``
+            and ``tolerance``; without n the default 1e-4); not with ``n``.
 
         Returns
         -------
@@ -301,11 +309,13 @@ class Scene:
             A point the discretisation cannot resolve; a numerical fault.
         """
         return Point._from_json(self._core.point_json(_real(Q, "Q"), _real(Q_over_f, "Q_over_f"), _real(P1, "P1"),
-                                                      _nodes(n), _method(method), _zones(zones), _real(friction, "friction")))
+                                                      _nodes(n), _method(method), _zones(zones), _real(friction, "friction"),
+                                                      _real(tolerance, "tolerance")))
 
     def points(self, loads: Optional[Sequence[float]] = None, *, Q_over_f: Optional[Sequence[float]] = None,
                P1: Optional[Sequence[float]] = None, method: Optional[str] = None, n: Optional[int] = None,
-               zones: Optional[str] = None, friction: Optional[float] = None, threads: int = 1) -> List[Point]:
+               zones: Optional[str] = None, friction: Optional[float] = None, threads: int = 1,
+               tolerance: Optional[float] = None) -> List[Point]:
         """Points for many loads, on ``threads`` threads (see ``roughroll.solve``).
 
         Parameters
@@ -328,6 +338,10 @@ class Scene:
         friction : float, optional
             Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
             the load is then checked against it).
+        tolerance : float, optional
+            The relative accuracy every error estimate must meet, in (0, 1), as ``--tolerance``:
+            n is chosen from the method's default up to 1000 (over the scene's ``[solver] n``
+            and ``tolerance``; without n the default 1e-4); not with ``n``.
 
         Returns
         -------
@@ -340,12 +354,12 @@ class Scene:
         key, values = given[0]
         name = "loads" if key == "Q" else key
         return solve([(self, {key: x}) for x in _numbers(values, name)], threads=threads, method=method, n=n,
-                     zones=zones, friction=friction)
+                     zones=zones, friction=friction, tolerance=tolerance)
 
     def curve(self, loads: Optional[Sequence[float]] = None, *, Q_over_f: Optional[Sequence[float]] = None,
               points: int = 51, sweep: bool = False,
               method: Optional[str] = None, n: Optional[int] = None, zones: Optional[str] = None,
-              friction: Optional[float] = None) -> Dict[str, np.ndarray]:
+              friction: Optional[float] = None, tolerance: Optional[float] = None) -> Dict[str, np.ndarray]:
         """A creep curve xi(Q) as NumPy arrays, as ``roughroll curve`` writes it.
 
         Parameters
@@ -367,6 +381,10 @@ class Scene:
         friction : float, optional
             Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
             the load is then checked against it).
+        tolerance : float, optional
+            The relative accuracy every error estimate must meet, in (0, 1), as ``--tolerance``:
+            n is chosen from the method's default up to 1000 (over the scene's ``[solver] n``
+            and ``tolerance``; without n the default 1e-4); not with ``n``.
 
         Returns
         -------
@@ -381,7 +399,8 @@ class Scene:
         ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)).
         Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
-        slip zones) and stick_start (formulation section 7), for a
+        slip zones) and stick_start (formulation section 7), n (the row's nodes: the ladder's
+        choice without an explicit n; 0 for a refused row), for a
         physical scene P1_N_per_m, xi1, xi1_carter, and status ("ok" or "refused", an array of
         str).  The normal problem is solved once.
 
@@ -405,7 +424,8 @@ class Scene:
             Q_over_f = _numbers(Q_over_f, "Q_over_f").tolist()
         # Beyond C++'s int the library's own check answers (its message names no number).
         points = min(max(_integer(points, "points"), -2**31), 2**31 - 1)
-        c = self._core.curve(loads, Q_over_f, points, bool(sweep), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))
+        c = self._core.curve(loads, Q_over_f, points, bool(sweep), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"),
+                             _real(tolerance, "tolerance"))
         for line in c.pop("_refused"):
             warnings.warn(line, RefusedPointWarning, stacklevel=2)
         c["status"] = np.array(c["status"], dtype=str)
@@ -414,7 +434,7 @@ class Scene:
     def traction(self, Q: Optional[float] = None, *, Q_over_f: Optional[float] = None, P1: Optional[float] = None,
                  r: Optional[Sequence[float]] = None, points: int = 401, method: Optional[str] = None,
                  n: Optional[int] = None, zones: Optional[str] = None,
-                 friction: Optional[float] = None) -> Dict[str, Any]:
+                 friction: Optional[float] = None, tolerance: Optional[float] = None) -> Dict[str, Any]:
         """The tractions of one point on a grid of r = x1/a in [-1, 1], as ``roughroll traction``.
 
         Parameters
@@ -439,6 +459,10 @@ class Scene:
         friction : float, optional
             Over the scene's friction coefficient, as ``--friction`` (checked as the scene's key;
             the load is then checked against it).
+        tolerance : float, optional
+            The relative accuracy every error estimate must meet, in (0, 1), as ``--tolerance``:
+            n is chosen from the method's default up to 1000 (over the scene's ``[solver] n``
+            and ``tolerance``; without n the default 1e-4); not with ``n``.
 
         Returns
         -------
@@ -465,7 +489,8 @@ class Scene:
         else:
             r = _numbers(r, "r").tolist()
         t = self._core.traction(_real(Q, "Q"), _real(Q_over_f, "Q_over_f"), _real(P1, "P1"), r, _nodes(n),
-                                _method(method), _zones(zones), _real(friction, "friction"))
+                                _method(method), _zones(zones), _real(friction, "friction"),
+                                _real(tolerance, "tolerance"))
         t["point"] = Point._from_json(t["point"])
         t["f_p"] = t["point"].f * t["p"]
         return t
@@ -583,7 +608,8 @@ def point(scene: Union[Scene, Mapping, str, "os.PathLike[str]"], Q: Optional[flo
 
 
 def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = None, n: Optional[int] = None,
-          zones: Optional[str] = None, friction: Optional[float] = None) -> List[Point]:
+          zones: Optional[str] = None, friction: Optional[float] = None,
+          tolerance: Optional[float] = None) -> List[Point]:
     """Many creep points, on ``threads`` threads (C++ std::thread, the GIL released).
 
     Parameters
@@ -594,7 +620,7 @@ def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = Non
     threads : int
         Threads to solve on, at most 1024; -1 means one per core this process may run on,
         -2 one fewer, and so on (scipy's ``workers=-1``).
-    method, n, zones, friction
+    method, n, zones, friction, tolerance
         As for ``Scene.point``, for every item.
 
     Ctrl-C stops the batch between points (the points being solved finish first) and raises
@@ -633,7 +659,8 @@ def solve(items: Iterable[Any], *, threads: int = 1, method: Optional[str] = Non
         else:
             s, load = item, None
         jobs.append((_as_scene(s)._core, *_load(load)))
-    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones), _real(friction, "friction"))]
+    return [Point._from_json(text) for text in _core.solve_all(jobs, int(threads), _nodes(n), _method(method), _zones(zones),
+                                                               _real(friction, "friction"), _real(tolerance, "tolerance"))]
 
 
 def _load(load):

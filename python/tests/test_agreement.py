@@ -107,7 +107,7 @@ def assert_curve_equal(got, expected):
             assert got[key].tolist() == [c == "1" for c in column]
         elif key == "status":
             assert got[key].tolist() == column
-        elif key == "zones":  # an int array: 0 where the CSV is empty (a refused row)
+        elif key in ("zones", "n"):  # int arrays: 0 where the CSV is empty (a refused row)
             assert got[key].tolist() == [0 if r else int(c) for r, c in zip(refused, column)]
         else:
             np.testing.assert_array_equal(got[key], as_float(column), err_msg=key)

@@ -27,10 +27,11 @@ struct scene_options {
     std::optional<int> n;
     std::optional<std::string> method_name;
     std::optional<std::string> zones_name;
+    std::optional<double> tolerance;  // --tolerance: the ladder chooses n (problems/level_ladder.hpp)
 };
 
 void add_scene_options(CLI::App* cmd, scene_options& o);
-// The overrides alone (--n, --method, --zones, --friction), for a command with its own SCENE.
+// The overrides alone (--n, --method, --zones, --tolerance, --friction), for a command with its own SCENE.
 void add_scene_overrides(CLI::App* cmd, scene_options& o);
 
 // The load of one point, as --Q (P1/P2), --Q-over-f (Q/f) or --P1 (N/m, physical scenes): at most

@@ -116,12 +116,15 @@ void add_scene_overrides(CLI::App* cmd, scene_options& o) {
     cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
     cmd->add_option("--zones", o.zones_name, "auto, single or general: how the stick and slip zones are found "
                                              "(overrides solver.zones)");
+    add_number(cmd, "--tolerance", o.tolerance,
+               "relative accuracy of every estimate: n chosen from the method's default up to 1000 (overrides "
+               "solver.tolerance and solver.n; default " + shortest(default_tolerance) + " where no n is given)");
     add_number(cmd, "--friction", o.friction, "friction coefficient f (overrides the scene's friction)");
 }
 
 scene load_scene(const scene_options& o) {
     scene s = read_scene(o.path);
-    override_solver(s, o.n, o.method_name, o.zones_name);
+    override_solver(s, o.n, o.method_name, o.zones_name, o.tolerance);
     override_friction(s, o.friction);
     return s;
 }
@@ -277,7 +280,7 @@ int run_curve(const curve_options& o) {
         if (c.settled.physical) si = si_context{*c.settled.physical, c.widths};
         std::ostream& out = files.empty() ? std::cout : files[k]->stream();
         write_curve_header(out, header);
-        write_curve_csv(out, c.rows, si);
+        write_curve_csv(out, c.rows, si, c.nodes);
         for (const curve_point& row : c.rows)
             if (row.is_refused()) ++facts.refused;
         plotted.push_back(facts);

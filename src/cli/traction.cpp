@@ -231,6 +231,9 @@ int run_traction(const traction_options& o) {
     progress("traction " + name + ": solving the point at Q = " + shortest(Q) +
              (s.physical ? " (its contact width first)" : ""));
     const auto start = std::chrono::steady_clock::now();
+    // Without n, the ladder chooses it as for `point` (problems/level_ladder.hpp; refused as there),
+    // and the tractions are those of that n: the point at its n, exactly as with --n.
+    if (s.solver.n == 0) s.solver.n = solve_point(s, Q).solved.normal().rule.n;
     const std::optional<contact_width> width = settle_width(s, nullptr, Q);
     contact c(s.surfaces, s.friction, s.solver, s.materials);
     const tangential_solution solution = c.point(Q);

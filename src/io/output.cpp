@@ -212,7 +212,12 @@ void write_summary(std::ostream& out, const point_report& r) {
 void write_curve_header(std::ostream& out, const curve_header& h) {
     out << "# roughroll " << version() << "\n"
         << "# roughroll curve " << one_line(h.scene_path) << (h.label.empty() ? "" : ": ") << one_line(h.label) << "\n"
-        << "# f = " << shortest(h.friction) << ", method = " << to_string(h.solver.how) << ", n = " << h.solver.nodes()
+        << "# f = " << shortest(h.friction) << ", method = " << to_string(h.solver.how) << ", n = "
+        << h.solver.nodes()
+        << (h.solver.n != 0 ? std::string()
+                            : " (the method's default; a row climbs to larger n, column n, until its estimates are "
+                              "below the relative tolerance " +
+                                  shortest(h.solver.tolerance.value_or(default_tolerance)) + ")")
         << ", zones = " << to_string(h.solver.zones) << "; "
         << (h.swept ? "swept in c0: each row's load Q(c0) is found for its stick zone end c0"
                     : "loads given: Q/f over the curve's range, dense near gross sliding")
@@ -223,16 +228,24 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
            "# checks_hold: 1 when p >= 0, (3.3) and (3.4) hold on the solver's grids; c0_error_estimate, "
            "xi_error_estimate, Q_error_estimate: the estimates of their errors (empty: none)\n"
            "# zones: the number of stick and slip zones; stick_start: r where the stick zone starts (-1: at the "
-           "leading edge); status: ok, or refused (only the given Q or c0 and Carter's columns filled)\n";
+           "leading edge); n: the Gauss-Chebyshev nodes of the row; status: ok, or refused (only the given Q or c0 "
+           "and Carter's columns filled)\n";
     if (h.physical)
         out << "# SI: P1_N_per_m = Q P2, the tangential load in N/m; xi1 = C P2 xi/a, the creep ratio (dimensionless); "
                "xi1_carter: Carter's creep ratio for the same loads on smooth cylinders\n";
 }
 
-void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si) {
+void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si,
+                     const std::vector<int>& nodes) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
            "Q_error_estimate,zones,stick_start"
-        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",status\n";
+        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",n,status\n";
+    if (!nodes.empty() && nodes.size() != curve.size())
+        throw std::invalid_argument("write_curve_csv: " + std::to_string(nodes.size()) + " n for " +
+                                    std::to_string(curve.size()) + " rows");
+    const auto n_cell = [&nodes](std::size_t i) {
+        return nodes.empty() || nodes[i] == 0 ? std::string() : std::to_string(nodes[i]);
+    };
     if (si && si->widths.size() != curve.size())
         throw std::invalid_argument("write_curve_csv: " + std::to_string(si->widths.size()) + " widths for " +
                                     std::to_string(curve.size()) + " rows");
@@ -253,7 +266,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
                 const si_point p = to_si(si->scene, si->widths[i], smooth_Q, s.f, 0.0, 0.0);
                 out << ',' << cell(at_Q, p.P1) << ",," << shortest(p.xi1_carter);
             }
-            out << ",refused\n";
+            out << ',' << n_cell(i) << ",refused\n";
             continue;
         }
         out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
@@ -268,7 +281,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
         }
-        out << ",ok\n";
+        out << ',' << n_cell(i) << ",ok\n";
     }
 }
 

@@ -280,7 +280,7 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
     solver_options options;
     const toml::table* table = table_at(root, "solver", source, "solver");
     if (table == nullptr) return options;
-    check_keys(*table, {"n", "method", "zones"}, source, "solver");
+    check_keys(*table, {"n", "method", "zones", "tolerance"}, source, "solver");
     if (const toml::node* n = table->get("n")) options.n = nodes_at(*n, source, "solver.n");
     if (const toml::node* how = table->get("method")) options.how = method_at(*how, source, "solver.method");
     if (const toml::node* zones = table->get("zones")) {
@@ -289,6 +289,18 @@ solver_options read_solver(const toml::table& root, const std::string& source) {
         } catch (const input_error& e) {
             fail(source, quoted("solver.zones") + ": " + e.what());
         }
+    }
+    if (const toml::node* tolerance = table->get("tolerance")) {
+        if (table->contains("n"))
+            fail(source, quoted("solver.n") + " and " + quoted("solver.tolerance") +
+                             ": give one (n fixes the nodes; the tolerance lets the ladder choose n)");
+        const double tol = number_at(*tolerance, source, "solver.tolerance");
+        try {
+            check_tolerance(tol, quoted("solver.tolerance"));
+        } catch (const input_error& e) {
+            fail(source, e.what());
+        }
+        options.tolerance = tol;
     }
     return options;
 }

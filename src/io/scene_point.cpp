@@ -2,19 +2,29 @@
 #include "roughroll/io/scene_point.hpp"
 
 #include <chrono>
+#include <map>
 #include <utility>
 
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "roughroll/problems/load_ratio.hpp"
+#include "roughroll/problems/level_ladder.hpp"
 
 namespace roughroll {
 
 void override_solver(scene& s, std::optional<int> n, const std::optional<std::string>& method_name,
-                     const std::optional<std::string>& zones_name) {
+                     const std::optional<std::string>& zones_name, std::optional<double> tolerance) {
+    if (n && tolerance)
+        throw input_error("n and tolerance: give one (n fixes the nodes; the tolerance lets the ladder choose n)");
     if (n) {
         check_node_count(*n);  // 0 would otherwise mean the method's default
         s.solver.n = *n;
+        s.solver.tolerance.reset();
+    }
+    if (tolerance) {
+        check_tolerance(*tolerance, "tolerance");
+        s.solver.tolerance = *tolerance;
+        s.solver.n = 0;  // the ladder chooses n (over the scene's solver.n)
     }
     if (method_name) s.solver.how = method_from_string(*method_name);
     if (zones_name) s.solver.zones = zone_search_from_string(*zones_name);
@@ -75,15 +85,59 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
     c.set_checkpoint(checkpoint);
     return c;
 }
+
+// The scene at each rung of the ladder: settled at the rung's n (a physical scene's width follows
+// P_H/P2 at that n). The first rung is the scene as given (solver.n = 0: the method's default), so
+// that its point is today's. `Q`: the load of a point, or of a row whose width follows the load
+// (settled_contact, as without the ladder); none for the rows of a curve whose width does not
+// (settle_width alone, as curve_of without the ladder). `checkpoint`: as solve_point's.
+struct scene_rungs {
+    scene given;
+    std::optional<double> Q;
+    std::function<void()> checkpoint;
+    std::map<int, std::pair<scene, std::optional<contact_width>>> settled;
+
+    std::unique_ptr<contact> operator()(int n) {
+        scene at = given;
+        if (n != at.solver.nodes()) at.solver.n = n;
+        std::optional<contact_width> width;
+        std::unique_ptr<contact> c;
+        if (Q) {
+            c = std::make_unique<contact>(settled_contact(at, width, *Q, checkpoint));
+        } else {
+            width = settle_width(at);
+            c = std::make_unique<contact>(at.surfaces, at.friction, at.solver, at.materials);
+            c->set_checkpoint(checkpoint);
+        }
+        settled.insert_or_assign(n, std::make_pair(std::move(at), width));
+        return c;
+    }
+};
+
+level_ladder ladder_of(const scene& s, scene_rungs& rungs) {
+    return level_ladder(s.solver, s.surfaces, [&rungs](int n) { return rungs(n); });
+}
 }  // namespace
 
 scene_point solve_point(scene s, const std::optional<load_given>& load, const std::function<void()>& checkpoint) {
     const double Q = load_of(s, load);
     const auto start = std::chrono::steady_clock::now();
+    const auto since_start = [&start] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    if (s.solver.n == 0) {  // the ladder chooses n (problems/level_ladder.hpp)
+        scene_rungs rungs{s, Q, checkpoint, {}};
+        level_ladder ladder = ladder_of(s, rungs);
+        level_ladder::answer a = ladder.point(Q);
+        const double seconds = since_start();
+        std::unique_ptr<contact> c = ladder.release(a.n);
+        auto& [settled, width] = rungs.settled.at(a.n);
+        return {std::move(settled), width, std::move(*c), std::move(a.solution), seconds, std::move(a.estimate)};
+    }
     std::optional<contact_width> width;
     contact c = settled_contact(s, width, Q, checkpoint);
     const tangential_solution solution = c.point(Q);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = since_start();
     std::optional<error_estimate> estimate = c.estimate(solution);
     return {std::move(s), width, std::move(c), solution, seconds, estimate};
 }
@@ -91,37 +145,66 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
 scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
                      const std::function<void()>& before_row) {
     const std::vector<double> Qs = loads ? *loads : curve_loads(points, s.friction, s.materials.beta_d);
+    const bool climbs = s.solver.n == 0;  // the ladder chooses each row's n (problems/level_ladder.hpp)
     if (!width_follows_tangential_load(s)) {
-        const std::optional<contact_width> width = settle_width(s);
-        contact c(s.surfaces, s.friction, s.solver, s.materials);
-        c.set_checkpoint(before_row);
-        std::vector<curve_point> rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, Qs, before_row);
+        std::vector<curve_point> rows;
         std::vector<contact_width> widths;
-        if (width) widths.assign(rows.size(), *width);
-        return {std::move(s), std::move(rows), std::move(widths)};
+        std::vector<int> nodes;
+        if (climbs) {
+            // Each rung settles its own width (at no load: the width does not follow it).
+            scene_rungs rungs{s, std::nullopt, before_row, {}};
+            level_ladder ladder = ladder_of(s, rungs);
+            rows = ladder_curve(ladder, Qs, points, sweep, nodes, before_row);
+            const int first = ladder.rungs().front();
+            for (std::size_t i = 0; i < rows.size(); ++i)
+                if (const auto& width = rungs.settled.at(nodes[i] != 0 ? nodes[i] : first).second) widths.push_back(*width);
+            s = std::move(rungs.settled.at(first).first);
+        } else {
+            const std::optional<contact_width> width = settle_width(s);
+            contact c(s.surfaces, s.friction, s.solver, s.materials);
+            c.set_checkpoint(before_row);
+            rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, Qs, before_row);
+            if (width) widths.assign(rows.size(), *width);
+            for (const curve_point& row : rows) nodes.push_back(row.is_refused() ? 0 : s.solver.nodes());
+        }
+        return {std::move(s), std::move(rows), std::move(widths), std::move(nodes)};
     }
     // The width follows the load: Johnson's width (the pressure alone) for refused rows, then
-    // each row at its own width.
+    // each row at its own width (with the ladder, a ladder per row: each rung its width at the row's load).
     if (sweep) check_sweepable(s.materials);
     scene johnson = s;
     johnson.materials.coupling = coupling_level::johnson;
     const contact_width johnson_width = *settle_width(johnson);
-    scene_curve out{s, {}, {}};
+    scene_curve out{s, {}, {}, {}};
     for (const double Q : Qs) {
         if (before_row) before_row();
         scene at = s;
         normal_cache cache;
         try {
+            if (climbs) {
+                scene_rungs rungs{s, Q, before_row, {}};
+                level_ladder ladder = ladder_of(s, rungs);
+                std::vector<int> used;
+                std::vector<curve_point> row = ladder_curve(ladder, {Q}, 1, false, used);
+                auto& [settled, width] = rungs.settled.at(used.front() != 0 ? used.front() : ladder.rungs().front());
+                out.rows.push_back(std::move(row.front()));
+                out.widths.push_back(*width);
+                out.nodes.push_back(used.front());
+                if (used.front() != 0) out.settled = std::move(settled);
+                continue;
+            }
             const contact_width w = *settle_width(at, &cache, Q, before_row);
             contact c(at.surfaces, at.friction, at.solver, at.materials, &cache);
             c.set_checkpoint(before_row);
             std::vector<curve_point> row = creep_curve(c, {Q});
+            out.nodes.push_back(row.front().is_refused() ? 0 : at.solver.nodes());
             out.rows.push_back(std::move(row.front()));
             out.widths.push_back(w);
             out.settled = std::move(at);
         } catch (const resolution_error& e) {
             out.rows.push_back(refused_load(Q, s.friction, e));
             out.widths.push_back(johnson_width);
+            out.nodes.push_back(0);
         }
     }
     return out;

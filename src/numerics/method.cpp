@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/numerics/method.hpp"
 
+#include <cmath>
 #include <ostream>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace roughroll {
 
@@ -49,6 +51,11 @@ zone_search zone_search_from_string(const std::string& name) {
     if (name == "single") return zone_search::single;
     if (name == "general") return zone_search::general;
     throw input_error("unknown zone search '" + name + "' (known: auto, single, general)");
+}
+
+void check_tolerance(double tolerance, const std::string& name) {
+    if (!(std::isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0))
+        throw input_error(name + " must be a relative accuracy in (0, 1), e.g. 1e-6 (got " + shortest(tolerance) + ")");
 }
 
 method level_of(method m) { return m == method::extrapolated ? method::product : m; }

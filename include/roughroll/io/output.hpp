@@ -62,8 +62,10 @@ struct si_context {
     physical_scene scene;
     std::vector<contact_width> widths;  // one per row of the curve
 };
+// `nodes`: each row's n (scene_curve::nodes: the ladder's rung), in the column n (empty where 0 or
+// not given).
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve,
-                     const std::optional<si_context>& si = std::nullopt);
+                     const std::optional<si_context>& si = std::nullopt, const std::vector<int>& nodes = {});
 
 // The `#` lines `roughroll curve` writes before write_curve_csv's header, as the traction CSV
 // has them: "# roughroll X.Y.Z", the scene (its file and label), how the curve was solved
@@ -73,7 +75,7 @@ struct curve_header {
     std::string scene_path;
     std::string label;
     double friction;
-    solver_options solver;
+    solver_options solver;  // n = 0: the ladder chose each row's n (column n) for solver.tolerance
     bool swept;     // loads Q(c0) of a sweep in c0, else the curve's given loads
     bool physical;  // the columns P1_N_per_m, xi1, xi1_carter follow
 };

@@ -18,11 +18,15 @@
 
 namespace roughroll {
 
-// The command line's --n, --method and --zones (or the Python keywords n=, method=, zones=) over
-// the scene's [solver] table: n checked against [min_nodes, max_nodes] (0 would otherwise mean
-// the method's default), the method's and the zone search's names as the scene file's.
+// The command line's --n, --method, --zones and --tolerance (or the Python keywords n=, method=,
+// zones=, tolerance=) over the scene's [solver] table: n checked against [min_nodes, max_nodes]
+// (0 would otherwise mean the method's default), the method's and the zone search's names as the
+// scene file's, the tolerance by check_tolerance. n and the tolerance replace each other (n fixes
+// the nodes, the tolerance lets the ladder choose them: problems/level_ladder.hpp); giving both
+// is an input_error.
 void override_solver(scene& s, std::optional<int> n, const std::optional<std::string>& method_name,
-                     const std::optional<std::string>& zones_name = std::nullopt);
+                     const std::optional<std::string>& zones_name = std::nullopt,
+                     std::optional<double> tolerance = std::nullopt);
 
 // Whether the contact width of the scene depends on the tangential load: a physical scene of
 // dissimilar rollers at full coupling, whose lambda = P_H/P2 has the term in p1 (docs/formulation.md
@@ -50,13 +54,16 @@ struct scene_point {
     std::optional<contact_width> width;
     contact solved;
     tangential_solution solution;
-    double seconds;  // wall time of the width search, the normal and the tangential solves
+    double seconds;  // wall time of the width search, the normal and the tangential solves (with the ladder: every rung tried, estimates included)
     std::optional<error_estimate> estimate;
 
-    point_report report() const;  // what to_json and write_summary print
+    point_report report() const;  // what to_json and write_summary print (its n: the rung's, with the ladder)
 };
 
-// load_of(s, load), settle_width, the contact and its point for the load, and its estimate.
+// load_of(s, load), settle_width, the contact and its point for the load, and its estimate. Where
+// the scene gives no n, the ladder chooses it (problems/level_ladder.hpp): the method's default n
+// first (today's point where it meets the tolerance), then larger n, each rung with its own
+// contact width; resolution_error when no rung meets the tolerance.
 // `checkpoint`: called before each level's solve (contact::set_checkpoint); what it throws ends the solve.
 scene_point solve_point(scene s, const std::optional<load_given>& load, const std::function<void()>& checkpoint = {});
 
@@ -66,13 +73,15 @@ struct scene_curve {
     scene settled;                      // its surfaces at the (last) width settled
     std::vector<curve_point> rows;
     std::vector<contact_width> widths;  // a physical scene: one per row, else empty
+    std::vector<int> nodes;             // each row's n (the ladder's rung; 0 for a refused row)
 };
 // One width for every row, settled once; where the width follows the tangential load
 // (width_follows_tangential_load), a width per row, settled at the row's load. A row whose width
 // search is refused (resolution_error) is a refused row; its width is Johnson's level's, which
 // carries the same load P2 (a refused row reports only P1 and Carter's creep: both depend on P2 alone).
 // `before_row`: as creep_curve's, called before each row, and before each level's solve of a row
-// (contact::set_checkpoint).
+// (contact::set_checkpoint). Where the scene gives no n, each row meets the tolerance (ladder_curve,
+// problems/level_ladder.hpp; a row whose width follows the load climbs with its own widths).
 scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
                      const std::function<void()>& before_row = {});
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 namespace roughroll {
@@ -46,11 +47,24 @@ enum class zone_search { automatic, single, general };
 std::string to_string(zone_search z);
 zone_search zone_search_from_string(const std::string& name);  // "auto", "single", "general"
 
+// The relative tolerance when neither the scene (solver.tolerance) nor the caller gives one:
+// every point of Fig. 2 and of data/ meets it at the method's default n (measured: the largest
+// ratio of an estimate to its allowance over Fig. 2's curves is far below 1, docs/performance.md),
+// and the one-parameter case near gross sliding whose checks fail at n = 128 is answered at 256.
+constexpr double default_tolerance = 1e-4;
+
+// A tolerance a scene or an option may give: finite, in (0, 1) (a relative accuracy of 1 or more
+// says nothing). Throws input_error naming `name` ("--tolerance", "solver.tolerance", "tolerance").
+void check_tolerance(double tolerance, const std::string& name);
+
 // The method and its number of nodes, as a scene's [solver] table gives them.
 struct solver_options {
     int n = 0;  // 0: default_nodes(how)
     method how = method::extrapolated;
     zone_search zones = zone_search::automatic;
+    // The relative tolerance of the ladder that chooses n where n = 0 (problems/level_ladder.hpp);
+    // empty: default_tolerance. An explicit n ignores it.
+    std::optional<double> tolerance = std::nullopt;
 
     int nodes() const { return n == 0 ? default_nodes(how) : n; }
 };

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The ladder that chooses n (issue 24, 5; docs/performance.md "The ladder chooses n"): where a
+// scene gives no n, a point is solved at the method's default n first and, where its checks
+// (3.3)-(3.4) fail, its levels refuse it or an estimate is above the tolerance, again at the next
+// rung (the default n doubled while below max_nodes, then max_nodes: 128, 256, 512, 1000 for
+// `extrapolated` and `one-parameter`, 96, 192, 384, 768, 1000 for `product`, 200, 400, 800,
+// 1000 for `paper`). The first rung that meets the tolerance answers, and reports its n; when
+// none does, the point is refused (resolution_error) with the best estimate reached.
+//
+// A thin layer above contact: one contact per rung, built on first use by the caller's factory
+// (a physical scene settles its contact width at each rung's n), kept for the next point of a
+// curve. At the first rung the point is exactly contact::point and contact::estimate at the
+// method's default n, so a point that meets the tolerance there is today's point, digit for digit.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/creep_curve.hpp"
+
+namespace roughroll {
+
+// The n the ladder tries for a method, in order: default_nodes(how) doubled while below
+// max_nodes, then max_nodes.
+std::vector<int> ladder_rungs(method how);
+
+// How an estimate compares with the tolerance tol, quantity by quantity (docs/performance.md "The
+// ladder chooses n"): a quantity v with estimate e and scale s is within it when
+// e <= max(tol s, r), r its rounding floor at n = max_nodes (error_bound.hpp and contact's floors:
+// no rung can do better; `strength`: the kernels' sum |T|, which enters xi's), with s = |P_H/P2| for P_H/P2, |xi| for xi, the slip zone's length 1 - c0 for c0 and
+// 1 + start for the stick zone's start (the quantities that converge near full stick, issue 23),
+// |Q| for Q(c0) of a swept point.
+struct tolerance_check {
+    double ratio;          // the largest e / max(tol s, r) over the quantities: within when <= 1
+    std::string quantity;  // the quantity of that ratio ("xi", "c0", ...)
+    double estimate;       // its estimate e
+    double relative;       // e / s (infinite where s = 0)
+};
+tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
+                               double strength = 0.0);
+
+class level_ladder {
+public:
+    // `make(n)`: the contact of the scene at n nodes (the rung's own contact width for a physical scene).
+    // `surfaces`: the scene's roughness (a physical scene's at any width: only the size of its kernels'
+    // terms enters, through the rounding floors).
+    // `options`: the method (its rungs), the tolerance (default_tolerance when empty) and the zone
+    // search: with zone_search::single (the paper's zone, its checks reported and never acted on) a
+    // point whose checks fail is answered, flagged, at the rung where it fails, as at a given n: no n
+    // makes a wrong zone structure right.
+    using rung_factory = std::function<std::unique_ptr<contact>(int n)>;
+    level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make);
+
+    // A point answered at the rung `n`, with its estimate (within the tolerance).
+    struct answer {
+        tangential_solution solution;
+        std::optional<error_estimate> estimate;
+        int n;
+    };
+    // The point at Q: the first rung from `from` (an index into rungs()) whose point holds its checks
+    // and whose estimate is within the tolerance. Throws resolution_error (one line: the best
+    // estimate reached and its n, or why no rung gave one; what to change) when none does.
+    answer point(double Q, std::size_t from = 0);
+    // The same for the point whose stick zone ends at c0 (contact::at_stick_end, a swept curve).
+    answer at_stick_end(double c0, std::size_t from = 0);
+
+    const std::vector<int>& rungs() const { return rungs_; }
+    double tolerance() const { return tolerance_; }
+    // check_estimate of a point of rung c with this ladder's tolerance: within it when ratio <= 1.
+    tolerance_check check(const contact& c, const tangential_solution& s, const error_estimate& e) const;
+    // Whether a point of rung c (with its estimate) answers: checks holding and every estimate within
+    // the tolerance, or checks failing under zone_search::single.
+    bool answers(const contact& c, const tangential_solution& s, const std::optional<error_estimate>& e) const;
+    // The contact of rung n (built on first use).
+    contact& at(int n);
+    // Hands the contact of rung n over (built again if asked for later).
+    std::unique_ptr<contact> release(int n);
+
+private:
+    using solve_rung = std::function<answer(contact&, int n)>;
+    answer climb(const solve_rung& solve, std::size_t from);
+
+    std::vector<int> rungs_;
+    double tolerance_;
+    double strength_;  // the kernels' sum |T| (kernel::strength)
+    bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
+    rung_factory make_;
+    std::map<int, std::unique_ptr<contact>> built_;
+};
+
+// A creep curve whose rows each meet the tolerance (issue 24, 5): creep_curve at `loads` (or
+// swept_curve of `points` when `sweep`) on the first rung, exactly as at the method's default n;
+// then each row that does not meet the tolerance climbs from the second rung (level_ladder::point,
+// at_stick_end); a row no rung answers is a refused row with the ladder's line. `n_used`: each
+// row's n (0 for a refused row). `before_row`: as creep_curve's, before each row of the first pass.
+std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<double>& loads, int points, bool sweep,
+                                      std::vector<int>& n_used, const std::function<void()>& before_row = {});
+
+}  // namespace roughroll

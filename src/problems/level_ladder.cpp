@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughroll/problems/level_ladder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/model/carter.hpp"
+#include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/error_bound.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+std::vector<int> ladder_rungs(method how) {
+    std::vector<int> rungs;
+    for (int n = default_nodes(how); n < max_nodes; n *= 2) rungs.push_back(n);
+    rungs.push_back(max_nodes);
+    return rungs;
+}
+
+tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
+                               double strength) {
+    // The rounding floors at the largest n (docs/performance.md "How the error estimates are made",
+    // as contact's floors at n = max_nodes): below them no rung can bring an estimate.
+    const double K = std::max(1.0, std::fabs(lambda));
+    const double size = std::max(K, strength);  // xi's terms: f G of (4.4) and the kernel terms
+    const double n_eps = rounding_floor(max_nodes, K);
+    const double rho = s.rho();
+    const double zone_end_floor = std::min(rho > 0.0 ? n_eps / rho : std::numeric_limits<double>::infinity(),
+                                           2.0 * std::sqrt(n_eps));
+    struct quantity {
+        const char* name;
+        double estimate, scale, floor;
+    };
+    const quantity quantities[] = {
+        {"P_H/P2", e.lambda, std::fabs(lambda), rounding_floor(max_nodes, lambda)},
+        {"c0", e.c0, 1.0 - s.c0, zone_end_floor},          // the slip zone [c0, 1] (issue 23, 1)
+        {"stick start", e.start, 1.0 + s.start, zone_end_floor},  // the slip zone [-1, start]
+        {"xi", e.xi, std::fabs(s.xi), rounding_floor(max_nodes, std::fabs(s.xi) + s.f * size)},
+        {"Q", e.Q, std::fabs(s.Q), rounding_floor(max_nodes, s.f * K)},
+    };
+    // A zero estimate (the quantity given, not computed) is within any tolerance; a NaN one is not.
+    const double inf = std::numeric_limits<double>::infinity();
+    tolerance_check worst{0.0, "P_H/P2", e.lambda, 0.0};
+    for (const quantity& q : quantities) {
+        const double allowed = std::max(tol * std::fabs(q.scale), q.floor);
+        const double ratio = q.estimate == 0.0 ? 0.0 : !(q.estimate > 0.0) ? inf : allowed > 0.0 ? q.estimate / allowed : inf;
+        if (ratio > worst.ratio) {
+            const double relative = q.scale != 0.0 ? q.estimate / std::fabs(q.scale) : inf;
+            worst = {ratio, q.name, q.estimate, relative};
+        }
+    }
+    return worst;
+}
+
+level_ladder::level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make)
+    : rungs_(ladder_rungs(options.how)),
+      tolerance_(options.tolerance.value_or(default_tolerance)),
+      strength_(std::max(kernel::tangential(surfaces).strength(), kernel::normal(surfaces).strength())),
+      flagged_final_(options.zones == zone_search::single),
+      make_(std::move(make)) {
+    check_tolerance(tolerance_, "the tolerance");
+}
+
+bool level_ladder::answers(const contact& c, const tangential_solution& s,
+                           const std::optional<error_estimate>& e) const {
+    if (!s.checks.hold()) return flagged_final_;
+    return e && check(c, s, *e).ratio <= 1.0;
+}
+
+tolerance_check level_ladder::check(const contact& c, const tangential_solution& s, const error_estimate& e) const {
+    return check_estimate(s, c.normal().lambda, e, tolerance_, strength_);
+}
+
+contact& level_ladder::at(int n) {
+    std::unique_ptr<contact>& c = built_[n];
+    if (!c) c = make_(n);
+    return *c;
+}
+
+std::unique_ptr<contact> level_ladder::release(int n) {
+    at(n);
+    std::unique_ptr<contact> c = std::move(built_[n]);
+    built_.erase(n);
+    return c;
+}
+
+level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t from) {
+    struct best_reached {
+        tolerance_check check;
+        int n;
+    };
+    std::optional<best_reached> best;
+    std::string last_reason;
+    for (std::size_t i = from; i < rungs_.size(); ++i) {
+        const int n = rungs_[i];
+        try {
+            contact& c = at(n);
+            answer a = solve(c, n);
+            if (!a.solution.checks.hold() && flagged_final_) return a;
+            if (!a.solution.checks.hold()) {
+                last_reason = "the checks (3.3)-(3.4) fail";
+                continue;
+            }
+            if (!a.estimate) {
+                last_reason = "no error estimate (no three levels fit)";
+                continue;
+            }
+            const tolerance_check t = check(c, a.solution, *a.estimate);
+            if (t.ratio <= 1.0) return a;
+            if (!best || t.ratio < best->check.ratio) best = best_reached{t, n};
+            last_reason.clear();
+        } catch (const resolution_error& e) {  // this rung cannot answer: the next may
+            last_reason = one_line(e.what());
+        }
+    }
+    const std::string top = std::to_string(rungs_.back());
+    std::string msg = "no n up to " + top + " meets the tolerance " + shortest(tolerance_) + " (relative)";
+    if (best) {
+        const double relative = best->check.relative;
+        msg += ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
+               (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
+               " at n = " + std::to_string(best->n) +
+               "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate, or try "
+               "another method";
+    } else {
+        msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + top + ": " + last_reason +
+               "); give n to see that point, or try another method or zone search";
+    }
+    throw resolution_error(msg);
+}
+
+level_ladder::answer level_ladder::point(double Q, std::size_t from) {
+    return climb(
+        [Q](contact& c, int n) {
+            tangential_solution s = c.point(Q);
+            std::optional<error_estimate> e = c.estimate(s);
+            return answer{std::move(s), std::move(e), n};
+        },
+        from);
+}
+
+level_ladder::answer level_ladder::at_stick_end(double c0, std::size_t from) {
+    return climb(
+        [c0](contact& c, int n) {
+            contact::swept_point p = c.at_stick_end(c0);
+            return answer{std::move(p.solution), std::move(p.estimate), n};
+        },
+        from);
+}
+
+std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<double>& loads, int points, bool sweep,
+                                      std::vector<int>& n_used, const std::function<void()>& before_row) {
+    const int first = ladder.rungs().front();
+    contact& c = ladder.at(first);
+    std::vector<curve_point> rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, loads, before_row);
+    const double f = c.friction();
+    n_used.assign(rows.size(), first);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        curve_point& row = rows[i];
+        if (!row.is_refused() && ladder.answers(c, row.solution, row.estimate)) continue;
+        // What the row was given: its load, or on a swept curve its stick end (swept_curve's c0s).
+        const double given = sweep ? (i + 1 == rows.size() ? -1.0 : 2.0 * (1.0 - static_cast<double>(i) / (points - 1)) - 1.0)
+                                   : loads[i];
+        try {
+            level_ladder::answer a = sweep ? ladder.at_stick_end(given, 1) : ladder.point(given, 1);
+            const carter_point smooth = carter(a.solution.Q, f);
+            row = curve_point{std::move(a.solution), smooth, std::move(a.estimate), {}};
+            n_used[i] = a.n;
+        } catch (const resolution_error& e) {  // no rung answers this row: a refused row, the curve goes on
+            if (!sweep) {
+                row = refused_load(given, f, e);
+            } else {
+                curve_point refused = refused_load(0.0, f, e);  // its shape; then what a swept row was given
+                refused.solution.Q = std::nan("");
+                refused.solution.c0 = given;
+                refused.smooth = carter_point{given, carter_at_stick_end(given, f).xi};
+                refused.refused = "curve point at c0 = " + shortest(given) + ": " + one_line(e.what());
+                row = std::move(refused);
+            }
+            n_used[i] = 0;
+        }
+    }
+    return rows;
+}
+
+}  // namespace roughroll

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The ladder that chooses n (problems/level_ladder.hpp, docs/cli.md --tolerance) at the command
+# line: the one-parameter case near gross sliding (eps1 = 0.1, eps2 = 0.3, Q/f = 0.9999), whose
+# checks fail at the default n = 128, is answered at n = 256 without --n and says so in the JSON
+# and the text; --n 128 is today's flagged point; a tolerance no n reaches is refused (exit 2, one
+# line naming the best estimate); a curve reports each row's n in its column n (the given n with --n).
+# Usage: cli_ladder.sh path/to/roughroll
+set -u
+bin=$1
+hang_guard=${ROUGHROLL_HANG_GUARD:-900}  # against hangs, not a speed limit (cli_expect.sh)
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+cat >"$dir/near.toml" <<'EOF'
+friction = 0.3
+Q = 0.29997
+[cylinder1.tangential]
+T = 0.05
+A = 1
+[cylinder1.normal]
+T = 0.15
+A = 1
+[solver]
+method = "one-parameter"
+EOF
+
+run() { timeout "$hang_guard" "$bin" "$@"; }
+field() { python3 -c 'import json, sys; print(json.dumps(json.load(sys.stdin)[sys.argv[1]]))' "$1"; }
+
+json=$(run point "$dir/near.toml" --json) || fail "point without n: exit $?"
+[ "$(field n <<<"$json")" = 256 ] || fail "point without n: not at n = 256: $(field n <<<"$json")"
+[ "$(field checks_hold <<<"$json")" = true ] || fail "point without n: checks fail"
+[ "$(field error_estimate <<<"$json")" != null ] || fail "point without n: no estimate"
+text=$(run point "$dir/near.toml") || fail "point text: exit $?"
+grep -q '^  method, n           one-parameter, 256$' <<<"$text" || fail "point text: n not 256: $text"
+
+# A kernel too steep for n/2 = 64 ("increase n" at n = 128, cli_bad_input.sh): the ladder increases it.
+printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 300\n' >"$dir/steep.toml"
+json=$(run point "$dir/steep.toml" --json) || fail "steep kernel without n: exit $?"
+[ "$(field n <<<"$json")" = 256 ] || fail "steep kernel without n: not at n = 256"
+
+json=$(run point "$dir/near.toml" --json --n 128) || fail "point --n 128: exit $?"
+[ "$(field n <<<"$json")" = 128 ] || fail "--n 128: not at 128"
+[ "$(field checks_hold <<<"$json")" = false ] || fail "--n 128: not today's flagged point"
+[ "$(field error_estimate <<<"$json")" = null ] || fail "--n 128: an estimate on a flagged point"
+
+run point "$dir/near.toml" --Q 0.15 --tolerance 1e-9 >"$dir/out" 2>"$dir/err"  # order 2: out of reach at 1000
+status=$?
+[ "$status" -eq 2 ] || fail "--tolerance 1e-9: exit $status, expected 2"
+[ "$(wc -l <"$dir/err")" -eq 1 ] || fail "--tolerance 1e-9: not one stderr line: $(cat "$dir/err")"
+grep -q 'no n up to 1000 meets the tolerance 1e-09 (relative): the best estimate reached is .* at n = ' "$dir/err" ||
+    fail "--tolerance 1e-9: $(cat "$dir/err")"
+[ -s "$dir/out" ] && fail "--tolerance 1e-9: wrote stdout"
+
+run curve "$dir/near.toml" --points 3 --csv "$dir/c.csv" 2>"$dir/err"
+status=$?
+[ "$status" -eq 0 ] || [ "$status" -eq 3 ] || fail "curve: exit $status: $(cat "$dir/err")"
+grep -q '^# f = 0.3, method = one-parameter, n = 128 (the method.s default; a row climbs to larger n, column n, until its estimates are below the relative tolerance 1e-04), zones' "$dir/c.csv" ||
+    fail "curve header: $(head -3 "$dir/c.csv")"
+grep -q ',n,status$' "$dir/c.csv" || fail "curve: no column n"
+# P_H/P2 of this scene is estimated at 1.8e-4 relative at n = 128 (every row's), 4.5e-5 at 256.
+[ "$(grep -v '^#' "$dir/c.csv" | tail -n +2 | grep -vc ',256,ok$')" = 0 ] || fail "curve: a row not at n = 256: $(cat "$dir/c.csv")"
+run curve "$dir/near.toml" --points 3 --n 128 --csv "$dir/c128.csv" 2>"$dir/err" || fail "curve --n 128: exit $?"
+[ "$(grep -v '^#' "$dir/c128.csv" | tail -n +2 | grep -vc ',128,ok$')" = 0 ] || fail "curve --n 128: a row not at 128"
+
+[ "$failures" -eq 0 ] && echo "cli_ladder: ok"
+exit $((failures > 0))
