@@ -273,15 +273,18 @@ bool contact::build_levels() {
     return false;
 }
 
+void contact::make_finer(int m) {
+    if (finer_) return;
+    finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
+    finer_->set_checkpoint(checkpoint_);
+}
+
 std::optional<tangential_solution> contact::above_finest(const tangential_solution& s, const tangential_solution& own,
                                                         bool swept) {
     const int m = 2 * nodes();
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
-        if (!finer_) {
-            finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-            finer_->set_checkpoint(checkpoint_);
-        }
+        make_finer(m);
         if (swept) return finer_->level_at_stick_end(own.c0, false, sweeping_near_);
         // On the zone path of s, as the other levels (estimate()).
         return s.general ? finer_->general_point(s.Q, zone_guess{s.start, s.c0}) : finer_->level_point(s.Q, false);
@@ -729,10 +732,7 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
         const int m = 2 * nodes();
         if (self != 2 || m > max_nodes || !s.checks.hold()) return nullptr;
         try {
-            if (!finer_) {
-            finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-            finer_->set_checkpoint(checkpoint_);
-        }
+            make_finer(m);
             if (coupled_) {
                 // Full coupling: the finer level's own alternation, as the levels below (a Johnson's
                 // point at 2n against a coupled n would measure the coupling, not the discretisation).

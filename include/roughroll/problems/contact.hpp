@@ -185,6 +185,7 @@ private:
     bool levels_built_ = false;
     bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
     std::unique_ptr<contact> finer_;  // level 2n: the second chance of a ratio that fails
+    void make_finer(int m);  // finer_ at m = 2n nodes, made once (with this contact's checkpoint)
     std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
