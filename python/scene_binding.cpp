@@ -144,7 +144,7 @@ tangential_solution with_creep(tangential_solution t, double xi) {
 
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
     // Ctrl-C between rows and between the levels of a row.
-    const scene_curve c = curve_of(std::move(s), loads, points, sweep, check_signals);
+    const scene_curve c = curve_of(std::move(s), loads, points, sweep, check_signals, check_signals);
     curve_columns out;
     out.physical = c.settled.physical.has_value();
     const double nan = std::nan("");

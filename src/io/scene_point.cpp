@@ -143,7 +143,7 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
 }
 
 scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
-                     const std::function<void()>& before_row) {
+                     const std::function<void()>& before_row, const std::function<void()>& checkpoint) {
     const std::vector<double> Qs = loads ? *loads : curve_loads(points, s.friction, s.materials.beta_d);
     const bool climbs = s.solver.n == 0;  // the ladder chooses each row's n (problems/level_ladder.hpp)
     if (!width_follows_tangential_load(s)) {
@@ -152,7 +152,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
         std::vector<int> nodes;
         if (climbs) {
             // Each rung settles its own width (at no load: the width does not follow it).
-            scene_rungs rungs{s, std::nullopt, before_row, {}};
+            scene_rungs rungs{s, std::nullopt, checkpoint, {}};
             level_ladder ladder = ladder_of(s, rungs);
             rows = ladder_curve(ladder, Qs, points, sweep, nodes, before_row);
             const int first = ladder.rungs().front();
@@ -162,7 +162,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
         } else {
             const std::optional<contact_width> width = settle_width(s);
             contact c(s.surfaces, s.friction, s.solver, s.materials);
-            c.set_checkpoint(before_row);
+            c.set_checkpoint(checkpoint);
             rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, Qs, before_row);
             if (width) widths.assign(rows.size(), *width);
             for (const curve_point& row : rows) nodes.push_back(row.is_refused() ? 0 : s.solver.nodes());
@@ -182,7 +182,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
         normal_cache cache;
         try {
             if (climbs) {
-                scene_rungs rungs{s, Q, before_row, {}};
+                scene_rungs rungs{s, Q, checkpoint, {}};
                 level_ladder ladder = ladder_of(s, rungs);
                 std::vector<int> used;
                 std::vector<curve_point> row = ladder_curve(ladder, {Q}, 1, false, used);
@@ -193,9 +193,9 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
                 if (used.front() != 0) out.settled = std::move(settled);
                 continue;
             }
-            const contact_width w = *settle_width(at, &cache, Q, before_row);
+            const contact_width w = *settle_width(at, &cache, Q, checkpoint);
             contact c(at.surfaces, at.friction, at.solver, at.materials, &cache);
-            c.set_checkpoint(before_row);
+            c.set_checkpoint(checkpoint);
             std::vector<curve_point> row = creep_curve(c, {Q});
             out.nodes.push_back(row.front().is_refused() ? 0 : at.solver.nodes());
             out.rows.push_back(std::move(row.front()));

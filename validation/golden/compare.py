@@ -8,7 +8,8 @@ Every number must be identical, or have moved by no more than its error estimate
 c0, xi, hertz_load_ratio and stick_start against its error_estimate entries, a curve row's c0, xi and Q
 against its *_error_estimate columns; a derived number (xi_over_f, the SI values) against the largest
 relative estimate of its point or row. Estimates themselves may change (listed). Timings and the
-version are ignored; a JSON key only in NEW is listed as added. Exit 0 when nothing moved outside its estimate, 1 otherwise; one line per change.
+version are ignored; a JSON key or CSV column only in NEW is listed as added, and changed
+header lines of a CSV as header. Exit 0 when nothing moved outside its estimate, 1 otherwise; one line per change.
 """
 import csv
 import json
@@ -108,15 +109,21 @@ def number(text):
 def compare_csv(report, name, old_path, new_path):
     old_header, old_rows = read_csv(old_path)
     new_header, new_rows = read_csv(new_path)
-    if old_header != new_header:
-        report.note("OUTSIDE", name, "header lines differ")
+    if old_header != new_header:  # words, not numbers: listed
+        for line in sorted(set(new_header) - set(old_header)):
+            report.note("header", name, line)
     if len(old_rows) != len(new_rows):
         report.note("OUTSIDE", name, f"{len(old_rows)} rows -> {len(new_rows)}")
         return
-    for i, (o, n) in enumerate(zip(old_rows, new_rows)):
-        if list(o) != list(n):
-            report.note("OUTSIDE", name, "columns differ")
+    if old_rows and new_rows:
+        missing = [c for c in old_rows[0] if c not in new_rows[0]]
+        if missing:
+            report.note("OUTSIDE", name, f"columns only in the reference: {', '.join(missing)}")
             return
+        for column in (c for c in new_rows[0] if c not in old_rows[0]):
+            report.note("added", name, f"column {column}")
+    for i, (o, n) in enumerate(zip(old_rows, new_rows)):
+        n = {k: n[k] for k in o}  # the reference's columns; an added one is listed above
         estimates = {k[: -len("_error_estimate")]: number(v) for k, v in o.items()
                      if k.endswith("_error_estimate") and v != ""}
         new_estimates = {k[: -len("_error_estimate")]: number(v) for k, v in n.items()

@@ -79,10 +79,11 @@ struct scene_curve {
 // (width_follows_tangential_load), a width per row, settled at the row's load. A row whose width
 // search is refused (resolution_error) is a refused row; its width is Johnson's level's, which
 // carries the same load P2 (a refused row reports only P1 and Carter's creep: both depend on P2 alone).
-// `before_row`: as creep_curve's, called before each row, and before each level's solve of a row
-// (contact::set_checkpoint). Where the scene gives no n, each row meets the tolerance (ladder_curve,
-// problems/level_ladder.hpp; a row whose width follows the load climbs with its own widths).
+// `before_row`: as creep_curve's, called before each row (the CLI's progress line); `checkpoint`:
+// called before each level's solve of a row (contact::set_checkpoint; the Python module's Ctrl-C).
+// Where the scene gives no n, each row meets the tolerance (ladder_curve, problems/level_ladder.hpp;
+// a row whose width follows the load climbs with its own widths).
 scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
-                     const std::function<void()>& before_row = {});
+                     const std::function<void()>& before_row = {}, const std::function<void()>& checkpoint = {});
 
 }  // namespace roughroll
