@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/model/carter.hpp"
+#include "tolerance.hpp"
 
 using namespace roughroll;
 
@@ -19,8 +20,8 @@ TEST(Carter, EndsOfTheCurve) {
 
 TEST(Carter, MidpointAndMirror) {
     const auto p = carter(0.15, 0.3);
-    EXPECT_NEAR(p.c0, 2.0 * std::sqrt(0.5) - 1.0, 1e-15);
-    EXPECT_NEAR(p.xi, M_2_PI * 0.3 * (1.0 - std::sqrt(0.5)), 1e-15);
+    EXPECT_NEAR(p.c0, 2.0 * std::sqrt(0.5) - 1.0, tol::few_roundings);
+    EXPECT_NEAR(p.xi, M_2_PI * 0.3 * (1.0 - std::sqrt(0.5)), tol::few_roundings);
     const auto m = carter(-0.15, 0.3);
     EXPECT_EQ(m.c0, p.c0);
     EXPECT_EQ(m.xi, -p.xi);
@@ -29,5 +30,5 @@ TEST(Carter, MidpointAndMirror) {
 TEST(Carter, NoCancellationForSmallLoads) {
     // 1 - sqrt(1 - x) = x/2 + x^2/8 + ...: the closed form keeps full relative accuracy.
     const double x = 1e-12;
-    EXPECT_NEAR(carter(x, 1.0).xi / (M_2_PI * (x / 2 + x * x / 8)), 1.0, 1e-15);
+    EXPECT_NEAR(carter(x, 1.0).xi / (M_2_PI * (x / 2 + x * x / 8)), 1.0, tol::few_roundings);
 }

@@ -24,6 +24,7 @@
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 #include "roughroll/problems/creep_curve.hpp"
+#include "tolerance.hpp"
 
 using namespace roughroll;
 
@@ -112,8 +113,8 @@ TEST(Curve, SweptRefusedPointKeepsItsStickEnd) {
         const double rho = 0.5 * (1.0 + c0);
         const carter_point back = carter(f * (1.0 - rho * rho), f);
         EXPECT_EQ(row.smooth.c0, c0);
-        EXPECT_NEAR(row.smooth.c0, back.c0, 1e-15);
-        EXPECT_NEAR(row.smooth.xi, back.xi, 1e-15);
+        EXPECT_NEAR(row.smooth.c0, back.c0, tol::few_roundings);
+        EXPECT_NEAR(row.smooth.xi, back.xi, tol::few_roundings);
         contact alone = fresh();
         try {
             alone.at_stick_end(c0);
@@ -218,7 +219,7 @@ TEST(Curve, SweptRefinedSolvesAgreeWithFreshFactorisations) {
             const tangential_solution b = fresh.at_stick_end(c0, false, false);
             // The solutions differ by the condition number times eps at most; Q = f + rho int q
             // loses f/Q of that to cancellation near full stick.
-            const double rounding = 8.0 * GSL_DBL_EPSILON / b.rcond;
+            const double rounding = tol::solve_rounding / b.rcond;
             EXPECT_NEAR(a.xi, b.xi, rounding * std::fabs(b.xi)) << "c0 = " << c0;
             EXPECT_NEAR(a.Q, b.Q, rounding * f) << "c0 = " << c0;
             ASSERT_EQ(a.psi_b.size(), b.psi_b.size());

@@ -16,6 +16,7 @@
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
 #include "roughroll/numerics/theta_panels.hpp"
+#include "tolerance.hpp"
 
 using namespace roughroll;
 
@@ -56,8 +57,8 @@ TEST(Kernel, BothCylindersPhysicalSignEachOwnRate) {
     const double z = 0.1;
     // E1: each term decays with its own A; E2: sign + for z > 0 (added compliance).
     const double expected = 0.5 * std::exp(-2.0 * z) + 0.25 * std::exp(-7.0 * z);
-    EXPECT_NEAR(k1(z), expected, 1e-16);
-    EXPECT_NEAR(k1(-z), -expected, 1e-16);
+    EXPECT_NEAR(k1(z), expected, tol::reordered);
+    EXPECT_NEAR(k1(-z), -expected, tol::reordered);
     EXPECT_GT(k1(z), 0.0);
     EXPECT_DOUBLE_EQ(k1.max_rate(), 7.0);
 }
@@ -75,13 +76,13 @@ TEST(Kernel, DifferenceCancelsEqualKernels) {
     EXPECT_TRUE(kernel::normal(r).minus(kernel::tangential(r)).empty());
     const kernel d = kernel::normal(both_rough()).minus(kernel::tangential(both_rough()));
     for (double z : {-0.7, 0.05, 0.4})
-        EXPECT_NEAR(d(z), kernel::normal(both_rough())(z) - kernel::tangential(both_rough())(z), 1e-16);
+        EXPECT_NEAR(d(z), kernel::normal(both_rough())(z) - kernel::tangential(both_rough())(z), tol::reordered);
 }
 
 TEST(Kernel, StretchedIsRhoKOfRhoZ) {
     const kernel k = kernel::tangential(both_rough());
     const double rho = 0.37;
-    for (double z : {-0.9, 0.2, 1.7}) EXPECT_NEAR(k.stretched(rho)(z), rho * k(rho * z), 1e-16);
+    for (double z : {-0.9, 0.2, 1.7}) EXPECT_NEAR(k.stretched(rho)(z), rho * k(rho * z), tol::reordered);
 }
 
 class Moments : public ::testing::TestWithParam<double> {};
@@ -101,7 +102,7 @@ TEST_P(Moments, AgreeWithAdaptiveQuadratureSplitAtTheJump) {
             };
             const double lo = std::max(-1.0, std::min(1.0, r));
             const double exact = adaptive(g, -1.0, lo) + adaptive(g, lo, 1.0);
-            EXPECT_NEAR(I[j], exact, 2e-13) << "A = " << A << ", r = " << r << ", j = " << j;
+            EXPECT_NEAR(I[j], exact, tol::against_adaptive) << "A = " << A << ", r = " << r << ", j = " << j;
         }
     }
 }
@@ -121,7 +122,7 @@ TEST(KernelSweep, AgreesWithMomentsAtSortedPoints) {
     });
     kernel_moments moments(k, static_cast<int>(b.size()));
     for (std::size_t m = 0; m < points.size(); ++m)
-        EXPECT_NEAR(swept[m], moments.integrate(b, points[m]), 1e-14) << "x = " << points[m];
+        EXPECT_NEAR(swept[m], moments.integrate(b, points[m]), tol::short_sum) << "x = " << points[m];
 }
 
 TEST(KernelSweep, LagrangeBasisMatchesTheProductFormula) {
@@ -137,7 +138,7 @@ TEST(KernelSweep, LagrangeBasisMatchesTheProductFormula) {
             double product = 1.0;
             for (int j = 0; j < rule.n; ++j)
                 if (j != k) product *= (x - rule.nodes[j]) / (rule.nodes[k] - rule.nodes[j]);
-            EXPECT_NEAR(l[k], product, 1e-13) << "theta = " << theta << ", k = " << k;
+            EXPECT_NEAR(l[k], product, tol::interpolation) << "theta = " << theta << ", k = " << k;
         }
     }
     basis(3 * M_PI / (rule.n + 1), l.data());  // on node 2: the unit vector

@@ -13,6 +13,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/linear_system.hpp"
+#include "tolerance.hpp"
 
 using namespace roughroll;
 
@@ -62,7 +63,7 @@ TEST(DenseSystem, RefinedSolveAgreesWithTheFreshFactorisation) {
         const std::vector<double> direct = copy(fresh.solve("fresh"));
         // Both solve A x = b with backward error at rounding: they differ by the condition
         // number times eps at most (1/rcond is its estimate, of U).
-        const double tolerance = 8.0 * GSL_DBL_EPSILON / fresh.rcond() * largest(direct);
+        const double tolerance = tol::solve_rounding / fresh.rcond() * largest(direct);
         for (std::size_t i = 0; i < order; ++i) EXPECT_NEAR(near[i], direct[i], tolerance) << "t = " << t << ", i = " << i;
         if (swept.refined()) {
             // cond(A) <= cond(M) (1 + q)/(1 - q), q <= 1/2: the estimate is below the

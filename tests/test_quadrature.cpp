@@ -9,6 +9,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/normal_problem.hpp"
+#include "tolerance.hpp"
 
 using namespace roughroll;
 
@@ -18,11 +19,11 @@ TEST(GaussChebyshev, NodesWeightsAndCollocationPoints) {
     ASSERT_EQ(rule.collocation.size(), 8u);
     double sum = 0.0;
     for (int k = 0; k < 7; ++k) {
-        EXPECT_NEAR(rule.nodes[k], std::cos((k + 1) * M_PI / 8), 1e-15);
+        EXPECT_NEAR(rule.nodes[k], std::cos((k + 1) * M_PI / 8), tol::few_roundings);
         sum += rule.weights[k];
     }
-    EXPECT_NEAR(sum, M_PI / 2, 1e-14);  // int sqrt(1 - x^2) dx
-    for (int m = 0; m < 8; ++m) EXPECT_NEAR(std::cos(8 * std::acos(rule.collocation[m])), 0.0, 1e-14);  // T_{n+1}
+    EXPECT_NEAR(sum, M_PI / 2, tol::short_sum);  // int sqrt(1 - x^2) dx
+    for (int m = 0; m < 8; ++m) EXPECT_NEAR(std::cos(8 * std::acos(rule.collocation[m])), 0.0, tol::short_sum);  // T_{n+1}
 }
 
 TEST(GaussChebyshev, RejectsNOutsideRange) {
@@ -39,7 +40,7 @@ TEST(GaussChebyshev, ExactToDegreeTwoNMinusOne) {
         double q = 0.0;
         for (int k = 0; k < n; ++k) q += rule.weights[k] * std::pow(rule.nodes[k], 2 * j);
         const double exact = M_PI * std::tgamma(2 * j + 1) / (std::pow(2.0, 2 * j + 1) * std::tgamma(j + 1) * std::tgamma(j + 2));
-        EXPECT_NEAR(q, exact, 1e-14) << "degree " << 2 * j;
+        EXPECT_NEAR(q, exact, tol::short_sum) << "degree " << 2 * j;
     }
 }
 
@@ -49,7 +50,7 @@ TEST(USeries, InterpolatesAPolynomialExactly) {
     std::vector<double> values;
     for (double x : rule.nodes) values.push_back(poly(x));
     const auto b = u_coefficients(rule, values);
-    for (double x : {-1.0, -0.3, 0.0, 0.77, 1.0}) EXPECT_NEAR(u_series(b, x), poly(x), 1e-13);
+    for (double x : {-1.0, -0.3, 0.0, 0.77, 1.0}) EXPECT_NEAR(u_series(b, x), poly(x), tol::interpolation);
 }
 
 // The batched Cauchy transform (the slip-velocity checks, tangential_solver::check) gives each
@@ -68,7 +69,7 @@ TEST(USeries, BatchedCauchyTransformEqualsTheScalarOne) {
     cauchy_u_series(one, x.data(), out.data(), x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (std::fabs(x[i]) > 1.0) {
-            EXPECT_NEAR(out[i], -(x[i] - std::copysign(std::sqrt(x[i] * x[i] - 1.0), x[i])), 1e-15) << "x = " << x[i];
+            EXPECT_NEAR(out[i], -(x[i] - std::copysign(std::sqrt(x[i] * x[i] - 1.0), x[i])), tol::few_roundings) << "x = " << x[i];
         }
     }
 }
@@ -76,13 +77,13 @@ TEST(USeries, BatchedCauchyTransformEqualsTheScalarOne) {
 TEST(USeries, CauchyTransformInsideAndOutside) {
     // phi = 1: (1/pi) int sqrt(1-t^2)/(t - x) dt = -x inside, -(x - sgn x sqrt(x^2-1)) outside.
     const std::vector<double> one{1.0};
-    EXPECT_NEAR(cauchy_u_series(one, 0.4), -0.4, 1e-15);
-    EXPECT_NEAR(cauchy_u_series(one, 2.0), -(2.0 - std::sqrt(3.0)), 1e-15);
-    EXPECT_NEAR(cauchy_u_series(one, -3.0), -(-3.0 + std::sqrt(8.0)), 1e-15);
+    EXPECT_NEAR(cauchy_u_series(one, 0.4), -0.4, tol::few_roundings);
+    EXPECT_NEAR(cauchy_u_series(one, 2.0), -(2.0 - std::sqrt(3.0)), tol::few_roundings);
+    EXPECT_NEAR(cauchy_u_series(one, -3.0), -(-3.0 + std::sqrt(8.0)), tol::few_roundings);
     // U_2 inside: -T_3(x).
     const std::vector<double> u2{0.0, 0.0, 1.0};
     const double x = 0.3;
-    EXPECT_NEAR(cauchy_u_series(u2, x), -(4 * x * x * x - 3 * x), 1e-15);
+    EXPECT_NEAR(cauchy_u_series(u2, x), -(4 * x * x * x - 3 * x), tol::few_roundings);
 }
 
 TEST(USeries, ExactTrailingZerosChangeNoBit) {

@@ -15,6 +15,7 @@
 #include "roughroll/layer/micro_geometry.hpp"
 #include "roughroll/layer/piecewise_averages.hpp"
 #include "roughroll/io/profile_csv.hpp"
+#include "tolerance.hpp"
 
 namespace roughroll {
 namespace {
@@ -64,12 +65,12 @@ TEST(RoughnessParameters, FlatProfileClosedForms) {
         EXPECT_TRUE(close(p.averages.a_h1_squared, 2.0 * M_PI * M_PI * c.a, 1e-13));
         EXPECT_TRUE(close(p.averages.a_h1, 0.0, 1e-13, c.a));
         EXPECT_TRUE(close(p.averages.a3_h1, 0.0, 1e-13, 1.0));
-        EXPECT_TRUE(close(p.k_tangential, mu0 * c.a33, 1e-12));
-        EXPECT_TRUE(close(p.k_normal, (lambda0 + 2.0 * mu0) * c.a33, 1e-12));
-        EXPECT_TRUE(close(p.t_tangential, (lambda0 + 2.0 * mu0) * c.a / 2.0, 1e-12));
-        EXPECT_TRUE(close(p.t_normal, mu0 * c.a / 2.0, 1e-12));
-        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(mu0 * c.a33 / ((lambda0 + 2.0 * mu0) * c.a)), 1e-12));
-        EXPECT_TRUE(close(p.alpha_normal, std::sqrt((lambda0 + 2.0 * mu0) * c.a33 / (mu0 * c.a)), 1e-12));
+        EXPECT_TRUE(close(p.k_tangential, mu0 * c.a33, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.k_normal, (lambda0 + 2.0 * mu0) * c.a33, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.t_tangential, (lambda0 + 2.0 * mu0) * c.a / 2.0, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.t_normal, mu0 * c.a / 2.0, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(mu0 * c.a33 / ((lambda0 + 2.0 * mu0) * c.a)), tol::roughness_integrals));
+        EXPECT_TRUE(close(p.alpha_normal, std::sqrt((lambda0 + 2.0 * mu0) * c.a33 / (mu0 * c.a)), tol::roughness_integrals));
     }
 }
 
@@ -77,10 +78,10 @@ TEST(RoughnessParameters, FlatProfileClosedForms) {
 // t2 = mu0 H/6, in Pa/m and Pa m.
 TEST(RoughnessParameters, FlatLinearInSIUnits) {
     const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::flat, 0.0, decay_kind::linear));
-    EXPECT_TRUE(close(p.k_tangential, 7.7e15, 1e-12));                 // 7.7e10 Pa / 1e-5 m
-    EXPECT_TRUE(close(p.k_normal, 2.69e16, 1e-12));                    // 2.69e11 Pa / 1e-5 m
-    EXPECT_TRUE(close(p.t_tangential, 2.69e11 * 1e-5 / 6.0, 1e-12));  // Pa m
-    EXPECT_TRUE(close(p.t_normal, 7.7e10 * 1e-5 / 6.0, 1e-12));
+    EXPECT_TRUE(close(p.k_tangential, 7.7e15, tol::roughness_integrals));                 // 7.7e10 Pa / 1e-5 m
+    EXPECT_TRUE(close(p.k_normal, 2.69e16, tol::roughness_integrals));                    // 2.69e11 Pa / 1e-5 m
+    EXPECT_TRUE(close(p.t_tangential, 2.69e11 * 1e-5 / 6.0, tol::roughness_integrals));  // Pa m
+    EXPECT_TRUE(close(p.t_normal, 7.7e10 * 1e-5 / 6.0, tol::roughness_integrals));
 }
 
 // a3 = int_{h0}^H d d' dx2 = [d^2/2]_{h0}^H = -d(h0)^2/2 for every d with d(H) = 0; and for the
@@ -127,11 +128,11 @@ TEST(RoughnessParameters, SineProfileLinearDecayClosedForm) {
         SCOPED_TRACE(delta);
         const layer_averages m = sine_linear_closed_form(delta);
         const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
-        EXPECT_TRUE(close(p.averages.a, m.a, 1e-12));
-        EXPECT_TRUE(close(p.averages.a33, m.a33, 1e-12));
-        EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, 1e-12));
-        EXPECT_TRUE(close(p.averages.a_h1_squared, m.a_h1_squared, 1e-12));
-        EXPECT_TRUE(close(p.averages.a3_h1, m.a3_h1, 1e-12));
+        EXPECT_TRUE(close(p.averages.a, m.a, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a33, m.a33, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a_h1_squared, m.a_h1_squared, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a3_h1, m.a3_h1, tol::roughness_integrals));
         // The quadrature's error estimates cover the actual errors.
         EXPECT_LE(std::fabs(p.averages.a - m.a), p.averages_error.a + 1e-16 * m.a);
         EXPECT_LE(std::fabs(p.averages.a_h1 - m.a_h1), p.averages_error.a_h1 + 1e-16 * m.a);
@@ -143,12 +144,12 @@ TEST(RoughnessParameters, SineProfileLinearDecayClosedForm) {
         const double k2 = (lambda0 + 2.0 * mu0) * (m.a33 - c * c * m.a3_h1 * m.a3_h1 / m.a_h1_squared);
         const double t1 = (lambda0 + 2.0 * mu0) / 2.0 * (m.a - m.a_h1 * m.a_h1 / m.a_h1_squared);
         const double t2 = mu0 / 2.0 * (m.a - m.a_h1 * m.a_h1 / m.a_h1_squared);
-        EXPECT_TRUE(close(p.k_tangential, k1, 1e-12));
-        EXPECT_TRUE(close(p.k_normal, k2, 1e-12));
-        EXPECT_TRUE(close(p.t_tangential, t1, 1e-12));
-        EXPECT_TRUE(close(p.t_normal, t2, 1e-12));
-        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(k1 / (2.0 * t1)), 1e-12));
-        EXPECT_TRUE(close(p.alpha_normal, std::sqrt(k2 / (2.0 * t2)), 1e-12));
+        EXPECT_TRUE(close(p.k_tangential, k1, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.k_normal, k2, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.t_tangential, t1, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.t_normal, t2, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(k1 / (2.0 * t1)), tol::roughness_integrals));
+        EXPECT_TRUE(close(p.alpha_normal, std::sqrt(k2 / (2.0 * t2)), tol::roughness_integrals));
         // The corrector terms matter here (the test would not pass with the flat values).
         EXPECT_GT(std::fabs(k1 - mu0 * m.a33), 1e-3 * k1);
     }
@@ -213,10 +214,10 @@ TEST(RoughnessParameters, NormalStiffnessMinimisesTheEnergy) {
         const double eps = delta / (2.0 * H), a3 = -0.5 * ((1.0 - eps) * (1.0 - eps) + 0.5 * eps * eps);  // <-(1-h0/H)^2/2>
         const reduced_energy e = minimise_energy_over_correctors(m, a3);
         const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
-        EXPECT_TRUE(close(p.k_tangential, e.k1, 1e-12));
-        EXPECT_TRUE(close(p.k_normal, e.k2, 1e-12));
-        EXPECT_TRUE(close(2.0 * p.t_tangential, e.two_t1, 1e-12));
-        EXPECT_TRUE(close(2.0 * p.t_normal, e.two_t2, 1e-12));
+        EXPECT_TRUE(close(p.k_tangential, e.k1, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.k_normal, e.k2, tol::roughness_integrals));
+        EXPECT_TRUE(close(2.0 * p.t_tangential, e.two_t1, tol::roughness_integrals));
+        EXPECT_TRUE(close(2.0 * p.t_normal, e.two_t2, tol::roughness_integrals));
         micro_geometry printed = geometry(profile_kind::sine, delta, decay_kind::linear);
         printed.factor_2_12 = normal_factor::printed;
         const roughness_parameters q = compute_roughness_parameters(printed);
@@ -233,9 +234,9 @@ TEST(RoughnessParameters, NormalStiffnessMinimisesTheEnergy) {
 // k^(2) = 2.119673269848e16 Pa/m, printed to 13 digits; the printed factor gives 2.0619e16.
 TEST(RoughnessParameters, NormalStiffnessAgainstTheEnergyScript) {
     const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, 4e-6, decay_kind::linear));
-    EXPECT_TRUE(close(p.k_normal, 2.119673269848e16, 1e-12));
-    EXPECT_TRUE(close(p.alpha_normal, std::sqrt(2.119673269848e16 / (2.0 * 55154.765981735)), 1e-12));
-    EXPECT_LE(p.k_normal_error, 1e-12 * p.k_normal);
+    EXPECT_TRUE(close(p.k_normal, 2.119673269848e16, tol::roughness_integrals));
+    EXPECT_TRUE(close(p.alpha_normal, std::sqrt(2.119673269848e16 / (2.0 * 55154.765981735)), tol::roughness_integrals));
+    EXPECT_LE(p.k_normal_error, tol::roughness_integrals * p.k_normal);
 }
 
 // derived against printed on the same layers: k^(2) differs by exactly
@@ -310,11 +311,11 @@ TEST(RoughnessParameters, SineProfileOtherDecaysAgainstTrapezoidSums) {
             m.a3_h1 += a3 * h1 / N;
         }
         const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay));
-        EXPECT_TRUE(close(p.averages.a, m.a, 1e-12));
-        EXPECT_TRUE(close(p.averages.a33, m.a33, 1e-12));
-        EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, 1e-12));
-        EXPECT_TRUE(close(p.averages.a_h1_squared, m.a_h1_squared, 1e-12));
-        EXPECT_TRUE(close(p.averages.a3_h1, m.a3_h1, 1e-12));
+        EXPECT_TRUE(close(p.averages.a, m.a, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a33, m.a33, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a_h1_squared, m.a_h1_squared, tol::roughness_integrals));
+        EXPECT_TRUE(close(p.averages.a3_h1, m.a3_h1, tol::roughness_integrals));
     }
 }
 
@@ -324,8 +325,8 @@ TEST(RoughnessParameters, SineProfileOtherDecaysAgainstTrapezoidSums) {
 TEST(RoughnessParameters, SawtoothClosedForms) {
     const double delta = 0.8 * H, eps = delta / H;
     const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear));
-    EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, 1e-12));
-    EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), 1e-12));
+    EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, tol::roughness_integrals));
+    EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), tol::roughness_integrals));
     EXPECT_GT(p.k_tangential, 0.0);
     EXPECT_GT(p.t_normal, 0.0);
 }
@@ -378,12 +379,12 @@ micro_geometry scaled_layer(const micro_geometry& g, double m, double s) {
 // k and t scale as mu0/H and mu0 H: q, the parameters of scaled_layer(g, m, s), has k times
 // m/s, t times m s and alpha times 1/s of p, those of g.
 void expect_scaled(const roughness_parameters& q, const roughness_parameters& p, double m, double s) {
-    EXPECT_TRUE(close(q.k_tangential, p.k_tangential * m / s, 1e-12));
-    EXPECT_TRUE(close(q.k_normal, p.k_normal * m / s, 1e-12));
-    EXPECT_TRUE(close(q.t_tangential, p.t_tangential * m * s, 1e-12));
-    EXPECT_TRUE(close(q.t_normal, p.t_normal * m * s, 1e-12));
-    EXPECT_TRUE(close(q.alpha_tangential, p.alpha_tangential / s, 1e-12));
-    EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, 1e-12));
+    EXPECT_TRUE(close(q.k_tangential, p.k_tangential * m / s, tol::roughness_integrals));
+    EXPECT_TRUE(close(q.k_normal, p.k_normal * m / s, tol::roughness_integrals));
+    EXPECT_TRUE(close(q.t_tangential, p.t_tangential * m * s, tol::roughness_integrals));
+    EXPECT_TRUE(close(q.t_normal, p.t_normal * m * s, tol::roughness_integrals));
+    EXPECT_TRUE(close(q.alpha_tangential, p.alpha_tangential / s, tol::roughness_integrals));
+    EXPECT_TRUE(close(q.alpha_normal, p.alpha_normal / s, tol::roughness_integrals));
 }
 
 TEST(RoughnessParameters, UnitsScaling) {
@@ -462,7 +463,7 @@ roughness_parameters expected_parameters(const layer_averages& m) { return param
 TEST(RoughnessParameters, ProfileReachingTowardsTheTop) {
     const double delta = 0.999999 * H;
     const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
-    EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), 1e-12));
+    EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), tol::roughness_integrals));
     for (const decay_kind decay : {decay_kind::quadratic, decay_kind::cosine}) {
         const roughness_parameters q = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay));
         EXPECT_TRUE(std::isfinite(q.k_tangential) && q.k_tangential > 0.0 && q.t_normal > 0.0) << to_string(decay);
@@ -479,9 +480,9 @@ TEST(RoughnessParameters, ProfileReachingTowardsTheTop) {
     g.bottom.measured = parse_profile_csv(csv, "flat-near-top.csv", l);
     const roughness_parameters m = compute_roughness_parameters(g);
     const layer_averages flat{H * std::pow(u0, 3) / 3.0, 0.0, u0 / H, 0.0, 2.0 * M_PI * M_PI * H * std::pow(u0, 3) / 3.0};
-    EXPECT_TRUE(same_parameters(m, expected_parameters(flat), 1e-12));
-    EXPECT_TRUE(close(m.k_tangential, mu0 * u0 / H, 1e-12));
-    EXPECT_TRUE(close(m.t_tangential, (lambda0 + 2.0 * mu0) * H * std::pow(u0, 3) / 6.0, 1e-12));
+    EXPECT_TRUE(same_parameters(m, expected_parameters(flat), tol::roughness_integrals));
+    EXPECT_TRUE(close(m.k_tangential, mu0 * u0 / H, tol::roughness_integrals));
+    EXPECT_TRUE(close(m.t_tangential, (lambda0 + 2.0 * mu0) * H * std::pow(u0, 3) / 6.0, tol::roughness_integrals));
 }
 
 // A ground-like profile of 64 samples over l, as data/profiles/ground.csv (6 harmonics,
@@ -524,15 +525,15 @@ TEST(PiecewiseAverages, AgreesWithAdaptiveOn64Samples) {
         const roughness_parameters q = compute_roughness_parameters(g, averages_rule::adaptive);
         EXPECT_EQ(p.evaluations, 64 * 15);
         const layer_averages &m = p.averages, &e = p.averages_error, &r = q.averages;
-        EXPECT_TRUE(agrees("<a>", m.a, r.a, r.a, e.a, 1e-12));
-        EXPECT_TRUE(agrees("<a33>", m.a33, r.a33, r.a33, e.a33, 1e-12));
-        EXPECT_TRUE(agrees("<a h_1^2>", m.a_h1_squared, r.a_h1_squared, r.a_h1_squared, e.a_h1_squared, 1e-12));
-        EXPECT_TRUE(agrees("<a h_1>", m.a_h1, r.a_h1, std::sqrt(r.a * r.a_h1_squared), e.a_h1, 1e-12));
-        EXPECT_TRUE(agrees("<a3 h_1>", m.a3_h1, r.a3_h1, std::sqrt(r.a33 * r.a_h1_squared), e.a3_h1, 1e-12));
-        EXPECT_TRUE(same_parameters(p, q, 1e-12));
+        EXPECT_TRUE(agrees("<a>", m.a, r.a, r.a, e.a, tol::roughness_integrals));
+        EXPECT_TRUE(agrees("<a33>", m.a33, r.a33, r.a33, e.a33, tol::roughness_integrals));
+        EXPECT_TRUE(agrees("<a h_1^2>", m.a_h1_squared, r.a_h1_squared, r.a_h1_squared, e.a_h1_squared, tol::roughness_integrals));
+        EXPECT_TRUE(agrees("<a h_1>", m.a_h1, r.a_h1, std::sqrt(r.a * r.a_h1_squared), e.a_h1, tol::roughness_integrals));
+        EXPECT_TRUE(agrees("<a3 h_1>", m.a3_h1, r.a3_h1, std::sqrt(r.a33 * r.a_h1_squared), e.a3_h1, tol::roughness_integrals));
+        EXPECT_TRUE(same_parameters(p, q, tol::roughness_integrals));
         // The estimates are honest but not absurd: below 1e-12 of the values.
-        EXPECT_LT(p.k_normal_error, 1e-12 * p.k_normal);
-        EXPECT_LT(p.t_tangential_error, 1e-12 * p.t_tangential);
+        EXPECT_LT(p.k_normal_error, tol::roughness_integrals * p.k_normal);
+        EXPECT_LT(p.t_tangential_error, tol::roughness_integrals * p.t_tangential);
         // The default for a measured profile is the piecewise rule.
         EXPECT_EQ(compute_roughness_parameters(g).evaluations, p.evaluations);
     }
@@ -547,13 +548,13 @@ TEST(PiecewiseAverages, BuiltInProfilesClosedForms) {
         const roughness_parameters p =
             compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear), averages_rule::piecewise);
         EXPECT_EQ(p.evaluations, min_pieces * 15);
-        EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), 1e-12));
+        EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), tol::roughness_integrals));
     }
     const double delta = 0.8 * H, eps = delta / H;
     const roughness_parameters p =
         compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear), averages_rule::piecewise);
-    EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, 1e-12));
-    EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), 1e-12));
+    EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, tol::roughness_integrals));
+    EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), tol::roughness_integrals));
 }
 
 // The closed-form inner integrals against GSL's adaptive quadrature of (2.6)-(2.8) in u
@@ -678,8 +679,8 @@ TEST(RoughnessParameters, ExtremeScales) {
         SCOPED_TRACE(s * H);
         const roughness_parameters q = compute_roughness_parameters(scaled(m, s));
         expect_scaled(q, p, m, s);
-        EXPECT_TRUE(close(q.averages.a, p.averages.a * s, 1e-12));
-        EXPECT_TRUE(close(q.averages.a33, p.averages.a33 / s, 1e-12));
+        EXPECT_TRUE(close(q.averages.a, p.averages.a * s, tol::roughness_integrals));
+        EXPECT_TRUE(close(q.averages.a33, p.averages.a33 / s, tol::roughness_integrals));
     }
     EXPECT_TRUE(says(violation(scaled(1.0, 1e-295)), {"H = 1.0000000000000002e-300 m", "puts k", "inf", "outside the range of double"}));
     EXPECT_THROW(compute_roughness_parameters(scaled(1.0, 1e-295)), input_error);

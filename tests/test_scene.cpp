@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "tolerance.hpp"
 
 namespace roughroll {
 namespace {
@@ -456,12 +457,12 @@ TEST(PhysicalScene, DimensionlessTermsAreTakenAtTheHertzWidth) {
     EXPECT_NEAR(p.cylinder2.normal.t, t, 1e-12 * t);
     EXPECT_NEAR(p.cylinder2.normal.k, 2.0 * t * 4.0 / (a_H * a_H), 1e-12 * p.cylinder2.normal.k);
     // The surfaces reported before the width search are those at a_H: the T, A written.
-    EXPECT_NEAR(s.surfaces.cylinder2.normal.T, 0.5, 1e-15);
-    EXPECT_NEAR(s.surfaces.cylinder2.normal.A, 2.0, 1e-15);
+    EXPECT_NEAR(s.surfaces.cylinder2.normal.T, 0.5, tol::few_roundings);
+    EXPECT_NEAR(s.surfaces.cylinder2.normal.A, 2.0, tol::few_roundings);
     // T and A grow with the width (3.26).
     const roughness wider = roughness_at(p, 2.0 * a_H);
-    EXPECT_NEAR(wider.cylinder2.normal.T, 1.0, 1e-15);
-    EXPECT_NEAR(wider.cylinder2.normal.A, 4.0, 1e-15);
+    EXPECT_NEAR(wider.cylinder2.normal.T, 1.0, tol::few_roundings);
+    EXPECT_NEAR(wider.cylinder2.normal.A, 4.0, tol::few_roundings);
 }
 
 // |P1| = f P2 exactly in decimal, whose quotient P1/P2 rounds one ulp above f: the load is
