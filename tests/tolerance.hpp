@@ -47,6 +47,17 @@ constexpr double interpolation = 1e-13;
 // second half for its own rounding and that of the routine under test.
 constexpr double against_adaptive = 2e-13;
 
+// A dense LU solve of size tens to a hundred on O(1) quantities against the value it must
+// reproduce exactly (lambda = 1 of the smooth normal problem, the errata's closed forms):
+// rounding grown by the condition number, 450 eps (measured 3e-16 at n + 1 = 33).
+constexpr double dense_solve = 1e-13;
+
+// The same solved point by two routes: a root search in c0 (to 1e-14 or 1e-15) against a closed
+// form the method reproduces (Carter's at eps = 0), a sweep in c0, the same equations assembled
+// another way, a physical scene against its dimensionless twin: the searches' tolerances times
+// the slope of Q(c0), and the solves' rounding.
+constexpr double two_routes = 1e-12;
+
 // Relative agreement of the roughness parameters (averages, k, t, alpha) with closed forms,
 // printed references and the other averages rule: the outer
 // quadratures' relative tolerance (roughness_parameters.hpp, outer_tolerance).

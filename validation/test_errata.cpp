@@ -30,6 +30,7 @@
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -196,17 +197,17 @@ TEST(Errata, E4E5PrintedStickMapAndSign) {
         const stick_solution e5 = solve_at(hertz, smooth, f, G, c0, {false, true, false});
         const stick_solution e4 = solve_at(hertz, smooth, f, G, c0, {true, false, false});
 
-        EXPECT_NEAR(ok.Q, f * (1.0 - rho * rho), 1e-13) << "consistent, c0 = " << c0;
-        EXPECT_NEAR(ok.xi, carter_xi, 1e-13) << "consistent, c0 = " << c0;
+        EXPECT_NEAR(ok.Q, f * (1.0 - rho * rho), tol::dense_solve) << "consistent, c0 = " << c0;
+        EXPECT_NEAR(ok.xi, carter_xi, tol::dense_solve) << "consistent, c0 = " << c0;
 
         EXPECT_GT(both.Q, f) << "E4 + E5 as printed, c0 = " << c0 << ": Q(c0) = " << both.Q << " > f = " << f;
-        EXPECT_NEAR(both.Q, f * (1.0 + rho * rho), 1e-13) << "E4 + E5, c0 = " << c0;
+        EXPECT_NEAR(both.Q, f * (1.0 + rho * rho), tol::dense_solve) << "E4 + E5, c0 = " << c0;
 
         EXPECT_GT(e5.Q, f) << "E5 alone, c0 = " << c0 << ": Q(c0) = " << e5.Q;
         EXPECT_LT(e5.xi, 0.0) << "E5 alone, c0 = " << c0 << ": xi = " << e5.xi;
 
-        EXPECT_NEAR(e4.Q, ok.Q, 1e-13) << "E4 alone, c0 = " << c0;
-        EXPECT_NEAR(e4.xi, -carter_xi, 1e-13) << "E4 alone, c0 = " << c0 << ": creep opposite to the load";
+        EXPECT_NEAR(e4.Q, ok.Q, tol::dense_solve) << "E4 alone, c0 = " << c0;
+        EXPECT_NEAR(e4.xi, -carter_xi, tol::dense_solve) << "E4 alone, c0 = " << c0 << ": creep opposite to the load";
     }
 }
 
@@ -234,16 +235,16 @@ TEST(Errata, E6MissingJacobian) {
         // Switches off, the test's system is the library's: same c0 and xi up to the two
         // root searches' tolerances (1e-14 here, 1e-15 Brent) times the slope of Q(c0).
         const tangential_solution lib = tangential_solver(normal, k, k, f).solve(Q);
-        EXPECT_NEAR(ok.c0, lib.c0, 1e-12);
-        EXPECT_NEAR(ok.xi, lib.xi, 1e-12);
+        EXPECT_NEAR(ok.c0, lib.c0, tol::two_routes);
+        EXPECT_NEAR(ok.xi, lib.xi, tol::two_routes);
 
         // Why the printed form fails: with K1* = K2* and no Jacobian, the stick equation in
         // t is the normal equation (3.19) in r, solved by q = -f rho p. Then Q = f(1 - rho^2)
         // and xi = lambda (2f/pi)(1 - rho) + f rho gamma_0n: c0 is Carter's whatever the
         // roughness, and xi is Carter's times lambda. Exact for the discrete system too
         // (same matrix as (4.2)), so only the bisection tolerance and rounding remain.
-        EXPECT_NEAR(printed.c0, smooth.c0, 1e-12) << "printed (3.21) loses the roughness in c0";
-        EXPECT_NEAR(printed.xi, normal.lambda * smooth.xi, 1e-12);
+        EXPECT_NEAR(printed.c0, smooth.c0, tol::two_routes) << "printed (3.21) loses the roughness in c0";
+        EXPECT_NEAR(printed.xi, normal.lambda * smooth.xi, tol::two_routes);
         // The consistent c0 depends on the roughness: O(0.1) away from Carter's here.
         EXPECT_GT(std::fabs(ok.c0 - smooth.c0), 0.01) << "consistent c0 " << ok.c0 << ", Carter " << smooth.c0;
 
@@ -294,7 +295,7 @@ TEST(Errata, E8NodeSumG) {
         };
         // The only difference between the variants is G: with the library's G the test's
         // system gives the library's Q(c0) (to rounding).
-        EXPECT_NEAR(solve_at(normal, k1, f, G_lib, 0.3, {}).Q, lib.load(0.3), 1e-13);
+        EXPECT_NEAR(solve_at(normal, k1, f, G_lib, 0.3, {}).Q, lib.load(0.3), tol::dense_solve);
 
         if (n <= 80) {
             // (a) Q(c0) on grids of step d = 1e-3 and 1e-4 over [0, 0.02]. The largest second

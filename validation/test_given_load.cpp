@@ -12,6 +12,7 @@
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/problems/load_ratio.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -56,11 +57,11 @@ TEST(GivenLoad, SmoothRollersAreHertzAndCarter) {
     const solved r = solve(s);
     const double R = 0.01, E = 210e9, nu = 0.3, P = 1e5, f = 0.3, Q = 0.15;
     const double b = std::sqrt(8.0 * P * R * (1.0 - nu * nu) / (pi * E));
-    EXPECT_NEAR(r.width.a, b, 1e-15 * b);
+    EXPECT_NEAR(r.width.a, b, tol::few_roundings * b);
     EXPECT_EQ(r.width.iterations, 0);  // smooth: no search, no kernel
     EXPECT_NEAR(r.si.xi1, f * b / R * (1.0 - std::sqrt(1.0 - Q / f)), 1e-14);
-    EXPECT_NEAR(r.si.xi1, r.si.xi1_carter, 1e-15);
-    EXPECT_NEAR(r.si.c, b * (2.0 * std::sqrt(1.0 - Q / f) - 1.0), 1e-15);
+    EXPECT_NEAR(r.si.xi1, r.si.xi1_carter, tol::few_roundings);
+    EXPECT_NEAR(r.si.c, b * (2.0 * std::sqrt(1.0 - Q / f) - 1.0), tol::few_roundings);
     EXPECT_NEAR(r.si.P1, 1.5e4, 1e-9);
 }
 
@@ -91,17 +92,17 @@ TEST(GivenLoad, HertzWidthIsThePapersProblem) {
         "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.05\nP2 = 3e5\nQ = 0.15\nfriction = 0.3\ncontact_width = \"hertz\"\n" + TA,
         "physical");
     const roughness r = roughness_at(*phys.physical, hertz_half_width(*phys.physical, 3e5));
-    EXPECT_NEAR(r.cylinder1.normal.T, 0.5, 1e-15);
-    EXPECT_NEAR(r.cylinder1.normal.A, 0.5, 1e-15);
-    EXPECT_NEAR(r.cylinder1.tangential.T, 0.5, 1e-15);
+    EXPECT_NEAR(r.cylinder1.normal.T, 0.5, tol::few_roundings);
+    EXPECT_NEAR(r.cylinder1.normal.A, 0.5, tol::few_roundings);
+    EXPECT_NEAR(r.cylinder1.tangential.T, 0.5, tol::few_roundings);
     EXPECT_EQ(r.cylinder2.normal.T, 0.0);
 
     contact a(paper.surfaces, 0.3, paper.solver);
     const tangential_solution pa = a.point(0.15);
     const solved ph = solve(phys);
-    EXPECT_NEAR(ph.width.lambda, a.normal().lambda, 1e-12);
-    EXPECT_NEAR(ph.point.c0, pa.c0, 1e-12);
-    EXPECT_NEAR(ph.point.xi, pa.xi, 1e-12);
+    EXPECT_NEAR(ph.width.lambda, a.normal().lambda, tol::two_routes);
+    EXPECT_NEAR(ph.point.c0, pa.c0, tol::two_routes);
+    EXPECT_NEAR(ph.point.xi, pa.xi, tol::two_routes);
     EXPECT_NEAR(ph.width.load, 3e5 / a.normal().lambda, 1e-6);
     EXPECT_EQ(ph.width.a, ph.width.a_hertz);
 }
@@ -140,7 +141,7 @@ TEST(GivenLoad, RollerOnAPlane) {
     const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.01\nR2 = inf\nP2 = 1e5\nQ = 0.1\nfriction = 0.3\n", "plane");
     EXPECT_EQ(s.physical->radius(), 0.01);
     const double b = std::sqrt(8.0 * 1e5 * 0.01 * (1.0 - 0.09) / (pi * 210e9));
-    EXPECT_NEAR(width_of(s).a, b, 1e-15 * b);
+    EXPECT_NEAR(width_of(s).a, b, tol::few_roundings * b);
 }
 
 // An independent limit: a very soft normal layer is a Winkler foundation, p = k (delta - x^2/(2R)),

@@ -13,6 +13,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/load_ratio.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -112,14 +113,14 @@ TEST(OneParameter, SecondOrderInN) {
 TEST(OneParameter, SmoothLimitIsCarter) {
     for (int n : {4, 20, 100}) {
         one_parameter_solver s(compliances{}, f, n);
-        EXPECT_NEAR(s.normal().lambda, 1.0, 1e-13);
+        EXPECT_NEAR(s.normal().lambda, 1.0, tol::dense_solve);
         for (double ratio : {1e-6, 0.01, 0.5, 0.99, 1.0 - 1e-6}) {
             for (double sign : {1.0, -1.0}) {
                 const tangential_solution t = s.solve(sign * ratio * f);
                 const carter_point c = carter(sign * ratio * f, f);
                 EXPECT_GT(t.iterations, 0);
-                EXPECT_NEAR(t.c0, c.c0, 1e-12) << ratio;
-                EXPECT_NEAR(t.xi, c.xi, 1e-12) << ratio;
+                EXPECT_NEAR(t.c0, c.c0, tol::two_routes) << ratio;
+                EXPECT_NEAR(t.xi, c.xi, tol::two_routes) << ratio;
                 EXPECT_TRUE(t.checks.hold()) << ratio;
             }
         }
@@ -195,7 +196,7 @@ TEST(OneParameter, ChecksAndSpecialLoads) {
                 EXPECT_EQ(t.sign, sign);
                 EXPECT_GT(sign * t.xi, carter(ratio * f, f).xi);
                 // The root: the solved system at c0 carries the requested load.
-                EXPECT_NEAR(s.load(t.c0), ratio * f, 1e-12);
+                EXPECT_NEAR(s.load(t.c0), ratio * f, tol::two_routes);
                 EXPECT_EQ(s.slip_velocity(t, t.c0 - 0.01), 0.0);
                 EXPECT_GT(sign * s.slip_velocity(t, 0.5 * (t.c0 + 1.0)), 0.0);
             }
@@ -203,12 +204,12 @@ TEST(OneParameter, ChecksAndSpecialLoads) {
         const tangential_solution stick = s.solve(0.0);
         EXPECT_EQ(stick.c0, 1.0);
         EXPECT_EQ(stick.xi, 0.0);
-        EXPECT_NEAR(s.traction(stick, 0.3), 0.0, 1e-15);
+        EXPECT_NEAR(s.traction(stick, 0.3), 0.0, tol::few_roundings);
         if (eps.normal > 0.0 || eps.tangential == 0.0) {
             const tangential_solution slide = s.solve(-f);
             EXPECT_EQ(slide.c0, -1.0);
-            EXPECT_NEAR(slide.xi, f * s.G(-1.0), 1e-15);
-            EXPECT_NEAR(s.traction(slide, 0.2), -f * s.normal().pressure(0.2), 1e-15);
+            EXPECT_NEAR(slide.xi, f * s.G(-1.0), tol::few_roundings);
+            EXPECT_NEAR(s.traction(slide, 0.2), -f * s.normal().pressure(0.2), tol::few_roundings);
         } else {
             EXPECT_THROW(s.solve(f), input_error);  // eps2 = 0 < eps1: unbounded creep at |Q| = f
         }
@@ -255,8 +256,8 @@ TEST(OneParameter, SweptAgreesWithRootSearch) {
         const tangential_solution swept = s.at_stick_end(c0);
         EXPECT_TRUE(swept.checks.hold()) << c0;
         const tangential_solution found = s.solve(swept.Q);
-        EXPECT_NEAR(found.c0, c0, 1e-12);
-        EXPECT_NEAR(found.xi, swept.xi, 1e-12);
+        EXPECT_NEAR(found.c0, c0, tol::two_routes);
+        EXPECT_NEAR(found.xi, swept.xi, tol::two_routes);
     }
 }
 
@@ -265,7 +266,7 @@ TEST(OneParameter, ContactDispatchAndLoadRatio) {
     const roughness r = scaled(5.0, 0.1, 0.2);
     contact c(r, f, solver_options{128, method::one_parameter});
     one_parameter_solver direct(compliances{0.1, 0.2}, f, 128);
-    EXPECT_NEAR(one_parameter_compliances(r).normal, 0.2, 1e-15);
+    EXPECT_NEAR(one_parameter_compliances(r).normal, 0.2, tol::few_roundings);
     EXPECT_EQ(c.normal().lambda, direct.normal().lambda);
     EXPECT_EQ(c.normal().how, method::one_parameter);
     const tangential_solution s = c.point(0.1);

@@ -9,6 +9,7 @@
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -22,7 +23,7 @@ TEST_P(SmoothLimit, SchemeEqualsCarter) {
     const auto [how, n] = GetParam();
     const double f = 0.3;
     const normal_solution normal = normal_solver(n, how).solve(kernel{});  // solved, not closed form
-    EXPECT_NEAR(normal.lambda, 1.0, 1e-13);
+    EXPECT_NEAR(normal.lambda, 1.0, tol::dense_solve);
     tangential_solver solver(normal, kernel{}, kernel{}, f, /*closed_form=*/false);
     for (double ratio : ratios) {
         for (double sign : {1.0, -1.0}) {
@@ -30,8 +31,8 @@ TEST_P(SmoothLimit, SchemeEqualsCarter) {
             const tangential_solution s = solver.solve(Q);
             const carter_point c = carter(Q, f);
             EXPECT_GT(s.iterations, 0);
-            EXPECT_NEAR(s.xi, c.xi, 1e-12) << "Q/f = " << Q / f;
-            EXPECT_NEAR(0.5 * (1.0 + s.c0), 0.5 * (1.0 + c.c0), 1e-12) << "Q/f = " << Q / f;
+            EXPECT_NEAR(s.xi, c.xi, tol::two_routes) << "Q/f = " << Q / f;
+            EXPECT_NEAR(0.5 * (1.0 + s.c0), 0.5 * (1.0 + c.c0), tol::two_routes) << "Q/f = " << Q / f;
             EXPECT_TRUE(s.checks.hold()) << "Q/f = " << Q / f;
         }
     }
@@ -46,6 +47,6 @@ TEST(SmoothLimit, ClosedFormPathSolvesNothing) {
     EXPECT_EQ(c.normal().lambda, 1.0);
     const auto s = c.point(0.1);
     EXPECT_EQ(s.iterations, 0);  // no root search
-    EXPECT_NEAR(s.xi, carter(0.1, 0.3).xi, 1e-15);
+    EXPECT_NEAR(s.xi, carter(0.1, 0.3).xi, tol::few_roundings);
     EXPECT_TRUE(s.checks.hold());
 }
