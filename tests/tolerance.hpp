@@ -58,6 +58,11 @@ constexpr double dense_solve = 1e-13;
 // the slope of Q(c0), and the solves' rounding.
 constexpr double two_routes = 1e-12;
 
+// How far below zero a stick or slip margin ((3.3), (3.4)) may lie at a solved point whose
+// zone ends sit where a margin vanishes: the rounding of the solve at n up to 128 (a fixed
+// floor for the tests; the library computes its own per point, stick_rounding).
+constexpr double margin_floor = 1e-12;
+
 // Relative agreement of the roughness parameters (averages, k, t, alpha) with closed forms,
 // printed references and the other averages rule: the outer
 // quadratures' relative tolerance (roughness_parameters.hpp, outer_tolerance).

@@ -19,6 +19,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "aluminium_on_steel.hpp"
 #include "test_zones_low_order.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -71,10 +72,10 @@ TEST(DissimilarProduct, EqualMaterialsPerCylinderAreTheOneMaterialScene) {
         ASSERT_EQ(pair.materials.beta_d, 0.0);
         const scene_point a = solve_point(one, std::nullopt), b = solve_point(pair, std::nullopt);
         EXPECT_NEAR(a.solution.xi, b.solution.xi, 1e-13);
-        EXPECT_NEAR(a.solution.c0, b.solution.c0, 1e-12);
+        EXPECT_NEAR(a.solution.c0, b.solution.c0, tol::two_routes);
         const auto sa = a.report().si, sb = b.report().si;
         ASSERT_TRUE(sa && sb);
-        EXPECT_NEAR(sa->xi1, sb->xi1, 1e-12 * std::fabs(sa->xi1));
+        EXPECT_NEAR(sa->xi1, sb->xi1, tol::two_routes * std::fabs(sa->xi1));
         EXPECT_NEAR(sa->a, sb->a, 1e-13 * sa->a);
     }
 }
@@ -152,7 +153,7 @@ TEST(DissimilarProduct, GrossSlidingInClosedForm) {
     EXPECT_NEAR(braked.c0, -f / root, 1e-7);
     EXPECT_TRUE(braked.checks.hold());
     const tangential_solution driven = c.point(f);
-    EXPECT_NEAR(driven.xi, M_2_PI * f, 1e-15);
+    EXPECT_NEAR(driven.xi, M_2_PI * f, tol::few_roundings);
     EXPECT_EQ(driven.c0, -1.0);
     // Continuous up to it: the stick zone shrinks like (1 - |Q|/f)^(1/3) (7(d)) around r*, and the
     // creep's distance with it, like its square: a factor 100 per factor 1000 in 1 - |Q|/f.
@@ -185,13 +186,13 @@ TEST(DissimilarProduct, CompleteSlipLimit) {
     const complete_slip free = complete_slip_creep(hertz, beta_al_st, 0.0);
     const double measured = -M_PI * free.xi / (4.0 * beta_al_st);
     std::printf("complete slip, free rolling: -pi xi/(4 beta_D) = %.10f (r* = %.10f)\n", measured, free.r_c);
-    EXPECT_NEAR(measured, constant, 1e-12);
+    EXPECT_NEAR(measured, constant, tol::two_routes);
     EXPECT_NEAR(measured, 0.457, 5e-4);  // the published three digits
     EXPECT_NEAR(free.r_c, 0.4039728, 1e-7);
-    EXPECT_NEAR(complete_slip_creep(hertz, -beta_al_st, 0.0).xi, -free.xi, 1e-15);
+    EXPECT_NEAR(complete_slip_creep(hertz, -beta_al_st, 0.0).xi, -free.xi, tol::few_roundings);
     // The ends: Q/f = -1 (beta_D > 0) is the band of width 0, xi_0 = -beta_D p(0) = -(2/pi) beta_D,
     // the f -> 0 limit of gross sliding above.
-    EXPECT_NEAR(complete_slip_creep(hertz, beta_al_st, -1.0).xi, -M_2_PI * beta_al_st, 1e-15);
+    EXPECT_NEAR(complete_slip_creep(hertz, beta_al_st, -1.0).xi, -M_2_PI * beta_al_st, tol::few_roundings);
     const complete_slip limit = complete_slip_creep(hertz, beta_al_st, -0.75);
     double previous = 1.0;
     // f = 0.00125: five zones, the central band slipping the other way (8(j) 4, 4a), refused before.

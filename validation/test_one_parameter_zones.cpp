@@ -18,6 +18,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/one_parameter_zones.hpp"
 #include "test_zones_low_order.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -61,7 +62,7 @@ TEST(OneParameterZones, SlipStickSlipSatisfiesTheInequalities) {
             EXPECT_GT(z.checks.slip_margin, 0.0);
             margin.push_back(z.checks.stick_margin);
         }
-        EXPECT_GE(margin[2], -1e-12);
+        EXPECT_GE(margin[2], -tol::margin_floor);
         EXPECT_GE(margin[2], margin[0]);
     }
 }

@@ -27,6 +27,7 @@
 #include "roughroll/problems/creep_curve.hpp"
 #include "test_zones_low_order.hpp"
 #include "zone_scenes.hpp"
+#include "../tests/tolerance.hpp"
 
 using namespace roughroll;
 
@@ -118,8 +119,8 @@ TEST(Zones, SlipStickSlipSatisfiesComplementarity) {
             EXPECT_FALSE(zones_of(z)[2].stick);
             EXPECT_GT(z.start, -1.0);
             EXPECT_LT(z.start, z.c0);
-            EXPECT_GE(z.checks.stick_margin, -1e-12) << gap;
-            EXPECT_GE(z.checks.slip_margin, -1e-12) << gap;
+            EXPECT_GE(z.checks.stick_margin, -tol::margin_floor) << gap;
+            EXPECT_GE(z.checks.slip_margin, -tol::margin_floor) << gap;
             EXPECT_GE(z.checks.pressure_margin, 0.0);
         }
     }
@@ -173,8 +174,8 @@ TEST(Zones, CreepCurveContinuousUpToGrossSliding) {
     for (double gap : {0.1, 1e-3, 1e-6, 1e-10}) {
         last = s.zones.solve((1.0 - gap) * f);
         EXPECT_GT(last.xi, previous) << gap;
-        EXPECT_GE(last.checks.stick_margin, -1e-12) << gap;
-        EXPECT_GE(last.checks.slip_margin, -1e-12) << gap;
+        EXPECT_GE(last.checks.stick_margin, -tol::margin_floor) << gap;
+        EXPECT_GE(last.checks.slip_margin, -tol::margin_floor) << gap;
         previous = last.xi;
     }
     const tangential_solution sliding = s.zones.solve(f);
@@ -183,8 +184,8 @@ TEST(Zones, CreepCurveContinuousUpToGrossSliding) {
     EXPECT_NEAR(sliding.start, last.start, 1e-4);
     EXPECT_GT(sliding.start, -1.0);
     // xi(f) = -f min G: no sampled point lies lower.
-    for (int i = 0; i <= 400; ++i) EXPECT_LE(-sliding.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + 1e-15);
-    EXPECT_GE(sliding.checks.slip_margin, -1e-12);
+    for (int i = 0; i <= 400; ++i) EXPECT_LE(-sliding.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + tol::few_roundings);
+    EXPECT_GE(sliding.checks.slip_margin, -tol::margin_floor);
     const tangential_solution mirror = s.zones.solve(-(1.0 - 1e-6) * f);
     const tangential_solution direct = s.zones.solve((1.0 - 1e-6) * f);
     EXPECT_EQ(mirror.start, direct.start);
@@ -410,8 +411,8 @@ TEST(Zones, ScanOfScenes) {
             EXPECT_LT(slope, 0.0) << scene;
             const tangential_solution z = s.zones.solve(Q);
             EXPECT_TRUE(z.general) << scene << " " << gap;
-            EXPECT_GE(z.checks.stick_margin, -1e-12) << scene << " " << gap;
-            EXPECT_GE(z.checks.slip_margin, -1e-12) << scene << " " << gap;
+            EXPECT_GE(z.checks.stick_margin, -tol::margin_floor) << scene << " " << gap;
+            EXPECT_GE(z.checks.slip_margin, -tol::margin_floor) << scene << " " << gap;
         }
     }
     EXPECT_GE(failing, 10);  // the scan does exercise the search (29 of the 80 points, measured)
