@@ -54,8 +54,8 @@ constexpr double dense_solve = 1e-13;
 
 // The same solved point by two routes: a root search in c0 (to 1e-14 or 1e-15) against a closed
 // form the method reproduces (Carter's at eps = 0), a sweep in c0, the same equations assembled
-// another way, a physical scene against its dimensionless twin: the searches' tolerances times
-// the slope of Q(c0), and the solves' rounding.
+// another way, a physical scene against its dimensionless twin, Newton's five zones from other
+// starts: the searches' tolerances times the slope of Q(c0), and the solves' rounding.
 constexpr double two_routes = 1e-12;
 
 // How far below zero a stick or slip margin ((3.3), (3.4)) may lie at a solved point whose
