@@ -148,6 +148,7 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
 
 dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d)
     : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()), pressure_b_(solver.normal().b),
+      pressure_kinks_(solver.normal().kinks),
       workspace_(make_integration_workspace(quadrature_intervals)) {
     check_beta_d(beta_d);
     // The pressure's U-series without its exact trailing zeros (Hertz: one term): the same values
@@ -164,8 +165,9 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
 
 double dissimilar_zones::pressure(double r) const {
     if (std::fabs(r) >= 1.0) return 0.0;
-    if (pressure_table_) return (*pressure_table_)(r);
-    return u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1), as normal_solution::pressure
+    const double smooth =
+        pressure_table_ ? (*pressure_table_)(r) : u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1)
+    return pressure_kinks_ ? smooth + (*pressure_kinks_)(r) : smooth;  // as normal_solution::pressure (8(l))
 }
 
 double dissimilar_zones::H(double r, double start, double c0) const {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
@@ -65,6 +66,22 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
 std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c0, s.start2, s.end2}; }
+
+// The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l), step 0):
+// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zones' part q of p1 = sign (f p S + q) of
+// three zones of one direction (slip sigma on both sides of the stick zone: p1 = sign (f p + q), q = sqrt(1 - t^2)
+// psi(t) on the zone, as tangential_solver::traction adds it). Null elsewhere, where the old right side
+// beta_D p1 stays: gross sliding (q = 0, nothing to carry); the blended structures (three zones with the
+// leading slip against Q, five zones), whose W = L1[p H] and int p H (dissimilar_zones) take p from its
+// U-series in closed form and at the edge, so p_q^0 would have to join them (not built: 8(l)); and rough
+// rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, not built).
+std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule,
+                                               double beta_d, bool smooth) {
+    if (!smooth || s.five || s.opposite || !(s.c0 > s.start && s.start > -1.0) || s.psi_b.empty()) return nullptr;
+    auto k = std::make_shared<pressure_kinks>();
+    k->add_zone(rule, beta_d, s.sign, s.start, s.c0, s.psi_b);
+    return k;
+}
 }  // namespace
 
 const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
@@ -86,12 +103,22 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         std::function<double(double)> coupled = [source_zones, source, beta](double r) {
             return beta * source_zones->traction(source, r);
         };
-        auto next = std::make_unique<iterate>(
-            iterate{normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_), nullptr, nullptr, {}});
-        next->normal.how = johnson.how;
-        next->tangential = std::make_unique<tangential_solver>(next->normal, k1_, k2_, f_, false);
-        next->zones = std::make_unique<dissimilar_zones>(*next->tangential, k1_, beta_d_);
-        next->s = step(*next->zones, source, Q, f_, checked);
+        // 8(l) step 0: the kinks of p^(k) from q of p1^(k-1), the same iterate as beta_D p1^(k-1).
+        const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
+            auto it = std::make_unique<iterate>(
+                iterate{normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, std::move(kinks)), nullptr,
+                        nullptr, {}});
+            it->normal.how = johnson.how;
+            it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
+            it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
+            it->s = step(*it->zones, source, Q, f_, checked);
+            return it;
+        };
+        auto next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty()));
+        // A step whose answer turned blended (dissimilar_zones::solve tries the other kind when the
+        // previous fails) is solved again on the pressure without p_q^0, which the blended zones' W and
+        // int p H do not take (kinks_of).
+        if (next->normal.kinks && (next->s.opposite || next->s.five)) next = solve_step(nullptr);
 
         // Iterate, then test: the changes of lambda, e, xi and the zone ends over this step.
         const double value_change = std::max({std::fabs(next->normal.lambda - lambda),

@@ -6,6 +6,7 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/numerics/chebyshev_projection.hpp"
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/least_value.hpp"
@@ -14,7 +15,8 @@ namespace roughroll {
 
 double normal_solution::pressure(double r) const {
     if (std::fabs(r) >= 1.0) return 0.0;
-    return u_series(b, r) * std::sqrt(1.0 - r * r);
+    const double smooth = u_series(b, r) * std::sqrt(1.0 - r * r);
+    return kinks ? smooth + (*kinks)(r) : smooth;  // docs/formulation.md 8(l) step 0
 }
 
 pressure_peak peak_of(const normal_solution& s) {
@@ -37,6 +39,15 @@ normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) { ret
 
 normal_solution normal_solver::solve(const kernel& k2, const std::function<double(double)>& coupled,
                                      const std::vector<double>& kinks, sweep_cache* cache) {
+    return solve(k2, coupled, kinks, cache, nullptr);
+}
+
+normal_solution normal_solver::solve(const kernel& k2, const std::function<double(double)>& coupled,
+                                     const std::vector<double>& kinks, sweep_cache* cache,
+                                     std::shared_ptr<const pressure_kinks> explicit_kinks) {
+    if (explicit_kinks && !k2.empty())
+        throw numerical_error("full coupling: the pressure's explicit kinks (docs/formulation.md 8(l)) are built for "
+                              "smooth rollers only");
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
     gsl_matrix* a = system_.matrix();
@@ -53,22 +64,31 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
     }
     // Row n+1: the load (4.3).
     for (int k = 0; k < n; ++k) gsl_matrix_set(a, n + 1, k, rule_.weights[k]);
-    gsl_vector_set(rhs, n + 1, 1.0);
+    // With p_q^0 (8(l) step 0): int sqrt(1 - r^2) phi = 1 - int p_q^0.
+    gsl_vector_set(rhs, n + 1, explicit_kinks ? 1.0 - explicit_kinks->load() : 1.0);
     // (D1): the known beta_D p1 on the right side (docs/formulation.md 8(e) item 3), as its
     // Chebyshev projection of degree n at s_m, not its values there (chebyshev_projection.hpp).
     if (coupled) {
-        const std::vector<double> c = chebyshev_projection(coupled, kinks, n);
+        // 8(l) step 0: beta_D (p1 - q), the q that p_q^0 carries taken out (its kinks are p_q^0's).
+        const pressure_kinks* pk = explicit_kinks.get();
+        const std::function<double(double)> right =
+            pk ? std::function<double(double)>([&coupled, pk](double r) { return coupled(r) - pk->removed(r); })
+               : coupled;
+        const std::vector<double> c = chebyshev_projection(right, kinks, n);
         for (int m = 0; m <= n; ++m) gsl_vector_set(rhs, m, -chebyshev_sum(c, rule_.collocation[m]));
     }
 
     const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
     normal_solution s{rule_, how_, std::vector<double>(n), {}, gsl_vector_get(x, n + 1), gsl_vector_get(x, n),
-                      system_.rcond(), std::move(kernel_term), {}, 0.0};
+                      system_.rcond(), std::move(kernel_term), {}, 0.0, nullptr};
     for (int k = 0; k < n; ++k) s.phi[k] = gsl_vector_get(x, k);
     s.b = u_coefficients(rule_, s.phi);
     if (coupled) {
         s.tangential_term = coupled;
-        s.offset = M_PI * s.gamma / (2.0 * s.lambda);  // gamma_0n = (2/pi) lambda e, 8(c)
+        // gamma_0n = (2/pi) lambda e (8(c)), + C of H[p_q^0] = -beta_D q + C with p_q^0 (8(l) step 0).
+        const double c = explicit_kinks ? explicit_kinks->constant() : 0.0;
+        s.offset = M_PI * (s.gamma - c) / (2.0 * s.lambda);
+        s.kinks = std::move(explicit_kinks);
     }
     return s;
 }
@@ -81,7 +101,7 @@ normal_solution hertz_solution(int n, method how) {
     std::vector<double> phi(n, M_2_PI);
     std::vector<double> b(n, 0.0);
     b[0] = M_2_PI;
-    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr, {}, 0.0};
+    return {std::move(rule), how, std::move(phi), std::move(b), 1.0, 0.0, 1.0, nullptr, {}, 0.0, nullptr};
 }
 
 namespace {

@@ -95,7 +95,7 @@ normal_solution one_parameter_normal(double eps2, int n) {
     std::vector<double> phi(n);
     for (int k = 0; k < n; ++k) phi[k] = u_series(b, rule.nodes[k]);
     return normal_solution{std::move(rule), method::one_parameter, std::move(phi), std::move(b),
-                           gsl_vector_get(x, n + 1), gsl_vector_get(x, n), system.rcond(), nullptr, {}, 0.0};
+                           gsl_vector_get(x, n + 1), gsl_vector_get(x, n), system.rcond(), nullptr, {}, 0.0, nullptr};
 }
 
 one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int n)

@@ -385,7 +385,9 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         u_series(normal_.b, r.data(), phi.data(), check_points);
         if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), check_points);
         for (int i = 0; i < check_points; ++i) {
-            const double fp = f_ * (std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]));
+            // p of (4.1), with the explicit kinks p_q^0 at full coupling (docs/formulation.md 8(l) step 0).
+            const double p = std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]);
+            const double fp = f_ * (normal_.kinks ? p + (*normal_.kinks)(r[i]) : p);
             const bool inside = !(r[i] <= s.start || r[i] >= s.c0 || s.psi_b.empty());
             const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
             // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() (sign (f p + q0))

@@ -9,7 +9,10 @@
 //   1. tangential solve k: (D2) with beta_D p^(k), and in place of G
 //        G^(k) = -L1[p^(k)] = (2/pi) lambda^(k) (r + e^(k)) + int p^(k) (K2* - K1*) + beta_D p1^(k-1);
 //   2. normal solve k + 1: (D1) with beta_D p1^(k) known on the right side at the collocation points
-//      (normal_solver::solve with the coupled term: the same matrix, gamma_0n = (2/pi) lambda e);
+//      (normal_solver::solve with the coupled term: the same matrix, gamma_0n = (2/pi) lambda e); for
+//      three zones of one direction on smooth rollers the pressure's kinks at the zone ends are carried
+//      by p_q^0 from q of p1^(k) and the right side is beta_D (p1^(k) - q) (docs/formulation.md 8(l)
+//      step 0, pressure_kinks.hpp);
 //   3. iterate, then test: stop when lambda, e, xi and the zone ends change by less than the
 //      tolerances below; numerical_error (one line) after max_iterations or when the changes grow.
 // Each tangential solve is Newton from the previous iterate's ends on the same structure (three

@@ -18,6 +18,7 @@
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/pressure_kinks.hpp"
 
 namespace roughroll {
 
@@ -38,8 +39,11 @@ struct normal_solution {
     // (2/pi) lambda e + beta_D p1 (tangential_solver::G). Empty and 0 for the uncoupled problem.
     std::function<double(double)> tangential_term;
     double offset = 0.0;
+    // Full coupling, docs/formulation.md 8(l) step 0: the explicit term p_q^0 carrying the pressure's
+    // one-sided kinks at the zone ends (pressure_kinks.hpp), p = phi sqrt(1 - r^2) + p_q^0. Null otherwise.
+    std::shared_ptr<const pressure_kinks> kinks;
 
-    double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2), (4.1)
+    double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2) (4.1), + p_q^0(r) with `kinks`
 };
 
 // The peak of the pressure p(r) of (4.1) on (-1, 1): its value (in units of P2/a) and position r.
@@ -61,6 +65,13 @@ public:
     // the solution carries it and its offset e.
     normal_solution solve(const kernel& k2, const std::function<double(double)>& coupled,
                           const std::vector<double>& kinks, sweep_cache* cache = nullptr);
+    // The same with the pressure's kinks carried by `explicit_kinks` (docs/formulation.md 8(l) step 0; smooth
+    // rollers, k2 empty): p = phi sqrt(1 - r^2) + p_q^0, the right side beta_D (p1 - q) (coupled minus
+    // explicit_kinks->removed), the load row 1 - int p_q^0, e = pi (gamma_0n - C)/(2 lambda). The solution keeps
+    // `coupled` as its tangential term (G = -L1[p] still gains beta_D p1: (D1) holds for the whole p).
+    normal_solution solve(const kernel& k2, const std::function<double(double)>& coupled,
+                          const std::vector<double>& kinks, sweep_cache* cache,
+                          std::shared_ptr<const pressure_kinks> explicit_kinks);
 
 private:
     gauss_chebyshev rule_;

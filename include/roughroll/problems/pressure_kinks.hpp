@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The pressure's one-sided kinks at the zone ends at full coupling, carried explicitly (docs/formulation.md
+// 8(l), "Proposal", step 0). (D1) has -beta_D q on its right side, q the stick zones' part of p1 (p1 = sign
+// (f p S + q), S = 1 off the blends), and the bounded solution of H[p] = -beta_D q has B (r - c)_+^(1/2) at
+// every zone end, which the pressure's single U-series (4.1) cannot carry: the zone ends then converge at
+// order 1 in n (8(l), "What limits the zone ends to order 1"). With
+//   p = sqrt(1 - r^2) phi + p_q^0,   p_q^0 = beta_D sqrt(1 - r^2) H[q / sqrt(1 - r^2)],
+//   H[g](r) = (1/pi) PV int g(eta) d eta / (eta - r),   H[p_q^0] = -beta_D q + C,   C = (beta_D/pi) int q/sqrt(1 - r^2),
+// the normal solve for phi takes beta_D (p1 - q) on its right side (smooth but for k = sigma beta_D f times
+// the kinks), its load row int sqrt(1 - r^2) phi = 1 - int p_q^0, int p_q^0 = beta_D int q r/sqrt(1 - r^2)
+// (from (1/pi) PV int sqrt(1 - r^2)/(r - tau) dr = -tau), and e = pi (gamma_0n - C)/(2 lambda).
+// Per stick zone [s, c], r = s + rho (t + 1): q/sqrt(1 - r^2) = sqrt(1 - t^2) g(t), g = psi(t)/sqrt(1 - r(t)^2)
+// smooth (the zone lies inside the contact, 8(g)), expanded in U_j on the zone's Gauss-Chebyshev nodes
+// (u_coefficients); its Cauchy integral is cauchy_u_series (-sum b_j T_{j+1} on the zone, -sum b_j z^(j+1) off
+// it), which holds (r - c)_+^(1/2) exactly. The q carried is the one of that expansion,
+// sqrt(1 - r^2) sqrt(1 - t^2) g_n(t), so that (D1) holds for the p represented (removed() below).
+// Smooth rollers only: with a layer term, int p_q^0 K2* would join the right side and int p_q^0 (K2* - K1*)
+// the tangential G (not built; full_coupling keeps the old right side there).
+#pragma once
+
+#include <vector>
+
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+class pressure_kinks {
+public:
+    // Adds the stick zone [start, c0] whose q(r) = sign sqrt(1 - t^2) psi(t), psi = sum psi_b U_j, its
+    // g expanded on `rule`'s nodes. Needs -1 < start < c0 < 1.
+    void add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
+                  const std::vector<double>& psi_b);
+    bool empty() const { return zones_.empty(); }
+
+    double operator()(double r) const;  // p_q^0(r), 0 outside (-1, 1)
+    double removed(double r) const;     // beta_D q(r) as carried by p_q^0 (its expansion)
+    double load() const;                // int p_q^0 = beta_D int q r/sqrt(1 - r^2)
+    double constant() const;            // C of H[p_q^0] = -beta_D q + C
+    std::vector<double> ends() const;   // the zone ends (the kinks)
+
+private:
+    struct zone {
+        double start, rho, amplitude;  // amplitude = beta_D sign
+        std::vector<double> b;         // U coefficients of g(t) = psi(t)/sqrt(1 - r(t)^2)
+    };
+    std::vector<zone> zones_;
+    double load_ = 0.0, constant_ = 0.0;
+};
+
+}  // namespace roughroll
