@@ -48,7 +48,7 @@ TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
         const normal_solution& p = c.normal();
         // With the pressure's kinks carried by p_q^0 (8(l) step 0: three zones of one direction, Q < 0 here, not
         // the five zones at Q > 0) phi solves the projection of beta_D (p1 - q), q the part p_q^0 carries, and
-        // gamma_0n = (2/pi) lambda e + C.
+        // gamma_0n = (2/pi) lambda e + C (the solution's gamma is gamma_0n - C = (2/pi) lambda e).
         EXPECT_EQ(p.kinks != nullptr, Q < 0.0) << Q;
         const std::function<double(double)> coupled = [&](double r) {
             return beta_al_st * c.traction(s, r) - (p.kinks ? p.kinks->removed(r) : 0.0);
@@ -56,6 +56,7 @@ TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
         const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
         // The alternation stops when the traction's changes are below 1e-12 in xi and lambda, so
         // the last p1 and the one p was solved with differ by about that.
+        EXPECT_NEAR(M_2_PI * p.lambda * p.offset, p.gamma, 1e-15) << Q;
         EXPECT_NEAR(M_2_PI * p.lambda * p.offset + (p.kinks ? p.kinks->constant() : 0.0),
                     -chebyshev_coefficient_by_qagp(coupled, ends, 0, 1e-12), 1e-10) << Q;
         for (int j = 1; j <= 32; ++j)

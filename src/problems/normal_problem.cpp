@@ -85,9 +85,10 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
     s.b = u_coefficients(rule_, s.phi);
     if (coupled) {
         s.tangential_term = coupled;
-        // gamma_0n = (2/pi) lambda e (8(c)), + C of H[p_q^0] = -beta_D q + C with p_q^0 (8(l) step 0).
-        const double c = explicit_kinks ? explicit_kinks->constant() : 0.0;
-        s.offset = M_PI * (s.gamma - c) / (2.0 * s.lambda);
+        // gamma_0n = (2/pi) lambda e (8(c)), + C of H[p_q^0] = -beta_D q + C with p_q^0 (8(l) step 0): C is
+        // taken out, so that gamma keeps its meaning (2/pi) lambda e for the whole p, as printed before.
+        if (explicit_kinks) s.gamma -= explicit_kinks->constant();
+        s.offset = M_PI * s.gamma / (2.0 * s.lambda);
         s.kinks = std::move(explicit_kinks);
     }
     return s;

@@ -67,7 +67,8 @@ public:
                           const std::vector<double>& kinks, sweep_cache* cache = nullptr);
     // The same with the pressure's kinks carried by `explicit_kinks` (docs/formulation.md 8(l) step 0; smooth
     // rollers, k2 empty): p = phi sqrt(1 - r^2) + p_q^0, the right side beta_D (p1 - q) (coupled minus
-    // explicit_kinks->removed), the load row 1 - int p_q^0, e = pi (gamma_0n - C)/(2 lambda). The solution keeps
+    // explicit_kinks->removed), the load row 1 - int p_q^0, e = pi (gamma_0n - C)/(2 lambda), and the solution's
+    // gamma is gamma_0n - C = (2/pi) lambda e (its meaning without the kinks). The solution keeps
     // `coupled` as its tangential term (G = -L1[p] still gains beta_D p1: (D1) holds for the whole p).
     normal_solution solve(const kernel& k2, const std::function<double(double)>& coupled,
                           const std::vector<double>& kinks, sweep_cache* cache,
