@@ -57,7 +57,9 @@ roughness equal_two_terms() {
 
 roughness scene_of(int64_t code) { return code == 0 ? fig2() : code == 1 ? unequal() : equal_two_terms(); }
 
-method method_of(int64_t code) { return code == 0 ? method::paper : code == 1 ? method::product : method::extrapolated; }
+method method_of(int64_t code) {
+    return code == 0 ? method::paper : code == 1 ? method::product : method::extrapolated;
+}
 
 // The unit of the creep-point goals (issue 10): one GSL LU factorisation and solve of order
 // n + 1 (arg n), the matrix copied in first as the solvers do. A point's cost in
@@ -199,10 +201,11 @@ void bm_limit_swept_point(benchmark::State& state) {
 // data/steel-rollers.toml's rollers (k, t given), the method from arg 0 (1 product,
 // 2 extrapolated, 3 one-parameter; n its default).
 scene steel_rollers(const benchmark::State& state) {
-    scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
-                          "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n"
-                          "[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n",
-                          "bench");
+    scene s = parse_scene(
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n"
+        "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n"
+        "[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n",
+        "bench");
     s.solver = solver_options{0, state.range(0) == 3 ? method::one_parameter : method_of(state.range(0))};
     return s;
 }
@@ -217,9 +220,9 @@ void bm_physical_point(benchmark::State& state) {
         // As solve_point does (io/scene_point.cpp): the trial widths and the contact at the width
         // found share their product-integration workspaces.
         normal_cache cache;
-        const contact_width w =
-            find_width(*s.physical, [&o, &cache](const roughness& r) { return load_ratio(r, o, &cache); },
-                       [&o, &cache](const roughness& r) { return coarse_load_ratio(r, o, &cache); });
+        const contact_width w = find_width(
+            *s.physical, [&o, &cache](const roughness& r) { return load_ratio(r, o, &cache); },
+            [&o, &cache](const roughness& r) { return coarse_load_ratio(r, o, &cache); });
         contact c(roughness_at(*s.physical, w.a), s.friction, o, {}, &cache);
         benchmark::DoNotOptimize(c.point(*s.Q).xi);
     }
@@ -231,8 +234,9 @@ void bm_physical_point(benchmark::State& state) {
 void bm_physical_point_fixed(benchmark::State& state) {
     const scene s = steel_rollers(state);
     const solver_options& o = s.solver;
-    const contact_width w = find_width(*s.physical, [&o](const roughness& r) { return load_ratio(r, o); },
-                                       [&o](const roughness& r) { return coarse_load_ratio(r, o); });
+    const contact_width w = find_width(
+        *s.physical, [&o](const roughness& r) { return load_ratio(r, o); },
+        [&o](const roughness& r) { return coarse_load_ratio(r, o); });
     const roughness at = roughness_at(*s.physical, w.a);
     for (auto _ : state) {
         contact c(at, s.friction, o);
@@ -243,11 +247,12 @@ void bm_physical_point_fixed(benchmark::State& state) {
 // The roughness parameters (2.6)-(2.14) of a layer (arg: 0 flat profile, linear decay;
 // 1 sine profile, cosine decay; 2 the measured profile of data/profiles/ground.csv).
 void bm_roughness_parameters(benchmark::State& state) {
-    const char* specs[] = {"lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"flat\"\ndecay = \"linear\"\n",
-                           "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"sine\"\ndelta = 4e-6\n"
-                           "decay = \"cosine\"\n",
-                           "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"measured\"\n"
-                           "profile_csv = \"" ROUGHROLL_SOURCE_DIR "/data/profiles/ground.csv\"\ndecay = \"cosine\"\n"};
+    const char* specs[] = {
+        "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"flat\"\ndecay = \"linear\"\n",
+        "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"sine\"\ndelta = 4e-6\n"
+        "decay = \"cosine\"\n",
+        "lambda0 = 1.15e11\nmu0 = 7.7e10\nH = 1e-5\nl = 2e-4\nprofile = \"measured\"\n"
+        "profile_csv = \"" ROUGHROLL_SOURCE_DIR "/data/profiles/ground.csv\"\ndecay = \"cosine\"\n"};
     const micro_geometry g = parse_roughness_spec(specs[state.range(0)], "bench", ".");
     for (auto _ : state) benchmark::DoNotOptimize(compute_roughness_parameters(g).k_normal);
 }
@@ -324,7 +329,6 @@ BENCHMARK(bm_measured_roughness)->ArgsProduct({{1000, 10000, 100000, 1000000}, {
 BENCHMARK(bm_measured_roughness)->ArgsProduct({{1000, 10000}, {1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_profile_csv)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 // ---- end of the measured-profile block
-
 
 namespace {
 // Issue 12, the general zone search (docs/formulation.md section 7). One point along a curve
@@ -434,11 +438,27 @@ void bm_coupling_point(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(bm_coupling_point)->ArgsProduct({{0, 1}, {0, 1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
-BENCHMARK(bm_five_zone_point)->ArgsProduct({{0, 1}, {32, 128}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+BENCHMARK(bm_coupling_point)
+    ->ArgsProduct({{0, 1}, {0, 1}, {32, 64}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3);
+BENCHMARK(bm_five_zone_point)
+    ->ArgsProduct({{0, 1}, {32, 128}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3);
 BENCHMARK(bm_five_zone_point_layers)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
-BENCHMARK(bm_five_zones)->ArgsProduct({{0, 1}, {0}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
-BENCHMARK(bm_five_zones)->ArgsProduct({{0}, {1}, {32, 64}})->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+BENCHMARK(bm_five_zones)
+    ->ArgsProduct({{0, 1}, {0}, {32, 64}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3);
+BENCHMARK(bm_five_zones)
+    ->ArgsProduct({{0}, {1}, {32, 64}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3);
 BENCHMARK(bm_zone_point)->ArgsProduct({{15}, {1, 2}, {128}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_limit_zone_point)->ArgsProduct({{0, 1}, {128, 256}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(bm_dissimilar_point)->ArgsProduct({{0, 1}, {0, 1}, {64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);

@@ -66,10 +66,11 @@ void check_scene(const roughroll::scene& s) {
     for (const double x : {1.0 / 6.5e5, 1e-3, 1.0, 1e3, 0.1 * p.radius() / a_H}) {
         try {
             const roughroll::roughness r = roughroll::roughness_at(p, x * a_H);
-            for (const roughroll::roughness_term& term : {r.cylinder1.tangential, r.cylinder1.normal,
-                                                          r.cylinder2.tangential, r.cylinder2.normal})
+            for (const roughroll::roughness_term& term :
+                 {r.cylinder1.tangential, r.cylinder1.normal, r.cylinder2.tangential, r.cylinder2.normal})
                 if (!finite_non_negative(term.T) || !finite_non_negative(term.A))
-                    broken("T and A at a trial width finite and >= 0", std::to_string(term.T) + ", " + std::to_string(term.A));
+                    broken("T and A at a trial width finite and >= 0",
+                           std::to_string(term.T) + ", " + std::to_string(term.A));
         } catch (const roughroll::input_error& e) {
             if (!one_line(e.what())) broken("one-line message", e.what());
         }

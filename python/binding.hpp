@@ -28,7 +28,7 @@ struct solver_keywords {
     std::optional<int> n;
     std::optional<std::string> method;
     std::optional<std::string> zones;
-    std::optional<double> friction;  // over the scene's friction, as --friction
+    std::optional<double> friction;   // over the scene's friction, as --friction
     std::optional<double> tolerance;  // the ladder's, as --tolerance (over solver.n and solver.tolerance)
 };
 

@@ -67,8 +67,8 @@ void bind_model(py::module_& m) {
            const std::vector<double>& r) {
             const method how = method_from_string(method_name);
             if (how != method::paper && how != method::product)
-                throw input_error("the normal problem alone is solved by 'paper' or 'product' (got '" +
-                                  method_name + "')");
+                throw input_error("the normal problem alone is solved by 'paper' or 'product' (got '" + method_name +
+                                  "')");
             for (const double x : r)
                 if (!(x >= -1.0 && x <= 1.0)) throw input_error("r must lie in [-1, 1] (got " + shortest(x) + ")");
             const kernel k2 = kernel_of(terms);

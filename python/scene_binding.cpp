@@ -123,8 +123,8 @@ struct curve_columns {
     std::vector<double> Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter;
     std::vector<char> checks_hold;
     std::vector<double> c0_error, xi_error, Q_error;
-    std::vector<int> zones;            // the number of stick and slip zones (formulation section 7)
-    std::vector<double> stick_start;   // the start of the stick zone, -1 in the paper's structure
+    std::vector<int> zones;                   // the number of stick and slip zones (formulation section 7)
+    std::vector<double> stick_start;          // the start of the stick zone, -1 in the paper's structure
     std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
     std::vector<int> n;                       // each row's n (the ladder's rung; 0 for a refused row)
     std::vector<std::string> status;          // "ok" or "refused"
@@ -150,7 +150,8 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
     const double nan = std::nan("");
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
         const curve_point& row = c.rows[i];
-        const std::optional<contact_width> width = out.physical ? std::optional<contact_width>(c.widths[i]) : std::nullopt;
+        const std::optional<contact_width> width =
+            out.physical ? std::optional<contact_width>(c.widths[i]) : std::nullopt;
         const tangential_solution& t = row.solution;
         out.Q.push_back(t.Q);
         out.Q_over_f.push_back(t.Q / t.f);
@@ -163,7 +164,8 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.c0_error.push_back(row.estimate ? row.estimate->c0 : nan);
         out.xi_error.push_back(row.estimate ? row.estimate->xi : nan);
         out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
-        out.zones.push_back(row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));  // five for two stick zones, as the CSV
+        out.zones.push_back(
+            row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));  // five for two stick zones, as the CSV
         out.stick_start.push_back(t.start);
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         out.n.push_back(c.nodes[i]);
@@ -259,9 +261,11 @@ void bind_scene(py::module_& m) {
         .def_property_readonly("label", [](const scene& s) { return s.label; })
         .def_property_readonly("friction", [](const scene& s) { return s.friction; })
         .def_property_readonly("Q", [](const scene& s) { return s.Q; })
-        .def_property_readonly("Q_over_f", [](const scene& s) {
-            return s.Q_over_f ? s.Q_over_f : s.Q ? std::optional<double>(*s.Q / s.friction) : std::nullopt;
-        })
+        .def_property_readonly(
+            "Q_over_f",
+            [](const scene& s) {
+                return s.Q_over_f ? s.Q_over_f : s.Q ? std::optional<double>(*s.Q / s.friction) : std::nullopt;
+            })
         .def_property_readonly("n", [](const scene& s) { return s.solver.nodes(); })
         .def_property_readonly("tolerance",  // the ladder's (level_ladder.hpp); None with an explicit n
                                [](const scene& s) {
@@ -315,7 +319,7 @@ void bind_scene(py::module_& m) {
                 d["zones"] = py::array_t<int>(static_cast<py::ssize_t>(c.zones.size()), c.zones.data());
                 d["stick_start"] = array_of(c.stick_start);
                 d["n"] = py::array_t<int>(static_cast<py::ssize_t>(c.n.size()), c.n.data());
-                d["status"] = c.status;    // a NumPy array of str in roughroll.Scene.curve
+                d["status"] = c.status;     // a NumPy array of str in roughroll.Scene.curve
                 d["_refused"] = c.refused;  // warned by roughroll.Scene.curve
                 if (c.physical) {
                     d["P1_N_per_m"] = array_of(c.P1);

@@ -15,7 +15,6 @@
 
 using namespace roughroll;
 
-
 // p1-like: sqrt(1 - r^2) at the ends, square-root kinks at -0.4 and 0.55 (sorted, increasing).
 TEST(ChebyshevProjection, KinkedFunctionAgainstAdaptiveQuadrature) {
     const std::vector<double> kinks{-0.4, 0.55};
@@ -27,7 +26,8 @@ TEST(ChebyshevProjection, KinkedFunctionAgainstAdaptiveQuadrature) {
     const int N = 40;
     const std::vector<double> c = chebyshev_projection(g, kinks, N);
     ASSERT_EQ(c.size(), static_cast<std::size_t>(N) + 1);
-    for (int j = 0; j <= N; ++j) EXPECT_NEAR(c[j], chebyshev_coefficient_by_qagp(g, kinks, j, 1e-13), tol::against_adaptive) << j;
+    for (int j = 0; j <= N; ++j)
+        EXPECT_NEAR(c[j], chebyshev_coefficient_by_qagp(g, kinks, j, 1e-13), tol::against_adaptive) << j;
     // The series at an inner point between the kinks converges like N^-3/2 (a square-root kink's
     // coefficients fall like j^-3/2 ... ^-5/2): four times N, at least 4 times smaller.
     const double e40 = std::fabs(chebyshev_sum(c, 0.0) - g(0.0));

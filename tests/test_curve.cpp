@@ -72,8 +72,8 @@ TEST(Curve, RefusedPointIsARowAndTheCurveGoesOn) {
         if (!why.empty()) {
             ++refused;
             ASSERT_TRUE(row.is_refused()) << "Q = " << loads[i];
-            EXPECT_EQ(row.refused, "curve point at Q = " + shortest(loads[i]) + " (Q/f = " + shortest(loads[i] / f) +
-                                       "): " + why);
+            EXPECT_EQ(row.refused,
+                      "curve point at Q = " + shortest(loads[i]) + " (Q/f = " + shortest(loads[i] / f) + "): " + why);
             EXPECT_EQ(row.solution.Q, loads[i]);
             EXPECT_TRUE(std::isnan(row.solution.c0));
             EXPECT_TRUE(std::isnan(row.solution.xi));
@@ -204,7 +204,8 @@ TEST(Curve, SweptChecksEqualTheScalarRoute) {
 // load, creep and distribution of the fresh LU route to rounding, equal and unequal kernels.
 TEST(Curve, SweptRefinedSolvesAgreeWithFreshFactorisations) {
     roughness equal;  // Fig. 2a, curve 3
-    equal.cylinder1.tangential = equal.cylinder2.tangential = equal.cylinder1.normal = equal.cylinder2.normal = {1.0, 1.0};
+    equal.cylinder1.tangential = equal.cylinder2.tangential = equal.cylinder1.normal =
+        equal.cylinder2.normal = {1.0, 1.0};
     roughness unequal = equal;
     unequal.cylinder1.tangential = {1.0, 0.5};
     unequal.cylinder2.normal = {0.8, 0.5};
@@ -285,9 +286,10 @@ TEST(Curve, CsvMarksRefusedRows) {
 // xi1 (the refused creep) empty. The units come from data/steel-rollers.toml's materials; the
 // rows from the stiff layer's curve (write_curve_csv only converts them).
 TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
-    scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1.0e5\nfriction = 0.3\n"
-                          "[cylinder1.normal]\nk = 8.0e14\nt = 1.5e6\n",
-                          "steel.toml", ".");
+    scene s = parse_scene(
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1.0e5\nfriction = 0.3\n"
+        "[cylinder1.normal]\nk = 8.0e14\nt = 1.5e6\n",
+        "steel.toml", ".");
     const std::optional<contact_width> width = settle_width(s);
     ASSERT_TRUE(width.has_value());
     contact c = fresh();
@@ -312,8 +314,9 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
             ++refused;
             EXPECT_EQ(r[14], "") << "xi1 of a refused row";
         } else {
-            EXPECT_EQ(r[14], shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0,
-                                             curve[i].solution.xi).xi1));
+            EXPECT_EQ(
+                r[14],
+                shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0, curve[i].solution.xi).xi1));
         }
     }
     EXPECT_GE(refused, 1);

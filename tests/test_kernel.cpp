@@ -117,9 +117,8 @@ TEST(KernelSweep, AgreesWithMomentsAtSortedPoints) {
     const std::vector<double> b{0.3, -1.2, 0.5, 0.05, -0.3, 0.2, 0.01, -0.07};
     const std::vector<double> points{1.0, 0.999, 0.5, 0.5, 0.1, -0.2, -0.9, -0.9001, -0.95, -1.0};
     const int degree = static_cast<int>(b.size()) - 1;
-    const auto swept = sweep(k, points, 1, degree, [&](double theta, double* out) {
-        *out = u_series(b, std::cos(theta));
-    });
+    const auto swept =
+        sweep(k, points, 1, degree, [&](double theta, double* out) { *out = u_series(b, std::cos(theta)); });
     kernel_moments moments(k, static_cast<int>(b.size()));
     for (std::size_t m = 0; m < points.size(); ++m)
         EXPECT_NEAR(swept[m], moments.integrate(b, points[m]), tol::short_sum) << "x = " << points[m];
@@ -176,7 +175,8 @@ TEST(USeriesTable, AgreesWithTheSeriesWithinItsBound) {
             const double series = u_series(b, x) * std::sqrt(std::max(0.0, (1.0 - x) * (1.0 + x)));
             worst = std::max(worst, std::fabs(table(x) - series));
         }
-        EXPECT_LE(worst, table.error_bound() + n * GSL_DBL_EPSILON * l1) << "n = " << n << ", " << table.panels() << " panels";
+        EXPECT_LE(worst, table.error_bound() + n * GSL_DBL_EPSILON * l1)
+            << "n = " << n << ", " << table.panels() << " panels";
     }
     EXPECT_THROW(u_series_table(std::vector<double>{}), numerical_error);
 }
@@ -235,17 +235,18 @@ TEST(ConvolutionTable, AgreesWithSweepAndMoments) {
             const convolution_table table(k, b);
             EXPECT_LE(table.error_bound(), 1e-15 * table.scale());
             std::vector<double> points{1.0, -1.0};
-            for (int i = 0; i < 301; ++i) points.push_back(std::cos(0.01 + 3.1 * std::sqrt(i / 300.0) * std::sqrt(i / 300.0)));
+            for (int i = 0; i < 301; ++i)
+                points.push_back(std::cos(0.01 + 3.1 * std::sqrt(i / 300.0) * std::sqrt(i / 300.0)));
             std::sort(points.begin(), points.end(), std::greater<double>());
-            const auto swept = sweep(k, points, 1, n - 1, [&](double theta, double* out) {
-                *out = u_series(b, std::cos(theta));
-            });
+            const auto swept =
+                sweep(k, points, 1, n - 1, [&](double theta, double* out) { *out = u_series(b, std::cos(theta)); });
             kernel_moments moments(k, n);
             double worst = 0.0;
             for (std::size_t m = 0; m < points.size(); ++m) {
                 const double t = table(points[m]);
                 worst = std::max(worst, std::fabs(t - swept[m]));
-                EXPECT_NEAR(t, swept[m], 4e-15 * table.scale()) << "n = " << n << ", A = " << A << ", r = " << points[m];
+                EXPECT_NEAR(t, swept[m], 4e-15 * table.scale())
+                    << "n = " << n << ", A = " << A << ", r = " << points[m];
                 if (m % 10 == 0) {
                     EXPECT_NEAR(t, moments.integrate(b, points[m]), 4e-15 * table.scale())
                         << "n = " << n << ", A = " << A << ", r = " << points[m];
@@ -365,9 +366,8 @@ TEST(KernelSweep, LagrangeOperatorIntegratesEachSegmentToRounding) {
     for (int n : {16, 64, 256}) {
         const gauss_chebyshev rule(n);
         const lagrange_basis basis(rule);
-        const batch_basis_values values([&basis](const double*, const double* eta, std::size_t count, double* out) {
-            basis(eta, count, out);
-        });
+        const batch_basis_values values(
+            [&basis](const double*, const double* eta, std::size_t count, double* out) { basis(eta, count, out); });
         const double limit = 2.0 * (n + 1) * (n + 1) / (M_PI * M_PI);  // A h^2/2 = 1 (check_resolution)
         for (double A : {0.0, 0.5, 30.0, limit}) {
             const kernel k(std::vector<exponential_term>{{1.0, A}});
@@ -378,7 +378,8 @@ TEST(KernelSweep, LagrangeOperatorIntegratesEachSegmentToRounding) {
             double worst = 0.0;
             for (int m = 0; m <= n; ++m)
                 for (int j = 0; j < n; ++j)
-                    worst = std::max(worst, std::fabs(gsl_matrix_get(a.get(), m, j) - fine[static_cast<std::size_t>(m) * n + j]));
+                    worst = std::max(
+                        worst, std::fabs(gsl_matrix_get(a.get(), m, j) - fine[static_cast<std::size_t>(m) * n + j]));
             EXPECT_LE(worst, 8.0 * GSL_DBL_EPSILON) << "n = " << n << ", A = " << A;
         }
     }

@@ -15,10 +15,10 @@ using namespace roughroll;
 
 TEST(Limit, CompliancesSumOverCylinders) {
     roughness r;
-    r.cylinder1.normal = {2.0, 2.0};       // 2*2/4 = 1
-    r.cylinder2.normal = {0.5, 10.0};      // 1/100
-    r.cylinder1.tangential = {0.0, 0.0};   // absent
-    r.cylinder2.tangential = {3.0, 3.0};   // 6/9
+    r.cylinder1.normal = {2.0, 2.0};      // 2*2/4 = 1
+    r.cylinder2.normal = {0.5, 10.0};     // 1/100
+    r.cylinder1.tangential = {0.0, 0.0};  // absent
+    r.cylinder2.tangential = {3.0, 3.0};  // 6/9
     const compliances eps = one_parameter_compliances(r);
     EXPECT_DOUBLE_EQ(eps.normal, 1.01);
     EXPECT_DOUBLE_EQ(eps.tangential, 2.0 / 3.0);

@@ -64,7 +64,8 @@ TEST(DenseSystem, RefinedSolveAgreesWithTheFreshFactorisation) {
         // Both solve A x = b with backward error at rounding: they differ by the condition
         // number times eps at most (1/rcond is its estimate, of U).
         const double tolerance = tol::solve_rounding / fresh.rcond() * largest(direct);
-        for (std::size_t i = 0; i < order; ++i) EXPECT_NEAR(near[i], direct[i], tolerance) << "t = " << t << ", i = " << i;
+        for (std::size_t i = 0; i < order; ++i)
+            EXPECT_NEAR(near[i], direct[i], tolerance) << "t = " << t << ", i = " << i;
         if (swept.refined()) {
             // cond(A) <= cond(M) (1 + q)/(1 - q), q <= 1/2: the estimate is below the
             // factorisation's and at least a third of it.

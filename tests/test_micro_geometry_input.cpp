@@ -53,10 +53,13 @@ std::string with(const std::string& key, const std::string& replacement, const s
 
 ::testing::AssertionResult message_has(const std::string& message, const std::string& prefix,
                                        std::initializer_list<std::string> fragments) {
-    if (message.rfind(prefix, 0) != 0) return ::testing::AssertionFailure() << "does not start with " << prefix << ": " << message;
-    if (message.find_first_of("\r\n") != std::string::npos) return ::testing::AssertionFailure() << "not one line: " << message;
+    if (message.rfind(prefix, 0) != 0)
+        return ::testing::AssertionFailure() << "does not start with " << prefix << ": " << message;
+    if (message.find_first_of("\r\n") != std::string::npos)
+        return ::testing::AssertionFailure() << "not one line: " << message;
     for (const std::string& f : fragments)
-        if (message.find(f) == std::string::npos) return ::testing::AssertionFailure() << "'" << f << "' not in: " << message;
+        if (message.find(f) == std::string::npos)
+            return ::testing::AssertionFailure() << "'" << f << "' not in: " << message;
     return ::testing::AssertionSuccess() << message;
 }
 
@@ -82,7 +85,8 @@ TEST(MicroGeometryInput, GoodSpec) {
     EXPECT_EQ(g.decay, decay_kind::cosine);
     // Integers are numbers; lambda0 = 0 (Poisson's ratio 0) is allowed.
     const micro_geometry flat = parse_roughness_spec(
-        "lambda0 = 0\nmu0 = 1\nH = 1\nl = 2\nprofile = \"flat\"\ndecay = \"linear\"\nmicro_shape = \"sine\"\n", source, ".");
+        "lambda0 = 0\nmu0 = 1\nH = 1\nl = 2\nprofile = \"flat\"\ndecay = \"linear\"\nmicro_shape = \"sine\"\n", source,
+        ".");
     EXPECT_EQ(flat.material.lambda0, 0.0);
     EXPECT_EQ(flat.bottom.kind, profile_kind::flat);
     EXPECT_EQ(parse_roughness_spec(with("profile", "profile = \"sawtooth\""), source, ".").bottom.kind,
@@ -94,8 +98,10 @@ TEST(MicroGeometryInput, GoodSpec) {
 // paper's printed one; any other value or type is refused, naming the key.
 TEST(MicroGeometryInput, FactorOf2_12) {
     EXPECT_EQ(parse_roughness_spec(good, source, ".").factor_2_12, normal_factor::derived);
-    EXPECT_EQ(parse_roughness_spec(good + "factor_2_12 = \"derived\"\n", source, ".").factor_2_12, normal_factor::derived);
-    EXPECT_EQ(parse_roughness_spec(good + "factor_2_12 = \"printed\"\n", source, ".").factor_2_12, normal_factor::printed);
+    EXPECT_EQ(parse_roughness_spec(good + "factor_2_12 = \"derived\"\n", source, ".").factor_2_12,
+              normal_factor::derived);
+    EXPECT_EQ(parse_roughness_spec(good + "factor_2_12 = \"printed\"\n", source, ".").factor_2_12,
+              normal_factor::printed);
     EXPECT_TRUE(rejects(good + "factor_2_12 = \"paper\"\n",
                         {"'factor_2_12' must be one of \"derived\", \"printed\" (got \"paper\")"}));
     EXPECT_TRUE(rejects(good + "factor_2_12 = 1\n", {"'factor_2_12' must be a string, not an integer"}));
@@ -130,7 +136,8 @@ TEST(MicroGeometryInput, BadValues) {
     EXPECT_TRUE(rejects(with("lambda0", "lambda0 = -1"), {"'lambda0' must be finite and >= 0"}));
     EXPECT_TRUE(rejects(with("delta", "delta = -1e-6"), {"'delta' must be finite and >= 0"}));
     EXPECT_TRUE(rejects(with("delta", "delta = 1e-5"), {"'delta' = 1e-05 must be < 'H' = 1e-05", "0 <= h0 < H"}));
-    EXPECT_TRUE(rejects(with("profile", "profile = \"wavy\""), {"'profile' must be one of \"flat\", \"sine\"", "wavy"}));
+    EXPECT_TRUE(
+        rejects(with("profile", "profile = \"wavy\""), {"'profile' must be one of \"flat\", \"sine\"", "wavy"}));
     EXPECT_TRUE(rejects(with("decay", "decay = \"exp\""), {"'decay' must be one of", "\"cosine\"", "exp"}));
     EXPECT_TRUE(rejects(good + "micro_shape = \"square\"\n", {"'micro_shape' must be one of \"sine\""}));
 }
@@ -141,7 +148,8 @@ TEST(MicroGeometryInput, KeysOfTheWrongProfile) {
     const std::string measured = with("delta", "", with("profile", "profile = \"measured\""));
     EXPECT_TRUE(rejects(measured, {"missing key 'profile_csv'"}));
     EXPECT_TRUE(rejects(measured + "profile_csv = \"\"\n", {"'profile_csv' must not be empty"}));
-    EXPECT_TRUE(rejects(measured + "profile_csv = \"p.csv\"\ndelta = 1e-6\n", {"'delta' is not used by profile = \"measured\""}));
+    EXPECT_TRUE(rejects(measured + "profile_csv = \"p.csv\"\ndelta = 1e-6\n",
+                        {"'delta' is not used by profile = \"measured\""}));
 }
 
 // In a scene's table the messages name the dotted path.
@@ -169,7 +177,8 @@ protected:
 };
 
 const std::string measured_spec =
-    "lambda0 = 1\nmu0 = 1\nH = 1\nl = 4\nprofile = \"measured\"\nprofile_csv = \"profiles/p.csv\"\ndecay = \"linear\"\n";
+    "lambda0 = 1\nmu0 = 1\nH = 1\nl = 4\nprofile = \"measured\"\nprofile_csv = \"profiles/p.csv\"\ndecay = "
+    "\"linear\"\n";
 
 TEST_F(MeasuredSpec, RelativeCsvIsRelativeToTheSpec) {
     write("profiles/p.csv", "# synthetic\nx1,h0\n0,0.1\n1,0.2\n2,0.3\n3,0.2\n4,0.1\n");
@@ -207,7 +216,8 @@ TEST_F(MeasuredSpec, CsvErrorsNameFileAndLine) {
         (void)read_roughness_spec((dir_ / "spec.toml").string());
         ADD_FAILURE() << "accepted h0 >= H";
     } catch (const input_error& e) {
-        EXPECT_TRUE(message_has(e.what(), (dir_ / "profiles" / "p.csv").string() + ":3:", {"h0 = 1.5", "not below H = 1"}));
+        EXPECT_TRUE(
+            message_has(e.what(), (dir_ / "profiles" / "p.csv").string() + ":3:", {"h0 = 1.5", "not below H = 1"}));
     }
 }
 
@@ -224,7 +234,8 @@ TEST_F(MeasuredSpec, CsvErrorsNameFileAndLine) {
 
 TEST(ProfileCsv, Accepts) {
     // Comments, blank lines, CRLF, spaces, an integer, an exponent, no header.
-    const profile_samples s = parse_profile_csv("  # comment\r\n\r\n0 , 1e-1\r\n1,0.2\n 2.5 ,3\n3.0,0.25", "p.csv", 4.0);
+    const profile_samples s =
+        parse_profile_csv("  # comment\r\n\r\n0 , 1e-1\r\n1,0.2\n 2.5 ,3\n3.0,0.25", "p.csv", 4.0);
     EXPECT_EQ(s.x1, (std::vector<double>{0, 1, 2.5, 3}));
     EXPECT_EQ(s.h0, (std::vector<double>{0.1, 0.2, 3, 0.25}));
     EXPECT_EQ(s.lines, (std::vector<int>{3, 4, 5, 6}));
@@ -249,7 +260,8 @@ TEST(ProfileCsv, EachBadLine) {
     EXPECT_TRUE(csv_rejects("0,1\n2,1\n2,1\n", ":3", {"x1 = 2 does not increase"}));
     EXPECT_TRUE(csv_rejects("0,1\n2,1\n1,1\n", ":3", {"x1 = 1 does not increase"}));
     EXPECT_TRUE(csv_rejects("0,1\n1,1\n2,1\n5,1\n", ":4", {"x1 = 5 is beyond the period l = 4"}));
-    EXPECT_TRUE(csv_rejects("0,1\n1,1\n2,1\n3,1\n4,2\n", ":5", {"closing point x1 = l = 4 has h0 = 2, not the h0 = 1"}));
+    EXPECT_TRUE(
+        csv_rejects("0,1\n1,1\n2,1\n3,1\n4,2\n", ":5", {"closing point x1 = l = 4 has h0 = 2, not the h0 = 1"}));
     EXPECT_TRUE(csv_rejects("0,1\n1,1\n2,1\n3,1\n4,1\n5,1\n", ":6", {"a sample after the closing point"}));
     EXPECT_TRUE(csv_rejects("0,1\n1,1\n2,1\n", "", {"at least 4 samples", "got 3"}));
     EXPECT_TRUE(csv_rejects("0,1\n1,1\n2,1\n4,1\n", "", {"at least 4 samples", "got 3"}));  // closing point not counted
@@ -283,8 +295,10 @@ TEST(MicroGeometryInput, ArrayMistakes) {
                         {"'profile_x1' and 'profile_h0' at index:2: x1 = nan is not finite"}));
     EXPECT_TRUE(rejects(array_spec + x4 + "profile_h0 = [0.1, inf, 0.3, 0.2]\n", {"index:1: h0 = inf is not finite"}));
     EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 2, 1, 3]\n" + h4, {"index:2: x1 = 1 does not increase"}));
-    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [1, 2, 3, 3.5]\n" + h4, {"index:0: the first sample must be at x1 = 0"}));
-    EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 1, 2, 5]\n" + h4, {"index:3: x1 = 5 is beyond the period l = 4"}));
+    EXPECT_TRUE(
+        rejects(array_spec + "profile_x1 = [1, 2, 3, 3.5]\n" + h4, {"index:0: the first sample must be at x1 = 0"}));
+    EXPECT_TRUE(
+        rejects(array_spec + "profile_x1 = [0, 1, 2, 5]\n" + h4, {"index:3: x1 = 5 is beyond the period l = 4"}));
     EXPECT_TRUE(rejects(array_spec + x4 + "profile_h0 = [0.1, -0.2, 0.3, 0.2]\n", {"index:1: h0 = -0.2 is below 0"}));
     EXPECT_TRUE(rejects(array_spec + "profile_x1 = [0, 1, \"2\", 3]\n" + h4, {"'profile_x1[2]' must be a number"}));
     EXPECT_TRUE(rejects(array_spec + "profile_x1 = 0\n" + h4, {"'profile_x1' must be an array of numbers"}));

@@ -23,7 +23,8 @@ TEST(GaussChebyshev, NodesWeightsAndCollocationPoints) {
         sum += rule.weights[k];
     }
     EXPECT_NEAR(sum, M_PI / 2, tol::short_sum);  // int sqrt(1 - x^2) dx
-    for (int m = 0; m < 8; ++m) EXPECT_NEAR(std::cos(8 * std::acos(rule.collocation[m])), 0.0, tol::short_sum);  // T_{n+1}
+    for (int m = 0; m < 8; ++m)
+        EXPECT_NEAR(std::cos(8 * std::acos(rule.collocation[m])), 0.0, tol::short_sum);  // T_{n+1}
 }
 
 TEST(GaussChebyshev, RejectsNOutsideRange) {
@@ -39,7 +40,8 @@ TEST(GaussChebyshev, ExactToDegreeTwoNMinusOne) {
     for (int j = 0; 2 * j <= 2 * n - 1; ++j) {
         double q = 0.0;
         for (int k = 0; k < n; ++k) q += rule.weights[k] * std::pow(rule.nodes[k], 2 * j);
-        const double exact = M_PI * std::tgamma(2 * j + 1) / (std::pow(2.0, 2 * j + 1) * std::tgamma(j + 1) * std::tgamma(j + 2));
+        const double exact =
+            M_PI * std::tgamma(2 * j + 1) / (std::pow(2.0, 2 * j + 1) * std::tgamma(j + 1) * std::tgamma(j + 2));
         EXPECT_NEAR(q, exact, tol::short_sum) << "degree " << 2 * j;
     }
 }
@@ -69,7 +71,8 @@ TEST(USeries, BatchedCauchyTransformEqualsTheScalarOne) {
     cauchy_u_series(one, x.data(), out.data(), x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (std::fabs(x[i]) > 1.0) {
-            EXPECT_NEAR(out[i], -(x[i] - std::copysign(std::sqrt(x[i] * x[i] - 1.0), x[i])), tol::few_roundings) << "x = " << x[i];
+            EXPECT_NEAR(out[i], -(x[i] - std::copysign(std::sqrt(x[i] * x[i] - 1.0), x[i])), tol::few_roundings)
+                << "x = " << x[i];
         }
     }
 }

@@ -69,8 +69,10 @@ TEST(RoughnessParameters, FlatProfileClosedForms) {
         EXPECT_TRUE(close(p.k_normal, (lambda0 + 2.0 * mu0) * c.a33, tol::roughness_integrals));
         EXPECT_TRUE(close(p.t_tangential, (lambda0 + 2.0 * mu0) * c.a / 2.0, tol::roughness_integrals));
         EXPECT_TRUE(close(p.t_normal, mu0 * c.a / 2.0, tol::roughness_integrals));
-        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(mu0 * c.a33 / ((lambda0 + 2.0 * mu0) * c.a)), tol::roughness_integrals));
-        EXPECT_TRUE(close(p.alpha_normal, std::sqrt((lambda0 + 2.0 * mu0) * c.a33 / (mu0 * c.a)), tol::roughness_integrals));
+        EXPECT_TRUE(close(p.alpha_tangential, std::sqrt(mu0 * c.a33 / ((lambda0 + 2.0 * mu0) * c.a)),
+                          tol::roughness_integrals));
+        EXPECT_TRUE(
+            close(p.alpha_normal, std::sqrt((lambda0 + 2.0 * mu0) * c.a33 / (mu0 * c.a)), tol::roughness_integrals));
     }
 }
 
@@ -78,8 +80,8 @@ TEST(RoughnessParameters, FlatProfileClosedForms) {
 // t2 = mu0 H/6, in Pa/m and Pa m.
 TEST(RoughnessParameters, FlatLinearInSIUnits) {
     const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::flat, 0.0, decay_kind::linear));
-    EXPECT_TRUE(close(p.k_tangential, 7.7e15, tol::roughness_integrals));                 // 7.7e10 Pa / 1e-5 m
-    EXPECT_TRUE(close(p.k_normal, 2.69e16, tol::roughness_integrals));                    // 2.69e11 Pa / 1e-5 m
+    EXPECT_TRUE(close(p.k_tangential, 7.7e15, tol::roughness_integrals));                // 7.7e10 Pa / 1e-5 m
+    EXPECT_TRUE(close(p.k_normal, 2.69e16, tol::roughness_integrals));                   // 2.69e11 Pa / 1e-5 m
     EXPECT_TRUE(close(p.t_tangential, 2.69e11 * 1e-5 / 6.0, tol::roughness_integrals));  // Pa m
     EXPECT_TRUE(close(p.t_normal, 7.7e10 * 1e-5 / 6.0, tol::roughness_integrals));
 }
@@ -127,7 +129,8 @@ TEST(RoughnessParameters, SineProfileLinearDecayClosedForm) {
     for (const double delta : {0.1 * H, 0.5 * H, 0.9 * H}) {
         SCOPED_TRACE(delta);
         const layer_averages m = sine_linear_closed_form(delta);
-        const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+        const roughness_parameters p =
+            compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
         EXPECT_TRUE(close(p.averages.a, m.a, tol::roughness_integrals));
         EXPECT_TRUE(close(p.averages.a33, m.a33, tol::roughness_integrals));
         EXPECT_TRUE(close(p.averages.a_h1, m.a_h1, tol::roughness_integrals));
@@ -188,7 +191,8 @@ reduced_energy minimise_energy_over_correctors(const layer_averages& m, double a
         for (int j = 0; j < 2; ++j)
             for (int k = 0; k < 2; ++k)
                 for (int q = 0; q < 2; ++q) {
-                    const double C = lambda0 * delta(i, j) * delta(k, q) + mu0 * (delta(i, k) * delta(j, q) + delta(i, q) * delta(j, k));
+                    const double C = lambda0 * delta(i, j) * delta(k, q) +
+                                     mu0 * (delta(i, k) * delta(j, q) + delta(i, q) * delta(j, k));
                     for (const term& x : G[i][j])
                         for (const term& y : G[k][q]) M[x.index][y.index] += C * product[x.kind][y.kind];
                 }
@@ -211,9 +215,11 @@ TEST(RoughnessParameters, NormalStiffnessMinimisesTheEnergy) {
     for (const double delta : {0.1 * H, 0.4 * H, 0.9 * H}) {
         SCOPED_TRACE(delta);
         const layer_averages m = sine_linear_closed_form(delta);
-        const double eps = delta / (2.0 * H), a3 = -0.5 * ((1.0 - eps) * (1.0 - eps) + 0.5 * eps * eps);  // <-(1-h0/H)^2/2>
+        const double eps = delta / (2.0 * H),
+                     a3 = -0.5 * ((1.0 - eps) * (1.0 - eps) + 0.5 * eps * eps);  // <-(1-h0/H)^2/2>
         const reduced_energy e = minimise_energy_over_correctors(m, a3);
-        const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+        const roughness_parameters p =
+            compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
         EXPECT_TRUE(close(p.k_tangential, e.k1, tol::roughness_integrals));
         EXPECT_TRUE(close(p.k_normal, e.k2, tol::roughness_integrals));
         EXPECT_TRUE(close(2.0 * p.t_tangential, e.two_t1, tol::roughness_integrals));
@@ -235,7 +241,8 @@ TEST(RoughnessParameters, NormalStiffnessMinimisesTheEnergy) {
 TEST(RoughnessParameters, NormalStiffnessAgainstTheEnergyScript) {
     const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, 4e-6, decay_kind::linear));
     EXPECT_TRUE(close(p.k_normal, 2.119673269848e16, tol::roughness_integrals));
-    EXPECT_TRUE(close(p.alpha_normal, std::sqrt(2.119673269848e16 / (2.0 * 55154.765981735)), tol::roughness_integrals));
+    EXPECT_TRUE(
+        close(p.alpha_normal, std::sqrt(2.119673269848e16 / (2.0 * 55154.765981735)), tol::roughness_integrals));
     EXPECT_LE(p.k_normal_error, tol::roughness_integrals * p.k_normal);
 }
 
@@ -250,10 +257,11 @@ TEST(RoughnessParameters, DerivedAgainstPrintedFactor) {
         const char* name;
         micro_geometry g;
     };
-    const layer_case cases[] = {{"flat-linear", geometry(profile_kind::flat, 0.0, decay_kind::linear)},
-                                {"sine-linear", geometry(profile_kind::sine, 4e-6, decay_kind::linear)},
-                                {"sine 0.6 H quadratic", geometry(profile_kind::sine, 0.6 * H, decay_kind::quadratic)},
-                                {"sawtooth 0.8 H cosine", geometry(profile_kind::sawtooth, 0.8 * H, decay_kind::cosine)}};
+    const layer_case cases[] = {
+        {"flat-linear", geometry(profile_kind::flat, 0.0, decay_kind::linear)},
+        {"sine-linear", geometry(profile_kind::sine, 4e-6, decay_kind::linear)},
+        {"sine 0.6 H quadratic", geometry(profile_kind::sine, 0.6 * H, decay_kind::quadratic)},
+        {"sawtooth 0.8 H cosine", geometry(profile_kind::sawtooth, 0.8 * H, decay_kind::cosine)}};
     for (const layer_case& c : cases) {
         SCOPED_TRACE(c.name);
         micro_geometry printed = c.g;
@@ -324,7 +332,8 @@ TEST(RoughnessParameters, SineProfileOtherDecaysAgainstTrapezoidSums) {
 //   <a>   = (H/3) int_0^1 (1 - eps s)^3 ds = H (1 - (1 - eps)^4)/(12 eps)
 TEST(RoughnessParameters, SawtoothClosedForms) {
     const double delta = 0.8 * H, eps = delta / H;
-    const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear));
+    const roughness_parameters p =
+        compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear));
     EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, tol::roughness_integrals));
     EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), tol::roughness_integrals));
     EXPECT_GT(p.k_tangential, 0.0);
@@ -348,18 +357,19 @@ std::string sine_csv(int N, double delta) {
 // fall by about 16 per doubling (observed order > 3.5 from N = 16 on).
 TEST(RoughnessParameters, MeasuredSineConvergesToBuiltInSine) {
     const double delta = 0.5 * H;
-    const roughness_parameters exact = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+    const roughness_parameters exact =
+        compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
     double previous = 0.0;
     for (const int N : {8, 16, 32, 64, 128, 256}) {
         micro_geometry g = geometry(profile_kind::measured, 0.0, decay_kind::linear);
         g.bottom.measured = parse_profile_csv(sine_csv(N, delta), "sine.csv", l);
         const roughness_parameters p = compute_roughness_parameters(g);
-        const double error = std::max({std::fabs(p.k_tangential / exact.k_tangential - 1.0),
-                                       std::fabs(p.k_normal / exact.k_normal - 1.0),
-                                       std::fabs(p.t_tangential / exact.t_tangential - 1.0),
-                                       std::fabs(p.t_normal / exact.t_normal - 1.0)});
+        const double error = std::max(
+            {std::fabs(p.k_tangential / exact.k_tangential - 1.0), std::fabs(p.k_normal / exact.k_normal - 1.0),
+             std::fabs(p.t_tangential / exact.t_tangential - 1.0), std::fabs(p.t_normal / exact.t_normal - 1.0)});
         const double order = previous > 0.0 ? std::log2(previous / error) : 0.0;
-        std::printf("measured sine, N = %3d: max relative error of k, t = %.3e, observed order %.2f\n", N, error, order);
+        std::printf("measured sine, N = %3d: max relative error of k, t = %.3e, observed order %.2f\n", N, error,
+                    order);
         if (N >= 32 && error > 1e-12) {
             EXPECT_GT(order, 3.5) << "N = " << N;
         }
@@ -402,7 +412,9 @@ layer_integrals closed_form_integrals(decay_kind decay, double u0) {
     layer_integrals v;
     switch (decay) {
         case decay_kind::linear: v = {H * std::pow(u0, 3) / 3.0, -0.5 * u0 * u0, u0 / H}; break;
-        case decay_kind::quadratic: v = {H * std::pow(u0, 5) / 5.0, -0.5 * std::pow(u0, 4), 4.0 * std::pow(u0, 3) / (3.0 * H)}; break;
+        case decay_kind::quadratic:
+            v = {H * std::pow(u0, 5) / 5.0, -0.5 * std::pow(u0, 4), 4.0 * std::pow(u0, 3) / (3.0 * H)};
+            break;
         case decay_kind::cosine: {
             // u0/2 - sin(pi u0)/(2 pi) = (x - sin x)/(2 pi), x = pi u0, cancels as u0 -> 0 (all
             // digits lost at u0 = 1e-6): its Taylor series below x = 0.5 (terms to x^15, the
@@ -446,10 +458,12 @@ TEST(RoughnessParameters, LayerIntegralsAgainstClosedFormsUpToTheTop) {
 // (2.11)-(2.14) of the closed-form averages m.
 roughness_parameters expected_parameters(const layer_averages& m) { return parameters_from_averages(m, lambda0, mu0); }
 
-::testing::AssertionResult same_parameters(const roughness_parameters& p, const roughness_parameters& e, double tolerance) {
-    const std::pair<double, double> pairs[] = {{p.k_tangential, e.k_tangential}, {p.k_normal, e.k_normal},
-                                               {p.t_tangential, e.t_tangential}, {p.t_normal, e.t_normal},
-                                               {p.alpha_tangential, e.alpha_tangential}, {p.alpha_normal, e.alpha_normal}};
+::testing::AssertionResult same_parameters(const roughness_parameters& p, const roughness_parameters& e,
+                                           double tolerance) {
+    const std::pair<double, double> pairs[] = {
+        {p.k_tangential, e.k_tangential},         {p.k_normal, e.k_normal},
+        {p.t_tangential, e.t_tangential},         {p.t_normal, e.t_normal},
+        {p.alpha_tangential, e.alpha_tangential}, {p.alpha_normal, e.alpha_normal}};
     for (const auto& [x, expected] : pairs) {
         const ::testing::AssertionResult r = close(x, expected, tolerance);
         if (!r) return r;
@@ -462,7 +476,8 @@ roughness_parameters expected_parameters(const layer_averages& m) { return param
 // H u0^3/6): finite, positive, and the closed forms.
 TEST(RoughnessParameters, ProfileReachingTowardsTheTop) {
     const double delta = 0.999999 * H;
-    const roughness_parameters p = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
+    const roughness_parameters p =
+        compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear));
     EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), tol::roughness_integrals));
     for (const decay_kind decay : {decay_kind::quadratic, decay_kind::cosine}) {
         const roughness_parameters q = compute_roughness_parameters(geometry(profile_kind::sine, delta, decay));
@@ -479,7 +494,8 @@ TEST(RoughnessParameters, ProfileReachingTowardsTheTop) {
     micro_geometry g = geometry(profile_kind::measured, 0.0, decay_kind::linear);
     g.bottom.measured = parse_profile_csv(csv, "flat-near-top.csv", l);
     const roughness_parameters m = compute_roughness_parameters(g);
-    const layer_averages flat{H * std::pow(u0, 3) / 3.0, 0.0, u0 / H, 0.0, 2.0 * M_PI * M_PI * H * std::pow(u0, 3) / 3.0};
+    const layer_averages flat{H * std::pow(u0, 3) / 3.0, 0.0, u0 / H, 0.0,
+                              2.0 * M_PI * M_PI * H * std::pow(u0, 3) / 3.0};
     EXPECT_TRUE(same_parameters(m, expected_parameters(flat), tol::roughness_integrals));
     EXPECT_TRUE(close(m.k_tangential, mu0 * u0 / H, tol::roughness_integrals));
     EXPECT_TRUE(close(m.t_tangential, (lambda0 + 2.0 * mu0) * H * std::pow(u0, 3) / 6.0, tol::roughness_integrals));
@@ -505,8 +521,8 @@ std::string ground_like_csv(int N) {
 // |x - e| <= tolerance * scale, and the estimate `error` covers |x - e| up to the same rounding.
 ::testing::AssertionResult agrees(const char* name, double x, double e, double scale, double error, double tolerance) {
     if (!(std::fabs(x - e) <= tolerance * scale))
-        return ::testing::AssertionFailure() << name << ": " << x << " vs " << e << " (relative to " << scale << ": "
-                                             << (x - e) / scale << ")";
+        return ::testing::AssertionFailure()
+               << name << ": " << x << " vs " << e << " (relative to " << scale << ": " << (x - e) / scale << ")";
     if (!(std::fabs(x - e) <= error + 1e-15 * scale))
         return ::testing::AssertionFailure() << name << ": difference " << x - e << " beyond the estimate " << error;
     return ::testing::AssertionSuccess();
@@ -527,9 +543,12 @@ TEST(PiecewiseAverages, AgreesWithAdaptiveOn64Samples) {
         const layer_averages &m = p.averages, &e = p.averages_error, &r = q.averages;
         EXPECT_TRUE(agrees("<a>", m.a, r.a, r.a, e.a, tol::roughness_integrals));
         EXPECT_TRUE(agrees("<a33>", m.a33, r.a33, r.a33, e.a33, tol::roughness_integrals));
-        EXPECT_TRUE(agrees("<a h_1^2>", m.a_h1_squared, r.a_h1_squared, r.a_h1_squared, e.a_h1_squared, tol::roughness_integrals));
-        EXPECT_TRUE(agrees("<a h_1>", m.a_h1, r.a_h1, std::sqrt(r.a * r.a_h1_squared), e.a_h1, tol::roughness_integrals));
-        EXPECT_TRUE(agrees("<a3 h_1>", m.a3_h1, r.a3_h1, std::sqrt(r.a33 * r.a_h1_squared), e.a3_h1, tol::roughness_integrals));
+        EXPECT_TRUE(agrees("<a h_1^2>", m.a_h1_squared, r.a_h1_squared, r.a_h1_squared, e.a_h1_squared,
+                           tol::roughness_integrals));
+        EXPECT_TRUE(
+            agrees("<a h_1>", m.a_h1, r.a_h1, std::sqrt(r.a * r.a_h1_squared), e.a_h1, tol::roughness_integrals));
+        EXPECT_TRUE(
+            agrees("<a3 h_1>", m.a3_h1, r.a3_h1, std::sqrt(r.a33 * r.a_h1_squared), e.a3_h1, tol::roughness_integrals));
         EXPECT_TRUE(same_parameters(p, q, tol::roughness_integrals));
         // The estimates are honest but not absurd: below 1e-12 of the values.
         EXPECT_LT(p.k_normal_error, tol::roughness_integrals * p.k_normal);
@@ -545,14 +564,14 @@ TEST(PiecewiseAverages, AgreesWithAdaptiveOn64Samples) {
 TEST(PiecewiseAverages, BuiltInProfilesClosedForms) {
     for (const double delta : {0.1 * H, 0.5 * H, 0.9 * H, 0.999999 * H}) {
         SCOPED_TRACE(delta);
-        const roughness_parameters p =
-            compute_roughness_parameters(geometry(profile_kind::sine, delta, decay_kind::linear), averages_rule::piecewise);
+        const roughness_parameters p = compute_roughness_parameters(
+            geometry(profile_kind::sine, delta, decay_kind::linear), averages_rule::piecewise);
         EXPECT_EQ(p.evaluations, min_pieces * 15);
         EXPECT_TRUE(same_parameters(p, expected_parameters(sine_linear_closed_form(delta)), tol::roughness_integrals));
     }
     const double delta = 0.8 * H, eps = delta / H;
-    const roughness_parameters p =
-        compute_roughness_parameters(geometry(profile_kind::sawtooth, delta, decay_kind::linear), averages_rule::piecewise);
+    const roughness_parameters p = compute_roughness_parameters(
+        geometry(profile_kind::sawtooth, delta, decay_kind::linear), averages_rule::piecewise);
     EXPECT_TRUE(close(p.averages.a33, (1.0 - eps / 2.0) / H, tol::roughness_integrals));
     EXPECT_TRUE(close(p.averages.a, H * (1.0 - std::pow(1.0 - eps, 4)) / (12.0 * eps), tol::roughness_integrals));
 }
@@ -605,7 +624,8 @@ std::string violation(const micro_geometry& g) {
 ::testing::AssertionResult says(const std::string& message, std::initializer_list<const char*> fragments) {
     if (message.empty()) return ::testing::AssertionFailure() << "no violation reported";
     for (const char* f : fragments)
-        if (message.find(f) == std::string::npos) return ::testing::AssertionFailure() << "'" << f << "' not in: " << message;
+        if (message.find(f) == std::string::npos)
+            return ::testing::AssertionFailure() << "'" << f << "' not in: " << message;
     return ::testing::AssertionSuccess() << message;
 }
 
@@ -619,9 +639,12 @@ micro_geometry measured(const std::string& csv, double layer_H) {
 
 TEST(Conditions, EachViolationItsMessage) {
     EXPECT_EQ(violation(geometry(profile_kind::sine, 0.5 * H, decay_kind::linear)), "");
-    EXPECT_TRUE(says(violation(geometry(profile_kind::sine, H, decay_kind::linear)), {"delta = 1e-05", "not below H", "0 <= h0 < H"}));
-    EXPECT_TRUE(says(violation(geometry(profile_kind::sawtooth, 2 * H, decay_kind::linear)), {"sawtooth", "0 <= h0 < H"}));
-    EXPECT_TRUE(says(violation(geometry(profile_kind::sine, -1e-7, decay_kind::linear)), {"delta must be finite and >= 0"}));
+    EXPECT_TRUE(says(violation(geometry(profile_kind::sine, H, decay_kind::linear)),
+                     {"delta = 1e-05", "not below H", "0 <= h0 < H"}));
+    EXPECT_TRUE(
+        says(violation(geometry(profile_kind::sawtooth, 2 * H, decay_kind::linear)), {"sawtooth", "0 <= h0 < H"}));
+    EXPECT_TRUE(
+        says(violation(geometry(profile_kind::sine, -1e-7, decay_kind::linear)), {"delta must be finite and >= 0"}));
     micro_geometry bad_layer = geometry(profile_kind::flat, 0.0, decay_kind::linear);
     bad_layer.material.mu0 = 0.0;
     EXPECT_TRUE(says(violation(bad_layer), {"mu0 must be finite and > 0"}));
@@ -629,8 +652,10 @@ TEST(Conditions, EachViolationItsMessage) {
     bad_layer.material.H = std::nan("");
     EXPECT_TRUE(says(violation(bad_layer), {"H must be finite and > 0"}));
     // Samples: a negative h0 and an h0 at H, each naming its line (line 1 is the header).
-    EXPECT_TRUE(says(violation(measured("x1,h0\n0,0\n2,1\n4,-0.5\n6,1\n", 10.0)), {"p.csv:4:", "h0 = -0.5", "below 0"}));
-    EXPECT_TRUE(says(violation(measured("0,0\n2,1\n# c\n4,10\n6,1\n", 10.0)), {"p.csv:4:", "h0 = 10", "not below H = 10"}));
+    EXPECT_TRUE(
+        says(violation(measured("x1,h0\n0,0\n2,1\n4,-0.5\n6,1\n", 10.0)), {"p.csv:4:", "h0 = -0.5", "below 0"}));
+    EXPECT_TRUE(
+        says(violation(measured("0,0\n2,1\n# c\n4,10\n6,1\n", 10.0)), {"p.csv:4:", "h0 = 10", "not below H = 10"}));
     // The spline through a step overshoots: below 0 beside the step's foot, above the top
     // beside its head, though every sample is within [0, H).
     const std::string step = "0,0\n1,0\n2,0\n3,0\n4,1\n5,1\n6,1\n7,1\n";
@@ -648,8 +673,8 @@ TEST(Conditions, EachViolationItsMessage) {
 TEST(Conditions, DecayViolations) {
     const auto ok = decay_violations([](double x) { return 1.0 - x; }, [](double) { return -1.0; }, 1.0, "linear");
     EXPECT_TRUE(ok.empty());
-    const auto bad = decay_violations([](double x) { return 2.0 - 1.5 * x; }, [](double x) { return x < 0.5 ? -1.0 : 0.0; },
-                                      1.0, "mine");
+    const auto bad = decay_violations([](double x) { return 2.0 - 1.5 * x; },
+                                      [](double x) { return x < 0.5 ? -1.0 : 0.0; }, 1.0, "mine");
     ASSERT_EQ(bad.size(), 3u);
     EXPECT_TRUE(says(bad[0], {"decay 'mine'", "d(0) = 2", "d(0) = 1"}));
     EXPECT_TRUE(says(bad[1], {"d(H) = 0.5", "d(H) = 0"}));
@@ -682,7 +707,8 @@ TEST(RoughnessParameters, ExtremeScales) {
         EXPECT_TRUE(close(q.averages.a, p.averages.a * s, tol::roughness_integrals));
         EXPECT_TRUE(close(q.averages.a33, p.averages.a33 / s, tol::roughness_integrals));
     }
-    EXPECT_TRUE(says(violation(scaled(1.0, 1e-295)), {"H = 1.0000000000000002e-300 m", "puts k", "inf", "outside the range of double"}));
+    EXPECT_TRUE(says(violation(scaled(1.0, 1e-295)),
+                     {"H = 1.0000000000000002e-300 m", "puts k", "inf", "outside the range of double"}));
     EXPECT_THROW(compute_roughness_parameters(scaled(1.0, 1e-295)), input_error);
     // And t beyond DBL_MAX: H = 1e300 m with steel moduli, t = 2.69e311 Pa m.
     EXPECT_TRUE(says(violation(scaled(1.0, 1e305)), {"puts t", "outside the range of double"}));

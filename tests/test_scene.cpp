@@ -207,8 +207,8 @@ TEST(Scene, TermNeedsBothTAndA) {
 }
 
 TEST(Scene, LoadMustBeFiniteAndCarriedByFriction) {
-    EXPECT_TRUE(rejects("friction = 0.3\nQ = 0.4\n",
-                        {"scene.toml: 'Q'", "|Q| = 0.4 exceeds f = 0.3: the cylinders slide"}));
+    EXPECT_TRUE(
+        rejects("friction = 0.3\nQ = 0.4\n", {"scene.toml: 'Q'", "|Q| = 0.4 exceeds f = 0.3: the cylinders slide"}));
     EXPECT_TRUE(rejects("friction = 0.3\nQ = -0.4\n", {"'Q'", "|Q| = 0.4 exceeds f = 0.3", "slide"}));
     EXPECT_TRUE(rejects("friction = 0.3\nQ = nan\n", {"'Q' must be finite (got ", "nan)"}));
     EXPECT_TRUE(rejects("friction = 0.3\nQ = inf\n", {"'Q' must be finite (got inf)"}));
@@ -223,8 +223,7 @@ TEST(Scene, UnknownKeyAtTopLevel) {
 
 TEST(Scene, UnknownKeyInsideCylinder) {
     EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1]\nrough = true\n", {"unknown key 'cylinder1.rough'"}));
-    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.normals]\nT = 1\nA = 1\n",
-                        {"unknown table 'cylinder2.normals'"}));
+    EXPECT_TRUE(rejects("friction = 0.3\n[cylinder2.normals]\nT = 1\nA = 1\n", {"unknown table 'cylinder2.normals'"}));
 }
 
 TEST(Scene, UnknownKeyInsideTerm) {
@@ -257,14 +256,15 @@ TEST(Scene, NodeCountMustBeAnIntegerInRange) {
     EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = 1\n", {"'solver.n' = 1 is outside [2, 1000]"}));
     EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = -3\n", {"'solver.n' = -3 is outside [2, 1000]"}));
     // Beyond int: must not wrap around into the range when narrowed.
-    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nn = 4294967496\n",
-                        {"'solver.n' = 4294967496 is outside [2, 1000]"}));
+    EXPECT_TRUE(
+        rejects("friction = 0.3\n[solver]\nn = 4294967496\n", {"'solver.n' = 4294967496 is outside [2, 1000]"}));
 }
 
 TEST(Scene, MethodMustBeAKnownName) {
     EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = \"foo\"\n",
                         {"scene.toml: 'solver.method'", "unknown method 'foo'"}));
-    EXPECT_TRUE(rejects("friction = 0.3\n[solver]\nmethod = 1\n", {"'solver.method' must be a string, not an integer"}));
+    EXPECT_TRUE(
+        rejects("friction = 0.3\n[solver]\nmethod = 1\n", {"'solver.method' must be a string, not an integer"}));
     EXPECT_EQ(parse_scene("friction = 0.3\n[solver]\nmethod = \"paper\"\n", source).solver.how, method::paper);
 }
 
@@ -295,7 +295,8 @@ TEST(Scene, MessagesStayOnOneLine) {
 class temp_file {
 public:
     temp_file(const std::string& name, const std::string& text)
-        : path_(std::filesystem::path(::testing::TempDir()) / ("roughroll_" + std::to_string(::getpid()) + "_" + name)) {
+        : path_(std::filesystem::path(::testing::TempDir()) /
+                ("roughroll_" + std::to_string(::getpid()) + "_" + name)) {
         std::ofstream(path_) << text;
     }
     ~temp_file() {
@@ -468,9 +469,10 @@ TEST(PhysicalScene, DimensionlessTermsAreTakenAtTheHertzWidth) {
 // |P1| = f P2 exactly in decimal, whose quotient P1/P2 rounds one ulp above f: the load is
 // f (the limit of the curve), not a refusal naming a Q the user never wrote.
 TEST(PhysicalScene, LoadAtTheFrictionLimitSurvivesRounding) {
-    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 703382.385\nP1 = 334106.632875\n"
-                                "friction = 0.475\n",
-                                source);
+    const scene s = parse_scene(
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 703382.385\nP1 = 334106.632875\n"
+        "friction = 0.475\n",
+        source);
     EXPECT_EQ(*s.Q, 0.475);
     EXPECT_EQ(load_of(s, std::nullopt), 0.475);
 }
@@ -509,8 +511,9 @@ decay = "linear"
 }
 
 TEST(PhysicalScene, MicroGeometryMistakes) {
-    const std::string layer = "[cylinder1.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\n"
-                              "profile = \"flat\"\ndecay = \"linear\"\n";
+    const std::string layer =
+        "[cylinder1.micro_geometry]\nlambda0 = 1.2e11\nmu0 = 8e10\nH = 1e-5\nl = 1e-4\n"
+        "profile = \"flat\"\ndecay = \"linear\"\n";
     const std::string physical = "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nfriction = 0.3\n";
     EXPECT_TRUE(rejects("friction = 0.3\n" + layer, {"'cylinder1.micro_geometry'", "needs a physical scene"}));
     EXPECT_TRUE(rejects(physical + "[cylinder1.normal]\nk = 1e14\nt = 1e6\n" + layer,
@@ -540,9 +543,9 @@ TEST(PhysicalScene, HertzWidthBeyondDoublePrecisionNamesItsKeys) {
 TEST(PhysicalScene, RoughnessBeyondDoublePrecisionNamesItsKeys) {
     const std::string phys = physical_base + "E = 210e9\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\n";
     // T = a mu/(8 (1 - nu) t) = inf at a_H for t = 1e-305.
-    EXPECT_TRUE(rejects(phys + "[cylinder1.tangential]\nk = 4e14\nt = 1e-305\n",
-                        {"'cylinder1.tangential': T = a mu/(8 (1 - nu) t) of (3.26) = inf",
-                         "check 'cylinder1.tangential.t' and 'E'"}));
+    EXPECT_TRUE(rejects(
+        phys + "[cylinder1.tangential]\nk = 4e14\nt = 1e-305\n",
+        {"'cylinder1.tangential': T = a mu/(8 (1 - nu) t) of (3.26) = inf", "check 'cylinder1.tangential.t' and 'E'"}));
     // A = a sqrt(k/(2 t)) = inf (T = 1.4e306 is still a double).
     EXPECT_TRUE(rejects(phys + "[cylinder2.normal]\nk = 1e308\nt = 1e-300\n",
                         {"'cylinder2.normal': A = a sqrt(k/(2 t)) of (3.26) = inf",
@@ -562,8 +565,9 @@ TEST(PhysicalScene, RoughnessBeyondDoublePrecisionNamesItsKeys) {
 // The one underflow rule (text.hpp) in scene files: a nonzero literal below DBL_MIN is
 // refused with its key, line and column; a zero written any way is 0.
 TEST(Scene, UnderflowRefusedWhereverWritten) {
-    EXPECT_TRUE(rejects("friction = 1e-400\n", {"scene.toml:1:12:", "'friction' = 1e-400 is below 2.2250738585072014e-308",
-                                                 "it would be read as 0"}));
+    EXPECT_TRUE(
+        rejects("friction = 1e-400\n",
+                {"scene.toml:1:12:", "'friction' = 1e-400 is below 2.2250738585072014e-308", "it would be read as 0"}));
     EXPECT_TRUE(rejects("friction = 0.3\nQ = -2.5e-310\n",
                         {"scene.toml:2:5:", "'Q' = -2.5e-310 is below", "the subnormal -2.5e-310, with digits lost"}));
     EXPECT_TRUE(rejects("friction = 0.3\n[cylinder1]\ntangential = { T = 0.5, A = 0.000_000_1e-302 }\n",
@@ -618,7 +622,6 @@ TEST(ReadScene, RecordsTheFilesRead) {
     EXPECT_EQ(read_scene(path).files, std::vector<std::string>{path});
     std::filesystem::remove(path);
 }
-
 
 // docs/formulation.md 8(a): a material per cylinder gives C and Dundurs' beta_D; equal materials
 // written per cylinder are the one-material scene (C = 2 (1 - nu)/mu, beta_D = 0).
@@ -682,8 +685,10 @@ t = 1.5e6
     const scene b = parse_scene(one_text, source);
     EXPECT_EQ(a.materials.beta_d, 0.0);
     EXPECT_NEAR(compliance(*a.physical), compliance(*b.physical), 1e-15 * compliance(*b.physical));
-    EXPECT_NEAR(hertz_half_width(*a.physical, 1e5), hertz_half_width(*b.physical, 1e5), 1e-15 * hertz_half_width(*b.physical, 1e5));
-    EXPECT_NEAR(a.surfaces.cylinder1.tangential.T, b.surfaces.cylinder1.tangential.T, 1e-14 * b.surfaces.cylinder1.tangential.T);
+    EXPECT_NEAR(hertz_half_width(*a.physical, 1e5), hertz_half_width(*b.physical, 1e5),
+                1e-15 * hertz_half_width(*b.physical, 1e5));
+    EXPECT_NEAR(a.surfaces.cylinder1.tangential.T, b.surfaces.cylinder1.tangential.T,
+                1e-14 * b.surfaces.cylinder1.tangential.T);
     EXPECT_EQ(b.materials.beta_d, 0.0);
 }
 
@@ -723,9 +728,10 @@ TEST(LoadRatio, FollowsTheFrictionOverride) {
 
 TEST(LoadRatio, OneLoadOnly) {
     EXPECT_TRUE(rejects("friction = 0.3\nQ = 0.1\nQ_over_f = 0.5\n", {"'Q' or 'Q_over_f', not both"}));
-    EXPECT_TRUE(rejects("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1e4\nQ_over_f = 0.5\n"
-                        "friction = 0.3\n",
-                        {"'Q_over_f' or 'P1', not both"}));
+    EXPECT_TRUE(
+        rejects("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1e4\nQ_over_f = 0.5\n"
+                "friction = 0.3\n",
+                {"'Q_over_f' or 'P1', not both"}));
 }
 
 TEST(LoadRatio, RangeAndFiniteness) {
@@ -779,9 +785,10 @@ TEST(LoadP1, Overrides) {
     EXPECT_NE(error(s, 30001.0).find("P1 must satisfy |P1| <= f P2"), std::string::npos);
     EXPECT_NE(error(s, std::nan("")).find("P1 must be finite"), std::string::npos);
     EXPECT_NE(error(with_friction(0.3, 0.1), 1e4).find("P1 (N/m) needs a physical scene"), std::string::npos);
-    const scene hertz = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nQ = 0.1\n"
-                                    "contact_width = \"hertz\"\nfriction = 0.3\n",
-                                    source);
+    const scene hertz = parse_scene(
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nQ = 0.1\n"
+        "contact_width = \"hertz\"\nfriction = 0.3\n",
+        source);
     EXPECT_NE(error(hertz, 1e4).find("given-load"), std::string::npos);
 }
 

@@ -49,8 +49,9 @@ TEST(ParseDouble, TheOneNumberRule) {
     EXPECT_FALSE(parse_double("1e-400", problem));
     EXPECT_EQ(problem, "1e-400 is below 2.2250738585072014e-308, the smallest normal double: it would be read as 0");
     EXPECT_FALSE(parse_double("-1e-310", problem));
-    EXPECT_EQ(problem, "-1e-310 is below 2.2250738585072014e-308, the smallest normal double: it would be read as "
-                       "the subnormal -1e-310, with digits lost");
+    EXPECT_EQ(problem,
+              "-1e-310 is below 2.2250738585072014e-308, the smallest normal double: it would be read as "
+              "the subnormal -1e-310, with digits lost");
     EXPECT_FALSE(parse_double("1e400", problem));
     EXPECT_EQ(problem, "1e400 is beyond 1.7976931348623157e+308, the largest double");
 }

@@ -51,9 +51,9 @@ void expect_order(const roughness& r, method how, const std::vector<int>& ns, do
         err.push_back({v.lambda - ref.lambda, v.c0 - ref.c0, v.xi - ref.xi});
     }
     for (std::size_t i = 0; i + 1 < ns.size(); ++i) {
-        for (auto [name, a, b] : {std::tuple{"lambda", err[i].lambda, err[i + 1].lambda},
-                                  std::tuple{"c0", err[i].c0, err[i + 1].c0},
-                                  std::tuple{"xi", err[i].xi, err[i + 1].xi}}) {
+        for (auto [name, a, b] :
+             {std::tuple{"lambda", err[i].lambda, err[i + 1].lambda}, std::tuple{"c0", err[i].c0, err[i + 1].c0},
+              std::tuple{"xi", err[i].xi, err[i + 1].xi}}) {
             const double p = order(a, b);
             EXPECT_GT(p, lo) << name << " n = " << ns[i] << ": errors " << a << " -> " << b;
             EXPECT_LT(p, hi) << name << " n = " << ns[i] << ": errors " << a << " -> " << b;

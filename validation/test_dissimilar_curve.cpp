@@ -97,7 +97,8 @@ TEST(DissimilarCurve, ContinuousThroughTheBrakedTransition) {
     for (std::size_t i = 0; i < rows.size(); ++i) {
         ASSERT_FALSE(rows[i].is_refused()) << rows[i].refused;
         EXPECT_EQ(bool(rows[i].solution.five), loads[i] > -0.074 * f) << loads[i];
-        std::printf("Q/f = %.3f: xi %.9f (%s)\n", loads[i] / f, rows[i].solution.xi, rows[i].solution.five ? "five" : "three");
+        std::printf("Q/f = %.3f: xi %.9f (%s)\n", loads[i] / f, rows[i].solution.xi,
+                    rows[i].solution.five ? "five" : "three");
         if (i > 0) steps.push_back(rows[i - 1].solution.xi - rows[i].solution.xi);  // falling Q: falling xi
     }
     const auto [low, high] = std::minmax_element(steps.begin(), steps.end());

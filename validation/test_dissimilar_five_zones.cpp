@@ -35,9 +35,10 @@ five_zone_solution product(double f, double Q, int n = 32, const roughness& r = 
 // order-1 Richardson value of N = 100, 200 within their spread), the ends within two cells of N = 200.
 double against_grid(double f, double Q, const roughness& r = roughness{}) {
     const five_zone_solution s = product(f, Q, 32, r);
-    std::printf("f = %.3f, Q/f = %.2f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f (Newton %d, sweeps %d); margins stick "
-                "%.2e, slip %.2e\n", f, Q / f, s.s1, s.c1, s.s2, s.c2, s.xi, s.iterations, s.sweeps,
-                s.checks.stick_margin, s.checks.slip_margin);
+    std::printf(
+        "f = %.3f, Q/f = %.2f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f (Newton %d, sweeps %d); margins stick "
+        "%.2e, slip %.2e\n",
+        f, Q / f, s.s1, s.c1, s.s2, s.c2, s.xi, s.iterations, s.sweeps, s.checks.stick_margin, s.checks.slip_margin);
     EXPECT_TRUE(s.checks.hold()) << s.checks.stick_margin << " " << s.checks.slip_margin;
     EXPECT_NEAR(s.Q, Q, 1e-14);
     contact c(r, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
@@ -51,7 +52,8 @@ double against_grid(double f, double Q, const roughness& r = roughness{}) {
         std::printf("  grid N = %d: xi %.9f, %zu runs\n", N, g.xi, runs.size());
     }
     const double richardson = 2.0 * xi[1] - xi[0], spread = std::fabs(xi[1] - xi[0]);
-    std::printf("  product - grid(200) %.2e, product - Richardson %.2e, spread %.2e\n", s.xi - xi[1], s.xi - richardson, spread);
+    std::printf("  product - grid(200) %.2e, product - Richardson %.2e, spread %.2e\n", s.xi - xi[1], s.xi - richardson,
+                spread);
     EXPECT_LT(std::fabs(s.xi - richardson), spread);
     EXPECT_EQ(runs.size(), 5u);
     if (runs.size() != 5u) return s.xi;
@@ -99,7 +101,8 @@ TEST(DissimilarFiveZones, DrivenAtThreeQuarters) {
     EXPECT_NEAR(s.s1, runs[0].to, 0.02);
     EXPECT_NEAR(s.c1, runs[1].to, 0.02);
     const double richardson = 2.0 * g200.xi - g100.xi, spread = std::fabs(g200.xi - g100.xi);
-    std::printf("  grid %.9f, %.9f; product - Richardson %.2e, spread %.2e\n", g100.xi, g200.xi, s.xi - richardson, spread);
+    std::printf("  grid %.9f, %.9f; product - Richardson %.2e, spread %.2e\n", g100.xi, g200.xi, s.xi - richardson,
+                spread);
     EXPECT_LT(std::fabs(s.xi - richardson), spread);
 }
 
@@ -184,8 +187,10 @@ TEST(DissimilarFiveZones, NearbyScenesAllSolve) {
     const double f = 0.05;
     // Smooth, xi converges in n to the bit (ConvergesInN): one reference at n = 32 serves n = 64 too.
     const double reference = product(f, 0.0, 32).xi;
-    const std::vector<std::pair<double, int>> cases{
-        {beta_al_st * (1.0 - 1e-15), 32}, {0.1438337435056057, 32}, {beta_al_st * (1.0 + 1e-9), 32}, {0.1438337435056057, 64}};
+    const std::vector<std::pair<double, int>> cases{{beta_al_st * (1.0 - 1e-15), 32},
+                                                    {0.1438337435056057, 32},
+                                                    {beta_al_st * (1.0 + 1e-9), 32},
+                                                    {0.1438337435056057, 64}};
     for (const auto& [beta, n] : cases) {
         contact c(roughness{}, f, solver_options{n, method::product}, dissimilar{beta, coupling_level::johnson});
         dissimilar_zones d(c.tangential(), kernel{}, beta);
@@ -271,7 +276,8 @@ TEST(DissimilarFiveZones, BrakedSideHandsOverToThreeZones) {
     const auto near = d.five_zones(-0.02 * f);
     ASSERT_TRUE(near);
     EXPECT_TRUE(near->checks.hold());
-    std::printf("Q/f = -0.02: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f\n", near->s1, near->c1, near->s2, near->c2, near->xi);
+    std::printf("Q/f = -0.02: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f\n", near->s1, near->c1, near->s2, near->c2,
+                near->xi);
     const auto last = d.five_zones(-0.0725 * f, {near->s1, near->c1, near->s2, near->c2});
     ASSERT_TRUE(last);
     EXPECT_TRUE(last->checks.hold());
@@ -281,8 +287,8 @@ TEST(DissimilarFiveZones, BrakedSideHandsOverToThreeZones) {
     const tangential_solution three = d.solve(-0.075 * f);
     EXPECT_TRUE(three.checks.hold());
     EXPECT_FALSE(three.opposite);
-    std::printf("Q/f = -0.0725: five [%.6f, %.6f], [%.6f, %.6f] xi %.9f; -0.075: three [%.6f, %.6f] xi %.9f\n", last->s1,
-                last->c1, last->s2, last->c2, last->xi, three.start, three.c0, three.xi);
+    std::printf("Q/f = -0.0725: five [%.6f, %.6f], [%.6f, %.6f] xi %.9f; -0.075: three [%.6f, %.6f] xi %.9f\n",
+                last->s1, last->c1, last->s2, last->c2, last->xi, three.start, three.c0, three.xi);
     // Continuity through the transition: the merged stick zone's ends are the outer ends of the five,
     // and the creep moves by the local slope times the step (slope from the five zones' -0.02 .. -0.0725).
     EXPECT_NEAR(three.start, last->s1, 0.002);

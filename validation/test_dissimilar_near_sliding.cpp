@@ -70,7 +70,9 @@ std::pair<double, double> truncated_entry_ends(int n, double Q, double s, double
             psi += t.psi_b[j] * (j % 2 ? -1.0 : 1.0) * static_cast<double>(j + 1);  // U_j(-1)
         return psi;
     };
-    const auto load = [&](double start, double end) { return ts.solve_on_zone(start, end, -beta_al_st).Q - std::fabs(Q); };
+    const auto load = [&](double start, double end) {
+        return ts.solve_on_zone(start, end, -beta_al_st).Q - std::fabs(Q);
+    };
     const auto secant = [](const std::function<double(double)>& g, double x) {
         double x0 = x, x1 = x + 1e-7, g0 = g(x0), g1 = g(x1);
         for (int k = 0; k < 8 && g1 != g0; ++k) {
@@ -105,8 +107,8 @@ TEST(DissimilarNearSliding, BrakedPairAnsweredAtTheDefaultNWithBoundsThatHold) {
     EXPECT_LT(s.rho(), 0.03);  // the stick zone near gross sliding
     const auto coarse = at(32, braked), fine = at(512, braked);
     ASSERT_TRUE(coarse && fine);
-    std::printf("n = 128: start %.15f +- %.2e, c0 %.15f +- %.2e, xi %.16f +- %.2e\n", s.start, p->estimate.start,
-                s.c0, p->estimate.c0, s.xi, p->estimate.xi);
+    std::printf("n = 128: start %.15f +- %.2e, c0 %.15f +- %.2e, xi %.16f +- %.2e\n", s.start, p->estimate.start, s.c0,
+                p->estimate.c0, s.xi, p->estimate.xi);
     for (const routed* r : {&*coarse, &*fine}) {
         std::printf("  against start %.15f (+- %.2e) c0 %.15f (+- %.2e) xi %.16f: %.2e %.2e %.2e\n", r->solution.start,
                     r->estimate.start, r->solution.c0, r->estimate.c0, r->solution.xi,
@@ -169,7 +171,7 @@ TEST(DissimilarNearSliding, DrivenPairAnsweredWhereTheLeadingSlipZoneIsThin) {
     EXPECT_TRUE(s.checks.hold());
     EXPECT_GT(s.start, -1.0);
     EXPECT_LT(s.start, -1.0 + 4.8e-3);  // inside the scan's first trial start
-    EXPECT_TRUE(s.opposite);             // slip- on the leading zone, slip+ on the trailing one
+    EXPECT_TRUE(s.opposite);            // slip- on the leading zone, slip+ on the trailing one
     const double both = point->estimate.start + fine->estimate.start;
     EXPECT_LE(std::fabs(s.start - fine->solution.start), both);
     EXPECT_LE(std::fabs(s.c0 - fine->solution.c0), point->estimate.c0 + fine->estimate.c0);

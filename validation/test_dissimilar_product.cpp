@@ -266,25 +266,28 @@ TEST(DissimilarProduct, StructuresNotBuiltAreRefused) {
 TEST(DissimilarProduct, HonestEstimates) {
     const double f = 0.05;
     for (const roughness& r : {roughness{}, unequal_layers()}) {
-      for (double Q : {-0.75 * f, 0.9 * f}) {  // both slip zones with Q; the leading one against it
-        for (method how : {method::paper, method::product, method::extrapolated}) {
-            // The blended zone's W costs an adaptive quadrature per collocation point: product only.
-            if (Q > 0.0 && how != method::product) continue;
-            const int n = how == method::paper ? 64 : 32;
-            contact c(r, f, solver_options{n, how}, dissimilar{beta_al_st, coupling_level::johnson});
-            contact fine(r, f, solver_options{4 * n, level_of(how)}, dissimilar{beta_al_st, coupling_level::johnson});
-            const tangential_solution s = c.point(Q), t = fine.point(Q);
-            EXPECT_TRUE(s.checks.hold());
-            const auto e = c.estimate(s);
-            ASSERT_TRUE(e.has_value());
-            std::printf("Q/f = %g, %s n = %d: xi %.12f (estimate %.1e, against 4n %.1e), start %.1e vs %.1e, c0 %.1e vs %.1e\n",
-                        Q / f, to_string(how).c_str(), n, s.xi, e->xi, std::fabs(s.xi - t.xi), e->start,
-                        std::fabs(s.start - t.start), e->c0, std::fabs(s.c0 - t.c0));
-            EXPECT_LE(std::fabs(s.xi - t.xi), e->xi) << to_string(how);
-            EXPECT_LE(std::fabs(s.c0 - t.c0), e->c0) << to_string(how);
-            EXPECT_LE(std::fabs(s.start - t.start), e->start) << to_string(how);
+        for (double Q : {-0.75 * f, 0.9 * f}) {  // both slip zones with Q; the leading one against it
+            for (method how : {method::paper, method::product, method::extrapolated}) {
+                // The blended zone's W costs an adaptive quadrature per collocation point: product only.
+                if (Q > 0.0 && how != method::product) continue;
+                const int n = how == method::paper ? 64 : 32;
+                contact c(r, f, solver_options{n, how}, dissimilar{beta_al_st, coupling_level::johnson});
+                contact fine(r, f, solver_options{4 * n, level_of(how)},
+                             dissimilar{beta_al_st, coupling_level::johnson});
+                const tangential_solution s = c.point(Q), t = fine.point(Q);
+                EXPECT_TRUE(s.checks.hold());
+                const auto e = c.estimate(s);
+                ASSERT_TRUE(e.has_value());
+                std::printf(
+                    "Q/f = %g, %s n = %d: xi %.12f (estimate %.1e, against 4n %.1e), start %.1e vs %.1e, c0 %.1e vs "
+                    "%.1e\n",
+                    Q / f, to_string(how).c_str(), n, s.xi, e->xi, std::fabs(s.xi - t.xi), e->start,
+                    std::fabs(s.start - t.start), e->c0, std::fabs(s.c0 - t.c0));
+                EXPECT_LE(std::fabs(s.xi - t.xi), e->xi) << to_string(how);
+                EXPECT_LE(std::fabs(s.c0 - t.c0), e->c0) << to_string(how);
+                EXPECT_LE(std::fabs(s.start - t.start), e->start) << to_string(how);
+            }
         }
-      }
     }
 }
 
@@ -339,8 +342,8 @@ TEST(DissimilarProduct, OppositeDirectionsAgainstTheGridRoute) {
             return M_1_PI * (pv + ctx.gx * std::log((1.0 - x) / (1.0 + x))) + kern;
         };
         for (double x : {-0.97, -0.3, 0.5, 0.99}) {
-            const double direct = s.xi + beta_al_st * c.normal().pressure(x) -
-                                  L1([&](double eta) { return c.traction(s, eta); }, x);
+            const double direct =
+                s.xi + beta_al_st * c.normal().pressure(x) - L1([&](double eta) { return c.traction(s, eta); }, x);
             const double e = c.tangential().G(x) + L1([&](double eta) { return c.normal().pressure(eta); }, x);
             EXPECT_NEAR(c.slip_velocity(s, x), direct - f * e, 1e-11) << x;
             if (kernel::normal(r).empty()) {
@@ -366,8 +369,8 @@ TEST(DissimilarProduct, DrivenAtThreeQuartersHasATrailingLayer) {
     EXPECT_FALSE(s.checks.slip_holds);
     EXPECT_GT(d.slip_velocity(s, 0.99), 0.0);
     EXPECT_LT(d.slip_velocity(s, 1.0), 0.0);
-    std::printf("Q/f = 0.75: three zones [-1, %.6f) [%.6f, %.6f] (%.6f, 1], xi %.8f, v(0.99) %.3e, v(1) %.3e\n", s.start,
-                s.start, s.c0, s.c0, s.xi, d.slip_velocity(s, 0.99), d.slip_velocity(s, 1.0));
+    std::printf("Q/f = 0.75: three zones [-1, %.6f) [%.6f, %.6f] (%.6f, 1], xi %.8f, v(0.99) %.3e, v(1) %.3e\n",
+                s.start, s.start, s.c0, s.c0, s.xi, d.slip_velocity(s, 0.99), d.slip_velocity(s, 1.0));
     // contact::point answers with five zones instead, the first stick zone near these three zones'.
     contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     const tangential_solution five = c.point(0.75 * f);

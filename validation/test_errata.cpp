@@ -119,8 +119,8 @@ double stick_kernel_integral(const stick_solution& s, const kernel& k, double r)
         piece p{&s, &k, r, left};
         gsl_function F{integrand, &p};
         double value = 0.0, err = 0.0;
-        const int status = gsl_integration_qaws(&F, left ? -1.0 : r, left ? r : s.c0, t, 1e-15, 1e-12, 1000, w,
-                                                &value, &err);
+        const int status =
+            gsl_integration_qaws(&F, left ? -1.0 : r, left ? r : s.c0, t, 1e-15, 1e-12, 1000, w, &value, &err);
         gsl_integration_qaws_table_free(t);
         EXPECT_EQ(status, GSL_SUCCESS) << gsl_strerror(status) << " at r = " << r;
         EXPECT_LT(err, 1e-11) << "QAWS error estimate at r = " << r;  // far below the residuals measured
@@ -169,8 +169,8 @@ TEST(Errata, E2PrintedKernelSign) {
     EXPECT_LT(xi_printed, xi_carter) << "T = A = 0.5, Q/f = 0.5: printed sign gives creep " << xi_printed
                                      << " below Carter's " << xi_carter << " (consistent " << xi_consistent
                                      << "), against Sec. 4's conclusion";
-    EXPECT_GT(xi_consistent, xi_carter) << "T = A = 0.5, Q/f = 0.5: consistent creep " << xi_consistent
-                                        << ", Carter " << xi_carter << ", printed " << xi_printed;
+    EXPECT_GT(xi_consistent, xi_carter) << "T = A = 0.5, Q/f = 0.5: consistent creep " << xi_consistent << ", Carter "
+                                        << xi_carter << ", printed " << xi_printed;
 }
 
 TEST(Errata, E4E5PrintedStickMapAndSign) {
@@ -253,9 +253,10 @@ TEST(Errata, E6MissingJacobian) {
             res_ok[i] = std::max(res_ok[i], std::fabs(stick_residual(ok, k, f, G, r_ok)));
             res_printed[i] = std::max(res_printed[i], std::fabs(stick_residual(printed, k, f, G, r_printed)));
         }
-        std::printf("E6 n = %d: c0 %.10f (printed %.10f, Carter %.10f), xi %.10f (printed %.10f), "
-                    "max |residual| %.3e (printed %.3e)\n",
-                    ns[i], ok.c0, printed.c0, smooth.c0, ok.xi, printed.xi, res_ok[i], res_printed[i]);
+        std::printf(
+            "E6 n = %d: c0 %.10f (printed %.10f, Carter %.10f), xi %.10f (printed %.10f), "
+            "max |residual| %.3e (printed %.3e)\n",
+            ns[i], ok.c0, printed.c0, smooth.c0, ok.xi, printed.xi, res_ok[i], res_printed[i]);
     }
     // Consistent: the residual is discretisation error of the paper's scheme (second order
     // for kernels with a jump, docs/formulation.md, section 3): it falls by about 4 from
@@ -316,9 +317,10 @@ TEST(Errata, E8NodeSumG) {
                     second[1][g] = std::max(second[1][g], std::fabs(q_sum[i + 1] - 2 * q_sum[i] + q_sum[i - 1]));
                 }
             }
-            std::printf("E8 n = %d: max |second difference of Q(c0)|, d = 1e-3 -> 1e-4: library %.3e -> %.3e, "
-                        "node sum %.3e -> %.3e\n",
-                        n, second[0][0], second[0][1], second[1][0], second[1][1]);
+            std::printf(
+                "E8 n = %d: max |second difference of Q(c0)|, d = 1e-3 -> 1e-4: library %.3e -> %.3e, "
+                "node sum %.3e -> %.3e\n",
+                n, second[0][0], second[0][1], second[1][0], second[1][1]);
             EXPECT_GT(second[0][0] / second[0][1], 50.0) << "library Q(c0) should be smooth, n = " << n;
             EXPECT_LT(second[1][0] / second[1][1], 3.0) << "node-sum Q(c0) should jump, n = " << n;
         }

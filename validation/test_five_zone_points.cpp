@@ -29,8 +29,8 @@ struct run_result {
 };
 
 run_result run_point(double Q, const char* scene = "aluminium-on-steel.toml", int n = 32) {
-    const std::string command = std::string(ROUGHROLL_CLI) + " point " + ROUGHROLL_DATA + "/" + scene +
-                                " --n " + std::to_string(n) + " --Q " + std::to_string(Q) + " --json";
+    const std::string command = std::string(ROUGHROLL_CLI) + " point " + ROUGHROLL_DATA + "/" + scene + " --n " +
+                                std::to_string(n) + " --Q " + std::to_string(Q) + " --json";
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) throw std::runtime_error("popen failed");
     std::string text;
@@ -105,8 +105,10 @@ TEST(FiveZonePoints, RoughPairSecondChanceBoundsTheError) {
     auto within = [&](double coarse, double finer, double bound_fine, double bound, const char* what) {
         EXPECT_LE(std::fabs(coarse - finer) + bound_fine, bound) << what;
     };
-    within(r.out["xi"].get<double>(), fine.out["xi"].get<double>(), e_fine["xi"].get<double>(), e["xi"].get<double>(), "xi");
-    within(r.out["c0"].get<double>(), fine.out["c0"].get<double>(), e_fine["c0"].get<double>(), e["c0"].get<double>(), "c0");
+    within(r.out["xi"].get<double>(), fine.out["xi"].get<double>(), e_fine["xi"].get<double>(), e["xi"].get<double>(),
+           "xi");
+    within(r.out["c0"].get<double>(), fine.out["c0"].get<double>(), e_fine["c0"].get<double>(), e["c0"].get<double>(),
+           "c0");
     within(end2(r.out), end2(fine.out), e_fine["c0"].get<double>(), e["c0"].get<double>(),
            "the second stick zone's end (its bound folded into c0's)");
     within(r.out["stick_start"].get<double>(), fine.out["stick_start"].get<double>(),

@@ -58,9 +58,12 @@ TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
         // the last p1 and the one p was solved with differ by about that.
         EXPECT_NEAR(M_2_PI * p.lambda * p.offset, p.gamma, 1e-15) << Q;
         EXPECT_NEAR(M_2_PI * p.lambda * p.offset + (p.kinks ? p.kinks->constant() : 0.0),
-                    -chebyshev_coefficient_by_qagp(coupled, ends, 0, 1e-12), 1e-10) << Q;
+                    -chebyshev_coefficient_by_qagp(coupled, ends, 0, 1e-12), 1e-10)
+            << Q;
         for (int j = 1; j <= 32; ++j)
-            EXPECT_NEAR(p.b[j - 1], (j == 1 ? M_2_PI * p.lambda : 0.0) + chebyshev_coefficient_by_qagp(coupled, ends, j, 1e-12), 1e-10)
+            EXPECT_NEAR(p.b[j - 1],
+                        (j == 1 ? M_2_PI * p.lambda : 0.0) + chebyshev_coefficient_by_qagp(coupled, ends, j, 1e-12),
+                        1e-10)
                 << "Q = " << Q << ", j = " << j;
         // The coupling matters at this size: the pressure is not Johnson's.
         EXPECT_GT(std::fabs(p.offset), 1e-3);
@@ -76,7 +79,8 @@ TEST(FullCoupling, LambdaOffsetAndCreepConverge) {
     EXPECT_NEAR(coarse.normal().offset, fine.normal().offset, 1e-7);
     EXPECT_NEAR(a.xi, b.xi, 1e-6);
     // ... while the full coupling moves xi from Johnson's by 5.6e-5 and lambda by 1.6e-4.
-    contact johnson(roughness{}, f, solver_options{128, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact johnson(roughness{}, f, solver_options{128, method::product},
+                    dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_GT(std::fabs(b.xi - johnson.point(-0.75 * f).xi), 5e-5);
     EXPECT_GT(std::fabs(fine.normal().lambda - 1.0), 1e-4);
 }
@@ -110,7 +114,9 @@ TEST(FullCoupling, GrossSlidingAgainstTheClosedForm) {
         const double C = std::cos(delta) / (2.0 * M_PI * a * (1.0 - a));
         const double lambda = 1.0 / (1.0 - 4.0 * delta * delta / (M_PI * M_PI)), e = -2.0 * delta / M_PI;
         const auto p = [&](double r) { return C * std::pow(1.0 - r, a) * std::pow(1.0 + r, 1.0 - a); };
-        const auto sigma_v = [&](double r) { return f * M_2_PI * lambda * (r + e) + sigma * beta_al_st * (1.0 + f * f) * p(r); };
+        const auto sigma_v = [&](double r) {
+            return f * M_2_PI * lambda * (r + e) + sigma * beta_al_st * (1.0 + f * f) * p(r);
+        };
         // The least point by golden section on a bracket from 20001 samples (v is convex there).
         double least = -1.0;
         for (int i = 0; i <= 20000; ++i) {
@@ -139,7 +145,8 @@ TEST(FullCoupling, GrossSlidingAgainstTheClosedForm) {
                 EXPECT_GT(previous_lambda_error / lambda_error, 3.0) << sigma << " " << n;
             }
             previous_lambda_error = lambda_error;
-            std::printf("sigma %+g n %3d: lambda error %.3g, xi error %.3g", sigma, n, lambda_error, std::fabs(s.xi - xi));
+            std::printf("sigma %+g n %3d: lambda error %.3g, xi error %.3g", sigma, n, lambda_error,
+                        std::fabs(s.xi - xi));
             try {  // an estimate bounds the error, or the point is refused
                 const std::optional<error_estimate> est = c.estimate(s);
                 ASSERT_TRUE(est.has_value());
@@ -237,13 +244,13 @@ TEST(FullCoupling, ZoneEndsConvergeWithTheKinksCarried) {
 TEST(FullCoupling, FreeRollingAgainstContact) {
     const double scale = M_PI * (0.1 / 25.0) / 2.0;
     contact c = full(32);
-    contact johnson(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact johnson(roughness{}, f, solver_options{32, method::product},
+                    dissimilar{beta_al_st, coupling_level::johnson});
     const tangential_solution s = c.point(0.0), j = johnson.point(0.0);
     EXPECT_TRUE(s.five);
     EXPECT_NEAR(-scale * s.xi, 0.000429, 0.5e-6);
     EXPECT_GT(std::fabs(-scale * j.xi - 0.000429), 0.5e-6);
 }
-
 
 namespace {
 // Bentall and Johnson's pair as data/aluminium-on-steel.toml gives it (a_H = 0.1 mm), at full
@@ -253,10 +260,11 @@ scene pair(bool swap = false, const std::string& layer = "") {
     const std::string al = "shear_modulus = 23e9\npoisson = 0.31\n", st = "shear_modulus = 82e9\npoisson = 0.28\n";
     const std::string one = swap ? st : al, two = swap ? al : st;
     const std::string layer1 = swap ? "" : layer, layer2 = swap ? layer : "";
-    return parse_scene("R1 = 0.05\nR2 = 0.05\nP2 = 16201.924377003961\nfriction = 0.05\ncoupling = \"full\"\n"
-                       "[solver]\nn = 32\nmethod = \"product\"\n[cylinder1]\n" + one + layer1 +
-                       "[cylinder2]\n" + two + layer2,
-                       "pair.toml", ".");
+    return parse_scene(
+        "R1 = 0.05\nR2 = 0.05\nP2 = 16201.924377003961\nfriction = 0.05\ncoupling = \"full\"\n"
+        "[solver]\nn = 32\nmethod = \"product\"\n[cylinder1]\n" +
+            one + layer1 + "[cylinder2]\n" + two + layer2,
+        "pair.toml", ".");
 }
 const std::string rough_layer = "[cylinder1.normal]\nk = 5.0e14\nt = 1.0e6\n";  // set below for either roller
 
@@ -267,7 +275,7 @@ contact at_width(const scene& s, double a, coupling_level level) {
 
 // int_{-1}^{1} g(r) r / sqrt(1 - r^2) dr by QAWS (weight (1 - r)^(-1/2) (1 + r)^(-1/2)).
 double moment(const std::function<double(double)>& g) {
-    gsl_function F{[](double r, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(r) * r; },
+    gsl_function F{[](double r, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(r)*r; },
                    const_cast<std::function<double(double)>*>(&g)};
     gsl_integration_qaws_table* t = gsl_integration_qaws_table_alloc(-0.5, -0.5, 0, 0);
     gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
@@ -314,8 +322,8 @@ TEST(FullCouplingPhysical, CoupledLambdaToFirstOrderInBeta) {
         remainder[i] = shift[i] - first;
         EXPECT_LT(std::fabs(remainder[i]), 0.5 * std::fabs(shift[i])) << beta;
     }
-    std::printf("lambda - 1 = %.6g, %.6g; remainder beyond first order %.6g, %.6g\n", shift[0], shift[1],
-                remainder[0], remainder[1]);
+    std::printf("lambda - 1 = %.6g, %.6g; remainder beyond first order %.6g, %.6g\n", shift[0], shift[1], remainder[0],
+                remainder[1]);
     EXPECT_GT(remainder[0] / remainder[1], 3.0);
     EXPECT_LT(remainder[0] / remainder[1], 5.0);
 }
@@ -324,7 +332,8 @@ TEST(FullCouplingPhysical, CoupledLambdaToFirstOrderInBeta) {
 // width; also with a rough layer on the aluminium roller, where Johnson's width is not Hertz's.
 TEST(FullCouplingPhysical, RollersExchangedKeepTheWidth) {
     for (const std::string& layer : {std::string(), rough_layer}) {
-        scene a = pair(false, layer), b = pair(true, layer == rough_layer ? "[cylinder2.normal]\nk = 5.0e14\nt = 1.0e6\n" : "");
+        scene a = pair(false, layer),
+              b = pair(true, layer == rough_layer ? "[cylinder2.normal]\nk = 5.0e14\nt = 1.0e6\n" : "");
         const contact_width wa = *settle_width(a, nullptr, -0.75 * f), wb = *settle_width(b, nullptr, 0.75 * f);
         EXPECT_NEAR(wa.a / wb.a, 1.0, 1e-11) << layer;
         scene j = pair(false, layer);
@@ -332,7 +341,8 @@ TEST(FullCouplingPhysical, RollersExchangedKeepTheWidth) {
         const contact_width wj = *settle_width(j);
         EXPECT_GT(std::fabs(wa.a / wj.a - 1.0), 1e-6) << layer;
         std::printf("%s: a/a_H = %.15g at full coupling (%d steps), %.15g at Johnson's level (%d)\n",
-                    layer.empty() ? "smooth" : "rough", wa.a / wa.a_hertz, wa.iterations, wj.a / wj.a_hertz, wj.iterations);
+                    layer.empty() ? "smooth" : "rough", wa.a / wa.a_hertz, wa.iterations, wj.a / wj.a_hertz,
+                    wj.iterations);
         contact c = at_width(a, wa.a, coupling_level::full);
         c.point(-0.75 * f);
         EXPECT_NEAR(c.normal().lambda, (wa.a / wa.a_hertz) * (wa.a / wa.a_hertz), 1e-12) << layer;

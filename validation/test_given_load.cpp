@@ -21,13 +21,12 @@ constexpr double pi = 3.14159265358979323846;
 
 // Steel rollers, R1 = R2 = 20 mm, 100 N/mm, Q = 0.15, f = 0.3; `rough` appended as written.
 scene steel(const std::string& rough, const std::string& extra = "") {
-    return parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n" + extra +
-                           "\n" + rough,
-                       "test");
+    return parse_scene(
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.02\nP2 = 1e5\nP1 = 1.5e4\nfriction = 0.3\n" + extra + "\n" + rough,
+        "test");
 }
 
-const std::string rough_k_t =
-    "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n";
+const std::string rough_k_t = "[cylinder1.tangential]\nk = 4e14\nt = 1.5e6\n[cylinder1.normal]\nk = 8e14\nt = 1.5e6\n";
 
 double lambda_of(const roughness& r, const scene& s) { return contact(r, s.friction, s.solver).normal().lambda; }
 
@@ -89,7 +88,8 @@ TEST(GivenLoad, HertzWidthIsThePapersProblem) {
     const std::string TA = "[cylinder1.tangential]\nT = 0.5\nA = 0.5\n[cylinder1.normal]\nT = 0.5\nA = 0.5\n";
     const scene paper = parse_scene("friction = 0.3\nQ = 0.15\n" + TA, "paper");
     const scene phys = parse_scene(
-        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.05\nP2 = 3e5\nQ = 0.15\nfriction = 0.3\ncontact_width = \"hertz\"\n" + TA,
+        "E = 210e9\nnu = 0.3\nR1 = 0.02\nR2 = 0.05\nP2 = 3e5\nQ = 0.15\nfriction = 0.3\ncontact_width = \"hertz\"\n" +
+            TA,
         "physical");
     const roughness r = roughness_at(*phys.physical, hertz_half_width(*phys.physical, 3e5));
     EXPECT_NEAR(r.cylinder1.normal.T, 0.5, tol::few_roundings);
@@ -127,8 +127,8 @@ TEST(GivenLoad, StressUnitsScaleOut) {
 TEST(GivenLoad, SofterRoughnessWidensTheContactAndRaisesTheCreep) {
     const solved smooth_rollers = solve(steel(""));
     const solved stiff = solve(steel(rough_k_t));
-    const solved soft = solve(
-        steel("[cylinder1.tangential]\nk = 2e14\nt = 0.75e6\n[cylinder1.normal]\nk = 4e14\nt = 0.75e6\n"));
+    const solved soft =
+        solve(steel("[cylinder1.tangential]\nk = 2e14\nt = 0.75e6\n[cylinder1.normal]\nk = 4e14\nt = 0.75e6\n"));
     EXPECT_GT(stiff.width.a, smooth_rollers.width.a);
     EXPECT_GT(soft.width.a, stiff.width.a);
     EXPECT_GT(stiff.si.xi1, smooth_rollers.si.xi1);
@@ -138,7 +138,8 @@ TEST(GivenLoad, SofterRoughnessWidensTheContactAndRaisesTheCreep) {
 
 // A roller on a plane (R2 = inf) is Hertz's with R = R1.
 TEST(GivenLoad, RollerOnAPlane) {
-    const scene s = parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.01\nR2 = inf\nP2 = 1e5\nQ = 0.1\nfriction = 0.3\n", "plane");
+    const scene s =
+        parse_scene("E = 210e9\nnu = 0.3\nR1 = 0.01\nR2 = inf\nP2 = 1e5\nQ = 0.1\nfriction = 0.3\n", "plane");
     EXPECT_EQ(s.physical->radius(), 0.01);
     const double b = std::sqrt(8.0 * 1e5 * 0.01 * (1.0 - 0.09) / (pi * 210e9));
     EXPECT_NEAR(width_of(s).a, b, tol::few_roundings * b);
@@ -179,8 +180,9 @@ TEST(GivenLoad, SharedNormalProblemsGiveTheSamePoint) {
     for (const char* how : {"product", "extrapolated"}) {
         scene s = steel(rough_k_t, std::string("[solver]\nmethod = \"") + how + "\"\n");
         auto search = [&s](normal_cache* cache) {
-            return find_width(*s.physical, [&](const roughness& r) { return load_ratio(r, s.solver, cache); },
-                              [&](const roughness& r) { return coarse_load_ratio(r, s.solver, cache); });
+            return find_width(
+                *s.physical, [&](const roughness& r) { return load_ratio(r, s.solver, cache); },
+                [&](const roughness& r) { return coarse_load_ratio(r, s.solver, cache); });
         };
         normal_cache cache;
         const contact_width shared = search(&cache), alone = search(nullptr);

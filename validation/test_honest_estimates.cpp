@@ -44,9 +44,9 @@ std::vector<layer_scene> scenes() {
             for (int w = 0; w < 4; ++w) {
                 roughness r;
                 roughness_term& layer = w == 0   ? r.cylinder1.normal
-                                         : w == 1 ? r.cylinder2.normal
-                                         : w == 2 ? r.cylinder1.tangential
-                                                  : r.cylinder2.tangential;
+                                        : w == 1 ? r.cylinder2.normal
+                                        : w == 2 ? r.cylinder1.tangential
+                                                 : r.cylinder2.tangential;
                 layer = {T, A};
                 char name[64];
                 std::snprintf(name, sizeof name, "T%g_A%g_%s", T, A, where[w]);
@@ -123,8 +123,10 @@ tally honest_or_refused(method how, int n, int fine_n) {
             EXPECT_LE(std::fabs(coarse->normal().lambda - fine->normal().lambda), e->lambda)
                 << "P_H/P2 " << coarse->normal().lambda << " against " << fine->normal().lambda << " (" << e->against
                 << ")";
-            EXPECT_LE(std::fabs(s.c0 - sf->c0), e->c0) << "c0 " << s.c0 << " against " << sf->c0 << " (" << e->against << ")";
-            EXPECT_LE(std::fabs(s.xi - sf->xi), e->xi) << "xi " << s.xi << " against " << sf->xi << " (" << e->against << ")";
+            EXPECT_LE(std::fabs(s.c0 - sf->c0), e->c0)
+                << "c0 " << s.c0 << " against " << sf->c0 << " (" << e->against << ")";
+            EXPECT_LE(std::fabs(s.xi - sf->xi), e->xi)
+                << "xi " << s.xi << " against " << sf->xi << " (" << e->against << ")";
         }
     }
     std::printf("%s: %d points checked, %d refused, %d flagged (no estimate)\n", to_string(how).c_str(), t.checked,
@@ -157,7 +159,8 @@ TEST(HonestEstimates, StiffNormalLayerSlowsDown) {
         EXPECT_FALSE(at96.estimate(s).has_value()) << "a flagged point carries no estimate";
     } catch (const resolution_error&) {
     }
-    contact at24(r, friction, solver_options{24, method::product}), at48(r, friction, solver_options{48, method::product});
+    contact at24(r, friction, solver_options{24, method::product}),
+        at48(r, friction, solver_options{48, method::product});
     contact fine(r, friction, solver_options{384, method::product});
     const tangential_solution s24 = at24.point(Q), s48 = at48.point(Q), sf = fine.point(Q);
     int bounded = 0;
@@ -218,7 +221,8 @@ TEST(HonestEstimates, NearFullStickConfirmedOnAFourthLevel) {
     r.cylinder2.normal = {10.0, 0.3};
     r.cylinder2.tangential = {0.001, 0.001};
     const double f = 0.05, Q = 5e-11;
-    const reference ref = two_routes(r, f, Q, solver_options{768, method::product}, solver_options{512, method::extrapolated});
+    const reference ref =
+        two_routes(r, f, Q, solver_options{768, method::product}, solver_options{512, method::extrapolated});
     EXPECT_LT(ref.spread_c0, 1e-13);
     honest_or_refused_at(r, f, Q, solver_options{16, method::extrapolated}, ref);
     for (int n : {16, 32, 64}) honest_or_refused_at(r, f, Q, solver_options{n, method::product}, ref);
@@ -242,9 +246,10 @@ TEST(HonestEstimates, OneParameterConfirmedOnAFourthLevel) {
 // n = 128: xi +- 1.3e-5, while the general zones at n = 256 are 7.2e-4 away). Now the point
 // reports no estimate, and says why, in the JSON and the text.
 TEST(HonestEstimates, FlaggedPointSaysWhyItHasNoEstimate) {
-    const scene sc = parse_scene("friction = 0.3\nQ = 0.29997\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
-                                 "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\nn = 128\n",
-                                 "flagged.toml");
+    const scene sc = parse_scene(
+        "friction = 0.3\nQ = 0.29997\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
+        "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\nn = 128\n",
+        "flagged.toml");
     const scene_point p = solve_point(sc, std::nullopt);
     ASSERT_FALSE(p.solution.checks.hold());
     EXPECT_FALSE(p.estimate.has_value());
@@ -254,7 +259,8 @@ TEST(HonestEstimates, FlaggedPointSaysWhyItHasNoEstimate) {
     EXPECT_NE(j["error_estimate_absent"].get<std::string>().find("checks (3.3)-(3.4) fail"), std::string::npos);
     std::ostringstream text;
     write_summary(text, p.report());
-    EXPECT_NE(text.str().find("error estimate      none: the checks (3.3)-(3.4) fail"), std::string::npos) << text.str();
+    EXPECT_NE(text.str().find("error estimate      none: the checks (3.3)-(3.4) fail"), std::string::npos)
+        << text.str();
 }
 
 // Two under-reports of the random-scene study (validation/estimate_grid.py, seed 1), each failing

@@ -31,8 +31,9 @@ using namespace roughroll;
 namespace {
 // The one-parameter case of issue 23, 1 (validation/test_honest_estimates.cpp's flagged point),
 // without n: the ladder chooses it.
-const char* near_sliding = "friction = 0.3\nQ = 0.29997\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
-                           "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\n";
+const char* near_sliding =
+    "friction = 0.3\nQ = 0.29997\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
+    "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\n";
 
 scene with_solver(std::string text, const std::string& solver_lines) {
     return parse_scene(text + solver_lines, "ladder.toml");

@@ -32,7 +32,9 @@ roughness scaled(double A, double eps1, double eps2) {
     return r;
 }
 
-double order(double coarse_difference, double fine_difference) { return std::log2(coarse_difference / fine_difference); }
+double order(double coarse_difference, double fine_difference) {
+    return std::log2(coarse_difference / fine_difference);
+}
 }  // namespace
 
 // (1) The two-parameter solution tends to the limit as A = 10 ... 160 with 2T/A^2 fixed. The
@@ -55,8 +57,8 @@ TEST_P(TwoParameterToLimit, DistanceFallsLikeOneOverA) {
         const tangential_solution s = c.point(Q);
         EXPECT_TRUE(s.checks.hold()) << "A = " << A;
         two.push_back({c.normal().lambda, s.c0, s.xi});
-        distance.push_back({std::fabs(c.normal().lambda - lim.lambda), std::fabs(s.c0 - lim.c0),
-                            std::fabs(s.xi - lim.xi)});
+        distance.push_back(
+            {std::fabs(c.normal().lambda - lim.lambda), std::fabs(s.c0 - lim.c0), std::fabs(s.xi - lim.xi)});
         // The roughness adds compliance towards the limit from below: lambda, c0, xi all increase with A.
         EXPECT_LT(c.normal().lambda, lim.lambda);
     }
@@ -101,9 +103,12 @@ TEST(OneParameter, SecondOrderInN) {
                 EXPECT_LT(order(diff[i], diff[i + 1]), 2.2) << what << " eps1 = " << eps.tangential;
             }
         };
-        check(+[](const values& x) { return x.lambda; }, "lambda");
-        check(+[](const values& x) { return x.c0; }, "c0");
-        check(+[](const values& x) { return x.xi; }, "xi");
+        check(
+            +[](const values& x) { return x.lambda; }, "lambda");
+        check(
+            +[](const values& x) { return x.c0; }, "c0");
+        check(
+            +[](const values& x) { return x.xi; }, "xi");
     }
 }
 
@@ -189,9 +194,9 @@ TEST(OneParameter, ChecksAndSpecialLoads) {
             for (double sign : {1.0, -1.0}) {
                 const tangential_solution t = s.solve(sign * ratio * f);
                 if (ratio > 0.99 && eps.normal > eps.tangential) continue;  // the test below
-                EXPECT_TRUE(t.checks.hold()) << eps.tangential << " " << eps.normal << " Q/f = " << sign * ratio
-                                             << " margins " << t.checks.pressure_margin << " "
-                                             << t.checks.stick_margin << " " << t.checks.slip_margin;
+                EXPECT_TRUE(t.checks.hold())
+                    << eps.tangential << " " << eps.normal << " Q/f = " << sign * ratio << " margins "
+                    << t.checks.pressure_margin << " " << t.checks.stick_margin << " " << t.checks.slip_margin;
                 EXPECT_NEAR(t.Q, sign * ratio * f, 0.0);
                 EXPECT_EQ(t.sign, sign);
                 EXPECT_GT(sign * t.xi, carter(ratio * f, f).xi);

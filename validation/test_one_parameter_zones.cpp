@@ -75,7 +75,9 @@ TEST(OneParameterZones, ConvergesInN) {
             one_parameter_solver s(softer_normal, f, n);
             z.push_back(one_parameter_zones(s).solve(ratio * f));
         }
-        const auto ratio_of = [&](auto get) { return std::fabs(get(z[0]) - get(z[1])) / std::fabs(get(z[1]) - get(z[2])); };
+        const auto ratio_of = [&](auto get) {
+            return std::fabs(get(z[0]) - get(z[1])) / std::fabs(get(z[1]) - get(z[2]));
+        };
         EXPECT_GT(ratio_of([](const tangential_solution& s) { return s.xi; }), 3.0) << ratio;
         EXPECT_GT(ratio_of([](const tangential_solution& s) { return s.start; }), 3.0) << ratio;
         EXPECT_GT(ratio_of([](const tangential_solution& s) { return s.c0; }), 3.0) << ratio;
@@ -101,7 +103,8 @@ TEST(OneParameterZones, AgreesWithTheGridRoute) {
         EXPECT_EQ(runs[2].state, 1);
         EXPECT_NEAR(runs[1].from, z.start, 2.0 * fine.h);
         EXPECT_NEAR(runs[1].to, z.c0, 2.0 * fine.h);
-        EXPECT_LT(std::fabs(fine.xi - z.xi), 1.5 * std::fabs(fine.xi - coarse.xi)) << fine.xi << " " << coarse.xi << " " << z.xi;
+        EXPECT_LT(std::fabs(fine.xi - z.xi), 1.5 * std::fabs(fine.xi - coarse.xi))
+            << fine.xi << " " << coarse.xi << " " << z.xi;
     }
 }
 
@@ -136,8 +139,7 @@ TEST(OneParameterZones, CreepCurveThroughTheRegion) {
     const tangential_solution sliding = c.point(f);
     EXPECT_GT(sliding.start, -1.0);  // r* inside: G'(-1) = -infinity
     std::vector<tangential_solution> curve;
-    for (double ratio : {0.996, 0.997, 0.9971, 0.9972, 0.998, 0.999})
-        curve.push_back(c.point(ratio * f));
+    for (double ratio : {0.996, 0.997, 0.9971, 0.9972, 0.998, 0.999}) curve.push_back(c.point(ratio * f));
     std::vector<double> below;  // xi(f) - xi at 1 - Q/f = 1e-4, ..., 1e-15
     for (int e = 4; e <= 15; ++e) {
         curve.push_back(c.point((1.0 - std::pow(10.0, -e)) * f));

@@ -69,8 +69,7 @@ TEST(SpecialLoads, NegativeLoadIsTheMirror) {
     const auto plus = c.point(0.12), minus = c.point(-0.12);
     EXPECT_EQ(minus.c0, plus.c0);
     EXPECT_EQ(minus.xi, -plus.xi);
-    for (double x : {-0.9, 0.0, 0.6})
-        EXPECT_EQ(c.tangential().traction(minus, x), -c.tangential().traction(plus, x));
+    for (double x : {-0.9, 0.0, 0.6}) EXPECT_EQ(c.tangential().traction(minus, x), -c.tangential().traction(plus, x));
     EXPECT_TRUE(minus.checks.hold());
 }
 

@@ -133,9 +133,10 @@ TEST(RefusedRows, OneParameterZoneSearchWithoutARoot) {
 // from the library's conditions, with neither file nor key).
 TEST(LayerInput, ThicknessBeyondDoublePrecisionNamesFileAndKeys) {
     for (const char* H : {"1e300", "1e-303"}) {
-        const std::string text = std::string("friction = 0.05\nQ = 0.0\nE = 210e9\nnu = 0.3\nR1 = 0.05\nR2 = 0.05\n"
-                                             "P2 = 16201.9\n"
-                                             "[cylinder1.micro_geometry]\nlambda0 = 3.7526e10\nmu0 = 2.3e10\nH = ") +
+        const std::string text = std::string(
+                                     "friction = 0.05\nQ = 0.0\nE = 210e9\nnu = 0.3\nR1 = 0.05\nR2 = 0.05\n"
+                                     "P2 = 16201.9\n"
+                                     "[cylinder1.micro_geometry]\nlambda0 = 3.7526e10\nmu0 = 2.3e10\nH = ") +
                                  H + "\nl = 2.5e-4\nprofile = \"sine\"\ndelta = 0.0\ndecay = \"linear\"\n";
         try {
             (void)parse_scene(text, "layer.toml");

@@ -121,8 +121,8 @@ INSTANTIATE_TEST_SUITE_P(
         // limit near gross sliding with an unresolved layer (2T/A^2 = 2e-6) must be refused.
         extreme_case{"extrapolated_cyl2_normal_T1e5_A1", normal_layer_on_cylinder2(1e5, 1), 0.3, 1.0, 128,
                      method::extrapolated, false},
-        extreme_case{"one_parameter_A1000_gross_sliding_refused", normal_layer_on_cylinder2(1, 1000), 0.3,
-                     1.0 - 1e-15, 128, method::one_parameter, true},
+        extreme_case{"one_parameter_A1000_gross_sliding_refused", normal_layer_on_cylinder2(1, 1000), 0.3, 1.0 - 1e-15,
+                     128, method::one_parameter, true},
         extreme_case{"paper_T100_A0_5", equal(100, 0.5), 0.3, 0.5, 96, method::paper, false},
         extreme_case{"paper_Qf_1e_9", equal(0.5, 0.5), 0.3, 1e-9, 96, method::paper, false},
         extreme_case{"paper_Qf_1_minus_1e_9", equal(0.5, 0.5), 0.3, 1 - 1e-9, 96, method::paper, false},

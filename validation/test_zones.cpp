@@ -63,8 +63,9 @@ double integrate(const std::function<double(double)>& g, double lo, double hi, d
     F.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
     F.params = const_cast<std::function<double(double)>*>(&g);
     double result = 0.0, error = 0.0;
-    const int status = std::isnan(pole) ? gsl_integration_qags(&F, lo, hi, 1e-13, 1e-12, 2000, w, &result, &error)
-                                        : gsl_integration_qawc(&F, lo, hi, pole, 1e-13, 1e-12, 2000, w, &result, &error);
+    const int status = std::isnan(pole)
+                           ? gsl_integration_qags(&F, lo, hi, 1e-13, 1e-12, 2000, w, &result, &error)
+                           : gsl_integration_qawc(&F, lo, hi, pole, 1e-13, 1e-12, 2000, w, &result, &error);
     gsl_integration_workspace_free(w);
     EXPECT_TRUE(status == GSL_SUCCESS || status == GSL_EROUND) << gsl_strerror(status);
     return result;
@@ -137,8 +138,7 @@ TEST(Zones, SolvesTheUnreducedEquations) {
     const tangential_solution z = s.zones.solve(Q);
     ASSERT_TRUE(z.general);
     const auto p1 = [&](double eta) { return s.c.tangential().traction(z, eta); };
-    EXPECT_NEAR(integrate(p1, -1.0, z.start) + integrate(p1, z.start, z.c0) + integrate(p1, z.c0, 1.0), Q,
-                1e-9);
+    EXPECT_NEAR(integrate(p1, -1.0, z.start) + integrate(p1, z.start, z.c0) + integrate(p1, z.c0, 1.0), Q, 1e-9);
     for (double u : {0.1, 0.37, 0.5, 0.81}) {
         const double x = z.start + u * (z.c0 - z.start);
         EXPECT_NEAR(unreduced_operator(s, z, k1, x), z.xi, 1e-8) << x;
@@ -184,7 +184,8 @@ TEST(Zones, CreepCurveContinuousUpToGrossSliding) {
     EXPECT_NEAR(sliding.start, last.start, 1e-4);
     EXPECT_GT(sliding.start, -1.0);
     // xi(f) = -f min G: no sampled point lies lower.
-    for (int i = 0; i <= 400; ++i) EXPECT_LE(-sliding.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + tol::few_roundings);
+    for (int i = 0; i <= 400; ++i)
+        EXPECT_LE(-sliding.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + tol::few_roundings);
     EXPECT_GE(sliding.checks.slip_margin, -tol::margin_floor);
     const tangential_solution mirror = s.zones.solve(-(1.0 - 1e-6) * f);
     const tangential_solution direct = s.zones.solve((1.0 - 1e-6) * f);
@@ -286,8 +287,8 @@ TEST(ZonesGridRoute, FindsSlipStickSlip) {
 TEST(Zones, ForcedGeneralAgreesWithExtrapolated) {
     std::vector<roughness> scenes;
     // Fig. 2(a): T = 0.5, 1 at A = 0.5 (T = 0 is Carter: exact at every level); Fig. 2(b): A = 0, 1 at T = 0.5.
-    for (const roughness_term term : {roughness_term{0.5, 0.5}, roughness_term{1.0, 0.5}, roughness_term{0.5, 0.0},
-                                      roughness_term{0.5, 1.0}}) {
+    for (const roughness_term term :
+         {roughness_term{0.5, 0.5}, roughness_term{1.0, 0.5}, roughness_term{0.5, 0.0}, roughness_term{0.5, 1.0}}) {
         roughness r;
         r.cylinder1.tangential = r.cylinder1.normal = term;
         scenes.push_back(r);

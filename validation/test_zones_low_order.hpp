@@ -56,8 +56,10 @@ struct grid_solution {
         std::vector<run> out;
         for (std::size_t i = 0; i < state.size(); ++i) {
             const double lo = r[i] - 0.5 * h, hi = r[i] + 0.5 * h;
-            if (out.empty() || out.back().state != state[i]) out.push_back({lo, hi, state[i]});
-            else out.back().to = hi;
+            if (out.empty() || out.back().state != state[i])
+                out.push_back({lo, hi, state[i]});
+            else
+                out.back().to = hi;
         }
         return out;
     }
@@ -73,9 +75,12 @@ inline double cell_displacement(const kernel& k, double lo, double hi, double r)
             if (term.A == 0.0) return -term.T * 0.5 * (d1 * d1 - d0 * d0);  // Kt = -T |z|
             return term.T / (term.A * term.A) * (std::exp(-term.A * d0) - std::exp(-term.A * d1));
         };
-        if (lo >= r) u += side(lo - r, hi - r);
-        else if (hi <= r) u += side(r - hi, r - lo);
-        else u += side(0.0, hi - r) + side(0.0, r - lo);
+        if (lo >= r)
+            u += side(lo - r, hi - r);
+        else if (hi <= r)
+            u += side(r - hi, r - lo);
+        else
+            u += side(0.0, hi - r) + side(0.0, r - lo);
     }
     return u;
 }

@@ -57,9 +57,15 @@ void expect_general_and_honest(const roughness& r, const std::vector<double>& lo
 }
 }  // namespace
 
-TEST(ZonesNearSliding, BothRoughA) { expect_general_and_honest(tangential_dominates_a(), {(1.0 - 1e-9) * f, (1.0 - 1e-15) * f}); }
-TEST(ZonesNearSliding, BothRoughB) { expect_general_and_honest(tangential_dominates_b(), {(1.0 - 1e-12) * f, (1.0 - 1e-15) * f}); }
-TEST(ZonesNearSliding, StiffTangentialLayer) { expect_general_and_honest(stiff_tangential_layer(), {0.29999999999999970}); }
+TEST(ZonesNearSliding, BothRoughA) {
+    expect_general_and_honest(tangential_dominates_a(), {(1.0 - 1e-9) * f, (1.0 - 1e-15) * f});
+}
+TEST(ZonesNearSliding, BothRoughB) {
+    expect_general_and_honest(tangential_dominates_b(), {(1.0 - 1e-12) * f, (1.0 - 1e-15) * f});
+}
+TEST(ZonesNearSliding, StiffTangentialLayer) {
+    expect_general_and_honest(stiff_tangential_layer(), {0.29999999999999970});
+}
 
 // The creep curve at the default method from Q/f = 0.99 to gross sliding: every point on the
 // general path with its checks holding; xi rises with Q, the stick zone [s, c0] shrinks from

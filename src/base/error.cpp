@@ -25,8 +25,7 @@ void gsl_guard() {
 matrix_ptr make_matrix(std::size_t rows, std::size_t cols) {
     gsl_guard();
     matrix_ptr m(gsl_matrix_alloc(rows, cols));
-    if (!m) throw numerical_error("cannot allocate a " + std::to_string(rows) + "x" +
-                                  std::to_string(cols) + " matrix");
+    if (!m) throw numerical_error("cannot allocate a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix");
     return m;
 }
 
@@ -47,7 +46,9 @@ permutation_ptr make_permutation(std::size_t size) {
 interp_ptr make_interp(const gsl_interp_type* type, std::size_t size) {
     gsl_guard();
     interp_ptr p(gsl_interp_alloc(type, size));
-    if (!p) throw numerical_error("cannot allocate a " + std::string(type->name) + " spline of " + std::to_string(size) + " points");
+    if (!p)
+        throw numerical_error("cannot allocate a " + std::string(type->name) + " spline of " + std::to_string(size) +
+                              " points");
     return p;
 }
 
@@ -61,7 +62,8 @@ interp_accel_ptr make_interp_accel() {
 integration_workspace_ptr make_integration_workspace(std::size_t intervals) {
     gsl_guard();
     integration_workspace_ptr p(gsl_integration_workspace_alloc(intervals));
-    if (!p) throw numerical_error("cannot allocate a quadrature workspace of " + std::to_string(intervals) + " intervals");
+    if (!p)
+        throw numerical_error("cannot allocate a quadrature workspace of " + std::to_string(intervals) + " intervals");
     return p;
 }
 

@@ -68,10 +68,10 @@ struct curve_plot_scene {
     std::filesystem::path csv;  // its CSV, beside the script
     std::string title;          // the scene's label, or its file name
     double friction = 0.0;
-    bool physical = false;      // the CSV has P1_N_per_m, xi1, xi1_carter
-    bool swept = false;         // loads Q(c0): a refused row has no load to place it at
-    bool two_sided = false;     // loads from -f to f (beta_d != 0)
-    int refused = 0;            // refused rows
+    bool physical = false;   // the CSV has P1_N_per_m, xi1, xi1_carter
+    bool swept = false;      // loads Q(c0): a refused row has no load to place it at
+    bool two_sided = false;  // loads from -f to f (beta_d != 0)
+    int refused = 0;         // refused rows
 };
 
 // The gnuplot script of `roughroll curve --plot`: xi/f against Q/f of every scene over Carter's
@@ -81,10 +81,10 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem,
                          const std::vector<curve_plot_scene>& scenes);
 
 struct figure_options {
-    std::string which;      // "2a" or "2b"
+    std::string which;  // "2a" or "2b"
     std::string out = "figures";
-    int points = 101;       // creep points per curve
-    std::optional<int> n;   // unset: the method's default
+    int points = 101;      // creep points per curve
+    std::optional<int> n;  // unset: the method's default
     std::string method_name = "extrapolated";
     bool plot = true;
 };
@@ -95,10 +95,10 @@ int run_figure(const figure_options& o);
 // `roughroll traction SCENE`: p, p1, +-f p and v on a grid of r, as CSV, gnuplot, SVG, PNG.
 struct traction_options {
     scene_options scene;
-    load_options load;        // overrides the scene's load
-    int points = 401;         // grid points on [-1, 1]
+    load_options load;  // overrides the scene's load
+    int points = 401;   // grid points on [-1, 1]
     std::string out = "figures";
-    std::string name;         // file stem after "traction-" (default: the scene file's stem)
+    std::string name;  // file stem after "traction-" (default: the scene file's stem)
     bool plot = true;
 };
 
@@ -107,7 +107,7 @@ int run_traction(const traction_options& o);
 
 struct convergence_options {
     scene_options scene;
-    load_options load;        // overrides the scene's load
+    load_options load;  // overrides the scene's load
     std::string out = "figures";
     double max_seconds = 2.0;  // a method's ladder stops after a point slower than this
     bool plot = true;

@@ -97,10 +97,11 @@ int run_convergence(const convergence_options& o) {
         progress("convergence: the independent check, the paper's scheme at n = 300 and 600");
         const values a = solve_point(s, Q, 300, method::paper), b = solve_point(s, Q, 600, method::paper);
         auto r2 = [](double coarse, double fine) { return (4.0 * fine - coarse) / 3.0; };
-        std::printf("independent check (paper scheme, 300 and 600, extrapolated for order 2): relative differences "
-                    "P_H/P2 %.1e, c0 %.1e, xi %.1e\n",
-                    relative(r2(a.lambda, b.lambda), ref.lambda), std::fabs(r2(a.c0, b.c0) - ref.c0),
-                    relative(r2(a.xi, b.xi), ref.xi));
+        std::printf(
+            "independent check (paper scheme, 300 and 600, extrapolated for order 2): relative differences "
+            "P_H/P2 %.1e, c0 %.1e, xi %.1e\n",
+            relative(r2(a.lambda, b.lambda), ref.lambda), std::fabs(r2(a.c0, b.c0) - ref.c0),
+            relative(r2(a.xi, b.xi), ref.xi));
     } catch (const resolution_error& e) {
         std::printf("independent check skipped: %s\n", e.what());
     }
@@ -128,7 +129,8 @@ int run_convergence(const convergence_options& o) {
 
     std::ostream& out = csv_file.stream();
     out << "# roughroll " << version() << "\n"
-        << "# roughroll convergence " << one_line(o.scene.path) << ", Q = " << shortest(Q) << "; errors against the extrapolated "
+        << "# roughroll convergence " << one_line(o.scene.path) << ", Q = " << shortest(Q)
+        << "; errors against the extrapolated "
         << "method at n = 512 (relative for P_H/P2 and xi, absolute for c0)\n"
         << "method,n,seconds,err_lambda,err_c0,err_xi,err_max,estimate_xi\n";
     for (const auto& m : rows) {
@@ -141,7 +143,8 @@ int run_convergence(const convergence_options& o) {
     csv_file.commit();
 
     std::ostream& gp = script_file.stream();
-    gp << gnuplot_output_stem(stem) << "set datafile separator ','\nset logscale xy\nset grid\nset key top right box opaque\n"
+    gp << gnuplot_output_stem(stem)
+       << "set datafile separator ','\nset logscale xy\nset grid\nset key top right box opaque\n"
        // Powers of ten on both axes (the default printed 0.000010 ... 10.00000, the last one
        // cut at the right edge, which the right margin now leaves room for).
        << "set format x '10^{%L}'\nset format y '10^{%L}'\nset rmargin 5\n"

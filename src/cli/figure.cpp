@@ -94,8 +94,7 @@ void write_table(output_file& file, const std::string& which, const std::vector<
             const tangential_solution s = problem.point(r * figure_friction);
             const auto e = problem.estimate(s);
             if (e) lambda_estimate = e->lambda;
-            xi.emplace_back(s.xi / figure_friction,
-                            e ? std::optional<double>(e->xi / figure_friction) : std::nullopt);
+            xi.emplace_back(s.xi / figure_friction, e ? std::optional<double>(e->xi / figure_friction) : std::nullopt);
         }
         cell(problem.normal().lambda, lambda_estimate);
         for (const auto& [v, e] : xi) cell(v, e);
@@ -107,7 +106,8 @@ void write_table(output_file& file, const std::string& which, const std::vector<
 void write_gnuplot(output_file& script, const std::filesystem::path& csv, const std::filesystem::path& stem,
                    const std::string& which, const std::vector<figure_curve>& curves) {
     std::ostream& gp = script.stream();
-    gp << gnuplot_output_stem(stem) << "# Fig. " << which << " of Pauk & Wozniak, written by roughroll figure " << which << "\n"
+    gp << gnuplot_output_stem(stem) << "# Fig. " << which << " of Pauk & Wozniak, written by roughroll figure " << which
+       << "\n"
        << "set datafile separator ','\n"
        << "set key top left box opaque spacing 1.15\n"  // the ticks' font: readable
        << "set grid\n"
@@ -166,8 +166,8 @@ int run_figure(const figure_options& o) {
     // Carter's share the c0 grid, each has its own loads Q(c0).
     std::vector<std::vector<curve_point>> results;
     for (const auto& c : curves) {
-        progress("Fig. " + o.which + ": curve " + std::to_string(results.size() + 1) + "/" + std::to_string(curves.size()) +
-                 ", " + std::to_string(o.points) + " points swept in c0");
+        progress("Fig. " + o.which + ": curve " + std::to_string(results.size() + 1) + "/" +
+                 std::to_string(curves.size()) + ", " + std::to_string(o.points) + " points swept in c0");
         contact problem(c.surfaces, figure_friction, options);
         results.push_back(swept_curve(problem, o.points));
         // A figure is a reproduction, whole or not at all: a refused point aborts it (exit 2),
@@ -226,7 +226,8 @@ void scene_curves(std::ostream& gp, const curve_plot_scene& s, const std::string
     const std::string note = (named ? gnuplot_text(s.title) + ": " : std::string()) + std::to_string(s.refused) +
                              " refused row" + (s.refused == 1 ? "" : "s");
     if (s.swept)
-        gp << sep << "NaN with lines lw 0 lc rgb '#ffffff' title \"" << note << " (swept in c_0: no load to place at)\"";
+        gp << sep << "NaN with lines lw 0 lc rgb '#ffffff' title \"" << note
+           << " (swept in c_0: no load to place at)\"";
     else
         gp << sep << data << " using " << x << ":(strcol('status') eq 'refused' ? 0 : NaN):(0):(0.06) axes x1y2 "
            << "with vectors nohead lw 3 lc rgb '" << colour << "' title \"" << note << " (ticks at their load)\"";
@@ -234,7 +235,8 @@ void scene_curves(std::ostream& gp, const curve_plot_scene& s, const std::string
 
 }  // namespace
 
-void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, const std::vector<curve_plot_scene>& scenes) {
+void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem,
+                         const std::vector<curve_plot_scene>& scenes) {
     bool physical = false, two_sided = false;
     for (const auto& s : scenes) {
         physical = physical || s.physical;
@@ -255,8 +257,7 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, co
     const std::string title = scenes.size() == 1 ? "Creep curve: " + gnuplot_text(scenes[0].title) : "Creep curves";
     gp << "# Creep curves, written by roughroll curve --plot. Data: the CSVs beside this script\n"
        << "# (solved rows: status ok; refused rows: ticks on the load axis).\n"
-       << gnuplot_output_stem(stem)
-       << "set datafile separator ','\n"
+       << gnuplot_output_stem(stem) << "set datafile separator ','\n"
        << "set datafile columnheaders  # the CSV's header row names the columns (its # lines are skipped)\n"
        << "# Carter's smooth rollers (Johnson, Contact Mechanics 8.4): xi/f = (2/pi)(1 - sqrt(1 - Q/f)), odd in Q.\n"
        << "carter(q) = sgn(q) * 2/pi * (1 - sqrt(1 - abs(q)))\n"
@@ -272,8 +273,10 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, co
     const char* terminals[][2] = {
         // The SVG as the PNG (the two-panel keys need the width: gnuplot warns when a title does not fit).
         {physical ? "svg size 1800,820 enhanced font 'Helvetica,15' background '#ffffff'"
-                  : "svg size 1100,830 enhanced font 'Helvetica,15' background '#ffffff'", ".svg"},
-        {physical ? "pngcairo size 1800,820 enhanced font 'Helvetica,15'" : "pngcairo size 1100,830 enhanced font 'Helvetica,15'",
+                  : "svg size 1100,830 enhanced font 'Helvetica,15' background '#ffffff'",
+         ".svg"},
+        {physical ? "pngcairo size 1800,820 enhanced font 'Helvetica,15'"
+                  : "pngcairo size 1100,830 enhanced font 'Helvetica,15'",
          ".png"}};
     for (const auto& t : terminals) {
         gp << "\nset terminal " << t[0] << "\nset output out.'" << t[1] << "'\n";
@@ -288,8 +291,8 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, co
            << "plot carter(x) with lines lw 7 lc rgb '#c4c4c4' title 'Carter: smooth rollers'";
         const char* sep = ", \\\n     ";
         for (std::size_t k = 0; k < scenes.size(); ++k)
-            scene_curves(gp, scenes[k], palette[k % std::size(palette)], "(column('Q_over_f'))",
-                         "column('xi_over_f')", scenes.size() > 1, sep);
+            scene_curves(gp, scenes[k], palette[k % std::size(palette)], "(column('Q_over_f'))", "column('xi_over_f')",
+                         scenes.size() > 1, sep);
         gp << "\n";
         if (physical) {
             // Panel 2: the physical scenes in N/mm and creep, each over its own smooth rollers
@@ -301,14 +304,16 @@ void write_curve_gnuplot(std::ostream& gp, const std::filesystem::path& stem, co
                 if (!scenes[k].physical) continue;
                 const std::string colour = palette[k % std::size(palette)];
                 gp << sep2 << "'" << gnuplot_path(scenes[k].csv.filename())
-                   << "' using (column('P1_N_per_m')/1000):(column('xi1_carter')) with lines lw 2 dt 2 lc rgb '" << colour
+                   << "' using (column('P1_N_per_m')/1000):(column('xi1_carter')) with lines lw 2 dt 2 lc rgb '"
+                   << colour
                    << "' "
                    // One key entry for the dashed lines: the colour says whose (a long name would not fit).
                    << (sep2[0] == '\0' ? (physical_scenes > 1 ? "title \"dashed: each scene's rollers smooth (Carter)\""
-                                                               : "title \"the same rollers smooth (Carter)\"")
-                                        : "notitle");
+                                                              : "title \"the same rollers smooth (Carter)\"")
+                                       : "notitle");
                 sep2 = ", \\\n     ";
-                scene_curves(gp, scenes[k], colour, "(column('P1_N_per_m')/1000)", "column('xi1')", scenes.size() > 1, sep2);
+                scene_curves(gp, scenes[k], colour, "(column('P1_N_per_m')/1000)", "column('xi1')", scenes.size() > 1,
+                             sep2);
             }
             gp << "\n";
         }

@@ -56,27 +56,31 @@ double number_option(const std::string& name, const std::string& text) {
 // The options of a plain value show it as their default in --help (a function option has no
 // variable for CLI11 to capture it from).
 CLI::Option* add_number(CLI::App* cmd, const std::string& name, double& value, const std::string& help) {
-    return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help)
+    return cmd
+        ->add_option_function<std::string>(
+            name, [name, &value](const std::string& text) { value = number_option(name, text); }, help)
         ->type_name("NUMBER")
         ->default_str(shortest(value));
 }
 
 CLI::Option* add_number(CLI::App* cmd, const std::string& name, std::optional<double>& value, const std::string& help) {
-    return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = number_option(name, text); }, help)
+    return cmd
+        ->add_option_function<std::string>(
+            name, [name, &value](const std::string& text) { value = number_option(name, text); }, help)
         ->type_name("NUMBER");
 }
 
 CLI::Option* add_integer(CLI::App* cmd, const std::string& name, std::optional<int>& value, const std::string& help) {
-    return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help)
+    return cmd
+        ->add_option_function<std::string>(
+            name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help)
         ->type_name("INT");
 }
 
 CLI::Option* add_integer(CLI::App* cmd, const std::string& name, int& value, const std::string& help) {
-    return cmd->add_option_function<std::string>(
-        name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help)
+    return cmd
+        ->add_option_function<std::string>(
+            name, [name, &value](const std::string& text) { value = integer_option(name, text); }, help)
         ->type_name("INT")
         ->default_str(std::to_string(value));
 }
@@ -92,8 +96,8 @@ void add_load_options(CLI::App* cmd, load_options& o) {
     CLI::Option* Q = add_number(cmd, "--Q", o.Q, "tangential load Q = P1/P2 (overrides the scene's load)");
     CLI::Option* ratio =
         add_number(cmd, "--Q-over-f", o.Q_over_f, "tangential load as Q/f in [-1, 1] (overrides the scene's load)");
-    CLI::Option* P1 = add_number(cmd, "--P1", o.P1,
-                                 "tangential load P1 in N/m, physical scenes only (overrides the scene's load)");
+    CLI::Option* P1 =
+        add_number(cmd, "--P1", o.P1, "tangential load P1 in N/m, physical scenes only (overrides the scene's load)");
     Q->excludes(ratio)->excludes(P1);
     ratio->excludes(Q)->excludes(P1);
     P1->excludes(Q)->excludes(ratio);
@@ -113,12 +117,15 @@ void add_scene_options(CLI::App* cmd, scene_options& o) {
 
 void add_scene_overrides(CLI::App* cmd, scene_options& o) {
     add_integer(cmd, "--n", o.n, "Gauss-Chebyshev nodes (overrides solver.n)");
-    cmd->add_option("--method", o.method_name, "paper, product, extrapolated or one-parameter (overrides solver.method)");
-    cmd->add_option("--zones", o.zones_name, "auto, single or general: how the stick and slip zones are found "
-                                             "(overrides solver.zones)");
+    cmd->add_option("--method", o.method_name,
+                    "paper, product, extrapolated or one-parameter (overrides solver.method)");
+    cmd->add_option("--zones", o.zones_name,
+                    "auto, single or general: how the stick and slip zones are found "
+                    "(overrides solver.zones)");
     add_number(cmd, "--tolerance", o.tolerance,
                "relative accuracy of every estimate: n chosen from the method's default up to 1000 (overrides "
-               "solver.tolerance and solver.n; default " + shortest(default_tolerance) + " where no n is given)");
+               "solver.tolerance and solver.n; default " +
+                   shortest(default_tolerance) + " where no n is given)");
     add_number(cmd, "--friction", o.friction, "friction coefficient f (overrides the scene's friction)");
 }
 
@@ -200,8 +207,8 @@ scene_curve curve_with_progress(scene s, int points, bool sweep, const std::stri
 }
 
 struct curve_options {
-    scene_options scene;               // the overrides; scene.path unused
-    std::vector<std::string> paths;    // one scene, or several overlaid in one plot
+    scene_options scene;             // the overrides; scene.path unused
+    std::vector<std::string> paths;  // one scene, or several overlaid in one plot
     int points = 51;
     bool sweep = false;
     std::string csv;
@@ -302,7 +309,6 @@ int run_curve(const curve_options& o) {
 
 }  // namespace
 
-
 std::string dump(const nlohmann::json& j) {
     // Every text in roughroll's JSON is valid UTF-8 already (one_line at its source); replace
     // is the last guard, so that a stray byte can never turn into exit 70 (type_error 316).
@@ -310,9 +316,10 @@ std::string dump(const nlohmann::json& j) {
 }
 
 int main(int argc, char** argv) {
-    CLI::App app{"roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness\n"
-                 "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach (nothing written);\n"
-                 "3: a curve written with refused points (rows with status 'refused', one stderr line each)."};
+    CLI::App app{
+        "roughroll: rolling contact of long elastic cylinders with two-parameter surface roughness\n"
+        "(Pauk & Wozniak). Exit status 2: invalid input or a case beyond the method's reach (nothing written);\n"
+        "3: a curve written with refused points (rows with status 'refused', one stderr line each)."};
     app.require_subcommand(1);
     // Every option's default in --help (subcommands inherit this; function options set theirs).
     app.option_defaults()->always_capture_default();
@@ -328,9 +335,10 @@ int main(int argc, char** argv) {
     point->add_flag("--json", json, "one JSON object on stdout");
 
     curve_options curve_o;
-    CLI::App* curve = app.add_subcommand(
-        "curve", "a creep curve, Q/f from 0 to 1 (-1 to 1 for beta_d != 0), as CSV; with --plot, its figure "
-                 "(several scenes: their curves overlaid)");
+    CLI::App* curve =
+        app.add_subcommand("curve",
+                           "a creep curve, Q/f from 0 to 1 (-1 to 1 for beta_d != 0), as CSV; with --plot, its figure "
+                           "(several scenes: their curves overlaid)");
     curve->add_option("SCENE", curve_o.paths, "scene file(s) (TOML); several need --csv")
         ->required()
         ->default_str("");  // no default to show (the captured one is "[]")
@@ -379,12 +387,18 @@ int main(int argc, char** argv) {
 
     try {
         int status = 2;
-        if (*point) status = run_point(point_scene, point_load, json);
-        else if (*curve) status = run_curve(curve_o);
-        else if (*figure) status = run_figure(fig);
-        else if (*convergence) status = run_convergence(conv);
-        else if (*traction) status = run_traction(trac);
-        else if (*roughness_cmd) status = run_roughness(rough);
+        if (*point)
+            status = run_point(point_scene, point_load, json);
+        else if (*curve)
+            status = run_curve(curve_o);
+        else if (*figure)
+            status = run_figure(fig);
+        else if (*convergence)
+            status = run_convergence(conv);
+        else if (*traction)
+            status = run_traction(trac);
+        else if (*roughness_cmd)
+            status = run_roughness(rough);
         finish_stdout();  // a full disk or a closed pipe is an error, not exit 0 with half a table
         return status;
     } catch (const roughroll::error& e) {

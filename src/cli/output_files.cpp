@@ -29,9 +29,8 @@ std::string in_quotes(const fs::path& p) { return "'" + one_line(p.string()) + "
 std::string reason(int error) { return error != 0 ? std::strerror(error) : "write failed"; }
 
 bool has_control(const std::string& text) {
-    return std::any_of(text.begin(), text.end(), [](char c) {
-        return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
-    });
+    return std::any_of(text.begin(), text.end(),
+                       [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
 // The path as one single-quoted word for the shell of popen.
@@ -73,8 +72,9 @@ int write_all(int fd, const std::string& text) {
 // The checks of check_output but writability: output_stem's stem is never written itself.
 void check_path(const fs::path& path, const std::vector<std::string>& inputs) {
     if (has_control(path.string()))
-        throw input_error("output path " + in_quotes(path) +
-                          " holds a control character: refused (gnuplot would take a newline in it for the end of a command)");
+        throw input_error(
+            "output path " + in_quotes(path) +
+            " holds a control character: refused (gnuplot would take a newline in it for the end of a command)");
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw input_error("cannot write " + in_quotes(path) + ": it is a directory");
     for (const std::string& input : inputs) {
@@ -139,7 +139,8 @@ void check_output(const fs::path& path, const std::vector<std::string>& inputs) 
 fs::path output_stem(const std::string& dir, const std::string& name) {
     // Checked before the folder is made: a newline must not create a folder either.
     if (has_control(dir))
-        throw input_error("output folder " + in_quotes(dir) + " holds a control character: refused (gnuplot would take "
+        throw input_error("output folder " + in_quotes(dir) +
+                          " holds a control character: refused (gnuplot would take "
                           "a newline in it for the end of a command)");
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -223,12 +224,13 @@ std::string gnuplot_text(const std::string& text) {
     return out;
 }
 
-
 std::string gnuplot_output_stem(const fs::path& stem) {
     const std::string name = stem.filename().string();
-    return "# Paths are relative to this script's folder: re-plot with  cd FOLDER && gnuplot " + name + ".gp\n"
+    return "# Paths are relative to this script's folder: re-plot with  cd FOLDER && gnuplot " + name +
+           ".gp\n"
            "# The images are out.svg and out.png; gnuplot -e \"out='OTHER'\" writes OTHER.svg, OTHER.png.\n"
-           "if (!exists(\"out\")) out = '" + gnuplot_path(name) + "'\n";
+           "if (!exists(\"out\")) out = '" +
+           gnuplot_path(name) + "'\n";
 }
 
 namespace {
@@ -251,7 +253,8 @@ void run_gnuplot(const fs::path& script, const fs::path& stem, const std::vector
     // Absolute: gnuplot runs in the script's folder, where its relative paths point.
     const int fd = new_temporary(fs::absolute(stem), temporary, error);
     if (fd >= 0) ::close(fd);
-    if (fd < 0) throw input_error("cannot write " + in_quotes(stem.string() + extensions.front()) + ": " + reason(error));
+    if (fd < 0)
+        throw input_error("cannot write " + in_quotes(stem.string() + extensions.front()) + ": " + reason(error));
     std::vector<fs::path> images;
     for (const std::string& ext : extensions) images.push_back(temporary.string() + ext);
     const auto clean = [&]() {

@@ -54,8 +54,8 @@ void write_text(std::ostream& out, const std::string& spec, const micro_geometry
     out << "\n  averages (2.9), with the quadrature's error estimates:\n";
     const auto average = [&out](const char* name, const char* unit, double v, double e) {
         char line[160];
-        std::snprintf(line, sizeof line, "    %-10s = %20s +- %-8s %s\n", name, number(v).c_str(), error_text(e).c_str(),
-                      unit);
+        std::snprintf(line, sizeof line, "    %-10s = %20s +- %-8s %s\n", name, number(v).c_str(),
+                      error_text(e).c_str(), unit);
         out << line;
     };
     average("<a>", "m", p.averages.a, p.averages_error.a);

@@ -58,8 +58,8 @@ struct plot_facts {
     double Q, f, c0, xi, lambda;
     std::vector<zone> zones;  // from r = -1 to 1: one, three or five (formulation 7, 8(j))
     double p_max;
-    double v_low, v_high;  // least and greatest slip velocity, 0 included: v may take both signs (8(g))
-    bool checks_hold;  // (3.3), (3.4) and p >= 0 on the solver's own grids
+    double v_low, v_high;        // least and greatest slip velocity, 0 included: v may take both signs (8(g))
+    bool checks_hold;            // (3.3), (3.4) and p >= 0 on the solver's own grids
     std::optional<si_point> si;  // a physical scene: drawn in mm and MPa
 };
 
@@ -86,14 +86,13 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     const bool has_slip = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return !z.stick; });
     const int load_sign = k.Q > 0.0 ? 1 : k.Q < 0.0 ? -1 : 0;
     const std::string data = "'" + gnuplot_path(csv.filename()) + "'";  // beside the script
-    const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + ratio_text(k.Q / f, 3) + "),   f = " +
-                                 shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) + ",   {/Symbol x} = " +
-                                 number(k.xi, 3) + ",   P_H/P_2 = " + number(k.lambda, 4) +
+    const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + ratio_text(k.Q / f, 3) +
+                                 "),   f = " + shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) +
+                                 ",   {/Symbol x} = " + number(k.xi, 3) + ",   P_H/P_2 = " + number(k.lambda, 4) +
                                  (k.checks_hold ? "" : "   (checks (3.3), (3.4) VIOLATED)");
     gp << "# Tractions over the contact, written by roughroll traction. Columns of the CSV:\n"
        << "# 1 r, 2 p, 3 p1, 4 f p, 5 -f p, 6 zone, 7 slip velocity v, 8 p (Hertz), 9 p1 (Carter)\n"
-       << gnuplot_output_stem(stem)
-       << "set datafile separator ','\n"
+       << gnuplot_output_stem(stem) << "set datafile separator ','\n"
        << "c0 = " << shortest(k.c0) << "\n"
        << "# Scales: r -> x (xs: the contact's, xh: the smooth cylinders'), p -> pressure (ps, ph)\n"
        << "xs = " << shortest(xs) << "\nps = " << shortest(ps) << "\nxh = " << shortest(xh) << "\nph = " << shortest(ph)
@@ -108,7 +107,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     for (const auto& t : terminals) {
         gp << "\nset terminal " << t[0] << "\n"
            << "set output out.'" << t[1] << "'\n"
-           << "set multiplot title \"" << k.title << "\\n" << subtitle << "\"\n";
+           << "set multiplot title \"" << k.title << "\\n"
+           << subtitle << "\"\n";
 
         // Upper panel: the tractions, the zones named above the frame.
         // (0.83: room above the frame for two rows of narrow zones' names under the title)
@@ -128,12 +128,13 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
             const zone& z = k.zones[i];
             const double width = z.to - z.from, mid = 0.5 * (z.from + z.to);
             const std::string colour = z.stick ? "#1f4e79" : "#8c2d04";
-            std::string name = z.stick ? "stick zone"
-                               : load_sign == 0 ? (z.direction > 0 ? "slip, p_1 > 0" : "slip, p_1 < 0")
-                               : z.direction == load_sign ? "slip zone" : "reversed slip";
+            std::string name = z.stick                    ? "stick zone"
+                               : load_sign == 0           ? (z.direction > 0 ? "slip, p_1 > 0" : "slip, p_1 < 0")
+                               : z.direction == load_sign ? "slip zone"
+                                                          : "reversed slip";
             if (z.stick)
-                gp << "set object " << id << " rect from " << shortest(z.from * xs) << ", graph 0 to " << shortest(z.to * xs)
-                   << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n";
+                gp << "set object " << id << " rect from " << shortest(z.from * xs) << ", graph 0 to "
+                   << shortest(z.to * xs) << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n";
             if (width < 0.04) {
                 name += " (" + number(width, 2) + " a wide)";
                 gp << "set arrow " << id << " from " << shortest(mid * xs) << ", graph 0 to " << shortest(mid * xs)
@@ -149,8 +150,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                << ", graph 1 offset 0," << shortest(0.8 + 1.25 * row) << where << " font ',14' tc rgb '" << colour
                << "'\n";
             if (i > 0)  // the boundary with the zone before, dashed
-                gp << "set arrow " << 100 + id << " from " << shortest(z.from * xs) << ", graph 0 to " << shortest(z.from * xs)
-                   << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
+                gp << "set arrow " << 100 + id << " from " << shortest(z.from * xs) << ", graph 0 to "
+                   << shortest(z.from * xs) << ", graph 1 nohead lw 1.5 dt 2 lc rgb '#404040' back\n";
         }
         if (right_axis)
             gp << "set yrange [" << shortest(y_bottom / f * ps) << ":" << shortest(y_top * ps) << "]\n"
@@ -166,10 +167,11 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
         const std::string right;  // the right axis' label names its curves: short key entries fit two columns
         gp << "plot " << data << curve(2, "lw 3 lc rgb '#000000'", "normal pressure p") << ", \\\n     ''"
            << curve(3, "lw 3.5 lc rgb '#1f77b4'", "tangential traction p_1" + right, right_axis) << ", \\\n     ''"
-           << curve(negative ? 5 : 4, "lw 1.5 lc rgb '#d62728'", "limit " + limit + right, right_axis) << ", \\\n     ''"
-           << curve(negative ? 4 : 5, "lw 1.5 dt 2 lc rgb '#d62728'", other, right_axis) << ", \\\n     ''"
-           << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth)", false, true) << ", \\\n     ''"
-           << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth)", right_axis, true) << "\n";
+           << curve(negative ? 5 : 4, "lw 1.5 lc rgb '#d62728'", "limit " + limit + right, right_axis)
+           << ", \\\n     ''" << curve(negative ? 4 : 5, "lw 1.5 dt 2 lc rgb '#d62728'", other, right_axis)
+           << ", \\\n     ''" << curve(8, "lw 1.5 dt 3 lc rgb '#505050'", "Hertz p (smooth)", false, true)
+           << ", \\\n     ''" << curve(9, "lw 1.5 dt 4 lc rgb '#5fa2dd'", "Carter p_1 (smooth)", right_axis, true)
+           << "\n";
 
         // Lower panel: the slip velocity, zero on the stick zone (3.2), with the sign of Q
         // on the slip zone (3.4); c0 named beside the dashed line, on the stick side.
@@ -209,9 +211,8 @@ int run_traction(const traction_options& o) {
     if (o.points < 3 || o.points > 100000) throw input_error("--points must lie in [3, 100000]");
     const bool named = !o.name.empty();
     const std::string name = named ? o.name : std::filesystem::path(o.scene.path).stem().string();
-    const bool control = std::any_of(name.begin(), name.end(), [](char ch) {
-        return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
-    });
+    const bool control = std::any_of(name.begin(), name.end(),
+                                     [](char ch) { return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f; });
     if (name.empty() || control || name.find('/') != std::string::npos || name == "." || name == "..") {
         // The default name is the scene file's: then the scene's name is the problem, not --name.
         if (named) throw input_error("--name '" + echo(name) + "' is not a file name");
@@ -249,7 +250,8 @@ int run_traction(const traction_options& o) {
     const double f = s.friction;
 
     std::vector<double> grid(static_cast<std::size_t>(o.points));
-    for (int i = 0; i < o.points; ++i) grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
+    for (int i = 0; i < o.points; ++i)
+        grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
     const std::optional<si_point> si = si_of(s, width, solution);
     const std::vector<traction_row> rows = traction_table(c, level, grid, Q, f, si);
     double p_max = 0.0;
@@ -272,12 +274,13 @@ int run_traction(const traction_options& o) {
         << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick or slip, the zones above;"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
     if (si)
-        out << "# SI: a = " << shortest(si->a) << " m (Hertz " << shortest(si->a_hertz) << " m), P2 = "
-            << shortest(si->P2) << " N/m, xi1 = " << shortest(si->xi1) << "; x1_m = r a, p2_Pa = p P2/a, p1_Pa = p1 P2/a\n";
+        out << "# SI: a = " << shortest(si->a) << " m (Hertz " << shortest(si->a_hertz)
+            << " m), P2 = " << shortest(si->P2) << " N/m, xi1 = " << shortest(si->xi1)
+            << "; x1_m = r a, p2_Pa = p P2/a, p1_Pa = p1 P2/a\n";
     out << "r,p,p1,f_p,minus_f_p,zone,slip_velocity,p_hertz,p1_carter" << (si ? ",x1_m,p2_Pa,p1_Pa" : "") << "\n";
     for (const auto& row : rows) {
-        out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p)
-            << ',' << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ',' << shortest(row.v) << ','
+        out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p) << ','
+            << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ',' << shortest(row.v) << ','
             << shortest(row.p_hertz) << ',' << shortest(row.p1_carter);
         if (si) out << ',' << shortest(*row.x1_m) << ',' << shortest(*row.p2_Pa) << ',' << shortest(*row.p1_Pa);
         out << '\n';
@@ -289,7 +292,7 @@ int run_traction(const traction_options& o) {
                   gnuplot_text(s.label.empty() ? std::filesystem::path(o.scene.path).filename().string() : s.label);
     facts.Q = Q;
     facts.f = f;
-    facts.c0 = level.c0;  // the stick zone the plotted tractions have
+    facts.c0 = level.c0;            // the stick zone the plotted tractions have
     facts.zones = zones_of(level);  // the zones the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;

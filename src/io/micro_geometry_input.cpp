@@ -52,9 +52,8 @@ constexpr std::pair<const char*, profile_kind> profile_names[] = {{"flat", profi
                                                                   {"sawtooth", profile_kind::sawtooth},
                                                                   {"measured", profile_kind::measured}};
 constexpr std::pair<const char*, micro_shape_kind> shape_names[] = {{"sine", micro_shape_kind::sine}};
-constexpr std::pair<const char*, decay_kind> decay_names[] = {{"linear", decay_kind::linear},
-                                                              {"quadratic", decay_kind::quadratic},
-                                                              {"cosine", decay_kind::cosine}};
+constexpr std::pair<const char*, decay_kind> decay_names[] = {
+    {"linear", decay_kind::linear}, {"quadratic", decay_kind::quadratic}, {"cosine", decay_kind::cosine}};
 constexpr std::pair<const char*, normal_factor> factor_names[] = {{"derived", normal_factor::derived},
                                                                   {"printed", normal_factor::printed}};
 
@@ -62,19 +61,21 @@ constexpr std::pair<const char*, normal_factor> factor_names[] = {{"derived", no
 
 micro_geometry read_micro_geometry(const toml::table& table, const std::string& source, const std::string& path,
                                    const std::filesystem::path& base_dir) {
-    check_keys(table, {"lambda0", "mu0", "H", "l", "profile", "delta", "profile_csv", "profile_x1", "profile_h0",
-                       "micro_shape", "decay", "factor_2_12"},
+    check_keys(table,
+               {"lambda0", "mu0", "H", "l", "profile", "delta", "profile_csv", "profile_x1", "profile_h0",
+                "micro_shape", "decay", "factor_2_12"},
                source, path);
     const auto key = [&path](std::string_view name) { return join(path, name); };
     micro_geometry g;
-    g.material.lambda0 = bounded_number(required(table, "lambda0", source, path), lower_bound::non_negative, source,
-                                        key("lambda0"));
+    g.material.lambda0 =
+        bounded_number(required(table, "lambda0", source, path), lower_bound::non_negative, source, key("lambda0"));
     g.material.mu0 = bounded_number(required(table, "mu0", source, path), lower_bound::positive, source, key("mu0"));
     g.material.H = bounded_number(required(table, "H", source, path), lower_bound::positive, source, key("H"));
     g.material.l = bounded_number(required(table, "l", source, path), lower_bound::positive, source, key("l"));
     g.bottom.kind = choice(required(table, "profile", source, path), profile_names, source, key("profile"));
     g.decay = choice(required(table, "decay", source, path), decay_names, source, key("decay"));
-    if (const toml::node* shape = table.get("micro_shape")) g.shape = choice(*shape, shape_names, source, key("micro_shape"));
+    if (const toml::node* shape = table.get("micro_shape"))
+        g.shape = choice(*shape, shape_names, source, key("micro_shape"));
     if (const toml::node* factor = table.get("factor_2_12"))
         g.factor_2_12 = choice(*factor, factor_names, source, key("factor_2_12"));
 
@@ -85,7 +86,8 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
             bounded_number(required(table, "delta", source, path), lower_bound::non_negative, source, key("delta"));
         if (!(g.bottom.delta < g.material.H)) {
             fail(source, quoted(key("delta")) + " = " + shortest(g.bottom.delta) + " must be < " + quoted(key("H")) +
-                             " = " + shortest(g.material.H) + ": the profile's peak would reach the top of the layer "
+                             " = " + shortest(g.material.H) +
+                             ": the profile's peak would reach the top of the layer "
                              "(the paper's 0 <= h0 < H)");
         }
     } else if (table.contains("delta")) {
@@ -104,8 +106,7 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
             numbers_at(required(table, "profile_h0", source, path), source, key("profile_h0"));
         if (x1.size() != h0.size())
             fail(source, quoted(key("profile_x1")) + " has " + std::to_string(x1.size()) + " samples but " +
-                             quoted(key("profile_h0")) + " has " + std::to_string(h0.size()) +
-                             ": give one h0 per x1");
+                             quoted(key("profile_h0")) + " has " + std::to_string(h0.size()) + ": give one h0 per x1");
         if (x1.size() < static_cast<std::size_t>(min_profile_samples))
             fail(source, "a measured profile needs at least " + std::to_string(min_profile_samples) +
                              " samples over one period: " + quoted(key("profile_x1")) + " has " +
@@ -118,8 +119,8 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
     } else if (g.bottom.kind == profile_kind::measured) {
         const std::string& file = string_at(required(table, "profile_csv", source, path), source, key("profile_csv"));
         if (file.empty()) fail(source, quoted(key("profile_csv")) + " must not be empty");
-        const std::filesystem::path csv = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file)
-                                                                                     : base_dir / file;
+        const std::filesystem::path csv =
+            std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_dir / file;
         try {
             g.bottom.measured = read_profile_csv(csv.string(), g.material.l);
         } catch (const input_error& e) {
@@ -134,7 +135,8 @@ micro_geometry read_micro_geometry(const toml::table& table, const std::string& 
     // The layer's range names neither file nor key by itself: both here, with the keys to change.
     const std::string range = layer_range_violation(g.material);
     if (!range.empty())
-        fail(source, range + ": check " + quoted(key("H")) + ", " + quoted(key("mu0")) + " and " + quoted(key("lambda0")));
+        fail(source,
+             range + ": check " + quoted(key("H")) + ", " + quoted(key("mu0")) + " and " + quoted(key("lambda0")));
     check_conditions(g);
     return g;
 }

@@ -45,7 +45,8 @@ nlohmann::json cylinder_json(const cylinder_roughness& c) {
 nlohmann::json zones_json(const tangential_solution& s) {
     nlohmann::json zones = nlohmann::json::array();
     for (const zone& z : zones_of(s))
-        zones.push_back({{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
+        zones.push_back(
+            {{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
     return zones;
 }
 
@@ -113,8 +114,9 @@ nlohmann::json to_json(const point_report& r) {
               {"p_peak_Pa", r.si->p_scale * peak.p},
               {"x_peak_m", r.si->a * peak.r},
               {"width_iterations", r.si->width_iterations},
-              {"roughness_at_a", {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
-                                  {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
+              {"roughness_at_a",
+               {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
+                {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
     nlohmann::json coupling = nullptr;  // docs/formulation.md 8(e): the level, and what full coupling measured
     if (s.forcing != 0.0) coupling = {{"level", r.coupling ? "full" : "johnson"}};
     if (r.coupling)
@@ -164,8 +166,7 @@ void write_summary(std::ostream& out, const point_report& r) {
     out << "  Q = P1/P2           " << shortest(s.Q) << "   (Q/f = " << shortest(s.Q / s.f) << ", f = " << shortest(s.f)
         << ")\n"
         << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
-        << "  peak pressure p     " << shortest(peak.p) << " P2/a at r = " << shortest(peak.r)
-        << "\n"
+        << "  peak pressure p     " << shortest(peak.p) << " P2/a at r = " << shortest(peak.r) << "\n"
         << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
         << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
@@ -174,15 +175,16 @@ void write_summary(std::ostream& out, const point_report& r) {
     if (s.forcing != 0.0 && !r.coupling)
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
     if (s.forcing != 0.0 && r.coupling)
-        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (full coupling: " << r.coupling->iterations
-            << " normal solves after Johnson's, contraction " << shortest(r.coupling->contraction) << ")\n"
+        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing)
+            << "   (full coupling: " << r.coupling->iterations << " normal solves after Johnson's, contraction "
+            << shortest(r.coupling->contraction) << ")\n"
             << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
             << shortest(r.coupling->lambda_johnson) << "; peak pressure at the same P2 changed by "
             << shortest(100.0 * r.coupling->peak_pressure_change) << " %)\n";
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
-            << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string())
-            << ", xi " << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
+            << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string()) << ", xi "
+            << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
     else
         out << "  error estimate      " << no_estimate_reason(r) << "\n";
     out << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "
@@ -192,14 +194,14 @@ void write_summary(std::ostream& out, const point_report& r) {
     if (!r.si) return;
     const si_point& p = *r.si;
     out << "  SI units\n"
-        << "  half-width a        " << shortest(p.a) << " m   (Hertz a_H " << shortest(p.a_hertz) << " m, a/a_H = "
-        << shortest(p.a / p.a_hertz) << ", " << p.width_iterations << " width-search iterations)\n"
+        << "  half-width a        " << shortest(p.a) << " m   (Hertz a_H " << shortest(p.a_hertz)
+        << " m, a/a_H = " << shortest(p.a / p.a_hertz) << ", " << p.width_iterations << " width-search iterations)\n"
         << "  stick zone end c    " << shortest(p.c) << " m\n"
         << "  loads P2, P1        " << shortest(p.P2) << " N/m, " << shortest(p.P1) << " N/m\n"
         << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"
         << "  pressure at centre  " << shortest(p.p_scale * r.normal.pressure(0.0)) << " Pa\n"
-        << "  peak pressure       " << shortest(p.p_scale * peak.p) << " Pa at x1 = "
-        << shortest(p.a * peak.r) << " m\n"
+        << "  peak pressure       " << shortest(p.p_scale * peak.p) << " Pa at x1 = " << shortest(p.a * peak.r)
+        << " m\n"
         << "  creep xi1           " << shortest(p.xi1) << "   (Carter, smooth: " << shortest(p.xi1_carter) << ")\n";
     const auto cylinder = [&out](const char* name, const cylinder_roughness& c) {
         out << "  " << name << " at a     tangential " << term_text(c.tangential) << "; normal " << term_text(c.normal)
@@ -212,8 +214,7 @@ void write_summary(std::ostream& out, const point_report& r) {
 void write_curve_header(std::ostream& out, const curve_header& h) {
     out << "# roughroll " << version() << "\n"
         << "# roughroll curve " << one_line(h.scene_path) << (h.label.empty() ? "" : ": ") << one_line(h.label) << "\n"
-        << "# f = " << shortest(h.friction) << ", method = " << to_string(h.solver.how) << ", n = "
-        << h.solver.nodes()
+        << "# f = " << shortest(h.friction) << ", method = " << to_string(h.solver.how) << ", n = " << h.solver.nodes()
         << (h.solver.n != 0 ? std::string()
                             : " (the method's default; a row climbs to larger n, column n, until its estimates are "
                               "below the relative tolerance " +

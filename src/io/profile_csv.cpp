@@ -36,8 +36,8 @@ public:
         if (samples_.x1.empty()) {
             if (x != 0.0) fail(at, "the first sample must be at x1 = 0 (got x1 = " + shortest(x) + ")");
         } else if (!(x > samples_.x1.back())) {
-            fail(at, "x1 = " + shortest(x) + " does not increase (the previous sample is at x1 = " +
-                         shortest(samples_.x1.back()) + ")");
+            fail(at, "x1 = " + shortest(x) +
+                         " does not increase (the previous sample is at x1 = " + shortest(samples_.x1.back()) + ")");
         }
         if (x == l_) {
             // The periodic closing point: allowed only as a repeat of the first sample.

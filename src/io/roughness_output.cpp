@@ -26,16 +26,13 @@ nlohmann::json to_json(const std::string& spec, const micro_geometry& g, const r
     j["alpha_tangential"] = p.alpha_tangential;
     j["alpha_normal"] = p.alpha_normal;
     j["averages"] = averages_json(p.averages);
-    j["error_estimate"] = {{"k_tangential", p.k_tangential_error},
-                           {"k_normal", p.k_normal_error},
-                           {"t_tangential", p.t_tangential_error},
-                           {"t_normal", p.t_normal_error},
-                           {"alpha_tangential", p.alpha_tangential_error},
-                           {"alpha_normal", p.alpha_normal_error},
+    j["error_estimate"] = {{"k_tangential", p.k_tangential_error},         {"k_normal", p.k_normal_error},
+                           {"t_tangential", p.t_tangential_error},         {"t_normal", p.t_normal_error},
+                           {"alpha_tangential", p.alpha_tangential_error}, {"alpha_normal", p.alpha_normal_error},
                            {"averages", averages_json(p.averages_error)}};
     j["evaluations"] = p.evaluations;
-    j["units"] = {{"k", "Pa/m"}, {"t", "Pa m"}, {"alpha", "1/m"}, {"a", "m"}, {"a3_h1", "1"},
-                  {"a33", "1/m"}, {"a_h1", "m"}, {"a_h1_squared", "m"}};
+    j["units"] = {{"k", "Pa/m"},  {"t", "Pa m"},  {"alpha", "1/m"}, {"a", "m"},
+                  {"a3_h1", "1"}, {"a33", "1/m"}, {"a_h1", "m"},    {"a_h1_squared", "m"}};
     j["reference"] = paper_reference;
     j["version"] = version();
     return j;

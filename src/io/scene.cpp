@@ -26,8 +26,8 @@ using namespace toml_input;
 std::string load_problem(double Q, double f) {
     if (!std::isfinite(Q)) return "must be finite (got " + shortest(Q) + ")";
     if (!(std::fabs(Q) <= f)) {
-        return "must satisfy |Q| <= f, but |Q| = " + shortest(std::fabs(Q)) + " exceeds f = " +
-               shortest(f) + ": the cylinders slide";
+        return "must satisfy |Q| <= f, but |Q| = " + shortest(std::fabs(Q)) + " exceeds f = " + shortest(f) +
+               ": the cylinders slide";
     }
     return {};
 }
@@ -50,8 +50,8 @@ std::string tangential_load_problem(double P1, double f, const physical_scene& p
                "Q = P1/P2 instead";
     if (!std::isfinite(P1)) return "must be finite (got " + shortest(P1) + ")";
     if (!(std::fabs(P1) <= f * p.P2))
-        return "must satisfy |P1| <= f P2, but |P1| = " + shortest(std::fabs(P1)) + " N/m exceeds f P2 = " +
-               shortest(f * p.P2) + " N/m: the cylinders slide";
+        return "must satisfy |P1| <= f P2, but |P1| = " + shortest(std::fabs(P1)) +
+               " N/m exceeds f P2 = " + shortest(f * p.P2) + " N/m: the cylinders slide";
     return {};
 }
 
@@ -72,8 +72,8 @@ int nodes_at(const toml::node& node, const std::string& source, const std::strin
     if (!node.is_integer()) wrong_type(node, "an integer", source, path);
     const std::int64_t n = node.as_integer()->get();
     if (n < min_nodes || n > max_nodes) {
-        fail(source, quoted(path) + " = " + std::to_string(n) + " is outside [" + std::to_string(min_nodes) +
-                         ", " + std::to_string(max_nodes) + "]");
+        fail(source, quoted(path) + " = " + std::to_string(n) + " is outside [" + std::to_string(min_nodes) + ", " +
+                         std::to_string(max_nodes) + "]");
     }
     return static_cast<int>(n);
 }
@@ -138,7 +138,7 @@ term_input read_term(const toml::table& cylinder, std::string_view key, bool phy
 
 struct cylinder_input {
     term_input tangential, normal;
-    std::string profile_file;  // the profile CSV its micro-geometry read, if any
+    std::string profile_file;      // the profile CSV its micro-geometry read, if any
     std::optional<material> bulk;  // shear_modulus and poisson of a physical scene's cylinder
 };
 
@@ -198,7 +198,9 @@ cylinder_input read_cylinder(const toml::table& root, std::string_view key, bool
         return c;
     }
     return {read_term(*table, "tangential", physical, source, path),
-            read_term(*table, "normal", physical, source, path), {}, bulk};
+            read_term(*table, "normal", physical, source, path),
+            {},
+            bulk};
 }
 
 // A radius of a physical scene: > 0, and infinite for a plane.
@@ -223,11 +225,13 @@ physical_scene read_physical(const toml::table& root, double friction, const std
         // A material per cylinder: both, and not also the one material E, nu.
         if (!(c1 && c2))
             fail(source, std::string("a material per cylinder needs shear_modulus and poisson in both [cylinder1] and "
-                                     "[cylinder2]: missing in ") + (c1 ? "'cylinder2'" : "'cylinder1'"));
+                                     "[cylinder2]: missing in ") +
+                             (c1 ? "'cylinder2'" : "'cylinder1'"));
         for (const char* key : {"E", "nu"})
             if (root.contains(key))
                 fail(source, std::string("give one material (E, nu) or one per cylinder (shear_modulus, poisson), not "
-                                         "both: remove '") + key + "'");
+                                         "both: remove '") +
+                                 key + "'");
         for (const char* key : {"R1", "R2", "P2"})
             if (!root.contains(key))
                 fail(source, std::string("a physical scene needs R1, R2 and P2: missing '") + key + "'");
@@ -351,8 +355,9 @@ scene parse_scene(std::string_view text, const std::string& source, const std::f
         if (!c->profile_file.empty()) s.files.push_back(c->profile_file);
     if (physical) {
         if (root.contains("beta_d"))
-            fail(source, "'beta_d' is not a key of a physical scene: it follows from the materials (shear_modulus and "
-                         "poisson per cylinder; docs/formulation.md 8(a))");
+            fail(source,
+                 "'beta_d' is not a key of a physical scene: it follows from the materials (shear_modulus and "
+                 "poisson per cylinder; docs/formulation.md 8(a))");
         physical_scene p = read_physical(root, s.friction, source, c1.bulk, c2.bulk);
         try {
             // Each derived value is checked where it is made (physical_scene.cpp): a_H and its
@@ -412,8 +417,7 @@ double load_of(const scene& s, const std::optional<load_given>& override) {
     }
     const double x = override->value;
     switch (override->kind) {
-        case load_kind::Q:
-            break;
+        case load_kind::Q: break;
         case load_kind::Q_over_f: {
             const std::string problem = ratio_problem(x);
             if (!problem.empty()) throw input_error("Q_over_f " + problem);

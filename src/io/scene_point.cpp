@@ -71,7 +71,12 @@ std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>
 
 point_report scene_point::report() const {
     const coupling_summary* coupled = solved.coupling();
-    return {settled.label, solved.normal(), solution, seconds, estimate, si_of(settled, width, solution),
+    return {settled.label,
+            solved.normal(),
+            solution,
+            seconds,
+            estimate,
+            si_of(settled, width, solution),
             coupled ? std::optional<coupling_summary>(*coupled) : std::nullopt};
 }
 
@@ -157,7 +162,8 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
             rows = ladder_curve(ladder, Qs, points, sweep, nodes, before_row);
             const int first = ladder.rungs().front();
             for (std::size_t i = 0; i < rows.size(); ++i)
-                if (const auto& width = rungs.settled.at(nodes[i] != 0 ? nodes[i] : first).second) widths.push_back(*width);
+                if (const auto& width = rungs.settled.at(nodes[i] != 0 ? nodes[i] : first).second)
+                    widths.push_back(*width);
             s = std::move(rungs.settled.at(first).first);
         } else {
             const std::optional<contact_width> width = settle_width(s);

@@ -58,8 +58,7 @@ const char* type_phrase(const toml::node& node) {
 // A misspelt key would otherwise be ignored silently and the scene solved with a
 // default in its place; so every key must be one of `allowed`. A toml::table
 // iterates in key order, so the key reported does not depend on the file's layout.
-void check_keys(const toml::table& table, key_list allowed, const std::string& source,
-                const std::string& path) {
+void check_keys(const toml::table& table, key_list allowed, const std::string& source, const std::string& path) {
     for (const auto& [key, node] : table) {
         if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
         std::string names;
@@ -86,14 +85,13 @@ double number_at(const toml::node& node, const std::string& source, const std::s
 }
 
 // A number that is finite and > 0 or >= 0: the one check T, A and f share.
-double bounded_number(const toml::node& node, lower_bound bound, const std::string& source,
-                      const std::string& path) {
+double bounded_number(const toml::node& node, lower_bound bound, const std::string& source, const std::string& path) {
     const double x = number_at(node, source, path);
     const bool positive = bound == lower_bound::positive;
     const bool ok = std::isfinite(x) && (positive ? x > 0.0 : x >= 0.0);
     if (!ok) {
-        fail(source, quoted(path) + " must be finite and " + (positive ? "> 0" : ">= 0") + " (got " +
-                         shortest(x) + ")");
+        fail(source,
+             quoted(path) + " must be finite and " + (positive ? "> 0" : ">= 0") + " (got " + shortest(x) + ")");
     }
     return x;
 }
@@ -142,7 +140,8 @@ void check_underflow(const toml::node& node, std::string_view text, const std::s
         const toml::source_position where = node.source().begin;
         const std::string problem = underflow_problem(literal_at(text, where), x);
         if (!problem.empty())
-            fail(source + ":" + std::to_string(where.line) + ":" + std::to_string(where.column), quoted(path) + " = " + problem);
+            fail(source + ":" + std::to_string(where.line) + ":" + std::to_string(where.column),
+                 quoted(path) + " = " + problem);
     }
 }
 

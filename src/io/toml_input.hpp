@@ -38,8 +38,7 @@ double number_at(const toml::node& node, const std::string& source, const std::s
 enum class lower_bound { positive, non_negative };
 
 // A number that is finite and > 0 (positive) or >= 0 (non_negative).
-double bounded_number(const toml::node& node, lower_bound bound, const std::string& source,
-                      const std::string& path);
+double bounded_number(const toml::node& node, lower_bound bound, const std::string& source, const std::string& path);
 
 const std::string& string_at(const toml::node& node, const std::string& source, const std::string& path);
 

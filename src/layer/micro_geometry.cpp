@@ -111,8 +111,8 @@ namespace {
 std::unique_ptr<profile_function::spline> build_spline(const profile_samples& s, double l) {
     const std::size_t n = s.x1.size();
     if (n < 3 || s.h0.size() != n) {
-        throw input_error(one_line(s.source + ": a measured profile needs at least 3 samples (got " +
-                                   std::to_string(n) + ")"));
+        throw input_error(
+            one_line(s.source + ": a measured profile needs at least 3 samples (got " + std::to_string(n) + ")"));
     }
     auto sp = std::make_unique<profile_function::spline>();
     sp->x = s.x1;
@@ -121,7 +121,8 @@ std::unique_ptr<profile_function::spline> build_spline(const profile_samples& s,
     sp->y.push_back(s.h0.front());
     for (std::size_t i = 0; i + 1 < sp->x.size(); ++i) {
         if (!(sp->x[i] < sp->x[i + 1]) || !std::isfinite(sp->y[i])) {
-            throw input_error(one_line(s.source + ": the samples must be finite with x1 strictly increasing in [0, l)"));
+            throw input_error(
+                one_line(s.source + ": the samples must be finite with x1 strictly increasing in [0, l)"));
         }
     }
     sp->interp = make_interp(gsl_interp_cspline_periodic, sp->x.size());
@@ -130,9 +131,10 @@ std::unique_ptr<profile_function::spline> build_spline(const profile_samples& s,
     sp->accel = make_interp_accel();
     sp->slope.resize(sp->x.size());
     for (std::size_t i = 0; i < sp->x.size(); ++i) {
-        const int status =
-            gsl_interp_eval_deriv_e(sp->interp.get(), sp->x.data(), sp->y.data(), sp->x[i], sp->accel.get(), &sp->slope[i]);
-        if (status != GSL_SUCCESS) gsl_check(status, s.source + ": the slope of the spline at x1 = " + shortest(sp->x[i]));
+        const int status = gsl_interp_eval_deriv_e(sp->interp.get(), sp->x.data(), sp->y.data(), sp->x[i],
+                                                   sp->accel.get(), &sp->slope[i]);
+        if (status != GSL_SUCCESS)
+            gsl_check(status, s.source + ": the slope of the spline at x1 = " + shortest(sp->x[i]));
     }
     return sp;
 }
@@ -141,7 +143,8 @@ std::unique_ptr<profile_function::spline> build_spline(const profile_samples& s,
 
 profile_function::profile_function(const profile& p, double l) : kind_(p.kind), delta_(p.delta), l_(l) {
     gsl_guard();
-    if (!(std::isfinite(l) && l > 0.0)) throw input_error("the period l must be finite and > 0 (got " + shortest(l) + ")");
+    if (!(std::isfinite(l) && l > 0.0))
+        throw input_error("the period l must be finite and > 0 (got " + shortest(l) + ")");
     breaks_ = {0.0, l};
     if (kind_ == profile_kind::measured) {
         spline_ = build_spline(p.measured, l);
@@ -241,7 +244,8 @@ std::vector<std::string> decay_violations(const std::function<double(double)>& d
     const std::string who = "decay '" + name + "': ";
     const double tolerance = 1e-12;
     const double d0 = d(0.0), dH = d(H);
-    if (!(std::fabs(d0 - 1.0) <= tolerance)) out.push_back(who + "d(0) = " + shortest(d0) + ", not 1 (the paper's d(0) = 1)");
+    if (!(std::fabs(d0 - 1.0) <= tolerance))
+        out.push_back(who + "d(0) = " + shortest(d0) + ", not 1 (the paper's d(0) = 1)");
     if (!(std::fabs(dH) <= tolerance)) out.push_back(who + "d(H) = " + shortest(dH) + ", not 0 (the paper's d(H) = 0)");
     const int points = 1000;
     for (int i = 1; i <= points; ++i) {
@@ -260,7 +264,8 @@ namespace {
 
 void layer_violations(const layer& m, std::vector<std::string>& out) {
     const auto positive = [&out](const char* name, double x) {
-        if (!(std::isfinite(x) && x > 0.0)) out.push_back(std::string(name) + " must be finite and > 0 (got " + shortest(x) + ")");
+        if (!(std::isfinite(x) && x > 0.0))
+            out.push_back(std::string(name) + " must be finite and > 0 (got " + shortest(x) + ")");
     };
     if (!(std::isfinite(m.lambda0) && m.lambda0 >= 0.0))
         out.push_back("lambda0 must be finite and >= 0 (got " + shortest(m.lambda0) + ")");
@@ -279,7 +284,9 @@ void sample_violations(const profile_samples& s, double H, std::vector<std::stri
         if (h >= 0.0 && h < H) continue;  // the message only for a violation (profiles of 1e6 samples)
         const std::string where = s.source + ":" + (i < s.lines.size() ? std::to_string(s.lines[i]) : "?") + ": ";
         if (!(h >= 0.0)) {
-            out.push_back(one_line(where + "h0 = " + shortest(h) + " is below 0 (the paper's 0 <= h0 < H; h0 is measured from the deepest valley: shift a zero-mean profile by its minimum)"));
+            out.push_back(one_line(where + "h0 = " + shortest(h) +
+                                   " is below 0 (the paper's 0 <= h0 < H; h0 is measured from the deepest valley: "
+                                   "shift a zero-mean profile by its minimum)"));
             return;
         }
         if (!(h < H)) {
@@ -298,7 +305,8 @@ void profile_violations(const micro_geometry& g, std::vector<std::string>& out) 
             out.push_back("delta must be finite and >= 0 (got " + shortest(p.delta) + ")");
         } else if (!(p.delta < H)) {
             out.push_back("delta = " + shortest(p.delta) + " is not below H = " + shortest(H) + ": the " +
-                          to_string(p.kind) + " profile's peak h0 = delta would reach the top of the layer "
+                          to_string(p.kind) +
+                          " profile's peak h0 = delta would reach the top of the layer "
                           "(the paper's 0 <= h0 < H)");
         }
         return;
@@ -352,7 +360,8 @@ std::string layer_range_violation(const layer& m) {
     if (k_fits && t_fits) return "";
     return "H = " + shortest(m.H) + " m with mu0 = " + shortest(m.mu0) + " Pa, lambda0 = " + shortest(m.lambda0) +
            " Pa puts " +
-           (k_fits ? "t (mu0 H to (lambda0 + 2 mu0) H = " + shortest(m.mu0 * m.H) + " to " + shortest(stiff * m.H) + " Pa m)"
+           (k_fits ? "t (mu0 H to (lambda0 + 2 mu0) H = " + shortest(m.mu0 * m.H) + " to " + shortest(stiff * m.H) +
+                         " Pa m)"
                    : "k (mu0/H to (lambda0 + 2 mu0)/H = " + shortest(m.mu0 / m.H) + " to " + shortest(stiff / m.H) +
                          " Pa/m)") +
            " outside the range of double precision (1e3 DBL_MIN to DBL_MAX/1e3)";

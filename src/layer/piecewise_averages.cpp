@@ -176,7 +176,8 @@ scaled_averages piecewise_averages(const micro_geometry& g) {
     const scaled_averages r = rule.result(l);
     const double* values[] = {&r.value.a, &r.value.a3_h1, &r.value.a33, &r.value.a_h1, &r.value.a_h1_squared};
     for (const double* v : values) {
-        if (!std::isfinite(*v)) throw numerical_error("the piecewise rule's averages (2.9) are not finite (" + shortest(*v) + ")");
+        if (!std::isfinite(*v))
+            throw numerical_error("the piecewise rule's averages (2.9) are not finite (" + shortest(*v) + ")");
     }
     return r;
 }

@@ -50,7 +50,8 @@ quadrature_result qag(const F& f, double lo, double hi, double epsabs, double ep
     };
     g.params = &c;
     quadrature_result r;
-    const int status = gsl_integration_qag(&g, lo, hi, epsabs, epsrel, workspace_intervals, rule, w, &r.value, &r.error);
+    const int status =
+        gsl_integration_qag(&g, lo, hi, epsabs, epsrel, workspace_intervals, rule, w, &r.value, &r.error);
     if (c.failure) std::rethrow_exception(c.failure);
     gsl_check(status, what);
     if (!std::isfinite(r.value)) throw numerical_error(what + ": not finite (" + shortest(r.value) + ")");
@@ -90,14 +91,19 @@ private:
         double a, a3, a33;
     };
 
-    layer_integrals integrate(double u0, bool a, bool a3, bool a33, const floors& floor, const std::string& where) const {
+    layer_integrals integrate(double u0, bool a, bool a3, bool a33, const floors& floor,
+                              const std::string& where) const {
         const decay_kind k = g_.decay;
         layer_integrals r;
         // Every integrand is of one sign (dhat >= 0, dhat_u > 0): the relative tolerance, with
         // the absolute floor for an integral that is small against the whole layer's.
         if (a) {
-            const auto q = qag([k](double u) { const double d = decay_value_from_top(k, u); return d * d; }, 0.0, u0,
-                               floor.a, inner_tolerance, work_.get(), "the integral a of (2.6)" + where);
+            const auto q = qag(
+                [k](double u) {
+                    const double d = decay_value_from_top(k, u);
+                    return d * d;
+                },
+                0.0, u0, floor.a, inner_tolerance, work_.get(), "the integral a of (2.6)" + where);
             r.a = q.value;
             r.a_error = q.error;
         }
@@ -108,8 +114,12 @@ private:
             r.a3_error = q.error;
         }
         if (a33) {
-            const auto q = qag([k](double u) { const double s = decay_slope_from_top(k, u); return s * s; }, 0.0, u0,
-                               floor.a33, inner_tolerance, work_.get(), "the integral a33 of (2.8)" + where);
+            const auto q = qag(
+                [k](double u) {
+                    const double s = decay_slope_from_top(k, u);
+                    return s * s;
+                },
+                0.0, u0, floor.a33, inner_tolerance, work_.get(), "the integral a33 of (2.8)" + where);
             r.a33 = q.value;
             r.a33_error = q.error;
         }
@@ -220,15 +230,17 @@ scaled_averages adaptive_averages(const micro_geometry& g) {
             return quadrature_result{v.a33, v.a33_error};
         },
         breaks, l, 0.0, work.get(), evaluations, "<a33>");
-    const quadrature_result a_h1 = average(a_times(1), breaks, l, outer_tolerance * std::sqrt(a.value) * std::sqrt(a_h1_squared.value),
-                                           work.get(), evaluations, "<a h_1>");
+    const quadrature_result a_h1 =
+        average(a_times(1), breaks, l, outer_tolerance * std::sqrt(a.value) * std::sqrt(a_h1_squared.value), work.get(),
+                evaluations, "<a h_1>");
     const quadrature_result a3_h1 = average(
         [&](double x1) {
             const layer_integrals v = layer.at(x1, false, true, false);
             const double w = h1(x1);
             return quadrature_result{w * v.a3, std::fabs(w) * v.a3_error};
         },
-        breaks, l, outer_tolerance * std::sqrt(a33.value) * std::sqrt(a_h1_squared.value), work.get(), evaluations, "<a3 h_1>");
+        breaks, l, outer_tolerance * std::sqrt(a33.value) * std::sqrt(a_h1_squared.value), work.get(), evaluations,
+        "<a3 h_1>");
     scaled_averages r;
     r.value = {a.value, a3_h1.value, a33.value, a_h1.value, a_h1_squared.value};
     r.error = {a.error, a3_h1.error, a33.error, a_h1.error, a_h1_squared.error};
@@ -240,8 +252,8 @@ scaled_averages adaptive_averages(const micro_geometry& g) {
 
 roughness_parameters compute_roughness_parameters(const micro_geometry& g, averages_rule rule) {
     check_conditions(g);
-    const bool piecewise =
-        rule == averages_rule::piecewise || (rule == averages_rule::automatic && g.bottom.kind == profile_kind::measured);
+    const bool piecewise = rule == averages_rule::piecewise ||
+                           (rule == averages_rule::automatic && g.bottom.kind == profile_kind::measured);
     const scaled_averages s = piecewise ? piecewise_averages(g) : adaptive_averages(g);
     const layer_averages& v = s.value;
     const layer_averages& e = s.error;
@@ -256,7 +268,7 @@ roughness_parameters compute_roughness_parameters(const micro_geometry& g, avera
     // First-order propagation of the averages' errors through (2.11)-(2.15), in the
     // dimensionless averages (each product kept within the range of double).
     const double q = v.a_h1_squared, rk = v.a3_h1 / q, rt = v.a_h1 / q;
-    const double dk = (2.0 * std::fabs(rk) * e.a3_h1 + rk * rk * e.a_h1_squared) / H;  // 1/m
+    const double dk = (2.0 * std::fabs(rk) * e.a3_h1 + rk * rk * e.a_h1_squared) / H;       // 1/m
     const double dt = H * (e.a + 2.0 * std::fabs(rt) * e.a_h1 + rt * rt * e.a_h1_squared);  // m
     const double stiff = g.material.lambda0 + 2.0 * g.material.mu0;
     const double ratio = normal_factor_ratio(g.factor_2_12, g.material.lambda0, g.material.mu0);  // (2.12), E11

@@ -19,8 +19,9 @@ coupling_level coupling_from_string(const std::string& name) {
 void check_beta_d(double beta_d) {
     // docs/formulation.md 8(a): no material pair gives |beta_D| >= 3/4.
     if (!(std::isfinite(beta_d) && std::fabs(beta_d) < beta_d_bound))
-        throw input_error("beta_d = " + shortest(beta_d) +
-                          " must be finite with |beta_d| < 0.75 (no material pair gives more; docs/formulation.md 8(a))");
+        throw input_error(
+            "beta_d = " + shortest(beta_d) +
+            " must be finite with |beta_d| < 0.75 (no material pair gives more; docs/formulation.md 8(a))");
 }
 
 }  // namespace roughroll

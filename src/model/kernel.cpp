@@ -51,8 +51,8 @@ kernel kernel::minus(const kernel& other) const {
     std::vector<exponential_term> mine = terms_;
     std::vector<exponential_term> result;
     for (const auto& o : other.terms_) {
-        auto same = std::find_if(mine.begin(), mine.end(),
-                                 [&](const exponential_term& t) { return t.T == o.T && t.A == o.A; });
+        auto same =
+            std::find_if(mine.begin(), mine.end(), [&](const exponential_term& t) { return t.T == o.T && t.A == o.A; });
         if (same != mine.end())
             mine.erase(same);
         else
@@ -67,6 +67,5 @@ kernel kernel::stretched(double rho) const {
     for (const auto& t : terms_) s.push_back({rho * t.T, rho * t.A});
     return kernel(s);
 }
-
 
 }  // namespace roughroll

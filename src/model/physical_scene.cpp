@@ -21,8 +21,7 @@ bool normal_positive(double x) { return std::isfinite(x) && x >= DBL_MIN; }
 
 [[noreturn]] void out_of_range(const std::string& what, double value, const std::string& inputs,
                                const std::string& keys) {
-    throw input_error(what + " = " + shortest(value) + " (" + inputs +
-                      ") is beyond double precision: check " + keys);
+    throw input_error(what + " = " + shortest(value) + " (" + inputs + ") is beyond double precision: check " + keys);
 }
 
 std::string materials(const physical_scene& s) {
@@ -53,8 +52,12 @@ roughness_term term_at(const physical_scene& s, const stiffness& st, double a, c
     // An underflow to 0 or a subnormal is the smooth limit (a stiff layer): harmless. An
     // overflow is not.
     const std::string formula = s.materials ? "T = a/(4 C t)" : "T = a mu/(8 (1 - nu) t)";
-    if (!std::isfinite(term.T)) out_of_range("'" + name + "': " + formula + " of (3.26)", term.T, inputs, "'" + name + ".t' and " + material_keys(s));
-    if (!std::isfinite(term.A)) out_of_range("'" + name + "': A = a sqrt(k/(2 t)) of (3.26)", term.A, inputs, "'" + name + ".k' and '" + name + ".t'");
+    if (!std::isfinite(term.T))
+        out_of_range("'" + name + "': " + formula + " of (3.26)", term.T, inputs,
+                     "'" + name + ".t' and " + material_keys(s));
+    if (!std::isfinite(term.A))
+        out_of_range("'" + name + "': A = a sqrt(k/(2 t)) of (3.26)", term.A, inputs,
+                     "'" + name + ".k' and '" + name + ".t'");
     return term;
 }
 
@@ -74,7 +77,8 @@ double compliance(const physical_scene& s) {
     const material& m1 = (*s.materials)[0];
     const material& m2 = (*s.materials)[1];
     const double C = (1.0 - m1.nu) / m1.mu + (1.0 - m2.nu) / m2.mu;
-    if (!normal_positive(C)) out_of_range("the compliance C = (1 - nu1)/mu1 + (1 - nu2)/mu2", C, materials(s), material_keys(s));
+    if (!normal_positive(C))
+        out_of_range("the compliance C = (1 - nu1)/mu1 + (1 - nu2)/mu2", C, materials(s), material_keys(s));
     return C;
 }
 
@@ -110,8 +114,8 @@ stiffness stiffness_of(const physical_scene& s, const roughness_term& term, doub
     const double t = a / (4.0 * compliance(s) * term.T);  // T = a/(4 C t), C of 8(a)
     const double alpha = term.A / a;
     const stiffness st{2.0 * t * alpha * alpha, t};
-    const std::string inputs = "from T = " + shortest(term.T) + ", A = " + shortest(term.A) + " at a_H = " +
-                               shortest(a) + " m, " + materials(s);
+    const std::string inputs = "from T = " + shortest(term.T) + ", A = " + shortest(term.A) +
+                               " at a_H = " + shortest(a) + " m, " + materials(s);
     const std::string who = name.empty() ? std::string() : "'" + name + "': ";
     const std::string formula = s.materials ? "t = a/(4 C T)" : "t = a mu/(8 (1 - nu) T)";
     if (!normal_positive(st.t)) out_of_range(who + formula + " of (3.26)", st.t, inputs, "'" + name + ".T'");
@@ -153,7 +157,9 @@ si_point to_si(const physical_scene& s, const contact_width& w, double Q, double
                                       {"the creep xi1", p.xi1},
                                       {"Carter's creep xi1", p.xi1_carter},
                                       {"the Hertz load P_H", p.P_H}})
-        if (!std::isfinite(value)) out_of_range(name, value, inputs, (s.materials ? material_keys(s) : std::string("'E'")) + ", 'R1', 'R2' and 'P2'");
+        if (!std::isfinite(value))
+            out_of_range(name, value, inputs,
+                         (s.materials ? material_keys(s) : std::string("'E'")) + ", 'R1', 'R2' and 'P2'");
     return p;
 }
 

@@ -32,9 +32,8 @@ std::shared_ptr<const kernel_sweep> lagrange_sweep(const gauss_chebyshev& rule, 
     const lagrange_basis basis(rule);
     return std::make_shared<const kernel_sweep>(
         rule.collocation, rule.n, rule.n - 1, max_rate,
-        batch_basis_values([&basis](const double*, const double* eta, std::size_t count, double* out) {
-            basis(eta, count, out);
-        }));
+        batch_basis_values(
+            [&basis](const double*, const double* eta, std::size_t count, double* out) { basis(eta, count, out); }));
 }
 }  // namespace
 
@@ -89,13 +88,13 @@ bool in_asymptotic_range(const kernel& k, int n, method how) {
 
 void check_extrapolation_range(const kernel& k, int n, const char* which) {
     if (n / 2 >= min_nodes && in_asymptotic_range(k, n / 2, method::product)) return;
-    const std::string advice = n < max_nodes && in_asymptotic_range(k, max_nodes / 2, method::product)
-                                   ? "increase n (at most " + std::to_string(max_nodes) + ") or use method 'product'"
-                                   : "use method 'product' (no n up to " + std::to_string(max_nodes) +
-                                         " resolves them at n/2)";
+    const std::string advice =
+        n < max_nodes && in_asymptotic_range(k, max_nodes / 2, method::product)
+            ? "increase n (at most " + std::to_string(max_nodes) + ") or use method 'product'"
+            : "use method 'product' (no n up to " + std::to_string(max_nodes) + " resolves them at n/2)";
     throw resolution_error("method 'extrapolated' with n = " + std::to_string(n) +
-                           ": the coarse level n/2 is not in the asymptotic range of product integration for " +
-                           which + "; " + advice);
+                           ": the coarse level n/2 is not in the asymptotic range of product integration for " + which +
+                           "; " + advice);
 }
 
 void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, const char* what) {
@@ -110,8 +109,8 @@ void check_resolution(const kernel& k, const gauss_chebyshev& rule, method how, 
     const bool resolved = how == method::paper ? rate * h <= 0.5 : rate * 0.5 * h * h <= 1.0;
     if (resolved) return;
     // In double: a rate up to the largest double must not overflow an int.
-    const double needed = how == method::paper ? std::ceil(2.0 * M_PI * rate) - 1.0
-                                               : std::ceil(M_PI * std::sqrt(0.5 * rate)) - 1.0;
+    const double needed =
+        how == method::paper ? std::ceil(2.0 * M_PI * rate) - 1.0 : std::ceil(M_PI * std::sqrt(0.5 * rate)) - 1.0;
     const int n_needed = needed > max_nodes ? max_nodes + 1 : static_cast<int>(needed);
     std::ostringstream msg;
     msg << what << ": decay rate A = " << rate << " (width 1/A = " << 1.0 / rate

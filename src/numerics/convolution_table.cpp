@@ -55,8 +55,8 @@ double convolution_table::panel_bound(int n, double rate, double length) {
     const auto e_a = [rate, h](double y, double x) { return std::exp(rate * (h + x + std::cosh(y) - 1.0)); };
     const auto m_h = [n, &e_a](double y, double x) { return std::exp((n + 1) * y) * e_a(y, x); };
     const double best_h = theta_panels::ellipse_bound(h, m_h);
-    const double best_l =
-        theta_panels::ellipse_bound(h, [h, &e_a, &m_h](double y, double x) { return e_a(y, x) * (M_PI + (h + x + y) * m_h(y, x)); });
+    const double best_l = theta_panels::ellipse_bound(
+        h, [h, &e_a, &m_h](double y, double x) { return e_a(y, x) * (M_PI + (h + x + y) * m_h(y, x)); });
     return lebesgue * 2.0 * M_PI * best_h + 2.0 * best_l;
 }
 

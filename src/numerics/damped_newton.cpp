@@ -13,7 +13,8 @@ namespace roughroll {
 namespace {
 // The Newton step dx of J dx = -F by GSL's LU; empty when J is singular (a zero pivot, as the
 // zero determinant the 2 x 2 searches tested before) or anything is not finite.
-std::optional<std::vector<double>> newton_step(const std::vector<std::vector<double>>& J, const std::vector<double>& F) {
+std::optional<std::vector<double>> newton_step(const std::vector<std::vector<double>>& J,
+                                               const std::vector<double>& F) {
     const std::size_t k = F.size();
     matrix_ptr a = make_matrix(k, k);
     vector_ptr b = make_vector(k), x = make_vector(k);

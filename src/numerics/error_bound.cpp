@@ -9,8 +9,8 @@
 namespace roughroll {
 
 namespace {
-constexpr double min_ratio = 1.5;          // below: the levels do not visibly converge
-constexpr double asymptotic_share = 0.7;   // rho >= 0.7 * 2^p: observed order >= p - 1/2
+constexpr double min_ratio = 1.5;              // below: the levels do not visibly converge
+constexpr double asymptotic_share = 0.7;       // rho >= 0.7 * 2^p: observed order >= p - 1/2
 constexpr double min_sign_change_ratio = 4.0;  // |rho| when the differences change sign
 }  // namespace
 

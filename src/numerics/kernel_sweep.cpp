@@ -89,11 +89,11 @@ void accumulate_piece(const double* g, std::size_t width, std::size_t nodes, con
 
 kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
                            const basis_values& values)
-    : kernel_sweep(points, width, degree, max_rate,
-                   batch_basis_values([&values, width](const double* theta, const double*, std::size_t count,
-                                                       double* out) {
-                       for (std::size_t i = 0; i < count; ++i) values(theta[i], out + i * width);
-                   })) {}
+    : kernel_sweep(
+          points, width, degree, max_rate,
+          batch_basis_values([&values, width](const double* theta, const double*, std::size_t count, double* out) {
+              for (std::size_t i = 0; i < count; ++i) values(theta[i], out + i * width);
+          })) {}
 
 kernel_sweep::kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
                            const batch_basis_values& values)
@@ -174,7 +174,7 @@ std::vector<double> kernel_sweep::apply(const kernel& k) const {
     // part, referred to its left end x_{i-1}, is kept and the recurrence runs backwards after.
     std::vector<double> left(nt * width, 0.0), right((count + 1) * nt * width, 0.0), e_left, e_right;
     for (std::size_t i = 0; i <= count; ++i) {
-        const bool has_left = i < count, has_right = i > 0;
+        const bool has_left = i<count, has_right = i> 0;
         double* piece_right = &right[i * nt * width];
         const std::size_t lo = first_[i], nodes = first_[i + 1] - lo;
         for (std::size_t t = 0; t < nt; ++t) {

@@ -94,7 +94,8 @@ void dense_system::precondition(const gsl_vector* in, gsl_vector* out, const std
     // M^{-1} as a matrix, once per factorisation: one gemv per product instead of two triangular
     // solves (twice as fast with GSL's CBLAS at n = 129), over the many solves of a sweep.
     if (!near_->inverse_valid) {
-        gsl_check(gsl_linalg_LU_invert(near_->lu.get(), perm_.get(), near_->inverse.get()), context + ": inverse (refinement)");
+        gsl_check(gsl_linalg_LU_invert(near_->lu.get(), perm_.get(), near_->inverse.get()),
+                  context + ": inverse (refinement)");
         near_->inverse_valid = true;
     }
     gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, near_->inverse.get(), in, 0.0, out), context + ": refinement product");
@@ -109,7 +110,7 @@ void dense_system::start(const std::string& context) {
     if (near_->history_count == 0) return;
     const std::size_t k = static_cast<std::size_t>(near_->history_count) + 1;
     gsl_matrix_view y = gsl_matrix_submatrix(near_->candidates.get(), 0, 0, k, size_);  // rows: candidates
-    gsl_matrix_view w = gsl_matrix_submatrix(near_->products.get(), 0, 0, size_, k);   // columns: A y_i
+    gsl_matrix_view w = gsl_matrix_submatrix(near_->products.get(), 0, 0, size_, k);    // columns: A y_i
     gsl_vector_view y0 = gsl_matrix_row(&y.matrix, 0);
     gsl_vector_memcpy(&y0.vector, x);
     gsl_matrix_const_view past = gsl_matrix_const_submatrix(near_->history.get(), 0, 0, k - 1, size_);
@@ -123,7 +124,8 @@ void dense_system::start(const std::string& context) {
     if (gsl_linalg_QR_decomp(&w.matrix, &tau.vector) != GSL_SUCCESS) return;
     for (std::size_t i = 0; i < k; ++i)
         if (!(std::fabs(gsl_matrix_get(&w.matrix, i, i)) > 1e3 * GSL_DBL_EPSILON * max_norm(b_.get()))) return;
-    if (gsl_linalg_QR_lssolve(&w.matrix, &tau.vector, b_.get(), &c.vector, near_->residual.get()) != GSL_SUCCESS) return;
+    if (gsl_linalg_QR_lssolve(&w.matrix, &tau.vector, b_.get(), &c.vector, near_->residual.get()) != GSL_SUCCESS)
+        return;
     gsl_check(gsl_blas_dgemv(CblasTrans, 1.0, &y.matrix, &c.vector, 0.0, x), context + ": refinement start");
 }
 
@@ -180,7 +182,8 @@ bool dense_system::refine(const std::string& context) {
         for (int j = 0; j < krylov_dimension; ++j) {
             gsl_vector_view vj = gsl_matrix_row(v, static_cast<std::size_t>(j));
             gsl_vector_view w = gsl_matrix_row(v, static_cast<std::size_t>(j + 1));
-            gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, a_.get(), &vj.vector, 0.0, near_->scratch.get()), context + ": refinement product");
+            gsl_check(gsl_blas_dgemv(CblasNoTrans, 1.0, a_.get(), &vj.vector, 0.0, near_->scratch.get()),
+                      context + ": refinement product");
             precondition(near_->scratch.get(), &w.vector, context);
             // |G v_j| = |v_j - M^{-1} A v_j|, in r (free until the next cycle).
             gsl_check(gsl_vector_memcpy(r, &vj.vector), context + ": refinement contraction");

@@ -15,8 +15,8 @@ namespace roughroll {
 
 void check_node_count(int n) {
     if (n < min_nodes || n > max_nodes) {
-        throw input_error("n = " + std::to_string(n) + " is outside the supported range [" +
-                          std::to_string(min_nodes) + ", " + std::to_string(max_nodes) + "]");
+        throw input_error("n = " + std::to_string(n) + " is outside the supported range [" + std::to_string(min_nodes) +
+                          ", " + std::to_string(max_nodes) + "]");
     }
 }
 
@@ -41,7 +41,8 @@ gauss_legendre::gauss_legendre(int order) {
     // 3-4 steps per node (O(order^2) in all): nodes and weights w = 2/((1 - x^2) P'(x)^2),
     // symmetric about 0.
     gsl_guard();  // as every entry point that may precede GSL calls (base/error.hpp)
-    if (order <= 0 || order > 100000) throw numerical_error("cannot build a Gauss-Legendre rule of order " + std::to_string(order));
+    if (order <= 0 || order > 100000)
+        throw numerical_error("cannot build a Gauss-Legendre rule of order " + std::to_string(order));
     nodes.assign(order, 0.0);
     weights.assign(order, 0.0);
     const int half = (order + 1) / 2;
@@ -83,7 +84,6 @@ gauss_legendre::gauss_legendre(int order) {
     }
     if (order % 2 == 1) nodes[half - 1] = 0.0;
 }
-
 
 std::vector<double> u_coefficients(const gauss_chebyshev& rule, const std::vector<double>& values) {
     // b_j = (2/pi) sum_k w_k phi_k U_j(eta_k), with w_k U_j(eta_k) = h sin(t_k) sin((j+1) t_k),

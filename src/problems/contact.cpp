@@ -32,8 +32,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
         limit_zones_ = std::make_unique<one_parameter_zones>(*limit_);
         return;
     }
-    const bool extrapolate = options.how == method::extrapolated && !(kernel::normal(surfaces).empty() &&
-                                                                       kernel::tangential(surfaces).empty());
+    const bool extrapolate = options.how == method::extrapolated &&
+                             !(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty());
     if (extrapolate) {
         // Richardson's rule holds only where the error already falls like n^-4.
         check_extrapolation_range(widest_kernel(surfaces), n, "these kernels");
@@ -47,8 +47,8 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
         reported_ = std::make_unique<normal_solution>(*normal_);
         reported_->lambda = richardson(normal_->lambda, companion_->normal().lambda);
     }
-    tangential_ = std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces),
-                                                      kernel::normal(surfaces), f);
+    tangential_ =
+        std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f);
     zones_ = std::make_unique<zone_solver>(*tangential_);
     if (materials.beta_d != 0.0)
         dissimilar_ = std::make_unique<dissimilar_zones>(*tangential_, kernel::tangential(surfaces), materials.beta_d);
@@ -78,8 +78,9 @@ const normal_solution& contact::normal() const {
 
 tangential_solver& contact::tangential() {
     if (!tangential_)
-        throw input_error("method 'one-parameter' has no two-parameter tangential solver: use contact::traction and "
-                          "contact::slip_velocity");
+        throw input_error(
+            "method 'one-parameter' has no two-parameter tangential solver: use contact::traction and "
+            "contact::slip_velocity");
     return *tangential_;
 }
 
@@ -126,7 +127,8 @@ tangential_solution contact::point(double Q) {
     if (below) {
         try {
             const tangential_solution& quarter = levels_[0]->level_point(Q, false);
-            const tangential_solution& half = reported_ ? quarter : levels_[1]->level_point(Q, false, quarter.c0, quarter.load_slope);
+            const tangential_solution& half =
+                reported_ ? quarter : levels_[1]->level_point(Q, false, quarter.c0, quarter.load_slope);
             start = half.c0;
             start_slope = half.load_slope;
             if (quarter.c0 > -1.0 && quarter.c0 < 1.0) quarter_c0 = quarter.c0;
@@ -178,9 +180,7 @@ const tangential_solution& contact::level_point(double Q, bool checked, std::opt
     return *last_level_point_;
 }
 
-method contact::level_method() const {
-    return level_of(options_.how);
-}
+method contact::level_method() const { return level_of(options_.how); }
 
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_ || dissimilar_) return s;  // a dissimilar point is level n itself
@@ -210,8 +210,10 @@ std::optional<error_estimate> contact::levels_estimate(const tangential_solution
         const rounding_floors floor = floors_at(nodes(), s, s);
         return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
                               std::fabs(s.c0 - last_coarse_->c0) + floor.c0,
-                              std::fabs(s.xi - last_coarse_->xi) + floor.xi, 0.0,
-                              "n/2 (general zone search: level n, not extrapolated)", false};
+                              std::fabs(s.xi - last_coarse_->xi) + floor.xi,
+                              0.0,
+                              "n/2 (general zone search: level n, not extrapolated)",
+                              false};
     }
     if (!build_levels()) return std::nullopt;
     const tangential_solution own = distribution(s);
@@ -254,8 +256,7 @@ bool contact::build_levels() {
         for (int i = 0; i < count; ++i) {
             const int m = coarsest[i];
             if (m < min_nodes || (n << i) > max_nodes) continue;
-            if (require_range && how != method::one_parameter &&
-                !in_asymptotic_range(widest_kernel(surfaces_), m, how))
+            if (require_range && how != method::one_parameter && !in_asymptotic_range(widest_kernel(surfaces_), m, how))
                 continue;
             std::array<contact*, 3> at{};
             bool ok = true;
@@ -280,7 +281,7 @@ void contact::make_finer(int m) {
 }
 
 std::optional<tangential_solution> contact::above_finest(const tangential_solution& s, const tangential_solution& own,
-                                                        bool swept) {
+                                                         bool swept) {
     const int m = 2 * nodes();
     if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
     try {
@@ -303,7 +304,7 @@ contact::rounding_floors contact::floors_at(int n, const tangential_solution& s,
     // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
     // loses 1e-13 absolute in xi = 3e-8 at n = 128).
     const double strength = std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
-    const double size = std::max({1.0, std::fabs(lambda), strength});  // for xi
+    const double size = std::max({1.0, std::fabs(lambda), strength});          // for xi
     const double n_eps = rounding_floor(n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
     // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
     // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
@@ -344,9 +345,8 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         double* out;
     };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
-    std::vector<quantity> qs{
-        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, &e.lambda},
-        {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, &e.xi}};
+    std::vector<quantity> qs{{"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, &e.lambda},
+                             {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, &e.xi}};
     if (swept)
         qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, floor.Q, &e.Q});
     else
@@ -369,7 +369,8 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         three_levels used = q.v;
         int used_coarsest_n = coarsest_n;
         const bool rounding = std::fabs(q.v.finest - q.v.middle) <= q.floor;  // the ratio then means nothing
-        const bool confirm = b.resolved && (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
+        const bool confirm =
+            b.resolved && (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
         if ((!b.resolved && own.checks.hold()) || confirm) {
             // One level finer, n/2, n, 2n (error_bound.hpp). Where the first three gave no estimate
             // (a second chance, where n/4 is still pre-asymptotic for this quantity): only for a
@@ -378,7 +379,10 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
             // convergent by chance. Where they gave one (a confirmation): the larger of the two.
             if (const std::optional<tangential_solution> above = above_finest(s, own, swept)) {
                 const int i = static_cast<int>(&q - qs.data());
-                const double v = i == 0 ? finer_->normal_level().lambda : i == 1 ? above->xi : swept ? above->Q : above->c0;
+                const double v = i == 0   ? finer_->normal_level().lambda
+                                 : i == 1 ? above->xi
+                                 : swept  ? above->Q
+                                          : above->c0;
                 const three_levels finer{q.v.middle, q.v.finest, v};
                 error_bound fb = confirm ? confirm_error(finer, order, extrapolated, q.floor)
                                          : bound_error(finer, order, reported_value{1, extrapolated}, q.floor);
@@ -400,14 +404,16 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         if (!b.resolved) {
             std::ostringstream msg;
             msg.precision(3);
-            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
-                << ": " << q.name << " does not converge visibly over n = " << used_coarsest_n << ", "
-                << 2 * used_coarsest_n << ", " << 4 * used_coarsest_n << " (differences " << used.middle - used.coarsest
-                << ", " << used.finest - used.middle << ")";
-            if (!swept) msg << " at Q = " << s.Q;
-            else msg << " at c0 = " << s.c0;
+            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes() << ": "
+                << q.name << " does not converge visibly over n = " << used_coarsest_n << ", " << 2 * used_coarsest_n
+                << ", " << 4 * used_coarsest_n << " (differences " << used.middle - used.coarsest << ", "
+                << used.finest - used.middle << ")";
+            if (!swept)
+                msg << " at Q = " << s.Q;
+            else
+                msg << " at c0 = " << s.c0;
             msg << (nodes() < max_nodes ? "; increase n, or the scene is beyond the method's reach"
-                                                     : "; the scene is beyond the method's reach at the largest n");
+                                        : "; the scene is beyond the method's reach at the largest n");
             throw resolution_error(msg.str());
         }
         *q.out = std::max(*q.out, b.value);
@@ -415,11 +421,13 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     }
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
     const int first = 2 - self;  // index of the coarsest level's name
-    e.against = std::string(extrapolated ? "level n" : self == 2 ? "n/2" : "2n") + " (levels " + names[first] + ", " +
-                names[first + 1] + ", " + names[first + 2] + (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
-                (confirmed ? "; confirmed on n/2, n, 2n" : "") +
-                (e.bounded ? "; observed order below " : "; order ") + std::to_string(order) +
-                (e.bounded ? ": bounded)" : " observed)");
+    e.against = std::string(extrapolated ? "level n"
+                            : self == 2  ? "n/2"
+                                         : "2n") +
+                " (levels " + names[first] + ", " + names[first + 1] + ", " + names[first + 2] +
+                (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
+                (confirmed ? "; confirmed on n/2, n, 2n" : "") + (e.bounded ? "; observed order below " : "; order ") +
+                std::to_string(order) + (e.bounded ? ": bounded)" : " observed)");
     return e;
 }
 
@@ -432,8 +440,9 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked, bool ne
 
 void check_sweepable(const dissimilar& materials) {
     if (materials.beta_d != 0.0)
-        throw input_error("a curve swept in c0 is the paper's single zone, never the answer for beta_d != 0 "
-                          "(docs/formulation.md 8(g)); solve at given loads instead");
+        throw input_error(
+            "a curve swept in c0 is the paper's single zone, never the answer for beta_d != 0 "
+            "(docs/formulation.md 8(g)); solve at given loads instead");
 }
 
 contact::swept_point contact::at_stick_end(double c0) {
@@ -478,9 +487,9 @@ contact::swept_point contact::swept_at(double c0) {
     if (!build_levels()) return {s, std::nullopt};
     std::array<tangential_solution, 3> at{};
     for (int i = 0; i < 3; ++i)
-        at[i] = !levels_[i] ? own
+        at[i] = !levels_[i]                                ? own
                 : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
-                                                            : levels_[i]->level_at_stick_end(c0, false, sweeping_near_);
+                                                           : levels_[i]->level_at_stick_end(c0, false, sweeping_near_);
     const error_estimate e = estimate_from(s, own, at, true);
     // The same for the load's error interval: Q +- e.Q reaching beyond [0, f] cannot be told from
     // full stick or gross sliding (and may be no physical point at all).
@@ -496,10 +505,12 @@ void contact::refuse_load_outside(const tangential_solution& s, std::optional<do
     std::ostringstream msg;
     msg.precision(3);
     msg << "Q(c0) = " << shortest(s.Q);
-    if (error) msg << " +- " << *error << " (its error estimate) reaches";
-    else msg << " lies";
-    msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0) << " for method '" << to_string(options_.how)
-        << "' at n = " << nodes() << ": "
+    if (error)
+        msg << " +- " << *error << " (its error estimate) reaches";
+    else
+        msg << " lies";
+    msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0) << " for method '"
+        << to_string(options_.how) << "' at n = " << nodes() << ": "
         << (error ? std::string("the load is not resolved there; ") +
                         (nodes() < max_nodes ? "increase n, or the scene is beyond the method's reach"
                                              : "n is at its largest, so the scene is beyond the method's reach")
@@ -532,8 +543,9 @@ tangential_solution contact::johnson_level_point(double Q, const tangential_solu
     const std::vector<double> ends{near.start, near.c0, near.start2, near.end2};
     const five_zone_solution* v = five_level_point(Q, &ends);
     if (v == nullptr)
-        throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) + ": no five zones at Q = " +
-                               shortest(Q) + " from the neighbouring level's zones (the five zones change "
+        throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) +
+                               ": no five zones at Q = " + shortest(Q) +
+                               " from the neighbouring level's zones (the five zones change "
                                "between levels); another n may find them");
     tangential_solution t = five_zone_point(*v);
     t.Q = Q;
@@ -586,8 +598,10 @@ tangential_solution contact::johnson_point(double Q) {
         const five_zone_solution* v = five_level_point(Q, ends.empty() ? nullptr : &ends);
         if (v == nullptr) {
             if (dynamic_cast<const resolution_error*>(&why) == nullptr) throw;
-            throw resolution_error(std::string(why.what()) + "; no five zones (slip, stick, reversed slip, stick, "
-                                   "slip) are found at n = " + std::to_string(nodes()) +
+            throw resolution_error(std::string(why.what()) +
+                                   "; no five zones (slip, stick, reversed slip, stick, "
+                                   "slip) are found at n = " +
+                                   std::to_string(nodes()) +
                                    " either (their search starts from the coarser levels' zones): another n may "
                                    "find them, except on the driven side closer than Q/f = 0.998 to gross sliding, "
                                    "which no n reaches yet (docs/robustness.md)");
@@ -599,11 +613,14 @@ tangential_solution contact::johnson_point(double Q) {
         if (!s.checks.hold())
             throw resolution_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
                                    ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
-                                   "(3.3)-(3.4) (margins: stick " + shortest(s.checks.stick_margin) + ", slip " +
-                                   shortest(s.checks.slip_margin) + "): a zone is below the collocation's resolution "
-                                   "at n = " + std::to_string(nodes()) + " (docs/formulation.md 8(j)); " +
-                                   (nodes() < max_nodes ? "a larger n (at most " + std::to_string(max_nodes) + ") may resolve it"
-                                                        : "n is at its largest, so this load is beyond the method's reach"));
+                                   "(3.3)-(3.4) (margins: stick " +
+                                   shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
+                                   "): a zone is below the collocation's resolution "
+                                   "at n = " +
+                                   std::to_string(nodes()) + " (docs/formulation.md 8(j)); " +
+                                   (nodes() < max_nodes
+                                        ? "a larger n (at most " + std::to_string(max_nodes) + ") may resolve it"
+                                        : "n is at its largest, so this load is beyond the method's reach"));
         return s;
     };
     try {
@@ -664,13 +681,12 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
             const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
             const five_zone_solution* v = levels_[i]->five_level_point(last_five_load_, &ends);
             if (v == nullptr)
-                throw resolution_error("no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
-                                       std::to_string(nodes()) + " (dissimilar rollers): level " +
-                                       std::to_string(levels_[i]->nodes()) +
-                                       " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
-                                       (nodes() < max_nodes ? "another n (at most " + std::to_string(max_nodes) +
-                                                                  ") may find them"
-                                                            : "n is at its largest, so the load is beyond the method's reach"));
+                throw resolution_error(
+                    "no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
+                    std::to_string(nodes()) + " (dissimilar rollers): level " + std::to_string(levels_[i]->nodes()) +
+                    " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
+                    (nodes() < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
+                                         : "n is at its largest, so the load is beyond the method's reach"));
             at[i] = five_zone_point(*v);
         } else {
             at[i] = levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
@@ -707,19 +723,19 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
     const double ends_floor = ends_floor_at(finest_n);
     const quantity qs[] = {
         // (At full coupling P_H/P2 is level n's, not extrapolated: contact::normal.)
-        {"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, reported_ != nullptr && !coupled_,
+        {"P_H/P2",
+         {lambda_at(0), lambda_at(1), lambda_at(2)},
+         floor.lambda,
+         reported_ != nullptr && !coupled_,
          &e.lambda},
         {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, false, &e.xi},
         // The ends carry Newton's resolution too (dissimilar_zones.hpp).
         {"c0", {at[0].c0, at[1].c0, at[2].c0}, ends_floor, false, &e.c0},
-        {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, ends_floor, false,
-         &e.start},
+        {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, ends_floor, false, &e.start},
         // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
         // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
-        {"the second stick zone's end", {at[0].end2, at[1].end2, at[2].end2}, ends_floor, false,
-         &e.c0},
-        {"the second stick zone's start", {at[0].start2, at[1].start2, at[2].start2}, ends_floor,
-         false, &e.start}};
+        {"the second stick zone's end", {at[0].end2, at[1].end2, at[2].end2}, ends_floor, false, &e.c0},
+        {"the second stick zone's start", {at[0].start2, at[1].start2, at[2].start2}, ends_floor, false, &e.start}};
     // The second chance of estimate_from, one level finer (n/2, n, 2n), where n is the finest level
     // and the solution's checks hold: an n/4 that oscillates (the second stick zone's end of the
     // rough pair of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64) must not refuse an
@@ -785,12 +801,15 @@ std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solu
             std::ostringstream msg;
             msg.precision(3);
             msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
-                << " (dissimilar rollers): " << q.name << " does not converge visibly over the levels n = "
-                << used_coarsest << ", " << 2 * used_coarsest << ", " << 4 * used_coarsest << " (differences "
-                << used.middle - used.coarsest << ", " << used.finest - used.middle << ") at Q = " << s.Q << "; ";
+                << " (dissimilar rollers): " << q.name
+                << " does not converge visibly over the levels n = " << used_coarsest << ", " << 2 * used_coarsest
+                << ", " << 4 * used_coarsest << " (differences " << used.middle - used.coarsest << ", "
+                << used.finest - used.middle << ") at Q = " << s.Q << "; ";
             // A larger n helps only where its levels fit below max_nodes (the finest is n, or 2n above).
-            if (nodes() < max_nodes) msg << "a larger n (at most " << max_nodes << ") may converge";
-            else msg << "n is at its largest, so the load is beyond the method's reach";
+            if (nodes() < max_nodes)
+                msg << "a larger n (at most " << max_nodes << ") may converge";
+            else
+                msg << "n is at its largest, so the load is beyond the method's reach";
             throw resolution_error(msg.str());
         }
         *q.out = std::max(*q.out, b.value);

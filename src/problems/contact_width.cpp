@@ -18,8 +18,8 @@ constexpr double width_step = 1.25;  // bracket expansion factor of the width se
 constexpr int max_width_steps = 60;  // 1.25^60 = 6.5e5 a_H: far beyond any physical width
 constexpr int max_width_iterations = 100;
 constexpr double max_width_over_radius = 0.1;  // a/R above which (3.7)'s half-spaces are refused
-constexpr double width_tolerance = 1e-12;       // relative, in a: Brent's interval, the polish's last step
-constexpr int max_polish_steps = 8;             // secant steps from the cheap level's root
+constexpr double width_tolerance = 1e-12;      // relative, in a: Brent's interval, the polish's last step
+constexpr int max_polish_steps = 8;            // secant steps from the cheap level's root
 
 // "contact width search at a = ... m (a/a_H = ...)": where a failure of the normal problem
 // happened, so that its advice (increase n, another method) can be judged.
@@ -31,9 +31,10 @@ std::string at_width(double x, double a_H) {
 // `lead` names the width a: the one found, Hertz's, or a bound below the one that carries P2.
 [[noreturn]] void wide_against_radius(const physical_scene& s, double a, const std::string& lead) {
     std::ostringstream msg;
-    msg << lead << " = " << shortest(a) << " m, " << shortest(a / s.radius()) << " times the radius R = "
-        << shortest(s.radius()) << " m: the half-space theory of (3.7) needs a << R (refused above a/R = "
-        << max_width_over_radius << "); check 'R1', 'R2', 'P2' and the roughness";
+    msg << lead << " = " << shortest(a) << " m, " << shortest(a / s.radius())
+        << " times the radius R = " << shortest(s.radius())
+        << " m: the half-space theory of (3.7) needs a << R (refused above a/R = " << max_width_over_radius
+        << "); check 'R1', 'R2', 'P2' and the roughness";
     throw input_error(msg.str());
 }
 

@@ -22,10 +22,10 @@
 namespace roughroll {
 
 namespace {
-constexpr int start_scan = 32;            // trial starts of the stick zone
-constexpr int least_samples = 2001;       // samples of b p + f G for its least value (gross sliding)
-constexpr int shape_samples = 2001;       // samples of p for "even and decreasing" (complete slip)
-constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
+constexpr int start_scan = 32;           // trial starts of the stick zone
+constexpr int least_samples = 2001;      // samples of b p + f G for its least value (gross sliding)
+constexpr int shape_samples = 2001;      // samples of p for "even and decreasing" (complete slip)
+constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
 // W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
@@ -50,11 +50,13 @@ void check_dissimilar(const dissimilar& materials, const solver_options& options
     check_beta_d(materials.beta_d);
     if (materials.beta_d == 0.0) return;  // the paper's problem at both coupling levels (8(d))
     if (options.how == method::one_parameter)
-        throw input_error("beta_d != 0 is not available for method 'one-parameter': its edge behaviour is not "
-                          "derived (docs/formulation.md 8(g)); use 'product' or 'extrapolated'");
+        throw input_error(
+            "beta_d != 0 is not available for method 'one-parameter': its edge behaviour is not "
+            "derived (docs/formulation.md 8(g)); use 'product' or 'extrapolated'");
     if (options.zones == zone_search::single)
-        throw input_error("zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
-                          "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'");
+        throw input_error(
+            "zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
+            "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'");
 }
 
 namespace {
@@ -126,8 +128,10 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
         const double r = static_cast<double>(i) / (shape_samples - 1) * (1.0 - 1e-9);
         const double p = normal.pressure(r), mirrored = normal.pressure(-r);
         if (std::fabs(p - mirrored) > 1e-10 * scale || p > previous + 1e-12 * scale)
-            throw input_error("complete slip (docs/formulation.md 8(f)): the pressure is not even and decreasing in "
-                              "|r| (at r = " + shortest(r) + "), so the central band of slip is not derived");
+            throw input_error(
+                "complete slip (docs/formulation.md 8(f)): the pressure is not even and decreasing in "
+                "|r| (at r = " +
+                shortest(r) + "), so the central band of slip is not derived");
         previous = p;
     }
     const double target = 0.5 * (1.0 + (beta_d > 0.0 ? Q_over_f : -Q_over_f));
@@ -147,7 +151,11 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
 }
 
 dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d)
-    : solver_(solver), k1_(k1), beta_d_(beta_d), f_(solver.friction()), pressure_b_(solver.normal().b),
+    : solver_(solver),
+      k1_(k1),
+      beta_d_(beta_d),
+      f_(solver.friction()),
+      pressure_b_(solver.normal().b),
       pressure_kinks_(solver.normal().kinks),
       workspace_(make_integration_workspace(quadrature_intervals)) {
     check_beta_d(beta_d);
@@ -160,7 +168,8 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
     // bounded by eps sum |b_j| gives them at the cost of an acos and a panel's 25 terms
     // (u_series_table.hpp). Up to twice that many terms the series is summed as it is (measured
     // slower with the table at 32 terms; docs/performance.md), and Hertz's one term stays exact.
-    if (pressure_b_.size() > static_cast<std::size_t>(2 * theta_panels::degree + 2)) pressure_table_.emplace(pressure_b_);
+    if (pressure_b_.size() > static_cast<std::size_t>(2 * theta_panels::degree + 2))
+        pressure_table_.emplace(pressure_b_);
 }
 
 double dissimilar_zones::pressure(double r) const {
@@ -195,7 +204,8 @@ double dissimilar_zones::W(double r, double start, double c0) {
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         double total = 0.0;
         for (std::size_t i = 0; i + 1 < points.size(); ++i)
-            total += integrate_piece(integrand, points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+            total +=
+                integrate_piece(integrand, points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
         return total;
     };
     // r within `apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
@@ -235,9 +245,9 @@ double dissimilar_zones::W(double r, double start, double c0) {
     }
     for (const auto& term : k1_.terms())
         w += term.T * integrate([&](double eta) {
-            const double z = eta - r;
-            return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
-        });
+                 const double z = eta - r;
+                 return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+             });
     return w;
 }
 
@@ -318,7 +328,9 @@ dissimilar_zones::structure dissimilar_zones::opposite_directions(double b) {
 std::optional<double> dissimilar_zones::stick_end(const structure& z, double start, double magnitude) {
     // Q'(start, c0) is the empty zone's load at c0 = start and falls as the zone grows; a start from
     // which no end carries |Q| has no zone (empty).
-    const auto excess = [&](double c0) { return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude; };
+    const auto excess = [&](double c0) {
+        return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude;
+    };
     if (!(excess(start) > 0.0 && excess(1.0) < 0.0)) return std::nullopt;
     return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, "Brent search for the stick zone's end").x;
 }
@@ -349,7 +361,8 @@ std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, 
     return s;
 }
 
-tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess) {
+tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude,
+                                                  std::optional<zone_guess> guess) {
     // With a guess (the coarser level's zone): Newton, accepted when its checks hold.
     if (guess) {
         if (auto s = newton(z, magnitude, guess->start, guess->c0)) {
@@ -420,8 +433,9 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
     // Of this kind: solve tries the other. The message is the user's where no caller answers the load.
     std::ostringstream msg;
     msg.precision(6);
-    msg << "dissimilar rollers at |Q|/f = " << magnitude / f_ << ": no three zones carry the load at n = "
-        << solver_.normal().rule.n << "; another n may find them (docs/formulation.md 8(g), 8(j))";
+    msg << "dissimilar rollers at |Q|/f = " << magnitude / f_
+        << ": no three zones carry the load at n = " << solver_.normal().rule.n
+        << "; another n may find them (docs/formulation.md 8(g), 8(j))";
     throw resolution_error(msg.str());
 }
 
@@ -509,8 +523,9 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
 tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
-        throw resolution_error(no_three_zones(Q, f_, "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
-                                                "not three"));
+        throw resolution_error(no_three_zones(Q, f_,
+                                              "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
+                                              "not three"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     tangential_solution s;
@@ -526,7 +541,8 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         std::optional<numerical_error> fault;
         for (const bool blend : {opposite, !opposite}) {
             try {
-                tangential_solution t = three_zones(blend ? opposite_directions(b) : equal_directions(b), magnitude, guess);
+                tangential_solution t =
+                    three_zones(blend ? opposite_directions(b) : equal_directions(b), magnitude, guess);
                 if (t.checks.hold()) {
                     found = t;
                     break;
@@ -539,7 +555,8 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         }
         if (!found && !failed && fault) throw *fault;
         if (!found && !failed)
-            throw resolution_error(no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
+            throw resolution_error(
+                no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
         s = found ? *found : *failed;
     }
     s.general = true;

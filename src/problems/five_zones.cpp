@@ -18,7 +18,7 @@
 namespace roughroll {
 
 namespace {
-constexpr int max_sweeps = 200;          // block Gauss-Seidel sweeps of one system
+constexpr int max_sweeps = 200;  // block Gauss-Seidel sweeps of one system
 // On the change of xi1 + xi2 between sweeps: 1e-15 f, and the rounding of the sum itself. Without
 // the second term a 2-ulp limit cycle (xi1 + xi2 = -0.1365 at f = 0.05 alternating by 5.6e-17 >
 // 1e-15 f) ran the sweeps out, and Newton, finding the residual undefined at a difference point,
@@ -82,7 +82,8 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     s.sign = beta_d_ > 0.0 ? 1.0 : -1.0;
     s.xi = s.sign * s.zone1.xi;
     // Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2; solve_on_zone's Q is f + rho int q.
-    s.Q = s.sign * (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_));
+    s.Q = s.sign *
+          (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_));
     s.zone1.opposite = s.zone2.opposite = true;
     return s;
 }
@@ -216,7 +217,8 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones_from(double Q, co
     return continued(from, Q, from.sign * from.Q);
 }
 
-std::optional<five_zone_solution> dissimilar_zones::continued(std::optional<five_zone_solution> s, double Q, double load) {
+std::optional<five_zone_solution> dissimilar_zones::continued(std::optional<five_zone_solution> s, double Q,
+                                                              double load) {
     // Steps of f/8 in the load, halved (down to f/1024, the slip+ zone closing near the braked
     // transition, 8(j) 4a) where Newton fails, doubled again after a success; in the frame's loads.
     const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;

@@ -28,7 +28,8 @@ struct full_coupling::iterate {
 full_coupling::full_coupling(const kernel& k1, const kernel& k2, int n, method how, double f, double beta_d)
     : k1_(k1), k2_(k2), f_(f), beta_d_(beta_d), normal_solver_(n, how) {
     check_beta_d(beta_d);
-    if (beta_d == 0.0) throw input_error("full coupling: beta_d = 0 is the uncoupled problem (docs/formulation.md 8(d))");
+    if (beta_d == 0.0)
+        throw input_error("full coupling: beta_d = 0 is the uncoupled problem (docs/formulation.md 8(d))");
 }
 
 full_coupling::~full_coupling() = default;
@@ -48,7 +49,8 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
     if (previous.five) {
         const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2, previous.end2});
         if (!v)
-            throw resolution_error(at_load(Q, f) + "Newton finds no five zones from the previous iterate's ends "
+            throw resolution_error(at_load(Q, f) +
+                                   "Newton finds no five zones from the previous iterate's ends "
                                    "(the zone structure changes under the coupling; docs/formulation.md 8(e)), "
                                    "which the alternation does not follow; coupling = \"johnson\" answers the load");
         t = five_zone_point(*v);
@@ -75,8 +77,8 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c
 // leading slip against Q, five zones), whose W = L1[p H] and int p H (dissimilar_zones) take p from its
 // U-series in closed form and at the edge, so p_q^0 would have to join them (not built: 8(l)); and rough
 // rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, not built).
-std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule,
-                                               double beta_d, bool smooth) {
+std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
+                                               bool smooth) {
     if (!smooth || s.five || s.opposite || !(s.c0 > s.start && s.start > -1.0) || s.psi_b.empty()) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     k->add_zone(rule, beta_d, s.sign, s.start, s.c0, s.psi_b);
@@ -105,9 +107,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         };
         // 8(l) step 0: the kinks of p^(k) from q of p1^(k-1), the same iterate as beta_D p1^(k-1).
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
-            auto it = std::make_unique<iterate>(
-                iterate{normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, std::move(kinks)), nullptr,
-                        nullptr, {}});
+            auto it = std::make_unique<iterate>(iterate{
+                normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, std::move(kinks)), nullptr, nullptr, {}});
             it->normal.how = johnson.how;
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
@@ -121,8 +122,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         if (next->normal.kinks && (next->s.opposite || next->s.five)) next = solve_step(nullptr);
 
         // Iterate, then test: the changes of lambda, e, xi and the zone ends over this step.
-        const double value_change = std::max({std::fabs(next->normal.lambda - lambda),
-                                              std::fabs(next->normal.offset - offset), std::fabs(next->s.xi - source.xi)});
+        const double value_change =
+            std::max({std::fabs(next->normal.lambda - lambda), std::fabs(next->normal.offset - offset),
+                      std::fabs(next->s.xi - source.xi)});
         // At gross sliding (|Q| = f) there are no zone ends: start = c0 = r*, the least point of the
         // slip velocity (dissimilar_zones::gross_sliding), is found by golden section only to about
         // sqrt(eps) of a flat minimum (1e-8), so it is no test of the alternation; xi = -min v is.
@@ -132,16 +134,18 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             for (std::size_t i = 0; i < a.size(); ++i) end_change = std::max(end_change, std::fabs(a[i] - b[i]));
         }
         if (!(std::isfinite(value_change) && std::isfinite(end_change)))
-            throw numerical_error(at_load(Q, f_) + "the alternation gives a non-finite value at step " + std::to_string(k));
+            throw numerical_error(at_load(Q, f_) + "the alternation gives a non-finite value at step " +
+                                  std::to_string(k));
         summary_.changes.push_back(value_change);
         if (k > 2 && previous_change > 0.0)
             summary_.contraction = std::max(summary_.contraction, value_change / previous_change);
 
         // The iterate before the current one is no longer a source: cut its reference (its G is
         // never asked again; asking would be a bug, so it throws) and release it.
-        if (current_) current_->normal.tangential_term = [](double) -> double {
-            throw numerical_error("full coupling: a released iterate's G was asked for");
-        };
+        if (current_)
+            current_->normal.tangential_term = [](double) -> double {
+                throw numerical_error("full coupling: a released iterate's G was asked for");
+            };
         previous_ = std::move(current_);
         current_ = std::move(next);
         source_zones = current_->zones.get();
@@ -152,8 +156,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
 
         if (value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance) {
             summary_.offset = offset;
-            summary_.peak_pressure_change = peak_of(current_->normal).p / peak_of(johnson).p *
-                                                std::sqrt(johnson.lambda / current_->normal.lambda) - 1.0;
+            summary_.peak_pressure_change =
+                peak_of(current_->normal).p / peak_of(johnson).p * std::sqrt(johnson.lambda / current_->normal.lambda) -
+                1.0;
             return current_->s;
         }
         // Growing changes after the first steps: the alternation does not contract here (changes

@@ -30,15 +30,15 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     const double size = std::max(K, strength);  // xi's terms: f G of (4.4) and the kernel terms
     const double n_eps = rounding_floor(max_nodes, K);
     const double rho = s.rho();
-    const double zone_end_floor = std::min(rho > 0.0 ? n_eps / rho : std::numeric_limits<double>::infinity(),
-                                           2.0 * std::sqrt(n_eps));
+    const double zone_end_floor =
+        std::min(rho > 0.0 ? n_eps / rho : std::numeric_limits<double>::infinity(), 2.0 * std::sqrt(n_eps));
     struct quantity {
         const char* name;
         double estimate, scale, floor;
     };
     const quantity quantities[] = {
         {"P_H/P2", e.lambda, std::fabs(lambda), rounding_floor(max_nodes, lambda)},
-        {"c0", e.c0, 1.0 - s.c0, zone_end_floor},          // the slip zone [c0, 1] (issue 23, 1)
+        {"c0", e.c0, 1.0 - s.c0, zone_end_floor},                 // the slip zone [c0, 1] (issue 23, 1)
         {"stick start", e.start, 1.0 + s.start, zone_end_floor},  // the slip zone [-1, start]
         {"xi", e.xi, std::fabs(s.xi), rounding_floor(max_nodes, std::fabs(s.xi) + s.f * size)},
         {"Q", e.Q, std::fabs(s.Q), rounding_floor(max_nodes, s.f * K)},
@@ -48,7 +48,10 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     tolerance_check worst{0.0, "P_H/P2", e.lambda, 0.0};
     for (const quantity& q : quantities) {
         const double allowed = std::max(tol * std::fabs(q.scale), q.floor);
-        const double ratio = q.estimate == 0.0 ? 0.0 : !(q.estimate > 0.0) ? inf : allowed > 0.0 ? q.estimate / allowed : inf;
+        const double ratio = q.estimate == 0.0     ? 0.0
+                             : !(q.estimate > 0.0) ? inf
+                             : allowed > 0.0       ? q.estimate / allowed
+                                                   : inf;
         if (ratio > worst.ratio) {
             const double relative = q.scale != 0.0 ? q.estimate / std::fabs(q.scale) : inf;
             worst = {ratio, q.name, q.estimate, relative};
@@ -122,11 +125,12 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     std::string msg = "no n up to " + top + " meets the tolerance " + shortest(tolerance_) + " (relative)";
     if (best) {
         const double relative = best->check.relative;
-        msg += ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
-               (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
-               " at n = " + std::to_string(best->n) +
-               "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate, or try "
-               "another method";
+        msg +=
+            ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
+            (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
+            " at n = " + std::to_string(best->n) +
+            "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate, or try "
+            "another method";
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + top + ": " + last_reason +
                "); give n to see that point, or try another method or zone search";
@@ -164,8 +168,9 @@ std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<do
         curve_point& row = rows[i];
         if (!row.is_refused() && ladder.answers(c, row.solution, row.estimate)) continue;
         // What the row was given: its load, or on a swept curve its stick end (swept_curve's c0s).
-        const double given = sweep ? (i + 1 == rows.size() ? -1.0 : 2.0 * (1.0 - static_cast<double>(i) / (points - 1)) - 1.0)
-                                   : loads[i];
+        const double given =
+            sweep ? (i + 1 == rows.size() ? -1.0 : 2.0 * (1.0 - static_cast<double>(i) / (points - 1)) - 1.0)
+                  : loads[i];
         try {
             level_ladder::answer a = sweep ? ladder.at_stick_end(given, 1) : ladder.point(given, 1);
             const carter_point smooth = carter(a.solution.Q, f);

@@ -32,8 +32,7 @@ pressure_peak peak_of(const normal_solution& s) {
     return {least.r, -least.value};
 }
 
-normal_solver::normal_solver(int n, method how)
-    : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
+normal_solver::normal_solver(int n, method how) : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
 
 normal_solution normal_solver::solve(const kernel& k2, sweep_cache* cache) { return solve(k2, nullptr, {}, cache); }
 
@@ -46,8 +45,9 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
                                      const std::vector<double>& kinks, sweep_cache* cache,
                                      std::shared_ptr<const pressure_kinks> explicit_kinks) {
     if (explicit_kinks && !k2.empty())
-        throw numerical_error("full coupling: the pressure's explicit kinks (docs/formulation.md 8(l)) are built for "
-                              "smooth rollers only");
+        throw numerical_error(
+            "full coupling: the pressure's explicit kinks (docs/formulation.md 8(l)) are built for "
+            "smooth rollers only");
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
     gsl_matrix* a = system_.matrix();
@@ -79,8 +79,17 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
     }
 
     const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
-    normal_solution s{rule_, how_, std::vector<double>(n), {}, gsl_vector_get(x, n + 1), gsl_vector_get(x, n),
-                      system_.rcond(), std::move(kernel_term), {}, 0.0, nullptr};
+    normal_solution s{rule_,
+                      how_,
+                      std::vector<double>(n),
+                      {},
+                      gsl_vector_get(x, n + 1),
+                      gsl_vector_get(x, n),
+                      system_.rcond(),
+                      std::move(kernel_term),
+                      {},
+                      0.0,
+                      nullptr};
     for (int k = 0; k < n; ++k) s.phi[k] = gsl_vector_get(x, k);
     s.b = u_coefficients(rule_, s.phi);
     if (coupled) {

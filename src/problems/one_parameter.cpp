@@ -94,8 +94,17 @@ normal_solution one_parameter_normal(double eps2, int n) {
     for (int j = 0; j < n; ++j) b[j] = gsl_vector_get(x, j);
     std::vector<double> phi(n);
     for (int k = 0; k < n; ++k) phi[k] = u_series(b, rule.nodes[k]);
-    return normal_solution{std::move(rule), method::one_parameter, std::move(phi), std::move(b),
-                           gsl_vector_get(x, n + 1), gsl_vector_get(x, n), system.rcond(), nullptr, {}, 0.0, nullptr};
+    return normal_solution{std::move(rule),
+                           method::one_parameter,
+                           std::move(phi),
+                           std::move(b),
+                           gsl_vector_get(x, n + 1),
+                           gsl_vector_get(x, n),
+                           system.rcond(),
+                           nullptr,
+                           {},
+                           0.0,
+                           nullptr};
 }
 
 one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int n)
@@ -152,7 +161,7 @@ tangential_solution one_parameter_solver::solve_on_zone(double start, double c0)
             gsl_matrix_set(a, m, j, cos_[static_cast<std::size_t>(m) * n_ + j] * (sin_[m] + stiffness * (j + 1)));
         gsl_matrix_set(a, m, n_, sin_[m]);
         const double r = start + rho * (normal_.rule.collocation[m] + 1.0);  // E4
-        gsl_vector_set(rhs, m, -f_ * G(r) * sin_[m]);                       // E5
+        gsl_vector_set(rhs, m, -f_ * G(r) * sin_[m]);                        // E5
     }
     std::ostringstream context;
     context.precision(17);
@@ -179,8 +188,9 @@ tangential_solution one_parameter_solver::full_stick() const {
 tangential_solution one_parameter_solver::gross_sliding() const {
     tangential_solution s = gross_sliding_solution(f_, G(-1.0));
     if (!std::isfinite(s.xi))
-        throw input_error("one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
-                          "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1)");
+        throw input_error(
+            "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
+            "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1)");
     return s;
 }
 

@@ -18,7 +18,7 @@ namespace {
 constexpr int start_scan = 16;           // trial starts of the stick zone in [-1, r*], bracketing E = 0
 constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
 constexpr int newton_iterations = 40;
-constexpr double near_sliding = 1e-4;  // below this 1 - |Q|/f Newton starts from the asymptotic zone
+constexpr double near_sliding = 1e-4;       // below this 1 - |Q|/f Newton starts from the asymptotic zone
 constexpr double newton_tolerance = 1e-12;  // Newton's last full step in the zone ends, absolute in r
 }  // namespace
 
@@ -61,7 +61,8 @@ double one_parameter_zones::stick_end(double start, double magnitude, std::optio
     const char* what = "Brent search for the stick zone's end";
     if (guess) {
         const double lo = std::max(start, *guess - 1e-3), hi = std::min(1.0, *guess + 1e-3);
-        if (lo < hi && excess(lo) > 0.0 && excess(hi) < 0.0) return brent_root(excess, lo, hi, end_tolerance, 0.0, 200, what).x;
+        if (lo < hi && excess(lo) > 0.0 && excess(hi) < 0.0)
+            return brent_root(excess, lo, hi, end_tolerance, 0.0, 200, what).x;
     }
     if (!(excess(1.0) < 0.0)) {
         std::ostringstream msg;
@@ -105,8 +106,10 @@ tangential_solution one_parameter_zones::general(double magnitude, std::optional
         } catch (const numerical_error&) {
             break;
         }
-        if (e <= 0.0) hi = trial, hi_entry = e, hi_end = *end;
-        else lo = trial, lo_entry = e, lo_end = *end;
+        if (e <= 0.0)
+            hi = trial, hi_entry = e, hi_end = *end;
+        else
+            lo = trial, lo_entry = e, lo_end = *end;
     }
     if (std::isnan(hi))
         // No zone of this structure (not a numerical fault): a refusal of the point (resolution_error),
@@ -163,8 +166,9 @@ tangential_solution one_parameter_zones::solve(double Q, bool force_general) {
     }
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
     check_load_resolvable(magnitude, f_);
-    tangential_solution s = magnitude == f_ ? gross_sliding()
-                                            : general(magnitude, single ? std::optional<double>(single->c0) : std::nullopt);
+    tangential_solution s = magnitude == f_
+                                ? gross_sliding()
+                                : general(magnitude, single ? std::optional<double>(single->c0) : std::nullopt);
     s.general = s.start > -1.0;
     apply_load_sign(s, Q, "one-parameter zone search");
     s.checks = single_.check(s);

@@ -12,8 +12,9 @@ namespace roughroll {
 void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
                               const std::vector<double>& psi_b) {
     if (!(start > -1.0 && start < c0 && c0 < 1.0))
-        throw numerical_error("full coupling: a stick zone of the pressure's kinks is not inside the contact "
-                              "(docs/formulation.md 8(l))");
+        throw numerical_error(
+            "full coupling: a stick zone of the pressure's kinks is not inside the contact "
+            "(docs/formulation.md 8(l))");
     zone z{start, 0.5 * (c0 - start), beta_d * sign, {}};
     std::vector<double> g(static_cast<std::size_t>(rule.n));
     // int q r/sqrt(1 - r^2) dr and int q/sqrt(1 - r^2) dr over the zone: rho int sqrt(1 - t^2) g(t) (r, 1) dt,

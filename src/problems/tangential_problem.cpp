@@ -18,7 +18,7 @@
 namespace roughroll {
 
 namespace {
-constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4)
+constexpr int check_points = 200;         // interior grid points per zone for (3.3), (3.4)
 constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (see solve)
 
 // Interior Chebyshev points of (lo, hi), clustered towards the ends where the
@@ -37,8 +37,8 @@ const kernel& resolved(const kernel& k, const normal_solution& normal) {
 }
 }  // namespace
 
-tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2,
-                                     double f, bool closed_form)
+tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
+                                     bool closed_form)
     : normal_(normal),
       k1_(resolved(k1, normal)),
       dk_(k2.minus(k1)),
@@ -198,7 +198,6 @@ double tangential_solver::load(double c0) {
     return last_system_->Q;
 }
 
-
 double load_magnitude(double Q, double f) {
     if (!std::isfinite(Q)) throw input_error("Q must be finite");
     const double magnitude = std::fabs(Q);
@@ -258,8 +257,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
                 throw resolution_error(msg.str());
             }
         };
-        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
-                                           "root search for c0", full_stick_below, carter(target, f_).c0, slope);
+        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess, "root search for c0",
+                                           full_stick_below, carter(target, f_).c0, slope);
         s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
         s.iterations = c0.iterations;
         s.load_slope = c0.slope;
@@ -410,8 +409,10 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
     // small itself and the margin is rounding (measured -3.0e-11 at Q/f = 1 - 1e-12, n = 256,
     // T = 100, A = 1: floor 6.5e-11), where a wrong structure fails by far more (-0.09 for the
     // paper's zone there, -1.1e-3 in the one-parameter limit of section 6).
-    c.stick_rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max({1.0, std::fabs(normal_.lambda),
-                                                                             k1_.strength(), dk_.strength()})) / f_;
+    c.stick_rounding =
+        stick_system_floor(
+            n_, std::fabs(s.xi) + f_ * std::max({1.0, std::fabs(normal_.lambda), k1_.strength(), dk_.strength()})) /
+        f_;
     c.stick_holds = c.stick_margin >= -c.stick_rounding;
     // (3.4) likewise: the slip velocity (3.6) is what is left of the same terms, xi + f G minus the
     // kernels' action on p1, off the stick zone; near gross sliding it is that small too and its

@@ -10,10 +10,10 @@
 
 namespace roughroll {
 
-std::optional<tangential_solution> zone_ends_newton(const std::function<tangential_solution(double, double)>& solve_on_zone,
-                                                    const std::function<double(const tangential_solution&)>& entry,
-                                                    double gap, double start, double c0, int max_iterations,
-                                                    double tolerance) {
+std::optional<tangential_solution> zone_ends_newton(
+    const std::function<tangential_solution(double, double)>& solve_on_zone,
+    const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
+    int max_iterations, double tolerance) {
     if (!(gap > 0.0 && c0 > start)) return std::nullopt;
     std::optional<tangential_solution> last;  // the solve at the last x, which is the root's
     newton_problem problem;

@@ -15,8 +15,8 @@
 namespace roughroll {
 
 namespace {
-constexpr int start_scan = 32;            // trial starts of the stick zone, bracketing the entry condition
-constexpr double end_tolerance = 1e-15;   // zone ends, absolute in r
+constexpr int start_scan = 32;           // trial starts of the stick zone, bracketing the entry condition
+constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 // Below this 1 - |Q|/f the search starts from gross sliding (continuation) before scanning.
 constexpr double near_sliding = 1e-4;
@@ -122,7 +122,8 @@ std::optional<tangential_solution> zone_solver::continuation(double magnitude) {
     for (int iteration = 1; iteration <= newton_iterations; ++iteration) {
         const double m = point + gamma * rho;
         // Iterates far from the model (more than its O(rho) corrections allow) are rounding's walk.
-        if (!(m - rho > -1.0 && m + rho <= 1.0) || std::fabs(gamma - 0.5) > 0.1 || std::fabs(std::log(rho / model_rho)) > 0.1)
+        if (!(m - rho > -1.0 && m + rho <= 1.0) || std::fabs(gamma - 0.5) > 0.1 ||
+            std::fabs(std::log(rho / model_rho)) > 0.1)
             return model_zone();
         tangential_solution t = single_.solve_on_zone(m - rho, m + rho);
         const double deficit = -rho * M_PI_2 * t.psi_b[0];
@@ -173,8 +174,10 @@ tangential_solution zone_solver::general(double magnitude, std::optional<zone_gu
         } catch (const numerical_error&) {
             break;
         }
-        if (e <= 0.0) hi = trial, hi_entry = e, hi_end = end;
-        else lo = trial, lo_entry = e, lo_end = end;
+        if (e <= 0.0)
+            hi = trial, hi_entry = e, hi_end = end;
+        else
+            lo = trial, lo_entry = e, lo_end = end;
     }
     if (std::isnan(hi))
         // No zone of this structure (not a numerical fault): a refusal of the point (resolution_error),

@@ -54,7 +54,8 @@ struct scene_point {
     std::optional<contact_width> width;
     contact solved;
     tangential_solution solution;
-    double seconds;  // wall time of the width search, the normal and the tangential solves (with the ladder: every rung tried, estimates included)
+    double
+        seconds;  // wall time of the width search, the normal and the tangential solves (with the ladder: every rung tried, estimates included)
     std::optional<error_estimate> estimate;
 
     point_report report() const;  // what to_json and write_summary print (its n: the rung's, with the ladder)
@@ -70,7 +71,7 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
 // A creep curve of a scene: creep_curve at `loads` (curve_loads(points, ...) when none), or
 // swept_curve of `points` when `sweep`, with each row's contact width for a physical scene.
 struct scene_curve {
-    scene settled;                      // its surfaces at the (last) width settled
+    scene settled;  // its surfaces at the (last) width settled
     std::vector<curve_point> rows;
     std::vector<contact_width> widths;  // a physical scene: one per row, else empty
     std::vector<int> nodes;             // each row's n (the ladder's rung; 0 for a refused row)

@@ -42,8 +42,8 @@ struct profile_samples {
 
 struct profile {
     profile_kind kind = profile_kind::flat;
-    double delta = 0.0;         // m; sine and sawtooth only
-    profile_samples measured;   // measured only
+    double delta = 0.0;        // m; sine and sawtooth only
+    profile_samples measured;  // measured only
 };
 
 // h(x1), the micro-shape function of (2.3)-(2.5); only its derivative h_1 enters (2.11)-(2.14),

@@ -44,7 +44,6 @@ public:
     // rho K(rho z): the kernel of the stick-zone equation in its own variable (E6).
     kernel stretched(double rho) const;
 
-
 private:
     std::vector<exponential_term> terms_;
 };

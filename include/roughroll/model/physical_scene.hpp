@@ -46,19 +46,19 @@ struct material {
 };
 
 struct physical_scene {
-    double E = 0.0;    // Young's modulus, Pa (one material for both rollers; 0 with `materials`)
-    double nu = 0.0;   // Poisson's ratio (one material)
+    double E = 0.0;   // Young's modulus, Pa (one material for both rollers; 0 with `materials`)
+    double nu = 0.0;  // Poisson's ratio (one material)
     // A material per roller, roller 1 = cylinder1 (docs/formulation.md 8(a)); empty: E, nu for both.
     std::optional<std::array<material, 2>> materials;
-    double R1 = 0.0;   // radii, m (one of them may be infinite: a roller on a plane)
+    double R1 = 0.0;  // radii, m (one of them may be infinite: a roller on a plane)
     double R2 = 0.0;
-    double P2 = 0.0;   // normal load per unit length, N/m
+    double P2 = 0.0;           // normal load per unit length, N/m
     std::optional<double> P1;  // tangential load per unit length, N/m (else the scene's Q)
     surface_stiffness cylinder1, cylinder2;
     width_rule width = width_rule::given_load;
 
     double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }  // of the one material
-    double radius() const;  // R of (3.1)
+    double radius() const;                                           // R of (3.1)
 };
 
 // C of docs/formulation.md 8(a), the combined compliance that replaces 2 (1 - nu)/mu everywhere
@@ -86,11 +86,11 @@ roughness roughness_at(const physical_scene& s, double a);
 bool smooth(const physical_scene& s);
 
 struct contact_width {
-    double a;          // the model's half-width, m
-    double a_hertz;    // Hertz's half-width for P2, m
-    double lambda;     // P_H/P2 at a: (a / a_H)^2 for the given load
-    double load;       // the load the model carries at a, N/m (P2 for given_load)
-    int iterations;    // width-search steps: secant at the cheap level and polish, or Brent (0: no search)
+    double a;        // the model's half-width, m
+    double a_hertz;  // Hertz's half-width for P2, m
+    double lambda;   // P_H/P2 at a: (a / a_H)^2 for the given load
+    double load;     // the load the model carries at a, N/m (P2 for given_load)
+    int iterations;  // width-search steps: secant at the cheap level and polish, or Brent (0: no search)
 };
 
 // A dimensionless point in SI units.

@@ -27,8 +27,8 @@ struct roughness {
     cylinder_roughness cylinder2;
 
     bool smooth() const {
-        return !cylinder1.tangential.present() && !cylinder1.normal.present() &&
-               !cylinder2.tangential.present() && !cylinder2.normal.present();
+        return !cylinder1.tangential.present() && !cylinder1.normal.present() && !cylinder2.tangential.present() &&
+               !cylinder2.normal.present();
     }
 };
 

@@ -25,8 +25,7 @@ namespace roughroll {
 using basis_values = std::function<void(double theta, double* out)>;
 // The same for count points at once, theta[i] and eta[i] = cos theta[i]: g_v(eta[i]) into
 // out[i * width + v].
-using batch_basis_values =
-    std::function<void(const double* theta, const double* eta, std::size_t count, double* out)>;
+using batch_basis_values = std::function<void(const double* theta, const double* eta, std::size_t count, double* out)>;
 
 // A workspace for fixed points and functions: the quadrature points of every piece and
 // the basis values there are computed once, and apply() integrates any kernel whose rates
@@ -35,8 +34,7 @@ using batch_basis_values =
 // Throws numerical_error when the points are not sorted or leave [-1, 1].
 class kernel_sweep {
 public:
-    kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
-                 const basis_values& values);
+    kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate, const basis_values& values);
     kernel_sweep(const std::vector<double>& points, int width, int degree, double max_rate,
                  const batch_basis_values& values);
 

@@ -20,7 +20,7 @@ struct least_value {
 // `sampled`: values at points r_0 >= r_1 >= ... (descending); `value`: one value. Throws
 // numerical_error, its message opened by `who`, when a sample is not finite.
 least_value least_on_contact(const std::function<std::vector<double>(const std::vector<double>&)>& sampled,
-                             const std::function<double(double)>& value, int samples = 2001,
-                             bool trailing_edge = false, const std::string& who = "zone solver");
+                             const std::function<double(double)>& value, int samples = 2001, bool trailing_edge = false,
+                             const std::string& who = "zone solver");
 
 }  // namespace roughroll

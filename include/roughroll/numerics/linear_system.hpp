@@ -42,7 +42,7 @@ public:
     // converges (above), else by solve().
     const gsl_vector* solve_near(const std::string& context);
 
-    double rcond() const { return rcond_; }  // of the last solve (above)
+    double rcond() const { return rcond_; }    // of the last solve (above)
     bool refined() const { return refined_; }  // whether the last solve was refined
 
 private:
@@ -55,10 +55,10 @@ private:
     // normal problems and the points at a given Q, keeps the size it had).
     struct refinement {
         explicit refinement(std::size_t size);
-        matrix_ptr lu;        // the last factorisation M (the matrix is assembled in a_)
-        matrix_ptr inverse;   // M^{-1}, formed by the first refinement on a factorisation
-        matrix_ptr basis;     // GMRES's Krylov vectors, one per row
-        matrix_ptr history;   // the last solutions, one per row
+        matrix_ptr lu;                    // the last factorisation M (the matrix is assembled in a_)
+        matrix_ptr inverse;               // M^{-1}, formed by the first refinement on a factorisation
+        matrix_ptr basis;                 // GMRES's Krylov vectors, one per row
+        matrix_ptr history;               // the last solutions, one per row
         matrix_ptr candidates, products;  // the start's candidates (rows) and A times them (columns)
         vector_ptr residual, scratch, tau, coefficients;
         int history_count = 0, history_next = 0;
@@ -70,8 +70,8 @@ private:
     vector_ptr b_, x_, work_;
     std::unique_ptr<refinement> near_;
     permutation_ptr perm_;
-    double rcond_ = 0.0;          // of the last solve
-    double factor_rcond_ = 0.0;   // of near_->lu's U
+    double rcond_ = 0.0;         // of the last solve
+    double factor_rcond_ = 0.0;  // of near_->lu's U
     bool factorised_ = false, refined_ = false;
 };
 

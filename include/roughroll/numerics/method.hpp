@@ -36,7 +36,9 @@ method level_of(method m);
 method method_from_string(const std::string& name);
 // Richardson's rule of method::extrapolated for an error ~ C n^-4, levels n and n/2:
 // (16 v_n - v_{n/2})/15, as (4.6) for order 4.
-inline double richardson(double fine, double coarse) { return (16.0 * fine - coarse) / 15.0; }  // throws input_error naming the method
+inline double richardson(double fine, double coarse) {
+    return (16.0 * fine - coarse) / 15.0;
+}  // throws input_error naming the method
 
 // How the tangential problem's zones are found (docs/formulation.md section 7):
 //   automatic: the paper's single stick zone [-1, c0] (the fast path), and the general search

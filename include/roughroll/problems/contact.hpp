@@ -55,8 +55,8 @@ namespace roughroll {
 // with K' = max(1, P_H/P2) for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope
 // |dQ/dc0| = f rho, or the square-root inversion near gross sliding), f K' for Q.
 struct error_estimate {
-    double lambda;        // P_H/P2
-    double c0;            // 0 for a point of a curve swept in c0 (c0 is then the input)
+    double lambda;  // P_H/P2
+    double c0;      // 0 for a point of a curve swept in c0 (c0 is then the input)
     double xi;
     double Q;             // 0 for a point at a given Q (Q is then the input)
     std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
@@ -152,8 +152,8 @@ private:
     std::optional<error_estimate> levels_estimate(const tangential_solution& s);
     int nodes() const { return options_.nodes(); }
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
-    method level_method() const;  // product for extrapolated, else the method itself
-    bool build_levels();          // the two other levels of the estimate; false when none fit
+    method level_method() const;                  // product for extrapolated, else the method itself
+    bool build_levels();                          // the two other levels of the estimate; false when none fit
     // The rounding floors of an estimate at n nodes (docs/performance.md, "How the error
     // estimates are made"): P_H/P2, c0, xi and Q, for s and its level-n values own.
     struct rounding_floors {
@@ -179,14 +179,14 @@ private:
     solver_options options_;
     double f_;
     dissimilar materials_;
-    std::unique_ptr<contact> companion_;  // method::extrapolated: the coarse level n/2 (product)
+    std::unique_ptr<contact> companion_;                  // method::extrapolated: the coarse level n/2 (product)
     std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
-    std::array<contact*, 3> levels_{};  // the estimate's levels, coarsest first; nullptr: this one
+    std::array<contact*, 3> levels_{};                    // the estimate's levels, coarsest first; nullptr: this one
     bool levels_built_ = false;
-    bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
-    std::unique_ptr<contact> finer_;  // level 2n: the second chance of a ratio that fails
-    void make_finer(int m);  // finer_ at m = 2n nodes, made once (with this contact's checkpoint)
-    std::unique_ptr<normal_solution> normal_;  // owned here, referenced by the solver
+    bool sweeping_near_ = true;                  // false: at_stick_end's second, fresh-LU route for a refused point
+    std::unique_ptr<contact> finer_;             // level 2n: the second chance of a ratio that fails
+    void make_finer(int m);                      // finer_ at m = 2n nodes, made once (with this contact's checkpoint)
+    std::unique_ptr<normal_solution> normal_;    // owned here, referenced by the solver
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::unique_ptr<tangential_solver> tangential_;
     std::unique_ptr<zone_solver> zones_;  // the general search, on tangential_
@@ -202,7 +202,7 @@ private:
     // none is found. Cached as last_five_.
     const five_zone_solution* five_level_point(double Q, const std::vector<double>* ends);
     std::optional<five_zone_solution> last_five_;  // this level's last five-zone point
-    double last_five_load_ = 0.0;                   // the load it was asked for
+    double last_five_load_ = 0.0;                  // the load it was asked for
     std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
     // Full coupling (docs/formulation.md 8(e); materials_.coupling == full, beta_D != 0): the
     // alternation from Johnson's point on this level, cached per Q (coupled_load_).
@@ -218,10 +218,10 @@ private:
     // The zones workspace a solution of this contact is evaluated with (the coupled one after a
     // point at full coupling).
     dissimilar_zones& zones_of_point();
-    std::unique_ptr<one_parameter_solver> limit_;  // method::one_parameter: the only solver
-    std::unique_ptr<one_parameter_zones> limit_zones_;  // its general search (docs/formulation.md 7(g))
-    std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
-    std::optional<tangential_solution> last_coarse_;  // level n/2 of the last general-path point
+    std::unique_ptr<one_parameter_solver> limit_;          // method::one_parameter: the only solver
+    std::unique_ptr<one_parameter_zones> limit_zones_;     // its general search (docs/formulation.md 7(g))
+    std::optional<tangential_solution> last_fine_;         // level n of the last extrapolated point
+    std::optional<tangential_solution> last_coarse_;       // level n/2 of the last general-path point
     std::optional<tangential_solution> last_level_point_;  // level_point's cache
     bool last_level_point_checked_ = false;
     std::function<void()> checkpoint_;

@@ -26,9 +26,9 @@ namespace roughroll {
 // of which may be a bug or a scene-wide fault) still abort the curve (docs/robustness.md).
 struct curve_point {
     tangential_solution solution;
-    carter_point smooth;                      // Carter's curve at the same Q
+    carter_point smooth;                     // Carter's curve at the same Q
     std::optional<error_estimate> estimate;  // contact::estimate
-    std::string refused;                      // empty: solved; else "Q = ...: <the resolution_error>"
+    std::string refused;                     // empty: solved; else "Q = ...: <the resolution_error>"
 
     bool is_refused() const { return !refused.empty(); }
 };

@@ -60,8 +60,8 @@ void check_dissimilar(const dissimilar& materials, const solver_options& options
 // Needs p even and decreasing in |r| (checked on 2001 points: else input_error). For Hertz and
 // Q = 0, -pi xi_0/(4 beta_D) = cos(phi)/2 = 0.457386 (Bentall and Johnson's 0.457).
 struct complete_slip {
-    double r_c;   // edge of the central band
-    double xi;    // xi_0, divided by nothing: the limit of xi itself (xi = O(beta_D), not O(f))
+    double r_c;  // edge of the central band
+    double xi;   // xi_0, divided by nothing: the limit of xi itself (xi = O(beta_D), not O(f))
 };
 complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, double Q_over_f);
 
@@ -96,14 +96,14 @@ void require_checks(const tangential_solution& s);
 // Each zone's system carries its own constant xi_k (the regularising constant of 8(g)'s counting);
 // the four ends solve Q(ends) = Q, psi1(-1) = 0, psi2(-1) = 0, xi1 = xi2.
 struct five_zone_solution {
-    double Q, f, xi;              // xi = xi1 (= xi2 at the root), both with the sign below
-    double sign = 1.0;            // sgn beta_D: the frame beta_D > 0 maps Q, xi, p1, v by it (8(h))
-    double forcing = 0.0;         // the frame's |beta_D| (another value only on a continuation in beta_D/f)
-    double s1, c1, s2, c2;        // the stick zones [s1, c1], [s2, c2]
+    double Q, f, xi;                   // xi = xi1 (= xi2 at the root), both with the sign below
+    double sign = 1.0;                 // sgn beta_D: the frame beta_D > 0 maps Q, xi, p1, v by it (8(h))
+    double forcing = 0.0;              // the frame's |beta_D| (another value only on a continuation in beta_D/f)
+    double s1, c1, s2, c2;             // the stick zones [s1, c1], [s2, c2]
     tangential_solution zone1, zone2;  // each zone's system (its psi and xi_k)
-    traction_checks checks;       // (3.3) on both stick zones, (3.4) with S on the three slip zones
-    int iterations = 0;           // Newton's
-    int sweeps = 0;               // block Gauss-Seidel sweeps of the last system
+    traction_checks checks;            // (3.3) on both stick zones, (3.4) with S on the three slip zones
+    int iterations = 0;                // Newton's
+    int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
 };
 
 // The five zones as a point of contact (contact::point): start, c0 the first stick zone [s1, c1],
@@ -150,7 +150,7 @@ public:
     std::optional<five_zone_solution> five_zones(double Q);
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
     five_zone_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
-    double traction(const five_zone_solution& s, double r);      // p1(r)
+    double traction(const five_zone_solution& s, double r);       // p1(r)
     double slip_velocity(const five_zone_solution& s, double r);  // v(r), 0 on the stick zones
     traction_checks check(const five_zone_solution& s);
 
@@ -159,7 +159,7 @@ private:
     std::optional<five_zone_solution> five_zones_at(double Q, double beta);
     // Newton from s's ends at loads stepping from `load` to Q (the frame's loads times sgn beta_D).
     std::optional<five_zone_solution> continued(std::optional<five_zone_solution> s, double Q, double load);
-    double load_under_H(double start, double c0);  // int p H over [-1, 1] for the zone [start, c0]
+    double load_under_H(double start, double c0);           // int p H over [-1, 1] for the zone [start, c0]
     double S(const five_zone_solution& s, double r) const;  // -1 + 2 H1 - 2 H2
     // The system on the zone [start, c0] of one structure, its load Q' the |Q| problem's.
     using zone_system = std::function<tangential_solution(double start, double c0)>;
@@ -175,7 +175,7 @@ private:
     std::optional<tangential_solution> newton(const structure& z, double magnitude, double start, double c0);
     std::optional<double> stick_end(const structure& z, double start, double magnitude);  // Q'(start, c0) = |Q|
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
-    double W(double r, double start, double c0);  // L1[p H] of the blended zone
+    double W(double r, double start, double c0);          // L1[p H] of the blended zone
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1

@@ -88,7 +88,7 @@ private:
 
     std::vector<int> rungs_;
     double tolerance_;
-    double strength_;  // the kernels' sum |T| (kernel::strength)
+    double strength_;     // the kernels' sum |T| (kernel::strength)
     bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
     rung_factory make_;
     std::map<int, std::unique_ptr<contact>> built_;

@@ -70,8 +70,8 @@ public:
     // unchecked, Q = f + rho (pi/2) psi_b[0]. solve() is start = -1.
     tangential_solution solve_on_zone(double start, double c0);
 
-    double pressure_slope(double r) const;  // p'(r) on [-1, 1]
-    double G(double r) const;               // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
+    double pressure_slope(double r) const;                               // p'(r) on [-1, 1]
+    double G(double r) const;                                            // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
     double traction(const tangential_solution& s, double r) const;       // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r) const;  // v(r), 0 on the stick zone
     traction_checks check(const tangential_solution& s) const;           // p >= 0, (3.3), (3.4)

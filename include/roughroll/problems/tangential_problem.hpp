@@ -29,9 +29,9 @@ namespace roughroll {
 
 // The paper's inequalities checked on interior grids of each zone.
 struct traction_checks {
-    double pressure_margin;  // min p on (-1, 1): p >= 0
-    double stick_margin;     // (3.3) min of (f p - |p1|)/f on the stick zone
-    double slip_margin;      // (3.4) min of v/f on the slip zone (v with the sign of Q)
+    double pressure_margin;       // min p on (-1, 1): p >= 0
+    double stick_margin;          // (3.3) min of (f p - |p1|)/f on the stick zone
+    double slip_margin;           // (3.4) min of v/f on the slip zone (v with the sign of Q)
     double stick_rounding = 0.0;  // the stick margin's rounding floor: (3.3) holds when margin >= -floor
     double slip_rounding = 0.0;   // the slip margin's: (3.4) holds when margin > -floor
     bool pressure_holds;
@@ -44,11 +44,11 @@ struct traction_checks {
 struct five_zone_solution;  // dissimilar_zones.hpp
 
 struct tangential_solution {
-    double Q;      // P1/P2
-    double f;      // friction coefficient
-    double c0;     // end of the stick zone
-    double xi;     // dimensionless creep
-    double sign;   // +1, or -1 for the mirror case Q < 0
+    double Q;                   // P1/P2
+    double f;                   // friction coefficient
+    double c0;                  // end of the stick zone
+    double xi;                  // dimensionless creep
+    double sign;                // +1, or -1 for the mirror case Q < 0
     std::vector<double> psi_b;  // U coefficients of psi(tau) for |Q| (multiply by sign)
     int iterations;             // root-search iterations (secant or Brent; 0 without a search)
     double rcond;               // of the last tangential system (1 without a solve)
@@ -131,9 +131,9 @@ public:
     tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
                                       const std::vector<double>* extra = nullptr);
 
-    double G(double r);                                          // (3.25)
-    std::vector<double> G(const std::vector<double>& r);         // at points of [-1, 1], in any order
-    double traction(const tangential_solution& s, double r);     // p1(r), (3.15)
+    double G(double r);                                            // (3.25)
+    std::vector<double> G(const std::vector<double>& r);           // at points of [-1, 1], in any order
+    double traction(const tangential_solution& s, double r);       // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
     // v at many points of the slip zone (any order), in one sweep.
     std::vector<double> slip_velocity(const tangential_solution& s, const std::vector<double>& r);
@@ -150,20 +150,20 @@ private:
     tangential_solution full_stick();
     tangential_solution gross_sliding();
     tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
-    double q0(const tangential_solution& s, double r);  // corrective traction for |Q|
+    double q0(const tangential_solution& s, double r);                    // corrective traction for |Q|
     std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
 
     const normal_solution& normal_;
     kernel k1_, dk_;  // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
     double f_;
     int n_;
-    bool carter_;  // smooth in both directions, closed form allowed
+    bool carter_;        // smooth in both directions, closed form allowed
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
     std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
-    std::optional<tangential_solution> last_system_;  // of the last load(c0)
-    std::optional<double> pressure_margin_;  // min p on the check grid of (-1, 1), c0-independent
-    std::optional<convolution_table> g_table_;  // the kernel part of G (3.25), once per solver
+    std::optional<tangential_solution> last_system_;      // of the last load(c0)
+    std::optional<double> pressure_margin_;               // min p on the check grid of (-1, 1), c0-independent
+    std::optional<convolution_table> g_table_;            // the kernel part of G (3.25), once per solver
 };
 
 }  // namespace roughroll

@@ -17,9 +17,9 @@ namespace roughroll {
 
 // `solve_on_zone(s, c)`: the system on the stick zone [s, c]; `entry`: F_1 of its solution; `gap`:
 // f - |Q| > 0. Stops after a full step below `tolerance` in r. Empty when it does not converge.
-std::optional<tangential_solution> zone_ends_newton(const std::function<tangential_solution(double, double)>& solve_on_zone,
-                                                    const std::function<double(const tangential_solution&)>& entry,
-                                                    double gap, double start, double c0, int max_iterations,
-                                                    double tolerance);
+std::optional<tangential_solution> zone_ends_newton(
+    const std::function<tangential_solution(double, double)>& solve_on_zone,
+    const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
+    int max_iterations, double tolerance);
 
 }  // namespace roughroll

@@ -55,7 +55,7 @@ private:
     std::optional<tangential_solution> newton(double magnitude, double start, double c0);
     std::optional<tangential_solution> continuation(double magnitude);  // from gross sliding, 7(e)
     tangential_solution gross_sliding();
-    double stick_end(double start, double magnitude);  // c0 with Q(start, c0) = magnitude
+    double stick_end(double start, double magnitude);                          // c0 with Q(start, c0) = magnitude
     double load_excess(const tangential_solution& t, double magnitude) const;  // Q - |Q|, without f's rounding
 
     tangential_solver& single_;
