@@ -377,11 +377,14 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
         double start, end, entry;
     };
     std::vector<trial> trials;
+    // A trial start with the end that carries |Q| and its entry condition; none where no end does.
+    const auto add_trial = [&](std::vector<trial>& to, double start) {
+        if (const auto end = stick_end(z, start, magnitude))
+            to.push_back({start, *end, zone_solver::entry_coefficient(z.solve(start, *end))});
+    };
     for (int k = 1; k < start_scan; ++k) {
         // Clustered towards the edges (Chebyshev), where thin leading slip zones put the start.
-        const double s = -std::cos(M_PI * k / start_scan);
-        if (const auto end = stick_end(z, s, magnitude))
-            trials.push_back({s, *end, zone_solver::entry_coefficient(z.solve(s, *end))});
+        add_trial(trials, -std::cos(M_PI * k / start_scan));
     }
     std::optional<tangential_solution> first;
     // The brackets of consecutive trials in turn; the answer whose checks hold, else the first found.
@@ -421,11 +424,7 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
         // start 1 + s ~ (1 - |Q|/f)^(2/3)): starts geometrically closer to the edge, down to 1e-12,
         // before the first trial. Only where the scan found nothing, so that no other answer changes.
         std::vector<trial> edge;
-        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) {
-            const double start = -1.0 + gap;
-            if (const auto end = stick_end(z, start, magnitude))
-                edge.push_back({start, *end, zone_solver::entry_coefficient(z.solve(start, *end))});
-        }
+        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) add_trial(edge, -1.0 + gap);
         edge.push_back(trials.front());
         if (auto s = brackets(edge)) return *s;
     }
