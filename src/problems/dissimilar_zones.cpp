@@ -15,9 +15,9 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
-#include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/gross_sliding.hpp"
 
 namespace roughroll {
 
@@ -500,21 +500,16 @@ traction_checks dissimilar_zones::check(const tangential_solution& s) {
 }
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {
-    // |Q| = f: p1 = f p everywhere, v = xi' + b p + f G >= 0 vanishing at the least point r*,
-    // xi' = -min (b p + f G) (docs/formulation.md 8(g)): samples, golden section, both edges.
+    // w = b p + f G (8(g)), least at either edge or inside.
     const normal_solution& normal = solver_.normal();
-    const least_value least = least_on_contact(
+    tangential_solution s = roughroll::gross_sliding(
+        f_, 1.0,
         [&](const std::vector<double>& r) {
             std::vector<double> w = solver_.G(r);
             for (std::size_t i = 0; i < r.size(); ++i) w[i] = b * normal.pressure(r[i]) + f_ * w[i];
             return w;
         },
         [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true, "dissimilar zones");
-    const double point = least.r, value = least.value;
-    tangential_solution s = gross_sliding_solution(f_, 0.0);
-    s.xi = -value;
-    s.c0 = point;
-    s.start = point;
     s.forcing = b;
     return s;
 }

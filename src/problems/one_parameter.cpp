@@ -15,6 +15,7 @@
 #include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/gross_sliding.hpp"
 
 namespace roughroll {
 
@@ -186,7 +187,7 @@ tangential_solution one_parameter_solver::full_stick() const {
 }
 
 tangential_solution one_parameter_solver::gross_sliding() const {
-    tangential_solution s = gross_sliding_solution(f_, G(-1.0));
+    const tangential_solution s = gross_sliding_at(f_, -1.0, -f_ * G(-1.0));  // 2(g)
     if (!std::isfinite(s.xi))
         throw input_error(
             "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
@@ -33,20 +33,16 @@ double one_parameter_zones::entry_velocity(const tangential_solution& s) const {
 }
 
 tangential_solution one_parameter_zones::gross_sliding() const {
-    // |Q| = f: v = xi + f G >= 0 vanishing where G is least (7(d)); G'(-1) = -infinity when
-    // eps2 > eps1, so the point is inside the contact.
+    // w = G (7(d)); G'(-1) = -infinity when eps2 > eps1, so r* is inside the contact.
     const one_parameter_solver& g = single_;
-    const least_value least = least_on_contact(
+    return roughroll::gross_sliding(
+        f_, f_,
         [&g](const std::vector<double>& r) {
             std::vector<double> out(r.size());
             for (std::size_t i = 0; i < r.size(); ++i) out[i] = g.G(r[i]);
             return out;
         },
         [&g](double r) { return g.G(r); });
-    tangential_solution s = gross_sliding_solution(f_, least.value);
-    s.c0 = least.r;
-    s.start = least.r;
-    return s;
 }
 
 double one_parameter_zones::stick_end(double start, double magnitude, std::optional<double> guess) {

@@ -14,6 +14,7 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/gross_sliding.hpp"
 
 namespace roughroll {
 
@@ -147,22 +148,11 @@ tangential_solution full_stick_solution(double f, const std::vector<double>& pre
     return s;
 }
 
-tangential_solution gross_sliding_solution(double f, double G_at_minus_one) {
-    // c0 = -1: no stick zone, q0 = 0, and the stick equation shrinks to the point
-    // r = -1, where xi + f G(-1) = 0.
-    tangential_solution s{};
-    s.f = f;
-    s.c0 = -1.0;
-    s.xi = -f * G_at_minus_one;
-    s.Q = f;
-    s.sign = 1.0;
-    s.rcond = 1.0;
-    return s;
-}
-
 tangential_solution tangential_solver::full_stick() { return full_stick_solution(f_, normal_.b); }
 
-tangential_solution tangential_solver::gross_sliding() { return gross_sliding_solution(f_, G(-1.0)); }
+tangential_solution tangential_solver::gross_sliding() {
+    return gross_sliding_at(f_, -1.0, -f_ * G(-1.0));  // the paper's zone shrunk onto r = -1 (2(g))
+}
 
 tangential_solution tangential_solver::at_stick_end(double c0, bool checked, bool near) {
     if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/least_value.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
+#include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
@@ -59,14 +59,9 @@ double zone_solver::stick_end(double start, double magnitude) {
 }
 
 tangential_solution zone_solver::gross_sliding() {
-    // |Q| = f: p1 = f p everywhere and v = xi + f G >= 0 with equality somewhere: the stick
-    // zone shrinks to the point where G is least, xi = -f min G (docs/formulation.md 7(d)).
-    const least_value least = least_on_contact([this](const std::vector<double>& r) { return single_.G(r); },
-                                               [this](double r) { return single_.G(r); });
-    tangential_solution s = gross_sliding_solution(f_, least.value);
-    s.c0 = least.r;
-    s.start = least.r;
-    return s;
+    // w = G: xi = -f min G (docs/formulation.md 7(d)).
+    return roughroll::gross_sliding(f_, f_, [this](const std::vector<double>& r) { return single_.G(r); },
+                                    [this](double r) { return single_.G(r); });
 }
 
 std::optional<tangential_solution> zone_solver::newton(double magnitude, double start, double c0) {

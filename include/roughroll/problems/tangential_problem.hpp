@@ -89,11 +89,10 @@ void check_load_resolvable(double magnitude, double f);
 // change sign, c0 does not). Refuses a non-finite c0 or xi (numerical_error naming `what`).
 void apply_load_sign(tangential_solution& s, double Q, const char* what);
 
-// The special loads solved without a system (docs/formulation.md 2(g)), for any tangential
-// solver: Q = 0 is full stick, c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the
-// pressure's, `pressure_b`); |Q| = f is the onset of gross sliding, c0 = -1, xi = -f G(-1).
+// Full stick, the special load Q = 0 solved without a system (docs/formulation.md 2(g)), for any
+// tangential solver: c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the pressure's,
+// `pressure_b`). |Q| = f is gross sliding (gross_sliding.hpp).
 tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b);
-tangential_solution gross_sliding_solution(double f, double G_at_minus_one);
 
 class tangential_solver {
 public:
