@@ -38,6 +38,13 @@ error_bound confirm_error(const three_levels& v, int order, bool extrapolated, d
     return b;
 }
 
+error_bound change_bound(const three_levels& v, double floor) {
+    const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+    const double value = 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + floor;
+    const bool finite = std::isfinite(value);
+    return {finite ? value : 0.0, d1 / d2, false, finite};
+}
+
 double rounding_floor(int n, double scale) { return std::max(n, 1) * DBL_EPSILON * std::fabs(scale); }
 
 double stick_system_floor(int n, double scale) {

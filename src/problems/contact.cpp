@@ -182,6 +182,10 @@ const tangential_solution& contact::level_point(double Q, bool checked, std::opt
 
 method contact::level_method() const { return level_of(options_.how); }
 
+double contact::kernel_strength() const {
+    return std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
+}
+
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_ || dissimilar_) return s;  // a dissimilar point is level n itself
     if (!last_fine_ || last_fine_->Q != s.Q)
@@ -199,15 +203,14 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
 }
 
 std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
-    if (dissimilar_) return dissimilar_estimate(s);
-    if (reported_ && s.general) {
+    if (reported_ && s.general && !dissimilar_) {
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
         if (!last_coarse_ || last_coarse_->Q != s.Q)
             last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start, s.c0});
         // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
         // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
-        const rounding_floors floor = floors_at(nodes(), s, s);
+        const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
         return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
                               std::fabs(s.c0 - last_coarse_->c0) + floor.c0,
                               std::fabs(s.xi - last_coarse_->xi) + floor.xi,
@@ -215,14 +218,12 @@ std::optional<error_estimate> contact::levels_estimate(const tangential_solution
                               "n/2 (general zone search: level n, not extrapolated)",
                               false};
     }
+    // Three levels of the level method on the structure of s (for dissimilar rollers the reported
+    // values are level n's; for the paper's problem those of its distributions).
     if (!build_levels()) return std::nullopt;
     const tangential_solution own = distribution(s);
     std::array<tangential_solution, 3> at{};
-    // A point of the general path is compared with the general path's answers at the levels.
-    for (int i = 0; i < 3; ++i)
-        at[i] = !levels_[i] ? own
-                : s.general ? levels_[i]->general_point(s.Q, zone_guess{s.start, s.c0})
-                            : levels_[i]->level_point(s.Q, false);
+    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? structure_level(*levels_[i], s, own, false) : own;
     return estimate_from(s, own, at, false);
 }
 
@@ -280,155 +281,110 @@ void contact::make_finer(int m) {
     finer_->set_checkpoint(checkpoint_);
 }
 
-std::optional<tangential_solution> contact::above_finest(const tangential_solution& s, const tangential_solution& own,
-                                                         bool swept) {
-    const int m = 2 * nodes();
-    if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;  // n must be the finest level
-    try {
-        make_finer(m);
-        if (swept) return finer_->level_at_stick_end(own.c0, false, sweeping_near_);
-        // On the zone path of s, as the other levels (estimate()).
-        return s.general ? finer_->general_point(s.Q, zone_guess{s.start, s.c0}) : finer_->level_point(s.Q, false);
-    } catch (const resolution_error&) {
-        return std::nullopt;
-    } catch (const numerical_error&) {  // the general search finds no zone at 2n: no fourth level
-        if (!s.general) throw;
-        return std::nullopt;
+tangential_solution contact::structure_level(contact& level, const tangential_solution& s,
+                                             const tangential_solution& own, bool swept) {
+    if (swept) return level.level_at_stick_end(own.c0, false, sweeping_near_);
+    // A point of the general path is compared with the general path's answers at the levels.
+    if (!dissimilar_)
+        return s.general ? level.general_point(s.Q, zone_guess{s.start, s.c0}) : level.level_point(s.Q, false);
+    if (coupled_) {
+        // Full coupling (8(e)): the level's own alternation from its own Johnson's point (a Johnson's
+        // point against a coupled n would measure the coupling, not the discretisation). A level that
+        // cannot be coupled leaves no honest estimate (the point itself was).
+        try {
+            return level.coupled_level_point(s.Q, level.johnson_level_point(s.Q, s), false);
+        } catch (const numerical_error& why) {
+            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::full_coupling) +
+                                   "level " + std::to_string(level.nodes()) + ": " + why.what());
+        }
     }
-}
-
-contact::rounding_floors contact::floors_at(int n, const tangential_solution& s, const tangential_solution& own) const {
-    const double lambda = normal().lambda;
-    // The size of the terms of (4.4)-(4.5): the pressure's scale P_H/P2 (through G) and the
-    // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
-    // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
-    // loses 1e-13 absolute in xi = 3e-8 at n = 128).
-    const double strength = std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
-    const double size = std::max({1.0, std::fabs(lambda), strength});          // for xi
-    const double n_eps = rounding_floor(n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
-    // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
-    // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
-    // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). On the paper's single zone the
-    // special loads Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly); the
-    // general search's zone at |Q| = f (the least G) is computed.
-    const bool special = !s.general && (s.Q == 0.0 || std::fabs(s.Q) == f_);
-    double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
-    double xi_floor = rounding_floor(n, std::fabs(own.xi) + f_ * size);
-    if (own.general && !own.psi_b.empty() && own.rho() > 0.0) {
-        // A zone of the general search (docs/formulation.md 7(d), 7(e)): xi, b_0 and psi(-1) are
-        // read off (4.4), whose terms of size |xi| + f K they cancel (stick_system_floor). The
-        // ends solve the load in the gap form rho (pi/2) b_0 = |Q| - f and the entry condition
-        // psi(-1)/|b_0| = 0, both relative to b_0, which near gross sliding vanishes like
-        // f G'' rho^2/2: the ends move by rho times the floor over |b_0| (the residuals of 7(d)
-        // have slopes 2 and 3 in gamma and log rho, which the factor 1 covers).
-        const double system = stick_system_floor(n, std::fabs(own.xi) + f_ * size);
-        xi_floor = std::max(xi_floor, system);
-        c0_floor = std::max(c0_floor, own.rho() * system / std::fabs(own.psi_b[0]));
+    if (s.five) {
+        // Five zones (8(j)): the level from this level's ends (Newton), else its own search.
+        const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
+        const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
+        if (v == nullptr)
+            throw resolution_error(
+                no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) + "level " +
+                std::to_string(level.nodes()) + " finds no five zones at Q = " + shortest(s.Q) +
+                " from level n's zones; " +
+                (nodes() < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
+                                     : "n is at its largest, so the load is beyond the method's reach"));
+        return five_zone_point(*v);
     }
-    return {rounding_floor(n, lambda), c0_floor, xi_floor, f_ * n_eps};
+    return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
                                       const std::array<tangential_solution, 3>& at, bool swept) {
     int self = 0;
     while (levels_[self] != nullptr) ++self;
-    const bool extrapolated = reported_ != nullptr;
-    const reported_value which{self, extrapolated};
-    const int order = level_method() == method::product ? 4 : 2;
+    const estimate_structure structure = !dissimilar_ ? estimate_structure::paper
+                                         : coupled_   ? estimate_structure::full_coupling
+                                                      : estimate_structure::dissimilar;
+    const double lambda = normal().lambda, strength = kernel_strength();
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
-    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
-    const rounding_floors floor = floors_at(finest_n, s, own);
-    struct quantity {
-        const char* name;
-        three_levels v;
-        double floor;
-        double* out;
-    };
-    error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
-    std::vector<quantity> qs{{"P_H/P2", {lambda_at(0), lambda_at(1), lambda_at(2)}, floor.lambda, &e.lambda},
-                             {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, &e.xi}};
-    if (swept)
-        qs.push_back({"Q", {at[0].Q, at[1].Q, at[2].Q}, floor.Q, &e.Q});
-    else
-        qs.push_back({"c0", {at[0].c0, at[1].c0, at[2].c0}, floor.c0, &e.c0});
-    const int coarsest_n = levels_[0] ? levels_[0]->nodes() : nodes();
-    bool second_chance = false, confirmed = false;
-    // Three levels that look converged can still be pre-asymptotic (docs/performance.md, "How the
-    // error estimates are made", the fourth level): where they show less than the method's order,
-    // and always for the one-parameter limit, whose c0 error changes with c0's place among the nodes
-    // and can pass near zero at one level, level 2n confirms: the estimate is also bounded from
-    // n/2, n, 2n, and the point is refused where those do not converge visibly.
-    const bool always_confirm = options_.how == method::one_parameter;
-    // An observed order far above the method's (ratio beyond 2^(p+2)) is no sign of the asymptotic
-    // range either: a coarsest level far off, or a middle level that lies near the limit by chance
-    // (paper at n = 16 near gross sliding: ratio 50 over 4, 8, 16, then a sign change and 6 times
-    // the estimate at 32).
-    const double too_fast = std::ldexp(1.0, order + 2);
-    for (const quantity& q : qs) {
-        error_bound b = bound_error(q.v, order, which, q.floor);
-        three_levels used = q.v;
-        int used_coarsest_n = coarsest_n;
-        const bool rounding = std::fabs(q.v.finest - q.v.middle) <= q.floor;  // the ratio then means nothing
-        const bool confirm =
-            b.resolved && (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
-        if ((!b.resolved && own.checks.hold()) || confirm) {
-            // One level finer, n/2, n, 2n (error_bound.hpp). Where the first three gave no estimate
-            // (a second chance, where n/4 is still pre-asymptotic for this quantity): only for a
-            // solution whose inequalities (3.3)-(3.4) hold, and only where the finer levels show at
-            // least order p - 1, since three pre-asymptotic levels of a very stiff layer can look
-            // convergent by chance. Where they gave one (a confirmation): the larger of the two.
-            if (const std::optional<tangential_solution> above = above_finest(s, own, swept)) {
-                const int i = static_cast<int>(&q - qs.data());
-                const double v = i == 0   ? finer_->normal_level().lambda
-                                 : i == 1 ? above->xi
-                                 : swept  ? above->Q
-                                          : above->c0;
-                const three_levels finer{q.v.middle, q.v.finest, v};
-                error_bound fb = confirm ? confirm_error(finer, order, extrapolated, q.floor)
-                                         : bound_error(finer, order, reported_value{1, extrapolated}, q.floor);
-                if (confirm) {
-                    if (fb.resolved) {
-                        fb.value = std::max(fb.value, b.value);
-                        fb.asymptotic = fb.asymptotic && b.asymptotic;
-                    }
-                    confirmed = true;
-                } else {
-                    if (!(fb.ratio >= std::ldexp(1.0, order - 1))) fb.resolved = false;
-                    second_chance = second_chance || fb.resolved;
-                }
-                b = fb;
-                used = finer;
-                used_coarsest_n = 2 * coarsest_n;
-            }
+    const rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
+    // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
+    // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
+    using q = estimated_quantity;
+    using sol = tangential_solution;
+    using est = error_estimate;
+    std::vector<q> table;
+    if (!dissimilar_) {
+        const bool x = reported_ != nullptr;  // Richardson's values, all three
+        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, x, true, &est::lambda},
+                 {"xi", &sol::xi, floor.xi, floor.xi, x, true, &est::xi},
+                 swept ? q{"Q", &sol::Q, floor.Q, floor.Q, x, true, &est::Q}
+                       : q{"c0", &sol::c0, floor.c0, floor.c0, x, true, &est::c0}};
+    } else {
+        const double ends = zone_ends_floor(finest_n, floor.c0, s, lambda, f_, strength);
+        const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
+        // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
+        // level n's at full coupling: contact::normal), with no second chance.
+        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false,
+                  &est::lambda},
+                 {"xi", &sol::xi, floor.xi, floor.xi, false, true, &est::xi},
+                 {"c0", &sol::c0, ends, finer_ends, false, true, &est::c0},
+                 {"the stick zone's start", &sol::start, ends, finer_ends, false, true, &est::start}};
+        // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
+        // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
+        if (s.five) {
+            table.push_back({"the second stick zone's end", &sol::end2, ends, finer_ends, false, true, &est::c0});
+            table.push_back(
+                {"the second stick zone's start", &sol::start2, ends, finer_ends, false, true, &est::start});
         }
-        if (!b.resolved) {
-            std::ostringstream msg;
-            msg.precision(3);
-            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes() << ": "
-                << q.name << " does not converge visibly over n = " << used_coarsest_n << ", " << 2 * used_coarsest_n
-                << ", " << 4 * used_coarsest_n << " (differences " << used.middle - used.coarsest << ", "
-                << used.finest - used.middle << ")";
-            if (!swept)
-                msg << " at Q = " << s.Q;
-            else
-                msg << " at c0 = " << s.c0;
-            msg << (nodes() < max_nodes ? "; increase n, or the scene is beyond the method's reach"
-                                        : "; the scene is beyond the method's reach at the largest n");
-            throw resolution_error(msg.str());
-        }
-        *q.out = std::max(*q.out, b.value);
-        e.bounded = e.bounded || !b.asymptotic;
     }
-    static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
-    const int first = 2 - self;  // index of the coarsest level's name
-    e.against = std::string(extrapolated ? "level n"
-                            : self == 2  ? "n/2"
-                                         : "2n") +
-                " (levels " + names[first] + ", " + names[first + 1] + ", " + names[first + 2] +
-                (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
-                (confirmed ? "; confirmed on n/2, n, 2n" : "") + (e.bounded ? "; observed order below " : "; order ") +
-                std::to_string(order) + (e.bounded ? ": bounded)" : " observed)");
-    return e;
+    std::array<estimate_level, 3> levels;
+    for (int i = 0; i < 3; ++i)
+        levels[i] = {at[i], levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda};
+    // Level 2n on the structure of s, where n is the finest level. A search that finds no zone
+    // there leaves no fourth level; for the paper's single zone a numerical fault is one.
+    const auto finer = [&]() -> std::optional<estimate_level> {
+        const int m = 2 * nodes();
+        if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;
+        try {
+            make_finer(m);
+            tangential_solution t = structure_level(*finer_, s, own, swept);
+            return estimate_level{std::move(t), finer_->normal_level().lambda};
+        } catch (const resolution_error&) {
+            return std::nullopt;
+        } catch (const numerical_error&) {
+            if (!s.general && !dissimilar_) throw;
+            return std::nullopt;
+        } catch (const error&) {
+            if (!dissimilar_) throw;
+            return std::nullopt;
+        }
+    };
+    const estimate_point point{options_.how,
+                               nodes(),
+                               self,
+                               structure,
+                               reported_ != nullptr && !dissimilar_,
+                               own.checks.hold(),
+                               swept ? "c0" : "Q",
+                               swept ? s.c0 : s.Q};
+    return estimate_from_levels(table, levels, finer, point);
 }
 
 tangential_solution contact::level_at_stick_end(double c0, bool checked, bool near) {
@@ -653,181 +609,6 @@ const five_zone_solution* contact::five_level_point(double Q, const std::vector<
     last_five_ = v;
     last_five_load_ = Q;
     return &*last_five_;
-}
-
-std::optional<error_estimate> contact::dissimilar_estimate(const tangential_solution& s) {
-    // Three levels of the level method (n/4, n/2, n where they fit), the rule of error_bound.hpp
-    // for xi, c0 and the start (the reported values are level n's), and for P_H/P2 as reported
-    // (Richardson's for 'extrapolated'). No estimate where the levels do not converge visibly.
-    if (!build_levels()) return std::nullopt;
-    int self = 0;
-    while (levels_[self] != nullptr) ++self;
-    std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i) {
-        if (!levels_[i]) {
-            at[i] = s;
-        } else if (coupled_) {
-            // Full coupling (8(e)): each level's own alternation from its own Johnson's point. A level
-            // that cannot be coupled leaves no honest estimate (the point itself was).
-            try {
-                at[i] = levels_[i]->coupled_level_point(s.Q, levels_[i]->johnson_level_point(s.Q, s), false);
-            } catch (const numerical_error& why) {
-                throw resolution_error("no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
-                                       std::to_string(nodes()) + " (dissimilar rollers, full coupling): level " +
-                                       std::to_string(levels_[i]->nodes()) + ": " + why.what());
-            }
-        } else if (s.five) {
-            // Five zones (8(j)): each level from this level's ends (Newton), else its own search.
-            const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
-            const five_zone_solution* v = levels_[i]->five_level_point(last_five_load_, &ends);
-            if (v == nullptr)
-                throw resolution_error(
-                    "no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
-                    std::to_string(nodes()) + " (dissimilar rollers): level " + std::to_string(levels_[i]->nodes()) +
-                    " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
-                    (nodes() < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
-                                         : "n is at its largest, so the load is beyond the method's reach"));
-            at[i] = five_zone_point(*v);
-        } else {
-            at[i] = levels_[i]->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
-        }
-    }
-    const int order = level_method() == method::product ? 4 : 2;
-    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
-    const rounding_floors floor = floors_at(finest_n, s, s);
-    auto lambda_at = [&](int i) { return levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda; };
-    // The levels' own n: a refusal names them, since n and 2 n can share one set (n/2, n, 2 n
-    // when n/4 is below the asymptotic range, n/4, n/2, n at 2 n).
-    auto level_nodes = [&](int i) { return levels_[i] ? levels_[i]->nodes() : nodes(); };
-    error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
-    struct quantity {
-        const char* name;
-        three_levels v;
-        double floor;
-        bool extrapolated;
-        double* out;
-    };
-    // Each level's ends are Newton's within zone_end_resolution, so the difference of two levels
-    // carries up to twice that: below it, a difference is that noise, not a ratio (free rolling of
-    // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11). Near gross
-    // sliding the entry condition's rounding moves the ends by rho/|b_0| times it (formulation 8(m),
-    // entry_ends_floor; the braked pair at Q = -0.049999 had been refused on -5.3e-11, -4.1e-10), at
-    // the finest level used: m = finest_n, or 2n for the second chance below.
-    const double terms = std::fabs(s.xi) + std::fabs(s.forcing) * std::max(1.0, std::fabs(normal().lambda)) +
-                         f_ * std::max({1.0, std::fabs(normal().lambda), kernel::tangential(surfaces_).strength(),
-                                        kernel::normal(surfaces_).strength()});
-    const auto ends_floor_at = [&](int m) {
-        return floor.c0 + 2.0 * zone_end_resolution +
-               (s.psi_b.empty() ? 0.0 : entry_ends_floor(m, terms, s.rho(), s.psi_b[0]));
-    };
-    const double ends_floor = ends_floor_at(finest_n);
-    const quantity qs[] = {
-        // (At full coupling P_H/P2 is level n's, not extrapolated: contact::normal.)
-        {"P_H/P2",
-         {lambda_at(0), lambda_at(1), lambda_at(2)},
-         floor.lambda,
-         reported_ != nullptr && !coupled_,
-         &e.lambda},
-        {"xi", {at[0].xi, at[1].xi, at[2].xi}, floor.xi, false, &e.xi},
-        // The ends carry Newton's resolution too (dissimilar_zones.hpp).
-        {"c0", {at[0].c0, at[1].c0, at[2].c0}, ends_floor, false, &e.c0},
-        {"the stick zone's start", {at[0].start, at[1].start, at[2].start}, ends_floor, false, &e.start},
-        // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
-        // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
-        {"the second stick zone's end", {at[0].end2, at[1].end2, at[2].end2}, ends_floor, false, &e.c0},
-        {"the second stick zone's start", {at[0].start2, at[1].start2, at[2].start2}, ends_floor, false, &e.start}};
-    // The second chance of estimate_from, one level finer (n/2, n, 2n), where n is the finest level
-    // and the solution's checks hold: an n/4 that oscillates (the second stick zone's end of the
-    // rough pair of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64) must not refuse an
-    // n whose finer levels converge. Only where the finer levels show at least order p - 1.
-    std::optional<tangential_solution> above;
-    bool above_tried = false;
-    auto finer_level = [&]() -> const tangential_solution* {
-        if (above_tried) return above ? &*above : nullptr;
-        above_tried = true;
-        const int m = 2 * nodes();
-        if (self != 2 || m > max_nodes || !s.checks.hold()) return nullptr;
-        try {
-            make_finer(m);
-            if (coupled_) {
-                // Full coupling: the finer level's own alternation, as the levels below (a Johnson's
-                // point at 2n against a coupled n would measure the coupling, not the discretisation).
-                above = finer_->coupled_level_point(s.Q, finer_->johnson_level_point(s.Q, s), false);
-            } else if (s.five) {
-                const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
-                if (const five_zone_solution* v = finer_->five_level_point(last_five_load_, &ends))
-                    above = five_zone_point(*v);
-            } else {
-                above = finer_->dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
-            }
-        } catch (const error&) {  // no finer level: the refusal below stands
-            above.reset();
-        }
-        return above ? &*above : nullptr;
-    };
-    for (std::size_t k = 0; k < (s.five ? 6u : 4u); ++k) {  // the second zone's ends for five zones only
-        const quantity& q = qs[k];
-        if (coupled_) {
-            // Full coupling (8(e)): the zone ends converge at order 1 or less, erratically, and the
-            // errors change sign between levels (the exponents at the edges and zone ends shift with
-            // the coupling; P_H/P2 and xi at order 2 against gross sliding's closed form), so no
-            // asymptotic rule holds. The bound is twice the larger of the last two level changes, plus
-            // the rounding floor: measured against n = 512 and the closed form
-            // (FullCoupling.EstimatesBoundTheError, .GrossSlidingAgainstTheClosedForm); bound_error's
-            // rule under-reported there (a stick start's error 2.7e-4 estimated at 1.2e-4).
-            const double d1 = q.v.middle - q.v.coarsest, d2 = q.v.finest - q.v.middle;
-            const double bound = 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + q.floor;
-            if (!std::isfinite(bound))
-                throw resolution_error("no honest error estimate for method '" + to_string(options_.how) + "' at n = " +
-                                       std::to_string(nodes()) + " (dissimilar rollers, full coupling): " + q.name +
-                                       " is not finite on its levels");
-            *q.out = std::max(*q.out, bound);
-            e.bounded = true;
-            continue;
-        }
-        error_bound b = bound_error(q.v, order, reported_value{self, q.extrapolated}, q.floor);
-        three_levels used = q.v;
-        int used_coarsest = level_nodes(0);
-        if (!b.resolved && k > 0) {  // P_H/P2 (k = 0) is the normal problem's: estimate_from's rule
-            if (const tangential_solution* a = finer_level()) {
-                const double values[] = {0.0, a->xi, a->c0, a->start, a->end2, a->start2};
-                used = {q.v.middle, q.v.finest, values[k]};
-                used_coarsest = level_nodes(1);
-                b = bound_error(used, order, reported_value{1, false}, k >= 2 ? ends_floor_at(2 * nodes()) : q.floor);
-                if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
-            }
-        }
-        if (!b.resolved) {
-            std::ostringstream msg;
-            msg.precision(3);
-            msg << "no honest error estimate for method '" << to_string(options_.how) << "' at n = " << nodes()
-                << " (dissimilar rollers): " << q.name
-                << " does not converge visibly over the levels n = " << used_coarsest << ", " << 2 * used_coarsest
-                << ", " << 4 * used_coarsest << " (differences " << used.middle - used.coarsest << ", "
-                << used.finest - used.middle << ") at Q = " << s.Q << "; ";
-            // A larger n helps only where its levels fit below max_nodes (the finest is n, or 2n above).
-            if (nodes() < max_nodes)
-                msg << "a larger n (at most " << max_nodes << ") may converge";
-            else
-                msg << "n is at its largest, so the load is beyond the method's reach";
-            throw resolution_error(msg.str());
-        }
-        *q.out = std::max(*q.out, b.value);
-        e.bounded = e.bounded || !b.asymptotic;
-    }
-    static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
-    const int first = 2 - self;
-    if (coupled_) {
-        e.against = std::string("levels ") + names[first] + ", " + names[first + 1] + ", " + names[first + 2] +
-                    " (dissimilar rollers, full coupling: level n, twice the larger of the last two level changes)";
-        return e;
-    }
-    e.against = std::string(self == 2 ? "n/2" : "2n") + " (dissimilar rollers: level n, not extrapolated; levels " +
-                names[first] + ", " + names[first + 1] + ", " + names[first + 2] +
-                (above ? "; n/2, n, 2n where n/4 fell short" : "") +
-                (e.bounded ? "; observed order below " : "; order ") + std::to_string(order) +
-                (e.bounded ? ": bounded)" : " observed)");
-    return e;
 }
 
 double contact::traction(const tangential_solution& d, double r) {

@@ -57,6 +57,16 @@ error_bound bound_error(const three_levels& v, int order, reported_value which, 
 // grow stay unresolved.
 error_bound confirm_error(const three_levels& v, int order, bool extrapolated, double rounding_floor);
 
+// Where no asymptotic rule holds (full coupling of dissimilar rollers, docs/formulation.md 8(e): the
+// zone ends converge at order 1 or less, erratically, and the errors change sign between levels, as
+// the exponents at the edges and zone ends shift with the coupling; P_H/P2 and xi at order 2 against
+// gross sliding's closed form): twice the larger of the last two level changes, plus the rounding
+// floor, for the finest level. Measured against n = 512 and the closed form
+// (FullCoupling.EstimatesBoundTheError, .GrossSlidingAgainstTheClosedForm); bound_error's rule
+// under-reported there (a stick start's error 2.7e-4 estimated at 1.2e-4). Never asymptotic;
+// unresolved only where a level is not finite.
+error_bound change_bound(const three_levels& v, double rounding_floor);
+
 // The rounding floor of a quantity computed by a dense solve of order about n (LU with
 // partial pivoting, whose backward error is a small multiple of n eps in practice; the
 // growth factors of these diagonally dominated Cauchy systems are O(1)) or a sum of n terms:

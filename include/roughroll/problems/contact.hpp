@@ -5,7 +5,7 @@
 // With method::extrapolated the contact holds two product-integration levels, n and n/2,
 // and reports P_H/P2, c0 and xi by Richardson's rule for order 4, (16 v_n - v_{n/2})/15;
 // the distributions (pressure, tractions, checks) are those of level n. Its error estimate
-// adds a third level (n/4) to check that the order is 4 (error_estimate below).
+// adds a third level (n/4) to check that the order is 4 (error_estimate, point_estimate.hpp).
 //
 // The zones of each point are found as options.zones says (zone_search, docs/formulation.md
 // section 7): the paper's single zone, and zone_solver's general search where it fails its
@@ -31,6 +31,7 @@
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/one_parameter_zones.hpp"
+#include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
@@ -39,30 +40,6 @@
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
-
-// The error estimate of a point, per quantity (docs/performance.md, "How the error estimates
-// are made"). Every estimate comes from three levels of the same plain discretisation (the
-// method itself; product integration for method::extrapolated): n/4, n/2, n where n/2 is in
-// the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n, 4n. The observed
-// ratio of the two differences decides (numerics/error_bound.hpp): where it shows the method's
-// order, the classic estimates (the difference from n/2, about 2^p - 1 times the error at n;
-// for method::extrapolated the difference from level n); where it shows a lower order, a bound
-// from the observed ratio; where the levels do not converge visibly, no estimate: estimate()
-// and at_stick_end() throw resolution_error (the point is refused). Each estimate includes a
-// rounding floor, n eps times the size of the terms the quantity is computed from: |P_H/P2|
-// for P_H/P2, |xi| + f K for xi with K = max(1, P_H/P2, sum |T| of a kernel) (the right-hand
-// side f G of (4.4), and the kernel terms that cancel to xi), min(K'/rho, 2 sqrt(K'/(n eps)))
-// with K' = max(1, P_H/P2) for c0 (the rounding of Q(c0) of (4.5) divided by Carter's slope
-// |dQ/dc0| = f rho, or the square-root inversion near gross sliding), f K' for Q.
-struct error_estimate {
-    double lambda;  // P_H/P2
-    double c0;      // 0 for a point of a curve swept in c0 (c0 is then the input)
-    double xi;
-    double Q;             // 0 for a point at a given Q (Q is then the input)
-    std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
-    bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
-    double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
-};
 
 class contact {
 public:
@@ -111,7 +88,7 @@ public:
 
     // The estimate for a solution s of this contact (solves the other two levels at s.Q, and level
     // 2n where those show less than the method's order, or for the one-parameter limit always).
-    // Throws resolution_error when the levels give no honest estimate (see error_estimate).
+    // Throws resolution_error when the levels give no honest estimate (point_estimate.hpp).
     // Empty when s fails its checks (3.3)-(3.4) (no level difference bounds the error of such an
     // answer: it is not the model's solution; the levels are still solved, and refuse the point
     // where they do not converge) or when no three levels fit in [min_nodes, max_nodes] (never
@@ -154,19 +131,17 @@ private:
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
     method level_method() const;                  // product for extrapolated, else the method itself
     bool build_levels();                          // the two other levels of the estimate; false when none fit
-    // The rounding floors of an estimate at n nodes (docs/performance.md, "How the error
-    // estimates are made"): P_H/P2, c0, xi and Q, for s and its level-n values own.
-    struct rounding_floors {
-        double lambda, c0, xi, Q;
-    };
-    rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own) const;
-    // The estimate from the three levels' values (s of this contact, level-n values `own`).
+    double kernel_strength() const;  // the larger kernel's sum |T|, for the rounding floors
+    // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
+    // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
                                  const std::array<tangential_solution, 3>& at_levels, bool swept);
-    // Level 2n at the same Q or c0, for a ratio that fails on n/4, n/2, n; empty when n is
-    // not the finest level or 2n cannot be solved.
-    std::optional<tangential_solution> above_finest(const tangential_solution& s, const tangential_solution& own,
-                                                    bool swept);
+    // The solution of `level` (an estimate level, or level 2n) on the structure of s: at own's c0
+    // for a curve swept in c0, else at s's load on s's zone path (the paper's single zone, the
+    // general search, or dissimilar rollers' three zones, five zones or full coupling, each from
+    // s's zone ends). resolution_error where the level has no such solution.
+    tangential_solution structure_level(contact& level, const tangential_solution& s, const tangential_solution& own,
+                                        bool swept);
     // The point at Q of this contact's own level by zone_solver's general search (docs/formulation.md
     // section 7), started from `guess` (the coarse level's zone) when given.
     tangential_solution general_point(double Q, std::optional<zone_guess> guess = std::nullopt);
@@ -203,7 +178,6 @@ private:
     const five_zone_solution* five_level_point(double Q, const std::vector<double>* ends);
     std::optional<five_zone_solution> last_five_;  // this level's last five-zone point
     double last_five_load_ = 0.0;                  // the load it was asked for
-    std::optional<error_estimate> dissimilar_estimate(const tangential_solution& s);
     // Full coupling (docs/formulation.md 8(e); materials_.coupling == full, beta_D != 0): the
     // alternation from Johnson's point on this level, cached per Q (coupled_load_).
     std::unique_ptr<full_coupling> coupled_;

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The error estimate of a point from three levels of its discretisation (docs/performance.md, "How
+// the error estimates are made"): one rule for every zone structure. A structure gives a table of
+// its quantities (P_H/P2, the creep, the zone ends or the load, each with its rounding floors), its
+// solutions on the three levels, and level 2n on demand; the rule bounds each quantity by
+// numerics/error_bound.hpp, gives the second chance and the confirmation one level finer, names the
+// levels used, and refuses the point (resolution_error) where they do not converge visibly.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+
+namespace roughroll {
+
+// The error estimate of a point, per quantity. Every estimate comes from three levels of the same
+// plain discretisation (the method itself; product integration for method::extrapolated): n/4,
+// n/2, n where n/2 is in the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n,
+// 4n. The observed ratio of the two differences decides (numerics/error_bound.hpp): where it shows
+// the method's order, the classic estimates (the difference from n/2, about 2^p - 1 times the
+// error at n; for method::extrapolated the difference from level n); where it shows a lower order,
+// a bound from the observed ratio; where the levels do not converge visibly, no estimate: the point
+// is refused (resolution_error). Each estimate includes a rounding floor (floors_at below).
+struct error_estimate {
+    double lambda;  // P_H/P2
+    double c0;      // 0 for a point of a curve swept in c0 (c0 is then the input)
+    double xi;
+    double Q;             // 0 for a point at a given Q (Q is then the input)
+    std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
+    bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
+    double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
+};
+
+// The rounding floors of an estimate at n nodes, n eps times the size of the terms each quantity is
+// computed from: |P_H/P2| for P_H/P2, |xi| + f K for xi with K = max(1, P_H/P2, sum |T| of a kernel)
+// (the right-hand side f G of (4.4), and the kernel terms that cancel to xi), min(K'/rho,
+// 2 sqrt(K'/(n eps))) with K' = max(1, P_H/P2) for c0 (the rounding of Q(c0) of (4.5) divided by
+// Carter's slope |dQ/dc0| = f rho, or the square-root inversion near gross sliding), f K' for Q.
+// For the point s with level-n values `own` (s itself, or the level-n solution of an extrapolated
+// s), P_H/P2 = `lambda` as reported, friction `f`, `strength` the larger kernel's sum |T|.
+struct rounding_floors {
+    double lambda, c0, xi, Q;
+};
+rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own, double lambda,
+                          double f, double strength);
+
+// The floor of the ends of dissimilar rollers' zones at m nodes (formulation 8(m)): c0's floor
+// `c0_floor`, twice Newton's resolution zone_end_resolution (the difference of two levels carries
+// both), and near gross sliding the entry condition's rounding moved by rho/|b_0| (entry_ends_floor).
+double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f,
+                       double strength);
+
+// The structures whose estimates differ in rule or in name: the paper's problem (beta_D = 0, every
+// zone search, the one-parameter limit), dissimilar rollers at Johnson's level (three or five zones,
+// level n reported, not extrapolated), and at full coupling (8(e): twice the larger of the last two
+// level changes, no asymptotic rule).
+enum class estimate_structure { paper, dissimilar, full_coupling };
+
+// One row of a structure's table: a quantity, read off each level's solution (`value`; nullptr:
+// the level's P_H/P2), its rounding floors at the finest of the three levels and at 2n (the second
+// chance's finest level), and the error_estimate member it is folded into (the largest of the
+// quantities folded into one member).
+struct estimated_quantity {
+    const char* name;
+    double tangential_solution::*value;
+    double floor;
+    double finer_floor;
+    bool extrapolated;   // reported as Richardson's value of levels n and n/2
+    bool second_chance;  // bounded from n/2, n, 2n where n/4, n/2, n give no estimate
+    double error_estimate::*out;
+};
+
+// A level's solution on the structure of the point, and the level's P_H/P2.
+struct estimate_level {
+    tangential_solution solution;
+    double lambda;
+};
+
+// The point estimated, as the rule and its refusal name it.
+struct estimate_point {
+    method how;
+    int n;
+    int self;  // level n's index among the three: 2 (n/4, n/2, n), 1 (n/2, n, 2n), 0 (n, 2n, 4n)
+    estimate_structure structure;
+    bool richardson;   // its creep and c0 are Richardson's values: the estimate is against level n
+    bool checks_hold;  // its inequalities (3.3)-(3.4) hold: the second chance is given
+    const char* at;    // the input a refusal names, "Q" or "c0"
+    double at_value;
+};
+
+// The estimate from the three levels (coarsest first). Per quantity: error_bound's rule; where the
+// three levels show no estimate, a second chance on n/2, n, 2n (only for a point whose checks hold,
+// and only where those show at least order p - 1, since three pre-asymptotic levels of a very stiff
+// layer can look convergent by chance); for the paper's problem, where they show less than the
+// method's order or a ratio beyond 2^(p+2), and always for the one-parameter limit, level 2n
+// confirms (the larger of the two bounds). `finer`: level 2n, solved on the first call that needs
+// it; empty where n is not the finest level or 2n cannot be solved. Throws resolution_error where
+// no honest estimate is found.
+error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table,
+                                    const std::array<estimate_level, 3>& levels,
+                                    const std::function<std::optional<estimate_level>()>& finer,
+                                    const estimate_point& point);
+
+// The first words of every refusal of an estimate: "no honest error estimate for method 'M' at
+// n = N (the structure): ".
+std::string no_honest_estimate(method how, int n, estimate_structure structure);
+
+}  // namespace roughroll

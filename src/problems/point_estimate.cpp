@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughroll/problems/point_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/error_bound.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
+
+namespace roughroll {
+
+rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own, double lambda,
+                          double f, double strength) {
+    // The size of the terms of (4.4)-(4.5): the pressure's scale P_H/P2 (through G) and the
+    // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
+    // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
+    // loses 1e-13 absolute in xi = 3e-8 at n = 128).
+    const double size = std::max({1.0, std::fabs(lambda), strength});          // for xi
+    const double n_eps = rounding_floor(n, std::max(1.0, std::fabs(lambda)));  // for c0 and Q
+    // c0: Q(c0) of (4.5) rounds to about n eps f K (an O(f) sum whose terms grow with G of
+    // (3.25)); near gross sliding Q = f (1 - rho^2) (Carter), so c0 = 2 rho - 1 moves by
+    // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). On the paper's single zone the
+    // special loads Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly); the
+    // general search's zone at |Q| = f (the least G) is computed.
+    const bool special = !s.general && (s.Q == 0.0 || std::fabs(s.Q) == f);
+    double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
+    double xi_floor = rounding_floor(n, std::fabs(own.xi) + f * size);
+    if (own.general && !own.psi_b.empty() && own.rho() > 0.0) {
+        // A zone of the general search (docs/formulation.md 7(d), 7(e)): xi, b_0 and psi(-1) are
+        // read off (4.4), whose terms of size |xi| + f K they cancel (stick_system_floor). The
+        // ends solve the load in the gap form rho (pi/2) b_0 = |Q| - f and the entry condition
+        // psi(-1)/|b_0| = 0, both relative to b_0, which near gross sliding vanishes like
+        // f G'' rho^2/2: the ends move by rho times the floor over |b_0| (the residuals of 7(d)
+        // have slopes 2 and 3 in gamma and log rho, which the factor 1 covers).
+        const double system = stick_system_floor(n, std::fabs(own.xi) + f * size);
+        xi_floor = std::max(xi_floor, system);
+        c0_floor = std::max(c0_floor, own.rho() * system / std::fabs(own.psi_b[0]));
+    }
+    return {rounding_floor(n, lambda), c0_floor, xi_floor, f * n_eps};
+}
+
+double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f,
+                       double strength) {
+    // Each level's ends are Newton's within zone_end_resolution, so the difference of two levels
+    // carries up to twice that: below it, a difference is that noise, not a ratio (free rolling of
+    // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11). Near gross
+    // sliding the entry condition's rounding moves the ends by rho/|b_0| times it (formulation 8(m),
+    // entry_ends_floor; the braked pair at Q = -0.049999 had been refused on -5.3e-11, -4.1e-10), at
+    // the finest level used: m = the three levels' finest, or 2n for the second chance.
+    const double terms = std::fabs(s.xi) + std::fabs(s.forcing) * std::max(1.0, std::fabs(lambda)) +
+                         f * std::max({1.0, std::fabs(lambda), strength});
+    return c0_floor + 2.0 * zone_end_resolution +
+           (s.psi_b.empty() ? 0.0 : entry_ends_floor(m, terms, s.rho(), s.psi_b[0]));
+}
+
+std::string no_honest_estimate(method how, int n, estimate_structure structure) {
+    const char* const named[] = {"", " (dissimilar rollers)", " (dissimilar rollers, full coupling)"};
+    return "no honest error estimate for method '" + to_string(how) + "' at n = " + std::to_string(n) +
+           named[static_cast<int>(structure)] + ": ";
+}
+
+namespace {
+
+// The refusal of quantity `name` whose levels `used`, from coarsest_n nodes, gave no estimate.
+[[noreturn]] void refuse(const estimate_point& p, const char* name, const three_levels& used, int coarsest_n) {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << no_honest_estimate(p.how, p.n, p.structure) << name;
+    if (p.structure == estimate_structure::full_coupling) {
+        msg << " is not finite on its levels";  // the changes' bound has no other way to fail
+        throw resolution_error(msg.str());
+    }
+    const bool paper = p.structure == estimate_structure::paper;
+    msg << " does not converge visibly over " << (paper ? "n = " : "the levels n = ") << coarsest_n << ", "
+        << 2 * coarsest_n << ", " << 4 * coarsest_n << " (differences " << used.middle - used.coarsest << ", "
+        << used.finest - used.middle << ") at " << p.at << " = " << p.at_value;
+    // A larger n helps only where its levels fit below max_nodes (the finest is n, or 2n above).
+    if (paper)
+        msg << (p.n < max_nodes ? "; increase n, or the scene is beyond the method's reach"
+                                : "; the scene is beyond the method's reach at the largest n");
+    else if (p.n < max_nodes)
+        msg << "; a larger n (at most " << max_nodes << ") may converge";
+    else
+        msg << "; n is at its largest, so the load is beyond the method's reach";
+    throw resolution_error(msg.str());
+}
+
+}  // namespace
+
+error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table,
+                                    const std::array<estimate_level, 3>& levels,
+                                    const std::function<std::optional<estimate_level>()>& finer,
+                                    const estimate_point& p) {
+    const int order = level_of(p.how) == method::product ? 4 : 2;
+    const int coarsest_n = p.n >> p.self;
+    const bool coupled = p.structure == estimate_structure::full_coupling;
+    // Three levels that look converged can still be pre-asymptotic (docs/performance.md, "How the
+    // error estimates are made", the fourth level): where they show less than the method's order,
+    // and always for the one-parameter limit, whose c0 error changes with c0's place among the nodes
+    // and can pass near zero at one level, level 2n confirms: the estimate is also bounded from
+    // n/2, n, 2n, and the point is refused where those do not converge visibly.
+    const bool always_confirm = p.how == method::one_parameter;
+    // An observed order far above the method's (ratio beyond 2^(p+2)) is no sign of the asymptotic
+    // range either: a coarsest level far off, or a middle level that lies near the limit by chance
+    // (paper at n = 16 near gross sliding: ratio 50 over 4, 8, 16, then a sign change and 6 times
+    // the estimate at 32).
+    const double too_fast = std::ldexp(1.0, order + 2);
+    std::optional<estimate_level> above;
+    bool above_tried = false;
+    const auto finer_level = [&]() -> const estimate_level* {
+        if (!above_tried) above = finer();
+        above_tried = true;
+        return above ? &*above : nullptr;
+    };
+    const auto value = [](const estimated_quantity& q, const estimate_level& l) {
+        return q.value ? l.solution.*q.value : l.lambda;
+    };
+    error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
+    bool second_chance = false, confirmed = false;
+    for (const estimated_quantity& q : table) {
+        const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
+        // Full coupling (8(e)): the zone ends converge at order 1 or less, erratically, and the
+        // errors change sign between levels, so no asymptotic rule holds (error_bound.hpp).
+        error_bound b = coupled ? change_bound(v, q.floor)
+                                : bound_error(v, order, reported_value{p.self, q.extrapolated}, q.floor);
+        three_levels used = v;
+        int used_coarsest_n = coarsest_n;
+        const bool rounding = std::fabs(v.finest - v.middle) <= q.floor;  // the ratio then means nothing
+        const bool confirm = p.structure == estimate_structure::paper && b.resolved &&
+                             (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
+        const bool chance = !coupled && !b.resolved && p.checks_hold && q.second_chance;
+        if (chance || confirm) {
+            // One level finer, n/2, n, 2n (error_bound.hpp). Where the first three gave no estimate
+            // (a second chance, where n/4 is still pre-asymptotic for this quantity: the second stick
+            // zone's end of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64): accepted
+            // only where the finer levels show at least order p - 1. Where they gave one (a
+            // confirmation): the larger of the two.
+            if (const estimate_level* a = finer_level()) {
+                const three_levels fine{v.middle, v.finest, value(q, *a)};
+                error_bound fb = confirm ? confirm_error(fine, order, q.extrapolated, q.floor)
+                                         : bound_error(fine, order, reported_value{1, q.extrapolated}, q.finer_floor);
+                if (confirm) {
+                    if (fb.resolved) {
+                        fb.value = std::max(fb.value, b.value);
+                        fb.asymptotic = fb.asymptotic && b.asymptotic;
+                    }
+                    confirmed = true;
+                } else {
+                    if (!(fb.ratio >= std::ldexp(1.0, order - 1))) fb.resolved = false;
+                    second_chance = second_chance || fb.resolved;
+                }
+                b = fb;
+                used = fine;
+                used_coarsest_n = 2 * coarsest_n;
+            }
+        }
+        if (!b.resolved) refuse(p, q.name, used, used_coarsest_n);
+        e.*q.out = std::max(e.*q.out, b.value);
+        e.bounded = e.bounded || !b.asymptotic;
+    }
+    static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
+    const int first = 2 - p.self;  // index of the coarsest level's name
+    const std::string levels_used =
+        std::string("levels ") + names[first] + ", " + names[first + 1] + ", " + names[first + 2];
+    if (coupled) {
+        e.against = levels_used +
+                    " (dissimilar rollers, full coupling: level n, twice the larger of the last two level changes)";
+        return e;
+    }
+    e.against = std::string(p.richardson ? "level n" : p.self == 2 ? "n/2" : "2n") + " (" +
+                (p.structure == estimate_structure::dissimilar ? "dissimilar rollers: level n, not extrapolated; " : "") +
+                levels_used + (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
+                (confirmed ? "; confirmed on n/2, n, 2n" : "") + (e.bounded ? "; observed order below " : "; order ") +
+                std::to_string(order) + (e.bounded ? ": bounded)" : " observed)");
+    return e;
+}
+
+}  // namespace roughroll
