@@ -303,12 +303,12 @@ tangential_solution contact::structure_level(contact& level, const tangential_so
         const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
         const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
         if (v == nullptr)
-            throw resolution_error(
-                no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) + "level " +
-                std::to_string(level.nodes()) + " finds no five zones at Q = " + shortest(s.Q) +
-                " from level n's zones; " +
-                (nodes() < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
-                                     : "n is at its largest, so the load is beyond the method's reach"));
+            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) +
+                                   "level " + std::to_string(level.nodes()) +
+                                   " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
+                                   (nodes() < max_nodes
+                                        ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
+                                        : "n is at its largest, so the load is beyond the method's reach"));
         return five_zone_point(*v);
     }
     return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
@@ -341,11 +341,11 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
         // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
         // level n's at full coupling: contact::normal), with no second chance.
-        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false,
-                  &est::lambda},
-                 {"xi", &sol::xi, floor.xi, floor.xi, false, true, &est::xi},
-                 {"c0", &sol::c0, ends, finer_ends, false, true, &est::c0},
-                 {"the stick zone's start", &sol::start, ends, finer_ends, false, true, &est::start}};
+        table = {
+            {"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false, &est::lambda},
+            {"xi", &sol::xi, floor.xi, floor.xi, false, true, &est::xi},
+            {"c0", &sol::c0, ends, finer_ends, false, true, &est::c0},
+            {"the stick zone's start", &sol::start, ends, finer_ends, false, true, &est::start}};
         // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
         // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
         if (s.five) {
@@ -376,14 +376,9 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
             return std::nullopt;
         }
     };
-    const estimate_point point{options_.how,
-                               nodes(),
-                               self,
-                               structure,
-                               reported_ != nullptr && !dissimilar_,
-                               own.checks.hold(),
-                               swept ? "c0" : "Q",
-                               swept ? s.c0 : s.Q};
+    const estimate_point point{
+        options_.how,       nodes(),           self, structure, reported_ != nullptr && !dissimilar_, own.checks.hold(),
+        swept ? "c0" : "Q", swept ? s.c0 : s.Q};
     return estimate_from_levels(table, levels, finer, point);
 }
 

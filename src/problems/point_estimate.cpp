@@ -11,8 +11,8 @@
 
 namespace roughroll {
 
-rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own, double lambda,
-                          double f, double strength) {
+rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own, double lambda, double f,
+                          double strength) {
     // The size of the terms of (4.4)-(4.5): the pressure's scale P_H/P2 (through G) and the
     // kernels' strength sum |T| (a near-constant kernel T exp(-A |z|), A << 1, multiplies
     // int q = O(f) by T, and those terms cancel to xi: a tangential layer T = 100, A = 1e-3
@@ -41,8 +41,7 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
     return {rounding_floor(n, lambda), c0_floor, xi_floor, f * n_eps};
 }
 
-double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f,
-                       double strength) {
+double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f, double strength) {
     // Each level's ends are Newton's within zone_end_resolution, so the difference of two levels
     // carries up to twice that: below it, a difference is that noise, not a ratio (free rolling of
     // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11). Near gross
@@ -123,8 +122,8 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
         // Full coupling (8(e)): the zone ends converge at order 1 or less, erratically, and the
         // errors change sign between levels, so no asymptotic rule holds (error_bound.hpp).
-        error_bound b = coupled ? change_bound(v, q.floor)
-                                : bound_error(v, order, reported_value{p.self, q.extrapolated}, q.floor);
+        error_bound b =
+            coupled ? change_bound(v, q.floor) : bound_error(v, order, reported_value{p.self, q.extrapolated}, q.floor);
         three_levels used = v;
         int used_coarsest_n = coarsest_n;
         const bool rounding = std::fabs(v.finest - v.middle) <= q.floor;  // the ratio then means nothing
@@ -169,9 +168,12 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
                     " (dissimilar rollers, full coupling: level n, twice the larger of the last two level changes)";
         return e;
     }
-    e.against = std::string(p.richardson ? "level n" : p.self == 2 ? "n/2" : "2n") + " (" +
-                (p.structure == estimate_structure::dissimilar ? "dissimilar rollers: level n, not extrapolated; " : "") +
-                levels_used + (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
+    // Against what: Richardson's value's level n, else level n's neighbour n/2 (or 2n).
+    const char* const head = p.richardson ? "level n" : p.self == 2 ? "n/2" : "2n";
+    const char* const kind =
+        p.structure == estimate_structure::dissimilar ? "dissimilar rollers: level n, not extrapolated; " : "";
+    e.against = std::string(head) + " (" + kind + levels_used +
+                (second_chance ? "; n/2, n, 2n where n/4 fell short" : "") +
                 (confirmed ? "; confirmed on n/2, n, 2n" : "") + (e.bounded ? "; observed order below " : "; order ") +
                 std::to_string(order) + (e.bounded ? ": bounded)" : " observed)");
     return e;

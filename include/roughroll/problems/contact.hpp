@@ -131,7 +131,7 @@ private:
     const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
     method level_method() const;                  // product for extrapolated, else the method itself
     bool build_levels();                          // the two other levels of the estimate; false when none fit
-    double kernel_strength() const;  // the larger kernel's sum |T|, for the rounding floors
+    double kernel_strength() const;               // the larger kernel's sum |T|, for the rounding floors
     // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
     // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,

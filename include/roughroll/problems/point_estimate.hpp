@@ -46,14 +46,13 @@ struct error_estimate {
 struct rounding_floors {
     double lambda, c0, xi, Q;
 };
-rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own, double lambda,
-                          double f, double strength);
+rounding_floors floors_at(int n, const tangential_solution& s, const tangential_solution& own, double lambda, double f,
+                          double strength);
 
 // The floor of the ends of dissimilar rollers' zones at m nodes (formulation 8(m)): c0's floor
 // `c0_floor`, twice Newton's resolution zone_end_resolution (the difference of two levels carries
 // both), and near gross sliding the entry condition's rounding moved by rho/|b_0| (entry_ends_floor).
-double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f,
-                       double strength);
+double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f, double strength);
 
 // The structures whose estimates differ in rule or in name: the paper's problem (beta_D = 0, every
 // zone search, the one-parameter limit), dissimilar rollers at Johnson's level (three or five zones,
