@@ -9,6 +9,7 @@
 // Coarse n = 32 keeps the finer solutions affordable (n = 128): the levels of the estimates
 // are then 8, 16, 32, far from the asymptotic range for many of these layers, which is
 // where an estimate is tempted to under-report.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -24,6 +25,7 @@
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/point_estimate.hpp"
 
 using namespace roughroll;
 
@@ -290,4 +292,58 @@ TEST(HonestEstimates, RandomSceneUnderReports) {
             two_routes(r, f, Q, solver_options{512, method::product}, solver_options{256, method::extrapolated});
         EXPECT_TRUE(honest_or_refused_at(r, f, Q, solver_options{32, method::extrapolated}, ref));
     }
+}
+
+// The one estimate rule (problems/point_estimate.hpp) on made-up levels of product integration at
+// n = 64 (16, 32, 64): xi and c0 that do not converge visibly there (d1 = d2), and at order 4 over
+// 32, 64, 128. Level 2n is solved once for both; a point whose checks fail gets no second chance,
+// and the refusal names the structure; full coupling bounds by twice the larger level change.
+TEST(HonestEstimates, OneRuleForEveryStructure) {
+    const auto level = [](double v) {
+        tangential_solution t{};
+        t.xi = v;
+        t.c0 = v;
+        return estimate_level{t, 1.0};
+    };
+    const std::array<estimate_level, 3> levels{level(1.0), level(2.0), level(3.0)};
+    const std::vector<estimated_quantity> table{
+        {"xi", &tangential_solution::xi, 0.0, 0.0, false, true, &error_estimate::xi},
+        {"c0", &tangential_solution::c0, 0.0, 0.0, false, true, &error_estimate::c0}};
+    int solved = 0;
+    const auto finer = [&]() -> std::optional<estimate_level> {
+        ++solved;
+        return level(3.0 + 1.0 / 16.0);
+    };
+    estimate_point p{method::product, 64, 2, estimate_structure::paper, false, true, "Q", 0.25};
+
+    const error_estimate e = estimate_from_levels(table, levels, finer, p);
+    EXPECT_EQ(solved, 1) << "level 2n is solved once for every quantity that asks for it";
+    const error_bound b = bound_error({2.0, 3.0, 3.0 + 1.0 / 16.0}, 4, reported_value{1, false}, 0.0);
+    ASSERT_TRUE(b.resolved);
+    EXPECT_EQ(e.xi, b.value);
+    EXPECT_EQ(e.c0, b.value);
+    EXPECT_NE(e.against.find("n/2 (levels n/4, n/2, n; n/2, n, 2n where n/4 fell short"), std::string::npos)
+        << e.against;
+
+    p.structure = estimate_structure::dissimilar;
+    p.checks_hold = false;
+    solved = 0;
+    try {
+        estimate_from_levels(table, levels, finer, p);
+        ADD_FAILURE() << "levels that do not converge visibly must refuse the point";
+    } catch (const resolution_error& why) {
+        EXPECT_EQ(std::string(why.what())
+                      .rfind("no honest error estimate for method 'product' at n = 64 (dissimilar "
+                             "rollers): xi does not converge visibly over the levels n = 16, 32, 64",
+                             0),
+                  0u)
+            << why.what();
+    }
+    EXPECT_EQ(solved, 0) << "no second chance for a point whose checks fail";
+
+    p.structure = estimate_structure::full_coupling;
+    const error_estimate c = estimate_from_levels(table, levels, finer, p);
+    EXPECT_EQ(c.xi, 2.0);  // twice the larger of |2 - 1| and |3 - 2|
+    EXPECT_TRUE(c.bounded);
+    EXPECT_EQ(c.against.rfind("levels n/4, n/2, n (dissimilar rollers, full coupling", 0), 0u) << c.against;
 }
