@@ -4,22 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include <sstream>
-
 #include "roughroll/numerics/collocation.hpp"
-#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 namespace roughroll {
-
-namespace {
-kernel widest_kernel(const roughness& r) {
-    const double rate = std::max(kernel::normal(r).max_rate(), kernel::tangential(r).max_rate());
-    return kernel(std::vector<exponential_term>{{1.0, rate}});
-}
-}  // namespace
 
 contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
                  normal_cache* cache)
@@ -36,7 +26,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
                              !(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty());
     if (extrapolate) {
         // Richardson's rule holds only where the error already falls like n^-4.
-        check_extrapolation_range(widest_kernel(surfaces), n, "these kernels");
+        check_extrapolation_range(widest_kernel(), n, "these kernels");
         companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones},
                                                materials, cache);
     }
@@ -182,8 +172,9 @@ const tangential_solution& contact::level_point(double Q, bool checked, std::opt
 
 method contact::level_method() const { return level_of(options_.how); }
 
-double contact::kernel_strength() const {
-    return std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
+kernel contact::widest_kernel() const {
+    const double rate = std::max(kernel::normal(surfaces_).max_rate(), kernel::tangential(surfaces_).max_rate());
+    return kernel(std::vector<exponential_term>{{1.0, rate}});
 }
 
 tangential_solution contact::distribution(const tangential_solution& s) {
@@ -191,284 +182,6 @@ tangential_solution contact::distribution(const tangential_solution& s) {
     if (!last_fine_ || last_fine_->Q != s.Q)
         last_fine_ = s.general ? general_point(s.Q, zone_guess{s.start, s.c0}) : tangential_->solve(s.Q);
     return *last_fine_;
-}
-
-std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
-    // The levels' differences measure how a solution of the discrete equations moves with n; where
-    // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.
-    // They are still solved: where they do not converge the point is refused, as any other.
-    std::optional<error_estimate> e = levels_estimate(s);
-    if (!s.checks.hold()) return std::nullopt;
-    return e;
-}
-
-std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
-    if (reported_ && s.general && !dissimilar_) {
-        // A point of the general path is level n itself, not extrapolated: the difference from
-        // n/2 (on the same path), with the rounding floor of every estimate.
-        if (!last_coarse_ || last_coarse_->Q != s.Q)
-            last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start, s.c0});
-        // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
-        // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
-        const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
-        return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
-                              std::fabs(s.c0 - last_coarse_->c0) + floor.c0,
-                              std::fabs(s.xi - last_coarse_->xi) + floor.xi,
-                              0.0,
-                              "n/2 (general zone search: level n, not extrapolated)",
-                              false};
-    }
-    // Three levels of the level method on the structure of s (for dissimilar rollers the reported
-    // values are level n's; for the paper's problem those of its distributions).
-    if (!build_levels()) return std::nullopt;
-    const tangential_solution own = distribution(s);
-    std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? structure_level(*levels_[i], s, own, false) : own;
-    return estimate_from(s, own, at, false);
-}
-
-bool contact::build_levels() {
-    if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
-    levels_built_ = true;
-    // A plain contact at m nodes (the level method), or null when m is outside the nodes
-    // supported or the kernels are beyond its resolution.
-    const method how = level_method();
-    auto plain = [&](int m) -> contact* {
-        if (m < min_nodes || m > max_nodes) return nullptr;
-        if (m == nodes() / 2 && companion_) return companion_.get();
-        for (const auto& c : owned_levels_)
-            if (c->nodes() == m) return c.get();
-        try {
-            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}, materials_));
-            owned_levels_.back()->set_checkpoint(checkpoint_);
-            return owned_levels_.back().get();
-        } catch (const resolution_error&) {
-            return nullptr;
-        }
-    };
-    const int n = nodes();
-    // Three levels n_0, 2 n_0, 4 n_0 containing n: n/4, n/2, n, else n/2, n, 2n (for
-    // extrapolated, Richardson's value from the middle levels), else n, 2n, 4n. First the
-    // first of them whose coarsest level is in the asymptotic range (the one-parameter limit
-    // has no kernel to resolve: its ratio alone decides), then the first that can be solved.
-    const int coarsest[] = {n / 4, n / 2, n};
-    const int count = companion_ ? 2 : 3;
-    for (bool require_range : {true, false}) {
-        for (int i = 0; i < count; ++i) {
-            const int m = coarsest[i];
-            if (m < min_nodes || (n << i) > max_nodes) continue;
-            if (require_range && how != method::one_parameter && !in_asymptotic_range(widest_kernel(surfaces_), m, how))
-                continue;
-            std::array<contact*, 3> at{};
-            bool ok = true;
-            for (int k = 0; k < 3 && ok; ++k) {
-                if (k == 2 - i) continue;  // this contact's own level
-                at[k] = plain(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
-                ok = at[k] != nullptr;
-            }
-            if (ok) {
-                levels_ = at;
-                return true;
-            }
-        }
-    }
-    return false;
-}
-
-void contact::make_finer(int m) {
-    if (finer_) return;
-    finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-    finer_->set_checkpoint(checkpoint_);
-}
-
-tangential_solution contact::structure_level(contact& level, const tangential_solution& s,
-                                             const tangential_solution& own, bool swept) {
-    if (swept) return level.level_at_stick_end(own.c0, false, sweeping_near_);
-    // A point of the general path is compared with the general path's answers at the levels.
-    if (!dissimilar_)
-        return s.general ? level.general_point(s.Q, zone_guess{s.start, s.c0}) : level.level_point(s.Q, false);
-    if (coupled_) {
-        // Full coupling (8(e)): the level's own alternation from its own Johnson's point (a Johnson's
-        // point against a coupled n would measure the coupling, not the discretisation). A level that
-        // cannot be coupled leaves no honest estimate (the point itself was).
-        try {
-            return level.coupled_level_point(s.Q, level.johnson_level_point(s.Q, s), false);
-        } catch (const numerical_error& why) {
-            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::full_coupling) +
-                                   "level " + std::to_string(level.nodes()) + ": " + why.what());
-        }
-    }
-    if (s.five) {
-        // Five zones (8(j)): the level from this level's ends (Newton), else its own search.
-        const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
-        const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
-        if (v == nullptr)
-            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) +
-                                   "level " + std::to_string(level.nodes()) +
-                                   " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
-                                   (nodes() < max_nodes
-                                        ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
-                                        : "n is at its largest, so the load is beyond the method's reach"));
-        return five_zone_point(*v);
-    }
-    return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
-}
-
-error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
-                                      const std::array<tangential_solution, 3>& at, bool swept) {
-    int self = 0;
-    while (levels_[self] != nullptr) ++self;
-    const estimate_structure structure = !dissimilar_ ? estimate_structure::paper
-                                         : coupled_   ? estimate_structure::full_coupling
-                                                      : estimate_structure::dissimilar;
-    const double lambda = normal().lambda, strength = kernel_strength();
-    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
-    const rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
-    // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
-    // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
-    using q = estimated_quantity;
-    using sol = tangential_solution;
-    using est = error_estimate;
-    std::vector<q> table;
-    if (!dissimilar_) {
-        const bool x = reported_ != nullptr;  // Richardson's values, all three
-        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, x, true, &est::lambda},
-                 {"xi", &sol::xi, floor.xi, floor.xi, x, true, &est::xi},
-                 swept ? q{"Q", &sol::Q, floor.Q, floor.Q, x, true, &est::Q}
-                       : q{"c0", &sol::c0, floor.c0, floor.c0, x, true, &est::c0}};
-    } else {
-        const double ends = zone_ends_floor(finest_n, floor.c0, s, lambda, f_, strength);
-        const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
-        // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
-        // level n's at full coupling: contact::normal), with no second chance.
-        table = {
-            {"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false, &est::lambda},
-            {"xi", &sol::xi, floor.xi, floor.xi, false, true, &est::xi},
-            {"c0", &sol::c0, ends, finer_ends, false, true, &est::c0},
-            {"the stick zone's start", &sol::start, ends, finer_ends, false, true, &est::start}};
-        // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
-        // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
-        if (s.five) {
-            table.push_back({"the second stick zone's end", &sol::end2, ends, finer_ends, false, true, &est::c0});
-            table.push_back(
-                {"the second stick zone's start", &sol::start2, ends, finer_ends, false, true, &est::start});
-        }
-    }
-    std::array<estimate_level, 3> levels;
-    for (int i = 0; i < 3; ++i)
-        levels[i] = {at[i], levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda};
-    // Level 2n on the structure of s, where n is the finest level. A search that finds no zone
-    // there leaves no fourth level; for the paper's single zone a numerical fault is one.
-    const auto finer = [&]() -> std::optional<estimate_level> {
-        const int m = 2 * nodes();
-        if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;
-        try {
-            make_finer(m);
-            tangential_solution t = structure_level(*finer_, s, own, swept);
-            return estimate_level{std::move(t), finer_->normal_level().lambda};
-        } catch (const resolution_error&) {
-            return std::nullopt;
-        } catch (const numerical_error&) {
-            if (!s.general && !dissimilar_) throw;
-            return std::nullopt;
-        } catch (const error&) {
-            if (!dissimilar_) throw;
-            return std::nullopt;
-        }
-    };
-    const estimate_point point{
-        options_.how,       nodes(),           self, structure, reported_ != nullptr && !dissimilar_, own.checks.hold(),
-        swept ? "c0" : "Q", swept ? s.c0 : s.Q};
-    return estimate_from_levels(table, levels, finer, point);
-}
-
-tangential_solution contact::level_at_stick_end(double c0, bool checked, bool near) {
-    // A sweep's consecutive c0 give nearby systems: refined on the previous factorisation
-    // (dense_system::solve_near, docs/formulation.md "Swept points refined on the previous
-    // factorisation"), the same solution to rounding.
-    return limit_ ? limit_->at_stick_end(c0, checked) : tangential_->at_stick_end(c0, checked, near);
-}
-
-void check_sweepable(const dissimilar& materials) {
-    if (materials.beta_d != 0.0)
-        throw input_error(
-            "a curve swept in c0 is the paper's single zone, never the answer for beta_d != 0 "
-            "(docs/formulation.md 8(g)); solve at given loads instead");
-}
-
-contact::swept_point contact::at_stick_end(double c0) {
-    check_sweepable(materials_);
-    try {
-        return swept_at(c0);
-    } catch (const resolution_error&) {
-        // A refusal is decided on fresh factorisations, as for the point alone: the refined
-        // route agrees with them only to rounding, and a refusal line quotes Q(c0) to the digit.
-        sweeping_near_ = false;
-        try {
-            swept_point p = swept_at(c0);
-            sweeping_near_ = true;
-            return p;
-        } catch (...) {
-            sweeping_near_ = true;
-            throw;
-        }
-    }
-}
-
-contact::swept_point contact::swept_at(double c0) {
-    tangential_solution s = level_at_stick_end(c0, true, sweeping_near_);
-    const tangential_solution own = s;
-    std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
-    if (reported_) {
-        // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        coarse = companion_->level_at_stick_end(c0, false, sweeping_near_);
-        // Q = 0 and f at c0 = 1 and -1 are exact on every level: kept exact (Carter's columns).
-        if (c0 != 1.0 && c0 != -1.0) s.Q = richardson(s.Q, coarse->Q);
-        s.xi = richardson(s.xi, coarse->xi);
-        if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
-            throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
-    }
-    // A load outside [0, f] is no point of this curve (docs/robustness.md, "Curves with refused
-    // points"): the sweep's slip zone carries q = +f p (sign +1), so |q| <= f p of (3.3) gives
-    // |Q| <= f int p = f, and Q(c0) rises from 0 at full stick (c0 = 1) to f (c0 = -1); a negative
-    // Q is the mirror case, whose slip zone is at the other edge. Outside [0, f] the inequalities
-    // fail: n does not resolve the layers, or the single stick zone is not the solution there
-    // (docs/formulation.md 7(c), leading slip: Q(c0) > f near c0 = -1). The ends c0 = +-1 are exact.
-    refuse_load_outside(s, std::nullopt);
-    if (!build_levels()) return {s, std::nullopt};
-    std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i)
-        at[i] = !levels_[i]                                ? own
-                : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
-                                                           : levels_[i]->level_at_stick_end(c0, false, sweeping_near_);
-    const error_estimate e = estimate_from(s, own, at, true);
-    // The same for the load's error interval: Q +- e.Q reaching beyond [0, f] cannot be told from
-    // full stick or gross sliding (and may be no physical point at all).
-    refuse_load_outside(s, e.Q);
-    if (!s.checks.hold()) return {s, std::nullopt};  // as estimate(): no bound for such a point
-    return {s, e};
-}
-
-void contact::refuse_load_outside(const tangential_solution& s, std::optional<double> error) const {
-    if (s.c0 == 1.0 || s.c0 == -1.0) return;  // Q = 0 and Q = f exactly (full stick, gross sliding)
-    const double d = error.value_or(0.0);
-    if (s.Q - d >= 0.0 && s.Q + d <= f_) return;
-    std::ostringstream msg;
-    msg.precision(3);
-    msg << "Q(c0) = " << shortest(s.Q);
-    if (error)
-        msg << " +- " << *error << " (its error estimate) reaches";
-    else
-        msg << " lies";
-    msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0) << " for method '"
-        << to_string(options_.how) << "' at n = " << nodes() << ": "
-        << (error ? std::string("the load is not resolved there; ") +
-                        (nodes() < max_nodes ? "increase n, or the scene is beyond the method's reach"
-                                             : "n is at its largest, so the scene is beyond the method's reach")
-                  : std::string("no physical point (|Q| <= f needs (3.3)-(3.4)): n does not resolve the layers, or the "
-                                "single stick zone is not the solution there; ") +
-                        (nodes() < max_nodes ? "increase n, or solve at given loads" : "solve at given loads"));
-    throw resolution_error(msg.str());
 }
 
 const tangential_solution& contact::dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite) {

@@ -16,6 +16,10 @@
 // With method::one_parameter the contact solves the limit t -> 0 of the model instead
 // (one_parameter_solver, docs/formulation.md "The one-parameter limit"): same solutions,
 // same conventions, no two-parameter tangential solver.
+//
+// The members are defined by idea: the points and their zone structures in contact.cpp, the error
+// estimate's levels and table in estimate_levels.cpp (its rule: point_estimate.hpp), the points of a
+// curve swept in c0 in swept_point.cpp.
 #pragma once
 
 #include <memory>
@@ -132,6 +136,7 @@ private:
     method level_method() const;                  // product for extrapolated, else the method itself
     bool build_levels();                          // the two other levels of the estimate; false when none fit
     double kernel_strength() const;               // the larger kernel's sum |T|, for the rounding floors
+    kernel widest_kernel() const;                 // one term at either kernel's largest rate: the resolution both need
     // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
     // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// contact's error estimate (contact.hpp): the three levels of the level method, level 2n where the
+// rule asks for it, each on the zone structure of the point, and the structure's table of quantities
+// for the one rule of point_estimate.hpp.
+#include <algorithm>
+#include <cmath>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/point_estimate.hpp"
+
+namespace roughroll {
+
+double contact::kernel_strength() const {
+    return std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
+}
+
+std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    // The levels' differences measure how a solution of the discrete equations moves with n; where
+    // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.
+    // They are still solved: where they do not converge the point is refused, as any other.
+    std::optional<error_estimate> e = levels_estimate(s);
+    if (!s.checks.hold()) return std::nullopt;
+    return e;
+}
+
+std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
+    if (reported_ && s.general && !dissimilar_) {
+        // A point of the general path is level n itself, not extrapolated: the difference from
+        // n/2 (on the same path), with the rounding floor of every estimate.
+        if (!last_coarse_ || last_coarse_->Q != s.Q)
+            last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start, s.c0});
+        // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
+        // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
+        const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
+        return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
+                              std::fabs(s.c0 - last_coarse_->c0) + floor.c0,
+                              std::fabs(s.xi - last_coarse_->xi) + floor.xi,
+                              0.0,
+                              "n/2 (general zone search: level n, not extrapolated)",
+                              false};
+    }
+    // Three levels of the level method on the structure of s (for dissimilar rollers the reported
+    // values are level n's; for the paper's problem those of its distributions).
+    if (!build_levels()) return std::nullopt;
+    const tangential_solution own = distribution(s);
+    std::array<tangential_solution, 3> at{};
+    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? structure_level(*levels_[i], s, own, false) : own;
+    return estimate_from(s, own, at, false);
+}
+
+bool contact::build_levels() {
+    if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
+    levels_built_ = true;
+    // A plain contact at m nodes (the level method), or null when m is outside the nodes
+    // supported or the kernels are beyond its resolution.
+    const method how = level_method();
+    auto plain = [&](int m) -> contact* {
+        if (m < min_nodes || m > max_nodes) return nullptr;
+        if (m == nodes() / 2 && companion_) return companion_.get();
+        for (const auto& c : owned_levels_)
+            if (c->nodes() == m) return c.get();
+        try {
+            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}, materials_));
+            owned_levels_.back()->set_checkpoint(checkpoint_);
+            return owned_levels_.back().get();
+        } catch (const resolution_error&) {
+            return nullptr;
+        }
+    };
+    const int n = nodes();
+    // Three levels n_0, 2 n_0, 4 n_0 containing n: n/4, n/2, n, else n/2, n, 2n (for
+    // extrapolated, Richardson's value from the middle levels), else n, 2n, 4n. First the
+    // first of them whose coarsest level is in the asymptotic range (the one-parameter limit
+    // has no kernel to resolve: its ratio alone decides), then the first that can be solved.
+    const int coarsest[] = {n / 4, n / 2, n};
+    const int count = companion_ ? 2 : 3;
+    for (bool require_range : {true, false}) {
+        for (int i = 0; i < count; ++i) {
+            const int m = coarsest[i];
+            if (m < min_nodes || (n << i) > max_nodes) continue;
+            if (require_range && how != method::one_parameter && !in_asymptotic_range(widest_kernel(), m, how))
+                continue;
+            std::array<contact*, 3> at{};
+            bool ok = true;
+            for (int k = 0; k < 3 && ok; ++k) {
+                if (k == 2 - i) continue;  // this contact's own level
+                at[k] = plain(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
+                ok = at[k] != nullptr;
+            }
+            if (ok) {
+                levels_ = at;
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+void contact::make_finer(int m) {
+    if (finer_) return;
+    finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
+    finer_->set_checkpoint(checkpoint_);
+}
+
+tangential_solution contact::structure_level(contact& level, const tangential_solution& s,
+                                             const tangential_solution& own, bool swept) {
+    if (swept) return level.level_at_stick_end(own.c0, false, sweeping_near_);
+    // A point of the general path is compared with the general path's answers at the levels.
+    if (!dissimilar_)
+        return s.general ? level.general_point(s.Q, zone_guess{s.start, s.c0}) : level.level_point(s.Q, false);
+    if (coupled_) {
+        // Full coupling (8(e)): the level's own alternation from its own Johnson's point (a Johnson's
+        // point against a coupled n would measure the coupling, not the discretisation). A level that
+        // cannot be coupled leaves no honest estimate (the point itself was).
+        try {
+            return level.coupled_level_point(s.Q, level.johnson_level_point(s.Q, s), false);
+        } catch (const numerical_error& why) {
+            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::full_coupling) +
+                                   "level " + std::to_string(level.nodes()) + ": " + why.what());
+        }
+    }
+    if (s.five) {
+        // Five zones (8(j)): the level from this level's ends (Newton), else its own search.
+        const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
+        const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
+        if (v == nullptr)
+            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) +
+                                   "level " + std::to_string(level.nodes()) +
+                                   " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
+                                   (nodes() < max_nodes
+                                        ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
+                                        : "n is at its largest, so the load is beyond the method's reach"));
+        return five_zone_point(*v);
+    }
+    return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
+}
+
+error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                      const std::array<tangential_solution, 3>& at, bool swept) {
+    int self = 0;
+    while (levels_[self] != nullptr) ++self;
+    const estimate_structure structure = !dissimilar_ ? estimate_structure::paper
+                                         : coupled_   ? estimate_structure::full_coupling
+                                                      : estimate_structure::dissimilar;
+    const double lambda = normal().lambda, strength = kernel_strength();
+    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
+    const rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
+    // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
+    // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
+    using q = estimated_quantity;
+    using sol = tangential_solution;
+    using est = error_estimate;
+    std::vector<q> table;
+    if (!dissimilar_) {
+        const bool x = reported_ != nullptr;  // Richardson's values, all three
+        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, x, true, &est::lambda},
+                 {"xi", &sol::xi, floor.xi, floor.xi, x, true, &est::xi},
+                 swept ? q{"Q", &sol::Q, floor.Q, floor.Q, x, true, &est::Q}
+                       : q{"c0", &sol::c0, floor.c0, floor.c0, x, true, &est::c0}};
+    } else {
+        const double ends = zone_ends_floor(finest_n, floor.c0, s, lambda, f_, strength);
+        const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
+        // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
+        // level n's at full coupling: contact::normal), with no second chance.
+        table = {
+            {"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false, &est::lambda},
+            {"xi", &sol::xi, floor.xi, floor.xi, false, true, &est::xi},
+            {"c0", &sol::c0, ends, finer_ends, false, true, &est::c0},
+            {"the stick zone's start", &sol::start, ends, finer_ends, false, true, &est::start}};
+        // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
+        // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
+        if (s.five) {
+            table.push_back({"the second stick zone's end", &sol::end2, ends, finer_ends, false, true, &est::c0});
+            table.push_back(
+                {"the second stick zone's start", &sol::start2, ends, finer_ends, false, true, &est::start});
+        }
+    }
+    std::array<estimate_level, 3> levels;
+    for (int i = 0; i < 3; ++i)
+        levels[i] = {at[i], levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda};
+    // Level 2n on the structure of s, where n is the finest level. A search that finds no zone
+    // there leaves no fourth level; for the paper's single zone a numerical fault is one.
+    const auto finer = [&]() -> std::optional<estimate_level> {
+        const int m = 2 * nodes();
+        if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;
+        try {
+            make_finer(m);
+            tangential_solution t = structure_level(*finer_, s, own, swept);
+            return estimate_level{std::move(t), finer_->normal_level().lambda};
+        } catch (const resolution_error&) {
+            return std::nullopt;
+        } catch (const numerical_error&) {
+            if (!s.general && !dissimilar_) throw;
+            return std::nullopt;
+        } catch (const error&) {
+            if (!dissimilar_) throw;
+            return std::nullopt;
+        }
+    };
+    const estimate_point point{
+        options_.how,       nodes(),           self, structure, reported_ != nullptr && !dissimilar_, own.checks.hold(),
+        swept ? "c0" : "Q", swept ? s.c0 : s.Q};
+    return estimate_from_levels(table, levels, finer, point);
+}
+
+}  // namespace roughroll
