@@ -18,6 +18,8 @@
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
+#include "roughroll/problems/zone_checks.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -476,27 +478,27 @@ double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
 
 traction_checks dissimilar_zones::check(const tangential_solution& s) {
     if (!s.opposite) return solver_.check(s);
-    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions: -sign on the
-    // leading, sign on the trailing (200 interior points each, as tangential_solver::check).
-    traction_checks c = solver_.check(tangential_solution{});  // the pressure margin (c0-independent)
-    c.stick_margin = c.slip_margin = std::numeric_limits<double>::infinity();
-    const auto lower = [](double& margin, double v) {
-        if (!(v >= margin)) margin = v;
+    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions (zones_of).
+    return checks(zones_of(s), [&](double r) { return solver_.normal().pressure(r); },
+                  [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
+}
+
+traction_checks dissimilar_zones::checks(const std::vector<zone>& zones, const std::function<double(double)>& p,
+                                         const std::function<double(double)>& p1,
+                                         const std::function<double(double)>& v) {
+    // The blended zones of 8(g): margins held to 0 (the floor reported is the |Q| system's at xi = 0).
+    zone_check_terms terms{f_, solver_.pressure_margin(), solver_.rounding(0.0), false, nullptr, nullptr};
+    terms.stick_gap = [&](const std::vector<double>& r) {
+        std::vector<double> gap(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) gap[i] = f_ * p(r[i]) - std::fabs(p1(r[i]));
+        return gap;
     };
-    const normal_solution& normal = solver_.normal();
-    constexpr int points = 200;
-    const auto grid = [](double lo, double hi, int i) {
-        return 0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * (i + 0.5) / points);
+    terms.slip_velocity = [&](const std::vector<double>& r) {
+        std::vector<double> out(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) out[i] = v(r[i]);
+        return out;
     };
-    for (int i = 0; i < points; ++i) {
-        const double r = grid(s.start, s.c0, i);
-        lower(c.stick_margin, (f_ * normal.pressure(r) - std::fabs(traction(s, r))) / f_);
-        lower(c.slip_margin, -s.sign * slip_velocity(s, grid(-1.0, s.start, i)) / f_);
-        if (s.c0 < 1.0) lower(c.slip_margin, s.sign * slip_velocity(s, grid(s.c0, 1.0, i)) / f_);
-    }
-    c.stick_holds = c.stick_margin >= 0.0;
-    c.slip_holds = c.slip_margin > 0.0;
-    return c;
+    return check_zones(zones, terms);
 }
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {

@@ -14,6 +14,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -145,30 +146,9 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
 }
 
 traction_checks dissimilar_zones::check(const five_zone_solution& s) {
-    // (3.3) on both stick zones, (3.4) with the direction S on the three slip zones, 200 interior
-    // points each (as tangential_solver::check).
-    traction_checks c = solver_.check(tangential_solution{});  // the pressure margin
-    c.stick_margin = c.slip_margin = std::numeric_limits<double>::infinity();
-    const auto lower = [](double& margin, double v) {
-        if (!(v >= margin)) margin = v;
-    };
-    constexpr int points = 200;
-    const auto grid = [](double lo, double hi, int i) {
-        return 0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(M_PI * (i + 0.5) / points);
-    };
-    for (int i = 0; i < points; ++i) {
-        for (const auto& [lo, hi] : {std::pair{s.s1, s.c1}, std::pair{s.s2, s.c2}}) {
-            const double r = grid(lo, hi, i);
-            lower(c.stick_margin, (f_ * pressure(r) - std::fabs(traction(s, r))) / f_);
-        }
-        for (const auto& [lo, hi] : {std::pair{-1.0, s.s1}, std::pair{s.c1, s.s2}, std::pair{s.c2, 1.0}}) {
-            const double r = grid(lo, hi, i);
-            lower(c.slip_margin, S(s, r) * slip_velocity(s, r) / f_);
-        }
-    }
-    c.stick_holds = c.stick_margin >= 0.0;
-    c.slip_holds = c.slip_margin > 0.0;
-    return c;
+    // (3.3) on both stick zones, (3.4) on the three slip zones in their directions S (zones_of).
+    return checks(zones_of(s), [&](double r) { return pressure(r); }, [&](double r) { return traction(s, r); },
+                  [&](double r) { return slip_velocity(s, r); });
 }
 
 }  // namespace roughroll

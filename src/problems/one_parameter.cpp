@@ -16,17 +16,12 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
+#include "roughroll/problems/zone_checks.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
 namespace {
-constexpr int check_points = 200;  // interior grid points per zone for (3.3), (3.4), as tangential_solver
-
-double grid_point(double lo, double hi, int i) {
-    const double x = std::cos(M_PI * (i + 0.5) / check_points);
-    return 0.5 * (lo + hi) + 0.5 * (hi - lo) * x;
-}
-
 // sum_j b_j T_{j+1}(x) for |x| <= 1, by Clenshaw's recurrence on a_k = b_{k-1}, a_0 = 0.
 // It is minus the Cauchy transform (1/pi) int sqrt(1-t^2) sum b_j U_j(t)/(t - x) dt
 // (docs/formulation.md Section 3), and defined at x = +-1 too.
@@ -255,35 +250,21 @@ double one_parameter_solver::slip_velocity(const tangential_solution& s, double 
 }
 
 traction_checks one_parameter_solver::check(const tangential_solution& s) const {
-    // As tangential_solver::check: p >= 0, (3.3) on the stick zone, (3.4) on the slip zone.
-    traction_checks c{};
-    c.pressure_margin = std::numeric_limits<double>::infinity();
-    c.stick_margin = std::numeric_limits<double>::infinity();
-    c.slip_margin = std::numeric_limits<double>::infinity();
-    auto lower = [](double& margin, double v) {
-        if (!(v >= margin)) margin = v;  // a NaN reads as a failed check
+    // (3.3) to the rounding of the collocation solution, as tangential_solver::rounding: the terms of
+    // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q; (3.4) likewise.
+    const double rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
+    zone_check_terms terms{f_, least_pressure(normal_), rounding, true, nullptr, nullptr};
+    terms.stick_gap = [&](const std::vector<double>& r) {
+        std::vector<double> gap(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) gap[i] = f_ * normal_.pressure(r[i]) - std::fabs(traction(s, r[i]));
+        return gap;
     };
-    for (int i = 0; i < check_points; ++i) lower(c.pressure_margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
-    if (s.c0 > s.start)
-        for (int i = 0; i < check_points; ++i) {
-            const double r = grid_point(s.start, s.c0, i);
-            lower(c.stick_margin, (f_ * normal_.pressure(r) - std::fabs(traction(s, r))) / f_);
-        }
-    // The slip zones: (c0, 1], and [-1, start) when the stick zone starts inside (7(g)).
-    if (s.c0 < 1.0)
-        for (int i = 0; i < check_points; ++i)
-            lower(c.slip_margin, slip_velocity_magnitude(s, grid_point(s.c0, 1.0, i)) / f_);
-    if (s.start > -1.0)
-        for (int i = 0; i < check_points; ++i)
-            lower(c.slip_margin, slip_velocity_magnitude(s, grid_point(-1.0, s.start, i)) / f_);
-    c.pressure_holds = c.pressure_margin >= 0.0;
-    // (3.3) to the rounding of the collocation solution, as tangential_solver::check: the terms of
-    // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q.
-    c.stick_rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
-    c.stick_holds = c.stick_margin >= -c.stick_rounding;
-    c.slip_rounding = c.stick_rounding;  // (3.4)'s floor, as tangential_solver::check's
-    c.slip_holds = c.slip_margin > -c.slip_rounding;
-    return c;
+    terms.slip_velocity = [&](const std::vector<double>& r) {
+        std::vector<double> v(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) v[i] = s.sign * slip_velocity_magnitude(s, r[i]);
+        return v;
+    };
+    return check_zones(zones_of(s), terms);
 }
 
 }  // namespace roughroll

@@ -15,19 +15,13 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
+#include "roughroll/problems/zone_checks.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
 namespace {
-constexpr int check_points = 200;         // interior grid points per zone for (3.3), (3.4)
 constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (see solve)
-
-// Interior Chebyshev points of (lo, hi), clustered towards the ends where the
-// tractions have their square-root behaviour; the ends themselves are excluded.
-double grid_point(double lo, double hi, int i) {
-    const double x = std::cos(M_PI * (i + 0.5) / check_points);
-    return 0.5 * (lo + hi) + 0.5 * (hi - lo) * x;
-}
 }  // namespace
 
 namespace {
@@ -345,72 +339,53 @@ std::vector<double> tangential_solver::slip_velocity(const tangential_solution& 
     return out;
 }
 
-traction_checks tangential_solver::check(const tangential_solution& s) {
-    traction_checks c{};
-    c.pressure_margin = std::numeric_limits<double>::infinity();
-    c.stick_margin = std::numeric_limits<double>::infinity();
-    c.slip_margin = std::numeric_limits<double>::infinity();
-    // A NaN margin must read as a failed check: min() would drop it.
-    auto lower = [](double& margin, double v) {
-        if (!(v >= margin)) margin = v;
-    };
-    // p >= 0 on the fixed grid of (-1, 1) does not depend on c0: once per solver.
-    if (!pressure_margin_) {
-        double margin = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < check_points; ++i) lower(margin, normal_.pressure(grid_point(-1.0, 1.0, i)));
-        pressure_margin_ = margin;
-    }
-    c.pressure_margin = *pressure_margin_;
-    if (s.c0 > s.start) {
-        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
-        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
-        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
-        std::array<double, check_points> r{}, t{}, phi{}, psi{};
-        const double rho = s.rho();
-        for (int i = 0; i < check_points; ++i) {
-            r[i] = grid_point(s.start, s.c0, i);
-            t[i] = (r[i] - s.start) / rho - 1.0;
-        }
-        u_series(normal_.b, r.data(), phi.data(), check_points);
-        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), check_points);
-        for (int i = 0; i < check_points; ++i) {
-            // p of (4.1), with the explicit kinks p_q^0 at full coupling (docs/formulation.md 8(l) step 0).
-            const double p = std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]);
-            const double fp = f_ * (normal_.kinks ? p + (*normal_.kinks)(r[i]) : p);
-            const bool inside = !(r[i] <= s.start || r[i] >= s.c0 || s.psi_b.empty());
-            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
-            // |p1| = |f p + q0| on the paper's zone [-1, c0], (3.15); traction() (sign (f p + q0))
-            // on a stick zone that starts inside the contact (docs/formulation.md section 7).
-            const double p1 = s.start > -1.0 ? s.sign * (fp + q) : fp + q;
-            lower(c.stick_margin, (fp - std::fabs(p1)) / f_);
-        }
-    }
-    // The slip zones: (c0, 1], and [-1, start) when the stick zone does not reach r = -1.
-    std::vector<double> grid;
-    if (s.c0 < 1.0)
-        for (int i = 0; i < check_points; ++i) grid.push_back(grid_point(s.c0, 1.0, i));  // descending
-    if (s.start > -1.0)
-        for (int i = 0; i < check_points; ++i) grid.push_back(grid_point(-1.0, s.start, i));
-    for (double v : slip_velocity_magnitude(s, grid)) lower(c.slip_margin, v / f_);
-    c.pressure_holds = c.pressure_margin >= 0.0;
+double tangential_solver::rounding(double xi) const {
     // (3.3) to rounding (docs/formulation.md 7(d)): q solves (4.4), whose right-hand side
     // xi + f G is made of terms of size |xi| + f K (K = max(1, P_H/P2, sum |T|), the terms of G of
     // (3.25)) that q cancels to its own size (stick_system_floor). Near gross sliding q is that
     // small itself and the margin is rounding (measured -3.0e-11 at Q/f = 1 - 1e-12, n = 256,
     // T = 100, A = 1: floor 6.5e-11), where a wrong structure fails by far more (-0.09 for the
-    // paper's zone there, -1.1e-3 in the one-parameter limit of section 6).
-    c.stick_rounding =
-        stick_system_floor(
-            n_, std::fabs(s.xi) + f_ * std::max({1.0, std::fabs(normal_.lambda), k1_.strength(), dk_.strength()})) /
-        f_;
-    c.stick_holds = c.stick_margin >= -c.stick_rounding;
-    // (3.4) likewise: the slip velocity (3.6) is what is left of the same terms, xi + f G minus the
-    // kernels' action on p1, off the stick zone; near gross sliding it is that small too and its
-    // margin is rounding (measured -2e-12 .. -5e-11 on the general search's right zones), so it
-    // carries the same floor.
-    c.slip_rounding = c.stick_rounding;
-    c.slip_holds = c.slip_margin > -c.slip_rounding;
-    return c;
+    // paper's zone there, -1.1e-3 in the one-parameter limit of section 6). (3.4) likewise: the slip
+    // velocity (3.6) is what is left of the same terms off the stick zone (measured -2e-12 .. -5e-11
+    // on the general search's right zones), so it carries the same floor.
+    return stick_system_floor(
+               n_, std::fabs(xi) + f_ * std::max({1.0, std::fabs(normal_.lambda), k1_.strength(), dk_.strength()})) /
+           f_;
+}
+
+double tangential_solver::pressure_margin() {
+    if (!pressure_margin_) pressure_margin_ = least_pressure(normal_);  // p does not depend on the zones
+    return *pressure_margin_;
+}
+
+traction_checks tangential_solver::check(const tangential_solution& s) {
+    zone_check_terms terms{f_, pressure_margin(), rounding(s.xi), true, nullptr, nullptr};
+    terms.stick_gap = [&](const std::vector<double>& r) {
+        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
+        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
+        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
+        const std::size_t count = r.size();
+        std::vector<double> t(count), phi(count), psi(count, 0.0), gap(count);
+        const double rho = s.rho();
+        for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start) / rho - 1.0;
+        u_series(normal_.b, r.data(), phi.data(), count);
+        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
+        for (std::size_t i = 0; i < count; ++i) {
+            // p of (4.1), with the explicit kinks p_q^0 at full coupling (docs/formulation.md 8(l) step 0).
+            const double p = std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]);
+            const double fp = f_ * (normal_.kinks ? p + (*normal_.kinks)(r[i]) : p);
+            const bool inside = !(r[i] <= s.start || r[i] >= s.c0 || s.psi_b.empty());
+            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
+            gap[i] = fp - std::fabs(fp + q);  // |p1| = |sign (f p + q0)|, (3.15)
+        }
+        return gap;
+    };
+    terms.slip_velocity = [&](const std::vector<double>& r) {
+        std::vector<double> v = slip_velocity_magnitude(s, r);
+        for (double& x : v) x *= s.sign;
+        return v;
+    };
+    return check_zones(zones_of(s), terms);
 }
 
 }  // namespace roughroll

@@ -45,6 +45,7 @@
 #include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -175,6 +176,9 @@ private:
     std::optional<tangential_solution> newton(const structure& z, double magnitude, double start, double c0);
     std::optional<double> stick_end(const structure& z, double start, double magnitude);  // Q'(start, c0) = |Q|
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
+    // The checks of blended zones (zone_checks.hpp) from p, p1 and v at a point.
+    traction_checks checks(const std::vector<zone>& zones, const std::function<double(double)>& p,
+                           const std::function<double(double)>& p1, const std::function<double(double)>& v);
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);

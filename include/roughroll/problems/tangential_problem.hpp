@@ -139,8 +139,10 @@ public:
 
     const normal_solution& normal() const { return normal_; }
     double friction() const { return f_; }
-    // p >= 0, (3.3) on the stick zone [start, c0], (3.4) on the slip zones, on interior grids.
+    // p >= 0, (3.3) on the stick zone [start, c0], (3.4) on the slip zones (zone_checks.hpp).
     traction_checks check(const tangential_solution& s);
+    double pressure_margin();          // min p on the check grid, once per solver
+    double rounding(double xi) const;  // the margins' rounding floor at the creep xi (7(d))
 
 private:
     tangential_solution solve_system(double c0, bool near = false);  // |Q| problem at c0 in (-1, 1]

@@ -24,5 +24,6 @@ struct zone {
 // reversed for a blended stick zone (s.opposite, 8(g)); five zones from s.five (8(j)): slip -d,
 // stick, slip d, stick, slip -d with d = sgn beta_D.
 std::vector<zone> zones_of(const tangential_solution& s);
+std::vector<zone> zones_of(const five_zone_solution& v);  // the five zones alone
 
 }  // namespace roughroll
