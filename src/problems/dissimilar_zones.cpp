@@ -14,12 +14,12 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
-#include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_layout.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
@@ -339,28 +339,14 @@ std::optional<double> dissimilar_zones::stick_end(const structure& z, double sta
 
 std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
                                                             double c0) {
-    // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint m and half-length rho, as
-    // zone_solver's (docs/formulation.md 7(e)), on either structure (damped_newton); the Jacobian by
-    // backward differences (1e-7 rho), steps halved to keep -1 < s < c0 <= 1. Empty: no convergence.
-    std::optional<tangential_solution> last;  // the solve at the last x, which is the root's
-    newton_problem problem;
-    problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
-        last = z.solve(x[0] - x[1], x[0] + x[1]);
+    // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint and half-length (zone_newton), on
+    // either structure. Empty: no convergence.
+    std::optional<tangential_solution> last;  // the solve at the last zone, which is the root's
+    const auto residual = [&](const std::vector<stick_span>& x) -> std::optional<std::vector<double>> {
+        last = z.solve(x[0].start, x[0].end);
         return std::vector<double>{(last->Q - magnitude) / f_, zone_solver::entry_coefficient(*last)};
     };
-    problem.inside = [](const std::vector<double>& x) {
-        return x[1] > 0.0 && x[0] - x[1] > -1.0 && x[0] + x[1] <= 1.0;
-    };
-    problem.difference_step = [](const std::vector<double>& x, std::size_t) { return -1e-7 * x[1]; };
-    problem.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
-        return std::fabs(dx[0]) + std::fabs(dx[1]);
-    };
-    const auto root =
-        damped_newton(problem, {0.5 * (start + c0), 0.5 * (c0 - start)}, {newton_iterations, newton_tolerance, 1e-6});
-    if (!root) return std::nullopt;
-    tangential_solution s = *last;
-    s.iterations = root->iterations;
-    return s;
+    return at_root(zone_newton(residual, {{start, c0, 0.0}}, {false, newton_iterations, newton_tolerance}), last);
 }
 
 tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude,

@@ -12,9 +12,9 @@
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_layout.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
@@ -97,31 +97,20 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     std::optional<five_zone_solution> last;
-    newton_problem problem;
-    problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+    const auto residual = [&](const std::vector<stick_span>& x) -> std::optional<std::vector<double>> {
         try {
-            last = five_zone_system(x[0] - x[1], x[0] + x[1], x[2] - x[3], x[2] + x[3], beta);
+            last = five_zone_system(x[0].start, x[0].end, x[1].start, x[1].end, beta);
         } catch (const numerical_error&) {
             return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
         }
         return std::vector<double>{(last->Q - Q) / f_, zone_solver::entry_coefficient(last->zone1),
                                    zone_solver::entry_coefficient(last->zone2), (last->zone1.xi - last->zone2.xi) / f_};
     };
-    // x = (m1, rho1, m2, rho2): -1 < s1 < c1 < s2 < c2 < 1.
-    problem.inside = [](const std::vector<double>& x) {
-        return x[1] > 0.0 && x[3] > 0.0 && x[0] - x[1] > -1.0 && x[0] + x[1] < x[2] - x[3] && x[2] + x[3] < 1.0;
-    };
-    problem.difference_step = [](const std::vector<double>& x, std::size_t j) { return -1e-7 * x[j < 2 ? 1 : 3]; };
-    problem.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
-        return std::fabs(dx[0]) + std::fabs(dx[1]) + std::fabs(dx[2]) + std::fabs(dx[3]);
-    };
-    const std::vector<double> x0{0.5 * (ends[0] + ends[1]), 0.5 * (ends[1] - ends[0]), 0.5 * (ends[2] + ends[3]),
-                                 0.5 * (ends[3] - ends[2])};
-    const auto root = damped_newton(problem, x0, {newton_iterations, zone_end_resolution, 1e-6});
-    if (!root) return std::nullopt;
-    five_zone_solution s = *last;
-    s.iterations = root->iterations;
-    s.checks = check(s);
+    // In (m1, rho1, m2, rho2) (zone_newton): -1 < s1 < c1 < s2 < c2 <= 1.
+    auto s = at_root(zone_newton(residual, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}},
+                                 {false, newton_iterations, zone_end_resolution}),
+                     last);
+    if (s) s->checks = check(*s);
     return s;
 }
 

@@ -10,38 +10,72 @@
 
 namespace roughroll {
 
+namespace {
+// The zones of x = (m_1, l_1, ..., m_k, l_k).
+std::vector<stick_span> spans_of(const std::vector<double>& x, bool log_length) {
+    std::vector<stick_span> z(x.size() / 2);
+    for (std::size_t i = 0; i < z.size(); ++i) {
+        const double rho = log_length ? std::exp(x[2 * i + 1]) : x[2 * i + 1];
+        z[i] = {x[2 * i] - rho, x[2 * i] + rho, rho};
+    }
+    return z;
+}
+
+// -1 < s_1, each zone longer than a point, ordered without overlap, c_k <= 1.
+bool inside(const std::vector<double>& x, bool log_length) {
+    const std::vector<stick_span> z = spans_of(x, log_length);
+    if (!(z.front().start > -1.0 && z.back().end <= 1.0)) return false;
+    for (std::size_t i = 0; i < z.size(); ++i)
+        if (!(z[i].rho > 0.0) || (i > 0 && !(z[i - 1].end < z[i].start))) return false;
+    return true;
+}
+}  // namespace
+
+std::optional<int> zone_newton(
+    const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
+    const std::vector<stick_span>& from, const zone_newton_options& options) {
+    const bool log_length = options.log_length;
+    newton_problem problem;
+    problem.residual = [&](const std::vector<double>& x) { return residual(spans_of(x, log_length)); };
+    problem.inside = [log_length](const std::vector<double>& x) { return inside(x, log_length); };
+    problem.difference_step = [log_length](const std::vector<double>& x, std::size_t j) {
+        if (!log_length) return -1e-7 * x[j | 1];
+        if (j % 2 == 1) return -1e-6;
+        const double h = 1e-6 * std::exp(x[j + 1]);
+        std::vector<double> y = x;
+        y[j] -= h;
+        return inside(y, true) ? -h : h;
+    };
+    problem.step_size = [log_length](const std::vector<double>& x, const std::vector<double>& dx) {
+        double size = 0.0;
+        for (std::size_t j = 0; j < x.size(); ++j)
+            size += (log_length && j % 2 == 1 ? std::exp(x[j]) : 1.0) * std::fabs(dx[j]);
+        return size;
+    };
+    std::vector<double> x0;
+    for (const stick_span& z : from) {
+        const double half = 0.5 * (z.end - z.start);
+        x0.push_back(0.5 * (z.start + z.end));
+        x0.push_back(log_length ? std::log(half) : half);
+    }
+    const auto root = damped_newton(problem, x0, {options.max_iterations, options.tolerance, 1e-6});
+    if (!root) return std::nullopt;
+    return root->iterations;
+}
+
 std::optional<tangential_solution> zone_ends_newton(
     const std::function<tangential_solution(double, double)>& solve_on_zone,
     const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
     int max_iterations, double tolerance) {
     if (!(gap > 0.0 && c0 > start)) return std::nullopt;
-    std::optional<tangential_solution> last;  // the solve at the last x, which is the root's
-    newton_problem problem;
-    problem.residual = [&](const std::vector<double>& x) -> std::optional<std::vector<double>> {
-        const double rho = std::exp(x[1]);
-        last = solve_on_zone(x[0] - rho, x[0] + rho);
-        const double deficit = -rho * M_PI_2 * last->psi_b[0];
+    std::optional<tangential_solution> last;  // the solve at the last zone, which is the root's
+    const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
+        last = solve_on_zone(z[0].start, z[0].end);
+        const double deficit = -z[0].rho * M_PI_2 * last->psi_b[0];
         if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
         return std::vector<double>{std::log(deficit / gap), entry(*last)};
     };
-    problem.inside = [](const std::vector<double>& x) {
-        const double rho = std::exp(x[1]);
-        return x[0] - rho > -1.0 && x[0] + rho <= 1.0;
-    };
-    problem.difference_step = [&problem](const std::vector<double>& x, std::size_t j) {
-        if (j == 1) return -1e-6;
-        const double h = 1e-6 * std::exp(x[1]);
-        return problem.inside({x[0] - h, x[1]}) ? -h : h;
-    };
-    problem.step_size = [](const std::vector<double>& x, const std::vector<double>& dx) {
-        return std::fabs(dx[0]) + std::exp(x[1]) * std::fabs(dx[1]);
-    };
-    const auto root =
-        damped_newton(problem, {0.5 * (start + c0), std::log(0.5 * (c0 - start))}, {max_iterations, tolerance, 1e-6});
-    if (!root) return std::nullopt;
-    tangential_solution s = *last;
-    s.iterations = root->iterations;
-    return s;
+    return at_root(zone_newton(residual, {{start, c0, 0.0}}, {true, max_iterations, tolerance}), last);
 }
 
 }  // namespace roughroll

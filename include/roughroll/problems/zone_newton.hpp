@@ -1,22 +1,58 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The ends of one stick zone by Newton (docs/formulation.md 7(e), step 2; 7(g) for the
-// one-parameter limit): in the zone's midpoint m and u = log rho, rho the half-length, on
-//   F_0 = log(-rho (pi/2) psi_0 / (f - |Q|))   (the load's gap f - Q(s, c) = -rho int q, relative),
-//   F_1 = the entry condition at s (the caller's: psi(-1)/|psi_0|, or q'(s) in the one-parameter limit),
-// both relative, so that they keep their digits as the zone collapses at gross sliding. The Jacobian
-// by forward differences (1e-6 rho in m, on the side inside [-1, 1]; 1e-6 in u), steps halved to
-// keep -1 < s < c <= 1 (damped_newton). Shared by zone_solver and one_parameter_zones.
+// Newton's method in the ends of k stick zones [s_i, c_i] (docs/formulation.md 7(e), step 2; 7(g) for
+// the one-parameter limit; 8(g) and 8(j) item 3 for dissimilar rollers): the unknowns are each zone's
+// midpoint m_i and, as its length,
+//   u_i = log rho_i  (`log_length`: the zones of one slip direction, whose residuals are relative and
+//                    keep their digits as the zone collapses at gross sliding, 7(e)), or
+//   rho_i itself     (the blended zones of 8(g), 8(j)),
+// rho_i = (c_i - s_i)/2; the residuals F(zones) are the caller's (the load's gap, one entry condition
+// per stick zone, xi continuity between them). The Jacobian by differences: with log_length 1e-6 rho
+// in m (backward where that stays inside [-1, 1]) and -1e-6 in u; else -1e-7 rho in both. Steps halved
+// (damped_newton) to keep -1 < s_1 < c_1 < s_2 < ... < c_k <= 1; it stops after a full step whose size
+// (sum |dm| + rho |du|, or sum |dm| + |d rho|, in r) is below `tolerance`. Empty when it does not
+// converge. Shared by every zone search: zone_solver, one_parameter_zones, dissimilar_zones.
 #pragma once
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
 
-// `solve_on_zone(s, c)`: the system on the stick zone [s, c]; `entry`: F_1 of its solution; `gap`:
-// f - |Q| > 0. Stops after a full step below `tolerance` in r. Empty when it does not converge.
+// One stick zone of a Newton iterate: its ends and half-length (exp u with log_length, not (c - s)/2).
+struct stick_span {
+    double start, end, rho;
+};
+
+struct zone_newton_options {
+    bool log_length;
+    int max_iterations;
+    double tolerance;
+};
+
+// The Newton iterations from the zones `from` to a root of `residual` (empty where the zones leave
+// the family the residuals describe); empty when it does not converge. The last call of `residual`
+// is at the root.
+std::optional<int> zone_newton(
+    const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
+    const std::vector<stick_span>& from, const zone_newton_options& options);
+
+// The solution at Newton's root, the last one solved, with Newton's iterations; empty without a root.
+// `last` by reference: it is read after the iteration that fills it, whatever the order in which a
+// call's arguments are evaluated.
+template <class Solution>
+std::optional<Solution> at_root(std::optional<int> iterations, const std::optional<Solution>& last) {
+    if (!iterations || !last) return std::nullopt;
+    std::optional<Solution> s = last;
+    s->iterations = *iterations;
+    return s;
+}
+
+// One zone of one slip direction (7(e), 7(g)): F_0 = log(-rho (pi/2) psi_0 / gap) (the load's gap
+// f - Q(s, c) = -rho int q relative to `gap` = f - |Q| > 0), F_1 = `entry` of the solution (psi(-1)/|psi_0|,
+// or q'(s) in the one-parameter limit), in (m, log rho). `solve_on_zone(s, c)`: the system on [s, c].
 std::optional<tangential_solution> zone_ends_newton(
     const std::function<tangential_solution(double, double)>& solve_on_zone,
     const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
