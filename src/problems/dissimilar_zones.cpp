@@ -18,6 +18,7 @@
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/zone_checks.hpp"
+#include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
@@ -27,7 +28,6 @@ namespace {
 constexpr int start_scan = 32;           // trial starts of the stick zone
 constexpr int least_samples = 2001;      // samples of b p + f G for its least value (gross sliding)
 constexpr int shape_samples = 2001;      // samples of p for "even and decreasing" (complete slip)
-constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
 // W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
@@ -327,16 +327,6 @@ dissimilar_zones::structure dissimilar_zones::opposite_directions(double b) {
             [this](double start) { return f_ * (1.0 - 2.0 * load_between(solver_.normal(), -1.0, start)); }};
 }
 
-std::optional<double> dissimilar_zones::stick_end(const structure& z, double start, double magnitude) {
-    // Q'(start, c0) is the empty zone's load at c0 = start and falls as the zone grows; a start from
-    // which no end carries |Q| has no zone (empty).
-    const auto excess = [&](double c0) {
-        return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude;
-    };
-    if (!(excess(start) > 0.0 && excess(1.0) < 0.0)) return std::nullopt;
-    return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, "Brent search for the stick zone's end").x;
-}
-
 std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
                                                             double c0) {
     // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint and half-length (zone_newton), on
@@ -358,46 +348,31 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
             if (s->checks.hold()) return *s;
         }
     }
-    // Else scan the starts, each with the end that carries |Q|, for sign changes of the entry
-    // condition psi(-1); each bracket in turn (from the leading edge) by Newton from the
-    // interpolated zone, else Brent in the start; the first whose checks hold is the answer.
-    struct trial {
-        double start, end, entry;
-    };
-    std::vector<trial> trials;
-    // A trial start with the end that carries |Q| and its entry condition; none where no end does.
-    const auto add_trial = [&](std::vector<trial>& to, double start) {
-        if (const auto end = stick_end(z, start, magnitude))
-            to.push_back({start, *end, zone_solver::entry_coefficient(z.solve(start, *end))});
-    };
-    for (int k = 1; k < start_scan; ++k) {
-        // Clustered towards the edges (Chebyshev), where thin leading slip zones put the start.
-        add_trial(trials, -std::cos(M_PI * k / start_scan));
-    }
+    // Else scan the starts, clustered towards the edges (Chebyshev), where thin leading slip zones put
+    // the start, for sign changes of the entry condition psi(-1) (zone_family.hpp); each bracket in turn
+    // (from the leading edge); the first whose checks hold is the answer, else the first found.
+    const zone_family zones{[&](double start) {
+                                // Q'(start, c0) is the empty zone's load at c0 = start and falls as the zone grows.
+                                return stick_zone_end(
+                                    [&](double c0) {
+                                        return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude;
+                                    },
+                                    start);
+                            },
+                            z.solve, zone_solver::entry_coefficient};
+    std::vector<double> starts;
+    for (int k = 1; k < start_scan; ++k) starts.push_back(-std::cos(M_PI * k / start_scan));
+    const std::vector<zone_trial> trials = scan_starts(zones, {}, starts, false);
     std::optional<tangential_solution> first;
-    // The brackets of consecutive trials in turn; the answer whose checks hold, else the first found.
-    const auto brackets = [&](const std::vector<trial>& trials) -> std::optional<tangential_solution> {
+    const auto brackets = [&](const std::vector<zone_trial>& trials) -> std::optional<tangential_solution> {
         for (std::size_t k = 1; k < trials.size(); ++k) {
-            const trial& lo = trials[k - 1];
-            const trial& hi = trials[k];
-            if (!((lo.entry > 0.0) != (hi.entry > 0.0))) continue;
-            const double w = lo.entry / (lo.entry - hi.entry);
-            std::optional<tangential_solution> s =
-                newton(z, magnitude, lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end));
-            if (!s) {
-                const auto entry = [&](double start) {
-                    const auto end = stick_end(z, start, magnitude);
-                    if (!end) throw numerical_error("dissimilar zones: no stick zone carries |Q| inside a bracket");
-                    return zone_solver::entry_coefficient(z.solve(start, *end));
-                };
-                try {
-                    const root r = brent_root(entry, lo.start, hi.start, end_tolerance, 0.0, 200,
-                                              "Brent search for the stick zone's start");
-                    s = z.solve(r.x, *stick_end(z, r.x, magnitude));
-                    s->iterations = r.iterations;
-                } catch (const numerical_error&) {
-                    continue;
-                }
+            if (!brackets_entry(trials[k - 1], trials[k])) continue;
+            std::optional<tangential_solution> s;
+            try {
+                s = zone_in_bracket(zones, trials[k - 1], trials[k],
+                                    [&](double start, double end) { return newton(z, magnitude, start, end); });
+            } catch (const numerical_error&) {
+                continue;
             }
             s->checks = check(*s);
             if (s->checks.hold()) return s;
@@ -411,8 +386,9 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
         // = 4.8e-3 from the edge (the stick zone closes on the leading edge as 7(d)'s does, its
         // start 1 + s ~ (1 - |Q|/f)^(2/3)): starts geometrically closer to the edge, down to 1e-12,
         // before the first trial. Only where the scan found nothing, so that no other answer changes.
-        std::vector<trial> edge;
-        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) add_trial(edge, -1.0 + gap);
+        std::vector<double> near_edge;
+        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) near_edge.push_back(-1.0 + gap);
+        std::vector<zone_trial> edge = scan_starts(zones, {}, near_edge, false);
         edge.push_back(trials.front());
         if (auto s = brackets(edge)) return *s;
     }

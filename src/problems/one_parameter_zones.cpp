@@ -8,15 +8,14 @@
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
+#include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
 namespace {
 constexpr int start_scan = 16;           // trial starts of the stick zone in [-1, r*], bracketing E = 0
-constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
 constexpr int newton_iterations = 40;
 constexpr double near_sliding = 1e-4;       // below this 1 - |Q|/f Newton starts from the asymptotic zone
 constexpr double newton_tolerance = 1e-12;  // Newton's last full step in the zone ends, absolute in r
@@ -45,30 +44,6 @@ tangential_solution one_parameter_zones::gross_sliding() const {
         [&g](double r) { return g.G(r); });
 }
 
-double one_parameter_zones::stick_end(double start, double magnitude, std::optional<double> guess) {
-    // Q(start, c0) - |Q| in the gap form rho (pi/2) c_0 + (f - |Q|) (7(d)), falling from f - |Q|
-    // at c0 = start. Brent on a bracket of half-width 1e-3 around `guess` (the end for a nearby
-    // start) when it brackets, else on (start, 1].
-    const auto excess = [this, start, magnitude](double c0) {
-        if (c0 <= start) return f_ - magnitude;
-        const tangential_solution t = single_.solve_on_zone(start, c0);
-        return t.rho() * M_PI_2 * t.psi_b[0] + (f_ - magnitude);
-    };
-    const char* what = "Brent search for the stick zone's end";
-    if (guess) {
-        const double lo = std::max(start, *guess - 1e-3), hi = std::min(1.0, *guess + 1e-3);
-        if (lo < hi && excess(lo) > 0.0 && excess(hi) < 0.0)
-            return brent_root(excess, lo, hi, end_tolerance, 0.0, 200, what).x;
-    }
-    if (!(excess(1.0) < 0.0)) {
-        std::ostringstream msg;
-        msg.precision(17);
-        msg << "one-parameter zone search: no stick zone from r = " << start << " carries |Q|/f = " << magnitude / f_;
-        throw numerical_error(msg.str());
-    }
-    return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, what).x;
-}
-
 tangential_solution one_parameter_zones::general(double magnitude, std::optional<double> single_end) {
     // The paper's zone first: E <= 0 at start = -1 is the edge inequality (7(g)). Without it
     // (its system singular: near gross sliding its zone shrinks onto r = -1) the scan decides.
@@ -87,41 +62,30 @@ tangential_solution one_parameter_zones::general(double magnitude, std::optional
     if (f_ - magnitude <= near_sliding * f_)
         if (const auto zone = asymptotic_zone(magnitude, point))
             if (auto s = newton(magnitude, zone->first, zone->second)) return *s;
-    std::optional<double> end = single_end;  // the end of the last zone solved, near the next one's
-    const auto entry = [this, magnitude, &end](double start) {
-        end = stick_end(start, magnitude, end);
-        return entry_velocity(single_.solve_on_zone(start, *end));
-    };
-    double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
-    double lo_entry = at_edge_entry, hi_entry = 0.0, lo_end = single_end.value_or(-1.0), hi_end = 0.0;
-    for (int k = 1; std::isnan(hi) && k <= start_scan; ++k) {
-        const double trial = -1.0 + (point + 1.0) * k / start_scan;
-        double e;
-        try {
-            e = entry(trial);
-        } catch (const numerical_error&) {
-            break;
-        }
-        if (e <= 0.0)
-            hi = trial, hi_entry = e, hi_end = *end;
-        else
-            lo = trial, lo_entry = e, lo_end = *end;
-    }
-    if (std::isnan(hi))
-        // No zone of this structure (not a numerical fault): a refusal of the point (resolution_error),
-        // which zones = "auto" answers with the paper's zone, its checks failed, where that zone exists
-        // (contact::zones_for); a curve refuses the row (docs/robustness.md).
-        throw resolution_error(
-            "one-parameter zone search: no stick zone between two slip zones carries this load (the entry "
-            "condition v(s-) = 0 has no root on the scanned starts): its zones have another structure; "
-            "zones = \"auto\" reports the paper's single zone with its checks where it exists");
-    // Newton from the interpolated zone; Brent on the bracket when it fails.
-    const double w = std::isnan(lo_entry) ? 1.0 : lo_entry / (lo_entry - hi_entry);
-    if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;
-    const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
-    tangential_solution s = single_.solve_on_zone(r.x, stick_end(r.x, magnitude, end));
-    s.iterations = r.iterations;
-    return s;
+    // Q(start, c0) - |Q| in the gap form rho (pi/2) c_0 + (f - |Q|) (7(d)), falling from f - |Q| at
+    // c0 = start; each end found first near the end of the zone solved last (the next start's).
+    std::optional<double> end = single_end;
+    const zone_family zones{[&](double start) {
+                                const auto c = stick_zone_end(
+                                    [&](double c0) {
+                                        if (c0 <= start) return f_ - magnitude;
+                                        const tangential_solution t = single_.solve_on_zone(start, c0);
+                                        return t.rho() * M_PI_2 * t.psi_b[0] + (f_ - magnitude);
+                                    },
+                                    start, end);
+                                if (c) end = c;
+                                return c;
+                            },
+                            [this](double start, double c0) { return single_.solve_on_zone(start, c0); },
+                            [this](const tangential_solution& t) { return entry_velocity(t); }};
+    std::vector<double> starts;
+    for (int k = 1; k <= start_scan; ++k) starts.push_back(-1.0 + (point + 1.0) * k / start_scan);
+    return first_bracket_zone(
+        zones, scan_starts(zones, {{-1.0, single_end.value_or(-1.0), at_edge_entry}}, starts, true),
+        [&](double start, double c0) { return newton(magnitude, start, c0); },
+        "one-parameter zone search: no stick zone between two slip zones carries this load (the entry "
+        "condition v(s-) = 0 has no root on the scanned starts): its zones have another structure; "
+        "zones = \"auto\" reports the paper's single zone with its checks where it exists");
 }
 
 std::optional<std::pair<double, double>> one_parameter_zones::asymptotic_zone(double magnitude, double point) const {
@@ -162,13 +126,10 @@ tangential_solution one_parameter_zones::solve(double Q, bool force_general) {
     }
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
     check_load_resolvable(magnitude, f_);
-    tangential_solution s = magnitude == f_
-                                ? gross_sliding()
-                                : general(magnitude, single ? std::optional<double>(single->c0) : std::nullopt);
-    s.general = s.start > -1.0;
-    apply_load_sign(s, Q, "one-parameter zone search");
-    s.checks = single_.check(s);
-    return s;
+    return searched_point(
+        magnitude == f_ ? gross_sliding()
+                        : general(magnitude, single ? std::optional<double>(single->c0) : std::nullopt),
+        Q, "one-parameter zone search", [this](const tangential_solution& t) { return single_.check(t); });
 }
 
 }  // namespace roughroll

@@ -8,15 +8,14 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
-#include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
+#include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
 namespace {
-constexpr int start_scan = 32;           // trial starts of the stick zone, bracketing the entry condition
-constexpr double end_tolerance = 1e-15;  // zone ends, absolute in r
+constexpr int start_scan = 32;  // trial starts of the stick zone, bracketing the entry condition
 constexpr int newton_iterations = 40;
 // Below this 1 - |Q|/f the search starts from gross sliding (continuation) before scanning.
 constexpr double near_sliding = 1e-4;
@@ -43,19 +42,17 @@ double zone_solver::entry_coefficient(const tangential_solution& s) {
     return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
 }
 
-double zone_solver::stick_end(double start, double magnitude) {
-    // Q(start, c0) falls from f (no stick zone, c0 = start) as the zone grows (7(c)).
-    // In the gap form rho int q + (f - |Q|): Q - |Q| without the O(f) sum that cancels.
-    const auto excess = [this, start, magnitude](double c0) {
-        return c0 <= start ? f_ - magnitude : load_excess(single_.solve_on_zone(start, c0), magnitude);
-    };
-    if (!(excess(1.0) < 0.0)) {
-        std::ostringstream msg;
-        msg.precision(17);
-        msg << "zone solver: no stick zone from r = " << start << " carries |Q|/f = " << magnitude / f_;
-        throw numerical_error(msg.str());
-    }
-    return brent_root(excess, start, 1.0, end_tolerance, 0.0, 200, "Brent search for the stick zone's end").x;
+zone_family zone_solver::family(double magnitude) {
+    // Q(start, c0) falls from f (no stick zone, c0 = start) as the zone grows (7(c)), in the gap form
+    // rho int q + (f - |Q|): Q - |Q| without the O(f) sum that cancels.
+    return {[this, magnitude](double start) {
+                return stick_zone_end(
+                    [this, start, magnitude](double c0) {
+                        return c0 <= start ? f_ - magnitude : load_excess(single_.solve_on_zone(start, c0), magnitude);
+                    },
+                    start);
+            },
+            [this](double start, double end) { return single_.solve_on_zone(start, end); }, entry_coefficient};
 }
 
 tangential_solution zone_solver::gross_sliding() {
@@ -141,8 +138,15 @@ std::optional<tangential_solution> zone_solver::continuation(double magnitude) {
 tangential_solution zone_solver::general(double magnitude, std::optional<zone_guess> guess,
                                          std::optional<double> single_end) {
     // The paper's zone first: if psi(-1) <= 0 at start = -1 it is the answer (7(b)).
-    const double edge_end = single_end ? *single_end : stick_end(-1.0, magnitude);
-    tangential_solution at_edge = single_.solve_on_zone(-1.0, edge_end);
+    const zone_family zones = family(magnitude);
+    const std::optional<double> edge_end = single_end ? single_end : zones.end(-1.0);
+    if (!edge_end) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "zone solver: no stick zone from the leading edge carries |Q|/f = " << magnitude / f_;
+        throw numerical_error(msg.str());
+    }
+    const tangential_solution at_edge = single_.solve_on_zone(-1.0, *edge_end);
     const double at_edge_entry = entry_coefficient(at_edge);
     if (at_edge_entry <= 0.0) return at_edge;
     // Near gross sliding: continuation from |Q| = f, where the zone collapses at the point r*
@@ -153,41 +157,15 @@ tangential_solution zone_solver::general(double magnitude, std::optional<zone_gu
     if (guess && guess->start > -1.0)
         if (auto s = newton(magnitude, guess->start, guess->c0)) return *s;
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
-    // (7(e)): scan the starts towards the trailing edge until psi(-1) changes sign (a start from
-    // which no zone carries |Q| ends the scan), Newton from the interpolated zone, Brent if that fails.
-    const auto entry = [this, magnitude](double start) {
-        return entry_coefficient(single_.solve_on_zone(start, stick_end(start, magnitude)));
-    };
-    double lo = -1.0, hi = std::numeric_limits<double>::quiet_NaN();
-    double lo_entry = at_edge_entry, hi_entry = 0.0, lo_end = edge_end, hi_end = 0.0;
-    for (int k = 1; std::isnan(hi) && k < start_scan; ++k) {
-        const double trial = -1.0 + 2.0 * k / start_scan;
-        double end, e;
-        try {
-            end = stick_end(trial, magnitude);
-            e = entry_coefficient(single_.solve_on_zone(trial, end));
-        } catch (const numerical_error&) {
-            break;
-        }
-        if (e <= 0.0)
-            hi = trial, hi_entry = e, hi_end = end;
-        else
-            lo = trial, lo_entry = e, lo_end = end;
-    }
-    if (std::isnan(hi))
-        // No zone of this structure (not a numerical fault): a refusal of the point (resolution_error),
-        // which zones = "auto" answers with the paper's zone, its checks failed, where that zone exists
-        // (contact::zones_for); a curve refuses the row (docs/robustness.md).
-        throw resolution_error(
-            "general zone search: no stick zone between two slip zones carries this load (the entry condition "
-            "psi(-1) = 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" "
-            "reports the paper's single zone with its checks");
-    const double w = lo_entry / (lo_entry - hi_entry);
-    if (auto s = newton(magnitude, lo + w * (hi - lo), lo_end + w * (hi_end - lo_end))) return *s;
-    const root r = brent_root(entry, lo, hi, end_tolerance, 0.0, 200, "Brent search for the stick zone's start");
-    tangential_solution s = single_.solve_on_zone(r.x, stick_end(r.x, magnitude));
-    s.iterations = r.iterations;
-    return s;
+    // (7(e), zone_family.hpp): the starts towards the trailing edge until psi(-1) changes sign.
+    std::vector<double> starts;
+    for (int k = 1; k < start_scan; ++k) starts.push_back(-1.0 + 2.0 * k / start_scan);
+    return first_bracket_zone(
+        zones, scan_starts(zones, {{-1.0, *edge_end, at_edge_entry}}, starts, true),
+        [&](double start, double end) { return newton(magnitude, start, end); },
+        "general zone search: no stick zone between two slip zones carries this load (the entry condition "
+        "psi(-1) = 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" "
+        "reports the paper's single zone with its checks");
 }
 
 tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
@@ -200,11 +178,8 @@ tangential_solution zone_solver::solve(double Q, bool force_general, std::option
     }
     check_load_resolvable(magnitude, f_);
     const auto search = [&](std::optional<zone_guess> g) {
-        tangential_solution s = magnitude == f_ ? gross_sliding() : general(magnitude, g, single_end);
-        s.general = s.start > -1.0;
-        apply_load_sign(s, Q, "zone solver");
-        s.checks = single_.check(s);
-        return s;
+        return searched_point(magnitude == f_ ? gross_sliding() : general(magnitude, g, single_end), Q, "zone solver",
+                              [this](const tangential_solution& t) { return single_.check(t); });
     };
     tangential_solution s = search(guess);
     // Newton from a guess may find another zone that solves both conditions but not the

@@ -174,7 +174,6 @@ private:
     tangential_solution blended(double start, double c0, double b);  // the system with S of 8(g)
     tangential_solution gross_sliding(double b);
     std::optional<tangential_solution> newton(const structure& z, double magnitude, double start, double c0);
-    std::optional<double> stick_end(const structure& z, double start, double magnitude);  // Q'(start, c0) = |Q|
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     // The checks of blended zones (zone_checks.hpp) from p, p1 and v at a point.
     traction_checks checks(const std::vector<zone>& zones, const std::function<double(double)>& p,

@@ -11,11 +11,9 @@
 //     (one_parameter_solver::solve_on_zone), plus the entry condition of 7(g):
 //       E = eps1 q'(s+) = v(s-) = xi + f G(s) - H[q](t = -1) = 0,
 //     the slip velocity vanishing where material enters the stick zone;
-//   - gross sliding |Q| = f: stick only at the point r* where G is least, xi = -f min G.
-// (s, c0) solve Q(s, c0) = |Q| (in the gap form rho int q + (f - |Q|), 7(d)) and E = 0 by
-// Newton's method in (m, log rho) from a scanned bracket of s, nested Brent searches as the
-// fallback. Other structures are not solved: the search throws resolution_error, and an answer
-// that fails its checks is reported as such.
+//   - gross sliding |Q| = f (gross_sliding.hpp).
+// (s, c0) solve Q(s, c0) = |Q| (in the gap form rho int q + (f - |Q|), 7(d)) and E = 0 along the
+// zones carrying |Q| (zone_family.hpp); other structures are refused (resolution_error).
 #pragma once
 
 #include <optional>
@@ -47,8 +45,6 @@ private:
     std::optional<tangential_solution> newton(double magnitude, double start, double c0);
     // The zone to leading order near gross sliding at r* = point (7(g)), as (start, c0).
     std::optional<std::pair<double, double>> asymptotic_zone(double magnitude, double point) const;
-    // c0 with Q(start, c0) = magnitude; `guess`: the end for a nearby start.
-    double stick_end(double start, double magnitude, std::optional<double> guess = std::nullopt);
 
     one_parameter_solver& single_;
     double f_;

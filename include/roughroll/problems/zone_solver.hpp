@@ -12,19 +12,18 @@
 //       L1[q](r) = xi + f G(r),  r = s + rho (t + 1),  rho = (c0 - s)/2,  rho int q = Q - f
 //     (tangential_solver::solve_on_zone), plus the entry condition of 7(b), psi(t = -1) = 0:
 //     the traction reaches the bound f p smoothly where material enters the stick zone;
-//   - gross sliding |Q| = f: slip everywhere, stick only at the point r* where G is least,
-//     xi = -f min G (7(d)).
-// (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 by Newton's method from a guess or a
-// scanned bracket, with nested Brent searches as the fallback. Other structures (slip against
-// Q, several stick zones) are not solved: the search throws resolution_error when the entry
-// condition has no root, and an answer of the wrong structure fails the checks (3.3)-(3.4),
-// which are made on every zone; contact's zones = "auto" then keeps the single zone.
+//   - gross sliding |Q| = f (gross_sliding.hpp, 7(d)).
+// (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 along the zones carrying |Q| (zone_family.hpp).
+// Other structures (slip against Q, several stick zones) are refused (resolution_error), and an
+// answer of the wrong structure fails the checks (zone_checks.hpp); zones = "auto" then keeps the
+// single zone.
 #pragma once
 
 #include <optional>
 #include <vector>
 
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
@@ -55,7 +54,7 @@ private:
     std::optional<tangential_solution> newton(double magnitude, double start, double c0);
     std::optional<tangential_solution> continuation(double magnitude);  // from gross sliding, 7(e)
     tangential_solution gross_sliding();
-    double stick_end(double start, double magnitude);                          // c0 with Q(start, c0) = magnitude
+    zone_family family(double magnitude);  // the zones carrying |Q| = magnitude (zone_family.hpp)
     double load_excess(const tangential_solution& t, double magnitude) const;  // Q - |Q|, without f's rounding
 
     tangential_solver& single_;
