@@ -42,6 +42,11 @@ double max_row_sum(const gsl_matrix* a) {
 }
 }  // namespace
 
+void dense_system::clear() {
+    gsl_matrix_set_zero(a_.get());
+    gsl_vector_set_zero(b_.get());
+}
+
 dense_system::dense_system(std::size_t size)
     : size_(size),
       a_(make_matrix(size, size)),

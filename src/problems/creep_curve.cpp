@@ -17,11 +17,8 @@ void check_curve_points(int points) {
 // closed form at what was given (at the same c0 on a swept curve), never NaN.
 curve_point refused_row(double Q, double c0, double f, const std::string& at, const resolution_error& why) {
     const double nan = std::nan("");
-    tangential_solution s{};
-    s.Q = Q;
-    s.f = f;
-    s.c0 = c0;
-    s.xi = s.sign = s.rcond = s.load_slope = s.start = nan;
+    tangential_solution s = zone_solution(f, nan, c0, nan, Q, {}, nan);
+    s.sign = s.load_slope = nan;
     s.checks = traction_checks{nan, nan, nan, nan, nan, false, false, false};
     const carter_point smooth = std::isnan(Q) ? carter_point{c0, carter_at_stick_end(c0, f).xi} : carter(Q, f);
     return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};

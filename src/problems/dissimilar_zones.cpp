@@ -403,21 +403,13 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
 }
 
 tangential_solution five_zone_point(const five_zone_solution& v) {
-    tangential_solution s{};
-    s.Q = v.Q;
-    s.f = v.f;
-    s.xi = v.xi;
+    tangential_solution s = zone_solution(v.f, v.s1, v.c1, v.xi, v.Q, {}, std::min(v.zone1.rcond, v.zone2.rcond));
     s.sign = v.sign;
-    s.start = v.s1;
-    s.c0 = v.c1;
-    s.start2 = v.s2;
-    s.end2 = v.c2;
+    s.start2 = v.s2, s.end2 = v.c2;
     s.iterations = v.iterations;
-    s.rcond = std::min(v.zone1.rcond, v.zone2.rcond);
     s.checks = v.checks;
     s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
-    s.general = true;
-    s.opposite = true;
+    s.general = s.opposite = true;
     s.five = std::make_shared<const five_zone_solution>(v);
     return s;
 }

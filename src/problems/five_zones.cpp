@@ -117,10 +117,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
 double dissimilar_zones::traction(const five_zone_solution& s, double r) {
     double p1 = f_ * pressure(r) * S(s, r);
     for (const tangential_solution* t : {&s.zone1, &s.zone2})
-        if (r > t->start && r < t->c0 && !t->psi_b.empty()) {
-            const double u = (r - t->start) / t->rho() - 1.0;
-            p1 += s.sign * u_series(t->psi_b, u) * std::sqrt(std::max(0.0, 1.0 - u * u));
-        }
+        if (r > t->start && r < t->c0) p1 += s.sign * stick_traction(*t, r);
     return p1;
 }
 

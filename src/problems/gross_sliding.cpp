@@ -7,15 +7,7 @@ namespace roughroll {
 
 tangential_solution gross_sliding_at(double f, double point, double xi) {
     // The stick equation shrinks to the point r*, where v = xi + scale w = 0 (docs/formulation.md 7(d)).
-    tangential_solution s{};
-    s.f = f;
-    s.c0 = point;
-    s.start = point;
-    s.xi = xi;
-    s.Q = f;
-    s.sign = 1.0;
-    s.rcond = 1.0;
-    return s;
+    return zone_solution(f, point, point, xi, f);
 }
 
 tangential_solution gross_sliding(double f, double scale,

@@ -50,10 +50,9 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
             "smooth rollers only");
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
+    system_.clear();
     gsl_matrix* a = system_.matrix();
     gsl_vector* rhs = system_.rhs();
-    gsl_matrix_set_zero(a);
-    gsl_vector_set_zero(rhs);
     // Rows 0..n: collocation (4.2). Columns 0..n-1: phi_k; n: gamma_0n; n+1: lambda.
     add_cauchy_term(a, rule_);
     auto kernel_term = std::make_shared<const kernel_operator>(rule_, how_, k2.max_rate(), cache);

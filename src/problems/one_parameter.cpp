@@ -73,10 +73,9 @@ normal_solution one_parameter_normal(double eps2, int n) {
     //     - (2/pi) lambda cos theta_m sin theta_m = 0,     (pi/2) b_0 = int p = 1   (3.20).
     // Columns 0..n-1: b_j; n: gamma_0n (zero by symmetry, (4.8)); n+1: lambda.
     dense_system system(static_cast<std::size_t>(n) + 2);
+    system.clear();
     gsl_matrix* a = system.matrix();
     gsl_vector* rhs = system.rhs();
-    gsl_matrix_set_zero(a);
-    gsl_vector_set_zero(rhs);
     for (int m = 0; m <= n; ++m) {
         const double theta = (m + 0.5) * M_PI / (n + 1), sin_m = std::sin(theta);
         for (int j = 0; j < n; ++j) gsl_matrix_set(a, m, j, std::cos((j + 1) * theta) * (sin_m + eps2 * (j + 1)));
@@ -163,17 +162,10 @@ tangential_solution one_parameter_solver::solve_on_zone(double start, double c0)
     context.precision(17);
     context << "one-parameter tangential problem on the stick zone [" << start << ", " << c0 << "]";
     const gsl_vector* x = tangential_system_.solve(context.str());
-    tangential_solution s{};
-    s.f = f_;
-    s.c0 = c0;
-    s.start = start;
-    s.xi = gsl_vector_get(x, n_);
-    s.sign = 1.0;
-    s.psi_b.resize(n_);
-    for (int j = 0; j < n_; ++j) s.psi_b[j] = gsl_vector_get(x, j);
-    s.Q = f_ + rho * M_PI_2 * s.psi_b[0];  // (3.22): rho int q = Q - f, int q = (pi/2) c_0
-    s.rcond = tangential_system_.rcond();
-    return s;
+    std::vector<double> psi_b(n_);
+    for (int j = 0; j < n_; ++j) psi_b[j] = gsl_vector_get(x, j);
+    const double Q = f_ + rho * M_PI_2 * psi_b[0];  // (3.22): rho int q = Q - f, int q = (pi/2) c_0
+    return zone_solution(f_, start, c0, gsl_vector_get(x, n_), Q, std::move(psi_b), tangential_system_.rcond());
 }
 
 tangential_solution one_parameter_solver::full_stick() const {
@@ -204,35 +196,24 @@ double one_parameter_solver::load(double c0) {
 }
 
 tangential_solution one_parameter_solver::solve(double Q, std::optional<double> guess) {
-    const double target = load_magnitude(Q, f_);
-    tangential_solution s;
-    if (target == 0.0) {
-        s = full_stick();
-    } else if (target == f_) {
-        s = gross_sliding();
-    } else {
+    const auto search = [&](double target) {
         check_load_resolvable(target, f_);
-        // Q(-1) = f > |Q| and, at c0 = 1, q = -f p gives Q = 0 < |Q|: Brent on [-1, 1], or on a
-        // bracket of half-width 1e-5 around `guess` when it brackets.
+        // Q(-1) = f > |Q| and, at c0 = 1, q = -f p gives Q = 0 < |Q| (root_search.hpp).
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
                                            "one-parameter Brent search for c0");
-        s = solve_system(c0.x);
+        tangential_solution s = solve_system(c0.x);
         s.iterations = c0.iterations;
-    }
-    apply_load_sign(s, Q, "one-parameter tangential problem");
+        return s;
+    };
+    tangential_solution s = at_load(
+        Q, f_, [this] { return full_stick(); }, [this] { return gross_sliding(); }, search,
+        "one-parameter tangential problem");
     s.checks = check(s);
     return s;
 }
 
-double one_parameter_solver::q0(const tangential_solution& s, double r) const {
-    const double rho = s.rho();
-    if (r <= s.start || r >= s.c0 || s.psi_b.empty()) return 0.0;
-    const double t = (r - s.start) / rho - 1.0;
-    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
-}
-
 double one_parameter_solver::traction(const tangential_solution& s, double r) const {
-    return s.sign * (f_ * normal_.pressure(r) + q0(s, r));  // (3.15)
+    return s.sign * (f_ * normal_.pressure(r) + stick_traction(s, r));  // (3.15)
 }
 
 double one_parameter_solver::slip_velocity_magnitude(const tangential_solution& s, double r) const {

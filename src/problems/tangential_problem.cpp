@@ -117,29 +117,31 @@ tangential_solution tangential_solver::solve_zone(double start, double c0, doubl
         psi[k] = gsl_vector_get(x, k);
         load += rule.weights[k] * psi[k];
     }
-    tangential_solution s{};
-    s.f = f_;
-    s.c0 = c0;
-    s.start = start;
+    tangential_solution s =
+        zone_solution(f_, start, c0, gsl_vector_get(x, n_), f_ + rho * load, u_coefficients(rule, psi), system_.rcond());
     s.forcing = forcing;
-    s.xi = gsl_vector_get(x, n_);
-    s.Q = f_ + rho * load;  // (4.5)
+    return s;
+}
+
+tangential_solution zone_solution(double f, double start, double c0, double xi, double Q, std::vector<double> psi_b,
+                                  double rcond) {
+    tangential_solution s{};
+    s.f = f;
+    s.start = start;
+    s.c0 = c0;
+    s.xi = xi;
+    s.Q = Q;  // (4.5)
     s.sign = 1.0;
-    s.psi_b = u_coefficients(rule, psi);
-    s.rcond = system_.rcond();
+    s.psi_b = std::move(psi_b);
+    s.rcond = rcond;
     return s;
 }
 
 tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b) {
     // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
-    tangential_solution s{};
-    s.f = f;
-    s.c0 = 1.0;
-    s.sign = 1.0;
-    s.psi_b = pressure_b;
-    for (double& bj : s.psi_b) bj *= -f;
-    s.rcond = 1.0;
-    return s;
+    std::vector<double> psi_b = pressure_b;
+    for (double& bj : psi_b) bj *= -f;
+    return zone_solution(f, -1.0, 1.0, 0.0, 0.0, std::move(psi_b));
 }
 
 tangential_solution tangential_solver::full_stick() { return full_stick_solution(f_, normal_.b); }
@@ -165,14 +167,8 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked, boo
 
 tangential_solution tangential_solver::carter_solution(double Q, double c0, double xi) {
     // Smooth cylinders: q0 = -(2 f/pi) rho sqrt(1 - t^2), psi constant, no kernel, no solve.
-    tangential_solution s{};
-    s.f = f_;
-    s.c0 = c0;
-    s.xi = xi;
-    s.Q = Q;
-    s.sign = 1.0;
+    tangential_solution s = zone_solution(f_, -1.0, c0, xi, Q);
     if (s.rho() > 0.0) s.psi_b = {-M_2_PI * f_ * s.rho()};  // no stick zone at |Q| = f
-    s.rcond = 1.0;
     return s;
 }
 
@@ -204,6 +200,15 @@ void check_load_resolvable(double magnitude, double f) {
     throw resolution_error(msg.str());
 }
 
+tangential_solution at_load(double Q, double f, const std::function<tangential_solution()>& full_stick,
+                            const std::function<tangential_solution()>& gross_sliding,
+                            const std::function<tangential_solution(double magnitude)>& search, const char* what) {
+    const double magnitude = load_magnitude(Q, f);
+    tangential_solution s = magnitude == 0.0 ? full_stick() : magnitude == f ? gross_sliding() : search(magnitude);
+    apply_load_sign(s, Q, what);
+    return s;
+}
+
 void apply_load_sign(tangential_solution& s, double Q, const char* what) {
     if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
         throw numerical_error(std::string(what) + ": the creep is not finite (roughness parameters too large?)");
@@ -216,16 +221,13 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what) {
 
 tangential_solution tangential_solver::solve(double Q, std::optional<double> guess, bool checked,
                                              std::optional<double> slope) {
-    const double target = load_magnitude(Q, f_);
-    tangential_solution s;
-    if (target == 0.0) {
-        s = full_stick();
-    } else if (carter_) {
+    // Smooth cylinders: Carter's closed form at every load but Q = 0.
+    const auto carter_at = [this](double target) {
         const carter_point cp = carter(target, f_);
-        s = carter_solution(target, cp.c0, cp.xi);
-    } else if (target == f_) {
-        s = gross_sliding();
-    } else {
+        return carter_solution(target, cp.c0, cp.xi);
+    };
+    const auto search = [&](double target) {
+        if (carter_) return carter_at(target);
         check_load_resolvable(target, f_);
         // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
         const auto full_stick_below = [this, target] {
@@ -243,16 +245,19 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         };
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess, "root search for c0",
                                            full_stick_below, carter(target, f_).c0, slope);
-        s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
+        tangential_solution s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
         s.iterations = c0.iterations;
         s.load_slope = c0.slope;
-    }
-    apply_load_sign(s, Q, "tangential problem");
+        return s;
+    };
+    tangential_solution s = at_load(
+        Q, f_, [this] { return full_stick(); }, [&] { return carter_ ? carter_at(f_) : gross_sliding(); }, search,
+        "tangential problem");
     if (checked) s.checks = check(s);
     return s;
 }
 
-double tangential_solver::q0(const tangential_solution& s, double r) {
+double stick_traction(const tangential_solution& s, double r) {
     const double rho = s.rho();
     if (r <= s.start || r >= s.c0 || s.psi_b.empty()) return 0.0;
     const double t = (r - s.start) / rho - 1.0;
@@ -260,7 +265,7 @@ double tangential_solver::q0(const tangential_solution& s, double r) {
 }
 
 double tangential_solver::traction(const tangential_solution& s, double r) {
-    return s.sign * (f_ * normal_.pressure(r) + q0(s, r));  // (3.15)
+    return s.sign * (f_ * normal_.pressure(r) + stick_traction(s, r));  // (3.15)
 }
 
 namespace {

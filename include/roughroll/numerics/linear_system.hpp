@@ -34,6 +34,7 @@ public:
     // The matrix to assemble before each solve (its contents are not kept by a solve).
     gsl_matrix* matrix() { return a_.get(); }
     gsl_vector* rhs() { return b_.get(); }
+    void clear();  // A = 0 and b = 0, for a system assembled by adding terms
 
     // Factorises the matrix and solves; throws numerical_error naming `context` when GSL
     // fails or the system is singular to working precision.

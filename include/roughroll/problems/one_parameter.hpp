@@ -80,7 +80,6 @@ private:
     tangential_solution solve_system(double c0);
     tangential_solution full_stick() const;
     tangential_solution gross_sliding() const;
-    double q0(const tangential_solution& s, double r) const;
     double slip_velocity_magnitude(const tangential_solution& s, double r) const;
 
     compliances eps_;

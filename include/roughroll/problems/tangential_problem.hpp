@@ -15,6 +15,7 @@
 // xi = -f G(-1)); neither needs a solve.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -89,6 +90,21 @@ void check_load_resolvable(double magnitude, double f);
 // change sign, c0 does not). Refuses a non-finite c0 or xi (numerical_error naming `what`).
 void apply_load_sign(tangential_solution& s, double Q, const char* what);
 
+// The solution at the load Q of either tangential solver: |Q| <= f (load_magnitude), Q = 0 and |Q| = f
+// by `full_stick` and `gross_sliding` without a system (2(g)), any other |Q| by `search`; then the
+// mirror for Q < 0 (apply_load_sign, `what` naming the problem).
+tangential_solution at_load(double Q, double f, const std::function<tangential_solution()>& full_stick,
+                            const std::function<tangential_solution()>& gross_sliding,
+                            const std::function<tangential_solution(double magnitude)>& search, const char* what);
+
+// A solution of the |Q| problem (sign +1) with the stick zone [start, c0]: creep xi, load Q, the U
+// coefficients of psi (none without a stick zone) and the system's rcond (1 without a solve).
+tangential_solution zone_solution(double f, double start, double c0, double xi, double Q,
+                                  std::vector<double> psi_b = {}, double rcond = 1.0);
+
+// q0(r) of (3.15) on the stick zone [start, c0] of s, q = psi(t) sqrt(1 - t^2) (4.1), 0 off it.
+double stick_traction(const tangential_solution& s, double r);
+
 // Full stick, the special load Q = 0 solved without a system (docs/formulation.md 2(g)), for any
 // tangential solver: c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the pressure's,
 // `pressure_b`). |Q| = f is gross sliding (gross_sliding.hpp).
@@ -151,7 +167,6 @@ private:
     tangential_solution full_stick();
     tangential_solution gross_sliding();
     tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
-    double q0(const tangential_solution& s, double r);                    // corrective traction for |Q|
     std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
 
     const normal_solution& normal_;
