@@ -17,7 +17,6 @@
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
-#include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_newton.hpp"
@@ -51,14 +50,15 @@ std::string no_three_zones(double Q, double f, const std::string& why) {
 void check_dissimilar(const dissimilar& materials, const solver_options& options) {
     check_beta_d(materials.beta_d);
     if (materials.beta_d == 0.0) return;  // the paper's problem at both coupling levels (8(d))
-    if (options.how == method::one_parameter)
-        throw input_error(
-            "beta_d != 0 is not available for method 'one-parameter': its edge behaviour is not "
-            "derived (docs/formulation.md 8(g)); use 'product' or 'extrapolated'");
-    if (options.zones == zone_search::single)
-        throw input_error(
-            "zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
-            "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'");
+    const char* refusal =
+        options.how == method::one_parameter
+            ? "beta_d != 0 is not available for method 'one-parameter': its edge behaviour is not "
+              "derived (docs/formulation.md 8(g)); use 'product' or 'extrapolated'"
+        : options.zones == zone_search::single
+            ? "zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
+              "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'"
+            : nullptr;
+    if (refusal) throw input_error(refusal);
 }
 
 namespace {
@@ -433,26 +433,13 @@ double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
 traction_checks dissimilar_zones::check(const tangential_solution& s) {
     if (!s.opposite) return solver_.check(s);
     // (3.3) on the stick zone, (3.4) on both slip zones with their own directions (zones_of).
-    return checks(zones_of(s), [&](double r) { return solver_.normal().pressure(r); },
-                  [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
+    return check_zones(zones_of(s), blended_checks(), [&](double r) { return solver_.normal().pressure(r); },
+                       [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
 }
 
-traction_checks dissimilar_zones::checks(const std::vector<zone>& zones, const std::function<double(double)>& p,
-                                         const std::function<double(double)>& p1,
-                                         const std::function<double(double)>& v) {
+zone_check_terms dissimilar_zones::blended_checks() {
     // The blended zones of 8(g): margins held to 0 (the floor reported is the |Q| system's at xi = 0).
-    zone_check_terms terms{f_, solver_.pressure_margin(), solver_.rounding(0.0), false, nullptr, nullptr};
-    terms.stick_gap = [&](const std::vector<double>& r) {
-        std::vector<double> gap(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) gap[i] = f_ * p(r[i]) - std::fabs(p1(r[i]));
-        return gap;
-    };
-    terms.slip_velocity = [&](const std::vector<double>& r) {
-        std::vector<double> out(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) out[i] = v(r[i]);
-        return out;
-    };
-    return check_zones(zones, terms);
+    return {f_, solver_.pressure_margin(), solver_.rounding(0.0), false, nullptr, nullptr};
 }
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {

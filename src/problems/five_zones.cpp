@@ -133,8 +133,8 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
 
 traction_checks dissimilar_zones::check(const five_zone_solution& s) {
     // (3.3) on both stick zones, (3.4) on the three slip zones in their directions S (zones_of).
-    return checks(zones_of(s), [&](double r) { return pressure(r); }, [&](double r) { return traction(s, r); },
-                  [&](double r) { return slip_velocity(s, r); });
+    return check_zones(zones_of(s), blended_checks(), [&](double r) { return pressure(r); },
+                       [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
 }
 
 }  // namespace roughroll

@@ -234,18 +234,10 @@ traction_checks one_parameter_solver::check(const tangential_solution& s) const 
     // (3.3) to the rounding of the collocation solution, as tangential_solver::rounding: the terms of
     // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q; (3.4) likewise.
     const double rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
-    zone_check_terms terms{f_, least_pressure(normal_), rounding, true, nullptr, nullptr};
-    terms.stick_gap = [&](const std::vector<double>& r) {
-        std::vector<double> gap(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) gap[i] = f_ * normal_.pressure(r[i]) - std::fabs(traction(s, r[i]));
-        return gap;
-    };
-    terms.slip_velocity = [&](const std::vector<double>& r) {
-        std::vector<double> v(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) v[i] = s.sign * slip_velocity_magnitude(s, r[i]);
-        return v;
-    };
-    return check_zones(zones_of(s), terms);
+    return check_zones(
+        zones_of(s), {f_, least_pressure(normal_), rounding, true, nullptr, nullptr},
+        [this](double r) { return normal_.pressure(r); }, [&](double r) { return traction(s, r); },
+        [&](double r) { return s.sign * slip_velocity_magnitude(s, r); });
 }
 
 }  // namespace roughroll

@@ -63,4 +63,20 @@ traction_checks check_zones(const std::vector<zone>& zones, const zone_check_ter
     return c;
 }
 
+traction_checks check_zones(const std::vector<zone>& zones, zone_check_terms terms, const std::function<double(double)>& p,
+                            const std::function<double(double)>& p1, const std::function<double(double)>& v) {
+    const double f = terms.f;
+    terms.stick_gap = [&](const std::vector<double>& r) {
+        std::vector<double> gap(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) gap[i] = f * p(r[i]) - std::fabs(p1(r[i]));
+        return gap;
+    };
+    terms.slip_velocity = [&](const std::vector<double>& r) {
+        std::vector<double> out(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) out[i] = v(r[i]);
+        return out;
+    };
+    return check_zones(zones, terms);
+}
+
 }  // namespace roughroll

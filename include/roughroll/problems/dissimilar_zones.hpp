@@ -45,6 +45,7 @@
 #include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
@@ -175,9 +176,7 @@ private:
     tangential_solution gross_sliding(double b);
     std::optional<tangential_solution> newton(const structure& z, double magnitude, double start, double c0);
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
-    // The checks of blended zones (zone_checks.hpp) from p, p1 and v at a point.
-    traction_checks checks(const std::vector<zone>& zones, const std::function<double(double)>& p,
-                           const std::function<double(double)>& p1, const std::function<double(double)>& v);
+    zone_check_terms blended_checks();  // what check_zones needs for the blended zones
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);

@@ -33,6 +33,10 @@ struct zone_check_terms {
 
 traction_checks check_zones(const std::vector<zone>& zones, const zone_check_terms& terms);
 
+// The same from p, p1 and v at one point at a time (terms' stick_gap and slip_velocity unused).
+traction_checks check_zones(const std::vector<zone>& zones, zone_check_terms terms, const std::function<double(double)>& p,
+                            const std::function<double(double)>& p1, const std::function<double(double)>& v);
+
 // min p of (4.1) on the check grid of (-1, 1).
 double least_pressure(const normal_solution& normal);
 
