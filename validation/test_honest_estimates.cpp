@@ -9,6 +9,7 @@
 // Coarse n = 32 keeps the finer solutions affordable (n = 128): the levels of the estimates
 // are then 8, 16, 32, far from the asymptotic range for many of these layers, which is
 // where an estimate is tempted to under-report.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -346,4 +347,74 @@ TEST(HonestEstimates, OneRuleForEveryStructure) {
     EXPECT_EQ(c.xi, 2.0);  // twice the larger of |2 - 1| and |3 - 2|
     EXPECT_TRUE(c.bounded);
     EXPECT_EQ(c.against.rfind("levels n/4, n/2, n (dissimilar rollers, full coupling", 0), 0u) << c.against;
+}
+
+// Level 2n, once solved for one quantity, confirms every other (point_estimate.cpp): made-up levels
+// of product at n = 64 where c0 shows order 4 over 16, 32, 64 (differences 1.6, 0.1: ratio 16) and
+// xi only 2 (so xi asks for level 128); over 32, 64, 128 c0 alternates and grows (0.1, -0.2), which
+// refuses the point. The previous rule checked c0 on 128 only where c0 itself asked for it.
+TEST(HonestEstimates, FourthLevelConfirmsEveryQuantity) {
+    const auto level = [](double xi, double c0) {
+        tangential_solution t{};
+        t.xi = xi;
+        t.c0 = c0;
+        return estimate_level{t, 1.0};
+    };
+    const std::array<estimate_level, 3> levels{level(1.0, 0.0), level(2.0, 1.6), level(2.5, 1.7)};
+    const std::vector<estimated_quantity> table{
+        {"c0", &tangential_solution::c0, 0.0, 0.0, false, true, &error_estimate::c0},
+        {"xi", &tangential_solution::xi, 0.0, 0.0, false, true, &error_estimate::xi}};
+    double finer_c0 = 1.5;
+    int solved = 0;
+    const auto finer = [&]() -> std::optional<estimate_level> {
+        ++solved;
+        return level(2.6, finer_c0);
+    };
+    const estimate_point p{method::product, 64, 2, estimate_structure::paper, false, true, "Q", 0.25};
+    try {
+        estimate_from_levels(table, levels, finer, p);
+        ADD_FAILURE() << "c0 alternating and growing on n/2, n, 2n must refuse the point";
+    } catch (const resolution_error& why) {
+        EXPECT_NE(std::string(why.what()).find("c0 does not converge visibly over n = 32, 64, 128"), std::string::npos)
+            << why.what();
+    }
+    EXPECT_EQ(solved, 1);
+    // Where c0 converges on 32, 64, 128 too, its estimate is the larger of the two.
+    finer_c0 = 1.7 + 0.1 / 16.0;
+    const error_estimate e = estimate_from_levels(table, levels, finer, p);
+    const error_bound from_16 = bound_error({0.0, 1.6, 1.7}, 4, reported_value{2, false}, 0.0);
+    const error_bound from_32 = confirm_error({1.6, 1.7, finer_c0}, 4, false, 0.0);
+    ASSERT_TRUE(from_16.resolved && from_32.resolved);
+    EXPECT_EQ(e.c0, std::max(from_16.value, from_32.value));
+    EXPECT_NE(e.against.find("confirmed on n/2, n, 2n"), std::string::npos) << e.against;
+}
+
+// The two under-reports of the estimate grid's seed 2 (validation/estimate_grid_cases.txt, tag
+// grid-s2-under; docs/performance.md "The estimate grid re-run"), references product n = 1000 and
+// extrapolated n = 512. (i) product at n = 16 near full stick: c0 +- 1.3e-12 from 4, 8, 16 (ratio
+// 13.9), 2.0e-12 from both routes; level 32 was solved for P_H/P2 only, and c0 over 8, 16, 32
+// alternates and grows: refused now. (ii) product at n = 32 near gross sliding (1 - |Q|/f = 8.8e-10):
+// xi +- 6.7e-16, 1.1e-15 from both routes: the zone's root of Q(c0) = f + rho int q carries ulp(f),
+// which moves xi by eps f/(pi rho) (docs/formulation.md 7(d)), 4.4e-14 here.
+TEST(HonestEstimates, EstimateGridSeed2UnderReports) {
+    {
+        roughness r;
+        r.cylinder1.normal = {0.001466, 0.09828};
+        r.cylinder2.normal = {13.34, 0.1058};
+        const double f = 0.2675, Q = 1.0847125e-10;
+        const reference ref =
+            two_routes(r, f, Q, solver_options{1000, method::product}, solver_options{512, method::extrapolated});
+        EXPECT_LT(ref.spread_c0, 1e-13);
+        honest_or_refused_at(r, f, Q, solver_options{16, method::product}, ref);
+    }
+    {
+        roughness r;
+        r.cylinder1.tangential = {0.06776, 2.548};
+        r.cylinder2.tangential = {0.06183, 0.02073};
+        const double f = 0.01883, Q = 0.0188299999834296;
+        const reference ref =
+            two_routes(r, f, Q, solver_options{1000, method::product}, solver_options{512, method::extrapolated});
+        EXPECT_LT(ref.spread_xi, 1e-16);
+        EXPECT_TRUE(honest_or_refused_at(r, f, Q, solver_options{32, method::product}, ref));
+    }
 }

@@ -2,8 +2,10 @@
 #include "roughroll/problems/point_estimate.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/error_bound.hpp"
@@ -27,6 +29,15 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
     const bool special = !s.general && (s.Q == 0.0 || std::fabs(s.Q) == f);
     double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
     double xi_floor = rounding_floor(n, std::fabs(own.xi) + f * size);
+    if (!special && !own.general && own.rho() > 0.0) {
+        // The paper's zone is the root of Q(c0) = f + rho int q (4.5), which rounds to ulp(f) <= eps f
+        // whatever the sum's own rounding (times rho, small), and xi moves with the load as
+        // d xi/dQ = 1/(pi rho): Carter's exactly, every rough pair's near gross sliding, where
+        // f - |Q| ~ rho^2 and xi - xi_gs ~ rho (docs/formulation.md 7(d), "The paper's zone near gross
+        // sliding"). So xi carries eps f/(pi rho), above n eps (|xi| + f K) only near gross sliding
+        // (1 - |Q|/f = 8.8e-10, rho = 3e-5: 4.4e-14 against 2.3e-16 at n = 32).
+        xi_floor += DBL_EPSILON * f / (M_PI * own.rho());
+    }
     if (own.general && !own.psi_b.empty() && own.rho() > 0.0) {
         // A zone of the general search (docs/formulation.md 7(d), 7(e)): xi, b_0 and psi(-1) are
         // read off (4.4), whose terms of size |xi| + f K they cancel (stick_system_floor). The
@@ -118,7 +129,9 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     bool second_chance = false, confirmed = false;
-    for (const estimated_quantity& q : table) {
+    std::vector<bool> on_finer(table.size(), false);  // checked on n/2, n, 2n
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        const estimated_quantity& q = table[i];
         const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
         // Full coupling (8(e)): the zone ends converge at order 1 or less, erratically, and the
         // errors change sign between levels, so no asymptotic rule holds (error_bound.hpp).
@@ -153,11 +166,29 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
                 b = fb;
                 used = fine;
                 used_coarsest_n = 2 * coarsest_n;
+                on_finer[i] = true;
             }
         }
         if (!b.resolved) refuse(p, q.name, used, used_coarsest_n);
         e.*q.out = std::max(e.*q.out, b.value);
         e.bounded = e.bounded || !b.asymptotic;
+    }
+    // Level 2n, once solved for one quantity, confirms every other: the levels n/4, n/2, n can show
+    // one quantity the method's order by chance while another's fell short (product at n = 16 near
+    // full stick: c0's ratio 13.9 over 4, 8, 16, level 32 solved for P_H/P2, and c0 over 8, 16, 32
+    // alternating and growing, -1.2e-12, +1.3e-12, with its error 1.54 times the estimate from
+    // 4, 8, 16). The larger of the two estimates, or the refusal where n/2, n, 2n do not converge.
+    if (above_tried && above) {
+        for (std::size_t i = 0; i < table.size(); ++i) {
+            if (on_finer[i]) continue;
+            const estimated_quantity& q = table[i];
+            const three_levels fine{value(q, levels[1]), value(q, levels[2]), value(q, *above)};
+            const error_bound fb = confirm_error(fine, order, q.extrapolated, q.finer_floor);
+            if (!fb.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
+            e.*q.out = std::max(e.*q.out, fb.value);
+            e.bounded = e.bounded || !fb.asymptotic;
+            confirmed = true;
+        }
     }
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
     const int first = 2 - p.self;  // index of the coarsest level's name

@@ -38,7 +38,8 @@ struct error_estimate {
 
 // The rounding floors of an estimate at n nodes, n eps times the size of the terms each quantity is
 // computed from: |P_H/P2| for P_H/P2, |xi| + f K for xi with K = max(1, P_H/P2, sum |T| of a kernel)
-// (the right-hand side f G of (4.4), and the kernel terms that cancel to xi), min(K'/rho,
+// (the right-hand side f G of (4.4), and the kernel terms that cancel to xi; on the paper's zone plus
+// eps f/(pi rho), the load's rounding ulp(f) times d xi/dQ = 1/(pi rho), formulation 7(d)), min(K'/rho,
 // 2 sqrt(K'/(n eps))) with K' = max(1, P_H/P2) for c0 (the rounding of Q(c0) of (4.5) divided by
 // Carter's slope |dQ/dc0| = f rho, or the square-root inversion near gross sliding), f K' for Q.
 // For the point s with level-n values `own` (s itself, or the level-n solution of an extrapolated
