@@ -129,7 +129,20 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     bool second_chance = false, confirmed = false;
+    // Level 2n confirms quantity q's bound b from n/4, n/2, n on n/2, n, 2n (error_bound.hpp): the
+    // larger of the two estimates, or the refusal where n/2, n, 2n do not converge visibly. The floor
+    // is the one of those levels' finest, 2n.
+    const auto confirm_on_finer = [&](const estimated_quantity& q, const estimate_level& a, const error_bound& b) {
+        const three_levels fine{value(q, levels[1]), value(q, levels[2]), value(q, a)};
+        error_bound fb = confirm_error(fine, order, q.extrapolated, q.finer_floor);
+        if (!fb.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
+        fb.value = std::max(fb.value, b.value);
+        fb.asymptotic = fb.asymptotic && b.asymptotic;
+        confirmed = true;
+        return fb;
+    };
     std::vector<bool> on_finer(table.size(), false);  // checked on n/2, n, 2n
+    std::vector<error_bound> bounds;
     for (std::size_t i = 0; i < table.size(); ++i) {
         const estimated_quantity& q = table[i];
         const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
@@ -137,58 +150,40 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         // errors change sign between levels, so no asymptotic rule holds (error_bound.hpp).
         error_bound b =
             coupled ? change_bound(v, q.floor) : bound_error(v, order, reported_value{p.self, q.extrapolated}, q.floor);
-        three_levels used = v;
-        int used_coarsest_n = coarsest_n;
         const bool rounding = std::fabs(v.finest - v.middle) <= q.floor;  // the ratio then means nothing
         const bool confirm = p.structure == estimate_structure::paper && b.resolved &&
                              (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
         const bool chance = !coupled && !b.resolved && p.checks_hold && q.second_chance;
-        if (chance || confirm) {
-            // One level finer, n/2, n, 2n (error_bound.hpp). Where the first three gave no estimate
-            // (a second chance, where n/4 is still pre-asymptotic for this quantity: the second stick
-            // zone's end of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64): accepted
-            // only where the finer levels show at least order p - 1. Where they gave one (a
-            // confirmation): the larger of the two.
+        if (confirm) {
+            if (const estimate_level* a = finer_level()) {
+                b = confirm_on_finer(q, *a, b);
+                on_finer[i] = true;
+            }
+        } else if (chance) {
+            // A second chance where n/4 is still pre-asymptotic for this quantity (the second stick
+            // zone's end of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64): n/2, n, 2n,
+            // accepted only where they show at least order p - 1.
             if (const estimate_level* a = finer_level()) {
                 const three_levels fine{v.middle, v.finest, value(q, *a)};
-                error_bound fb = confirm ? confirm_error(fine, order, q.extrapolated, q.floor)
-                                         : bound_error(fine, order, reported_value{1, q.extrapolated}, q.finer_floor);
-                if (confirm) {
-                    if (fb.resolved) {
-                        fb.value = std::max(fb.value, b.value);
-                        fb.asymptotic = fb.asymptotic && b.asymptotic;
-                    }
-                    confirmed = true;
-                } else {
-                    if (!(fb.ratio >= std::ldexp(1.0, order - 1))) fb.resolved = false;
-                    second_chance = second_chance || fb.resolved;
-                }
-                b = fb;
-                used = fine;
-                used_coarsest_n = 2 * coarsest_n;
+                b = bound_error(fine, order, reported_value{1, q.extrapolated}, q.finer_floor);
+                if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
+                second_chance = second_chance || b.resolved;
+                if (!b.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
                 on_finer[i] = true;
             }
         }
-        if (!b.resolved) refuse(p, q.name, used, used_coarsest_n);
-        e.*q.out = std::max(e.*q.out, b.value);
-        e.bounded = e.bounded || !b.asymptotic;
+        if (!b.resolved) refuse(p, q.name, v, coarsest_n);
+        bounds.push_back(b);
     }
     // Level 2n, once solved for one quantity, confirms every other: the levels n/4, n/2, n can show
     // one quantity the method's order by chance while another's fell short (product at n = 16 near
     // full stick: c0's ratio 13.9 over 4, 8, 16, level 32 solved for P_H/P2, and c0 over 8, 16, 32
     // alternating and growing, -1.2e-12, +1.3e-12, with its error 1.54 times the estimate from
-    // 4, 8, 16). The larger of the two estimates, or the refusal where n/2, n, 2n do not converge.
-    if (above_tried && above) {
-        for (std::size_t i = 0; i < table.size(); ++i) {
-            if (on_finer[i]) continue;
-            const estimated_quantity& q = table[i];
-            const three_levels fine{value(q, levels[1]), value(q, levels[2]), value(q, *above)};
-            const error_bound fb = confirm_error(fine, order, q.extrapolated, q.finer_floor);
-            if (!fb.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
-            e.*q.out = std::max(e.*q.out, fb.value);
-            e.bounded = e.bounded || !fb.asymptotic;
-            confirmed = true;
-        }
+    // 4, 8, 16).
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        if (above && !on_finer[i]) bounds[i] = confirm_on_finer(table[i], *above, bounds[i]);
+        e.*table[i].out = std::max(e.*table[i].out, bounds[i].value);
+        e.bounded = e.bounded || !bounds[i].asymptotic;
     }
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
     const int first = 2 - p.self;  // index of the coarsest level's name
