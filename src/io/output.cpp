@@ -8,7 +8,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <gsl/gsl_math.h>
+
 #include "roughroll/model/carter.hpp"
+#include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 
@@ -50,7 +53,17 @@ nlohmann::json zones_json(const tangential_solution& s) {
     return zones;
 }
 
-const char* zone_path(const tangential_solution& s) { return s.general ? "general" : "single"; }
+const char* zone_path(const tangential_solution& s) {
+    if (s.layers_neglected) return "no-slip";  // docs/formulation.md 8(n)
+    return s.general ? "general" : "single";
+}
+
+// The neglected edge layers of a free-rolling point at large friction (8(n)): null for every other point.
+nlohmann::json layers_json(const tangential_solution& s) {
+    if (!s.layers_neglected) return nullptr;
+    const neglected_layers l = no_slip_layers(s.forcing, s.f);
+    return {{"neglected", true}, {"thickness_bound", l.thickness}, {"crossing", l.crossing}, {"xi_bound", l.xi_bound}};
+}
 
 std::string term_text(const roughness_term& t) {
     return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
@@ -125,7 +138,7 @@ nlohmann::json to_json(const point_report& r) {
                          {"peak_pressure_change", r.coupling->peak_pressure_change},
                          {"iterations", r.coupling->iterations},
                          {"contraction", r.coupling->contraction}});
-    return {
+    nlohmann::json point = {
         {"label", r.label},
         {"coupling", coupling},
         {"si", si},
@@ -156,6 +169,8 @@ nlohmann::json to_json(const point_report& r) {
         {"reference", paper_reference},
         {"version", version()},
     };
+    if (s.layers_neglected) point["edge_layers"] = layers_json(s);  // only there: other points' keys unchanged
+    return point;
 }
 
 void write_summary(std::ostream& out, const point_report& r) {
@@ -181,6 +196,13 @@ void write_summary(std::ostream& out, const point_report& r) {
             << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
             << shortest(r.coupling->lambda_johnson) << "; peak pressure at the same P2 changed by "
             << shortest(100.0 * r.coupling->peak_pressure_change) << " %)\n";
+    if (s.layers_neglected) {
+        const neglected_layers l = no_slip_layers(s.forcing, s.f);
+        const double exponent = M_PI * s.f / std::fabs(s.forcing);  // t = 4/(1 + exp(pi f/|beta_d|))
+        out << "  edge layers         neglected: each thinner than " << shortest(l.thickness) << " (about 4 exp(-"
+            << shortest(exponent) << "), where |p1| of no slip exceeds f p); xi moved by them at most "
+            << shortest(l.xi_bound) << " (docs/formulation.md 8(n))\n";
+    }
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
             << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string()) << ", xi "

@@ -8,6 +8,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/edge_layers.hpp"
 
 namespace roughroll {
 
@@ -194,7 +195,17 @@ const coupling_summary* contact::coupling() const { return coupled_load_ ? &coup
 
 dissimilar_zones& contact::zones_of_point() { return coupled_load_ ? coupled_->zones() : *dissimilar_; }
 
+bool contact::layers_negligible(double Q) const {
+    // Free rolling of smooth rollers at Johnson's level whose edge layers move xi by less than the
+    // tolerance (docs/formulation.md 8(n)): the no-slip solution with the layers neglected answers it.
+    if (Q != 0.0 || coupled_ || !kernel::normal(surfaces_).empty() || !kernel::tangential(surfaces_).empty())
+        return false;
+    const double tolerance = options_.tolerance.value_or(default_tolerance);
+    return no_slip_layers(materials_.beta_d, f_).xi_bound <= tolerance * std::fabs(no_slip_creep(materials_.beta_d));
+}
+
 tangential_solution contact::dissimilar_point(double Q) {
+    if (layers_negligible(Q)) return dissimilar_->layers_neglected_point();
     // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
     check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
     const tangential_solution johnson = johnson_point(Q);
@@ -330,7 +341,7 @@ double contact::slip_velocity(const tangential_solution& d, double r) {
 }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
-    if (dissimilar_ && d.opposite) {
+    if (dissimilar_ && (d.opposite || d.layers_neglected)) {
         std::vector<double> v(r.size());
         for (std::size_t i = 0; i < r.size(); ++i) v[i] = zones_of_point().slip_velocity(d, r[i]);
         return v;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/edge_layers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -416,6 +417,7 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
 
 double dissimilar_zones::traction(const tangential_solution& s, double r) {
     if (s.five) return traction(*s.five, r);
+    if (s.layers_neglected) return no_slip_traction(beta_d_, r);  // 8(n)
     // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
     const double t = solver_.traction(s, r);
     if (!s.opposite) return t;
@@ -424,6 +426,7 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
 
 double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
     if (s.five) return slip_velocity(*s.five, r);
+    if (s.layers_neglected) return 0.0;  // stick everywhere outside the neglected layers (8(n))
     const double v = solver_.slip_velocity(s, r);
     if (!s.opposite || s.sticks(r)) return v;
     const double x = std::clamp(r, -1.0, 1.0);

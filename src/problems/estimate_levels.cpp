@@ -3,12 +3,15 @@
 // rule asks for it, each on the zone structure of the point, and the structure's table of quantities
 // for the one rule of point_estimate.hpp.
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 
 namespace roughroll {
@@ -18,6 +21,19 @@ double contact::kernel_strength() const {
 }
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    // The edge layers neglected (8(n)): no levels, the layers' bound (the closed form has no n).
+    if (s.layers_neglected) {
+        const neglected_layers layers = no_slip_layers(materials_.beta_d, f_);
+        const double lambda = normal().lambda;
+        return error_estimate{rounding_floor(nodes(), lambda),
+                              layers.thickness,
+                              layers.xi_bound + 4.0 * DBL_EPSILON * std::fabs(s.xi),
+                              0.0,
+                              "the model with its edge layers: their bound (no levels; the no-slip solution in closed "
+                              "form, formulation 8(n))",
+                              false,
+                              layers.thickness};
+    }
     // The levels' differences measure how a solution of the discrete equations moves with n; where
     // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.
     // They are still solved: where they do not converge the point is refused, as any other.

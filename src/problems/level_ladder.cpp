@@ -30,6 +30,9 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     const double size = std::max(K, strength);  // xi's terms: f G of (4.4) and the kernel terms
     const double n_eps = rounding_floor(max_nodes, K);
     const double rho = s.rho();
+    // With the edge layers neglected (formulation 8(n)) the ends are the edges, within the layers'
+    // thickness: relative to the half-width.
+    const double end_scale = s.layers_neglected ? 1.0 : 0.0;
     const double zone_end_floor =
         std::min(rho > 0.0 ? n_eps / rho : std::numeric_limits<double>::infinity(), 2.0 * std::sqrt(n_eps));
     struct quantity {
@@ -38,8 +41,8 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     };
     const quantity quantities[] = {
         {"P_H/P2", e.lambda, std::fabs(lambda), rounding_floor(max_nodes, lambda)},
-        {"c0", e.c0, 1.0 - s.c0, zone_end_floor},                 // the slip zone [c0, 1] (issue 23, 1)
-        {"stick start", e.start, 1.0 + s.start, zone_end_floor},  // the slip zone [-1, start]
+        {"c0", e.c0, std::max(1.0 - s.c0, end_scale), zone_end_floor},  // the slip zone [c0, 1] (issue 23, 1)
+        {"stick start", e.start, std::max(1.0 + s.start, end_scale), zone_end_floor},  // the slip zone [-1, start]
         {"xi", e.xi, std::fabs(s.xi), rounding_floor(max_nodes, std::fabs(s.xi) + s.f * size)},
         {"Q", e.Q, std::fabs(s.Q), rounding_floor(max_nodes, s.f * K)},
     };

@@ -176,6 +176,9 @@ private:
     std::optional<tangential_solution> last_dissimilar_;  // this level's last point
     const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite);
     tangential_solution dissimilar_point(double Q);  // Johnson's, then coupled_ where it is set
+    // Free rolling of smooth rollers at Johnson's level whose neglected edge layers bound xi's change
+    // within the tolerance (docs/formulation.md 8(n)): answered by the no-slip solution.
+    bool layers_negligible(double Q) const;
     tangential_solution johnson_point(double Q);     // Johnson's level, the estimate's levels first
     // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the
     // coarser level's) when given and Newton converges from them, else without a guess; nullptr when

@@ -156,6 +156,11 @@ public:
     double slip_velocity(const five_zone_solution& s, double r);  // v(r), 0 on the stick zones
     traction_checks check(const five_zone_solution& s);
 
+    // Free rolling (Q = 0) of smooth rollers with the edge layers neglected (edge_layers.hpp,
+    // docs/formulation.md 8(n)): the no-slip solution, its checks (3.3)-(3.4) on [-1 + t, 1 - t], t the
+    // layers' thickness bound. Only where the normal and tangential kernels are empty (the caller's test).
+    tangential_solution layers_neglected_point();
+
 private:
     // five_zones(Q) at the forcing beta (the frame's), its starts from the three zones at loads k/8.
     std::optional<five_zone_solution> five_zones_at(double Q, double beta);

@@ -72,6 +72,11 @@ struct tangential_solution {
     // (dissimilar_zones.hpp), whose traction, slip velocity and checks these are.
     double start2 = 2.0, end2 = 2.0;
     std::shared_ptr<const five_zone_solution> five;
+    // Free rolling of smooth dissimilar rollers at large friction (docs/formulation.md 8(n)): the no-slip
+    // solution on [-1, 1] with the edge layers, where the model slips, neglected; each layer is thinner
+    // than layer_thickness (about 4 exp(-pi f/|beta_D|)). Traction and checks are dissimilar_zones'.
+    bool layers_neglected = false;
+    double layer_thickness = 0.0;
 
     double rho() const { return 0.5 * (c0 - start); }
     // r on a stick zone [start, c0) (or the second one [start2, end2) of five zones)

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The no-slip solution of free rolling with its edge layers neglected (docs/formulation.md 8(f), 8(n)).
+#include "roughroll/problems/edge_layers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gsl/gsl_math.h>
+
+#include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/zone_layout.hpp"
+
+namespace roughroll {
+
+neglected_layers no_slip_layers(double beta_d, double f) {
+    const double b = std::fabs(beta_d);
+    // |p1|/(f p) = (b/(pi f)) log((1 - r)/(1 + r)) = 1 at 1 + r = 2/(1 + e^(pi f/b)) (8(g)).
+    const double crossing = 2.0 / (1.0 + std::exp(M_PI * f / b));
+    const double t = 2.0 * crossing;
+    // 8(n): per layer (1/pi) int |p1_model - p1|/sqrt(|eta - a||eta - b|), with |p1| <= (2b/pi^2)
+    // sqrt(2x) log(2/x) and f p <= (2f/pi) sqrt(2x) at x = 1 + r < t, and |eta - b| >= 2 - 2t; the
+    // integrals t (pi/2)(log(2/t) + 2 log 2 - 1) and t pi/2 of sqrt(x) log(2/x) and sqrt(x) against
+    // 1/sqrt(t - x). Both layers: twice.
+    // Only for thin layers (t < 1/2); thicker ones are no layers: no bound.
+    if (!(t < 0.5)) return {crossing, t, HUGE_VAL};
+    double bound = 0.0;
+    if (t > 0.0)
+        bound = t / std::sqrt(1.0 - t) *
+                (2.0 * b / (M_PI * M_PI) * (std::log(2.0 / t) + 2.0 * M_LN2 - 1.0) + 2.0 * f / M_PI);
+    return {crossing, t, bound};
+}
+
+double no_slip_traction(double beta_d, double r) {
+    if (!(r > -1.0 && r < 1.0)) return 0.0;
+    // sqrt(1 - r^2) from (1 - r)(1 + r): no cancellation at either edge.
+    return -2.0 * beta_d / (M_PI * M_PI) * std::sqrt((1.0 - r) * (1.0 + r)) * std::log((1.0 - r) / (1.0 + r));
+}
+
+double no_slip_creep(double beta_d) { return -4.0 * beta_d / (M_PI * M_PI); }
+
+tangential_solution dissimilar_zones::layers_neglected_point() {
+    const neglected_layers layers = no_slip_layers(beta_d_, f_);
+    tangential_solution s = zone_solution(f_, -1.0, 1.0, no_slip_creep(beta_d_), 0.0);
+    s.forcing = beta_d_;  // the frame's sign is 1: beta_D itself (8(h) is built into the closed form)
+    s.general = true;     // not the paper's single zone
+    s.layers_neglected = true;
+    s.layer_thickness = layers.thickness;
+    // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)); no slip zone.
+    const double t = std::min(layers.thickness, 0.5);
+    const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};
+    s.checks = check_zones(
+        checked, blended_checks(), [&](double r) { return solver_.normal().pressure(r); },
+        [&](double r) { return no_slip_traction(beta_d_, r); }, [](double) { return 0.0; });
+    return s;
+}
+
+}  // namespace roughroll
