@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/base/error.hpp"
@@ -206,11 +207,27 @@ bool contact::layers_negligible(double Q) const {
 
 tangential_solution contact::dissimilar_point(double Q) {
     if (layers_negligible(Q)) return dissimilar_->layers_neglected_point();
-    // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
-    check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
-    const tangential_solution johnson = johnson_point(Q);
-    if (!coupled_) return johnson;
-    return coupled_level_point(Q, johnson, true);
+    try {
+        // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
+        check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
+        const tangential_solution johnson = johnson_point(Q);
+        if (!coupled_) return johnson;
+        return coupled_level_point(Q, johnson, true);
+    } catch (const resolution_error& why) {
+        // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
+        // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
+        const double relative =
+            no_slip_layers(materials_.beta_d, f_).xi_bound / std::fabs(no_slip_creep(materials_.beta_d));
+        if (Q != 0.0 || coupled_ || !kernel::normal(surfaces_).empty() || !kernel::tangential(surfaces_).empty() ||
+            !(relative < 0.5))
+            throw;
+        const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
+        char up[32];  // two digits, rounded up
+        std::snprintf(up, sizeof up, "%.2g", std::ceil(relative / unit) * unit);
+        throw resolution_error(std::string(why.what()) + "; a tolerance of " + up +
+                               " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge "
+                               "layers neglected (docs/formulation.md 8(n))");
+    }
 }
 
 tangential_solution contact::johnson_level_point(double Q, const tangential_solution& near) {

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Free rolling (Q = 0) of Bentall and Johnson's pair (data/aluminium-on-steel.toml, Johnson's level) at
+// every friction from complete slip to no slip (issue 24, 7; docs/formulation.md 8(f), 8(j) 4a, 8(n)):
+// `roughroll point --json` answered with its checks holding at f = 1e-6 .. 1e6, the creep between the
+// two limits within its estimate; the complete-slip limit approached at the measured rate; the no-slip
+// limit -4 beta_D/pi^2 within the estimate at f = 1e3 and 1e6, its closed form checked by an
+// independent quadrature of the stick equation; and the two routes (five zones, the edge layers
+// neglected) agreeing within their estimates where both answer.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "aluminium_on_steel.hpp"
+
+namespace {
+struct run_result {
+    int status;
+    std::string text;
+    nlohmann::json out;
+};
+
+run_result run_point(double f, const std::string& options = "", bool json = true) {
+    char friction[32];
+    std::snprintf(friction, sizeof friction, "%.17g", f);
+    const std::string command = std::string(ROUGHROLL_CLI) + " point " + ROUGHROLL_DATA +
+                                "/aluminium-on-steel.toml --Q 0 --friction " + friction + " " + options +
+                                (json ? " --json" : "") + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) throw std::runtime_error("popen failed");
+    std::string text;
+    char buffer[4096];
+    while (const std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, got);
+    const int status = pclose(pipe);
+    run_result r{status, text, {}};
+    if (json && status == 0) r.out = nlohmann::json::parse(text);
+    return r;
+}
+
+// The complete-slip limit of free rolling, 8(f): 2 phi + sin 2 phi = pi/2 by bisection (not the
+// library's complete_slip_creep), xi_0 = -(2/pi) cos(phi) beta_D.
+double complete_slip_limit() {
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (2.0 * mid + std::sin(2.0 * mid) < M_PI_2 ? lo : hi) = mid;
+    }
+    return -2.0 / M_PI * std::cos(lo) * beta_al_st;
+}
+
+double no_slip_limit() { return -4.0 * beta_al_st / (M_PI * M_PI); }
+}  // namespace
+
+// Every friction of the issue (f = 1e-6 and 0.5: below), the ladder at its default tolerance.
+TEST(FreeRollingEveryF, AnsweredFromCompleteSlipToNoSlip) {
+    const double xi0 = complete_slip_limit(), xi_inf = no_slip_limit();
+    double previous = -HUGE_VAL;
+    for (const double f : {1e-4, 0.05, 0.2, 1.0, 10.0, 1e3, 1e6}) {  // 1e-6: TowardsCompleteSlip
+        const run_result r = run_point(f);
+        ASSERT_EQ(r.status, 0) << "f = " << f << ": " << r.text;
+        const nlohmann::json& j = r.out;
+        const double xi = j["xi"].get<double>();
+        ASSERT_TRUE(j["error_estimate"].is_object()) << "f = " << f;
+        const double e = j["error_estimate"]["xi"].get<double>();
+        std::printf("f = %g: n = %d, xi = %.15f +- %.3g, zones %zu%s\n", f, j["n"].get<int>(), xi, e,
+                    j["zones"].size(), j.contains("edge_layers") ? ", edge layers neglected" : "");
+        EXPECT_TRUE(j["checks_hold"].get<bool>()) << "f = " << f;
+        EXPECT_EQ(j["Q"].get<double>(), 0.0);
+        // Between the limits of 8(f), and rising with f (more stick, less slip against the rolling).
+        EXPECT_GE(xi + e, xi0) << "f = " << f;
+        EXPECT_LE(xi - e, xi_inf) << "f = " << f;
+        EXPECT_GE(xi + e, previous) << "f = " << f;
+        previous = xi;
+        // The route: five zones up to f = 0.2, the edge layers neglected from f = 1 on (8(n)).
+        EXPECT_EQ(j.contains("edge_layers"), f >= 1.0) << "f = " << f;
+        EXPECT_EQ(j["zones"].size(), f >= 1.0 ? 1u : 5u) << "f = " << f;
+    }
+}
+
+// f = 0.5: its layers (about 3.6e-5 thick) are below what n = 32 resolves, and their bound on xi
+// (7.8e-4 relative) above the default tolerance: refused at once, naming the tolerance that answers it.
+TEST(FreeRollingEveryF, HalfFrictionRefusalSaysWhatToChange) {
+    const run_result refused = run_point(0.5, "--n 32", false);
+    EXPECT_NE(refused.status, 0);
+    const std::string advice = "a tolerance of 0.00078 or more";
+    EXPECT_NE(refused.text.find(advice), std::string::npos) << refused.text;
+    EXPECT_NE(refused.text.find("--tolerance"), std::string::npos);
+    EXPECT_EQ(refused.text.find("::"), std::string::npos) << "no function name: " << refused.text;
+    const run_result r = run_point(0.5, "--tolerance 0.00078");
+    ASSERT_EQ(r.status, 0) << r.text;
+    EXPECT_TRUE(r.out["checks_hold"].get<bool>());
+    EXPECT_TRUE(r.out.contains("edge_layers"));
+    EXPECT_LE(std::fabs(r.out["xi"].get<double>() - no_slip_limit()), r.out["error_estimate"]["xi"].get<double>());
+}
+
+// Complete slip (8(f)): the creep approaches -0.5823613 beta_D from above, its distance falling by 56
+// from f = 1e-4 to 1e-5 and by 64 from 1e-5 to 1e-6 (measured; faster than f, slower than f^2).
+TEST(FreeRollingEveryF, TowardsCompleteSlip) {
+    const double xi0 = complete_slip_limit();
+    const double d5 = run_point(1e-5).out["xi"].get<double>() - xi0;
+    const run_result r6 = run_point(1e-6);
+    const double d6 = r6.out["xi"].get<double>() - xi0;
+    std::printf("distance from complete slip: %.4g (f = 1e-5), %.4g (f = 1e-6), ratio %.3g\n", d5, d6, d5 / d6);
+    ASSERT_EQ(r6.status, 0) << r6.text;
+    EXPECT_TRUE(r6.out["checks_hold"].get<bool>());
+    EXPECT_EQ(r6.out["zones"].size(), 5u);
+    EXPECT_GT(d6, 0.0);
+    EXPECT_GT(d6, r6.out["error_estimate"]["xi"].get<double>());  // the distance is resolved, not rounding
+    EXPECT_GT(d5 / d6, 10.0);
+    EXPECT_LT(d5 / d6, 100.0);
+    // Bentall and Johnson's 0.457 to its digits at f = 1e-6: -pi xi/(4 beta_D), 8(f).
+    EXPECT_NEAR(-M_PI * r6.out["xi"].get<double>() / (4.0 * beta_al_st), 0.4573855087865, 1e-8);
+}
+
+// No slip (8(f), 8(n)): xi = -4 beta_D/pi^2 within the estimate at f = 1e3 and 1e6, the edge layers
+// reported as neglected and thinner than the smallest double.
+TEST(FreeRollingEveryF, NoSlipLimit) {
+    for (const double f : {1e3, 1e6}) {
+        const run_result r = run_point(f);
+        ASSERT_EQ(r.status, 0) << r.text;
+        const nlohmann::json& j = r.out;
+        EXPECT_LE(std::fabs(j["xi"].get<double>() - no_slip_limit()), j["error_estimate"]["xi"].get<double>());
+        EXPECT_LE(j["error_estimate"]["xi"].get<double>(), 1e-15);
+        EXPECT_EQ(j["edge_layers"]["thickness_bound"].get<double>(), 0.0);
+        EXPECT_TRUE(j["edge_layers"]["neglected"].get<bool>());
+    }
+    const run_result text = run_point(1.0, "", false);
+    ASSERT_EQ(text.status, 0) << text.text;
+    EXPECT_NE(text.text.find("edge layers         neglected: each thinner than 1.30699"), std::string::npos)
+        << text.text;
+}
+
+// The closed form of the no-slip traction solves the stick equation H[p1] = xi + beta_D p of 8(f):
+// the Cauchy principal value by GSL's QAWC, independently of the product's collocation.
+TEST(FreeRollingEveryF, NoSlipClosedFormSolvesTheStickEquation) {
+    gsl_set_error_handler_off();
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
+    const auto p1 = [](double eta) {
+        if (!(eta > -1.0 && eta < 1.0)) return 0.0;  // its limit at the edges (QAWC samples them)
+        return -2.0 * beta_al_st / (M_PI * M_PI) * std::sqrt((1.0 - eta) * (1.0 + eta)) *
+               std::log((1.0 - eta) / (1.0 + eta));
+    };
+    gsl_function F;
+    F.function = [](double eta, void* p) { return (*static_cast<decltype(p1)*>(p))(eta); };
+    F.params = const_cast<void*>(static_cast<const void*>(&p1));
+    for (const double r : {-0.9, -0.7, 0.0, 0.3, 0.8, 0.95}) {
+        double value = 0.0, error = 0.0;
+        // The square-root-times-log ends limit QAWC's accuracy to about 1e-11 (its own error estimate).
+        const int status = gsl_integration_qawc(&F, -1.0, 1.0, r, 1e-13, 0.0, 1000, w, &value, &error);
+        EXPECT_TRUE(status == GSL_SUCCESS || status == GSL_EROUND) << gsl_strerror(status);
+        EXPECT_LT(error, 1e-9) << "r = " << r;
+        const double H = value / M_PI;  // (1/pi) PV int p1(eta)/(eta - r)
+        const double p = 2.0 / M_PI * std::sqrt(1.0 - r * r);
+        EXPECT_NEAR(H, no_slip_limit() + beta_al_st * p, 1e-10) << "r = " << r;
+    }
+    gsl_integration_workspace_free(w);
+}
+
+// Both routes at f = 0.2: the five zones (n = 128, default tolerance) and the edge layers neglected
+// (tolerance 0.5, above their bound's 0.22 relative): the creeps agree within the sum of their
+// estimates, and the five zones' layers are thinner than the bound t = 4/(1 + exp(pi f/beta_D)) of 8(n).
+TEST(FreeRollingEveryF, BothRoutesAgreeWhereBothAnswer) {
+    const double f = 0.2;
+    const run_result five = run_point(f);
+    const run_result layers = run_point(f, "--tolerance 0.5");
+    ASSERT_EQ(five.status, 0) << five.text;
+    ASSERT_EQ(layers.status, 0) << layers.text;
+    ASSERT_EQ(five.out["zones"].size(), 5u);
+    ASSERT_TRUE(layers.out.contains("edge_layers"));
+    const double xi5 = five.out["xi"].get<double>(), xiL = layers.out["xi"].get<double>();
+    const double e5 = five.out["error_estimate"]["xi"].get<double>();
+    const double eL = layers.out["error_estimate"]["xi"].get<double>();
+    std::printf("f = 0.2: five zones %.12f +- %.3g, layers neglected %.12f +- %.3g, difference %.3g\n", xi5, e5, xiL,
+                eL, xi5 - xiL);
+    EXPECT_LE(std::fabs(xi5 - xiL), e5 + eL);
+    const double t = 4.0 / (1.0 + std::exp(M_PI * f / beta_al_st));
+    EXPECT_NEAR(layers.out["edge_layers"]["thickness_bound"].get<double>(), t, 1e-12 * t);
+    const nlohmann::json& z = five.out["zones"];
+    const double leading = 1.0 + z[0]["to"].get<double>(), trailing = 1.0 - z[1]["to"].get<double>();
+    std::printf("layers: leading %.4g, trailing %.4g, bound %.4g\n", leading, trailing, t);
+    EXPECT_LT(leading, t);
+    EXPECT_LT(trailing, t);
+    // The ends of the layers-neglected point: the edges, within t of the model's.
+    EXPECT_LE(std::fabs(z[0]["to"].get<double>() - layers.out["stick_start"].get<double>()),
+              layers.out["error_estimate"]["stick_start"].get<double>());
+    EXPECT_LE(std::fabs(z[1]["to"].get<double>() - layers.out["c0"].get<double>()),
+              layers.out["error_estimate"]["c0"].get<double>());
+}
