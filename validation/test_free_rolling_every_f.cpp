@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aluminium_on_steel.hpp"
+#include "roughroll/problems/contact.hpp"
 
 namespace {
 struct run_result {
@@ -190,4 +191,28 @@ TEST(FreeRollingEveryF, BothRoutesAgreeWhereBothAnswer) {
               layers.out["error_estimate"]["stick_start"].get<double>());
     EXPECT_LE(std::fabs(z[1]["to"].get<double>() - layers.out["c0"].get<double>()),
               layers.out["error_estimate"]["c0"].get<double>());
+}
+
+// The rollers exchanged (8(h)): (beta_D, Q) -> (-beta_D, -Q) changes the sign of xi and p1 and keeps
+// the zones, on the layers-neglected structure too (library, n = 32, product: the closed form has no n).
+TEST(FreeRollingEveryF, RollersExchangedWithTheLayersNeglected) {
+    using namespace roughroll;
+    const double f = 5.0;
+    contact a(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact b(roughness{}, f, solver_options{32, method::product}, dissimilar{-beta_al_st, coupling_level::johnson});
+    const tangential_solution sa = a.point(0.0), sb = b.point(-0.0);
+    ASSERT_TRUE(sa.layers_neglected);
+    ASSERT_TRUE(sb.layers_neglected);
+    EXPECT_EQ(sa.xi, -sb.xi);
+    EXPECT_EQ(sa.xi, no_slip_limit());
+    for (const double r : {-0.999, -0.5, 0.1, 0.9}) {
+        EXPECT_EQ(a.traction(sa, r), -b.traction(sb, r)) << r;
+        EXPECT_LT(std::fabs(a.traction(sa, r)), f * a.normal().pressure(r)) << r;
+        EXPECT_EQ(a.slip_velocity(sa, r), 0.0);
+    }
+    EXPECT_TRUE(sa.checks.hold());
+    EXPECT_TRUE(sb.checks.hold());
+    const auto e = a.estimate(sa);
+    ASSERT_TRUE(e);
+    EXPECT_LE(e->xi, 1e-15);
 }
