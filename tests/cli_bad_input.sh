@@ -3,28 +3,15 @@
 # Every kind of bad input makes `roughroll` exit 2 with exactly one line on stderr that
 # names the problem, and nothing on stdout. Usage: cli_bad_input.sh path/to/roughroll
 set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")  # absolute: some rows run in another folder
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-
-# expect NAME KEYWORD -- ARGS... (cli_expect.sh); `as_user` runs it as another user (one row below).
-source "$(dirname "$0")/cli_expect.sh"
+# bin, dir, fail, expect NAME KEYWORD -- ARGS..., good_scene, finish (cli_lib.sh); `run_under` runs
+# expect as another user (one row below).
+source "$(dirname "$0")/cli_lib.sh"
 
 scene() {  # scene NAME CONTENT: writes $dir/NAME.toml
     printf '%s\n' "$2" >"$dir/$1.toml"
 }
 
-good='friction = 0.3
-Q = 0.15
-[cylinder1.tangential]
-T = 0.5
-A = 0.5
-[cylinder1.normal]
-T = 0.5
-A = 0.5
-[solver]
-n = 20'
+good=$good_scene
 scene good "$good"
 scene noQ "$(printf '%s\n' "$good" | grep -v '^Q =')"
 scene malformed 'friction = '
@@ -138,9 +125,9 @@ expect non-ascii-outside-string "malformed" -- point "$dir/nonascii.toml"
 if [ "$(id -u)" -ne 0 ]; then
     expect unreadable-file "Permission denied" -- point "$dir/unreadable.toml"
 elif chmod 711 "$dir" && setpriv --reuid=65534 --regid=65534 --clear-groups "$bin" --help >/dev/null 2>&1; then
-    as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+    run_under=(setpriv --reuid=65534 --regid=65534 --clear-groups)
     expect unreadable-file "Permission denied" -- point "$dir/unreadable.toml"
-    as_user=()
+    run_under=()
 else
     echo "skip unreadable-file: running as root and cannot run $bin as nobody"
 fi
@@ -360,7 +347,7 @@ expect n-cli-empty "--n: '' is not an integer" -- point "$dir/good.toml" --n ""
 # A 1 MB key is echoed cut, not whole.
 { printf '%s\n' "$good"; printf '%s = 1\n' "$(head -c 1000000 /dev/zero | tr '\0' k)"; } >"$dir/bigkey.toml"
 expect key-echo-cut "kkkkkkkkkk..." -- point "$dir/bigkey.toml"
-[ "$(wc -c <"$dir/err")" -lt 300 ] || { echo "FAIL key-echo-cut: $(wc -c <"$dir/err") bytes on stderr"; failures=$((failures + 1)); }
+[ "$(wc -c <"$dir/err")" -lt 300 ] || fail "key-echo-cut: $(wc -c <"$dir/err") bytes on stderr"
 # traction's default name is the scene file's: a bad one is blamed on the file, not on --name.
 printf '%s\n' "$good" >"$dir/$(printf 'a\nb').toml"
 expect traction-scene-name "the scene file's name 'a\x0ab' cannot name the output files" -- traction "$dir/$(printf 'a\nb').toml" --out "$dir/t" --no-plot
@@ -388,15 +375,7 @@ done
 
 # Writes are checked: a full device is an error with its reason (before: exit 0).
 expect_full() {  # expect_full NAME -- ARGS: stdout to /dev/full, exit 2, one line with the reason
-    local name=$1
-    shift 2
-    timeout "$hang_guard" "$bin" "$@" >/dev/full 2>"$dir/err"
-    local status=$?
-    if [ $status -ne 2 ] || [ "$(wc -l <"$dir/err")" -ne 1 ] || ! grep -qF "No space left on device" "$dir/err"; then
-        echo "FAIL $name: status $status:"; sed 's/^/    /' "$dir/err"; failures=$((failures + 1))
-    else
-        echo "ok   $name: $(cat "$dir/err")"
-    fi
+    stdout_to=/dev/full expect "$1" "No space left on device" "${@:2}"
 }
 expect_full point-stdout-full -- point "$dir/good.toml"
 expect_full point-json-stdout-full -- point "$dir/good.toml" --json
@@ -429,7 +408,7 @@ else
 fi
 cp "$dir/good.toml" "$dir/S.toml"
 expect curve-csv-is-input "is the input file" -- curve "$dir/S.toml" --points 3 --csv "$dir/S.toml"
-cmp -s "$dir/good.toml" "$dir/S.toml" || { echo "FAIL curve-csv-is-input: the scene was changed"; failures=$((failures + 1)); }
+cmp -s "$dir/good.toml" "$dir/S.toml" || fail "curve-csv-is-input: the scene was changed"
 mkdir -p "$dir/tin"
 cp "$dir/good.toml" "$dir/tin/traction-x.csv"
 expect traction-csv-is-input "is the input file" -- traction "$dir/tin/traction-x.csv" --name x --out "$dir/tin" --no-plot
@@ -441,7 +420,7 @@ hostile="$(printf 'o\nsystem "touch %s"\n#' "$pwned")"
 expect traction-out-newline "holds a control character" -- traction "$dir/good.toml" --points 5 --out "$dir/$hostile"
 expect convergence-out-newline "holds a control character" -- convergence "$dir/good.toml" --out "$dir/$hostile" --no-plot
 expect figure-out-newline "holds a control character" -- figure 2a --points 2 --out "$dir/$hostile" --no-plot
-[ ! -e "$pwned" ] || { echo "FAIL gnuplot-injection: the system line ran"; failures=$((failures + 1)); }
+[ ! -e "$pwned" ] || fail "gnuplot-injection: the system line ran"
 # Quotes, a backquote (gnuplot runs `...` even inside a double-quoted title), @ and $( ) in
 # a scene file name: plotted as text, nothing runs.
 if command -v gnuplot >/dev/null; then
@@ -472,21 +451,13 @@ expect figure-out-checked-first "cannot create output folder" -- figure 2a --met
 # gnuplot missing: one line saying so (before: gnuplot's lines and "is gnuplot installed?").
 mkdir -p "$dir/nopath"
 ln -sf "$(command -v env)" "$dir/nopath/env" 2>/dev/null
-expect_nognuplot() {
-    PATH="$dir/nopath" "$bin" traction "$dir/good.toml" --points 5 --out "$dir/t" >"$dir/out" 2>"$dir/err"
-    local status=$?
-    if [ $status -ne 2 ] || [ "$(wc -l <"$dir/err")" -ne 1 ] || ! grep -qF "gnuplot is not installed" "$dir/err"; then
-        echo "FAIL gnuplot-missing: status $status"; sed 's/^/    /' "$dir/err"; failures=$((failures + 1))
-    else
-        echo "ok   gnuplot-missing: $(cat "$dir/err")"
-    fi
-}
-expect_nognuplot
+run_under=(env PATH="$dir/nopath")
+expect gnuplot-missing "gnuplot is not installed" -- traction "$dir/good.toml" --points 5 --out "$dir/t"
+run_under=()
 
 # A valid scene must still work (the harness above is not failing everything).
 if ! "$bin" point "$dir/good.toml" --json >"$dir/out" 2>"$dir/err" || ! grep -q '"xi"' "$dir/out"; then
     echo "FAIL the valid scene did not solve:"; cat "$dir/err"; failures=$((failures + 1))
 fi
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

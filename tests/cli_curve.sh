@@ -8,24 +8,10 @@
 # The scene: a very stiff normal layer (T = 1e6, A = 1 on cylinder 2) at n = 16, product.
 # Usage: cli_curve.sh path/to/roughroll
 set -u
-bin=$1
-hang_guard=${ROUGHROLL_HANG_GUARD:-900}  # against hangs, not a speed limit (cli_expect.sh)
-data="$(cd "$(dirname "$0")/../data" && pwd)"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+# bin, data, dir, fail, hang_guard, stiff_scene, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
-cat >"$dir/stiff.toml" <<'EOF'
-friction = 0.3
-Q = 0.15
-[cylinder2.normal]
-T = 1e6
-A = 1
-[solver]
-n = 16
-method = "product"
-EOF
+printf '%s\n' "$stiff_scene" >"$dir/stiff.toml"
 
 # data_lines FILE: FILE without the `#` lines the CSV starts with (version, scene, column notes:
 # cli_version.sh checks them), the whole CSV kept in FILE.full.
@@ -127,5 +113,4 @@ timeout "$hang_guard" "$bin" curve "$data/fig2a-T1.toml" --friction 0.5 --points
 cmp -s <(grep -v '^# roughroll curve ' "$dir/file.csv") <(grep -v '^# roughroll curve ' "$dir/option.csv") ||
     fail "--friction: the curve differs from the scene with that friction"
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

@@ -12,15 +12,9 @@
 #    changes no byte of stdout or of the CSV; --quiet with --progress is refused.
 # Skipped (77) without gnuplot. Usage: cli_curve_plot.sh path/to/roughroll
 set -u
-bin=$1
 command -v gnuplot >/dev/null || { echo "SKIP: no gnuplot"; exit 77; }
-hang_guard=${ROUGHROLL_HANG_GUARD:-900}  # against hangs, not a speed limit (cli_expect.sh)
-data="$(cd "$(dirname "$0")/../data" && pwd)"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-. "$(dirname "$0")/cli_expect.sh"
+# bin, data, dir, fail, hang_guard, expect, stiff_scene, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
 # whole_png FILE: a PNG signature at the start, the IEND chunk at the end.
 whole_png() {
@@ -103,16 +97,7 @@ if run curve-two 0 curve "$data/fig2a-T0.5.toml" "$data/steel-rollers.toml" --po
 fi
 
 # --- Refused rows (the stiff layer of cli_curve.sh): exit 3, ticks on the load axis.
-cat >"$dir/stiff.toml" <<'EOF'
-friction = 0.3
-Q = 0.15
-[cylinder2.normal]
-T = 1e6
-A = 1
-[solver]
-n = 16
-method = "product"
-EOF
+printf '%s\n' "$stiff_scene" >"$dir/stiff.toml"
 mkdir -p "$dir/refused"
 if run curve-refused 3 curve "$dir/stiff.toml" --points 7 --csv "$dir/refused/stiff.csv" --plot; then
     before=$failures
@@ -190,5 +175,4 @@ if run progress-physical 0 curve "$data/steel-rollers.toml" --points 4 --progres
         echo "ok   progress-physical: the same CSV with and without --progress"
 fi
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

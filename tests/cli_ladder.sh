@@ -7,12 +7,8 @@
 # line naming the best estimate); a curve reports each row's n in its column n (the given n with --n).
 # Usage: cli_ladder.sh path/to/roughroll
 set -u
-bin=$1
-hang_guard=${ROUGHROLL_HANG_GUARD:-900}  # against hangs, not a speed limit (cli_expect.sh)
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+# bin, dir, fail, hang_guard, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
 cat >"$dir/near.toml" <<'EOF'
 friction = 0.3
@@ -66,5 +62,4 @@ grep -q ',n,status$' "$dir/c.csv" || fail "curve: no column n"
 run curve "$dir/near.toml" --points 3 --n 128 --csv "$dir/c128.csv" 2>"$dir/err" || fail "curve --n 128: exit $?"
 [ "$(grep -v '^#' "$dir/c128.csv" | tail -n +2 | grep -vc ',128,ok$')" = 0 ] || fail "curve --n 128: a row not at 128"
 
-[ "$failures" -eq 0 ] && echo "cli_ladder: ok"
-exit $((failures > 0))
+finish

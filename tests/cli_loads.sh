@@ -8,15 +8,8 @@
 # --friction; a load just below gross sliding never prints as Q/f = 1.
 # Usage: cli_loads.sh path/to/roughroll
 set -u
-bin=$1
-src="$(cd "$(dirname "$0")/.." && pwd)"
-data="$src/data"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-# shellcheck source=cli_expect.sh
-. "$(dirname "$0")/cli_expect.sh"
+# bin, data, dir, fail, hang_guard, expect, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
 # run NAME ARGS...: the program's stdout in $dir/NAME (exit 0 expected).
 run() {
@@ -127,5 +120,4 @@ sed 's/^P1 = 1.5e4 .*/Q = 0.15\ncontact_width = "hertz"/' "$data/steel-rollers.t
 expect P1-hertz-width "given-load" -- point "$dir/hertz.toml" --P1 1e4
 expect convergence-Q-over-f-above-1 "Q_over_f must" -- convergence "$data/fig2a-T1.toml" --Q-over-f 2 --out "$dir" --no-plot
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

@@ -8,29 +8,15 @@
 #    what a full disk leaves (and worse); a tiny tmpfs makes the real gnuplot run out of space.
 #  - Every output replaces its path by rename, which needs only the folder to be writable: a
 #    0444 file, or another user's, was replaced where `> FILE` fails. Root may write any file,
-#    so these rows run as nobody (`as_user`, cli_expect.sh).
+#    so these rows run as nobody (`run_under`, cli_lib.sh).
 # Usage: cli_output_safety.sh path/to/roughroll
 set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-dir=$(mktemp -d)
+# bin, dir, fail, expect, run_under, good_scene, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 mounted=""
 trap '[ -n "$mounted" ] && umount "$mounted"; rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-source "$(dirname "$0")/cli_expect.sh"
 
-cat >"$dir/good.toml" <<'EOF'
-friction = 0.3
-Q = 0.15
-[cylinder1.tangential]
-T = 0.5
-A = 0.5
-[cylinder1.normal]
-T = 0.5
-A = 0.5
-[solver]
-n = 20
-EOF
+printf '%s\n' "$good_scene" >"$dir/good.toml"
 
 # The three commands that plot, each with the stem of its images in folder $2 (small and fast).
 plot_command() {  # plot_command traction|figure|convergence FOLDER: sets cmd and stem
@@ -163,16 +149,16 @@ fi
 
 # --- Write-protected outputs: refused before any work, the file unchanged.
 if [ "$(id -u)" -ne 0 ]; then
-    as_user=()
+    run_under=()
 elif chmod 711 "$dir" && setpriv --reuid=65534 --regid=65534 --clear-groups "$bin" --help >/dev/null 2>&1; then
-    as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+    run_under=(setpriv --reuid=65534 --regid=65534 --clear-groups)
 else
     echo "skipped write-protected outputs: running as root and cannot run $bin as nobody"
     echo "$failures failure(s)"
     [ "$failures" -eq 0 ]
     exit
 fi
-me=$(${as_user[@]+"${as_user[@]}"} id -u)
+me=$(${run_under[@]+"${run_under[@]}"} id -u)
 w="$dir/w"  # a folder the user may write in: rename could replace any file in it
 mkdir -p "$w"
 chmod 777 "$w"
@@ -209,13 +195,12 @@ expect figure-table-0444 "fig2a-table.md': the file exists and is not writable" 
 # A file the user may write is replaced as before.
 printf 'earlier\n' >"$w/mine.csv"
 [ "$(id -u)" -eq 0 ] && chown "$me" "$w/mine.csv"
-if ${as_user[@]+"${as_user[@]}"} "$bin" curve "$dir/good.toml" --points 3 --csv "$w/mine.csv" >"$dir/out" 2>"$dir/err" &&
+if ${run_under[@]+"${run_under[@]}"} "$bin" curve "$dir/good.toml" --points 3 --csv "$w/mine.csv" >"$dir/out" 2>"$dir/err" &&
     grep -q '^Q,' "$w/mine.csv"; then
     echo "ok   curve-csv-writable: replaced"
 else
     fail "curve-csv-writable: $(cat "$dir/err")"
 fi
-as_user=()
+run_under=()
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

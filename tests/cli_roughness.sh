@@ -5,12 +5,8 @@
 # linear decay) to 1e-10; then every kind of bad spec or profile CSV: exit 2, one stderr line
 # naming the problem, nothing on stdout. Usage: cli_roughness.sh path/to/roughroll
 set -u
-bin=$1
-data="$(cd "$(dirname "$0")/../data" && pwd)"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+# bin, data, dir, fail, expect, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
 # value FILE KEY: the number of a top-level key of the JSON (two spaces of indentation), or of
 # an average (four spaces, inside "averages", the first such block).
@@ -95,12 +91,12 @@ fi
 #   k_derived - k_printed = mu0 (2 lambda0 + mu0)/(lambda0 + 2 mu0) <a3 h_1>^2/<a h_1^2>
 # (to 1e-10), which is 0 for the flat profile. The relative change is printed.
 for name in flat-linear sine-linear ground-measured; do
-    src=$data/roughness/$name.toml
+    spec=$data/roughness/$name.toml
     mkdir -p "$dir/factor"
     # The same spec asking for the printed factor, its profile_csv made absolute.
-    sed "s|^profile_csv = \"\(.*\)\"|profile_csv = \"$data/roughness/\1\"|" "$src" >"$dir/factor/$name.toml"
+    sed "s|^profile_csv = \"\(.*\)\"|profile_csv = \"$data/roughness/\1\"|" "$spec" >"$dir/factor/$name.toml"
     printf 'factor_2_12 = "printed"\n' >>"$dir/factor/$name.toml"
-    if "$bin" roughness "$src" --json >"$dir/factor/derived.json" 2>"$dir/err" &&
+    if "$bin" roughness "$spec" --json >"$dir/factor/derived.json" 2>"$dir/err" &&
         "$bin" roughness "$dir/factor/$name.toml" --json >"$dir/factor/printed.json" 2>"$dir/err"; then
         d=$dir/factor/derived.json
         p=$dir/factor/printed.json
@@ -124,7 +120,6 @@ for name in flat-linear sine-linear ground-measured; do
 done
 
 # Bad input. expect NAME KEYWORD -- ARGS...: exit 2, one stderr line containing KEYWORD, empty stdout.
-source "$(dirname "$0")/cli_expect.sh"
 
 good='lambda0 = 1.15e11
 mu0 = 7.7e10
@@ -252,5 +247,4 @@ expect csv-overshoot "overshoots to h0 = -" -- roughness "$dir/csvovershoot/spec
 expect no-spec "SPEC" -- roughness
 expect unknown-option "--frobnicate" -- roughness "$data/roughness/flat-linear.toml" --frobnicate
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

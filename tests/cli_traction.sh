@@ -7,12 +7,8 @@
 # Each check is also run on a CSV corrupted to break it, and must fail there.
 # Usage: cli_traction.sh path/to/roughroll
 set -u
-bin=$1
-data="$(cd "$(dirname "$0")/../data" && pwd)"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+# bin, data, dir, fail, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
 columns='r,p,p1,f_p,minus_f_p,zone,slip_velocity'
 
@@ -106,5 +102,4 @@ expect_failure zone-late "zone switches" 'BEGIN { done = 0 } $6 == "slip" && !do
 expect_failure zone-name "zone \"" '$1 == "-0.5" { $6 = "sticky" } 1'
 expect_failure no-meta "comment line" '/^# Q = / { next } 1'
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

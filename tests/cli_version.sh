@@ -6,14 +6,8 @@
 # `#` lines name the scene, the method and n and explain every column.
 # Usage: cli_version.sh path/to/roughroll
 set -u
-bin=$1
-src="$(cd "$(dirname "$0")/.." && pwd)"
-data="$src/data"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-hang_guard=${ROUGHROLL_HANG_GUARD:-900}  # against hangs, not a speed limit (cli_expect.sh)
+# bin, src, data, dir, fail, hang_guard, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 
 version=$(head -n 1 "$src/VERSION")
 [[ $version =~ ^[0-9]+\.[0-9]+\.[0-9]+$ ]] || fail "VERSION holds '$version', not X.Y.Z"
@@ -82,5 +76,4 @@ curve_header "curve header (physical)" "$dir/physical.csv" "$data/steel-rollers.
 grep -q '^# SI: ' "$dir/physical.csv" || fail "curve header (physical): no '# SI:' line"
 grep -q '^# SI: ' "$dir/curve.csv" && fail "curve header: a '# SI:' line for a dimensionless scene"
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

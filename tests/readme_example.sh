@@ -13,15 +13,11 @@
 #             flags (sanitizers included)
 set -u
 [ $# -ge 2 ] || { echo "usage: $0 PROGRAM LIBRARY [CXX [CXXFLAGS]]" >&2; exit 2; }
-bin=$1
+# bin, src, dir, fail, finish (cli_lib.sh).
+source "$(dirname "$0")/cli_lib.sh"
 lib=$2
 cxx=${3:-c++}
 cxxflags=${4:-}
-src="$(cd "$(dirname "$0")/.." && pwd)"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 # --- The one ```cpp block of the README.
 awk '/^```cpp[[:space:]]*$/ { n++; inside = 1; next } /^```/ { inside = 0 } inside { print }
@@ -88,5 +84,4 @@ else
     fail "a missing file: status $status, stderr '$(cat "$dir/err")'"
 fi
 
-[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
-echo "all passed"
+finish
