@@ -180,22 +180,28 @@ TEST(HonestEstimates, StiffNormalLayerSlowsDown) {
 }
 
 namespace {
-// Whether contact c at its own n answers Q honestly: refused (resolution_error), or an estimate of
-// c0 and xi that is not below the distance to the reference, a value on which two finer routes
-// agree (the distance reduced by their own disagreement, so that only a true under-report fails).
-struct reference {
+// A point (roughness r, friction f, load Q) and its reference: c0 and xi of a finer route a, and
+// their distances to those of a second finer route b (the spread).
+struct referenced_point {
+    roughness r;
+    double f, Q;
     double c0, xi, spread_c0, spread_xi;
 };
-reference two_routes(const roughness& r, double f, double Q, solver_options a, solver_options b) {
+// r as roughness{{tangential, normal} of cylinder 1, {tangential, normal} of cylinder 2}, each
+// term {T, A} ({} is a smooth surface in that direction).
+referenced_point two_routes(const roughness& r, double f, double Q, solver_options a, solver_options b) {
     contact ca(r, f, a), cb(r, f, b);
     const tangential_solution sa = ca.point(Q), sb = cb.point(Q);
-    return {sa.c0, sa.xi, std::fabs(sa.c0 - sb.c0), std::fabs(sa.xi - sb.xi)};
+    return {r, f, Q, sa.c0, sa.xi, std::fabs(sa.c0 - sb.c0), std::fabs(sa.xi - sb.xi)};
 }
-bool honest_or_refused_at(const roughness& r, double f, double Q, solver_options o, const reference& ref) {
+// Whether the contact at options o answers the point honestly: refused (resolution_error), or an
+// estimate of c0 and xi that is not below the distance to the reference (the distance reduced by
+// the two routes' own disagreement, so that only a true under-report fails).
+bool honest_or_refused_at(const referenced_point& ref, solver_options o) {
     SCOPED_TRACE(to_string(o.how) + " at n = " + std::to_string(o.nodes()));
     try {
-        contact c(r, f, o);
-        const tangential_solution s = c.point(Q);
+        contact c(ref.r, ref.f, o);
+        const tangential_solution s = c.point(ref.Q);
         const std::optional<error_estimate> e = c.estimate(s);
         if (!e) {
             EXPECT_FALSE(s.checks.hold()) << "neither an estimate nor a refusal";
@@ -219,16 +225,12 @@ bool honest_or_refused_at(const roughness& r, double f, double Q, solver_options
 // 1 - c0) from the limit: the three levels read as "bounded" and level 2n must confirm them.
 // The estimate had been 3.3e-13 for extrapolated at n = 16.
 TEST(HonestEstimates, NearFullStickConfirmedOnAFourthLevel) {
-    roughness r;
-    r.cylinder1.normal = {0.411, 0.00071};
-    r.cylinder2.normal = {10.0, 0.3};
-    r.cylinder2.tangential = {0.001, 0.001};
-    const double f = 0.05, Q = 5e-11;
-    const reference ref =
-        two_routes(r, f, Q, solver_options{768, method::product}, solver_options{512, method::extrapolated});
+    const referenced_point ref = two_routes(roughness{{{}, {0.411, 0.00071}}, {{0.001, 0.001}, {10.0, 0.3}}}, 0.05,
+                                            5e-11, solver_options{768, method::product},
+                                            solver_options{512, method::extrapolated});
     EXPECT_LT(ref.spread_c0, 1e-13);
-    honest_or_refused_at(r, f, Q, solver_options{16, method::extrapolated}, ref);
-    for (int n : {16, 32, 64}) honest_or_refused_at(r, f, Q, solver_options{n, method::product}, ref);
+    honest_or_refused_at(ref, solver_options{16, method::extrapolated});
+    for (int n : {16, 32, 64}) honest_or_refused_at(ref, solver_options{n, method::product});
 }
 
 // Issue 23, 1: the one-parameter limit at its default n = 128 with thin layers (2T/A^2 = 0.002):
@@ -236,12 +238,10 @@ TEST(HonestEstimates, NearFullStickConfirmedOnAFourthLevel) {
 // 1.2e-8 at 256), so 32, 64, 128 read as order 2 with an estimate of 1.4e-8, 11 times below the
 // error. Level 2n confirms every one-parameter estimate. References: n = 768 and 512.
 TEST(HonestEstimates, OneParameterConfirmedOnAFourthLevel) {
-    roughness r;
-    r.cylinder1.normal = r.cylinder1.tangential = {0.001, 1.0};
-    const double f = 0.3, Q = 0.15;
-    const reference ref =
-        two_routes(r, f, Q, solver_options{768, method::one_parameter}, solver_options{512, method::one_parameter});
-    for (int n : {64, 128, 256}) honest_or_refused_at(r, f, Q, solver_options{n, method::one_parameter}, ref);
+    const referenced_point ref = two_routes(roughness{{{0.001, 1.0}, {0.001, 1.0}}, {}}, 0.3, 0.15,
+                                            solver_options{768, method::one_parameter},
+                                            solver_options{512, method::one_parameter});
+    for (int n : {64, 128, 256}) honest_or_refused_at(ref, solver_options{n, method::one_parameter});
 }
 
 // Issue 23, 1: a point whose checks fail had carried an estimate as if it bounded its error (the
@@ -274,25 +274,15 @@ TEST(HonestEstimates, FlaggedPointSaysWhyItHasNoEstimate) {
 // so Richardson's value moves away from the limit (error 6.3e-14 against an estimate of 5.0e-14,
 // its shift from level 32): its estimate is twice the shift.
 TEST(HonestEstimates, RandomSceneUnderReports) {
-    {
-        roughness r;
-        r.cylinder1.tangential = {27.28, 0.1198};
-        r.cylinder1.normal = {0.0236, 0.7614};
-        const double f = 0.114, Q = 0.11399999999863202;
-        const reference ref = two_routes(r, f, Q, solver_options{512, method::product, zone_search::general},
-                                         solver_options{256, method::extrapolated, zone_search::general});
-        honest_or_refused_at(r, f, Q, solver_options{16, method::paper, zone_search::general}, ref);
-    }
-    {
-        roughness r;
-        r.cylinder1.tangential = {0.01045, 0.02533};
-        r.cylinder2.tangential = {0.006697, 1.974};
-        r.cylinder2.normal = {0.00266, 0.003794};
-        const double f = 0.1055, Q = 0.0001459065;
-        const reference ref =
-            two_routes(r, f, Q, solver_options{512, method::product}, solver_options{256, method::extrapolated});
-        EXPECT_TRUE(honest_or_refused_at(r, f, Q, solver_options{32, method::extrapolated}, ref));
-    }
+    const referenced_point paper_16 =
+        two_routes(roughness{{{27.28, 0.1198}, {0.0236, 0.7614}}, {}}, 0.114, 0.11399999999863202,
+                   solver_options{512, method::product, zone_search::general},
+                   solver_options{256, method::extrapolated, zone_search::general});
+    honest_or_refused_at(paper_16, solver_options{16, method::paper, zone_search::general});
+    const referenced_point extrapolated_32 =
+        two_routes(roughness{{{0.01045, 0.02533}, {}}, {{0.006697, 1.974}, {0.00266, 0.003794}}}, 0.1055,
+                   0.0001459065, solver_options{512, method::product}, solver_options{256, method::extrapolated});
+    EXPECT_TRUE(honest_or_refused_at(extrapolated_32, solver_options{32, method::extrapolated}));
 }
 
 // The one estimate rule (problems/point_estimate.hpp) on made-up levels of product integration at
@@ -397,24 +387,13 @@ TEST(HonestEstimates, FourthLevelConfirmsEveryQuantity) {
 // xi +- 6.7e-16, 1.1e-15 from both routes: the zone's root of Q(c0) = f + rho int q carries ulp(f),
 // which moves xi by eps f/(pi rho) (docs/formulation.md 7(d)), 4.4e-14 here.
 TEST(HonestEstimates, EstimateGridSeed2UnderReports) {
-    {
-        roughness r;
-        r.cylinder1.normal = {0.001466, 0.09828};
-        r.cylinder2.normal = {13.34, 0.1058};
-        const double f = 0.2675, Q = 1.0847125e-10;
-        const reference ref =
-            two_routes(r, f, Q, solver_options{1000, method::product}, solver_options{512, method::extrapolated});
-        EXPECT_LT(ref.spread_c0, 1e-13);
-        honest_or_refused_at(r, f, Q, solver_options{16, method::product}, ref);
-    }
-    {
-        roughness r;
-        r.cylinder1.tangential = {0.06776, 2.548};
-        r.cylinder2.tangential = {0.06183, 0.02073};
-        const double f = 0.01883, Q = 0.0188299999834296;
-        const reference ref =
-            two_routes(r, f, Q, solver_options{1000, method::product}, solver_options{512, method::extrapolated});
-        EXPECT_LT(ref.spread_xi, 1e-16);
-        EXPECT_TRUE(honest_or_refused_at(r, f, Q, solver_options{32, method::product}, ref));
-    }
+    const solver_options product_1000{1000, method::product}, extrapolated_512{512, method::extrapolated};
+    const referenced_point full_stick = two_routes(roughness{{{}, {0.001466, 0.09828}}, {{}, {13.34, 0.1058}}}, 0.2675,
+                                                   1.0847125e-10, product_1000, extrapolated_512);
+    EXPECT_LT(full_stick.spread_c0, 1e-13);
+    honest_or_refused_at(full_stick, solver_options{16, method::product});
+    const referenced_point gross_sliding = two_routes(roughness{{{0.06776, 2.548}, {}}, {{0.06183, 0.02073}, {}}},
+                                                      0.01883, 0.0188299999834296, product_1000, extrapolated_512);
+    EXPECT_LT(gross_sliding.spread_xi, 1e-16);
+    EXPECT_TRUE(honest_or_refused_at(gross_sliding, solver_options{32, method::product}));
 }
