@@ -54,7 +54,7 @@ roughness unequal_kernels() {  // data/unequal-kernels.toml
 struct solved {
     contact c;
     zone_solver zones;
-    solved(const roughness& r, int n) : c(r, f, solver_options{n, method::product}), zones(c.tangential()) {}
+    solved(const roughness& r, int n) : c(r, f, solver_options{n, method::product}), zones(c.tangential().zone_operator()) {}
 };
 
 double integrate(const std::function<double(double)>& g, double lo, double hi, double pole = NAN) {

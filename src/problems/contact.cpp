@@ -21,7 +21,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     const int n = options.nodes();
     if (options.how == method::one_parameter) {
         limit_ = std::make_unique<one_parameter_solver>(surfaces, f, n);
-        limit_zones_ = std::make_unique<one_parameter_zones>(*limit_);
+        limit_zones_ = std::make_unique<zone_solver>(limit_->zone_operator());
         return;
     }
     const bool extrapolate = options.how == method::extrapolated &&
@@ -41,7 +41,7 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     }
     tangential_ =
         std::make_unique<tangential_solver>(*normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f);
-    zones_ = std::make_unique<zone_solver>(*tangential_);
+    zones_ = std::make_unique<zone_solver>(tangential_->zone_operator());
     if (materials.beta_d != 0.0)
         dissimilar_ = std::make_unique<dissimilar_zones>(*tangential_, kernel::tangential(surfaces), materials.beta_d);
     if (materials.beta_d != 0.0 && materials.coupling == coupling_level::full)

@@ -34,7 +34,6 @@
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/one_parameter.hpp"
-#include "roughroll/problems/one_parameter_zones.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
@@ -201,7 +200,7 @@ private:
     // point at full coupling).
     dissimilar_zones& zones_of_point();
     std::unique_ptr<one_parameter_solver> limit_;          // method::one_parameter: the only solver
-    std::unique_ptr<one_parameter_zones> limit_zones_;     // its general search (docs/formulation.md 7(g))
+    std::unique_ptr<zone_solver> limit_zones_;            // its general search (docs/formulation.md 7(g))
     std::optional<tangential_solution> last_fine_;         // level n of the last extrapolated point
     std::optional<tangential_solution> last_coarse_;       // level n/2 of the last general-path point
     std::optional<tangential_solution> last_level_point_;  // level_point's cache

@@ -75,6 +75,11 @@ public:
     double traction(const tangential_solution& s, double r) const;       // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r) const;  // v(r), 0 on the stick zone
     traction_checks check(const tangential_solution& s) const;           // p >= 0, (3.3), (3.4)
+    // E = eps1 q'(start+) of a stick-zone solution: xi + f G(start) - H[q](-1), H[q](-1) =
+    // sum_j (-1)^j c_j (7(g)). The entry condition is E = 0; at start = -1, E <= 0 is (3.3).
+    double entry_velocity(const tangential_solution& s) const;
+    // The Glauert system as the one zone search's operator (zone_operators.cpp); refers to this solver.
+    stick_zone_operator zone_operator();
 
 private:
     tangential_solution solve_system(double c0);

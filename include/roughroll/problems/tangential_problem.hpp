@@ -42,7 +42,8 @@ struct traction_checks {
     bool hold() const { return pressure_holds && stick_holds && slip_holds; }
 };
 
-struct five_zone_solution;  // dissimilar_zones.hpp
+struct five_zone_solution;   // dissimilar_zones.hpp
+struct stick_zone_operator;  // stick_zone_operator.hpp
 
 struct tangential_solution {
     double Q;                   // P1/P2
@@ -164,6 +165,8 @@ public:
     traction_checks check(const tangential_solution& s);
     double pressure_margin();          // min p on the check grid, once per solver
     double rounding(double xi) const;  // the margins' rounding floor at the creep xi (7(d))
+    // The collocation of (4.4) as the one zone search's operator (zone_operators.cpp); refers to this solver.
+    stick_zone_operator zone_operator();
 
 private:
     tangential_solution solve_system(double c0, bool near = false);  // |Q| problem at c0 in (-1, 1]

@@ -10,7 +10,7 @@
 // in m (backward where that stays inside [-1, 1]) and -1e-6 in u; else -1e-7 rho in both. Steps halved
 // (damped_newton) to keep -1 < s_1 < c_1 < s_2 < ... < c_k <= 1; it stops after a full step whose size
 // (sum |dm| + rho |du|, or sum |dm| + |d rho|, in r) is below `tolerance`. Empty when it does not
-// converge. Shared by every zone search: zone_solver, one_parameter_zones, dissimilar_zones.
+// converge. Shared by every zone search: zone_solver (both operators), dissimilar_zones.
 #pragma once
 
 #include <functional>

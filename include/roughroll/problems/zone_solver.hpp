@@ -1,30 +1,31 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The tangential problem with the zone structure found, not assumed (docs/formulation.md,
-// section 7). The complementarity form of (3.2)-(3.4), for Q >= 0 (Q < 0 is the mirror):
+// section 7): one search, generic over the stick-zone operator (stick_zone_operator.hpp: the
+// collocation of (4.4), the Glauert system of the one-parameter limit). The complementarity form
+// of (3.2)-(3.4), for Q >= 0 (Q < 0 is the mirror):
 //   stick zone:  v = xi - L1[p1] = 0,          |p1| <= f p                     (3.2), (3.3)
 //   slip zone:   p1 = f p sgn v,               v != 0                          (3.4), (3.15)
 //   int p1 = Q                                                                 (3.13)
-// The structures solved, at the order of the product-integration scheme (4.4):
-//   - the paper's: stick [-1, c0], slip (c0, 1]: tangential_solver::solve, the fast path;
+// The structures solved:
+//   - the paper's: stick [-1, c0], slip (c0, 1]: the operator's paper_zone, the fast path;
 //   - slip [-1, s), stick [s, c0], slip (c0, 1], both slip zones in the direction of Q: the
 //     structure when the paper's zone would carry |p1| > f p at its leading end (section
-//     7(c)). On the stick zone p1 = f p + q with q = psi(t) sqrt(1 - t^2) and
-//       L1[q](r) = xi + f G(r),  r = s + rho (t + 1),  rho = (c0 - s)/2,  rho int q = Q - f
-//     (tangential_solver::solve_on_zone), plus the entry condition of 7(b), psi(t = -1) = 0:
-//     the traction reaches the bound f p smoothly where material enters the stick zone;
+//     7(c), 7(g)). On the stick zone p1 = f p + q, the operator's equation with the right side
+//     xi + f G(r), rho int q = Q - f, plus its entry condition (psi(-1) = 0 of 7(b), v(s-) = 0 of
+//     7(g)): the traction reaches the bound f p where material enters the stick zone;
 //   - gross sliding |Q| = f (gross_sliding.hpp, 7(d)).
-// (s, c0) solve Q(s, c0) = |Q| and psi_{s,c0}(-1) = 0 along the zones carrying |Q| (zone_family.hpp).
-// Other structures (slip against Q, several stick zones) are refused (resolution_error), and an
-// answer of the wrong structure fails the checks (zone_checks.hpp); zones = "auto" then keeps the
-// single zone.
+// (s, c0) solve Q(s, c0) = |Q| and E(s, c0) = 0 along the zones carrying |Q| (zone_family.hpp):
+// the paper's zone first (E <= 0 at s = -1 is the edge inequality), then near gross sliding the
+// operator's model zone, then Newton from a coarse level's zone, then a scan of trial starts and
+// the bracket it ends on. Other structures (slip against Q, several stick zones) are refused
+// (resolution_error), and an answer of the wrong structure fails the checks (zone_checks.hpp);
+// zones = "auto" then keeps the single zone.
 #pragma once
 
 #include <optional>
-#include <vector>
 
+#include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
-#include "roughroll/problems/zone_family.hpp"
-#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -35,9 +36,8 @@ struct zone_guess {
 
 class zone_solver {
 public:
-    // The tangential solver supplies G, the system (4.4) on any stick zone, the fast path, the
-    // tractions, slip velocities and checks of every structure; it must outlive this workspace.
-    explicit zone_solver(tangential_solver& single);
+    // The operator's functions refer to its solver, which must outlive this workspace.
+    explicit zone_solver(stick_zone_operator op);
 
     // The solution of the complementarity problem for the load Q, |Q| <= f: the single zone
     // when its checks hold, else the general search. `force_general` runs the search in any
@@ -45,20 +45,17 @@ public:
     // `guess`: a zone near the one sought, the start of a Newton iteration (7(e)).
     tangential_solution solve(double Q, bool force_general = false, std::optional<zone_guess> guess = std::nullopt);
 
-    // psi(t = -1) of a solution's stick zone: the coefficient of sqrt(1 + t) in q at its start.
+    // psi(t = -1) of a collocation solution's stick zone: the coefficient of sqrt(1 + t) in q at its
+    // start, the entry condition of 7(b).
     static double entry_coefficient(const tangential_solution& s);
 
 private:
-    // single_end: the fast path's c0 at this load, when it was solved (saves one search).
+    // single_end: the paper's zone's c0 at this load, when it was solved (saves one search).
     tangential_solution general(double magnitude, std::optional<zone_guess> guess, std::optional<double> single_end);
-    std::optional<tangential_solution> newton(double magnitude, double start, double c0);
-    std::optional<tangential_solution> continuation(double magnitude);  // from gross sliding, 7(e)
+    zone_newton_from newton(double magnitude);  // Newton in the zone ends at |Q| (zone_newton.hpp)
     tangential_solution gross_sliding();
-    zone_family family(double magnitude);  // the zones carrying |Q| = magnitude (zone_family.hpp)
-    double load_excess(const tangential_solution& t, double magnitude) const;  // Q - |Q|, without f's rounding
 
-    tangential_solver& single_;
-    double f_;
+    stick_zone_operator op_;
 };
 
 }  // namespace roughroll
