@@ -113,3 +113,37 @@ TEST(DenseSystem, SingularNearMatrixIsRefused) {
     for (std::size_t j = 0; j < order; ++j) gsl_matrix_set(s.matrix(), 1, j, gsl_matrix_get(s.matrix(), 0, j));
     EXPECT_THROW(s.solve_near("singular"), numerical_error);
 }
+
+// solve_factorised(): the matrix of the last solve() with a new right side, on its kept factors,
+// gives bit for bit the solution and rcond of a fresh factorisation of the same matrix (the smooth
+// tangential and normal problems of full coupling, whose matrices do not change between solves).
+// Once the matrix is asked for again (assembly), or after solve_near(), no factors are held.
+TEST(DenseSystem, FactorisedSolveIsTheFreshSolve) {
+    dense_system kept(order), fresh(order);
+    assemble(kept, 0.3);
+    EXPECT_FALSE(kept.holds_factors());
+    kept.solve("first");
+    ASSERT_TRUE(kept.holds_factors());
+    for (int k = 1; k <= 3; ++k) {
+        assemble(fresh, 0.3);
+        for (std::size_t i = 0; i < order; ++i) {
+            const double b = std::cos(1.7 * k * static_cast<double>(i)) + k;
+            gsl_vector_set(kept.rhs(), i, b);
+            gsl_vector_set(fresh.rhs(), i, b);
+        }
+        const std::vector<double> again = copy(kept.solve_factorised("again"));
+        const std::vector<double> lu = copy(fresh.solve("fresh"));
+        EXPECT_EQ(again, lu) << k;
+        EXPECT_EQ(kept.rcond(), fresh.rcond()) << k;
+    }
+    kept.matrix();
+    EXPECT_FALSE(kept.holds_factors());
+    EXPECT_THROW(kept.solve_factorised("assembled"), numerical_error);
+    assemble(kept, 0.3);
+    kept.solve("second");
+    kept.clear();
+    EXPECT_THROW(kept.solve_factorised("cleared"), numerical_error);
+    assemble(kept, 0.3);
+    kept.solve_near("near");
+    EXPECT_FALSE(kept.holds_factors());
+}

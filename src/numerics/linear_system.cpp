@@ -43,6 +43,7 @@ double max_row_sum(const gsl_matrix* a) {
 }  // namespace
 
 void dense_system::clear() {
+    in_place_ = false;
     gsl_matrix_set_zero(a_.get());
     gsl_vector_set_zero(b_.get());
 }
@@ -70,6 +71,7 @@ dense_system::refinement::refinement(std::size_t size)
 const gsl_vector* dense_system::solve(const std::string& context) {
     refined_ = false;
     factorised_ = false;
+    in_place_ = false;
     int signum = 0;
     gsl_check(gsl_linalg_LU_decomp(a_.get(), perm_.get(), &signum), context + ": LU decomposition");
     // Refining: the factorisation kept as near_->lu, the next matrix assembled in the other buffer.
@@ -79,12 +81,21 @@ const gsl_vector* dense_system::solve(const std::string& context) {
     if (!(rcond_ > singular_rcond)) refuse_singular(context, rcond_);
     gsl_check(gsl_linalg_LU_solve(lu, perm_.get(), b_.get(), x_.get()), context + ": LU solve");
     check_finite(x_.get(), context);
+    in_place_ = !near_;
     if (near_) {
         factor_rcond_ = rcond_;
         factorised_ = true;
         near_->inverse_valid = false;
         remember(x_.get());
     }
+    return x_.get();
+}
+
+const gsl_vector* dense_system::solve_factorised(const std::string& context) {
+    if (!in_place_) throw numerical_error(context + ": no factorisation of this matrix to reuse");
+    refined_ = false;
+    gsl_check(gsl_linalg_LU_solve(a_.get(), perm_.get(), b_.get(), x_.get()), context + ": LU solve");
+    check_finite(x_.get(), context);
     return x_.get();
 }
 

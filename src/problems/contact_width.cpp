@@ -143,6 +143,14 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
         const double lambda_H = F(1.0) + 1.0;
         return {a_H, a_H, lambda_H, s.P2 / lambda_H, 0};
     }
+    if (smooth(s)) {
+        // Full coupling of smooth rollers: the dimensionless problem depends on a only through the
+        // layers' T(a), A(a) (docs/formulation.md 8(e), "The width of a physical scene"), so without
+        // layers lambda does not vary with a, F(x) = lambda - x^2, and the root is x = sqrt(lambda):
+        // one coupled point (the secant polish from Johnson's root x = 1 took three).
+        const double lambda = F(1.0) + 1.0;
+        return {std::sqrt(lambda) * a_H, a_H, lambda, s.P2, 0};
+    }
     if (cheap_load_ratio) {
         // The cheap level first: its root is within the discretisation error of the scene's,
         // so that a few solves at the scene's method polish it. Any failure of the cheap level

@@ -50,19 +50,26 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
             "smooth rollers only");
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
-    system_.clear();
-    gsl_matrix* a = system_.matrix();
-    gsl_vector* rhs = system_.rhs();
-    // Rows 0..n: collocation (4.2). Columns 0..n-1: phi_k; n: gamma_0n; n+1: lambda.
-    add_cauchy_term(a, rule_);
     auto kernel_term = std::make_shared<const kernel_operator>(rule_, how_, k2.max_rate(), cache);
-    kernel_term->add_to(a, k2);
-    for (int m = 0; m <= n; ++m) {
-        gsl_matrix_set(a, m, n, 1.0);
-        gsl_matrix_set(a, m, n + 1, M_2_PI * rule_.collocation[m]);
+    // Without K2 (smooth normal compliance) the matrix does not depend on the solve: the factors of
+    // the last solve are kept, and the alternation of full coupling (8(e)) changes only the right side.
+    const bool same_matrix = k2.empty() && smooth_factors_ && system_.holds_factors();
+    gsl_vector* rhs = system_.rhs();
+    if (same_matrix) {
+        gsl_vector_set_zero(rhs);
+    } else {
+        system_.clear();
+        gsl_matrix* a = system_.matrix();
+        // Rows 0..n: collocation (4.2). Columns 0..n-1: phi_k; n: gamma_0n; n+1: lambda.
+        add_cauchy_term(a, rule_);
+        kernel_term->add_to(a, k2);
+        for (int m = 0; m <= n; ++m) {
+            gsl_matrix_set(a, m, n, 1.0);
+            gsl_matrix_set(a, m, n + 1, M_2_PI * rule_.collocation[m]);
+        }
+        // Row n+1: the load (4.3).
+        for (int k = 0; k < n; ++k) gsl_matrix_set(a, n + 1, k, rule_.weights[k]);
     }
-    // Row n+1: the load (4.3).
-    for (int k = 0; k < n; ++k) gsl_matrix_set(a, n + 1, k, rule_.weights[k]);
     // With p_q^0 (8(l) step 0): int sqrt(1 - r^2) phi = 1 - int p_q^0.
     gsl_vector_set(rhs, n + 1, explicit_kinks ? 1.0 - explicit_kinks->load() : 1.0);
     // (D1): the known beta_D p1 on the right side (docs/formulation.md 8(e) item 3), as its
@@ -77,7 +84,9 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
         for (int m = 0; m <= n; ++m) gsl_vector_set(rhs, m, -chebyshev_sum(c, rule_.collocation[m]));
     }
 
-    const gsl_vector* x = system_.solve("normal problem (4.2)-(4.3)");
+    const gsl_vector* x = same_matrix ? system_.solve_factorised("normal problem (4.2)-(4.3)")
+                                      : system_.solve("normal problem (4.2)-(4.3)");
+    smooth_factors_ = k2.empty();
     normal_solution s{rule_,
                       how_,
                       std::vector<double>(n),

@@ -91,10 +91,16 @@ tangential_solution tangential_solver::solve_zone(double start, double c0, doubl
     // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
     const double rho = 0.5 * (c0 - start);
     const auto& rule = normal_.rule;
-    gsl_matrix* a = system_.matrix();
+    // Without K1 (smooth tangential compliance) the matrix is the Cauchy part alone, the same for
+    // every zone: its factors are kept from the first solve, and each later solve (Newton's steps,
+    // the alternation of full coupling, 8(e)) changes only the right side (dense_system::solve_factorised).
+    const bool same_matrix = k1_.empty() && !near && system_.holds_factors();
+    if (!same_matrix) {
+        gsl_matrix* a = system_.matrix();
+        gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
+        k1_operator_->add_to(a, k1_.stretched(rho));  // E6
+    }
     gsl_vector* rhs = system_.rhs();
-    gsl_check(gsl_matrix_memcpy(a, cauchy_.get()), "tangential problem: copy of the Cauchy term");
-    k1_operator_->add_to(a, k1_.stretched(rho));  // E6
     std::vector<double> r(n_ + 1);
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
     const std::vector<double> g = G(r);
@@ -109,7 +115,9 @@ tangential_solution tangential_solver::solve_zone(double start, double c0, doubl
     if (start != -1.0) context << ", stick zone from " << start;
     // near: refined on the last factorisation when it converges (linear_system.hpp), the same
     // solution to rounding.
-    const gsl_vector* x = near ? system_.solve_near(context.str()) : system_.solve(context.str());
+    const gsl_vector* x = same_matrix ? system_.solve_factorised(context.str())
+                          : near      ? system_.solve_near(context.str())
+                                      : system_.solve(context.str());
 
     std::vector<double> psi(n_);
     double load = 0.0;

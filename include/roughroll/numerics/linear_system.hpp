@@ -32,7 +32,10 @@ public:
     explicit dense_system(std::size_t size);
 
     // The matrix to assemble before each solve (its contents are not kept by a solve).
-    gsl_matrix* matrix() { return a_.get(); }
+    gsl_matrix* matrix() {
+        in_place_ = false;  // about to be assembled: the factors it holds are gone
+        return a_.get();
+    }
     gsl_vector* rhs() { return b_.get(); }
     void clear();  // A = 0 and b = 0, for a system assembled by adding terms
 
@@ -42,6 +45,12 @@ public:
     // The same solution to rounding, by refinement on the last factorisation when it
     // converges (above), else by solve().
     const gsl_vector* solve_near(const std::string& context);
+    // The matrix of the last solve() again, with a new right side: its LU factors reused (two
+    // triangular solves, no factorisation; the same solution and rcond as solve() would give).
+    // Needs a last solve() whose factors nothing has overwritten since (no matrix() or clear(),
+    // no solve_near()); else numerical_error.
+    const gsl_vector* solve_factorised(const std::string& context);
+    bool holds_factors() const { return in_place_; }  // solve_factorised() may be called
 
     double rcond() const { return rcond_; }    // of the last solve (above)
     bool refined() const { return refined_; }  // whether the last solve was refined
@@ -74,6 +83,7 @@ private:
     double rcond_ = 0.0;         // of the last solve
     double factor_rcond_ = 0.0;  // of near_->lu's U
     bool factorised_ = false, refined_ = false;
+    bool in_place_ = false;  // a_ holds the factors of the last solve() (for solve_factorised)
 };
 
 }  // namespace roughroll

@@ -27,8 +27,9 @@ namespace roughroll {
 // outside (0, R/10], no convergence within 8 steps) falls back to the search above on
 // `load_ratio` alone, so the answer and every refusal are `load_ratio`'s.
 // `lambda_has_traction_term`: lambda holds the term in the tangential traction of full coupling
-// (docs/formulation.md 8(c)), so that a smooth pair is not at Hertz's width and is searched too;
-// else a smooth pair is Hertz's exactly (lambda = 1), with no solve.
+// (docs/formulation.md 8(c)), so that a smooth pair is not at Hertz's width: lambda then does not
+// vary with a (no layer), and a = a_H sqrt(lambda(a_H)), one solve; else a smooth pair is Hertz's
+// exactly (lambda = 1), with no solve.
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
                          const std::function<double(const roughness&)>& cheap_load_ratio = {},
                          bool lambda_has_traction_term = false);

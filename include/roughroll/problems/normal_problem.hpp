@@ -78,6 +78,7 @@ private:
     gauss_chebyshev rule_;
     method how_;
     dense_system system_;
+    bool smooth_factors_ = false;  // system_ holds the factors of the matrix without K2
 };
 
 // The smooth solution of Hertz, lambda = 1, phi = 2/pi, exact for every n.
