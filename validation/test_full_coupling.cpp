@@ -307,6 +307,33 @@ TEST(FullCouplingPhysical, WidthCarriesTheLoadAtTheCoupledLambda) {
     }
 }
 
+// A smooth pair's point (solve_point at a given n): the alternation that gives lambda for the width is
+// the point's own, not solved again. The checkpoint runs before each step of every alternation and
+// before each level's point (also one answered from the contact's cache): solve_point asks the
+// contact for its point twice (the width, then the point) and estimates it, and takes as many
+// checkpoints as the contact built apart at the width found asked the same (the program before
+// solved the width's point on a contact of its own: 4 levels' points and an alternation of 6 steps
+// more), with the same numbers bit for bit.
+TEST(FullCouplingPhysical, SmoothPairSolvesItsPointsAlternationOnce) {
+    const double Q = -0.75 * f;
+    int steps = 0;
+    const scene_point p = solve_point(pair(), Q, [&steps] { ++steps; });
+    ASSERT_TRUE(p.width && p.estimate);
+    int apart = 0;
+    contact c = at_width(pair(), p.width->a, coupling_level::full);
+    c.set_checkpoint([&apart] { ++apart; });
+    c.point(Q);
+    const tangential_solution s = c.point(Q);
+    const std::optional<error_estimate> e = c.estimate(s);
+    ASSERT_TRUE(e);
+    EXPECT_GT(apart, 0);
+    EXPECT_EQ(steps, apart);
+    EXPECT_EQ(p.solution.c0, s.c0);
+    EXPECT_EQ(p.solution.start, s.start);
+    EXPECT_EQ(p.solution.xi, s.xi);
+    EXPECT_EQ(p.estimate->c0, e->c0);
+}
+
 // lambda - 1 = -beta_D int p1 r/sqrt(1 - r^2) (8(c), smooth: no J term) with the coupled p1; with
 // Johnson's p1_J instead the remainder is beta_D int (p1 - p1_J) r/sqrt(...) = O(beta_D^2): halving
 // beta_D (a fictitious pair, the dimensionless contact) divides it by about 4 (3 to 5 allowed: the

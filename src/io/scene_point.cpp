@@ -85,6 +85,22 @@ namespace {
 contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
                         const std::function<void()>& checkpoint) {
     normal_cache cache;
+    if (width_follows_tangential_load(s) && smooth(*s.physical)) {
+        // Full coupling of a smooth pair: the dimensionless contact does not depend on the width
+        // (no layer; find_width takes a = a_H sqrt(lambda) from one coupled point), so the contact
+        // whose point gives lambda is the contact at the width found, its coupled point at Q kept.
+        contact c(s.surfaces, s.friction, s.solver, s.materials, &cache);
+        c.set_checkpoint(checkpoint);
+        width = find_width(
+            *s.physical,
+            [&c, Q](const roughness&) {
+                c.point(Q);
+                return c.normal().lambda;
+            },
+            {}, true);
+        s.surfaces = roughness_at(*s.physical, width->a);
+        return c;
+    }
     width = settle_width(s, &cache, Q, checkpoint);
     contact c(s.surfaces, s.friction, s.solver, s.materials, &cache);
     c.set_checkpoint(checkpoint);
