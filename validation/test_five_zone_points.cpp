@@ -18,6 +18,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "aluminium_on_steel.hpp"
+#include "command_output.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 using namespace roughroll;
@@ -31,13 +32,8 @@ struct run_result {
 run_result run_point(double Q, const char* scene = "aluminium-on-steel.toml", int n = 32) {
     const std::string command = std::string(ROUGHROLL_CLI) + " point " + ROUGHROLL_DATA + "/" + scene + " --n " +
                                 std::to_string(n) + " --Q " + std::to_string(Q) + " --json";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) throw std::runtime_error("popen failed");
-    std::string text;
-    char buffer[4096];
-    while (const std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, got);
-    const int status = pclose(pipe);
-    return {status, text.empty() ? nlohmann::json{} : nlohmann::json::parse(text)};
+    const command_output o = run_command(command);
+    return {o.status, o.text.empty() ? nlohmann::json{} : nlohmann::json::parse(o.text)};
 }
 
 void agrees(double Q) {

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aluminium_on_steel.hpp"
+#include "command_output.hpp"
 #include "roughroll/problems/contact.hpp"
 
 namespace {
@@ -32,14 +33,9 @@ run_result run_point(double f, const std::string& options = "", bool json = true
     const std::string command = std::string(ROUGHROLL_CLI) + " point " + ROUGHROLL_DATA +
                                 "/aluminium-on-steel.toml --Q 0 --friction " + friction + " " + options +
                                 (json ? " --json" : "") + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) throw std::runtime_error("popen failed");
-    std::string text;
-    char buffer[4096];
-    while (const std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, got);
-    const int status = pclose(pipe);
-    run_result r{status, text, {}};
-    if (json && status == 0) r.out = nlohmann::json::parse(text);
+    const command_output o = run_command(command);
+    run_result r{o.status, o.text, {}};
+    if (json && o.status == 0) r.out = nlohmann::json::parse(o.text);
     return r;
 }
 
