@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The validation tests that run the command line: a command's exit status and its whole output.
+#pragma once
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+struct command_output {
+    int status;  // pclose's, as from system(3)
+    std::string text;
+};
+
+inline command_output run_command(const std::string& command) {
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) throw std::runtime_error("popen failed: " + command);
+    std::string text;
+    char buffer[4096];
+    while (const std::size_t got = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, got);
+    return {pclose(pipe), text};
+}
