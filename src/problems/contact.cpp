@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/base/error.hpp"
@@ -196,13 +197,20 @@ const coupling_summary* contact::coupling() const { return coupled_load_ ? &coup
 
 dissimilar_zones& contact::zones_of_point() { return coupled_load_ ? coupled_->zones() : *dissimilar_; }
 
+namespace {
+// Free rolling of smooth rollers at Johnson's level (docs/formulation.md 8(n)): the bound of its edge
+// layers' effect on xi relative to the no-slip creep; none for any other point.
+std::optional<double> layers_relative_bound(double Q, bool coupled, const roughness& surfaces, double beta_d, double f) {
+    if (Q != 0.0 || coupled || !kernel::normal(surfaces).empty() || !kernel::tangential(surfaces).empty())
+        return std::nullopt;
+    return no_slip_layers(beta_d, f).xi_bound / std::fabs(no_slip_creep(beta_d));
+}
+}  // namespace
+
 bool contact::layers_negligible(double Q) const {
-    // Free rolling of smooth rollers at Johnson's level whose edge layers move xi by less than the
-    // tolerance (docs/formulation.md 8(n)): the no-slip solution with the layers neglected answers it.
-    if (Q != 0.0 || coupled_ || !kernel::normal(surfaces_).empty() || !kernel::tangential(surfaces_).empty())
-        return false;
-    const double tolerance = options_.tolerance.value_or(default_tolerance);
-    return no_slip_layers(materials_.beta_d, f_).xi_bound <= tolerance * std::fabs(no_slip_creep(materials_.beta_d));
+    // Layers that move xi by less than the tolerance: the no-slip solution with them neglected answers.
+    const std::optional<double> relative = layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
+    return relative && *relative <= options_.tolerance.value_or(default_tolerance);
 }
 
 tangential_solution contact::dissimilar_point(double Q) {
@@ -216,11 +224,10 @@ tangential_solution contact::dissimilar_point(double Q) {
     } catch (const resolution_error& why) {
         // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
         // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
-        const double relative =
-            no_slip_layers(materials_.beta_d, f_).xi_bound / std::fabs(no_slip_creep(materials_.beta_d));
-        if (Q != 0.0 || coupled_ || !kernel::normal(surfaces_).empty() || !kernel::tangential(surfaces_).empty() ||
-            !(relative < 0.5))
-            throw;
+        const std::optional<double> bound =
+            layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
+        if (!bound || !(*bound < 0.5)) throw;
+        const double relative = *bound;
         const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
         char up[32];  // two digits, rounded up
         std::snprintf(up, sizeof up, "%.2g", std::ceil(relative / unit) * unit);
