@@ -259,7 +259,7 @@ expect coupling-full-physical-sweep "a curve swept in c0" -- curve "$dir/pairful
 expect beta-one-parameter "not available for method 'one-parameter'" -- point "$dir/betaoneparam.toml"
 expect beta-zones-single "zones 'single' with beta_d != 0" -- point "$dir/betasingle.toml"
 scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"
-expect beta-sweep "a curve swept in c0" -- curve "$dir/betafree.toml" --sweep --points 3
+expect beta-sweep "solve the curve at given loads instead: curve without --sweep" -- curve "$dir/betafree.toml" --sweep --points 3
 # (A zone below the resolution is refused only after a solve: validate_five_zone_points tests it,
 # without a wall-clock limit. Every row here is refused before any solve.)
 # "increase n" only where a larger n can help (issue 23): kernels that no n up to 1000 resolves at n/2.

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <sstream>
+#include <string>
 
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/base/error.hpp"
@@ -205,7 +207,51 @@ std::optional<double> layers_relative_bound(double Q, bool coupled, const roughn
         return std::nullopt;
     return no_slip_layers(beta_d, f).xi_bound / std::fabs(no_slip_creep(beta_d));
 }
+
+// The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
+// would be neglected; empty where the bound is no use (half of xi or more).
+std::string layers_tolerance_advice(double relative) {
+    if (!(relative < 0.5)) return {};
+    const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
+    char up[32];
+    std::snprintf(up, sizeof up, "%.2g", std::ceil(relative / unit) * unit);
+    return std::string("a tolerance of ") + up +
+           " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge layers "
+           "neglected (docs/formulation.md 8(n))";
+}
+
+// The relative change of the five zones' leading layer 1 + s1 between levels n/2 and n, bounded below
+// (docs/formulation.md 8(n), "Beyond every n"): at Q = 0 the layers scale with t_c and sit at the
+// main zone's ends, where the collocation's nodes are spaced as 1/n^2, so the change is a function of
+// x = t_c n^2 alone, measured 3 exp(-0.57 sqrt(x)) to within 10 % for x from 36 to 555 (and larger
+// below 36); a tenth of it, and nothing beyond the measured range.
+constexpr double layer_change_measured_to = 555.0;
+double layer_change_lower_bound(double x) {
+    return x <= layer_change_measured_to ? 0.3 * std::exp(-0.57 * std::sqrt(x)) : 0.0;
+}
 }  // namespace
+
+std::optional<std::string> contact::beyond_every_n(double Q, int top, double tolerance) const {
+    // Free rolling of smooth rollers at Johnson's level whose layers the tolerance does not neglect:
+    // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
+    // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
+    const std::optional<double> bound = layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
+    if (!bound || *bound <= tolerance) return std::nullopt;
+    const double crossing = no_slip_layers(materials_.beta_d, f_).crossing;
+    const double x = crossing * top * top;
+    const double change = layer_change_lower_bound(x);
+    if (!(change > tolerance)) return std::nullopt;
+    std::ostringstream msg;
+    msg.precision(2);
+    msg << "no n up to " << top << " meets the tolerance " << shortest(tolerance)
+        << " (relative) for free rolling of these rollers at f = " << shortest(f_) << ": its edge layers, about "
+        << crossing << " of the half-width, are too thin (at n = " << top
+        << " the five zones' leading layer still changes by more than " << change
+        << " of itself from n = " << top / 2 << ", docs/formulation.md 8(n))";
+    const std::string advice = layers_tolerance_advice(*bound);
+    if (!advice.empty()) msg << "; " << advice;
+    return msg.str();
+}
 
 bool contact::layers_negligible(double Q) const {
     // Layers that move xi by less than the tolerance: the no-slip solution with them neglected answers.
@@ -226,14 +272,9 @@ tangential_solution contact::dissimilar_point(double Q) {
         // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
         const std::optional<double> bound =
             layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
-        if (!bound || !(*bound < 0.5)) throw;
-        const double relative = *bound;
-        const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
-        char up[32];  // two digits, rounded up
-        std::snprintf(up, sizeof up, "%.2g", std::ceil(relative / unit) * unit);
-        throw resolution_error(std::string(why.what()) + "; a tolerance of " + up +
-                               " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge "
-                               "layers neglected (docs/formulation.md 8(n))");
+        const std::string advice = bound ? layers_tolerance_advice(*bound) : std::string();
+        if (advice.empty()) throw;
+        throw resolution_error(std::string(why.what()) + "; " + advice);
     }
 }
 

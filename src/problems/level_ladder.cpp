@@ -142,6 +142,18 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
 }
 
 level_ladder::answer level_ladder::point(double Q, std::size_t from) {
+    // A point that no rung can answer, as the first rung's contact that can be built tells before any
+    // solve: refused at once. (A rung that cannot be built is refused by the climb as before.)
+    for (std::size_t i = from; i < rungs_.size(); ++i) {
+        std::optional<std::string> why;
+        try {
+            why = at(rungs_[i]).beyond_every_n(Q, rungs_.back(), tolerance_);
+        } catch (const resolution_error&) {
+            continue;
+        }
+        if (why) throw resolution_error(*why);
+        break;
+    }
     return climb(
         [Q](contact& c, int n) {
             tangential_solution s = c.point(Q);

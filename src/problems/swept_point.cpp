@@ -22,8 +22,10 @@ tangential_solution contact::level_at_stick_end(double c0, bool checked, bool ne
 void check_sweepable(const dissimilar& materials) {
     if (materials.beta_d != 0.0)
         throw input_error(
-            "a curve swept in c0 is the paper's single zone, never the answer for beta_d != 0 "
-            "(docs/formulation.md 8(g)); solve at given loads instead");
+            "a curve swept in c0 (--sweep, Python sweep=True) is not available for beta_d != 0: c0 ends the paper's "
+            "stick zone from the leading edge, which dissimilar rollers never have, and their five zones near free "
+            "rolling have no single end to sweep (docs/formulation.md 8(g), 8(j) item 10); solve the curve at given "
+            "loads instead: curve without --sweep (Python sweep=False) takes --points loads from -f to f");
 }
 
 contact::swept_point contact::at_stick_end(double c0) {

@@ -98,6 +98,12 @@ public:
     // for n >= 8).
     std::optional<error_estimate> estimate(const tangential_solution& s);
 
+    // Why no n up to `top` can answer the point at Q within the relative `tolerance` (the ladder's,
+    // problems/level_ladder.hpp), decided before any solve: one line saying what to change; empty
+    // where a rung may answer. Free rolling of smooth rollers at Johnson's level whose edge layers are
+    // too thin for n = top (docs/formulation.md 8(n), "Beyond every n").
+    std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const;
+
     // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone) for a
     // solution d of this contact as returned by distribution(), for every method.
     double traction(const tangential_solution& d, double r);
