@@ -237,6 +237,7 @@ std::optional<std::string> contact::beyond_every_n(double Q, int top, double tol
     // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
     const std::optional<double> bound = layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
     if (!bound || *bound <= tolerance) return std::nullopt;
+    if (level_method() != method::product) return std::nullopt;  // the law was measured on product integration
     const double crossing = no_slip_layers(materials_.beta_d, f_).crossing;
     const double x = crossing * top * top;
     const double change = layer_change_lower_bound(x);
