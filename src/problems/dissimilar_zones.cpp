@@ -15,6 +15,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
@@ -190,6 +191,16 @@ double dissimilar_zones::H(double r, double start, double c0) const {
     return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt(1.0 - t * t));
 }
 
+const blended_cauchy* dissimilar_zones::blend_of(double start, double c0) {
+    // The last few zones' W (five zones alternate two; Newton's steps move both), made once per zone.
+    for (const auto& [s, c, w] : blends_)
+        if (s == start && c == c0) return w ? &*w : nullptr;
+    if (blends_.size() == 4) blends_.erase(blends_.begin());
+    blends_.push_back({start, c0, blended_cauchy::make(pressure_b_, start, c0)});
+    const auto& w = std::get<2>(blends_.back());
+    return w ? &*w : nullptr;
+}
+
 double dissimilar_zones::W(double r, double start, double c0) {
     // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta,
     // g = p H (zero on [-1, s)). Inside (s, 1) the Cauchy part is taken with g(r) subtracted,
@@ -221,9 +232,16 @@ double dissimilar_zones::W(double r, double start, double c0) {
     //   PV int_a^1 sqrt(1 - eta)/(eta - r) d eta = int_0^U 2 u^2/(d^2 - u^2) du = -2 U + d log((U + d)/(U - d)).
     // The pieces below a (r outside them) carry no subtraction. p at eta near 1 from sqrt((1 - eta)(1 + eta)),
     // exact for the node eta, where 1 - eta^2 loses 1 - eta's digits.
+    // The Cauchy part of a pressure that is its U-series alone (no kinks carried) as a mean of steps in closed
+    // form (blended_cauchy, docs/formulation.md 8(g) "W of the blend as a mean of steps"); the adaptive quadrature
+    // below where that declines (a zone at an edge, the kinks).
+    const blended_cauchy* blend = pressure_kinks_ ? nullptr : blend_of(start, c0);
+    const std::optional<double> cauchy = blend ? (*blend)(r) : std::nullopt;
     const double a = points[points.size() - 2];
     double w = 0.0;
-    if (inside && !(1.0 - r > apart) && r - a > apart) {
+    if (cauchy) {
+        w = *cauchy;
+    } else if (inside && !(1.0 - r > apart) && r - a > apart) {
         const auto edge_pressure = [&](double eta) {
             if (!(eta < 1.0)) return 0.0;
             return pressure_table_ ? (*pressure_table_)(eta)

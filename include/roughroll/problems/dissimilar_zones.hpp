@@ -35,12 +35,14 @@
 
 #include <functional>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/model/kernel.hpp"
 
 #include "roughroll/model/dissimilar.hpp"
+#include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -183,6 +185,7 @@ private:
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
+    const blended_cauchy* blend_of(double start, double c0);  // W's Cauchy part on the zone, null: adaptive
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
@@ -197,6 +200,7 @@ private:
     std::optional<u_series_table> pressure_table_;
     std::shared_ptr<const pressure_kinks> pressure_kinks_;  // the normal solution's (null but at full coupling)
     integration_workspace_ptr workspace_;
+    std::vector<std::tuple<double, double, std::optional<blended_cauchy>>> blends_;  // blend_of's last zones
 };
 
 }  // namespace roughroll
