@@ -30,6 +30,7 @@ constexpr int start_scan = 32;           // trial starts of the stick zone
 constexpr int least_samples = 2001;      // samples of b p + f G for its least value (gross sliding)
 constexpr int shape_samples = 2001;      // samples of p for "even and decreasing" (complete slip)
 constexpr int newton_iterations = 40;
+constexpr std::size_t traction_memo_size = 1 << 16;  // points of traction's memo before it starts again
 constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
 // W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
 // integrands' 3/2-power ends and the sqrt at r = 1 analytic): tolerances, and the error GSL's own
@@ -434,7 +435,18 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
 }
 
 double dissimilar_zones::traction(const tangential_solution& s, double r) {
-    if (s.five) return traction(*s.five, r);
+    if (s.five) {
+        // Full coupling asks the previous iterate's p1 at the same points again and again (G of every zone solve
+        // and slip velocity of a five-zone system, 8(e)): each value once per point (the same value, bit for bit).
+        // The memo holds the solution it is for, so that its address is not another's while it is kept.
+        if (tractions_of_ != s.five || tractions_.size() > traction_memo_size) {
+            tractions_of_ = s.five;
+            tractions_.clear();
+        }
+        const auto [at, fresh] = tractions_.try_emplace(r, 0.0);
+        if (fresh) at->second = traction(*s.five, r);
+        return at->second;
+    }
     if (s.layers_neglected) return no_slip_traction(beta_d_, r);  // 8(n)
     // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
     const double t = solver_.traction(s, r);

@@ -36,6 +36,7 @@
 #include <functional>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "roughroll/base/gsl_handles.hpp"
@@ -201,6 +202,8 @@ private:
     std::shared_ptr<const pressure_kinks> pressure_kinks_;  // the normal solution's (null but at full coupling)
     integration_workspace_ptr workspace_;
     std::vector<std::tuple<double, double, std::optional<blended_cauchy>>> blends_;  // blend_of's last zones
+    std::shared_ptr<const five_zone_solution> tractions_of_;  // traction's memo of a five-zone solution's p1
+    std::unordered_map<double, double> tractions_;
 };
 
 }  // namespace roughroll
