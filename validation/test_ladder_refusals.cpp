@@ -107,6 +107,15 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
     EXPECT_TRUE(c.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     EXPECT_FALSE(c.beyond_every_n(0.0, 1000, 1e-3).has_value());  // the layers neglected answer
     EXPECT_FALSE(c.beyond_every_n(0.05, 1000, default_tolerance).has_value());  // Q != 0: not this structure
+    // beta_D = 0: the paper's free rolling has no edge layers (it had been refused, the crossing being 0).
+    for (const double f : {0.05, 0.3, 0.5}) {
+        contact similar(roughness{}, f, solver_options{128});
+        EXPECT_FALSE(similar.beyond_every_n(0.0, 1000, default_tolerance).has_value()) << f;
+        EXPECT_FALSE(similar.beyond_every_n(0.0, 1000, 1e-9).has_value()) << f;
+    }
+    level_ladder paper_problem(solver_options{}, roughness{},
+                               [](int n) { return std::make_unique<contact>(roughness{}, 0.3, solver_options{n}); });
+    EXPECT_EQ(paper_problem.point(0.0).solution.c0, 1.0);  // full stick, answered at the first rung
     contact rough(roughness{{{1.0, 0.5}, {}}, {}}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_FALSE(rough.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     contact full(roughness{}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::full});

@@ -235,6 +235,7 @@ std::optional<std::string> contact::beyond_every_n(double Q, int top, double tol
     // Free rolling of smooth rollers at Johnson's level whose layers the tolerance does not neglect:
     // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
     // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
+    if (!dissimilar_) return std::nullopt;  // beta_D = 0: the paper's problem, no edge layers
     const std::optional<double> bound = layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
     if (!bound || *bound <= tolerance) return std::nullopt;
     if (level_method() != method::product) return std::nullopt;  // the law was measured on product integration
