@@ -125,6 +125,7 @@ struct curve_columns {
     std::vector<double> c0_error, xi_error, Q_error;
     std::vector<int> zones;                   // the number of stick and slip zones (formulation section 7)
     std::vector<double> stick_start;          // the start of the stick zone, -1 in the paper's structure
+    std::vector<std::string> zone_path;       // single, general or no-slip (the layout's route); "" when refused
     std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
     std::vector<int> n;                       // each row's n (the ladder's rung; 0 for a refused row)
     std::vector<std::string> status;          // "ok" or "refused"
@@ -165,8 +166,9 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.xi_error.push_back(row.estimate ? row.estimate->xi : nan);
         out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
         out.zones.push_back(
-            row.is_refused() ? 0 : static_cast<int>(zones_of(t).size()));  // five for two stick zones, as the CSV
+            row.is_refused() ? 0 : static_cast<int>(t.layout.zones.size()));  // five for two stick zones, as the CSV
         out.stick_start.push_back(t.start);
+        out.zone_path.push_back(row.is_refused() ? "" : to_string(t.layout.route));
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         out.n.push_back(c.nodes[i]);
         if (row.is_refused()) {
@@ -318,6 +320,7 @@ void bind_scene(py::module_& m) {
                 d["Q_error_estimate"] = array_of(c.Q_error);
                 d["zones"] = py::array_t<int>(static_cast<py::ssize_t>(c.zones.size()), c.zones.data());
                 d["stick_start"] = array_of(c.stick_start);
+                d["zone_path"] = c.zone_path;  // a NumPy array of str in roughroll.Scene.curve
                 d["n"] = py::array_t<int>(static_cast<py::ssize_t>(c.n.size()), c.n.data());
                 d["status"] = c.status;     // a NumPy array of str in roughroll.Scene.curve
                 d["_refused"] = c.refused;  // warned by roughroll.Scene.curve

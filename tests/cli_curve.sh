@@ -39,7 +39,7 @@ while IFS=, read -r Q Qf rest; do
         refused=$((refused + 1))
         [ "$state" = refused ] || fail "Q = $Q: refused alone, '$state' on the curve"
         # c0, xi, xi_over_f, checks_hold .. stick_start: empty (never a plausible number).
-        for name in c0 xi xi_over_f checks_hold c0_error_estimate xi_error_estimate zones stick_start; do
+        for name in c0 xi xi_over_f checks_hold c0_error_estimate xi_error_estimate zones stick_start zone_path; do
             k=$(column "$name")
             [ -z "$(echo "$row" | cut -d, -f"$k")" ] || fail "Q = $Q refused but $name = $(echo "$row" | cut -d, -f"$k")"
         done
@@ -94,6 +94,23 @@ data_lines "$dir/out"
 [ "$status" -eq 0 ] || fail "clean curve: exit status $status"
 [ -s "$dir/err" ] && fail "clean curve: stderr $(cat "$dir/err")"
 [ "$(tail -n +2 "$dir/out" | grep -c ',ok$')" -eq 5 ] || fail "clean curve: not every row ok"
+
+# --- Each row's zone_path, as the point's (docs/formulation.md 7(i)): aluminium on steel at f = 5, Q/f = -1, 0, 1.
+# Free rolling is answered with its edge layers neglected (8(n)): the row says no-slip, as the point does;
+# the paper's smooth rollers say single.
+timeout "$hang_guard" "$bin" curve "$data/aluminium-on-steel.toml" --friction 5 --points 3 >"$dir/out" 2>"$dir/err" ||
+    fail "zone_path: the curve failed: $(cat "$dir/err")"
+data_lines "$dir/out"
+k=$(column zone_path)
+[ -n "$k" ] || fail "zone_path: no such column: $(head -1 "$dir/out")"
+[ "$(tail -n +2 "$dir/out" | cut -d, -f"$k" | tr '\n' ' ')" = "general no-slip general " ] ||
+    fail "zone_path: rows $(tail -n +2 "$dir/out" | cut -d, -f"$k" | tr '\n' ' '), expected general no-slip general"
+timeout "$hang_guard" "$bin" point "$data/aluminium-on-steel.toml" --friction 5 --Q 0 --json >"$dir/pout" 2>"$dir/perr" ||
+    fail "zone_path: the point failed: $(cat "$dir/perr")"
+grep -q '"zone_path": "no-slip"' "$dir/pout" || fail "zone_path: the point at Q = 0 is not no-slip"
+timeout "$hang_guard" "$bin" curve "$data/fig2a-T1.toml" --points 3 >"$dir/out" 2>"$dir/err" || fail "zone_path: Fig. 2a failed"
+data_lines "$dir/out"
+[ "$(tail -n +2 "$dir/out" | cut -d, -f"$(column zone_path)" | sort -u)" = single ] || fail "zone_path: Fig. 2a rows not single"
 
 # --- Bad input still aborts at once: exit 2, one line, nothing written.
 timeout "$hang_guard" "$bin" curve "$dir/stiff.toml" --points 1 --csv "$dir/bad.csv" >"$dir/out" 2>"$dir/err"

@@ -273,11 +273,12 @@ TEST(Curve, CsvMarksRefusedRows) {
         if (curve[i].is_refused()) {
             EXPECT_EQ(r.back(), "refused");
             for (const char* name : {"c0", "xi", "xi_over_f", "checks_hold", "c0_error_estimate", "xi_error_estimate",
-                                     "Q_error_estimate", "zones", "stick_start"})
+                                     "Q_error_estimate", "zones", "stick_start", "zone_path"})
                 EXPECT_EQ(r[column(name)], "") << name;
         } else {
             EXPECT_EQ(r.back(), "ok");
             EXPECT_EQ(r[column("xi")], shortest(curve[i].solution.xi));
+            EXPECT_EQ(r[column("zone_path")], "single");  // the paper's zone (docs/formulation.md 7(i))
         }
     }
 }
@@ -301,21 +302,21 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
     std::string line;
     std::getline(in, line);
     const std::vector<std::string> header = split(line);
-    ASSERT_EQ(header.size(), 18u);
-    ASSERT_EQ(header[13], "P1_N_per_m");
-    ASSERT_EQ(header[16], "n");  // each row's n (empty: not given to write_curve_csv)
+    ASSERT_EQ(header.size(), 19u);
+    ASSERT_EQ(header[14], "P1_N_per_m");
+    ASSERT_EQ(header[17], "n");  // each row's n (empty: not given to write_curve_csv)
     int refused = 0;
     for (std::size_t i = 0; std::getline(in, line); ++i) {
         const std::vector<std::string> r = split(line);
         ASSERT_EQ(r.size(), header.size()) << line;
-        EXPECT_EQ(std::stod(r[13]), loads[i] * 1.0e5);
-        EXPECT_NE(r[15], "");  // Carter's xi1 of the given load
+        EXPECT_EQ(std::stod(r[14]), loads[i] * 1.0e5);
+        EXPECT_NE(r[16], "");  // Carter's xi1 of the given load
         if (r.back() == "refused") {
             ++refused;
-            EXPECT_EQ(r[14], "") << "xi1 of a refused row";
+            EXPECT_EQ(r[15], "") << "xi1 of a refused row";
         } else {
             EXPECT_EQ(
-                r[14],
+                r[15],
                 shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0, curve[i].solution.xi).xi1));
         }
     }

@@ -123,7 +123,7 @@ TEST(DissimilarProduct, ThreeZonesAgainstTheGridRoute) {
         contact c(r, f, solver_options{64, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
         const tangential_solution s = c.point(Q);
         ASSERT_TRUE(s.checks.hold());
-        const std::vector<zone> z = zones_of(s);
+        const std::vector<zone> z = s.layout.zones;
         ASSERT_EQ(z.size(), 3u);
         EXPECT_EQ(z[0].direction, -1);
         EXPECT_TRUE(z[1].stick);
@@ -237,7 +237,7 @@ TEST(DissimilarProduct, RollersExchanged) {
             const tangential_solution driven = a.point(0.5 * f);
             ASSERT_TRUE(driven.five);
             EXPECT_TRUE(driven.checks.hold());
-            EXPECT_EQ(zones_of(driven).size(), 5u);
+            EXPECT_EQ(driven.layout.zones.size(), 5u);
         } else {
             const tangential_solution driven = a.point(0.5 * f);
             EXPECT_TRUE(driven.opposite && driven.checks.hold());
@@ -303,7 +303,7 @@ TEST(DissimilarProduct, OppositeDirectionsAgainstTheGridRoute) {
         const tangential_solution s = c.point(Q);
         ASSERT_TRUE(s.checks.hold());
         ASSERT_TRUE(s.opposite);
-        const std::vector<zone> z = zones_of(s);
+        const std::vector<zone> z = s.layout.zones;
         ASSERT_EQ(z.size(), 3u);
         EXPECT_EQ(z[0].direction, -1);
         EXPECT_EQ(z[2].direction, 1);

@@ -96,9 +96,9 @@ TEST(Zones, PapersStructureForcedIsTheSingleZone) {
             EXPECT_NEAR(z.c0, single.c0, 1e-10) << load;  // c0 near -1: conditioned as 1/(1 + c0)
             EXPECT_NEAR(z.xi, single.xi, 1e-12 * std::fabs(single.xi)) << load;
             EXPECT_TRUE(z.checks.hold()) << load;
-            ASSERT_EQ(zones_of(z).size(), 2u);
-            EXPECT_TRUE(zones_of(z)[0].stick);
-            EXPECT_EQ(zones_of(z)[1].direction, load < 0 ? -1 : 1);
+            ASSERT_EQ(z.layout.zones.size(), 2u);
+            EXPECT_TRUE(z.layout.zones[0].stick);
+            EXPECT_EQ(z.layout.zones[1].direction, load < 0 ? -1 : 1);
         }
     }
 }
@@ -114,10 +114,10 @@ TEST(Zones, SlipStickSlipSatisfiesComplementarity) {
             EXPECT_FALSE(s.c.tangential().solve(Q).checks.stick_holds) << gap;
             const tangential_solution z = s.zones.solve(Q);
             EXPECT_TRUE(z.general) << gap;
-            ASSERT_EQ(zones_of(z).size(), 3u);
-            EXPECT_FALSE(zones_of(z)[0].stick);
-            EXPECT_TRUE(zones_of(z)[1].stick);
-            EXPECT_FALSE(zones_of(z)[2].stick);
+            ASSERT_EQ(z.layout.zones.size(), 3u);
+            EXPECT_FALSE(z.layout.zones[0].stick);
+            EXPECT_TRUE(z.layout.zones[1].stick);
+            EXPECT_FALSE(z.layout.zones[2].stick);
             EXPECT_GT(z.start, -1.0);
             EXPECT_LT(z.start, z.c0);
             EXPECT_GE(z.checks.stick_margin, -tol::margin_floor) << gap;
@@ -191,7 +191,7 @@ TEST(Zones, CreepCurveContinuousUpToGrossSliding) {
     const tangential_solution direct = s.zones.solve((1.0 - 1e-6) * f);
     EXPECT_EQ(mirror.start, direct.start);
     EXPECT_EQ(mirror.xi, -direct.xi);
-    EXPECT_EQ(zones_of(mirror).front().direction, -1);
+    EXPECT_EQ(mirror.layout.zones.front().direction, -1);
     EXPECT_NEAR(mirror.checks.slip_margin, direct.checks.slip_margin, 1e-14);
 }
 
@@ -335,7 +335,7 @@ TEST(Zones, ContactTakesTheGeneralPathWhereNeeded) {
     EXPECT_LT(std::fabs(a.xi - ref.xi), e->xi);
     EXPECT_LT(std::fabs(a.c0 - ref.c0), e->c0);
     EXPECT_EQ(automatic.distribution(a).start, a.start);
-    EXPECT_EQ(zones_of(a).size(), 3u);
+    EXPECT_EQ(a.layout.zones.size(), 3u);
     // Mode "single" at a load where the single zone holds is the automatic answer itself.
     EXPECT_EQ(single.point(0.5 * f).xi, automatic.point(0.5 * f).xi);
 }

@@ -399,7 +399,9 @@ class Scene:
         ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)).
         Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
-        slip zones) and stick_start (formulation section 7), n (the row's nodes: the ladder's
+        slip zones), stick_start (formulation section 7) and zone_path ("single", "general", or
+        "no-slip" where the edge layers were neglected, formulation 8(n); "" for a refused row,
+        an array of str), n (the row's nodes: the ladder's
         choice without an explicit n; 0 for a refused row), for a
         physical scene P1_N_per_m, xi1, xi1_carter, and status ("ok" or "refused", an array of
         str).  The normal problem is solved once.
@@ -429,6 +431,7 @@ class Scene:
         for line in c.pop("_refused"):
             warnings.warn(line, RefusedPointWarning, stacklevel=2)
         c["status"] = np.array(c["status"], dtype=str)
+        c["zone_path"] = np.array(c["zone_path"], dtype=str)
         return c
 
     def traction(self, Q: Optional[float] = None, *, Q_over_f: Optional[float] = None, P1: Optional[float] = None,

@@ -105,7 +105,7 @@ def assert_curve_equal(got, expected):
     for key, column in expected.items():
         if key == "checks_hold":
             assert got[key].tolist() == [c == "1" for c in column]
-        elif key == "status":
+        elif key in ("status", "zone_path"):
             assert got[key].tolist() == column
         elif key in ("zones", "n"):  # int arrays: 0 where the CSV is empty (a refused row)
             assert got[key].tolist() == [0 if r else int(c) for r, c in zip(refused, column)]
@@ -205,6 +205,14 @@ def test_dissimilar_curve_covers_both_signs_and_equals_program(tmp_path):
     assert (got["c0"][1], got["xi"][1]) == (braked.c0, braked.xi)
     free = s.point(0.0)
     assert abs(got["xi"][2] - free.xi) <= 1e-12
+
+
+# A row answered with its edge layers neglected says so, as the point does (formulation 7(i), 8(n)).
+def test_curve_row_says_layers_neglected():
+    s = roughroll.read_scene(DATA / "aluminium-on-steel.toml")
+    got = s.curve(points=3, friction=5.0)
+    assert got["zone_path"].tolist() == ["general", "no-slip", "general"]
+    assert s.point(0.0, friction=5.0).to_dict()["zone_path"] == "no-slip"
 
 
 # leading-slip.toml takes the general zone search (slip, stick, slip: docs/formulation.md

@@ -293,7 +293,7 @@ int run_traction(const traction_options& o) {
     facts.Q = Q;
     facts.f = f;
     facts.c0 = level.c0;            // the stick zone the plotted tractions have
-    facts.zones = zones_of(level);  // the zones the plotted tractions have
+    facts.zones = level.layout.zones;  // the zones the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;
     facts.p_max = p_max;

@@ -12,7 +12,6 @@
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/edge_layers.hpp"
-#include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 
 // The build systems define it from the VERSION file (CMakeLists.txt, Makefile.am).
@@ -44,23 +43,21 @@ nlohmann::json cylinder_json(const cylinder_roughness& c) {
     return {{"tangential", term_json(c.tangential)}, {"normal", term_json(c.normal)}};
 }
 
-// The zones of docs/formulation.md section 7, from r = -1 to 1.
+// The zones of docs/formulation.md section 7, from r = -1 to 1: the solution's layout.
 nlohmann::json zones_json(const tangential_solution& s) {
     nlohmann::json zones = nlohmann::json::array();
-    for (const zone& z : zones_of(s))
+    for (const zone& z : s.layout.zones)
         zones.push_back(
             {{"from", z.from}, {"to", z.to}, {"state", z.stick ? "stick" : "slip"}, {"direction", z.direction}});
     return zones;
 }
 
-const char* zone_path(const tangential_solution& s) {
-    if (s.layers_neglected) return "no-slip";  // docs/formulation.md 8(n)
-    return s.general ? "general" : "single";
-}
+// single, general, or no-slip (the edge layers neglected, docs/formulation.md 8(n)).
+const char* zone_path(const tangential_solution& s) { return to_string(s.layout.route); }
 
 // The neglected edge layers of a free-rolling point at large friction (8(n)): null for every other point.
 nlohmann::json layers_json(const tangential_solution& s) {
-    if (!s.layers_neglected) return nullptr;
+    if (!s.layout.layers_neglected()) return nullptr;
     const neglected_layers l = no_slip_layers(s.forcing, s.f);
     return {{"neglected", true}, {"thickness_bound", l.thickness}, {"crossing", l.crossing}, {"xi_bound", l.xi_bound}};
 }
@@ -72,7 +69,7 @@ std::string term_text(const roughness_term& t) {
 
 std::string zones_text(const tangential_solution& s) {
     std::string text;
-    for (const zone& z : zones_of(s)) {
+    for (const zone& z : s.layout.zones) {
         if (!text.empty()) text += ", ";
         text += (z.stick ? "stick [" : std::string(z.direction > 0 ? "slip+ [" : "slip- [")) + shortest(z.from) + ", " +
                 shortest(z.to) + "]";
@@ -169,7 +166,7 @@ nlohmann::json to_json(const point_report& r) {
         {"reference", paper_reference},
         {"version", version()},
     };
-    if (s.layers_neglected) point["edge_layers"] = layers_json(s);  // only there: other points' keys unchanged
+    if (s.layout.layers_neglected()) point["edge_layers"] = layers_json(s);  // only there: other points' keys unchanged
     return point;
 }
 
@@ -196,7 +193,7 @@ void write_summary(std::ostream& out, const point_report& r) {
             << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
             << shortest(r.coupling->lambda_johnson) << "; peak pressure at the same P2 changed by "
             << shortest(100.0 * r.coupling->peak_pressure_change) << " %)\n";
-    if (s.layers_neglected) {
+    if (s.layout.layers_neglected()) {
         const neglected_layers l = no_slip_layers(s.forcing, s.f);
         const double exponent = M_PI * s.f / std::fabs(s.forcing);  // t = 4/(1 + exp(pi f/|beta_d|))
         out << "  edge layers         neglected: each thinner than " << shortest(l.thickness) << " (about 4 exp(-"
@@ -251,7 +248,8 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
            "# checks_hold: 1 when p >= 0, (3.3) and (3.4) hold on the solver's grids; c0_error_estimate, "
            "xi_error_estimate, Q_error_estimate: the estimates of their errors (empty: none)\n"
            "# zones: the number of stick and slip zones; stick_start: r where the stick zone starts (-1: at the "
-           "leading edge); n: the Gauss-Chebyshev nodes of the row; status: ok, or refused (only the given Q or c0 "
+           "leading edge); zone_path: how the zones were found, single (the paper's zone), general (the search of "
+           "section 7, every dissimilar structure) or no-slip (the edge layers neglected, docs/formulation.md 8(n)); n: the Gauss-Chebyshev nodes of the row; status: ok, or refused (only the given Q or c0 "
            "and Carter's columns filled)\n";
     if (h.physical)
         out << "# SI: P1_N_per_m = Q P2, the tangential load in N/m; xi1 = C P2 xi/a, the creep ratio (dimensionless); "
@@ -261,7 +259,7 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si,
                      const std::vector<int>& nodes) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
-           "Q_error_estimate,zones,stick_start"
+           "Q_error_estimate,zones,stick_start,zone_path"
         << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",n,status\n";
     if (!nodes.empty() && nodes.size() != curve.size())
         throw std::invalid_argument("write_curve_csv: " + std::to_string(nodes.size()) + " n for " +
@@ -281,7 +279,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             const bool at_Q = !std::isnan(s.Q);
             const auto cell = [](bool given, double x) { return given ? shortest(x) : std::string(); };
             out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0) << ",,,"
-                << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,";
+                << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,,";
             if (si) {
                 // xi1 is the refused creep; P1 depends on the given load alone, Carter's xi1 on
                 // Carter's load at what was given (Q, or Carter's Q at the same c0).
@@ -299,7 +297,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
-        out << ',' << zones_of(s).size() << ',' << shortest(s.start);
+        out << ',' << s.layout.zones.size() << ',' << shortest(s.start) << ',' << zone_path(s);
         if (si) {
             const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0, s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);

@@ -159,6 +159,7 @@ tangential_solution contact::point(double Q) {
         return s;
     }
     s.c0 = richardson(s.c0, coarse.c0);
+    s.layout = one_stick_zone(s.start, s.c0, s.layout.route, s.sign < 0.0 ? -1 : 1);  // the paper's zone, extrapolated
     s.xi = richardson(s.xi, coarse.xi);
     if (!(std::isfinite(s.c0) && std::isfinite(s.xi)))
         throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");

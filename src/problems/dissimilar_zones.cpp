@@ -333,6 +333,7 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
     s.Q += 2.0 * f_ * load_under_H(start, c0) - 2.0 * f_;
     s.opposite = true;
+    s.layout = opposite_zones(start, c0);
     return s;
 }
 
@@ -431,6 +432,7 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
     s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
     s.general = s.opposite = true;
     s.five = std::make_shared<const five_zone_solution>(v);
+    s.layout = layout_of(v);
     return s;
 }
 
@@ -465,8 +467,8 @@ double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
 
 traction_checks dissimilar_zones::check(const tangential_solution& s) {
     if (!s.opposite) return solver_.check(s);
-    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions (zones_of).
-    return check_zones(zones_of(s), blended_checks(), [&](double r) { return solver_.normal().pressure(r); },
+    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions (the layout).
+    return check_zones(s.layout.zones, blended_checks(), [&](double r) { return solver_.normal().pressure(r); },
                        [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
 }
 
@@ -530,6 +532,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         s = found ? *found : *failed;
     }
     s.general = true;
+    s.layout.route = zone_route::general;
     // The checks of the |Q| problem (three_zones made them) are those of Q: the mirror of 8(h) changes
     // the signs of p1 and v together.
     const bool checked = magnitude != f_;

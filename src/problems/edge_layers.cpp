@@ -46,6 +46,7 @@ tangential_solution dissimilar_zones::layers_neglected_point() {
     s.general = true;     // not the paper's single zone
     s.layers_neglected = true;
     s.layer_thickness = layers.thickness;
+    s.layout = layers_neglected_layout();
     // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)); no slip zone.
     const double t = std::min(layers.thickness, 0.5);
     const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};

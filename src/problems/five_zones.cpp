@@ -132,8 +132,8 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
 }
 
 traction_checks dissimilar_zones::check(const five_zone_solution& s) {
-    // (3.3) on both stick zones, (3.4) on the three slip zones in their directions S (zones_of).
-    return check_zones(zones_of(s), blended_checks(), [&](double r) { return pressure(r); },
+    // (3.3) on both stick zones, (3.4) on the three slip zones in their directions S (layout_of).
+    return check_zones(layout_of(s).zones, blended_checks(), [&](double r) { return pressure(r); },
                        [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
 }
 

@@ -235,7 +235,7 @@ traction_checks one_parameter_solver::check(const tangential_solution& s) const 
     // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q; (3.4) likewise.
     const double rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
     return check_zones(
-        zones_of(s), {f_, least_pressure(normal_), rounding, true, nullptr, nullptr},
+        s.layout.zones, {f_, least_pressure(normal_), rounding, true, nullptr, nullptr},
         [this](double r) { return normal_.pressure(r); }, [&](double r) { return traction(s, r); },
         [&](double r) { return s.sign * slip_velocity_magnitude(s, r); });
 }

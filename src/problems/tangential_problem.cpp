@@ -140,6 +140,7 @@ tangential_solution zone_solution(double f, double start, double c0, double xi, 
     s.xi = xi;
     s.Q = Q;  // (4.5)
     s.sign = 1.0;
+    s.layout = one_stick_zone(start, c0);
     s.psi_b = std::move(psi_b);
     s.rcond = rcond;
     return s;
@@ -224,6 +225,7 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what) {
     if (Q < 0.0) {
         s.sign = -1.0;
         s.xi = -s.xi;
+        s.layout = mirrored(std::move(s.layout));
     }
 }
 
@@ -398,7 +400,7 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         for (double& x : v) x *= s.sign;
         return v;
     };
-    return check_zones(zones_of(s), terms);
+    return check_zones(s.layout.zones, terms);
 }
 
 }  // namespace roughroll

@@ -1,25 +1,77 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/zone_layout.hpp"
 
-#include "roughroll/problems/dissimilar_zones.hpp"
+#include <stdexcept>
 
 namespace roughroll {
 
-std::vector<zone> zones_of(const five_zone_solution& v) {
-    // slip -sign, stick, slip +sign, stick, slip -sign (8(j)), sign = sgn beta_D.
-    const int d = v.sign > 0.0 ? 1 : -1;
-    return {zone{-1.0, v.s1, false, -d}, zone{v.s1, v.c1, true, 0}, zone{v.c1, v.s2, false, d},
-            zone{v.s2, v.c2, true, 0}, zone{v.c2, 1.0, false, -d}};
+const char* to_string(zone_route route) {
+    switch (route) {
+        case zone_route::single: return "single";
+        case zone_route::general: return "general";
+        case zone_route::layers_neglected: return "no-slip";  // docs/formulation.md 8(n)
+    }
+    return "single";
 }
 
-std::vector<zone> zones_of(const tangential_solution& s) {
-    if (s.five) return zones_of(*s.five);
-    const int direction = s.sign < 0.0 ? -1 : 1;
-    std::vector<zone> z;
-    if (s.start > -1.0) z.push_back({-1.0, s.start, false, s.opposite ? -direction : direction});
-    z.push_back({s.start, s.c0, true, 0});
-    if (s.c0 < 1.0) z.push_back({s.c0, 1.0, false, direction});
-    return z;
+std::size_t zone_layout::stick_zones() const {
+    std::size_t k = 0;
+    for (const zone& z : zones) k += z.stick ? 1 : 0;
+    return k;
+}
+
+const zone& zone_layout::stick_zone(std::size_t k) const {
+    for (const zone& z : zones)
+        if (z.stick && k-- == 0) return z;
+    throw std::out_of_range("zone_layout::stick_zone: no such stick zone");
+}
+
+bool zone_layout::sticks(double r) const {
+    for (const zone& z : zones)
+        if (z.stick && r >= z.from && r < z.to) return true;
+    return false;
+}
+
+bool zone_layout::opposite() const {
+    bool up = false, down = false;
+    for (const zone& z : zones) {
+        up = up || (!z.stick && z.direction > 0);
+        down = down || (!z.stick && z.direction < 0);
+    }
+    return up && down;
+}
+
+namespace {
+zone_layout three(double start, double c0, zone_route route, int leading, int trailing) {
+    zone_layout l;
+    l.route = route;
+    if (start > -1.0) l.zones.push_back({-1.0, start, false, leading});
+    l.zones.push_back({start, c0, true, 0});
+    if (c0 < 1.0) l.zones.push_back({c0, 1.0, false, trailing});
+    return l;
+}
+}  // namespace
+
+zone_layout one_stick_zone(double start, double c0, zone_route route, int direction) {
+    return three(start, c0, route, direction, direction);
+}
+
+zone_layout opposite_zones(double start, double c0, int direction) {
+    return three(start, c0, zone_route::general, -direction, direction);
+}
+
+zone_layout five_zones_layout(double s1, double c1, double s2, double c2, int d) {
+    return {{zone{-1.0, s1, false, -d}, zone{s1, c1, true, 0}, zone{c1, s2, false, d}, zone{s2, c2, true, 0},
+             zone{c2, 1.0, false, -d}},
+            zone_route::general};
+}
+
+zone_layout layers_neglected_layout() { return {{zone{-1.0, 1.0, true, 0}}, zone_route::layers_neglected}; }
+
+zone_layout mirrored(zone_layout layout) {
+    for (zone& z : layout.zones) z.direction = -z.direction;
+    return layout;
 }
 
 }  // namespace roughroll
+

@@ -112,9 +112,13 @@ struct five_zone_solution {
 };
 
 // The five zones as a point of contact (contact::point): start, c0 the first stick zone [s1, c1],
-// start2, end2 the second [s2, c2], Q, xi, the checks and the solution itself (`five`), through
-// which dissimilar_zones::traction, slip_velocity and zones_of (zone_layout.hpp) answer for all five zones.
+// start2, end2 the second [s2, c2], Q, xi, the checks, the layout (layout_of) and the solution itself
+// (`five`), through which dissimilar_zones::traction and slip_velocity answer for all five zones.
 tangential_solution five_zone_point(const five_zone_solution& v);
+// Their layout: slip -d, stick [s1, c1], slip d, stick [s2, c2], slip -d, d = sgn beta_D (8(j)).
+inline zone_layout layout_of(const five_zone_solution& v) {
+    return five_zones_layout(v.s1, v.c1, v.s2, v.c2, v.sign > 0.0 ? 1 : -1);
+}
 
 class dissimilar_zones {
 public:

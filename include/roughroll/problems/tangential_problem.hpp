@@ -25,6 +25,7 @@
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -78,6 +79,9 @@ struct tangential_solution {
     // than layer_thickness (about 4 exp(-pi f/|beta_D|)). Traction and checks are dissimilar_zones'.
     bool layers_neglected = false;
     double layer_thickness = 0.0;
+    // The zones from -1 to 1, each stick or slip with its direction, and the route that found them
+    // (zone_layout.hpp): its first stick zone is [start, c0].
+    zone_layout layout;
 
     double rho() const { return 0.5 * (c0 - start); }
     // r on a stick zone [start, c0) (or the second one [start2, end2) of five zones)
