@@ -52,12 +52,14 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
         return e;
     };
     const std::vector<double> base1 = base(r1), base2 = base(r2);
-    // -L1[q_k] at points outside zone k: v_k - (xi_k + b p + f G), v_k the zone's own slip velocity.
-    const auto minus_operator = [&](const tangential_solution& t, const std::vector<double>& r) {
+    // -L1[q_k] at points outside zone k: v_k - (xi_k + f G), v_k the zone's own slip velocity without its forcing
+    // b p (which v_k would add and this take away again: at full coupling a series of n terms at every point).
+    const auto minus_operator = [&](tangential_solution t, const std::vector<double>& r) {
+        t.forcing = 0.0;
         const std::vector<double> v = solver_.slip_velocity(t, r);
         const std::vector<double> g = solver_.G(r);
         std::vector<double> out(r.size());
-        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + beta * pressure(r[m]) + f_ * g[m]);
+        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + f_ * g[m]);
         return out;
     };
     five_zone_solution s{};
