@@ -172,15 +172,21 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
     // takes its values by the hundred thousand per zone solve: a table whose representation error is
     // bounded by eps sum |b_j| gives them at the cost of an acos and a panel's 25 terms
     // (u_series_table.hpp). Up to twice that many terms the series is summed as it is (measured
-    // slower with the table at 32 terms; docs/performance.md), and Hertz's one term stays exact.
-    if (pressure_b_.size() > static_cast<std::size_t>(2 * theta_panels::degree + 2))
+    // slower with the table at 32 terms; docs/performance.md), and Hertz's one term stays exact. Built at the
+    // first value asked (table()): a structure that never asks (the three zones of one direction: each step of
+    // full coupling's alternation builds this workspace) does not pay for it.
+}
+
+const u_series_table* dissimilar_zones::table() const {
+    if (!pressure_table_ && pressure_b_.size() > static_cast<std::size_t>(2 * theta_panels::degree + 2))
         pressure_table_.emplace(pressure_b_);
+    return pressure_table_ ? &*pressure_table_ : nullptr;
 }
 
 double dissimilar_zones::pressure(double r) const {
     if (std::fabs(r) >= 1.0) return 0.0;
-    const double smooth =
-        pressure_table_ ? (*pressure_table_)(r) : u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1)
+    const u_series_table* tabulated = table();
+    const double smooth = tabulated ? (*tabulated)(r) : u_series(pressure_b_, r) * std::sqrt(1.0 - r * r);  // (4.1)
     return pressure_kinks_ ? smooth + (*pressure_kinks_)(r) : smooth;  // as normal_solution::pressure (8(l))
 }
 
@@ -245,8 +251,8 @@ double dissimilar_zones::W(double r, double start, double c0) {
     } else if (inside && !(1.0 - r > apart) && r - a > apart) {
         const auto edge_pressure = [&](double eta) {
             if (!(eta < 1.0)) return 0.0;
-            return pressure_table_ ? (*pressure_table_)(eta)
-                                   : u_series(pressure_b_, eta) * std::sqrt((1.0 - eta) * (1.0 + eta));
+            const u_series_table* tabulated = table();
+            return tabulated ? (*tabulated)(eta) : u_series(pressure_b_, eta) * std::sqrt((1.0 - eta) * (1.0 + eta));
         };
         const double hr = u_series(pressure_b_, r) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r), the series
         const double d = std::sqrt(1.0 - r), U = std::sqrt(1.0 - a);

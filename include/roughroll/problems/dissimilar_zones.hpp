@@ -194,6 +194,7 @@ private:
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
+    const u_series_table* table() const;  // pressure_table_, built at the first call; null: the series
     double pressure(double r) const;  // p of (4.1), from pressure_b_ or its table, + p_q^0 (8(l) step 0)
 
     tangential_solver& solver_;
@@ -201,8 +202,8 @@ private:
     double beta_d_;
     double f_;
     std::vector<double> pressure_b_;  // the pressure's U coefficients without trailing zeros
-    // The pressure tabulated (u_series_table.hpp) where its series has more than 50 terms.
-    std::optional<u_series_table> pressure_table_;
+    // The pressure tabulated (u_series_table.hpp) where its series has more than 50 terms, at its first use.
+    mutable std::optional<u_series_table> pressure_table_;
     std::shared_ptr<const pressure_kinks> pressure_kinks_;  // the normal solution's (null but at full coupling)
     integration_workspace_ptr workspace_;
     std::vector<std::tuple<double, double, std::optional<blended_cauchy>>> blends_;  // blend_of's last zones
