@@ -55,7 +55,7 @@ TEST(DissimilarCurve, RowsArePointsAndTheMirrorHolds) {
         const curve_point& other = mirror[rows.size() - 1 - i];
         ASSERT_FALSE(other.is_refused()) << other.refused;
         std::printf("Q/f = %+.1f: xi %.12f (%s), mirror %.1e\n", loads[i] / f, row.solution.xi,
-                    row.solution.five ? "five zones" : "three", row.solution.xi + other.solution.xi);
+                    row.solution.layout.stick_zones() == 2 ? "five zones" : "three", row.solution.xi + other.solution.xi);
         // The mirror curve is solved in the opposite order, from other starts: equal to Newton's resolution.
         EXPECT_NEAR(row.solution.xi, -other.solution.xi, tol::two_routes) << loads[i];
         EXPECT_NEAR(row.solution.c0, other.solution.c0, 1e-9) << loads[i];
@@ -71,14 +71,14 @@ TEST(DissimilarCurve, RowsArePointsAndTheMirrorHolds) {
         contact alone = scene(beta_al_st);
         const tangential_solution s = alone.point(loads[i]);
         const tangential_solution& row = rows[i].solution;
-        ASSERT_EQ(bool(s.five), bool(row.five)) << loads[i];
-        if (!s.five) {
+        ASSERT_EQ(s.layout.stick_zones(), row.layout.stick_zones()) << loads[i];
+        if (s.layout.stick_zones() != 2) {
             EXPECT_EQ(s.xi, row.xi) << loads[i];
             EXPECT_EQ(s.c0, row.c0) << loads[i];
         } else {
             EXPECT_NEAR(s.xi, row.xi, tol::two_routes) << loads[i];
             for (const auto& [a, b] : {std::pair{s.start, row.start}, std::pair{s.c0, row.c0},
-                                       std::pair{s.start2, row.start2}, std::pair{s.end2, row.end2}})
+                                       std::pair{s.start2(), row.start2()}, std::pair{s.end2(), row.end2()}})
                 EXPECT_NEAR(a, b, 1e-9) << loads[i];
         }
         EXPECT_NEAR(alone.estimate(s)->xi, rows[i].estimate->xi, tol::two_routes) << loads[i];
@@ -96,9 +96,9 @@ TEST(DissimilarCurve, ContinuousThroughTheBrakedTransition) {
     std::vector<double> steps;
     for (std::size_t i = 0; i < rows.size(); ++i) {
         ASSERT_FALSE(rows[i].is_refused()) << rows[i].refused;
-        EXPECT_EQ(bool(rows[i].solution.five), loads[i] > -0.074 * f) << loads[i];
+        EXPECT_EQ(rows[i].solution.layout.stick_zones() == 2, loads[i] > -0.074 * f) << loads[i];
         std::printf("Q/f = %.3f: xi %.9f (%s)\n", loads[i] / f, rows[i].solution.xi,
-                    rows[i].solution.five ? "five" : "three");
+                    rows[i].solution.layout.stick_zones() == 2 ? "five" : "three");
         if (i > 0) steps.push_back(rows[i - 1].solution.xi - rows[i].solution.xi);  // falling Q: falling xi
     }
     const auto [low, high] = std::minmax_element(steps.begin(), steps.end());

@@ -286,7 +286,7 @@ TEST(DissimilarFiveZones, BrakedSideHandsOverToThreeZones) {
     EXPECT_FALSE(d.solve(-0.0725 * f).checks.hold());
     const tangential_solution three = d.solve(-0.075 * f);
     EXPECT_TRUE(three.checks.hold());
-    EXPECT_FALSE(three.opposite);
+    EXPECT_FALSE(three.layout.opposite());
     std::printf("Q/f = -0.0725: five [%.6f, %.6f], [%.6f, %.6f] xi %.9f; -0.075: three [%.6f, %.6f] xi %.9f\n",
                 last->s1, last->c1, last->s2, last->c2, last->xi, three.start, three.c0, three.xi);
     // Continuity through the transition: the merged stick zone's ends are the outer ends of the five,

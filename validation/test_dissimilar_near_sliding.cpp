@@ -101,7 +101,7 @@ TEST(DissimilarNearSliding, BrakedPairAnsweredAtTheDefaultNWithBoundsThatHold) {
     const auto p = at(0, braked);
     ASSERT_TRUE(p.has_value());
     const tangential_solution& s = p->solution;
-    ASSERT_FALSE(s.five);
+    ASSERT_FALSE(s.layout.stick_zones() == 2);
     ASSERT_TRUE(s.checks.hold());
     EXPECT_GT(s.start, -1.0);
     EXPECT_LT(s.rho(), 0.03);  // the stick zone near gross sliding
@@ -171,7 +171,7 @@ TEST(DissimilarNearSliding, DrivenPairAnsweredWhereTheLeadingSlipZoneIsThin) {
     EXPECT_TRUE(s.checks.hold());
     EXPECT_GT(s.start, -1.0);
     EXPECT_LT(s.start, -1.0 + 4.8e-3);  // inside the scan's first trial start
-    EXPECT_TRUE(s.opposite);            // slip- on the leading zone, slip+ on the trailing one
+    EXPECT_TRUE(s.layout.opposite());  // slip- on the leading zone, slip+ on the trailing one
     const double both = point->estimate.start + fine->estimate.start;
     EXPECT_LE(std::fabs(s.start - fine->solution.start), both);
     EXPECT_LE(std::fabs(s.c0 - fine->solution.c0), point->estimate.c0 + fine->estimate.c0);

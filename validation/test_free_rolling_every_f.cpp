@@ -197,8 +197,8 @@ TEST(FreeRollingEveryF, RollersExchangedWithTheLayersNeglected) {
     contact a(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     contact b(roughness{}, f, solver_options{32, method::product}, dissimilar{-beta_al_st, coupling_level::johnson});
     const tangential_solution sa = a.point(0.0), sb = b.point(-0.0);
-    ASSERT_TRUE(sa.layers_neglected);
-    ASSERT_TRUE(sb.layers_neglected);
+    ASSERT_TRUE(sa.layout.layers_neglected());
+    ASSERT_TRUE(sb.layout.layers_neglected());
     EXPECT_EQ(sa.xi, -sb.xi);
     EXPECT_EQ(sa.xi, no_slip_limit());
     for (const double r : {-0.999, -0.5, 0.1, 0.9}) {

@@ -110,7 +110,7 @@ tally honest_or_refused(method how, int n, int fine_n) {
             // sliding the search can fail at one n and succeed at another; the point is then
             // reported on the single zone with its checks failed (flagged), and its estimate is
             // that of the single-zone problem, which is what it must bound.
-            const zone_search path = s.general ? zone_search::general : zone_search::single;
+            const zone_search path = s.layout.general() ? zone_search::general : zone_search::single;
             std::optional<tangential_solution> sf;
             for (int m : {fine_n, fine_n / 2}) {
                 try {
@@ -298,8 +298,8 @@ TEST(HonestEstimates, OneRuleForEveryStructure) {
     };
     const std::array<estimate_level, 3> levels{level(1.0), level(2.0), level(3.0)};
     const std::vector<estimated_quantity> table{
-        {"xi", &tangential_solution::xi, 0.0, 0.0, false, true, &error_estimate::xi},
-        {"c0", &tangential_solution::c0, 0.0, 0.0, false, true, &error_estimate::c0}};
+        {"xi", value_xi, 0.0, 0.0, false, true, &error_estimate::xi},
+        {"c0", value_c0, 0.0, 0.0, false, true, &error_estimate::c0}};
     int solved = 0;
     const auto finer = [&]() -> std::optional<estimate_level> {
         ++solved;
@@ -352,8 +352,8 @@ TEST(HonestEstimates, FourthLevelConfirmsEveryQuantity) {
     };
     const std::array<estimate_level, 3> levels{level(1.0, 0.0), level(2.0, 1.6), level(2.5, 1.7)};
     const std::vector<estimated_quantity> table{
-        {"c0", &tangential_solution::c0, 0.0, 0.0, false, true, &error_estimate::c0},
-        {"xi", &tangential_solution::xi, 0.0, 0.0, false, true, &error_estimate::xi}};
+        {"c0", value_c0, 0.0, 0.0, false, true, &error_estimate::c0},
+        {"xi", value_xi, 0.0, 0.0, false, true, &error_estimate::xi}};
     double finer_c0 = 1.5;
     int solved = 0;
     const auto finer = [&]() -> std::optional<estimate_level> {

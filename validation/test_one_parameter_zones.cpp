@@ -56,7 +56,7 @@ TEST(OneParameterZones, SlipStickSlipSatisfiesTheInequalities) {
                 EXPECT_THROW(s.solve(ratio * f), numerical_error);
             }
             const tangential_solution z = zones.solve(ratio * f);
-            EXPECT_TRUE(z.general);
+            EXPECT_TRUE(z.layout.general());
             EXPECT_GT(z.start, -1.0);
             EXPECT_LT(std::fabs(s.entry_velocity(z)), 1e-14);
             EXPECT_GT(z.checks.slip_margin, 0.0);
@@ -115,7 +115,7 @@ TEST(OneParameterZones, ContactTakesTheGeneralPath) {
     contact automatic(limit_scene(), f, solver_options{256, method::one_parameter});
     contact general(limit_scene(), f, solver_options{256, method::one_parameter, zone_search::general});
     const tangential_solution a = automatic.point(0.999 * f), g = general.point(0.999 * f);
-    EXPECT_TRUE(a.general);
+    EXPECT_TRUE(a.layout.general());
     EXPECT_TRUE(a.checks.hold());
     EXPECT_EQ(a.start, g.start);
     const tangential_solution p = general.point(0.5 * f);
@@ -154,8 +154,8 @@ TEST(OneParameterZones, CreepCurveThroughTheRegion) {
         EXPECT_GE(curve[i].start, curve[i - 1].start);
         EXPECT_LT(curve[i].c0, curve[i - 1].c0);
     }
-    EXPECT_FALSE(curve[0].general);  // below the switch: the paper's zone
-    EXPECT_TRUE(curve[4].general);
+    EXPECT_FALSE(curve[0].layout.general());  // below the switch: the paper's zone
+    EXPECT_TRUE(curve[4].layout.general());
     // Continuity at the switch: the step in xi from 0.997 to 0.9971 is no larger than from 0.9971 to 0.9972.
     EXPECT_LT(curve[2].xi - curve[1].xi, 1.5 * (curve[3].xi - curve[2].xi));
     EXPECT_NEAR(curve.back().start, sliding.c0, 1e-3);

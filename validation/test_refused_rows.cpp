@@ -42,7 +42,7 @@ TEST(DissimilarEdge, SlipVelocityUpToTheTrailingEdgeAgainstItsLimit) {
                       dissimilar{beta_al_st, coupling_level::johnson});
             const tangential_solution s = c.point(ratio * f);
             const tangential_solution d = c.distribution(s);
-            ASSERT_TRUE(d.opposite);  // a blended zone: W enters v
+            ASSERT_TRUE(d.layout.opposite());  // a blended zone: W enters v
             const double v1 = c.slip_velocity(d, 1.0);
             for (const double r : {std::nextafter(1.0, 0.0), 1.0 - 1e-12, 1.0 - 1e-10}) {
                 SCOPED_TRACE("1 - r = " + std::to_string(1.0 - r));
@@ -81,7 +81,7 @@ TEST(DissimilarSmallBeta, RefusedAtOnceWithWhatToDo) {
         // Free rolling: the no-slip solution with its edge layers (thinner than the smallest double)
         // neglected (formulation 8(n)), xi = -4 beta_D/pi^2, answered at once.
         const tangential_solution free = c.point(0.0);
-        EXPECT_TRUE(free.layers_neglected);
+        EXPECT_TRUE(free.layout.layers_neglected());
         EXPECT_TRUE(free.checks.hold());
         EXPECT_EQ(free.xi, -4e-6 / (M_PI * M_PI));
         // Gross sliding: v = xi + beta_D p + f G >= 0 (8(j) item 6): at Q = f, xi = 2 f/pi (the leading

@@ -92,7 +92,7 @@ TEST(Zones, PapersStructureForcedIsTheSingleZone) {
             const tangential_solution single = s.c.point(load * f);
             const tangential_solution z = s.zones.solve(load * f, true);
             EXPECT_EQ(z.start, -1.0) << load;
-            EXPECT_FALSE(z.general);
+            EXPECT_FALSE(z.layout.general());
             EXPECT_NEAR(z.c0, single.c0, 1e-10) << load;  // c0 near -1: conditioned as 1/(1 + c0)
             EXPECT_NEAR(z.xi, single.xi, 1e-12 * std::fabs(single.xi)) << load;
             EXPECT_TRUE(z.checks.hold()) << load;
@@ -113,7 +113,7 @@ TEST(Zones, SlipStickSlipSatisfiesComplementarity) {
             const double Q = (1.0 - gap) * f;
             EXPECT_FALSE(s.c.tangential().solve(Q).checks.stick_holds) << gap;
             const tangential_solution z = s.zones.solve(Q);
-            EXPECT_TRUE(z.general) << gap;
+            EXPECT_TRUE(z.layout.general()) << gap;
             ASSERT_EQ(z.layout.zones.size(), 3u);
             EXPECT_FALSE(z.layout.zones[0].stick);
             EXPECT_TRUE(z.layout.zones[1].stick);
@@ -136,7 +136,7 @@ TEST(Zones, SolvesTheUnreducedEquations) {
     const kernel k1 = kernel::tangential(r);
     const double Q = (1.0 - 1e-3) * f;
     const tangential_solution z = s.zones.solve(Q);
-    ASSERT_TRUE(z.general);
+    ASSERT_TRUE(z.layout.general());
     const auto p1 = [&](double eta) { return s.c.tangential().traction(z, eta); };
     EXPECT_NEAR(integrate(p1, -1.0, z.start) + integrate(p1, z.start, z.c0) + integrate(p1, z.c0, 1.0), Q, 1e-9);
     for (double u : {0.1, 0.37, 0.5, 0.81}) {
@@ -268,7 +268,7 @@ TEST(ZonesGridRoute, FindsSlipStickSlip) {
     const double Q = (1.0 - 1e-2) * f;
     ASSERT_FALSE(s.c.tangential().solve(Q).checks.stick_holds);
     const tangential_solution z = s.zones.solve(Q);
-    ASSERT_TRUE(z.general);
+    ASSERT_TRUE(z.layout.general());
     const grid_pair g = grid_route(s.c, r, Q, 200);
     expect_within_grid_error(g, z.xi, false);
     EXPECT_LT(std::fabs(g.fine.xi - z.xi), std::fabs(g.coarse.xi - z.xi));
@@ -300,7 +300,7 @@ TEST(Zones, ForcedGeneralAgreesWithExtrapolated) {
         EXPECT_NEAR(general.normal().lambda, automatic.normal().lambda, 1e-10);
         for (double load : {0.3, 0.9, 1.0 - 1e-9}) {
             const tangential_solution a = automatic.point(load * f), g = general.point(load * f);
-            EXPECT_FALSE(a.general);
+            EXPECT_FALSE(a.layout.general());
             EXPECT_EQ(g.start, -1.0) << load;
             EXPECT_NEAR(g.c0, a.c0, 1e-10) << load;
             EXPECT_NEAR(g.xi, a.xi, 1e-10) << load;
@@ -318,9 +318,9 @@ TEST(Zones, ContactTakesTheGeneralPathWhereNeeded) {
     contact fine(r, f, solver_options{64, method::product, zone_search::automatic});
     const double Q = (1.0 - 1e-6) * f;
     const tangential_solution a = automatic.point(Q), s = single.point(Q), level = fine.point(Q);
-    EXPECT_TRUE(a.general);
+    EXPECT_TRUE(a.layout.general());
     EXPECT_TRUE(a.checks.hold());
-    EXPECT_FALSE(s.general);
+    EXPECT_FALSE(s.layout.general());
     EXPECT_FALSE(s.checks.hold());
     EXPECT_GT(a.start, -1.0);
     // Not extrapolated: level n, with the difference from n/2 as its estimate, which bounds
@@ -354,8 +354,8 @@ TEST(Zones, DefaultCurveThroughTheSwitch) {
         EXPECT_TRUE(s.checks.hold()) << gap;
         EXPECT_GT(s.xi, previous) << gap;
         previous = s.xi;
-        (s.general ? seen_general : seen_single) = true;
-        if (s.general) {
+        (s.layout.general() ? seen_general : seen_single) = true;
+        if (s.layout.general()) {
             EXPECT_GT(s.start, -1.0);
         }
     }
@@ -411,7 +411,7 @@ TEST(Zones, ScanOfScenes) {
             ++failing;
             EXPECT_LT(slope, 0.0) << scene;
             const tangential_solution z = s.zones.solve(Q);
-            EXPECT_TRUE(z.general) << scene << " " << gap;
+            EXPECT_TRUE(z.layout.general()) << scene << " " << gap;
             EXPECT_GE(z.checks.stick_margin, -tol::margin_floor) << scene << " " << gap;
             EXPECT_GE(z.checks.slip_margin, -tol::margin_floor) << scene << " " << gap;
         }
@@ -424,7 +424,7 @@ TEST(Zones, ScanOfScenes) {
 TEST(Zones, Output) {
     contact c(tangential_dominates_a(), f, solver_options{48, method::product, zone_search::automatic});
     const tangential_solution s = c.point(-(1.0 - 1e-3) * f);  // the mirror: slip in direction -1
-    ASSERT_TRUE(s.general);
+    ASSERT_TRUE(s.layout.general());
     const nlohmann::json j = to_json(point_report{"", c.normal(), s, 0.0, c.estimate(s), std::nullopt});
     ASSERT_EQ(j["zones"].size(), 3u);
     EXPECT_EQ(j["zones"][0]["from"], -1.0);

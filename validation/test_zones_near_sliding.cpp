@@ -42,7 +42,7 @@ void expect_general_and_honest(const roughness& r, const std::vector<double>& lo
             SCOPED_TRACE("1 - Q/f = " + std::to_string(1.0 - Q / f) + ", n = " + std::to_string(n));
             contact c(r, f, solver_options{n, method::product});
             const tangential_solution s = c.point(Q);
-            EXPECT_TRUE(s.general);
+            EXPECT_TRUE(s.layout.general());
             EXPECT_GT(s.start, -1.0);
             EXPECT_TRUE(s.checks.hold()) << "margins " << s.checks.stick_margin << " (floor " << s.checks.stick_rounding
                                          << "), " << s.checks.slip_margin;
@@ -81,7 +81,7 @@ TEST(ZonesNearSliding, CreepCurveThroughTheRegion) {
         for (double gap : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15}) {
             SCOPED_TRACE("1 - Q/f = " + std::to_string(gap));
             const tangential_solution s = c.point((1.0 - gap) * f);
-            EXPECT_TRUE(s.general);
+            EXPECT_TRUE(s.layout.general());
             EXPECT_TRUE(s.checks.hold());
             EXPECT_LT(s.xi, sliding.xi);
             if (last) {
@@ -121,7 +121,7 @@ TEST(ZonesNearSliding, SlipMarginToRounding) {
     const double friction = 0.9336121355946893, Q = 0.9336121355937557;  // 1 - Q/f = 1e-12
     contact c(r, friction, solver_options{96, method::product});
     const tangential_solution s = c.point(Q);
-    EXPECT_TRUE(s.general);
+    EXPECT_TRUE(s.layout.general());
     EXPECT_TRUE(s.checks.hold()) << "slip margin " << s.checks.slip_margin << ", floor " << s.checks.slip_rounding;
     EXPECT_LT(s.checks.slip_margin, 0.0) << "the case needs the floor";
     const std::optional<error_estimate> e = c.estimate(s);

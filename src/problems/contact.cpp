@@ -147,9 +147,9 @@ tangential_solution contact::point(double Q) {
     tangential_solution s =
         zones_for(Q, tangential_->solve(Q, predicted_start(quarter_c0, coarse.c0), true, coarse.load_slope), &coarse);
     // Both levels on the same path: the coarse level's zones by the general search too.
-    if (s.general) coarse = companion_->general_point(Q, zone_guess{s.start, s.c0});
+    if (s.layout.general()) coarse = companion_->general_point(Q, zone_guess{s.start, s.c0});
     last_fine_ = s;
-    if (s.general) {
+    if (s.layout.general()) {
         // The general path is not extrapolated: its zone ends do not yet converge at a clean
         // n^-4 at the default n (docs/formulation.md 7(e)). Level n, estimated against n/2.
         last_coarse_ = coarse;
@@ -186,7 +186,7 @@ kernel contact::widest_kernel() const {
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_ || dissimilar_) return s;  // a dissimilar point is level n itself
     if (!last_fine_ || last_fine_->Q != s.Q)
-        last_fine_ = s.general ? general_point(s.Q, zone_guess{s.start, s.c0}) : tangential_->solve(s.Q);
+        last_fine_ = s.layout.general() ? general_point(s.Q, zone_guess{s.start, s.c0}) : tangential_->solve(s.Q);
     return *last_fine_;
 }
 
@@ -282,8 +282,9 @@ tangential_solution contact::dissimilar_point(double Q) {
 }
 
 tangential_solution contact::johnson_level_point(double Q, const tangential_solution& near) {
-    if (!near.five) return dissimilar_level_point(Q, zone_guess{near.start, near.c0}, near.opposite);
-    const std::vector<double> ends{near.start, near.c0, near.start2, near.end2};
+    if (near.layout.stick_zones() != 2)
+        return dissimilar_level_point(Q, zone_guess{near.start, near.c0}, near.layout.opposite());
+    const std::vector<double> ends{near.start, near.c0, near.start2(), near.end2()};
     const five_zone_solution* v = five_level_point(Q, &ends);
     if (v == nullptr)
         throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) +
@@ -316,7 +317,7 @@ tangential_solution contact::johnson_point(double Q) {
             try {
                 const tangential_solution& t = level->dissimilar_level_point(Q, guess, opposite);
                 guess = zone_guess{t.start, t.c0};
-                opposite = t.opposite;
+                opposite = t.layout.opposite();
             } catch (const resolution_error&) {  // no three zones on this level: the next searches without a guess
                 guess.reset();
             } catch (const numerical_error&) {
@@ -409,7 +410,7 @@ double contact::slip_velocity(const tangential_solution& d, double r) {
 }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
-    if (dissimilar_ && (d.opposite || d.layers_neglected)) {
+    if (dissimilar_ && (d.layout.opposite() || d.layout.layers_neglected())) {
         std::vector<double> v(r.size());
         for (std::size_t i = 0; i < r.size(); ++i) v[i] = zones_of_point().slip_velocity(d, r[i]);
         return v;

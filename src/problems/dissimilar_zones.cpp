@@ -338,7 +338,6 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
     // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
     s.Q += 2.0 * f_ * load_under_H(start, c0) - 2.0 * f_;
-    s.opposite = true;
     s.layout = opposite_zones(start, c0);
     return s;
 }
@@ -432,11 +431,9 @@ tangential_solution dissimilar_zones::three_zones(const structure& z, double mag
 tangential_solution five_zone_point(const five_zone_solution& v) {
     tangential_solution s = zone_solution(v.f, v.s1, v.c1, v.xi, v.Q, {}, std::min(v.zone1.rcond, v.zone2.rcond));
     s.sign = v.sign;
-    s.start2 = v.s2, s.end2 = v.c2;
     s.iterations = v.iterations;
     s.checks = v.checks;
     s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
-    s.general = s.opposite = true;
     s.five = std::make_shared<const five_zone_solution>(v);
     s.layout = layout_of(v);
     return s;
@@ -455,24 +452,24 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
         if (fresh) at->second = traction(*s.five, r);
         return at->second;
     }
-    if (s.layers_neglected) return no_slip_traction(beta_d_, r);  // 8(n)
+    if (s.layout.layers_neglected()) return no_slip_traction(beta_d_, r);  // 8(n)
     // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
     const double t = solver_.traction(s, r);
-    if (!s.opposite) return t;
+    if (!s.layout.opposite()) return t;
     return t - s.sign * 2.0 * f_ * solver_.normal().pressure(r) * (1.0 - H(r, s.start, s.c0));
 }
 
 double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
     if (s.five) return slip_velocity(*s.five, r);
-    if (s.layers_neglected) return 0.0;  // stick everywhere outside the neglected layers (8(n))
+    if (s.layout.layers_neglected()) return 0.0;  // stick everywhere outside the neglected layers (8(n))
     const double v = solver_.slip_velocity(s, r);
-    if (!s.opposite || s.sticks(r)) return v;
+    if (!s.layout.opposite() || s.sticks(r)) return v;
     const double x = std::clamp(r, -1.0, 1.0);
     return v - s.sign * 2.0 * f_ * (solver_.G(x) + W(x, s.start, s.c0));
 }
 
 traction_checks dissimilar_zones::check(const tangential_solution& s) {
-    if (!s.opposite) return solver_.check(s);
+    if (!s.layout.opposite()) return solver_.check(s);
     // (3.3) on the stick zone, (3.4) on both slip zones with their own directions (the layout).
     return check_zones(s.layout.zones, blended_checks(), [&](double r) { return solver_.normal().pressure(r); },
                        [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
@@ -537,7 +534,6 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
                 no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
         s = found ? *found : *failed;
     }
-    s.general = true;
     s.layout.route = zone_route::general;
     // The checks of the |Q| problem (three_zones made them) are those of Q: the mirror of 8(h) changes
     // the signs of p1 and v together.

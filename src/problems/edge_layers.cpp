@@ -43,10 +43,7 @@ tangential_solution dissimilar_zones::layers_neglected_point() {
     const neglected_layers layers = no_slip_layers(beta_d_, f_);
     tangential_solution s = zone_solution(f_, -1.0, 1.0, no_slip_creep(beta_d_), 0.0);
     s.forcing = beta_d_;  // the frame's sign is 1: beta_D itself (8(h) is built into the closed form)
-    s.general = true;     // not the paper's single zone
-    s.layers_neglected = true;
-    s.layer_thickness = layers.thickness;
-    s.layout = layers_neglected_layout();
+    s.layout = layers_neglected_layout();  // stick on [-1, 1], the route no-slip
     // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)); no slip zone.
     const double t = std::min(layers.thickness, 0.5);
     const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};

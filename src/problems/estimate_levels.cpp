@@ -22,7 +22,7 @@ double contact::kernel_strength() const {
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     // The edge layers neglected (8(n)): no levels, the layers' bound (the closed form has no n).
-    if (s.layers_neglected) {
+    if (s.layout.layers_neglected()) {
         const neglected_layers layers = no_slip_layers(materials_.beta_d, f_);
         const double lambda = normal().lambda;
         return error_estimate{rounding_floor(nodes(), lambda),
@@ -43,7 +43,7 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
 }
 
 std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
-    if (reported_ && s.general && !dissimilar_) {
+    if (reported_ && s.layout.general() && !dissimilar_) {
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
         if (!last_coarse_ || last_coarse_->Q != s.Q)
@@ -126,7 +126,7 @@ tangential_solution contact::structure_level(contact& level, const tangential_so
     if (swept) return level.level_at_stick_end(own.c0, false, sweeping_near_);
     // A point of the general path is compared with the general path's answers at the levels.
     if (!dissimilar_)
-        return s.general ? level.general_point(s.Q, zone_guess{s.start, s.c0}) : level.level_point(s.Q, false);
+        return s.layout.general() ? level.general_point(s.Q, zone_guess{s.start, s.c0}) : level.level_point(s.Q, false);
     if (coupled_) {
         // Full coupling (8(e)): the level's own alternation from its own Johnson's point (a Johnson's
         // point against a coupled n would measure the coupling, not the discretisation). A level that
@@ -138,9 +138,9 @@ tangential_solution contact::structure_level(contact& level, const tangential_so
                                    "level " + std::to_string(level.nodes()) + ": " + why.what());
         }
     }
-    if (s.five) {
+    if (s.layout.stick_zones() == 2) {
         // Five zones (8(j)): the level from this level's ends (Newton), else its own search.
-        const std::vector<double> ends{s.start, s.c0, s.start2, s.end2};
+        const std::vector<double> ends{s.start, s.c0, s.start2(), s.end2()};
         const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
         if (v == nullptr)
             throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) +
@@ -151,7 +151,7 @@ tangential_solution contact::structure_level(contact& level, const tangential_so
                                         : "n is at its largest, so the load is beyond the method's reach"));
         return five_zone_point(*v);
     }
-    return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.opposite);
+    return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.layout.opposite());
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
@@ -167,15 +167,14 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
     // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
     using q = estimated_quantity;
-    using sol = tangential_solution;
     using est = error_estimate;
     std::vector<q> table;
     if (!dissimilar_) {
         const bool x = reported_ != nullptr;  // Richardson's values, all three
         table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, x, true, &est::lambda},
-                 {"xi", &sol::xi, floor.xi, floor.xi, x, true, &est::xi},
-                 swept ? q{"Q", &sol::Q, floor.Q, floor.Q, x, true, &est::Q}
-                       : q{"c0", &sol::c0, floor.c0, floor.c0, x, true, &est::c0}};
+                 {"xi", value_xi, floor.xi, floor.xi, x, true, &est::xi},
+                 swept ? q{"Q", value_Q, floor.Q, floor.Q, x, true, &est::Q}
+                       : q{"c0", value_c0, floor.c0, floor.c0, x, true, &est::c0}};
     } else {
         const double ends = zone_ends_floor(finest_n, floor.c0, s, lambda, f_, strength);
         const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
@@ -183,15 +182,15 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         // level n's at full coupling: contact::normal), with no second chance.
         table = {
             {"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false, &est::lambda},
-            {"xi", &sol::xi, floor.xi, floor.xi, false, true, &est::xi},
-            {"c0", &sol::c0, ends, finer_ends, false, true, &est::c0},
-            {"the stick zone's start", &sol::start, ends, finer_ends, false, true, &est::start}};
+            {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
+            {"c0", value_c0, ends, finer_ends, false, true, &est::c0},
+            {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start}};
         // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
         // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
-        if (s.five) {
-            table.push_back({"the second stick zone's end", &sol::end2, ends, finer_ends, false, true, &est::c0});
+        if (s.layout.stick_zones() == 2) {
+            table.push_back({"the second stick zone's end", value_end2, ends, finer_ends, false, true, &est::c0});
             table.push_back(
-                {"the second stick zone's start", &sol::start2, ends, finer_ends, false, true, &est::start});
+                {"the second stick zone's start", value_start2, ends, finer_ends, false, true, &est::start});
         }
     }
     std::array<estimate_level, 3> levels;
@@ -209,7 +208,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         } catch (const resolution_error&) {
             return std::nullopt;
         } catch (const numerical_error&) {
-            if (!s.general && !dissimilar_) throw;
+            if (!s.layout.general() && !dissimilar_) throw;
             return std::nullopt;
         } catch (const error&) {
             if (!dissimilar_) throw;

@@ -87,7 +87,6 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     // Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2; solve_on_zone's Q is f + rho int q.
     s.Q = s.sign *
           (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_));
-    s.zone1.opposite = s.zone2.opposite = true;
     return s;
 }
 

@@ -46,8 +46,8 @@ namespace {
 // A structure the alternation cannot follow is a resolution_error (a curve's refused row), not a fault.
 tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f, bool checked) {
     tangential_solution t;
-    if (previous.five) {
-        const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2, previous.end2});
+    if (previous.layout.stick_zones() == 2) {
+        const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2(), previous.end2()});
         if (!v)
             throw resolution_error(at_load(Q, f) +
                                    "Newton finds no five zones from the previous iterate's ends "
@@ -56,7 +56,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
         t = five_zone_point(*v);
         t.Q = Q;
     } else {
-        t = z.solve(Q, zone_guess{previous.start, previous.c0}, previous.opposite);
+        t = z.solve(Q, zone_guess{previous.start, previous.c0}, previous.layout.opposite());
     }
     if (checked && !t.checks.hold())
         throw resolution_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
@@ -67,7 +67,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
-std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c0, s.start2, s.end2}; }
+std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c0, s.start2(), s.end2()}; }
 
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l), step 0):
 // p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zones' part q of p1 = sign (f p S + q) of
@@ -79,7 +79,7 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c
 // rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
                                                bool smooth) {
-    if (!smooth || s.five || s.opposite || !(s.c0 > s.start && s.start > -1.0) || s.psi_b.empty()) return nullptr;
+    if (!smooth || s.layout.opposite() || !(s.c0 > s.start && s.start > -1.0) || s.psi_b.empty()) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     k->add_zone(rule, beta_d, s.sign, s.start, s.c0, s.psi_b);
     return k;
@@ -119,7 +119,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // A step whose answer turned blended (dissimilar_zones::solve tries the other kind when the
         // previous fails) is solved again on the pressure without p_q^0, which the blended zones' W and
         // int p H do not take (kinks_of).
-        if (next->normal.kinks && (next->s.opposite || next->s.five)) next = solve_step(nullptr);
+        if (next->normal.kinks && next->s.layout.opposite()) next = solve_step(nullptr);
 
         // Iterate, then test: the changes of lambda, e, xi and the zone ends over this step.
         const double value_change =

@@ -32,7 +32,7 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     const double rho = s.rho();
     // With the edge layers neglected (formulation 8(n)) the ends are the edges, within the layers'
     // thickness: relative to the half-width.
-    const double end_scale = s.layers_neglected ? 1.0 : 0.0;
+    const double end_scale = s.layout.layers_neglected() ? 1.0 : 0.0;
     const double zone_end_floor =
         std::min(rho > 0.0 ? n_eps / rho : std::numeric_limits<double>::infinity(), 2.0 * std::sqrt(n_eps));
     struct quantity {

@@ -26,10 +26,10 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
     // min(n eps K/rho, 2 sqrt(n eps K)), K = max(1, P_H/P2). On the paper's single zone the
     // special loads Q = 0 and |Q| = f are solved without a system (c0 = 1, -1 exactly); the
     // general search's zone at |Q| = f (the least G) is computed.
-    const bool special = !s.general && (s.Q == 0.0 || std::fabs(s.Q) == f);
+    const bool special = !s.layout.general() && (s.Q == 0.0 || std::fabs(s.Q) == f);
     double c0_floor = special ? 0.0 : std::min(n_eps / own.rho(), 2.0 * std::sqrt(n_eps));
     double xi_floor = rounding_floor(n, std::fabs(own.xi) + f * size);
-    if (!special && !own.general && own.rho() > 0.0) {
+    if (!special && !own.layout.general() && own.rho() > 0.0) {
         // The paper's zone is the root of Q(c0) = f + rho int q (4.5), which rounds to ulp(f) <= eps f
         // whatever the sum's own rounding (times rho, small), and xi moves with the load as
         // d xi/dQ = 1/(pi rho): Carter's exactly, every rough pair's near gross sliding, where
@@ -38,7 +38,7 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
         // (1 - |Q|/f = 8.8e-10, rho = 3e-5: 4.4e-14 against 2.3e-16 at n = 32).
         xi_floor += DBL_EPSILON * f / (M_PI * own.rho());
     }
-    if (own.general && !own.psi_b.empty() && own.rho() > 0.0) {
+    if (own.layout.general() && !own.psi_b.empty() && own.rho() > 0.0) {
         // A zone of the general search (docs/formulation.md 7(d), 7(e)): xi, b_0 and psi(-1) are
         // read off (4.4), whose terms of size |xi| + f K they cancel (stick_system_floor). The
         // ends solve the load in the gap form rho (pi/2) b_0 = |Q| - f and the entry condition
@@ -125,7 +125,7 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         return above ? &*above : nullptr;
     };
     const auto value = [](const estimated_quantity& q, const estimate_level& l) {
-        return q.value ? l.solution.*q.value : l.lambda;
+        return q.value ? q.value(l.solution) : l.lambda;
     };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     bool second_chance = false, confirmed = false;

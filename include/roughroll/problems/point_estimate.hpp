@@ -61,13 +61,23 @@ double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, dou
 // level changes, no asymptotic rule).
 enum class estimate_structure { paper, dissimilar, full_coupling };
 
+// What a table reads off a level's solution: its accessors (the second stick zone's ends are the
+// layout's, tangential_solution::start2, end2).
+using solution_value = double (*)(const tangential_solution&);
+inline double value_xi(const tangential_solution& s) { return s.xi; }
+inline double value_c0(const tangential_solution& s) { return s.c0; }
+inline double value_Q(const tangential_solution& s) { return s.Q; }
+inline double value_start(const tangential_solution& s) { return s.start; }
+inline double value_start2(const tangential_solution& s) { return s.start2(); }
+inline double value_end2(const tangential_solution& s) { return s.end2(); }
+
 // One row of a structure's table: a quantity, read off each level's solution (`value`; nullptr:
 // the level's P_H/P2), its rounding floors at the finest of the three levels and at 2n (the second
 // chance's finest level), and the error_estimate member it is folded into (the largest of the
 // quantities folded into one member).
 struct estimated_quantity {
     const char* name;
-    double tangential_solution::*value;
+    solution_value value;
     double floor;
     double finer_floor;
     bool extrapolated;   // reported as Richardson's value of levels n and n/2

@@ -58,34 +58,29 @@ struct tangential_solution {
     double load_slope = 0.0;    // dQ/dc0 at c0 from the root search's last secant (0: unknown)
     traction_checks checks;
     // Start of the stick zone [start, c0]: -1 in the paper's structure; above -1 when the
-    // zone solver found slip on [-1, start) too, in the direction of Q (docs/formulation.md 7).
+    // zone solver found slip on [-1, start) too (docs/formulation.md 7).
     double start = -1.0;
-    bool general = false;  // found by zone_solver's search rather than the paper's single zone
     // Dundurs' forcing of the |Q| problem (docs/formulation.md 8(e)): sigma beta_D, with sigma the
     // slip direction of both slip zones; the stick equation's right side and the slip velocity
     // gain forcing * p(r). 0 for the paper's problem.
     double forcing = 0.0;
-    // The leading slip zone slips against the trailing one (dissimilar rollers, 8(g)): on the
-    // stick zone p1 = sign (f p S + q) with S blended from -1 to 1 (dissimilar_zones.hpp), so
-    // traction, slip velocity and checks are dissimilar_zones' own, not this solver's.
-    bool opposite = false;
-    // Five zones (dissimilar rollers, docs/formulation.md 8(j)): the second stick zone [start2, end2)
-    // (2, 2 — outside the contact — for every other structure) and the solution of both zones
-    // (dissimilar_zones.hpp), whose traction, slip velocity and checks these are.
-    double start2 = 2.0, end2 = 2.0;
-    std::shared_ptr<const five_zone_solution> five;
-    // Free rolling of smooth dissimilar rollers at large friction (docs/formulation.md 8(n)): the no-slip
-    // solution on [-1, 1] with the edge layers, where the model slips, neglected; each layer is thinner
-    // than layer_thickness (about 4 exp(-pi f/|beta_D|)). Traction and checks are dissimilar_zones'.
-    bool layers_neglected = false;
-    double layer_thickness = 0.0;
     // The zones from -1 to 1, each stick or slip with its direction, and the route that found them
-    // (zone_layout.hpp): its first stick zone is [start, c0].
+    // (zone_layout.hpp, docs/formulation.md 7(i)); its first stick zone is [start, c0]. Slip zones in
+    // both directions (layout.opposite(): the blended stick zone of 8(g), five zones) make traction,
+    // slip velocity and checks dissimilar_zones' own; layout.layers_neglected(): the no-slip solution
+    // of 8(n), whose traction and checks are dissimilar_zones' too.
     zone_layout layout;
+    // Five zones (8(j)): the solution of both stick zones (dissimilar_zones.hpp), whose traction, slip
+    // velocity and checks these are; null for every other structure.
+    std::shared_ptr<const five_zone_solution> five;
 
     double rho() const { return 0.5 * (c0 - start); }
-    // r on a stick zone [start, c0) (or the second one [start2, end2) of five zones)
-    bool sticks(double r) const { return (r >= start && r < c0) || (r >= start2 && r < end2); }
+    // The second stick zone [start2, end2) of five zones (8(j)); 2, 2 (outside the contact) for every
+    // other structure.
+    double start2() const { return layout.stick_zones() > 1 ? layout.stick_zone(1).from : 2.0; }
+    double end2() const { return layout.stick_zones() > 1 ? layout.stick_zone(1).to : 2.0; }
+    // r on a stick zone [from, to) of the layout
+    bool sticks(double r) const { return layout.sticks(r); }
 };
 
 // The checks every tangential solver makes on a load Q before solving (and the one-parameter
