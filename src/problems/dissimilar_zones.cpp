@@ -119,7 +119,7 @@ double load_between(const normal_solution& normal, double lo, double hi) {
         const int k = static_cast<int>(j);
         sum += normal.b[j] * (primitive(k, t_hi) - primitive(k, t_lo));
     }
-    return sum;
+    return normal.kinks ? sum + normal.kinks->integral(lo, hi) : sum;  // p_q^0's part (8(l) step 0, 8(o))
 }
 
 complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, double Q_over_f) {
@@ -221,6 +221,7 @@ double dissimilar_zones::W(double r, double start, double c0) {
     // sampling towards the edge) leaves qagp nothing to bisect, and reports round-off.
     constexpr double apart = 1e-9;
     if (inside && std::fabs(r - c0) > apart && 1.0 - r > apart && r - start > apart) points.push_back(r);
+    if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, apart);  // p's one-sided roots (8(o))
     std::sort(points.begin(), points.end());
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         double total = 0.0;
@@ -252,9 +253,13 @@ double dissimilar_zones::W(double r, double start, double c0) {
         const auto edge_pressure = [&](double eta) {
             if (!(eta < 1.0)) return 0.0;
             const u_series_table* tabulated = table();
-            return tabulated ? (*tabulated)(eta) : u_series(pressure_b_, eta) * std::sqrt((1.0 - eta) * (1.0 + eta));
+            const double smooth =
+                tabulated ? (*tabulated)(eta) : u_series(pressure_b_, eta) * std::sqrt((1.0 - eta) * (1.0 + eta));
+            return pressure_kinks_ ? smooth + pressure_kinks_->factor(eta) * std::sqrt((1.0 - eta) * (1.0 + eta))
+                                   : smooth;  // + p_q^0 (8(o))
         };
-        const double hr = u_series(pressure_b_, r) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r), the series
+        const double kr = pressure_kinks_ ? pressure_kinks_->factor(r) : 0.0;  // p_q^0/sqrt(1 - r^2) (8(o))
+        const double hr = (u_series(pressure_b_, r) + kr) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r), the series
         const double d = std::sqrt(1.0 - r), U = std::sqrt(1.0 - a);
         for (std::size_t i = 0; i + 1 < points.size(); ++i) {
             const bool last = i + 2 == points.size();
@@ -321,8 +326,13 @@ double dissimilar_zones::integrate_piece(const std::function<double(double)>& in
 double dissimilar_zones::load_under_H(double start, double c0) {
     // int p H = int_s^c p Theta (integrate_piece) + int_c^1 p (closed form, load_between).
     const std::function<double(double)> pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
-    return integrate_piece(pressure_theta, start, c0, "dissimilar zones: int p Theta") +
-           load_between(solver_.normal(), c0, 1.0);
+    std::vector<double> points{start, c0};
+    if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, 1e-9);  // p's one-sided roots (8(o))
+    std::sort(points.begin(), points.end());
+    double inner = 0.0;
+    for (std::size_t i = 0; i + 1 < points.size(); ++i)
+        inner += integrate_piece(pressure_theta, points[i], points[i + 1], "dissimilar zones: int p Theta");
+    return inner + load_between(solver_.normal(), c0, 1.0);
 }
 
 tangential_solution dissimilar_zones::blended(double start, double c0, double b) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "roughroll/base/error.hpp"
@@ -41,10 +42,10 @@ dissimilar_zones& full_coupling::zones() { return *current_->zones; }
 namespace {
 // The tangential solve of one step: Newton from the previous iterate's ends on its structure
 // (five zones by their four ends; else three zones or gross sliding by dissimilar_zones::solve,
-// which tries the previous kind first), and the checks (3.3)-(3.4) of the answer (acted on when
-// `checked`: a point reported; a level of an estimate need not hold them, as at Johnson's level).
+// which tries the previous kind first), with the checks (3.3)-(3.4) of the answer made; full_coupling::solve
+// acts on them (a point reported; a level of an estimate need not hold them, as at Johnson's level).
 // A structure the alternation cannot follow is a resolution_error (a curve's refused row), not a fault.
-tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f, bool checked) {
+tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f) {
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
         const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2(), previous.end2()});
@@ -58,28 +59,32 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
     } else {
         t = z.solve(Q, zone_guess{previous.start, previous.c0}, previous.layout.opposite());
     }
-    if (checked && !t.checks.hold())
-        throw resolution_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
-                               shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
-                               "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
-                               "the alternation does not follow; coupling = \"johnson\" answers the load");
     return t;
+}
+
+// The refusal of a reported point whose coupled zones fail the checks (3.3)-(3.4).
+resolution_error failed_checks(const tangential_solution& t, double Q, double f) {
+    return resolution_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
+                            shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
+                            "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
+                            "the alternation does not follow; coupling = \"johnson\" answers the load");
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
 std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c0, s.start2(), s.end2()}; }
 
-// The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l), step 0):
-// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zones' part q of p1 = sign (f p S + q) of
-// three zones of one direction (slip sigma on both sides of the stick zone: p1 = sign (f p + q), q = sqrt(1 - t^2)
-// psi(t) on the zone, as tangential_solver::traction adds it). Null elsewhere, where the old right side
-// beta_D p1 stays: gross sliding (q = 0, nothing to carry); the blended structures (three zones with the
-// leading slip against Q, five zones), whose W = L1[p H] and int p H (dissimilar_zones) take p from its
-// U-series in closed form and at the edge, so p_q^0 would have to join them (not built: 8(l)); and rough
-// rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, not built).
+// The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
+// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zone's part q of p1 = sign (f p + q) of three
+// zones of one direction (q = sqrt(1 - t^2) psi(t) on the zone, as tangential_solver::traction adds it). Null
+// elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing to carry); the driven three
+// zones and five zones, whose int p H and W take p_q^0 (load_between, W's edge path and break points: 8(o)) but
+// were measured not to gain (8(o): the driven exit at order 2, at 35 times the CPU of W's closed form, which
+// takes the U-series alone; five zones, the second zone's start at order 1 with a larger constant); and rough
+// rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, derived in 8(o), not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
                                                bool smooth) {
-    if (!smooth || s.layout.opposite() || !(s.c0 > s.start && s.start > -1.0) || s.psi_b.empty()) return nullptr;
+    if (!smooth || s.layout.opposite() || !(s.c0 > s.start && s.start > -1.0 && s.c0 < 1.0) || s.psi_b.empty())
+        return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     k->add_zone(rule, beta_d, s.sign, s.start, s.c0, s.psi_b);
     return k;
@@ -99,6 +104,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     tangential_solution source = johnson_point;
     double lambda = johnson.lambda, offset = 0.0;
     double previous_change = 0.0;
+    std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     for (int k = 1; k <= coupling_max_iterations; ++k) {
         if (checkpoint_) checkpoint_();
         const double beta = beta_d_;
@@ -112,14 +118,25 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             it->normal.how = johnson.how;
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
-            it->s = step(*it->zones, source, Q, f_, checked);
+            it->s = step(*it->zones, source, Q, f_);
             return it;
         };
-        auto next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty()));
-        // A step whose answer turned blended (dissimilar_zones::solve tries the other kind when the
-        // previous fails) is solved again on the pressure without p_q^0, which the blended zones' W and
-        // int p H do not take (kinks_of).
-        if (next->normal.kinks && next->s.layout.opposite()) next = solve_step(nullptr);
+        std::unique_ptr<iterate> next;
+        try {
+            next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty()));
+        } catch (const std::exception&) {
+            if (lagging) throw *lagging;  // the first failure seen, as the old program refused
+            throw;
+        }
+        // The checks of a reported point. With p_q^0 the step's pressure has its kinks at the source's zone
+        // ends, not at the step's own: until the ends settle, the checks next to them see that lag (measured on the
+        // five zones, whose margins are 1e-8 f: 8(o)), so they are acted on at the converged iterate, where the two sets
+        // of ends agree to the alternation's tolerance; a failure on the way is the refusal if the alternation
+        // stops otherwise. Without p_q^0 (rough rollers), at once, as before.
+        if (checked && !next->s.checks.hold()) {
+            if (!next->normal.kinks) throw failed_checks(next->s, Q, f_);
+            if (!lagging) lagging = failed_checks(next->s, Q, f_);
+        }
 
         // Iterate, then test: the changes of lambda, e, xi and the zone ends over this step.
         const double value_change =
@@ -133,6 +150,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             const std::vector<double> a = ends_of(next->s), b = ends_of(source);
             for (std::size_t i = 0; i < a.size(); ++i) end_change = std::max(end_change, std::fabs(a[i] - b[i]));
         }
+        if (!(std::isfinite(value_change) && std::isfinite(end_change)) && lagging) throw *lagging;
         if (!(std::isfinite(value_change) && std::isfinite(end_change)))
             throw numerical_error(at_load(Q, f_) + "the alternation gives a non-finite value at step " +
                                   std::to_string(k));
@@ -155,6 +173,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         summary_.iterations = k;
 
         if (value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance) {
+            if (checked && !current_->s.checks.hold()) throw failed_checks(current_->s, Q, f_);
             summary_.offset = offset;
             summary_.peak_pressure_change =
                 peak_of(current_->normal).p / peak_of(johnson).p * std::sqrt(johnson.lambda / current_->normal.lambda) -
@@ -165,6 +184,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // below the tolerance are rounding, which need not fall; only the ends are then unsettled).
         if (k > 3 && value_change > coupling_value_tolerance && value_change > previous_change &&
             previous_change > summary_.changes[k - 3]) {
+            if (lagging) throw *lagging;
             std::ostringstream msg;
             msg.precision(3);
             msg << at_load(Q, f_) << "the alternation does not contract (changes " << summary_.changes[k - 3] << ", "
@@ -173,6 +193,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         }
         previous_change = value_change;
     }
+    if (lagging) throw *lagging;
     std::ostringstream msg;
     msg.precision(3);
     msg << at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/pressure_kinks.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gsl/gsl_math.h>
@@ -16,6 +17,11 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
             "full coupling: a stick zone of the pressure's kinks is not inside the contact "
             "(docs/formulation.md 8(l))");
     zone z{start, 0.5 * (c0 - start), beta_d * sign, {}};
+    if (legendre_nodes_.empty()) {
+        const gauss_legendre legendre(2 * rule.n + 32);
+        legendre_nodes_ = legendre.nodes;
+        legendre_weights_ = legendre.weights;
+    }
     std::vector<double> g(static_cast<std::size_t>(rule.n));
     // int q r/sqrt(1 - r^2) dr and int q/sqrt(1 - r^2) dr over the zone: rho int sqrt(1 - t^2) g(t) (r, 1) dt,
     // by the rule's Gauss weights for sqrt(1 - t^2) (4.6), exact for the expansion g_n of degree n - 1 times r.
@@ -32,11 +38,34 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
     zones_.push_back(std::move(z));
 }
 
-double pressure_kinks::operator()(double r) const {
-    if (!(std::fabs(r) < 1.0)) return 0.0;
+double pressure_kinks::factor(double r) const {
     double h = 0.0;  // H[q/sqrt(1 - r^2)]: the zone variable's Cauchy integral (d eta/(eta - r) = d tau/(tau - t))
     for (const zone& z : zones_) h += z.amplitude * cauchy_u_series(z.b, (r - z.start) / z.rho - 1.0);
-    return std::sqrt(1.0 - r * r) * h;
+    return h;
+}
+
+double pressure_kinks::operator()(double r) const {
+    if (!(std::fabs(r) < 1.0)) return 0.0;
+    return std::sqrt(1.0 - r * r) * factor(r);
+}
+
+double pressure_kinks::integral(double lo, double hi) const {
+    // On each piece p_q^0 is sqrt(1 - r^2) times a polynomial of the zone variable (inside a zone) or
+    // an algebraic function with square roots at the zone's ends (outside): smooth in u after the map.
+    std::vector<double> cuts{std::clamp(lo, -1.0, 1.0), std::clamp(hi, -1.0, 1.0)};
+    for (const double e : ends())
+        if (e > cuts[0] && e < cuts[1]) cuts.push_back(e);
+    std::sort(cuts.begin(), cuts.end());
+    double sum = 0.0;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const double mid = 0.5 * (cuts[k] + cuts[k + 1]), half = 0.5 * (cuts[k + 1] - cuts[k]);
+        if (!(half > 0.0)) continue;
+        for (std::size_t i = 0; i < legendre_nodes_.size(); ++i) {
+            const double u = M_PI_2 * (legendre_nodes_[i] + 1.0);  // dr = half sin u du, du = (pi/2) dx
+            sum += legendre_weights_[i] * M_PI_2 * half * std::sin(u) * (*this)(mid - half * std::cos(u));
+        }
+    }
+    return sum;
 }
 
 double pressure_kinks::removed(double r) const {
@@ -59,6 +88,17 @@ std::vector<double> pressure_kinks::ends() const {
         e.push_back(z.start + 2.0 * z.rho);
     }
     return e;
+}
+
+void add_kink_points(std::vector<double>& points, const pressure_kinks& kinks, double apart) {
+    if (points.empty()) return;
+    const auto [lo, hi] = std::minmax_element(points.begin(), points.end());
+    const double a = *lo, b = *hi;
+    for (const double e : kinks.ends()) {
+        if (!(e > a + apart && e < b - apart)) continue;
+        if (std::all_of(points.begin(), points.end(), [&](double x) { return std::fabs(x - e) > apart; }))
+            points.push_back(e);
+    }
 }
 
 }  // namespace roughroll

@@ -12,11 +12,12 @@
 //      (normal_solver::solve with the coupled term: the same matrix, gamma_0n = (2/pi) lambda e); for
 //      three zones of one direction on smooth rollers the pressure's kinks at the zone ends are carried
 //      by p_q^0 from q of p1^(k) and the right side is beta_D (p1^(k) - q) (docs/formulation.md 8(l)
-//      step 0, pressure_kinks.hpp);
+//      step 0, 8(o), pressure_kinks.hpp);
 //   3. iterate, then test: stop when lambda, e, xi and the zone ends change by less than the
 //      tolerances below; numerical_error (one line) after max_iterations or when the changes grow.
 // Each tangential solve is Newton from the previous iterate's ends on the same structure (three
-// zones of either kind, gross sliding, or five zones: dissimilar_zones), with its checks (3.3)-(3.4).
+// zones of either kind, gross sliding, or five zones: dissimilar_zones), with its checks (3.3)-(3.4),
+// acted on for a reported point at every step without p_q^0 and at the converged step with it (8(o)).
 #pragma once
 
 #include <functional>

@@ -33,6 +33,13 @@ public:
     bool empty() const { return zones_.empty(); }
 
     double operator()(double r) const;  // p_q^0(r), 0 outside (-1, 1)
+    // p_q^0(r)/sqrt(1 - r^2), a bounded function with one-sided square roots at the zone ends: the factor
+    // that W's edge path multiplies by sqrt((1 - r)(1 + r)) without losing 1 - r's digits near r = 1.
+    double factor(double r) const;
+    // int_lo^hi p_q^0 for -1 <= lo <= hi <= 1 (docs/formulation.md 8(o)): Gauss-Legendre on the pieces
+    // between lo, hi and the zone ends, each mapped by r = (a + b)/2 - (b - a)/2 cos u so that the square
+    // roots at its ends (the one-sided terms, sqrt(1 - r^2) at the edges) become smooth in u.
+    double integral(double lo, double hi) const;
     double removed(double r) const;     // beta_D q(r) as carried by p_q^0 (its expansion)
     double load() const;                // int p_q^0 = beta_D int q r/sqrt(1 - r^2)
     double constant() const;            // C of H[p_q^0] = -beta_D q + C
@@ -44,7 +51,14 @@ private:
         std::vector<double> b;         // U coefficients of g(t) = psi(t)/sqrt(1 - r(t)^2)
     };
     std::vector<zone> zones_;
+    std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
 };
+
+// Adds to `points` (breakpoints of a quadrature over [points' least, points' greatest]) the zone ends of
+// `kinks` that lie strictly inside that range and more than `apart` from every point: an adaptive rule
+// that maps each piece's ends to smooth ones (dissimilar_zones::integrate_piece) then meets p's one-sided
+// square roots at piece ends (docs/formulation.md 8(o)).
+void add_kink_points(std::vector<double>& points, const pressure_kinks& kinks, double apart);
 
 }  // namespace roughroll
