@@ -353,7 +353,9 @@ tangential_solution contact::johnson_point(double Q) {
         tangential_solution s = five_zone_point(*v);
         s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
         // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
-        // on steel at n = 32, 8(j) 4a), a resolution_error (a curve's row is refused, not the curve).
+        // on steel at n = 32, 8(j) 4a), or Newton from under-resolved coarser ends landing on another
+        // root (f = 0.425..0.5 at n = 1000, 8(n) "Beyond every n"); a resolution_error either way (a
+        // curve's row is refused, not the curve).
         if (!s.checks.hold())
             throw resolution_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
                                    ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
@@ -361,7 +363,9 @@ tangential_solution contact::johnson_point(double Q) {
                                    shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
                                    "): a zone is below the collocation's resolution "
                                    "at n = " +
-                                   std::to_string(nodes()) + " (docs/formulation.md 8(j)); " +
+                                   std::to_string(nodes()) +
+                                   ", or the search from the coarser levels' zones found other five zones than the "
+                                   "physical ones (docs/formulation.md 8(j), 8(n)); " +
                                    (nodes() < max_nodes
                                         ? "a larger n (at most " + std::to_string(max_nodes) + ") may resolve it"
                                         : "n is at its largest, so this load is beyond the method's reach"));
