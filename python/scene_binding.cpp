@@ -137,9 +137,9 @@ struct curve_columns {
 // depend on it): to_si refuses a non-finite xi1. On a swept curve (no load found) the load is
 // Carter's at the same c0, for Carter's xi1 only (as write_curve_csv).
 tangential_solution with_creep(tangential_solution t, double xi) {
-    if (std::isnan(t.Q)) t.Q = carter_at_stick_end(t.c0, t.f).Q;
+    if (std::isnan(t.Q)) t.Q = carter_at_stick_end(t.c0(), t.f).Q;
     t.xi = xi;
-    t.c0 = 0.0;
+    t.layout = one_stick_zone(t.start(), 0.0);  // c0 = 0
     return t;
 }
 
@@ -156,7 +156,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         const tangential_solution& t = row.solution;
         out.Q.push_back(t.Q);
         out.Q_over_f.push_back(t.Q / t.f);
-        out.c0.push_back(t.c0);
+        out.c0.push_back(t.c0());
         out.xi.push_back(t.xi);
         out.xi_over_f.push_back(t.xi / t.f);
         out.xi_carter.push_back(row.smooth.xi);
@@ -167,7 +167,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.Q_error.push_back(row.estimate ? row.estimate->Q : nan);
         out.zones.push_back(
             row.is_refused() ? 0 : static_cast<int>(t.layout.zones.size()));  // five for two stick zones, as the CSV
-        out.stick_start.push_back(t.start);
+        out.stick_start.push_back(t.start());
         out.zone_path.push_back(row.is_refused() ? "" : to_string(t.layout.route));
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         out.n.push_back(c.nodes[i]);
@@ -210,7 +210,7 @@ traction_columns solve_traction(scene s, const std::optional<load_given>& load, 
     const point_report report = sp.report();
     traction_columns out;
     out.point = to_json(report).dump();
-    out.c0_level = level.c0;
+    out.c0_level = level.c0();
     out.physical = report.si.has_value();
     for (const traction_row& row : traction_table(sp.solved, level, grid, Q, f, report.si)) {
         out.r.push_back(row.r);

@@ -75,7 +75,7 @@ TEST(Curve, RefusedPointIsARowAndTheCurveGoesOn) {
             EXPECT_EQ(row.refused,
                       "curve point at Q = " + shortest(loads[i]) + " (Q/f = " + shortest(loads[i] / f) + "): " + why);
             EXPECT_EQ(row.solution.Q, loads[i]);
-            EXPECT_TRUE(std::isnan(row.solution.c0));
+            EXPECT_TRUE(std::isnan(row.solution.c0()));
             EXPECT_TRUE(std::isnan(row.solution.xi));
             EXPECT_FALSE(row.solution.checks.hold());
             EXPECT_FALSE(row.estimate.has_value());
@@ -83,7 +83,7 @@ TEST(Curve, RefusedPointIsARowAndTheCurveGoesOn) {
         } else {
             ++answered;
             ASSERT_FALSE(row.is_refused()) << row.refused;
-            EXPECT_EQ(row.solution.c0, s.c0);
+            EXPECT_EQ(row.solution.c0(), s.c0());
             EXPECT_EQ(row.solution.xi, s.xi);
             // A row whose checks fail carries no estimate, as the point alone (contact::estimate).
             ASSERT_EQ(row.estimate.has_value(), e.has_value());
@@ -105,7 +105,7 @@ TEST(Curve, SweptRefusedPointKeepsItsStickEnd) {
     for (const curve_point& row : curve) {
         if (!row.is_refused()) continue;
         ++refused;
-        const double c0 = row.solution.c0;
+        const double c0 = row.solution.c0();
         EXPECT_TRUE(std::isnan(row.solution.Q));
         EXPECT_TRUE(std::isnan(row.solution.xi));
         // Carter's columns at the same c0 (the load was not found): Carter's load there,
@@ -139,7 +139,7 @@ TEST(Curve, SweptLoadOutsideZeroToFIsRefused) {
     const std::vector<curve_point> curve = swept_curve(c, 5);  // c0 = 1, 0.5, 0, -0.5, -1
     int outside = 0;
     for (const curve_point& row : curve) {
-        const double c0 = row.solution.c0;
+        const double c0 = row.solution.c0();
         EXPECT_TRUE(std::isfinite(row.smooth.c0) && std::isfinite(row.smooth.xi)) << "c0 = " << c0;
         const double Q = level.at_stick_end(c0, false).Q;
         if (!(Q >= 0.0 && Q <= f)) {
@@ -170,8 +170,8 @@ TEST(Curve, SweptLoadWhoseIntervalLeavesZeroToFIsRefused) {
         if (row.refused.find("(its error estimate) reaches outside [0, f]") != std::string::npos) ++interval;
         if (row.is_refused()) continue;
         // Only the ends are answered in this scene, with their exact loads.
-        EXPECT_TRUE(row.solution.c0 == 1.0 || row.solution.c0 == -1.0) << "c0 = " << row.solution.c0;
-        EXPECT_EQ(row.solution.Q, row.solution.c0 == 1.0 ? 0.0 : f);
+        EXPECT_TRUE(row.solution.c0() == 1.0 || row.solution.c0() == -1.0) << "c0 = " << row.solution.c0();
+        EXPECT_EQ(row.solution.Q, row.solution.c0() == 1.0 ? 0.0 : f);
     }
     EXPECT_GE(interval, 1);
 }
@@ -191,7 +191,7 @@ TEST(Curve, SweptChecksEqualTheScalarRoute) {
             double margin = std::numeric_limits<double>::infinity();
             for (int i = 0; i < 200; ++i) {
                 const double x = std::cos(M_PI * (i + 0.5) / 200);
-                const double at = 0.5 * (s.start + s.c0) + 0.5 * (s.c0 - s.start) * x;
+                const double at = 0.5 * (s.start() + s.c0()) + 0.5 * (s.c0() - s.start()) * x;
                 margin = std::min(margin, (f * normal.pressure(at) - std::fabs(level.traction(s, at))) / f);
             }
             EXPECT_EQ(s.checks.stick_margin, margin) << "n = " << n << ", c0 = " << c0;
@@ -317,7 +317,7 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
         } else {
             EXPECT_EQ(
                 r[15],
-                shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0, curve[i].solution.xi).xi1));
+                shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0(), curve[i].solution.xi).xi1));
         }
     }
     EXPECT_GE(refused, 1);

@@ -22,7 +22,7 @@ struct values {
 values solve(const roughness& r, method how, int n, double Q, double f = 0.3) {
     contact c(r, f, solver_options{n, how});
     const auto s = c.point(Q);
-    return {c.normal().lambda, s.c0, s.xi};
+    return {c.normal().lambda, s.c0(), s.xi};
 }
 
 roughness equal_kernels() {
@@ -99,12 +99,12 @@ TEST(Convergence, ExtrapolatedReaches1e10) {
         EXPECT_NEAR(ext.normal().lambda / ref.normal().lambda, 1.0, 1e-10);
         for (double ratio : {0.1, 0.5, 0.9}) {
             const auto s = ext.point(ratio * 0.3), sr = ref.point(ratio * 0.3);
-            EXPECT_NEAR(s.c0, sr.c0, 1e-10 * std::fabs(sr.c0)) << "Q/f = " << ratio;
+            EXPECT_NEAR(s.c0(), sr.c0(), 1e-10 * std::fabs(sr.c0())) << "Q/f = " << ratio;
             EXPECT_NEAR(s.xi / sr.xi, 1.0, 1e-10) << "Q/f = " << ratio;
             const auto e = ext.estimate(s);
             ASSERT_TRUE(e.has_value());
             EXPECT_GE(e->xi, std::fabs(s.xi - sr.xi));
-            EXPECT_GE(e->c0, std::fabs(s.c0 - sr.c0));
+            EXPECT_GE(e->c0, std::fabs(s.c0() - sr.c0()));
         }
     }
 }
@@ -122,18 +122,18 @@ TEST(Convergence, SweptCurveAgreesWithRootSearchAndReaches1e10) {
         EXPECT_EQ(curve.back().solution.Q, 0.3);
         for (std::size_t i = 1; i + 1 < curve.size(); ++i) {
             const auto& s = curve[i].solution;
-            const auto sr = ref.at_stick_end(s.c0).solution;
-            EXPECT_NEAR(s.Q / sr.Q, 1.0, 1e-10) << "c0 = " << s.c0;
-            EXPECT_NEAR(s.xi / sr.xi, 1.0, 1e-10) << "c0 = " << s.c0;
+            const auto sr = ref.at_stick_end(s.c0()).solution;
+            EXPECT_NEAR(s.Q / sr.Q, 1.0, 1e-10) << "c0 = " << s.c0();
+            EXPECT_NEAR(s.xi / sr.xi, 1.0, 1e-10) << "c0 = " << s.c0();
             ASSERT_TRUE(curve[i].estimate.has_value());
             EXPECT_GE(curve[i].estimate->xi, std::fabs(s.xi - sr.xi));
             EXPECT_GE(curve[i].estimate->Q, std::fabs(s.Q - sr.Q));
             EXPECT_TRUE(s.checks.hold());
             // Round trip through the root search at the product level n = 128.
             contact prod(r, 0.3, solver_options{128, method::product});
-            const auto level = prod.at_stick_end(s.c0).solution;
+            const auto level = prod.at_stick_end(s.c0()).solution;
             const auto back = prod.point(level.Q);
-            EXPECT_NEAR(back.c0, s.c0, 1e-13);
+            EXPECT_NEAR(back.c0(), s.c0(), 1e-13);
             EXPECT_NEAR(back.xi, level.xi, 1e-13);
         }
     }

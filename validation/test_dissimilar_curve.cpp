@@ -58,7 +58,7 @@ TEST(DissimilarCurve, RowsArePointsAndTheMirrorHolds) {
                     row.solution.layout.stick_zones() == 2 ? "five zones" : "three", row.solution.xi + other.solution.xi);
         // The mirror curve is solved in the opposite order, from other starts: equal to Newton's resolution.
         EXPECT_NEAR(row.solution.xi, -other.solution.xi, tol::two_routes) << loads[i];
-        EXPECT_NEAR(row.solution.c0, other.solution.c0, 1e-9) << loads[i];
+        EXPECT_NEAR(row.solution.c0(), other.solution.c0(), 1e-9) << loads[i];
         if (i > 0) {
             EXPECT_GT(row.solution.xi, rows[i - 1].solution.xi) << loads[i];
         }
@@ -74,10 +74,10 @@ TEST(DissimilarCurve, RowsArePointsAndTheMirrorHolds) {
         ASSERT_EQ(s.layout.stick_zones(), row.layout.stick_zones()) << loads[i];
         if (s.layout.stick_zones() != 2) {
             EXPECT_EQ(s.xi, row.xi) << loads[i];
-            EXPECT_EQ(s.c0, row.c0) << loads[i];
+            EXPECT_EQ(s.c0(), row.c0()) << loads[i];
         } else {
             EXPECT_NEAR(s.xi, row.xi, tol::two_routes) << loads[i];
-            for (const auto& [a, b] : {std::pair{s.start, row.start}, std::pair{s.c0, row.c0},
+            for (const auto& [a, b] : {std::pair{s.start(), row.start()}, std::pair{s.c0(), row.c0()},
                                        std::pair{s.start2(), row.start2()}, std::pair{s.end2(), row.end2()}})
                 EXPECT_NEAR(a, b, 1e-9) << loads[i];
         }

@@ -288,11 +288,11 @@ TEST(DissimilarFiveZones, BrakedSideHandsOverToThreeZones) {
     EXPECT_TRUE(three.checks.hold());
     EXPECT_FALSE(three.layout.opposite());
     std::printf("Q/f = -0.0725: five [%.6f, %.6f], [%.6f, %.6f] xi %.9f; -0.075: three [%.6f, %.6f] xi %.9f\n",
-                last->s1, last->c1, last->s2, last->c2, last->xi, three.start, three.c0, three.xi);
+                last->s1, last->c1, last->s2, last->c2, last->xi, three.start(), three.c0(), three.xi);
     // Continuity through the transition: the merged stick zone's ends are the outer ends of the five,
     // and the creep moves by the local slope times the step (slope from the five zones' -0.02 .. -0.0725).
-    EXPECT_NEAR(three.start, last->s1, 0.002);
-    EXPECT_NEAR(three.c0, last->c2, 0.002);
+    EXPECT_NEAR(three.start(), last->s1, 0.002);
+    EXPECT_NEAR(three.c0(), last->c2, 0.002);
     const double slope = (last->xi - near->xi) / (-0.0525 * f);
     EXPECT_LT(std::fabs(three.xi - last->xi), 2.0 * std::fabs(slope) * 0.0025 * f);
     const normal_solution hertz = hertz_solution(32, method::product);

@@ -103,34 +103,34 @@ TEST(DissimilarNearSliding, BrakedPairAnsweredAtTheDefaultNWithBoundsThatHold) {
     const tangential_solution& s = p->solution;
     ASSERT_FALSE(s.layout.stick_zones() == 2);
     ASSERT_TRUE(s.checks.hold());
-    EXPECT_GT(s.start, -1.0);
+    EXPECT_GT(s.start(), -1.0);
     EXPECT_LT(s.rho(), 0.03);  // the stick zone near gross sliding
     const auto coarse = at(32, braked), fine = at(512, braked);
     ASSERT_TRUE(coarse && fine);
-    std::printf("n = 128: start %.15f +- %.2e, c0 %.15f +- %.2e, xi %.16f +- %.2e\n", s.start, p->estimate.start, s.c0,
+    std::printf("n = 128: start %.15f +- %.2e, c0 %.15f +- %.2e, xi %.16f +- %.2e\n", s.start(), p->estimate.start, s.c0(),
                 p->estimate.c0, s.xi, p->estimate.xi);
     for (const routed* r : {&*coarse, &*fine}) {
-        std::printf("  against start %.15f (+- %.2e) c0 %.15f (+- %.2e) xi %.16f: %.2e %.2e %.2e\n", r->solution.start,
-                    r->estimate.start, r->solution.c0, r->estimate.c0, r->solution.xi,
-                    std::fabs(s.start - r->solution.start), std::fabs(s.c0 - r->solution.c0),
+        std::printf("  against start %.15f (+- %.2e) c0 %.15f (+- %.2e) xi %.16f: %.2e %.2e %.2e\n", r->solution.start(),
+                    r->estimate.start, r->solution.c0(), r->estimate.c0, r->solution.xi,
+                    std::fabs(s.start() - r->solution.start()), std::fabs(s.c0() - r->solution.c0()),
                     std::fabs(s.xi - r->solution.xi));
         // |error of n = 128| >= |distance| - (the other route's bound): within n = 128's bound.
-        EXPECT_LE(std::fabs(s.start - r->solution.start) - r->estimate.start, p->estimate.start);
-        EXPECT_LE(std::fabs(s.c0 - r->solution.c0) - r->estimate.c0, p->estimate.c0);
+        EXPECT_LE(std::fabs(s.start() - r->solution.start()) - r->estimate.start, p->estimate.start);
+        EXPECT_LE(std::fabs(s.c0() - r->solution.c0()) - r->estimate.c0, p->estimate.c0);
         EXPECT_LE(std::fabs(s.xi - r->solution.xi) - r->estimate.xi, p->estimate.xi);
     }
     // The n = 32 route's rounding is 16 times below n = 128's: its distance alone stays within.
-    EXPECT_LE(std::fabs(s.start - coarse->solution.start), p->estimate.start);
-    EXPECT_LE(std::fabs(s.c0 - coarse->solution.c0), p->estimate.c0);
+    EXPECT_LE(std::fabs(s.start() - coarse->solution.start()), p->estimate.start);
+    EXPECT_LE(std::fabs(s.c0() - coarse->solution.c0()), p->estimate.c0);
     // The truncated entry at n = 512 (the limit to about 1e-11, and n = 32's to 3e-11): n = 128 and
     // n = 512 each within their own bounds of it.
-    const auto [ts, tc] = truncated_entry_ends(512, braked, s.start, s.c0);
+    const auto [ts, tc] = truncated_entry_ends(512, braked, s.start(), s.c0());
     std::printf("  truncated entry, n = 512: start %.15f c0 %.15f: %.2e %.2e (n = 512: %.2e)\n", ts, tc,
-                std::fabs(s.start - ts), std::fabs(s.c0 - tc), std::fabs(fine->solution.start - ts));
-    EXPECT_NEAR(ts, coarse->solution.start, 3e-11);
-    EXPECT_LE(std::fabs(s.start - ts), p->estimate.start);
-    EXPECT_LE(std::fabs(s.c0 - tc), p->estimate.c0);
-    EXPECT_LE(std::fabs(fine->solution.start - ts), fine->estimate.start);
+                std::fabs(s.start() - ts), std::fabs(s.c0() - tc), std::fabs(fine->solution.start() - ts));
+    EXPECT_NEAR(ts, coarse->solution.start(), 3e-11);
+    EXPECT_LE(std::fabs(s.start() - ts), p->estimate.start);
+    EXPECT_LE(std::fabs(s.c0() - tc), p->estimate.c0);
+    EXPECT_LE(std::fabs(fine->solution.start() - ts), fine->estimate.start);
 }
 
 // The floor reads rounding as rounding, not divergence: on the braked point's zone (rho = 0.0228,
@@ -169,11 +169,11 @@ TEST(DissimilarNearSliding, DrivenPairAnsweredWhereTheLeadingSlipZoneIsThin) {
     ASSERT_TRUE(point && fine);
     const tangential_solution& s = point->solution;
     EXPECT_TRUE(s.checks.hold());
-    EXPECT_GT(s.start, -1.0);
-    EXPECT_LT(s.start, -1.0 + 4.8e-3);  // inside the scan's first trial start
+    EXPECT_GT(s.start(), -1.0);
+    EXPECT_LT(s.start(), -1.0 + 4.8e-3);  // inside the scan's first trial start
     EXPECT_TRUE(s.layout.opposite());  // slip- on the leading zone, slip+ on the trailing one
     const double both = point->estimate.start + fine->estimate.start;
-    EXPECT_LE(std::fabs(s.start - fine->solution.start), both);
-    EXPECT_LE(std::fabs(s.c0 - fine->solution.c0), point->estimate.c0 + fine->estimate.c0);
+    EXPECT_LE(std::fabs(s.start() - fine->solution.start()), both);
+    EXPECT_LE(std::fabs(s.c0() - fine->solution.c0()), point->estimate.c0 + fine->estimate.c0);
     EXPECT_LE(std::fabs(s.xi - fine->solution.xi), point->estimate.xi + fine->estimate.xi);
 }

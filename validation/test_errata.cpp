@@ -235,7 +235,7 @@ TEST(Errata, E6MissingJacobian) {
         // Switches off, the test's system is the library's: same c0 and xi up to the two
         // root searches' tolerances (1e-14 here, 1e-15 Brent) times the slope of Q(c0).
         const tangential_solution lib = tangential_solver(normal, k, k, f).solve(Q);
-        EXPECT_NEAR(ok.c0, lib.c0, tol::two_routes);
+        EXPECT_NEAR(ok.c0, lib.c0(), tol::two_routes);
         EXPECT_NEAR(ok.xi, lib.xi, tol::two_routes);
 
         // Why the printed form fails: with K1* = K2* and no Jacobian, the stick equation in
@@ -282,7 +282,7 @@ TEST(Errata, E8NodeSumG) {
     const kernel k1 = kernel::tangential(surfaces), k2 = kernel::normal(surfaces), dk = k2.minus(k1);
 
     contact reference(surfaces, f, solver_options{320, method::product});
-    const double c0_ref = reference.point(Q).c0;
+    const double c0_ref = reference.point(Q).c0();
 
     double previous_lib = 0.0;  // the library's c0 error at n/2
     for (int n : {40, 80, 160}) {
@@ -326,7 +326,7 @@ TEST(Errata, E8NodeSumG) {
         }
 
         // (b) c0 against the product-integration reference at n = 320.
-        const double err_lib = lib.solve(Q).c0 - c0_ref;
+        const double err_lib = lib.solve(Q).c0() - c0_ref;
         const double err_sum = solve_for(normal, k1, f, G_sum, Q, {}).c0 - c0_ref;
         std::printf("E8 n = %d: c0 error library %.3e, node sum %.3e\n", n, err_lib, err_sum);
         if (n > 40) {

@@ -54,7 +54,7 @@ TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
         const std::function<double(double)> coupled = [&](double r) {
             return beta_al_st * c.traction(s, r) - (p.kinks ? p.kinks->removed(r) : 0.0);
         };
-        const std::vector<double> ends{s.start, s.c0, s.start2(), s.end2()};
+        const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
         // The alternation stops when the traction's changes are below 1e-12 in xi and lambda, so
         // the last p1 and the one p was solved with differ by about that.
         EXPECT_NEAR(M_2_PI * p.lambda * p.offset, p.gamma, 1e-15) << Q;
@@ -181,11 +181,11 @@ TEST(FullCoupling, EstimatesBoundTheError) {
                 ++answered;
                 EXPECT_GE(e->lambda, std::fabs(c.normal().lambda - lambda)) << q << " " << n;
                 EXPECT_GE(e->xi, std::fabs(s.xi - r.xi)) << q << " " << n;
-                EXPECT_GE(e->c0, std::fabs(s.c0 - r.c0)) << q << " " << n;
-                EXPECT_GE(e->start, std::fabs(s.start - r.start)) << q << " " << n;
+                EXPECT_GE(e->c0, std::fabs(s.c0() - r.c0())) << q << " " << n;
+                EXPECT_GE(e->start, std::fabs(s.start() - r.start())) << q << " " << n;
                 std::printf("Q/f %+.2f n %3d: errors %.2g %.2g %.2g %.2g, estimates %.2g %.2g %.2g %.2g\n", q, n,
-                            std::fabs(c.normal().lambda - lambda), std::fabs(s.xi - r.xi), std::fabs(s.c0 - r.c0),
-                            std::fabs(s.start - r.start), e->lambda, e->xi, e->c0, e->start);
+                            std::fabs(c.normal().lambda - lambda), std::fabs(s.xi - r.xi), std::fabs(s.c0() - r.c0()),
+                            std::fabs(s.start() - r.start()), e->lambda, e->xi, e->c0, e->start);
             } catch (const resolution_error& why) {
                 ++refused;
                 std::printf("Q/f %+.2f n %3d: refused (%s)\n", q, n, why.what());
@@ -212,27 +212,27 @@ TEST(FullCoupling, ZoneEndsConvergeWithTheKinksCarried) {
         s.push_back(c.point(Q));
         lambda.push_back(c.normal().lambda);
         ASSERT_NE(c.normal().kinks, nullptr) << n;
-        std::printf("n %3d: c0 %.12f start %.12f xi %.13f lambda %.13f\n", n, s.back().c0, s.back().start, s.back().xi,
+        std::printf("n %3d: c0 %.12f start %.12f xi %.13f lambda %.13f\n", n, s.back().c0(), s.back().start(), s.back().xi,
                     lambda.back());
     }
-    const double d1 = s[1].c0 - s[0].c0, d2 = s[2].c0 - s[1].c0;
+    const double d1 = s[1].c0() - s[0].c0(), d2 = s[2].c0() - s[1].c0();
     EXPECT_GT(std::fabs(d1) / std::fabs(d2), std::pow(2.0, 1.5)) << d1 << " " << d2;
     EXPECT_LT(std::fabs(d2), 1e-6);
     const double richardson = 1.0 / (std::pow(2.0, 1.5) - 1.0);
     const auto reference = [&](double fine, double coarse) { return fine + (fine - coarse) * richardson; };
-    const double c0 = reference(s[3].c0, s[2].c0), start = reference(s[3].start, s[2].start);
+    const double c0 = reference(s[3].c0(), s[2].c0()), start = reference(s[3].start(), s[2].start());
     const double xi = reference(s[3].xi, s[2].xi), lam = reference(lambda[3], lambda[2]);
     for (const int i : {1, 2}) {
         contact c = full(i == 1 ? 128 : 256);
         const tangential_solution t = c.point(Q);
         const std::optional<error_estimate> e = c.estimate(t);
         ASSERT_TRUE(e.has_value());
-        const double u = std::fabs(s[3].c0 - s[2].c0), us = std::fabs(s[3].start - s[2].start);
+        const double u = std::fabs(s[3].c0() - s[2].c0()), us = std::fabs(s[3].start() - s[2].start());
         std::printf("n %3d: c0 error %.2g (estimate %.2g), start %.2g (%.2g), xi %.2g (%.2g), lambda %.2g (%.2g)\n",
-                    i == 1 ? 128 : 256, std::fabs(t.c0 - c0), e->c0, std::fabs(t.start - start), e->start,
+                    i == 1 ? 128 : 256, std::fabs(t.c0() - c0), e->c0, std::fabs(t.start() - start), e->start,
                     std::fabs(t.xi - xi), e->xi, std::fabs(c.normal().lambda - lam), e->lambda);
-        EXPECT_LE(std::fabs(t.c0 - c0) + u, e->c0) << i;
-        EXPECT_LE(std::fabs(t.start - start) + us, e->start) << i;
+        EXPECT_LE(std::fabs(t.c0() - c0) + u, e->c0) << i;
+        EXPECT_LE(std::fabs(t.start() - start) + us, e->start) << i;
         EXPECT_LE(std::fabs(t.xi - xi) + std::fabs(s[3].xi - s[2].xi), e->xi) << i;
         EXPECT_LE(std::fabs(c.normal().lambda - lam) + std::fabs(lambda[3] - lambda[2]), e->lambda) << i;
     }
@@ -328,8 +328,8 @@ TEST(FullCouplingPhysical, SmoothPairSolvesItsPointsAlternationOnce) {
     ASSERT_TRUE(e);
     EXPECT_GT(apart, 0);
     EXPECT_EQ(steps, apart);
-    EXPECT_EQ(p.solution.c0, s.c0);
-    EXPECT_EQ(p.solution.start, s.start);
+    EXPECT_EQ(p.solution.c0(), s.c0());
+    EXPECT_EQ(p.solution.start(), s.start());
     EXPECT_EQ(p.solution.xi, s.xi);
     EXPECT_EQ(p.estimate->c0, e->c0);
 }

@@ -44,7 +44,7 @@ solved solve(const scene& s) {
     const contact_width w = width_of(s);
     contact c(roughness_at(*s.physical, w.a), s.friction, s.solver);
     const tangential_solution p = c.point(*s.Q);
-    return {w, to_si(*s.physical, w, p.Q, p.f, p.c0, p.xi), p};
+    return {w, to_si(*s.physical, w, p.Q, p.f, p.c0(), p.xi), p};
 }
 }  // namespace
 
@@ -101,7 +101,7 @@ TEST(GivenLoad, HertzWidthIsThePapersProblem) {
     const tangential_solution pa = a.point(0.15);
     const solved ph = solve(phys);
     EXPECT_NEAR(ph.width.lambda, a.normal().lambda, tol::two_routes);
-    EXPECT_NEAR(ph.point.c0, pa.c0, tol::two_routes);
+    EXPECT_NEAR(ph.point.c0(), pa.c0(), tol::two_routes);
     EXPECT_NEAR(ph.point.xi, pa.xi, tol::two_routes);
     EXPECT_NEAR(ph.width.load, 3e5 / a.normal().lambda, 1e-6);
     EXPECT_EQ(ph.width.a, ph.width.a_hertz);
@@ -191,7 +191,7 @@ TEST(GivenLoad, SharedNormalProblemsGiveTheSamePoint) {
         contact without(roughness_at(*s.physical, alone.a), s.friction, s.solver);
         const tangential_solution p = with.point(*s.Q), q = without.point(*s.Q);
         EXPECT_EQ(with.normal().lambda, without.normal().lambda) << how;
-        EXPECT_EQ(p.c0, q.c0) << how;
+        EXPECT_EQ(p.c0(), q.c0()) << how;
         EXPECT_EQ(p.xi, q.xi) << how;
         EXPECT_EQ(with.estimate(p)->xi, without.estimate(q)->xi) << how;
     }

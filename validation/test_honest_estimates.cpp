@@ -126,8 +126,8 @@ tally honest_or_refused(method how, int n, int fine_n) {
             EXPECT_LE(std::fabs(coarse->normal().lambda - fine->normal().lambda), e->lambda)
                 << "P_H/P2 " << coarse->normal().lambda << " against " << fine->normal().lambda << " (" << e->against
                 << ")";
-            EXPECT_LE(std::fabs(s.c0 - sf->c0), e->c0)
-                << "c0 " << s.c0 << " against " << sf->c0 << " (" << e->against << ")";
+            EXPECT_LE(std::fabs(s.c0() - sf->c0()), e->c0)
+                << "c0 " << s.c0() << " against " << sf->c0() << " (" << e->against << ")";
             EXPECT_LE(std::fabs(s.xi - sf->xi), e->xi)
                 << "xi " << s.xi << " against " << sf->xi << " (" << e->against << ")";
         }
@@ -174,7 +174,7 @@ TEST(HonestEstimates, StiffNormalLayerSlowsDown) {
         EXPECT_LE(std::fabs(v.finest - finer), b.value) << what << ": ratio " << b.ratio;
     };
     check({at24.normal().lambda, at48.normal().lambda, at96.normal().lambda}, fine.normal().lambda, "P_H/P2");
-    check({s24.c0, s48.c0, s.c0}, sf.c0, "c0");
+    check({s24.c0(), s48.c0(), s.c0()}, sf.c0(), "c0");
     check({s24.xi, s48.xi, s.xi}, sf.xi, "xi");
     EXPECT_GT(bounded, 0) << "the case of the bounded rule";
 }
@@ -192,7 +192,7 @@ struct referenced_point {
 referenced_point two_routes(const roughness& r, double f, double Q, solver_options a, solver_options b) {
     contact ca(r, f, a), cb(r, f, b);
     const tangential_solution sa = ca.point(Q), sb = cb.point(Q);
-    return {r, f, Q, sa.c0, sa.xi, std::fabs(sa.c0 - sb.c0), std::fabs(sa.xi - sb.xi)};
+    return {r, f, Q, sa.c0(), sa.xi, std::fabs(sa.c0() - sb.c0()), std::fabs(sa.xi - sb.xi)};
 }
 // Whether the contact at options o answers the point honestly: refused (resolution_error), or an
 // estimate of c0 and xi that is not below the distance to the reference (the distance reduced by
@@ -208,9 +208,9 @@ bool honest_or_refused_at(const referenced_point& ref, solver_options o) {
             return false;
         }
         std::printf("%s n = %d: c0 %.16g +- %.2g (reference %.16g, spread %.2g), xi %.16g +- %.2g (%s)\n",
-                    to_string(o.how).c_str(), o.nodes(), s.c0, e->c0, ref.c0, ref.spread_c0, s.xi, e->xi,
+                    to_string(o.how).c_str(), o.nodes(), s.c0(), e->c0, ref.c0, ref.spread_c0, s.xi, e->xi,
                     e->against.c_str());
-        EXPECT_LE(std::fabs(s.c0 - ref.c0) - ref.spread_c0, e->c0) << e->against;
+        EXPECT_LE(std::fabs(s.c0() - ref.c0) - ref.spread_c0, e->c0) << e->against;
         EXPECT_LE(std::fabs(s.xi - ref.xi) - ref.spread_xi, e->xi) << e->against;
         return true;
     } catch (const resolution_error& x) {
@@ -293,7 +293,7 @@ TEST(HonestEstimates, OneRuleForEveryStructure) {
     const auto level = [](double v) {
         tangential_solution t{};
         t.xi = v;
-        t.c0 = v;
+        t.layout = one_stick_zone(-1.0, v);  // c0 = v
         return estimate_level{t, 1.0};
     };
     const std::array<estimate_level, 3> levels{level(1.0), level(2.0), level(3.0)};
@@ -347,7 +347,7 @@ TEST(HonestEstimates, FourthLevelConfirmsEveryQuantity) {
     const auto level = [](double xi, double c0) {
         tangential_solution t{};
         t.xi = xi;
-        t.c0 = c0;
+        t.layout = one_stick_zone(-1.0, c0);
         return estimate_level{t, 1.0};
     };
     const std::array<estimate_level, 3> levels{level(1.0, 0.0), level(2.0, 1.6), level(2.5, 1.7)};

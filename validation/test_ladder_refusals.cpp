@@ -115,7 +115,7 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
     }
     level_ladder paper_problem(solver_options{}, roughness{},
                                [](int n) { return std::make_unique<contact>(roughness{}, 0.3, solver_options{n}); });
-    EXPECT_EQ(paper_problem.point(0.0).solution.c0, 1.0);  // full stick, answered at the first rung
+    EXPECT_EQ(paper_problem.point(0.0).solution.c0(), 1.0);  // full stick, answered at the first rung
     contact rough(roughness{{{1.0, 0.5}, {}}, {}}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_FALSE(rough.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     contact full(roughness{}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::full});

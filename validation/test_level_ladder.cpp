@@ -64,7 +64,7 @@ TEST(LevelLadder, NearSlidingOneParameterClimbsToAnHonestAnswer) {
     ASSERT_TRUE(fine.solution.checks.hold());
     const error_estimate& e = *p.estimate;
     EXPECT_LE(std::fabs(p.solution.xi - fine.solution.xi), e.xi);
-    EXPECT_LE(std::fabs(p.solution.c0 - fine.solution.c0), e.c0);
+    EXPECT_LE(std::fabs(p.solution.c0() - fine.solution.c0()), e.c0);
     EXPECT_LE(std::fabs(p.solved.normal().lambda - fine.solved.normal().lambda), e.lambda);
     // and within the tolerance it was chosen for
     EXPECT_LE(check_estimate(p.solution, p.solved.normal().lambda, e, default_tolerance).ratio, 1.0);

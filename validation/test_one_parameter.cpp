@@ -49,16 +49,16 @@ TEST_P(TwoParameterToLimit, DistanceFallsLikeOneOverA) {
     const double eps1 = GetParam(), eps2 = 0.2, Q = 0.5 * f;
     one_parameter_solver limit(compliances{eps1, eps2}, f, 512);
     const tangential_solution l = limit.solve(Q);
-    const values lim{limit.normal().lambda, l.c0, l.xi};
+    const values lim{limit.normal().lambda, l.c0(), l.xi};
     std::vector<values> distance;
     std::vector<values> two;
     for (double A : {10.0, 20.0, 40.0, 80.0, 160.0}) {
         contact c(scaled(A, eps1, eps2), f, solver_options{128, method::extrapolated});
         const tangential_solution s = c.point(Q);
         EXPECT_TRUE(s.checks.hold()) << "A = " << A;
-        two.push_back({c.normal().lambda, s.c0, s.xi});
+        two.push_back({c.normal().lambda, s.c0(), s.xi});
         distance.push_back(
-            {std::fabs(c.normal().lambda - lim.lambda), std::fabs(s.c0 - lim.c0), std::fabs(s.xi - lim.xi)});
+            {std::fabs(c.normal().lambda - lim.lambda), std::fabs(s.c0() - lim.c0), std::fabs(s.xi - lim.xi)});
         // The roughness adds compliance towards the limit from below: lambda, c0, xi all increase with A.
         EXPECT_LT(c.normal().lambda, lim.lambda);
     }
@@ -93,7 +93,7 @@ TEST(OneParameter, SecondOrderInN) {
         for (int n : {32, 64, 128, 256, 512}) {
             one_parameter_solver s(eps, f, n);
             const tangential_solution t = s.solve(0.5 * f);
-            v.push_back({s.normal().lambda, t.c0, t.xi});
+            v.push_back({s.normal().lambda, t.c0(), t.xi});
         }
         auto check = [&](double (*get)(const values&), const char* what) {
             std::vector<double> diff;
@@ -124,7 +124,7 @@ TEST(OneParameter, SmoothLimitIsCarter) {
                 const tangential_solution t = s.solve(sign * ratio * f);
                 const carter_point c = carter(sign * ratio * f, f);
                 EXPECT_GT(t.iterations, 0);
-                EXPECT_NEAR(t.c0, c.c0, tol::two_routes) << ratio;
+                EXPECT_NEAR(t.c0(), c.c0, tol::two_routes) << ratio;
                 EXPECT_NEAR(t.xi, c.xi, tol::two_routes) << ratio;
                 EXPECT_TRUE(t.checks.hold()) << ratio;
             }
@@ -136,7 +136,7 @@ TEST(OneParameter, SmoothLimitIsCarter) {
         const tangential_solution t = s.solve(0.5 * f);
         const carter_point c = carter(0.5 * f, f);
         EXPECT_TRUE(t.checks.hold()) << eps;
-        d.push_back({s.normal().lambda - 1.0, t.c0 - c.c0, t.xi - c.xi});
+        d.push_back({s.normal().lambda - 1.0, t.c0() - c.c0, t.xi - c.xi});
         EXPECT_GT(d.back().lambda, 0.0);  // compliance: lambda > 1, creep above Carter's
         EXPECT_GT(d.back().xi, 0.0);
     }
@@ -167,8 +167,8 @@ TEST(OneParameter, LargeComplianceIsBrush) {
                 const double rho = std::cbrt(1.0 - ratio);
                 e = std::max(e, std::fabs(t.rho() - rho));
                 e = std::max(e, std::fabs(t.xi / (1.5 * f * c.tangential * (1.0 - rho)) - 1.0));
-                const double r = t.c0 - 0.6 * t.rho();  // inside the stick zone
-                const double brush_q = 0.75 * f * (1.0 + r) * (r - t.c0);
+                const double r = t.c0() - 0.6 * t.rho();  // inside the stick zone
+                const double brush_q = 0.75 * f * (1.0 + r) * (r - t.c0());
                 e = std::max(e, std::fabs(t.sign * s.traction(t, r) - f * s.normal().pressure(r) - brush_q) / f);
             }
             worst.push_back(e);
@@ -201,18 +201,18 @@ TEST(OneParameter, ChecksAndSpecialLoads) {
                 EXPECT_EQ(t.sign, sign);
                 EXPECT_GT(sign * t.xi, carter(ratio * f, f).xi);
                 // The root: the solved system at c0 carries the requested load.
-                EXPECT_NEAR(s.load(t.c0), ratio * f, tol::two_routes);
-                EXPECT_EQ(s.slip_velocity(t, t.c0 - 0.01), 0.0);
-                EXPECT_GT(sign * s.slip_velocity(t, 0.5 * (t.c0 + 1.0)), 0.0);
+                EXPECT_NEAR(s.load(t.c0()), ratio * f, tol::two_routes);
+                EXPECT_EQ(s.slip_velocity(t, t.c0() - 0.01), 0.0);
+                EXPECT_GT(sign * s.slip_velocity(t, 0.5 * (t.c0() + 1.0)), 0.0);
             }
         }
         const tangential_solution stick = s.solve(0.0);
-        EXPECT_EQ(stick.c0, 1.0);
+        EXPECT_EQ(stick.c0(), 1.0);
         EXPECT_EQ(stick.xi, 0.0);
         EXPECT_NEAR(s.traction(stick, 0.3), 0.0, tol::few_roundings);
         if (eps.normal > 0.0 || eps.tangential == 0.0) {
             const tangential_solution slide = s.solve(-f);
-            EXPECT_EQ(slide.c0, -1.0);
+            EXPECT_EQ(slide.c0(), -1.0);
             EXPECT_NEAR(slide.xi, f * s.G(-1.0), tol::few_roundings);
             EXPECT_NEAR(s.traction(slide, 0.2), -f * s.normal().pressure(0.2), tol::few_roundings);
         } else {
@@ -261,7 +261,7 @@ TEST(OneParameter, SweptAgreesWithRootSearch) {
         const tangential_solution swept = s.at_stick_end(c0);
         EXPECT_TRUE(swept.checks.hold()) << c0;
         const tangential_solution found = s.solve(swept.Q);
-        EXPECT_NEAR(found.c0, c0, tol::two_routes);
+        EXPECT_NEAR(found.c0(), c0, tol::two_routes);
         EXPECT_NEAR(found.xi, swept.xi, tol::two_routes);
     }
 }

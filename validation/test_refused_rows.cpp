@@ -103,8 +103,8 @@ TEST(DissimilarSmallBeta, LeadingZoneEstimateAgainstTheSolvedStart) {
         contact c(roughness{}, f, solver_options{128, method::product}, dissimilar{beta, coupling_level::johnson});
         const tangential_solution s = c.point(load * f);
         EXPECT_TRUE(s.checks.hold());
-        EXPECT_GT(1.0 + s.start, 0.5 * estimate);
-        EXPECT_LT(1.0 + s.start, 2.0 * estimate);
+        EXPECT_GT(1.0 + s.start(), 0.5 * estimate);
+        EXPECT_LT(1.0 + s.start(), 2.0 * estimate);
     }
     // The refusal's threshold is what it says: at the |beta_d| it names, the load is not refused.
     try {
@@ -191,11 +191,11 @@ TEST(RefusedRows, RoughPairRowWithoutItsZonesIsRefusedNotAborted) {
 TEST(RefusedRows, SweptRowWhoseFinerLevelsAlternateIsAnswered) {
     const scene_curve c = curve_of(read_scene(ROUGHROLL_DATA "/steel-rollers-ground.toml"), std::nullopt, 41, true);
     const curve_point& row = c.rows.at(33);
-    ASSERT_NEAR(row.solution.c0, -0.65, 1e-12);
+    ASSERT_NEAR(row.solution.c0(), -0.65, 1e-12);
     ASSERT_FALSE(row.is_refused()) << row.refused;
     ASSERT_TRUE(row.estimate.has_value());
     contact fine(c.settled.surfaces, c.settled.friction, solver_options{512, method::product});
-    const contact::swept_point f = fine.at_stick_end(row.solution.c0);
+    const contact::swept_point f = fine.at_stick_end(row.solution.c0());
     EXPECT_LE(std::fabs(row.solution.Q - f.solution.Q), row.estimate->Q);
     EXPECT_LE(std::fabs(row.solution.xi - f.solution.xi), row.estimate->xi);
 }
@@ -225,6 +225,6 @@ TEST(RefusedRows, SlowlyShrinkingFinerLevelsAreBoundedNotRefused) {
     ASSERT_TRUE(p.solution.checks.hold());
     contact fine(p.settled.surfaces, p.settled.friction, solver_options{512, method::product});
     const tangential_solution f = fine.point(0.29568);
-    EXPECT_LE(std::fabs(p.solution.c0 - f.c0), p.estimate->c0);
+    EXPECT_LE(std::fabs(p.solution.c0() - f.c0()), p.estimate->c0);
     EXPECT_LE(std::fabs(p.solution.xi - f.xi), p.estimate->xi);
 }

@@ -32,7 +32,7 @@ TEST_P(SmoothLimit, SchemeEqualsCarter) {
             const carter_point c = carter(Q, f);
             EXPECT_GT(s.iterations, 0);
             EXPECT_NEAR(s.xi, c.xi, tol::two_routes) << "Q/f = " << Q / f;
-            EXPECT_NEAR(0.5 * (1.0 + s.c0), 0.5 * (1.0 + c.c0), tol::two_routes) << "Q/f = " << Q / f;
+            EXPECT_NEAR(0.5 * (1.0 + s.c0()), 0.5 * (1.0 + c.c0), tol::two_routes) << "Q/f = " << Q / f;
             EXPECT_TRUE(s.checks.hold()) << "Q/f = " << Q / f;
         }
     }

@@ -43,7 +43,7 @@ void expect_general_and_honest(const roughness& r, const std::vector<double>& lo
             contact c(r, f, solver_options{n, method::product});
             const tangential_solution s = c.point(Q);
             EXPECT_TRUE(s.layout.general());
-            EXPECT_GT(s.start, -1.0);
+            EXPECT_GT(s.start(), -1.0);
             EXPECT_TRUE(s.checks.hold()) << "margins " << s.checks.stick_margin << " (floor " << s.checks.stick_rounding
                                          << "), " << s.checks.slip_margin;
             // The floor is rounding, far below a failure of the structure (-0.09 for the paper's zone here).
@@ -51,7 +51,7 @@ void expect_general_and_honest(const roughness& r, const std::vector<double>& lo
             const std::optional<error_estimate> e = c.estimate(s);
             ASSERT_TRUE(e.has_value());
             EXPECT_LE(std::fabs(s.xi - reference.xi), e->xi) << s.xi << " against " << reference.xi;
-            EXPECT_LE(std::fabs(s.c0 - reference.c0), e->c0) << s.c0 << " against " << reference.c0;
+            EXPECT_LE(std::fabs(s.c0() - reference.c0()), e->c0) << s.c0() << " against " << reference.c0();
         }
     }
 }
@@ -86,14 +86,14 @@ TEST(ZonesNearSliding, CreepCurveThroughTheRegion) {
             EXPECT_LT(s.xi, sliding.xi);
             if (last) {
                 EXPECT_GT(s.xi, last->xi);
-                EXPECT_GT(s.start, last->start);
-                EXPECT_LT(s.c0, last->c0);
+                EXPECT_GT(s.start(), last->start());
+                EXPECT_LT(s.c0(), last->c0());
             }
             if (gap <= 1e-3) below.push_back(sliding.xi - s.xi);
             last = s;
         }
-        EXPECT_GT(last->start, sliding.c0 - 1e-4);
-        EXPECT_LT(last->c0, sliding.c0 + 1e-4);
+        EXPECT_GT(last->start(), sliding.c0() - 1e-4);
+        EXPECT_LT(last->c0(), sliding.c0() + 1e-4);
         // The decades where the difference is well above xi's rounding (1e-11 at n = 128): the
         // ratio falls onto 10^(2/3) as rho T shrinks (measured 5.21 ... 4.6435 and 7.86 ... 4.6441).
         const double law = std::pow(10.0, 2.0 / 3.0);
@@ -128,6 +128,6 @@ TEST(ZonesNearSliding, SlipMarginToRounding) {
     ASSERT_TRUE(e.has_value());
     contact finer(r, friction, solver_options{384, method::product, zone_search::general});
     const tangential_solution sf = finer.point(Q);
-    EXPECT_LE(std::fabs(s.c0 - sf.c0), e->c0);
+    EXPECT_LE(std::fabs(s.c0() - sf.c0()), e->c0);
     EXPECT_LE(std::fabs(s.xi - sf.xi), e->xi);
 }

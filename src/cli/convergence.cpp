@@ -38,7 +38,7 @@ values solve_point(const scene& s, double Q, int n, method how, double* seconds 
     contact c(s.surfaces, s.friction, solver_options{n, how}, s.materials);
     const tangential_solution p = c.point(Q);
     if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return {c.normal().lambda, p.c0, p.xi};
+    return {c.normal().lambda, p.c0(), p.xi};
 }
 
 // The median of three runs (one run when a run takes longer than a second).

@@ -184,7 +184,7 @@ int run_figure(const figure_options& o) {
     for (std::size_t i = 0; i < curves.size(); ++i) out << ",Q_over_f_" << i + 1 << ",xi_over_f_" << i + 1;
     out << ",Q_over_f_carter,xi_carter_over_f,checks_hold\n";
     for (std::size_t p = 0; p < results[0].size(); ++p) {
-        const double c0 = results[0][p].solution.c0, rho = 0.5 * (1.0 + c0);
+        const double c0 = results[0][p].solution.c0(), rho = 0.5 * (1.0 + c0);
         out << shortest(c0);
         bool hold = true;
         for (const auto& curve : results) {

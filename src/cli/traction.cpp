@@ -266,7 +266,7 @@ int run_traction(const traction_options& o) {
     out << "# roughroll " << version() << "\n"
         << "# roughroll traction " << one_line(o.scene.path) << (s.label.empty() ? "" : ": ") << one_line(s.label)
         << "\n"
-        << "# Q = " << shortest(Q) << ", f = " << shortest(f) << ", c0 = " << shortest(solution.c0)
+        << "# Q = " << shortest(Q) << ", f = " << shortest(f) << ", c0 = " << shortest(solution.c0())
         << ", xi = " << shortest(solution.xi) << ", P_H/P2 = " << shortest(normal.lambda)
         << ", method = " << to_string(normal.how) << ", n = " << normal.rule.n
         << ", checks = " << (solution.checks.hold() ? "hold" : "VIOLATED") << "\n"
@@ -292,7 +292,7 @@ int run_traction(const traction_options& o) {
                   gnuplot_text(s.label.empty() ? std::filesystem::path(o.scene.path).filename().string() : s.label);
     facts.Q = Q;
     facts.f = f;
-    facts.c0 = level.c0;            // the stick zone the plotted tractions have
+    facts.c0 = level.c0();            // the stick zone the plotted tractions have
     facts.zones = level.layout.zones;  // the zones the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;

@@ -143,8 +143,8 @@ nlohmann::json to_json(const point_report& r) {
         {"error_estimate_absent", r.estimate ? nlohmann::json(nullptr) : nlohmann::json(no_estimate_reason(r))},
         {"Q", s.Q},
         {"f", s.f},
-        {"c0", s.c0},
-        {"stick_start", s.start},
+        {"c0", s.c0()},
+        {"stick_start", s.start()},
         {"zones", zones_json(s)},
         {"zone_path", zone_path(s)},
         // Dundurs' beta_D of the solution (docs/formulation.md 8): its forcing is sigma beta_D, sigma = sign.
@@ -180,7 +180,7 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  P_H/P2              " << shortest(r.normal.lambda) << "\n"
         << "  peak pressure p     " << shortest(peak.p) << " P2/a at r = " << shortest(peak.r) << "\n"
         << "  gamma_0n            " << shortest(r.normal.gamma) << "\n"
-        << "  c0 = c/a            " << shortest(s.c0) << "   (Carter " << shortest(smooth.c0) << ")\n"
+        << "  c0 = c/a            " << shortest(s.c0()) << "   (Carter " << shortest(smooth.c0) << ")\n"
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
         << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
@@ -278,28 +278,28 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             // with Carter's values at it; every computed field is empty (curve_point, contact.hpp).
             const bool at_Q = !std::isnan(s.Q);
             const auto cell = [](bool given, double x) { return given ? shortest(x) : std::string(); };
-            out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0) << ",,,"
+            out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0()) << ",,,"
                 << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,,";
             if (si) {
                 // xi1 is the refused creep; P1 depends on the given load alone, Carter's xi1 on
                 // Carter's load at what was given (Q, or Carter's Q at the same c0).
-                const double smooth_Q = at_Q ? s.Q : carter_at_stick_end(s.c0, s.f).Q;
+                const double smooth_Q = at_Q ? s.Q : carter_at_stick_end(s.c0(), s.f).Q;
                 const si_point p = to_si(si->scene, si->widths[i], smooth_Q, s.f, 0.0, 0.0);
                 out << ',' << cell(at_Q, p.P1) << ",," << shortest(p.xi1_carter);
             }
             out << ',' << n_cell(i) << ",refused\n";
             continue;
         }
-        out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0) << ',' << shortest(s.xi) << ','
+        out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0()) << ',' << shortest(s.xi) << ','
             << shortest(s.xi / s.f) << ',' << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ','
             << (s.checks.hold() ? 1 : 0) << ',';
         if (row.estimate)
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
-        out << ',' << s.layout.zones.size() << ',' << shortest(s.start) << ',' << zone_path(s);
+        out << ',' << s.layout.zones.size() << ',' << shortest(s.start()) << ',' << zone_path(s);
         if (si) {
-            const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0, s.xi);
+            const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0(), s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
         }
         out << ',' << n_cell(i) << ",ok\n";

@@ -66,7 +66,7 @@ std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::op
 
 std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t) {
     if (!s.physical || !w) return std::nullopt;
-    return to_si(*s.physical, *w, t.Q, t.f, t.c0, t.xi);
+    return to_si(*s.physical, *w, t.Q, t.f, t.c0(), t.xi);
 }
 
 point_report scene_point::report() const {

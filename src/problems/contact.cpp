@@ -86,7 +86,7 @@ tangential_solution contact::general_point(double Q, std::optional<zone_guess> g
 }
 
 tangential_solution contact::zones_for(double Q, tangential_solution s, const tangential_solution* coarse) {
-    const auto guess = coarse ? std::optional<zone_guess>({coarse->start, coarse->c0}) : std::nullopt;
+    const auto guess = coarse ? std::optional<zone_guess>({coarse->start(), coarse->c0()}) : std::nullopt;
     if (options_.zones == zone_search::general) return general_point(Q, guess);
     if (options_.zones == zone_search::single || s.checks.hold()) return s;
     // A structure the general search does not cover (no root, or its answer fails the checks
@@ -123,11 +123,11 @@ tangential_solution contact::point(double Q) {
         try {
             const tangential_solution& quarter = levels_[0]->level_point(Q, false);
             const tangential_solution& half =
-                reported_ ? quarter : levels_[1]->level_point(Q, false, quarter.c0, quarter.load_slope);
-            start = half.c0;
+                reported_ ? quarter : levels_[1]->level_point(Q, false, quarter.c0(), quarter.load_slope);
+            start = half.c0();
             start_slope = half.load_slope;
-            if (quarter.c0 > -1.0 && quarter.c0 < 1.0) quarter_c0 = quarter.c0;
-            if (!reported_) start = predicted_start(quarter_c0, half.c0);
+            if (quarter.c0() > -1.0 && quarter.c0() < 1.0) quarter_c0 = quarter.c0();
+            if (!reported_) start = predicted_start(quarter_c0, half.c0());
         } catch (const error&) {  // the estimate will say why; the search goes without a start
         }
     }
@@ -145,9 +145,9 @@ tangential_solution contact::point(double Q) {
     }
     tangential_solution coarse = companion_->level_point(Q, false, start, start_slope);
     tangential_solution s =
-        zones_for(Q, tangential_->solve(Q, predicted_start(quarter_c0, coarse.c0), true, coarse.load_slope), &coarse);
+        zones_for(Q, tangential_->solve(Q, predicted_start(quarter_c0, coarse.c0()), true, coarse.load_slope), &coarse);
     // Both levels on the same path: the coarse level's zones by the general search too.
-    if (s.layout.general()) coarse = companion_->general_point(Q, zone_guess{s.start, s.c0});
+    if (s.layout.general()) coarse = companion_->general_point(Q, zone_guess{s.start(), s.c0()});
     last_fine_ = s;
     if (s.layout.general()) {
         // The general path is not extrapolated: its zone ends do not yet converge at a clean
@@ -158,10 +158,10 @@ tangential_solution contact::point(double Q) {
             throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
         return s;
     }
-    s.c0 = richardson(s.c0, coarse.c0);
-    s.layout = one_stick_zone(s.start, s.c0, s.layout.route, s.sign < 0.0 ? -1 : 1);  // the paper's zone, extrapolated
+    s.layout = one_stick_zone(s.start(), richardson(s.c0(), coarse.c0()), s.layout.route,
+                              s.sign < 0.0 ? -1 : 1);  // the paper's zone, extrapolated
     s.xi = richardson(s.xi, coarse.xi);
-    if (!(std::isfinite(s.c0) && std::isfinite(s.xi)))
+    if (!(std::isfinite(s.c0()) && std::isfinite(s.xi)))
         throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
     return s;
 }
@@ -186,7 +186,7 @@ kernel contact::widest_kernel() const {
 tangential_solution contact::distribution(const tangential_solution& s) {
     if (!reported_ || dissimilar_) return s;  // a dissimilar point is level n itself
     if (!last_fine_ || last_fine_->Q != s.Q)
-        last_fine_ = s.layout.general() ? general_point(s.Q, zone_guess{s.start, s.c0}) : tangential_->solve(s.Q);
+        last_fine_ = s.layout.general() ? general_point(s.Q, zone_guess{s.start(), s.c0()}) : tangential_->solve(s.Q);
     return *last_fine_;
 }
 
@@ -283,8 +283,8 @@ tangential_solution contact::dissimilar_point(double Q) {
 
 tangential_solution contact::johnson_level_point(double Q, const tangential_solution& near) {
     if (near.layout.stick_zones() != 2)
-        return dissimilar_level_point(Q, zone_guess{near.start, near.c0}, near.layout.opposite());
-    const std::vector<double> ends{near.start, near.c0, near.start2(), near.end2()};
+        return dissimilar_level_point(Q, zone_guess{near.start(), near.c0()}, near.layout.opposite());
+    const std::vector<double> ends{near.start(), near.c0(), near.start2(), near.end2()};
     const five_zone_solution* v = five_level_point(Q, &ends);
     if (v == nullptr)
         throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) +
@@ -316,7 +316,7 @@ tangential_solution contact::johnson_point(double Q) {
             if (level == nullptr) break;
             try {
                 const tangential_solution& t = level->dissimilar_level_point(Q, guess, opposite);
-                guess = zone_guess{t.start, t.c0};
+                guess = zone_guess{t.start(), t.c0()};
                 opposite = t.layout.opposite();
             } catch (const resolution_error&) {  // no three zones on this level: the next searches without a guess
                 guess.reset();

@@ -450,7 +450,7 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
 }
 
 double dissimilar_zones::traction(const tangential_solution& s, double r) {
-    if (s.five) {
+    if (s.layout.stick_zones() == 2) {
         // Full coupling asks the previous iterate's p1 at the same points again and again (G of every zone solve
         // and slip velocity of a five-zone system, 8(e)): each value once per point (the same value, bit for bit).
         // The memo holds the solution it is for, so that its address is not another's while it is kept.
@@ -466,16 +466,16 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
     // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
     const double t = solver_.traction(s, r);
     if (!s.layout.opposite()) return t;
-    return t - s.sign * 2.0 * f_ * solver_.normal().pressure(r) * (1.0 - H(r, s.start, s.c0));
+    return t - s.sign * 2.0 * f_ * solver_.normal().pressure(r) * (1.0 - H(r, s.start(), s.c0()));
 }
 
 double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
-    if (s.five) return slip_velocity(*s.five, r);
+    if (s.layout.stick_zones() == 2) return slip_velocity(*s.five, r);
     if (s.layout.layers_neglected()) return 0.0;  // stick everywhere outside the neglected layers (8(n))
     const double v = solver_.slip_velocity(s, r);
     if (!s.layout.opposite() || s.sticks(r)) return v;
     const double x = std::clamp(r, -1.0, 1.0);
-    return v - s.sign * 2.0 * f_ * (solver_.G(x) + W(x, s.start, s.c0));
+    return v - s.sign * 2.0 * f_ * (solver_.G(x) + W(x, s.start(), s.c0()));
 }
 
 traction_checks dissimilar_zones::check(const tangential_solution& s) {

@@ -47,12 +47,12 @@ std::optional<error_estimate> contact::levels_estimate(const tangential_solution
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
         if (!last_coarse_ || last_coarse_->Q != s.Q)
-            last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start, s.c0});
+            last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start(), s.c0()});
         // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
         // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
         const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
         return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
-                              std::fabs(s.c0 - last_coarse_->c0) + floor.c0,
+                              std::fabs(s.c0() - last_coarse_->c0()) + floor.c0,
                               std::fabs(s.xi - last_coarse_->xi) + floor.xi,
                               0.0,
                               "n/2 (general zone search: level n, not extrapolated)",
@@ -123,10 +123,10 @@ void contact::make_finer(int m) {
 
 tangential_solution contact::structure_level(contact& level, const tangential_solution& s,
                                              const tangential_solution& own, bool swept) {
-    if (swept) return level.level_at_stick_end(own.c0, false, sweeping_near_);
+    if (swept) return level.level_at_stick_end(own.c0(), false, sweeping_near_);
     // A point of the general path is compared with the general path's answers at the levels.
     if (!dissimilar_)
-        return s.layout.general() ? level.general_point(s.Q, zone_guess{s.start, s.c0}) : level.level_point(s.Q, false);
+        return s.layout.general() ? level.general_point(s.Q, zone_guess{s.start(), s.c0()}) : level.level_point(s.Q, false);
     if (coupled_) {
         // Full coupling (8(e)): the level's own alternation from its own Johnson's point (a Johnson's
         // point against a coupled n would measure the coupling, not the discretisation). A level that
@@ -140,7 +140,7 @@ tangential_solution contact::structure_level(contact& level, const tangential_so
     }
     if (s.layout.stick_zones() == 2) {
         // Five zones (8(j)): the level from this level's ends (Newton), else its own search.
-        const std::vector<double> ends{s.start, s.c0, s.start2(), s.end2()};
+        const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
         const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
         if (v == nullptr)
             throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) +
@@ -151,7 +151,7 @@ tangential_solution contact::structure_level(contact& level, const tangential_so
                                         : "n is at its largest, so the load is beyond the method's reach"));
         return five_zone_point(*v);
     }
-    return level.dissimilar_level_point(s.Q, zone_guess{s.start, s.c0}, s.layout.opposite());
+    return level.dissimilar_level_point(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
@@ -217,7 +217,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     };
     const estimate_point point{
         options_.how,       nodes(),           self, structure, reported_ != nullptr && !dissimilar_, own.checks.hold(),
-        swept ? "c0" : "Q", swept ? s.c0 : s.Q};
+        swept ? "c0" : "Q", swept ? s.c0() : s.Q};
     return estimate_from_levels(table, levels, finer, point);
 }
 

@@ -118,7 +118,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
 double dissimilar_zones::traction(const five_zone_solution& s, double r) {
     double p1 = f_ * pressure(r) * S(s, r);
     for (const tangential_solution* t : {&s.zone1, &s.zone2})
-        if (r > t->start && r < t->c0) p1 += s.sign * stick_traction(*t, r);
+        if (r > t->start() && r < t->c0()) p1 += s.sign * stick_traction(*t, r);
     return p1;
 }
 
@@ -220,10 +220,10 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones_at(double Q, doub
             const tangential_solution three = three_zones(opposite_directions(beta), load, std::nullopt);
             constexpr int samples = 400;
             for (int i = 1; i <= samples; ++i) {
-                const double r = i == samples ? 1.0 : three.c0 + (1.0 - three.c0) * i / samples;
+                const double r = i == samples ? 1.0 : three.c0() + (1.0 - three.c0()) * i / samples;
                 if (!(slip_velocity(three, r) < 0.0)) continue;
-                const double turn = three.c0 + (1.0 - three.c0) * (i - 0.5) / samples;
-                return five_zones(sign * load, {three.start, three.c0, turn, turn + 0.5 * (1.0 - turn)}, beta);
+                const double turn = three.c0() + (1.0 - three.c0()) * (i - 0.5) / samples;
+                return five_zones(sign * load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, beta);
             }
             three_hold = true;  // v > 0 up to the edge: the three zones are the answer
         } catch (const error&) {

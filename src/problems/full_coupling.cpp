@@ -48,7 +48,7 @@ namespace {
 tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f) {
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
-        const auto v = z.five_zones(Q, {previous.start, previous.c0, previous.start2(), previous.end2()});
+        const auto v = z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()});
         if (!v)
             throw resolution_error(at_load(Q, f) +
                                    "Newton finds no five zones from the previous iterate's ends "
@@ -57,7 +57,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
         t = five_zone_point(*v);
         t.Q = Q;
     } else {
-        t = z.solve(Q, zone_guess{previous.start, previous.c0}, previous.layout.opposite());
+        t = z.solve(Q, zone_guess{previous.start(), previous.c0()}, previous.layout.opposite());
     }
     return t;
 }
@@ -71,7 +71,7 @@ resolution_error failed_checks(const tangential_solution& t, double Q, double f)
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
-std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c0, s.start2(), s.end2()}; }
+std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s.c0(), s.start2(), s.end2()}; }
 
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
 // p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zone's part q of p1 = sign (f p + q) of three
@@ -83,10 +83,10 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start, s.c
 // rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, derived in 8(o), not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
                                                bool smooth) {
-    if (!smooth || s.layout.opposite() || !(s.c0 > s.start && s.start > -1.0 && s.c0 < 1.0) || s.psi_b.empty())
+    if (!smooth || s.layout.opposite() || !(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0) || s.psi_b.empty())
         return nullptr;
     auto k = std::make_shared<pressure_kinks>();
-    k->add_zone(rule, beta_d, s.sign, s.start, s.c0, s.psi_b);
+    k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b);
     return k;
 }
 }  // namespace

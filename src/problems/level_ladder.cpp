@@ -41,8 +41,8 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     };
     const quantity quantities[] = {
         {"P_H/P2", e.lambda, std::fabs(lambda), rounding_floor(max_nodes, lambda)},
-        {"c0", e.c0, std::max(1.0 - s.c0, end_scale), zone_end_floor},  // the slip zone [c0, 1] (issue 23, 1)
-        {"stick start", e.start, std::max(1.0 + s.start, end_scale), zone_end_floor},  // the slip zone [-1, start]
+        {"c0", e.c0, std::max(1.0 - s.c0(), end_scale), zone_end_floor},  // the slip zone [c0, 1] (issue 23, 1)
+        {"stick start", e.start, std::max(1.0 + s.start(), end_scale), zone_end_floor},  // the slip zone [-1, start]
         {"xi", e.xi, std::fabs(s.xi), rounding_floor(max_nodes, std::fabs(s.xi) + s.f * size)},
         {"Q", e.Q, std::fabs(s.Q), rounding_floor(max_nodes, s.f * K)},
     };
@@ -197,7 +197,7 @@ std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<do
             } else {
                 curve_point refused = refused_load(0.0, f, e);  // its shape; then what a swept row was given
                 refused.solution.Q = std::nan("");
-                refused.solution.c0 = given;
+                refused.solution.layout = one_stick_zone(refused.solution.start(), given);  // c0 = given
                 refused.smooth = carter_point{given, carter_at_stick_end(given, f).xi};
                 refused.refused = "curve point at c0 = " + shortest(given) + ": " + one_line(e.what());
                 row = std::move(refused);

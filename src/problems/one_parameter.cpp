@@ -221,12 +221,12 @@ double one_parameter_solver::slip_velocity_magnitude(const tangential_solution& 
     // H[p] + eps1 p' = -G by the normal equation, so v = xi + f G(r) - H[q](r), H[q] outside the stick
     // interval (|t| > 1: cauchy_u_series, no principal value; t < -1 on a slip zone [-1, start)).
     const double rho = s.rho();
-    const double hq = s.psi_b.empty() || rho == 0.0 ? 0.0 : cauchy_u_series(s.psi_b, (r - s.start) / rho - 1.0);
+    const double hq = s.psi_b.empty() || rho == 0.0 ? 0.0 : cauchy_u_series(s.psi_b, (r - s.start()) / rho - 1.0);
     return s.sign * s.xi + f_ * G(r) - hq;
 }
 
 double one_parameter_solver::slip_velocity(const tangential_solution& s, double r) const {
-    if (r <= s.c0 && r >= s.start) return 0.0;  // the stick zone (3.2)
+    if (r <= s.c0() && r >= s.start()) return 0.0;  // the stick zone (3.2)
     return s.sign * slip_velocity_magnitude(s, std::max(-1.0, std::min(r, 1.0)));
 }
 

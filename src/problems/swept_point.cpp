@@ -82,7 +82,7 @@ contact::swept_point contact::swept_at(double c0) {
 }
 
 void contact::refuse_load_outside(const tangential_solution& s, std::optional<double> error) const {
-    if (s.c0 == 1.0 || s.c0 == -1.0) return;  // Q = 0 and Q = f exactly (full stick, gross sliding)
+    if (s.c0() == 1.0 || s.c0() == -1.0) return;  // Q = 0 and Q = f exactly (full stick, gross sliding)
     const double d = error.value_or(0.0);
     if (s.Q - d >= 0.0 && s.Q + d <= f_) return;
     std::ostringstream msg;
@@ -92,7 +92,7 @@ void contact::refuse_load_outside(const tangential_solution& s, std::optional<do
         msg << " +- " << *error << " (its error estimate) reaches";
     else
         msg << " lies";
-    msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0) << " for method '"
+    msg << " outside [0, f] = [0, " << shortest(f_) << "] at c0 = " << shortest(s.c0()) << " for method '"
         << to_string(options_.how) << "' at n = " << nodes() << ": "
         << (error ? std::string("the load is not resolved there; ") +
                         (nodes() < max_nodes ? "increase n, or the scene is beyond the method's reach"

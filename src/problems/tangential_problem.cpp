@@ -135,8 +135,6 @@ tangential_solution zone_solution(double f, double start, double c0, double xi, 
                                   double rcond) {
     tangential_solution s{};
     s.f = f;
-    s.start = start;
-    s.c0 = c0;
     s.xi = xi;
     s.Q = Q;  // (4.5)
     s.sign = 1.0;
@@ -219,7 +217,7 @@ tangential_solution at_load(double Q, double f, const std::function<tangential_s
 }
 
 void apply_load_sign(tangential_solution& s, double Q, const char* what) {
-    if (!(std::isfinite(s.xi) && std::isfinite(s.c0)))
+    if (!(std::isfinite(s.xi) && std::isfinite(s.c0())))
         throw numerical_error(std::string(what) + ": the creep is not finite (roughness parameters too large?)");
     s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
     if (Q < 0.0) {
@@ -255,7 +253,7 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         };
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess, "root search for c0",
                                            full_stick_below, carter(target, f_).c0, slope);
-        tangential_solution s = last_system_ && last_system_->c0 == c0.x ? *last_system_ : solve_system(c0.x);
+        tangential_solution s = last_system_ && last_system_->c0() == c0.x ? *last_system_ : solve_system(c0.x);
         s.iterations = c0.iterations;
         s.load_slope = c0.slope;
         return s;
@@ -269,8 +267,8 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
 
 double stick_traction(const tangential_solution& s, double r) {
     const double rho = s.rho();
-    if (r <= s.start || r >= s.c0 || s.psi_b.empty()) return 0.0;
-    const double t = (r - s.start) / rho - 1.0;
+    if (r <= s.start() || r >= s.c0() || s.psi_b.empty()) return 0.0;
+    const double t = (r - s.start()) / rho - 1.0;
     return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
 }
 
@@ -322,7 +320,7 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     std::vector<double> l(r.size(), 0.0);
     if (!(s.psi_b.empty() || rho == 0.0)) {
         std::vector<double> t(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) t[i] = (r[i] - s.start) / rho - 1.0;
+        for (std::size_t i = 0; i < r.size(); ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
         stick_operator_outside(k1_.stretched(rho), s.psi_b)(t.data(), l.data(), t.size());
     }
     for (std::size_t i = 0; i < r.size(); ++i) {
@@ -344,7 +342,7 @@ std::vector<double> tangential_solver::slip_velocity(const tangential_solution& 
     std::vector<double> slip;
     std::vector<std::size_t> where;
     for (std::size_t i : order)
-        if (r[i] > s.c0 || r[i] < s.start) {
+        if (r[i] > s.c0() || r[i] < s.start()) {
             slip.push_back(std::max(-1.0, std::min(r[i], 1.0)));
             where.push_back(i);
         }
@@ -382,14 +380,14 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         const std::size_t count = r.size();
         std::vector<double> t(count), phi(count), psi(count, 0.0), gap(count);
         const double rho = s.rho();
-        for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start) / rho - 1.0;
+        for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
         u_series(normal_.b, r.data(), phi.data(), count);
         if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
         for (std::size_t i = 0; i < count; ++i) {
             // p of (4.1), with the explicit kinks p_q^0 at full coupling (docs/formulation.md 8(l) step 0).
             const double p = std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]);
             const double fp = f_ * (normal_.kinks ? p + (*normal_.kinks)(r[i]) : p);
-            const bool inside = !(r[i] <= s.start || r[i] >= s.c0 || s.psi_b.empty());
+            const bool inside = !(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty());
             const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
             gap[i] = fp - std::fabs(fp + q);  // |p1| = |sign (f p + q0)|, (3.15)
         }

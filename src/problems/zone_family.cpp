@@ -67,7 +67,7 @@ tangential_solution zone_in_bracket(const zone_family& family, const zone_trial&
 
 tangential_solution searched_point(tangential_solution s, double Q, const char* what,
                                    const std::function<traction_checks(const tangential_solution&)>& check) {
-    s.layout.route = s.start > -1.0 ? zone_route::general : zone_route::single;
+    s.layout.route = s.start() > -1.0 ? zone_route::general : zone_route::single;
     apply_load_sign(s, Q, what);
     s.checks = check(s);
     return s;

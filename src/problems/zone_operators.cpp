@@ -138,7 +138,7 @@ double one_parameter_solver::entry_velocity(const tangential_solution& s) const 
     // H[sin((j+1) phi)] = -T_{j+1}(t) gives H[q](-1) = -sum_j c_j T_{j+1}(-1) = sum_j (-1)^j c_j.
     double h = 0.0;
     for (std::size_t j = 0; j < s.psi_b.size(); ++j) h += (j % 2 == 0 ? 1.0 : -1.0) * s.psi_b[j];
-    return s.xi + f_ * G(s.start) - h;
+    return s.xi + f_ * G(s.start()) - h;
 }
 
 stick_zone_operator one_parameter_solver::zone_operator() {

@@ -84,7 +84,7 @@ tangential_solution zone_solver::general(double magnitude, std::optional<zone_gu
     // r*, where G is least: the stick zone straddles it and collapses onto it at gross sliding (7(d)).
     std::optional<double> point;
     const auto least_point = [&] {
-        if (!point) point = gross_sliding().c0;
+        if (!point) point = gross_sliding().c0();
         return *point;
     };
     // Near gross sliding: from the operator's model zone at r*, before the coarse level's guess,
@@ -108,7 +108,7 @@ tangential_solution zone_solver::solve(double Q, bool force_general, std::option
     const double magnitude = load_magnitude(Q, op_.f);
     const std::optional<tangential_solution> single = op_.paper_zone(Q, force_general && magnitude != 0.0);
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
-    const std::optional<double> single_end = single ? std::optional<double>(single->c0) : std::nullopt;
+    const std::optional<double> single_end = single ? std::optional<double>(single->c0()) : std::nullopt;
     check_load_resolvable(magnitude, op_.f);
     const auto search = [&](std::optional<zone_guess> g) {
         return searched_point(magnitude == op_.f ? gross_sliding() : general(magnitude, g, single_end), Q, op_.method.name,

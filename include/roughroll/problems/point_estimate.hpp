@@ -65,9 +65,9 @@ enum class estimate_structure { paper, dissimilar, full_coupling };
 // layout's, tangential_solution::start2, end2).
 using solution_value = double (*)(const tangential_solution&);
 inline double value_xi(const tangential_solution& s) { return s.xi; }
-inline double value_c0(const tangential_solution& s) { return s.c0; }
+inline double value_c0(const tangential_solution& s) { return s.c0(); }
 inline double value_Q(const tangential_solution& s) { return s.Q; }
-inline double value_start(const tangential_solution& s) { return s.start; }
+inline double value_start(const tangential_solution& s) { return s.start(); }
 inline double value_start2(const tangential_solution& s) { return s.start2(); }
 inline double value_end2(const tangential_solution& s) { return s.end2(); }
 
