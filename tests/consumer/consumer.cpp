@@ -32,7 +32,7 @@ int main() {
     rough.surfaces.cylinder1.normal = {1.0, 0.5};
     contact c(rough.surfaces, rough.friction, rough.solver);
     const tangential_solution s = c.point(Q);
-    std::cout << "rough:  xi " << shortest(s.xi) << ", c0 " << shortest(s.c0) << "\n";
+    std::cout << "rough:  xi " << shortest(s.xi) << ", c0 " << shortest(s.c0()) << "\n";
     if (!s.checks.hold() || !(s.xi > expected)) {  // roughness raises the creep (README)
         std::cerr << "consumer: the rough point fails its checks or is not above Carter's creep\n";
         return 1;
