@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // W of the blended stick zone as a mean of steps (blended_cauchy, docs/formulation.md 8(g)) against GSL's
-// adaptive Cauchy-weighted quadrature (QAWC) of its definition, for Hertz's pressure and series of several
-// terms, zones inside the contact and near its edges, r on the zone, beside it, off it and at the edges.
+// adaptive quadrature (QAGS, g(r) subtracted) of its definition, for Hertz's pressure and series of several
+// terms, zones inside the contact and near its edges, r on the zone, beside it, off it and at the edges; and
+// with the pressure's kinks p_q^0 of full coupling added (the series' part + kinks_blend, 8(o)).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -14,6 +16,7 @@
 
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/pressure_kinks.hpp"
 
 using namespace roughroll;
 
@@ -26,11 +29,13 @@ double theta_blend(double eta, double s, double c) {
 }
 
 // (1/pi) PV int_s^1 p H/(eta - r) as (1/pi) [int_s^1 (g(eta) - g(r))/(eta - r) d eta + g(r) log((1 - r)/(r - s))],
-// g = p H (g(r) = 0 for r outside (s, 1)), the bounded integrand by QAGS on the pieces between s, c, r and 1,
-// each in u = sqrt(1 - eta) (the square root of p at eta = 1 made analytic).
-double reference(const std::vector<double>& b, double s, double c, double r) {
+// g = p H (g(r) = 0 for r outside (s, 1)), the bounded integrand by QAGS on the pieces between s, c, r, 1 and
+// `cuts` (the kinks' ends), each in u = sqrt(1 - eta) (the square root of p at eta = 1 made analytic).
+// `phi`(eta) = p/sqrt(1 - eta^2).
+double reference(const std::function<double(double)>& phi, double s, double c, double r,
+                 const std::vector<double>& cuts = {}) {
     const std::function<double(double)> g = [&](double eta) {
-        return std::sqrt((1.0 - eta) * (1.0 + eta)) * u_series(b, eta) * theta_blend(eta, s, c);
+        return std::sqrt((1.0 - eta) * (1.0 + eta)) * phi(eta) * theta_blend(eta, s, c);
     };
     const bool inside = r > s && r < 1.0;
     const double gr = inside ? g(r) : 0.0;
@@ -38,13 +43,16 @@ double reference(const std::vector<double>& b, double s, double c, double r) {
     const std::function<double(double)> h_u = [&](double u) {
         const double eta = 1.0 - u * u, gap = (1.0 - r) - u * u;
         if (gap == 0.0) return 0.0;
-        const double ge = u * std::sqrt(2.0 - u * u) * u_series(b, eta) * theta_blend(eta, s, c);
+        const double ge = u * std::sqrt(2.0 - u * u) * phi(eta) * theta_blend(eta, s, c);
         return 2.0 * u * (ge - gr) / gap;
     };
     gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
     std::vector<double> ends{s, c, 1.0};
     if (inside && r != c) ends.push_back(r);
+    for (const double e : cuts)
+        if (e > s && e < 1.0) ends.push_back(e);
     std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
     double total = inside ? gr * std::log((1.0 - r) / (r - s)) : 0.0;
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
         double result = 0.0, error = 0.0;
@@ -58,6 +66,10 @@ double reference(const std::vector<double>& b, double s, double c, double r) {
     }
     gsl_integration_workspace_free(w);
     return M_1_PI * total;
+}
+
+double reference(const std::vector<double>& b, double s, double c, double r) {
+    return reference([&](double eta) { return u_series(b, eta); }, s, c, r);
 }
 }  // namespace
 
@@ -97,4 +109,48 @@ TEST(BlendedCauchy, DeclinesZonesAtAnEdgeAndOutside) {
     const auto w = blended_cauchy::make({M_2_PI}, -0.5, 0.5);
     ASSERT_TRUE(w);
     EXPECT_FALSE((*w)(1.5));
+}
+
+// With the pressure's kinks of full coupling, p = sqrt(1 - eta^2) phi + p_q^0 (docs/formulation.md 8(l) step 0): W's
+// Cauchy part as dissimilar_zones::W sums it, blended_cauchy of the series plus kinks_blend of p_q^0 (Tricomi's
+// identity, 8(o) "W with the kinks"), against QAGS of the definition with the kinks' ends as break points. The
+// kink zone is the stick zone itself (a converged alternation), or moved by delta = 1e-9, the alternation's
+// tolerance of the ends, or by 1e-5 (an early step; the expansion then carries an error of order delta^(3/2)).
+TEST(BlendedCauchy, WithTheKinksAgainstAdaptiveQuadratureOfTheDefinition) {
+    gsl_set_error_handler_off();
+    const std::vector<double> series{M_2_PI, 0.01, -0.02, 0.004, 1e-3, -5e-4};
+    // The driven pair's stick zone, a braked one, one towards the trailing edge; psi with psi(-1) = 0 roughly.
+    const std::vector<std::pair<double, double>> zones{{-0.9308, -0.7391}, {-0.5633, 0.4942}, {0.5, 0.95}};
+    const std::vector<double> psi{0.02, 0.012, -0.004, 0.001, -2e-4};
+    int compared = 0;
+    double worst_converged = 0.0, worst_early = 0.0;
+    for (const int n : {16, 64})
+        for (const auto& [s, c] : zones)
+            for (const double delta : {0.0, 1e-9, 1e-5}) {
+                const gauss_chebyshev rule(n);
+                pressure_kinks k;
+                k.add_zone(rule, 0.1438337, -1.0, s - delta, c + 0.5 * delta, psi);
+                const auto series_part = blended_cauchy::make(series, s, c);
+                const auto kinks_part = k.blend(s, c);
+                ASSERT_TRUE(series_part && kinks_part) << "zone [" << s << ", " << c << "]";
+                const std::function<double(double)> phi = [&](double eta) { return u_series(series, eta) + k.factor(eta); };
+                const double rho = 0.5 * (c - s);
+                for (const double r : {-1.0, -0.95, s + 1e-7, s + 0.3 * rho, 0.5 * (s + c), c - 1e-3 * rho, c + 1e-6,
+                                       s - 1e-6, 0.97, 1.0}) {
+                    if (r < -1.0 || r > 1.0) continue;
+                    const auto a = (*series_part)(r), b = (*kinks_part)(r, theta_blend(r, s, c));
+                    ASSERT_TRUE(a && b) << "r = " << r;
+                    const double error = std::fabs(*a + *b - reference(phi, s, c, r, k.ends()));
+                    if (delta <= 1e-9) {
+                        EXPECT_LT(error, 1e-12) << "zone [" << s << ", " << c << "], delta " << delta << ", r = " << r;
+                        worst_converged = std::max(worst_converged, error);
+                    } else {
+                        EXPECT_LT(error, 1e-10) << "zone [" << s << ", " << c << "], delta " << delta << ", r = " << r;
+                        worst_early = std::max(worst_early, error);
+                    }
+                    ++compared;
+                }
+            }
+    std::printf("worst difference: %.2g (delta <= 1e-9), %.2g (delta = 1e-5)\n", worst_converged, worst_early);
+    EXPECT_GT(compared, 150);
 }

@@ -39,6 +39,8 @@ constexpr std::size_t quadrature_intervals = 400;
 constexpr double quadrature_absolute = 1e-14;
 constexpr double quadrature_relative = 1e-12;
 constexpr double quadrature_accepted = 1e-10;
+// Breakpoints of W's quadrature closer than this are not cut (r next to an end, the kinks' ends at the zone's).
+constexpr double breakpoint_apart = 1e-9;
 
 // Why no three zones answer a load (a resolution_error: no zone of that structure at this n, which a
 // point answers by five zones or refuses; never a numerical fault, docs/robustness.md).
@@ -208,29 +210,73 @@ const blended_cauchy* dissimilar_zones::blend_of(double start, double c0) {
     return w ? &*w : nullptr;
 }
 
+const kinks_blend* dissimilar_zones::kinks_blend_of(double start, double c0) {
+    for (const auto& [s, c, w] : kinks_blends_)
+        if (s == start && c == c0) return w ? &*w : nullptr;
+    if (kinks_blends_.size() == 4) kinks_blends_.erase(kinks_blends_.begin());
+    kinks_blends_.push_back({start, c0, pressure_kinks_->blend(start, c0)});
+    const auto& w = std::get<2>(kinks_blends_.back());
+    return w ? &*w : nullptr;
+}
+
 double dissimilar_zones::W(double r, double start, double c0) {
-    // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta,
-    // g = p H (zero on [-1, s)). Inside (s, 1) the Cauchy part is taken with g(r) subtracted,
-    // int (g(eta) - g(r))/(eta - r) + g(r) log((1 - r)/(r - s)); the breakpoints are s, c0, r, 1.
+    // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta, g = p H
+    // (zero on [-1, s)). The Cauchy part is linear in p = sqrt(1 - r^2) phi + p_q^0: that of the U-series as a mean
+    // of steps in closed form (blended_cauchy, docs/formulation.md 8(g) "W of the blend as a mean of steps"), and
+    // with the kinks carried (full coupling, 8(l) step 0) that of p_q^0 H by Tricomi's identity (kinks_blend,
+    // 8(o) "W with the kinks"). Where either declines (a zone at an edge), the whole p by adaptive quadrature.
+    const blended_cauchy* blend = blend_of(start, c0);
+    std::optional<double> cauchy = blend ? (*blend)(r) : std::nullopt;
+    if (cauchy && pressure_kinks_) {
+        const kinks_blend* kinks = kinks_blend_of(start, c0);
+        const std::optional<double> part = kinks ? (*kinks)(r, H(r, start, c0)) : std::nullopt;
+        cauchy = part ? std::optional<double>(*cauchy + *part) : std::nullopt;
+    }
+    double w = cauchy ? *cauchy : cauchy_by_quadrature(r, start, c0);
+    if (k1_.terms().empty()) return w;
     const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
-    const bool inside = r > start && r < 1.0;
-    const double gr = inside ? g(r) : 0.0;
+    const std::vector<double> points = breakpoints(r, start, c0);
+    for (const auto& term : k1_.terms()) {
+        double total = 0.0;
+        for (std::size_t i = 0; i + 1 < points.size(); ++i)
+            total += integrate_piece(
+                [&](double eta) {
+                    const double z = eta - r;
+                    return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+                },
+                points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+        w += term.T * total;
+    }
+    return w;
+}
+
+std::vector<double> dissimilar_zones::breakpoints(double r, double start, double c0) const {
     std::vector<double> points{start, 1.0};
     if (c0 > start && c0 < 1.0) points.push_back(c0);
     // r as a breakpoint only away from the others: an interval of a few ulp (r = 1 - 1e-16, reached by
     // sampling towards the edge) leaves qagp nothing to bisect, and reports round-off.
-    constexpr double apart = 1e-9;
-    if (inside && std::fabs(r - c0) > apart && 1.0 - r > apart && r - start > apart) points.push_back(r);
-    if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, apart);  // p's one-sided roots (8(o))
+    const bool inside = r > start && r < 1.0;
+    if (inside && std::fabs(r - c0) > breakpoint_apart && 1.0 - r > breakpoint_apart && r - start > breakpoint_apart)
+        points.push_back(r);
+    if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, breakpoint_apart);  // p's one-sided roots (8(o))
     std::sort(points.begin(), points.end());
+    return points;
+}
+
+double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0) {
+    // (1/pi) PV int_s^1 g(eta)/(eta - r) d eta, g = p H. Inside (s, 1) with g(r) subtracted,
+    // int (g(eta) - g(r))/(eta - r) + g(r) log((1 - r)/(r - s)); the breakpoints are s, c0, r, 1 and the kinks' ends.
+    const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
+    const bool inside = r > start && r < 1.0;
+    const double gr = inside ? g(r) : 0.0;
+    const std::vector<double> points = breakpoints(r, start, c0);
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         double total = 0.0;
         for (std::size_t i = 0; i + 1 < points.size(); ++i)
-            total +=
-                integrate_piece(integrand, points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+            total += integrate_piece(integrand, points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
         return total;
     };
-    // r within `apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
+    // r within `breakpoint_apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
     // constant g(r) leaves (g(eta) - g(r))/(eta - r) ~ -1/(sqrt(1 - eta) + sqrt(1 - r)), a spike of
     // height 1/sqrt(1 - r) and width 1 - r at eta = 1 that no quadrature resolves (GSL: round-off).
     // There g = sqrt(1 - eta) h(eta) on the last piece [a, 1], h = phi(eta) sqrt(1 + eta) H smooth
@@ -239,28 +285,21 @@ double dissimilar_zones::W(double r, double start, double c0) {
     // u = sqrt(1 - eta), d = sqrt(1 - r), U = sqrt(1 - a) (docs/formulation.md 8(j) item 3)
     //   PV int_a^1 sqrt(1 - eta)/(eta - r) d eta = int_0^U 2 u^2/(d^2 - u^2) du = -2 U + d log((U + d)/(U - d)).
     // The pieces below a (r outside them) carry no subtraction. p at eta near 1 from sqrt((1 - eta)(1 + eta)),
-    // exact for the node eta, where 1 - eta^2 loses 1 - eta's digits.
-    // The Cauchy part of a pressure that is its U-series alone (no kinks carried) as a mean of steps in closed
-    // form (blended_cauchy, docs/formulation.md 8(g) "W of the blend as a mean of steps"); the adaptive quadrature
-    // below where that declines (a zone at an edge, the kinks).
-    const blended_cauchy* blend = pressure_kinks_ ? nullptr : blend_of(start, c0);
-    const std::optional<double> cauchy = blend ? (*blend)(r) : std::nullopt;
+    // exact for the node eta, where 1 - eta^2 loses 1 - eta's digits; p_q^0 likewise from its factor (8(o)).
     const double a = points[points.size() - 2];
-    double w = 0.0;
-    if (cauchy) {
-        w = *cauchy;
-    } else if (inside && !(1.0 - r > apart) && r - a > apart) {
+    if (inside && !(1.0 - r > breakpoint_apart) && r - a > breakpoint_apart) {
+        // p/sqrt(1 - eta^2): phi (the series, or its table's p divided back) + p_q^0's factor.
         const auto edge_pressure = [&](double eta) {
             if (!(eta < 1.0)) return 0.0;
+            const double root = std::sqrt((1.0 - eta) * (1.0 + eta));
+            const double kinks = pressure_kinks_ ? pressure_kinks_->factor(eta) * root : 0.0;
             const u_series_table* tabulated = table();
-            const double smooth =
-                tabulated ? (*tabulated)(eta) : u_series(pressure_b_, eta) * std::sqrt((1.0 - eta) * (1.0 + eta));
-            return pressure_kinks_ ? smooth + pressure_kinks_->factor(eta) * std::sqrt((1.0 - eta) * (1.0 + eta))
-                                   : smooth;  // + p_q^0 (8(o))
+            return (tabulated ? (*tabulated)(eta) : u_series(pressure_b_, eta) * root) + kinks;
         };
         const double kr = pressure_kinks_ ? pressure_kinks_->factor(r) : 0.0;  // p_q^0/sqrt(1 - r^2) (8(o))
-        const double hr = (u_series(pressure_b_, r) + kr) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r), the series
+        const double hr = (u_series(pressure_b_, r) + kr) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r)
         const double d = std::sqrt(1.0 - r), U = std::sqrt(1.0 - a);
+        double w = 0.0;
         for (std::size_t i = 0; i + 1 < points.size(); ++i) {
             const bool last = i + 2 == points.size();
             w += integrate_piece(
@@ -271,16 +310,10 @@ double dissimilar_zones::W(double r, double start, double c0) {
                 },
                 points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
         }
-        w = M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
-    } else {
-        w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
-        if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
+        return M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
     }
-    for (const auto& term : k1_.terms())
-        w += term.T * integrate([&](double eta) {
-                 const double z = eta - r;
-                 return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
-             });
+    double w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
+    if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
     return w;
 }
 

@@ -17,6 +17,7 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
             "full coupling: a stick zone of the pressure's kinks is not inside the contact "
             "(docs/formulation.md 8(l))");
     zone z{start, 0.5 * (c0 - start), beta_d * sign, {}};
+    n_ = rule.n;
     if (legendre_nodes_.empty()) {
         const gauss_legendre legendre(2 * rule.n + 32);
         legendre_nodes_ = legendre.nodes;
@@ -88,6 +89,44 @@ std::vector<double> pressure_kinks::ends() const {
         e.push_back(z.start + 2.0 * z.rho);
     }
     return e;
+}
+
+std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
+    auto unit = blended_cauchy::make({1.0}, s, c);
+    if (!unit) return std::nullopt;
+    kinks_blend k(std::move(*unit));
+    for (const zone& z : zones_) {
+        // g W_1 on the zone: g of degree n - 1 times W_1, analytic inside the Bernstein ellipse through the images
+        // of r = +-1 (blended_cauchy.hpp): m - n + 1 >= 37/log(ellipse) more terms than g's bring W_1's to 1e-16.
+        const double lo = (1.0 + z.start) / z.rho + 1.0, hi = (1.0 - z.start) / z.rho - 1.0;
+        const auto ellipse = [](double tau) { return tau + std::sqrt((tau - 1.0) * (tau + 1.0)); };
+        const double log_ellipse = std::log(std::min(ellipse(lo), ellipse(hi)));
+        const double extra = 37.0 / log_ellipse;
+        if (!(log_ellipse > 0.0) || !(n_ + extra < max_nodes)) return std::nullopt;
+        const gauss_chebyshev rule(n_ + static_cast<int>(std::ceil(extra)));
+        std::vector<double> values(static_cast<std::size_t>(rule.n));
+        for (int i = 0; i < rule.n; ++i) {
+            const auto w1 = k.unit_(z.start + z.rho * (rule.nodes[i] + 1.0));
+            if (!w1) return std::nullopt;
+            values[i] = u_series(z.b, rule.nodes[i]) * *w1;
+        }
+        k.parts_.push_back({z.start, z.rho, z.amplitude, z.b, u_coefficients(rule, values)});
+    }
+    return k;
+}
+
+std::optional<double> kinks_blend::operator()(double r, double blend) const {
+    const auto w1 = unit_(r);
+    if (!w1) return std::nullopt;
+    const double root = std::sqrt((1.0 - r) * (1.0 + r));
+    double sum = 0.0;
+    for (const part& z : parts_) {
+        const double t = (r - z.start) / z.rho - 1.0;
+        const double inside =
+            std::fabs(t) < 1.0 && blend != 0.0 ? root * blend * std::sqrt((1.0 - t) * (1.0 + t)) * u_series(z.g, t) : 0.0;
+        sum += z.amplitude * (*w1 * cauchy_u_series(z.g, t) - inside - cauchy_u_series(z.gw, t));
+    }
+    return sum;
 }
 
 void add_kink_points(std::vector<double>& points, const pressure_kinks& kinks, double apart) {

@@ -190,7 +190,10 @@ private:
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
+    double cauchy_by_quadrature(double r, double start, double c0);  // W's Cauchy part by adaptive quadrature
+    std::vector<double> breakpoints(double r, double start, double c0) const;  // W's pieces
     const blended_cauchy* blend_of(double start, double c0);  // W's Cauchy part on the zone, null: adaptive
+    const kinks_blend* kinks_blend_of(double start, double c0);  // that of p_q^0 (8(o)), null: adaptive
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
@@ -207,6 +210,7 @@ private:
     std::shared_ptr<const pressure_kinks> pressure_kinks_;  // the normal solution's (null but at full coupling)
     integration_workspace_ptr workspace_;
     std::vector<std::tuple<double, double, std::optional<blended_cauchy>>> blends_;  // blend_of's last zones
+    std::vector<std::tuple<double, double, std::optional<kinks_blend>>> kinks_blends_;  // kinks_blend_of's
     std::shared_ptr<const five_zone_solution> tractions_of_;  // traction's memo of a five-zone solution's p1
     std::unordered_map<double, double> tractions_;
 };

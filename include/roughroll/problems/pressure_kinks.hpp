@@ -18,11 +18,15 @@
 // the tangential G (not built; full_coupling keeps the old right side there).
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
+
+class kinks_blend;
 
 class pressure_kinks {
 public:
@@ -44,6 +48,9 @@ public:
     double load() const;                // int p_q^0 = beta_D int q r/sqrt(1 - r^2)
     double constant() const;            // C of H[p_q^0] = -beta_D q + C
     std::vector<double> ends() const;   // the zone ends (the kinks)
+    // The Cauchy part of W for p_q^0 and the blend of the stick zone [s, c] (kinks_blend below). Empty where
+    // blended_cauchy declines [s, c] or a kink zone lies too near a contact edge for the expansion below.
+    std::optional<kinks_blend> blend(double s, double c) const;
 
 private:
     struct zone {
@@ -51,8 +58,35 @@ private:
         std::vector<double> b;         // U coefficients of g(t) = psi(t)/sqrt(1 - r(t)^2)
     };
     std::vector<zone> zones_;
+    int n_ = 0;  // the rule's nodes (g's terms)
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
+};
+
+// W's Cauchy part of p_q^0 times the blend H of a stick zone [s, c] (docs/formulation.md 8(o), "W with the kinks"):
+//   W_q(r) = H[p_q^0 H](r),   p_q^0 = sum_Z a_Z f_0 H[g_Z],   f_0 = sqrt(1 - r^2),  g_Z = sqrt(1 - t^2) g(t) on Z,
+// by Tricomi's identity H[u H[v]] + H[v H[u]] = H[u] H[v] - u v (the finite Hilbert transform of 2(b)) with
+// u = f_0 H and v = g_Z: with W_1 = H[f_0 H] (blended_cauchy of the one-term series {1}),
+//   W_q(r) = sum_Z a_Z (W_1(r) H[g_Z](r) - f_0(r) H(r) g_Z(r) - H[g_Z W_1](r)),
+// where H[g_Z] is cauchy_u_series of g's coefficients and H[g_Z W_1] that of g W_1 expanded in U_j on Z's
+// Gauss-Chebyshev nodes: per r two sums of O(n) terms and W_1(r), instead of an adaptive quadrature of p_q^0.
+// W_1 is analytic on [s, c] up to its ends (the blend's 3/2 powers give no own-side singular term), so the
+// expansion converges geometrically on Z = [s, c]; where Z and [s, c] differ by delta (the alternation's last
+// change of the ends), W_1 has (delta)^(3/2) one-sided terms on Z and the expansion an error of that order.
+class kinks_blend {
+public:
+    // W_q(r) for -1 <= r <= 1, `blend` the value H(r) of the stick zone's blend; empty where W_1(r) does not converge.
+    std::optional<double> operator()(double r, double blend) const;
+
+private:
+    friend class pressure_kinks;
+    explicit kinks_blend(blended_cauchy unit) : unit_(std::move(unit)) {}
+    struct part {
+        double start, rho, amplitude;
+        std::vector<double> g, gw;  // U coefficients of g and of g W_1 on the kink zone
+    };
+    blended_cauchy unit_;  // W_1
+    std::vector<part> parts_;
 };
 
 // Adds to `points` (breakpoints of a quadrature over [points' least, points' greatest]) the zone ends of
