@@ -74,16 +74,19 @@ resolution_error failed_checks(const tangential_solution& t, double Q, double f)
 std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s.c0(), s.start2(), s.end2()}; }
 
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
-// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zone's part q of p1 = sign (f p + q) of three
-// zones of one direction (q = sqrt(1 - t^2) psi(t) on the zone, as tangential_solver::traction adds it). Null
-// elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing to carry); the driven three
-// zones and five zones, whose int p H and W take p_q^0 (load_between, W's edge path and break points: 8(o)) but
-// were measured not to gain (8(o): the driven exit at order 2, at 35 times the CPU of W's closed form, which
-// takes the U-series alone; five zones, the second zone's start at order 1 with a larger constant); and rough
-// rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, derived in 8(o), not built).
+// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zone's part q of p1 = sign (f p S + q), q =
+// sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), for three zones of either kind:
+// slip sigma on both sides (S = 1) and the driven three zones (S the blend of 8(g)), whose int p H and W
+// (dissimilar_zones) take p_q^0 (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series'
+// closed form, 8(o)). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
+// to carry); five zones, where carrying both zones' kinks (built and measured, 8(o)) made the second stick
+// zone's start converge at order 1 with a larger constant (changes 6.5e-4, 3.2e-4 from n = 32) at 4.5 times
+// the cost; and rough rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, derived
+// in 8(o), not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
                                                bool smooth) {
-    if (!smooth || s.layout.opposite() || !(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0) || s.psi_b.empty())
+    if (!smooth || s.layout.stick_zones() != 1 || !(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0) ||
+        s.psi_b.empty())
         return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b);

@@ -11,8 +11,9 @@
 // alpha = acos r, the only part taken per r by quadrature. sigma_j and Lambda are integrals of functions
 // analytic in t up to the images of e = +-1 (a Bernstein ellipse): Gauss-Chebyshev rules of the second kind
 // with 16, 32, ... nodes (nested), accepted when two successive rules differ by at most `tolerance`
-// (the next rule's error is then of the order of that difference squared); no rule up to 1023 nodes that
-// meets it, and the caller takes its adaptive quadrature (an empty optional).
+// (the next rule's error is then of the order of that difference squared), the last two (1023 nodes) by at most
+// `tolerance` plus their sum's rounding (128 eps of the value); no rule up to 1023 nodes that meets it, and the
+// caller takes its adaptive quadrature (an empty optional).
 #pragma once
 
 #include <optional>

@@ -58,7 +58,6 @@ private:
         std::vector<double> b;         // U coefficients of g(t) = psi(t)/sqrt(1 - r(t)^2)
     };
     std::vector<zone> zones_;
-    int n_ = 0;  // the rule's nodes (g's terms)
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
 };
