@@ -6,10 +6,12 @@
 // n = 1000, 31 min wall on a loaded machine) and refused there. The quick refusal is asserted by
 // the levels solved (the contacts' checkpoint, called before every level's solve), not by time:
 // on the old program the first level's checkpoint throws and the test fails at once.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -125,4 +127,99 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
     EXPECT_TRUE(product.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     contact paper(roughness{}, 0.5, solver_options{200, method::paper}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_FALSE(paper.beyond_every_n(0.0, 1000, default_tolerance).has_value());
+}
+
+// Full coupling (docs/formulation.md 8(p)): the estimate is twice the larger of the last two level
+// changes, so rung 2n's is at least twice rung n's last change, and where the zone ends converge at
+// order 1 (five zones, the driven three zones) a tenth of the order-1 prediction is certain for every
+// rung above. Smooth aluminium on steel, f = 0.05, dimensionless (its width does not enter).
+namespace {
+struct full_run {
+    std::optional<level_ladder::answer> answer;
+    std::string refusal;
+    std::vector<int> solved;  // the rungs whose levels were started, in order
+    int stopped_at = 0;       // the rung whose checkpoint stopped the climb (0: none)
+};
+
+// The ladder at Q/f, tolerance `tol`; a rung in `stop` throws at its first level's solve.
+full_run run_full(double Q_over_f, std::optional<double> tol, const std::vector<int>& stop) {
+    full_run r;
+    solver_options options;
+    options.tolerance = tol;
+    const double f = 0.05;
+    level_ladder ladder(options, roughness{}, [&](int n) {
+        auto c = std::make_unique<contact>(roughness{}, f, solver_options{n, options.how, options.zones, tol},
+                                           dissimilar{beta_al_st, coupling_level::full});
+        const bool stops = std::find(stop.begin(), stop.end(), n) != stop.end();
+        c->set_checkpoint([&r, n, stops] {  // (copied to the rung's levels)
+            if (r.solved.empty() || r.solved.back() != n) r.solved.push_back(n);
+            if (stops) {
+                r.stopped_at = n;
+                throw level_solved();
+            }
+        });
+        return c;
+    });
+    try {
+        r.answer = ladder.point(Q_over_f * f);
+    } catch (const resolution_error& e) {
+        r.refusal = e.what();
+    } catch (const level_solved&) {
+    }
+    return r;
+}
+}  // namespace
+
+// Driven, Q/f = +0.75 (five zones), tolerance 1e-6: rung 128's stick start changes by about 1e-4 per
+// level, so no rung up to 1000 can reach 1e-6 of the leading slip zone (0.13): refused after rung 128,
+// naming what to change. The old program climbed on (rung 256 solved).
+TEST(LadderRefusals, FullCouplingRefusedWhereNoRungCanMeetTheTolerance) {
+    const full_run r = run_full(0.75, 1e-6, {256, 512, 1000});
+    EXPECT_EQ(r.solved, std::vector<int>{128});
+    EXPECT_EQ(r.stopped_at, 0);
+    EXPECT_NE(r.refusal.find("no n up to 1000 meets the tolerance 1e-06"), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("no larger n can meet it"), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("coupling = \"johnson\""), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("--tolerance"), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.refusal.find('\n'), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.refusal.find("::"), std::string::npos) << r.refusal;
+}
+
+// The same point at 5e-5: rung 256's change from 128 (6.7e-6 of s, 0.13 long) puts rung 512's estimate
+// at 1.0e-4 of it at least, so 512 is not solved; rung 1000 (levels 250, 500, 1000, none of them 256's)
+// is. The old program solved 512.
+TEST(LadderRefusals, FullCouplingSkipsARungCertainToFail) {
+    const full_run r = run_full(0.75, 5e-5, {1000});
+    EXPECT_EQ(r.solved, (std::vector<int>{128, 256, 1000}));
+    EXPECT_EQ(r.stopped_at, 1000);
+}
+
+// Braked, Q/f = -0.75 (three zones of one direction, the pressure's kinks carried, 8(l)): no order-1 law,
+// and rung 256 meets the default tolerance: answered there, as before.
+TEST(LadderRefusals, FullCouplingStillAnswersWhereARungMeetsTheTolerance) {
+    const full_run r = run_full(-0.75, std::nullopt, {512, 1000});
+    ASSERT_TRUE(r.answer.has_value()) << r.refusal;
+    EXPECT_EQ(r.answer->n, 256);
+    EXPECT_EQ(r.solved, (std::vector<int>{128, 256}));
+}
+
+// The changes behind a full-coupling estimate are the levels' own: level n/4, n/2, n solved apart.
+TEST(LadderRefusals, FullCouplingEstimateCarriesItsLastLevelChange) {
+    const dissimilar pair{beta_al_st, coupling_level::full};
+    contact c(roughness{}, 0.05, solver_options{64, method::product}, pair);
+    const tangential_solution s = c.point(0.75 * 0.05);
+    const std::optional<error_estimate> e = c.estimate(s);
+    ASSERT_TRUE(e && e->changes);
+    contact half(roughness{}, 0.05, solver_options{32, method::product}, pair);
+    const tangential_solution h = half.point(0.75 * 0.05);
+    ASSERT_EQ(h.layout.stick_zones(), 2u);
+    const double start = std::max(std::fabs(s.start - h.start), std::fabs(s.start2() - h.start2()));
+    const double end = std::max(std::fabs(s.c0 - h.c0), std::fabs(s.end2() - h.end2()));
+    EXPECT_NEAR(e->changes->last.start, start, 1e-9);
+    EXPECT_NEAR(e->changes->last.c0, end, 1e-9);
+    EXPECT_NEAR(e->changes->last.xi, std::fabs(s.xi - h.xi), 1e-9);
+    EXPECT_LE(e->changes->last.start, 0.5 * e->start);  // twice it is inside the estimate
+    // Johnson's level: the three-level rule, no changes carried.
+    contact johnson(roughness{}, 0.05, solver_options{64, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    EXPECT_FALSE(johnson.estimate(johnson.point(0.75 * 0.05))->changes.has_value());
 }

@@ -16,11 +16,23 @@
 
 namespace roughroll {
 
+namespace {
+// Free rolling of smooth dissimilar rollers at Johnson's level (docs/formulation.md 8(n)): the bound of
+// its edge layers' effect on xi relative to the no-slip creep; none for any other pair or level.
+std::optional<double> layers_relative_bound(const dissimilar& materials, const roughness& surfaces, double f) {
+    if (materials.beta_d == 0.0 || materials.coupling == coupling_level::full || !kernel::normal(surfaces).empty() ||
+        !kernel::tangential(surfaces).empty())
+        return std::nullopt;
+    return no_slip_layers(materials.beta_d, f).xi_bound / std::fabs(no_slip_creep(materials.beta_d));
+}
+}  // namespace
+
 contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
                  normal_cache* cache)
     : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_dissimilar(materials, options);
+    free_rolling_layers_ = layers_relative_bound(materials, surfaces, f);
     const int n = options.nodes();
     if (options.how == method::one_parameter) {
         limit_ = std::make_unique<one_parameter_solver>(surfaces, f, n);
@@ -201,14 +213,6 @@ const coupling_summary* contact::coupling() const { return coupled_load_ ? &coup
 dissimilar_zones& contact::zones_of_point() { return coupled_load_ ? coupled_->zones() : *dissimilar_; }
 
 namespace {
-// Free rolling of smooth rollers at Johnson's level (docs/formulation.md 8(n)): the bound of its edge
-// layers' effect on xi relative to the no-slip creep; none for any other point.
-std::optional<double> layers_relative_bound(double Q, bool coupled, const roughness& surfaces, double beta_d, double f) {
-    if (Q != 0.0 || coupled || !kernel::normal(surfaces).empty() || !kernel::tangential(surfaces).empty())
-        return std::nullopt;
-    return no_slip_layers(beta_d, f).xi_bound / std::fabs(no_slip_creep(beta_d));
-}
-
 // The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
 // would be neglected; empty where the bound is no use (half of xi or more).
 std::string layers_tolerance_advice(double relative) {
@@ -237,7 +241,7 @@ std::optional<std::string> contact::beyond_every_n(double Q, int top, double tol
     // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
     // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
     if (!dissimilar_) return std::nullopt;  // beta_D = 0: the paper's problem, no edge layers
-    const std::optional<double> bound = layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
+    const std::optional<double> bound = layers_bound(Q);
     if (!bound || *bound <= tolerance) return std::nullopt;
     if (level_method() != method::product) return std::nullopt;  // the law was measured on product integration
     const double crossing = no_slip_layers(materials_.beta_d, f_).crossing;
@@ -258,7 +262,7 @@ std::optional<std::string> contact::beyond_every_n(double Q, int top, double tol
 
 bool contact::layers_negligible(double Q) const {
     // Layers that move xi by less than the tolerance: the no-slip solution with them neglected answers.
-    const std::optional<double> relative = layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
+    const std::optional<double> relative = layers_bound(Q);
     return relative && *relative <= options_.tolerance.value_or(default_tolerance);
 }
 
@@ -273,8 +277,7 @@ tangential_solution contact::dissimilar_point(double Q) {
     } catch (const resolution_error& why) {
         // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
         // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
-        const std::optional<double> bound =
-            layers_relative_bound(Q, coupled_ != nullptr, surfaces_, materials_.beta_d, f_);
+        const std::optional<double> bound = layers_bound(Q);
         const std::string advice = bound ? layers_tolerance_advice(*bound) : std::string();
         if (advice.empty()) throw;
         throw resolution_error(std::string(why.what()) + "; " + advice);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -95,15 +96,63 @@ std::unique_ptr<contact> level_ladder::release(int n) {
     return c;
 }
 
+namespace {
+
+// Three significant digits: a bound's size, not a value.
+std::string three_digits(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return text;
+}
+
+error_estimate times(const level_changes& c, double factor) {
+    return error_estimate{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
+}
+
+}  // namespace
+
+level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, std::size_t i) const {
+    // Full coupling (docs/formulation.md 8(p)): each later rung's estimate from rung i's level changes.
+    // (a) The next rung, when it doubles n (levels n/2, n, 2n), has an estimate of at least twice
+    // |x_n - x_{n/2}| (less both levels' noise), exactly; it fails the tolerance where that exceeds it
+    // by more than the scale's own move to that rung (at most half its estimate: tol/2 relative) and 1 %.
+    // (b) Where the zone ends converge at order 1 (the pressure's kinks not carried: five zones, the
+    // driven three zones, 8(l)), rung m's estimate is at least twice its change from m/4 to m/2,
+    // 4 C/m with C/n the order-1 constant of rung i: a tenth of it is certain.
+    outlook o;
+    const coupled_changes& changes = *a.estimate->changes;
+    const int n = rungs_[i];
+    const bool order_one = a.solution.layout.stick_zones() == 2 || a.solution.layout.opposite();
+    for (std::size_t j = i + 1; j < rungs_.size(); ++j) {
+        const int m = rungs_[j];
+        std::optional<tolerance_check> certain;
+        if (j == i + 1 && m == 2 * n) {
+            const tolerance_check t = check(c, a.solution, times(changes.last, 2.0));
+            if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) certain = t;
+        }
+        if (order_one && !certain) {
+            level_changes ends = changes.order_one;
+            ends.lambda = ends.xi = 0.0;  // P_H/P2 and xi converge faster (8(e)): no order-1 law for them
+            const tolerance_check t = check(c, a.solution, times(ends, 0.1 * 4.0 * n / m));
+            if (t.ratio > 1.0) certain = t;
+        }
+        o.fails.push_back(certain.has_value());
+        o.at_least.push_back(certain.value_or(tolerance_check{}));
+    }
+    return o;
+}
+
 level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t from) {
     struct best_reached {
         tolerance_check check;
         int n;
     };
     std::optional<best_reached> best;
-    std::string last_reason;
-    for (std::size_t i = from; i < rungs_.size(); ++i) {
+    std::string last_reason, skipped, beyond_all;
+    std::vector<bool> skip(rungs_.size(), false);
+    for (std::size_t i = from; i < rungs_.size() && beyond_all.empty(); ++i) {
         const int n = rungs_[i];
+        if (skip[i]) continue;
         try {
             contact& c = at(n);
             answer a = solve(c, n);
@@ -120,6 +169,25 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             if (t.ratio <= 1.0) return a;
             if (!best || t.ratio < best->check.ratio) best = best_reached{t, n};
             last_reason.clear();
+            if (!a.estimate->changes || i + 1 == rungs_.size()) continue;
+            // Full coupling: no rung above can answer (refused now), or the next one cannot and its
+            // own changes could not tell a later rung (the one after it does not double its n): not solved.
+            const outlook o = beyond(a, c, i);
+            const auto failing = std::count(o.fails.begin(), o.fails.end(), true);
+            if (static_cast<std::size_t>(failing) == o.fails.size()) {
+                const tolerance_check& next = o.at_least.front();
+                beyond_all = "no larger n can meet it (full coupling's estimate is twice the larger of the last two "
+                             "level changes and its zone ends converge at order 1: at n = " +
+                             std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " +
+                             three_digits(next.relative) + " relative; docs/formulation.md 8(p))";
+            } else if (o.fails.front() && (i + 2 == rungs_.size() || rungs_[i + 2] != 2 * rungs_[i + 1])) {
+                skip[i + 1] = true;
+                const tolerance_check& next = o.at_least.front();
+                skipped = "; n = " + std::to_string(rungs_[i + 1]) + " was not solved: its estimate of " +
+                          next.quantity + " is at least " + three_digits(next.relative) +
+                          " relative (twice the change from n = " + std::to_string(n / 2) + " to " +
+                          std::to_string(n) + ", full coupling, docs/formulation.md 8(p))";
+            }
         } catch (const resolution_error& e) {  // this rung cannot answer: the next may
             last_reason = one_line(e.what());
         }
@@ -131,12 +199,13 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         msg +=
             ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
             (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
-            " at n = " + std::to_string(best->n) +
+            " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped : ", and " + beyond_all) +
             "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate, or try "
-            "another method";
+            "another method" +
+            (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + top + ": " + last_reason +
-               "); give n to see that point, or try another method or zone search";
+               skipped + "); give n to see that point, or try another method or zone search";
     }
     throw resolution_error(msg);
 }

@@ -10,6 +10,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/full_coupling.hpp"
 
 namespace roughroll {
 
@@ -189,6 +190,23 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     const int first = 2 - p.self;  // index of the coarsest level's name
     const std::string levels_used =
         std::string("levels ") + names[first] + ", " + names[first + 1] + ", " + names[first + 2];
+    if (coupled && p.self == 2) {
+        // What the next rungs can be told (docs/formulation.md 8(p)): level 2n's estimate, on n/2, n, 2n,
+        // is at least twice |x_n - x_{n/2}|, with both levels solved again there to the alternation's
+        // tolerance (and their differences to the floor); the order-1 constant C/n, the smaller of the
+        // last change and half the one before (a change small by chance gives the smaller prediction).
+        error_estimate last{0.0, 0.0, 0.0, 0.0, "", false}, order_one{0.0, 0.0, 0.0, 0.0, "", false};
+        for (std::size_t i = 0; i < table.size(); ++i) {
+            const estimated_quantity& q = table[i];
+            const double d1 = std::fabs(value(q, levels[1]) - value(q, levels[0]));
+            const double d2 = std::fabs(value(q, levels[2]) - value(q, levels[1]));
+            const double noise = q.floor + 4.0 * coupling_end_tolerance;
+            last.*q.out = std::max(last.*q.out, std::max(d2 - noise, 0.0));
+            order_one.*q.out = std::max(order_one.*q.out, std::max(std::min(d2, 0.5 * d1) - noise, 0.0));
+        }
+        const auto changes_of = [](const error_estimate& x) { return level_changes{x.lambda, x.c0, x.xi, x.start}; };
+        e.changes = coupled_changes{changes_of(last), changes_of(order_one)};
+    }
     if (coupled) {
         e.against = levels_used +
                     " (dissimilar rollers, full coupling: level n, twice the larger of the last two level changes)";

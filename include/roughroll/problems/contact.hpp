@@ -184,6 +184,10 @@ private:
     // Free rolling of smooth rollers at Johnson's level whose neglected edge layers bound xi's change
     // within the tolerance (docs/formulation.md 8(n)): answered by the no-slip solution.
     bool layers_negligible(double Q) const;
+    // The edge layers' bound on xi relative to the no-slip creep for free rolling of smooth rollers at
+    // Johnson's level (8(n)), computed once; empty for any other pair or level.
+    std::optional<double> free_rolling_layers_;
+    std::optional<double> layers_bound(double Q) const { return Q == 0.0 ? free_rolling_layers_ : std::nullopt; }
     tangential_solution johnson_point(double Q);     // Johnson's level, the estimate's levels first
     // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the
     // coarser level's) when given and Newton converges from them, else without a guess; nullptr when

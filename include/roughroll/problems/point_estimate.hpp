@@ -26,6 +26,16 @@ namespace roughroll {
 // error at n; for method::extrapolated the difference from level n); where it shows a lower order,
 // a bound from the observed ratio; where the levels do not converge visibly, no estimate: the point
 // is refused (resolution_error). Each estimate includes a rounding floor (floors_at below).
+// Full coupling's level changes (docs/formulation.md 8(p)), one per field of error_estimate (each the
+// largest over the zone ends folded into it, as the estimate folds them).
+struct level_changes {
+    double lambda = 0.0, c0 = 0.0, xi = 0.0, start = 0.0;
+};
+struct coupled_changes {
+    level_changes last;       // |x_n - x_{n/2}| less both levels' noise: twice it is in the estimate at 2n
+    level_changes order_one;  // min(|x_n - x_{n/2}|, |x_{n/2} - x_{n/4}|/2) less the noise: C/n where x_k = x + C/k
+};
+
 struct error_estimate {
     double lambda;  // P_H/P2
     double c0;      // 0 for a point of a curve swept in c0 (c0 is then the input)
@@ -34,6 +44,9 @@ struct error_estimate {
     std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
     bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
     double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
+    // Full coupling on levels n/4, n/2, n: the changes behind the estimate, which bound the next rungs'
+    // estimates (level_ladder, docs/formulation.md 8(p)); empty for every other rule.
+    std::optional<coupled_changes> changes = std::nullopt;
 };
 
 // The rounding floors of an estimate at n nodes, n eps times the size of the terms each quantity is
