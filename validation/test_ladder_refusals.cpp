@@ -213,8 +213,8 @@ TEST(LadderRefusals, FullCouplingEstimateCarriesItsLastLevelChange) {
     contact half(roughness{}, 0.05, solver_options{32, method::product}, pair);
     const tangential_solution h = half.point(0.75 * 0.05);
     ASSERT_EQ(h.layout.stick_zones(), 2u);
-    const double start = std::max(std::fabs(s.start - h.start), std::fabs(s.start2() - h.start2()));
-    const double end = std::max(std::fabs(s.c0 - h.c0), std::fabs(s.end2() - h.end2()));
+    const double start = std::max(std::fabs(s.start() - h.start()), std::fabs(s.start2() - h.start2()));
+    const double end = std::max(std::fabs(s.c0() - h.c0()), std::fabs(s.end2() - h.end2()));
     EXPECT_NEAR(e->changes->last.start, start, 1e-9);
     EXPECT_NEAR(e->changes->last.c0, end, 1e-9);
     EXPECT_NEAR(e->changes->last.xi, std::fabs(s.xi - h.xi), 1e-9);
