@@ -129,7 +129,7 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
     EXPECT_FALSE(paper.beyond_every_n(0.0, 1000, default_tolerance).has_value());
 }
 
-// Full coupling (docs/formulation.md 8(p)): the estimate is twice the larger of the last two level
+// Full coupling (docs/formulation.md 8(q)): the estimate is twice the larger of the last two level
 // changes, so rung 2n's is at least twice rung n's last change, and where the zone ends converge at
 // order 1 (five zones, the driven three zones) a tenth of the order-1 prediction is certain for every
 // rung above. Smooth aluminium on steel, f = 0.05, dimensionless (its width does not enter).

@@ -112,7 +112,7 @@ error_estimate times(const level_changes& c, double factor) {
 }  // namespace
 
 level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, std::size_t i) const {
-    // Full coupling (docs/formulation.md 8(p)): each later rung's estimate from rung i's level changes.
+    // Full coupling (docs/formulation.md 8(q)): each later rung's estimate from rung i's level changes.
     // (a) The next rung, when it doubles n (levels n/2, n, 2n), has an estimate of at least twice
     // |x_n - x_{n/2}| (less both levels' noise), exactly; it fails the tolerance where that exceeds it
     // by more than the scale's own move to that rung (at most half its estimate: tol/2 relative) and 1 %.
@@ -179,14 +179,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 beyond_all = "no larger n can meet it (full coupling's estimate is twice the larger of the last two "
                              "level changes and its zone ends converge at order 1: at n = " +
                              std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " +
-                             three_digits(next.relative) + " relative; docs/formulation.md 8(p))";
+                             three_digits(next.relative) + " relative; docs/formulation.md 8(q))";
             } else if (o.fails.front() && (i + 2 == rungs_.size() || rungs_[i + 2] != 2 * rungs_[i + 1])) {
                 skip[i + 1] = true;
                 const tolerance_check& next = o.at_least.front();
                 skipped = "; n = " + std::to_string(rungs_[i + 1]) + " was not solved: its estimate of " +
                           next.quantity + " is at least " + three_digits(next.relative) +
                           " relative (twice the change from n = " + std::to_string(n / 2) + " to " +
-                          std::to_string(n) + ", full coupling, docs/formulation.md 8(p))";
+                          std::to_string(n) + ", full coupling, docs/formulation.md 8(q))";
             }
         } catch (const resolution_error& e) {  // this rung cannot answer: the next may
             last_reason = one_line(e.what());

@@ -191,7 +191,7 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     const std::string levels_used =
         std::string("levels ") + names[first] + ", " + names[first + 1] + ", " + names[first + 2];
     if (coupled && p.self == 2) {
-        // What the next rungs can be told (docs/formulation.md 8(p)): level 2n's estimate, on n/2, n, 2n,
+        // What the next rungs can be told (docs/formulation.md 8(q)): level 2n's estimate, on n/2, n, 2n,
         // is at least twice |x_n - x_{n/2}|, with both levels solved again there to the alternation's
         // tolerance (and their differences to the floor); the order-1 constant C/n, the smaller of the
         // last change and half the one before (a change small by chance gives the smaller prediction).

@@ -85,7 +85,7 @@ public:
 private:
     using solve_rung = std::function<answer(contact&, int n)>;
     answer climb(const solve_rung& solve, std::size_t from);
-    // Full coupling (docs/formulation.md 8(p)): for each rung above rung i, whether the point `a` of
+    // Full coupling (docs/formulation.md 8(q)): for each rung above rung i, whether the point `a` of
     // rung i (contact c, refused by the tolerance) shows that its estimate cannot meet the tolerance,
     // and that estimate's certain part (twice rung i's last level changes).
     struct outlook {

@@ -26,7 +26,7 @@ namespace roughroll {
 // error at n; for method::extrapolated the difference from level n); where it shows a lower order,
 // a bound from the observed ratio; where the levels do not converge visibly, no estimate: the point
 // is refused (resolution_error). Each estimate includes a rounding floor (floors_at below).
-// Full coupling's level changes (docs/formulation.md 8(p)), one per field of error_estimate (each the
+// Full coupling's level changes (docs/formulation.md 8(q)), one per field of error_estimate (each the
 // largest over the zone ends folded into it, as the estimate folds them).
 struct level_changes {
     double lambda = 0.0, c0 = 0.0, xi = 0.0, start = 0.0;
@@ -45,7 +45,7 @@ struct error_estimate {
     bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
     double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
     // Full coupling on levels n/4, n/2, n: the changes behind the estimate, which bound the next rungs'
-    // estimates (level_ladder, docs/formulation.md 8(p)); empty for every other rule.
+    // estimates (level_ladder, docs/formulation.md 8(q)); empty for every other rule.
     std::optional<coupled_changes> changes = std::nullopt;
 };
 
