@@ -185,8 +185,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 const tolerance_check& next = o.at_least.front();
                 skipped = "; n = " + std::to_string(rungs_[i + 1]) + " was not solved: its estimate of " +
                           next.quantity + " is at least " + three_digits(next.relative) +
-                          " relative (twice the change from n = " + std::to_string(n / 2) + " to " +
-                          std::to_string(n) + ", full coupling, docs/formulation.md 8(q))";
+                          " relative (full coupling, from the levels up to n = " + std::to_string(n) +
+                          ", docs/formulation.md 8(q))";
             }
         } catch (const resolution_error& e) {  // this rung cannot answer: the next may
             last_reason = one_line(e.what());

@@ -18,14 +18,6 @@
 
 namespace roughroll {
 
-// The error estimate of a point, per quantity. Every estimate comes from three levels of the same
-// plain discretisation (the method itself; product integration for method::extrapolated): n/4,
-// n/2, n where n/2 is in the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n,
-// 4n. The observed ratio of the two differences decides (numerics/error_bound.hpp): where it shows
-// the method's order, the classic estimates (the difference from n/2, about 2^p - 1 times the
-// error at n; for method::extrapolated the difference from level n); where it shows a lower order,
-// a bound from the observed ratio; where the levels do not converge visibly, no estimate: the point
-// is refused (resolution_error). Each estimate includes a rounding floor (floors_at below).
 // Full coupling's level changes (docs/formulation.md 8(q)), one per field of error_estimate (each the
 // largest over the zone ends folded into it, as the estimate folds them).
 struct level_changes {
@@ -36,6 +28,14 @@ struct coupled_changes {
     level_changes order_one;  // min(|x_n - x_{n/2}|, |x_{n/2} - x_{n/4}|/2) less the noise: C/n where x_k = x + C/k
 };
 
+// The error estimate of a point, per quantity. Every estimate comes from three levels of the same
+// plain discretisation (the method itself; product integration for method::extrapolated): n/4,
+// n/2, n where n/2 is in the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n,
+// 4n. The observed ratio of the two differences decides (numerics/error_bound.hpp): where it shows
+// the method's order, the classic estimates (the difference from n/2, about 2^p - 1 times the
+// error at n; for method::extrapolated the difference from level n); where it shows a lower order,
+// a bound from the observed ratio; where the levels do not converge visibly, no estimate: the point
+// is refused (resolution_error). Each estimate includes a rounding floor (floors_at below).
 struct error_estimate {
     double lambda;  // P_H/P2
     double c0;      // 0 for a point of a curve swept in c0 (c0 is then the input)
