@@ -105,7 +105,7 @@ std::string three_digits(double x) {
     return text;
 }
 
-error_estimate times(const level_changes& c, double factor) {
+error_estimate scaled_changes(const level_changes& c, double factor) {
     return error_estimate{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
 }
 
@@ -127,13 +127,13 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
         const int m = rungs_[j];
         std::optional<tolerance_check> certain;
         if (j == i + 1 && m == 2 * n) {
-            const tolerance_check t = check(c, a.solution, times(changes.last, 2.0));
+            const tolerance_check t = check(c, a.solution, scaled_changes(changes.last, 2.0));
             if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) certain = t;
         }
         if (order_one && !certain) {
             level_changes ends = changes.order_one;
             ends.lambda = ends.xi = 0.0;  // P_H/P2 and xi converge faster (8(e)): no order-1 law for them
-            const tolerance_check t = check(c, a.solution, times(ends, 0.1 * 4.0 * n / m));
+            const tolerance_check t = check(c, a.solution, scaled_changes(ends, 0.1 * 4.0 * n / m));
             if (t.ratio > 1.0) certain = t;
         }
         o.fails.push_back(certain.has_value());
