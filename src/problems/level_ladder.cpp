@@ -116,9 +116,10 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
     // (a) The next rung, when it doubles n (levels n/2, n, 2n), has an estimate of at least twice
     // |x_n - x_{n/2}| (less both levels' noise), exactly; it fails the tolerance where that exceeds it
     // by more than the scale's own move to that rung (at most half its estimate: tol/2 relative) and 1 %.
-    // (b) Where the zone ends converge at order 1 (the pressure's kinks not carried: five zones, the
-    // driven three zones, 8(l)), rung m's estimate is at least twice its change from m/4 to m/2,
-    // 4 C/m with C/n the order-1 constant of rung i: a tenth of it is certain.
+    // (b) Where a zone end converges at order 1 (five zones; the driven three zones' entry, also with
+    // the kinks carried, 8(o)), rung m's estimate is at least twice its change from m/4 to m/2,
+    // 4 C/m with C/n the order-1 constant of rung i: a tenth of it is certain (an end converging at
+    // order 2, the driven exit, stays above that tenth for m/n <= 20: 8(q)).
     outlook o;
     const coupled_changes& changes = *a.estimate->changes;
     const int n = rungs_[i];
