@@ -2,6 +2,7 @@
 #include "roughroll/problems/zone_layout.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace roughroll {
 
@@ -21,9 +22,13 @@ std::size_t zone_layout::stick_zones() const {
 }
 
 const zone& zone_layout::stick_zone(std::size_t k) const {
+    std::size_t seen = 0;
     for (const zone& z : zones)
-        if (z.stick && k-- == 0) return z;
-    throw std::out_of_range("zone_layout::stick_zone: no such stick zone");
+        if (z.stick && seen++ == k) return z;
+    // Only a layout built by hand, as a default-built tangential_solution's, lacks the zone asked for: a
+    // programming error (the program's "internal error", exit 70), not a fault of the input.
+    throw std::out_of_range("no stick zone " + std::to_string(k + 1) + " among the layout's " +
+                            std::to_string(stick_zones()) + " (a solution gets its zones from a solver)");
 }
 
 bool zone_layout::sticks(double r) const {

@@ -74,7 +74,7 @@ struct tangential_solution {
     // The ends of the first stick zone from r = -1, [start, c0] (docs/formulation.md 7(i)): the paper's
     // zone [-1, c0]; three zones [s, c0]; five zones the first, [s1, c1]; gross sliding the point
     // [r*, r*] (r* = -1 on the paper's zone); full stick and the layers-neglected no slip [-1, 1].
-    // Derived from the layout, the one source of the zones.
+    // Derived from the layout, the one source of the zones; without zones (default-built) std::out_of_range.
     double c0() const { return layout.stick_zone(0).to; }
     double start() const { return layout.stick_zone(0).from; }
     double rho() const { return 0.5 * (c0() - start()); }

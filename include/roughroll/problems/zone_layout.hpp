@@ -36,7 +36,7 @@ struct zone_layout {
     zone_route route = zone_route::single;
 
     std::size_t stick_zones() const;
-    // The k-th stick zone from r = -1 (k < stick_zones()).
+    // The k-th stick zone from r = -1; std::out_of_range for k >= stick_zones() (no solver asks for one).
     const zone& stick_zone(std::size_t k) const;
     // r on a stick zone [from, to): the half-open zone the slip velocity's sweeps skip.
     bool sticks(double r) const;

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// problems/zone_layout: the stick zones a solution's c0(), start(), start2() and end2() read, and what a
+// solution without zones (built by hand, never by a solver) does when asked for them.
+#include "roughroll/problems/zone_layout.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+
+namespace roughroll {
+namespace {
+
+TEST(ZoneLayout, StickZonesAreCountedFromTheLeadingEdge) {
+    const zone_layout five = five_zones_layout(-0.9, -0.2, 0.1, 0.6, 1);
+    ASSERT_EQ(five.stick_zones(), 2u);
+    EXPECT_EQ(five.stick_zone(0).from, -0.9);
+    EXPECT_EQ(five.stick_zone(0).to, -0.2);
+    EXPECT_EQ(five.stick_zone(1).from, 0.1);
+    EXPECT_EQ(five.stick_zone(1).to, 0.6);
+
+    tangential_solution s{};
+    s.layout = one_stick_zone(-0.5, 0.25);
+    EXPECT_EQ(s.start(), -0.5);
+    EXPECT_EQ(s.c0(), 0.25);
+    EXPECT_EQ(s.start2(), 2.0);  // one stick zone: the second lies outside the contact
+    EXPECT_EQ(s.end2(), 2.0);
+}
+
+// A zone the layout lacks is a programming error: std::out_of_range (a std::logic_error, which the
+// program reports as an internal error, exit 70), never a roughroll::error (a fault of the input,
+// exit 2), with a message that says which zone and why instead of naming a C++ function.
+TEST(ZoneLayout, AMissingStickZoneIsAnOutOfRangeError) {
+    static_assert(std::is_base_of_v<std::logic_error, std::out_of_range>);
+    static_assert(!std::is_base_of_v<error, std::out_of_range>);
+    const tangential_solution none{};
+    EXPECT_THROW(none.c0(), std::out_of_range);
+    EXPECT_THROW(none.start(), std::out_of_range);
+    EXPECT_THROW(none.rho(), std::out_of_range);
+    EXPECT_EQ(none.start2(), 2.0);  // guarded by stick_zones()
+    try {
+        none.c0();
+        FAIL() << "c0() of a solution without zones returned";
+    } catch (const std::out_of_range& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "no stick zone 1 among the layout's 0 (a solution gets its zones from a solver)");
+    }
+    try {
+        (void)one_stick_zone(-1.0, 0.3).stick_zone(1);
+        FAIL() << "a second stick zone of one";
+    } catch (const std::out_of_range& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "no stick zone 2 among the layout's 1 (a solution gets its zones from a solver)");
+    }
+}
+
+}  // namespace
+}  // namespace roughroll
