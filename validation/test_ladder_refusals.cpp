@@ -59,17 +59,19 @@ ladder_run run(double f, std::optional<double> tol = std::nullopt) {
     return r;
 }
 
-// The edge layers' crossing t_c and the layers-neglected route's relative bound (8(n)).
+// The edge layers' crossing t_c and the layers-neglected route's largest relative estimate (8(n)):
+// its bound on xi relative to xi, and the layers' thickness bound t for the zone ends.
 double crossing(double f) { return no_slip_layers(beta_al_st, f).crossing; }
 double layers_relative(double f) {
-    return no_slip_layers(beta_al_st, f).xi_bound / std::fabs(no_slip_creep(beta_al_st));
+    const neglected_layers l = no_slip_layers(beta_al_st, f);
+    return std::max(l.xi_bound / std::fabs(no_slip_creep(beta_al_st)), l.thickness);
 }
 }  // namespace
 
-// f = 0.45, 0.5, 0.55, 0.6 at the default tolerance: no level solved, one rung's contact built, the
-// line names the tolerance that answers (the layers neglected).
+// f = 0.425, 0.45, 0.47 at the default tolerance: no level solved, one rung's contact built, the
+// line names the tolerance that answers (the layers neglected; from f = 0.486 on the default answers).
 TEST(LadderRefusals, FreeRollingBeyondEveryNRefusedBeforeAnySolve) {
-    for (const double f : {0.45, 0.5, 0.55, 0.6}) {
+    for (const double f : {0.425, 0.45, 0.47}) {
         SCOPED_TRACE(f);
         ASSERT_GT(layers_relative(f), default_tolerance);  // not answered by the layers neglected
         const ladder_run r = run(f);
@@ -80,8 +82,8 @@ TEST(LadderRefusals, FreeRollingBeyondEveryNRefusedBeforeAnySolve) {
         EXPECT_EQ(r.refusal.find('\n'), std::string::npos) << r.refusal;
         EXPECT_EQ(r.refusal.find("::"), std::string::npos) << r.refusal;  // no function names
     }
-    // f = 0.5: the same tolerance as the refusal after the climb named (0.00078, docs/formulation.md 8(n)).
-    EXPECT_NE(run(0.5).refusal.find("a tolerance of 0.00078 or more"), std::string::npos);
+    // f = 0.45: the layers' thickness bound t = 2.2e-4 (the zone ends), not the creep's 3.3e-5 (8(n)).
+    EXPECT_NE(run(0.45).refusal.find("a tolerance of 0.00022 or more"), std::string::npos);
 }
 
 // The rule's edge at the default tolerance: x = t_c 1000^2 with 0.3 exp(-0.57 sqrt(x)) = 1e-4, x = 197,
@@ -93,11 +95,11 @@ TEST(LadderRefusals, OnlyWhereTheMeasuredChangeExceedsTheTolerance) {
     EXPECT_TRUE(run(0.35).solved);
     EXPECT_TRUE(run(0.42).solved);
     EXPECT_FALSE(run(0.425).solved);
-    // A tolerance the layers' route meets answers without a solve (8(n)); one between the measured
-    // change at n = 1000 and the layers' bound climbs: f = 0.45, change above 8.1e-4, bound 2.1e-3.
-    EXPECT_GT(layers_relative(0.45), 2e-3);
-    EXPECT_TRUE(run(0.45, 2e-3).solved);
-    EXPECT_FALSE(run(0.45, 5e-4).solved);
+    // A tolerance between the measured change at n = 1000 and the layers' route climbs: f = 0.425,
+    // change above 1.3e-4, route 3.7e-4 (its zone ends); below the change refused at once.
+    EXPECT_GT(layers_relative(0.425), 2e-4);
+    EXPECT_TRUE(run(0.425, 2e-4).solved);
+    EXPECT_FALSE(run(0.425, 1.2e-4).solved);
     // Beyond the measured range (x > 555) never refused at once, whatever the tolerance.
     EXPECT_GT(crossing(0.37) * 1e6, 555.0);
     EXPECT_TRUE(run(0.37, 1e-9).solved);
@@ -105,7 +107,7 @@ TEST(LadderRefusals, OnlyWhereTheMeasuredChangeExceedsTheTolerance) {
 
 // The refusal is the contact's, for the ladder's top rung: an explicit n (no ladder) is solved as before.
 TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
-    contact c(roughness{}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact c(roughness{}, 0.45, solver_options{128}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_TRUE(c.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     EXPECT_FALSE(c.beyond_every_n(0.0, 1000, 1e-3).has_value());  // the layers neglected answer
     EXPECT_FALSE(c.beyond_every_n(0.05, 1000, default_tolerance).has_value());  // Q != 0: not this structure
@@ -123,9 +125,9 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
     contact full(roughness{}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::full});
     EXPECT_FALSE(full.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     // The law was measured on product integration (the levels of 'product' and 'extrapolated'), not 'paper'.
-    contact product(roughness{}, 0.5, solver_options{96, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact product(roughness{}, 0.45, solver_options{96, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_TRUE(product.beyond_every_n(0.0, 1000, default_tolerance).has_value());
-    contact paper(roughness{}, 0.5, solver_options{200, method::paper}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact paper(roughness{}, 0.45, solver_options{200, method::paper}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_FALSE(paper.beyond_every_n(0.0, 1000, default_tolerance).has_value());
 }
 

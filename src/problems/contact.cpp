@@ -17,13 +17,16 @@
 namespace roughroll {
 
 namespace {
-// Free rolling of smooth dissimilar rollers at Johnson's level (docs/formulation.md 8(n)): the bound of
-// its edge layers' effect on xi relative to the no-slip creep; none for any other pair or level.
+// Free rolling of smooth dissimilar rollers at Johnson's level (docs/formulation.md 8(n)): the largest
+// relative estimate of the layers-neglected point, as the ladder compares them: the bound of the layers'
+// effect on xi relative to the no-slip creep, and the layers' thickness bound t for both zone ends
+// (relative to the half-width); none for any other pair or level.
 std::optional<double> layers_relative_bound(const dissimilar& materials, const roughness& surfaces, double f) {
     if (materials.beta_d == 0.0 || materials.coupling == coupling_level::full || !kernel::normal(surfaces).empty() ||
         !kernel::tangential(surfaces).empty())
         return std::nullopt;
-    return no_slip_layers(materials.beta_d, f).xi_bound / std::fabs(no_slip_creep(materials.beta_d));
+    const neglected_layers layers = no_slip_layers(materials.beta_d, f);
+    return std::max(layers.xi_bound / std::fabs(no_slip_creep(materials.beta_d)), layers.thickness);
 }
 }  // namespace
 
@@ -214,15 +217,19 @@ dissimilar_zones& contact::zones_of_point() { return coupled_load_ ? coupled_->z
 
 namespace {
 // The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
-// would be neglected; empty where the bound is no use (half of xi or more).
-std::string layers_tolerance_advice(double relative) {
+// would be neglected, and which of the route's estimates sets it; empty where the bound is no use
+// (half of xi or more).
+std::string layers_tolerance_advice(double relative, double beta_d, double f) {
     if (!(relative < 0.5)) return {};
     const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
     char up[32];
     std::snprintf(up, sizeof up, "%.2g", std::ceil(relative / unit) * unit);
+    const neglected_layers layers = no_slip_layers(beta_d, f);
+    const bool ends = layers.thickness * std::fabs(no_slip_creep(beta_d)) > layers.xi_bound;
     return std::string("a tolerance of ") + up +
            " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge layers "
-           "neglected (docs/formulation.md 8(n))";
+           "neglected (docs/formulation.md 8(n)" +
+           (ends ? ": the creep within a smaller one, the zone ends within the layers' thickness" : "") + ")";
 }
 
 // The relative change of the five zones' leading layer 1 + s1 between levels n/2 and n, bounded below
@@ -255,13 +262,14 @@ std::optional<std::string> contact::beyond_every_n(double Q, int top, double tol
         << crossing << " of the half-width, are too thin (at n = " << top
         << " the five zones' leading layer still changes by more than " << change
         << " of itself from n = " << top / 2 << ", docs/formulation.md 8(n))";
-    const std::string advice = layers_tolerance_advice(*bound);
+    const std::string advice = layers_tolerance_advice(*bound, materials_.beta_d, f_);
     if (!advice.empty()) msg << "; " << advice;
     return msg.str();
 }
 
 bool contact::layers_negligible(double Q) const {
-    // Layers that move xi by less than the tolerance: the no-slip solution with them neglected answers.
+    // Layers that move xi, and the zone ends, by less than the tolerance: the no-slip solution with them
+    // neglected answers.
     const std::optional<double> relative = layers_bound(Q);
     return relative && *relative <= options_.tolerance.value_or(default_tolerance);
 }
@@ -278,7 +286,7 @@ tangential_solution contact::dissimilar_point(double Q) {
         // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
         // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
         const std::optional<double> bound = layers_bound(Q);
-        const std::string advice = bound ? layers_tolerance_advice(*bound) : std::string();
+        const std::string advice = bound ? layers_tolerance_advice(*bound, materials_.beta_d, f_) : std::string();
         if (advice.empty()) throw;
         throw resolution_error(std::string(why.what()) + "; " + advice);
     }
