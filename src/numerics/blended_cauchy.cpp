@@ -19,7 +19,7 @@ constexpr int levels = 7;            // 16, 32, ..., 1024 intervals: at most 102
 // The rounding of a rule's sum of 1023 terms of about `value` (4 sqrt(1024) eps |value|): a change between the last two
 // rules within it is that rule's rounding, not its error; below the last rule the tolerance alone decides (at n = 1000
 // the moments sigma_0 ~ 2.6 changed by 3e-15 there, above the tolerance 2e-15: the zone had been declined).
-double floor(double value) { return 128.0 * DBL_EPSILON * std::fabs(value); }
+double last_rule_rounding(double value) { return 128.0 * DBL_EPSILON * std::fabs(value); }
 
 // The nodes the rule of level l (M = 16 2^l intervals) adds: all k at level 0, the odd k after; its sum is
 // the previous level's halved plus theirs.
@@ -75,7 +75,8 @@ std::optional<blended_cauchy> blended_cauchy::make(const std::vector<double>& b,
         if (l > 0) {
             double change = 0.0;
             for (std::size_t j = 0; j < moments; ++j)
-                change = std::max(change, std::fabs(sum[j] - previous[j]) - (l + 1 == levels ? floor(sum[j]) : 0.0));
+                change = std::max(
+                    change, std::fabs(sum[j] - previous[j]) - (l + 1 == levels ? last_rule_rounding(sum[j]) : 0.0));
             if (change <= tolerance) {
                 w.sigma_ = sum;
                 return w;
@@ -124,7 +125,7 @@ std::optional<double> blended_cauchy::operator()(double r) const {
             }
         }
         lambda = 0.5 * lambda + level_sum(l < static_cast<int>(levels_.size()) ? levels_[l] : computed);
-        if (l > 0 && std::fabs(lambda - before) - (l + 1 == levels ? floor(lambda) : 0.0) <= tolerance)
+        if (l > 0 && std::fabs(lambda - before) - (l + 1 == levels ? last_rule_rounding(lambda) : 0.0) <= tolerance)
             return M_1_PI * (smooth + p * (M_LN2 + 2.0 * lambda - ell));
         before = lambda;
     }
