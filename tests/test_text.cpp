@@ -1,15 +1,30 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// base/text: messages as one line of valid UTF-8, cut echoes, and the one rule by which a
+// base/text: numbers to significant digits, messages as one line of valid UTF-8, cut echoes, and the one rule by which a
 // number written as text is read (issue 11).
 #include "roughroll/base/text.hpp"
 
 #include <cfloat>
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
 
 namespace roughroll {
 namespace {
+
+// printf's %.<digits>g: the bounds in the ladder's messages (3), the traction plot's labels (2-4), the
+// progress lines (3, 4) and `roughroll roughness`'s table (12) write their numbers so.
+TEST(Significant, RoundsToTheDigitsAskedFor) {
+    EXPECT_EQ(significant(0.000123456, 3), "0.000123");
+    EXPECT_EQ(significant(1234567.0, 3), "1.23e+06");
+    EXPECT_EQ(significant(2.0 / 3.0, 12), "0.666666666667");
+    EXPECT_EQ(significant(0.05, 2), "0.05");
+    EXPECT_EQ(significant(-0.0, 3), "-0");
+    EXPECT_EQ(significant(-std::numeric_limits<double>::infinity(), 3), "-inf");
+    // More digits than a fixed buffer of 32 would hold.
+    EXPECT_EQ(significant(0.1, 40), "0.1000000000000000055511151231257827021182");
+    EXPECT_EQ(significant(-DBL_MAX, 30), "-1.79769313486231570814527423732e+308");
+}
 
 TEST(OneLine, ControlCharactersAndInvalidUtf8AreEscaped) {
     EXPECT_EQ(one_line("a\nb\tc\x7f"), "a\\x0ab\\x09c\\x7f");

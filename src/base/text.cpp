@@ -15,6 +15,14 @@ std::string shortest(double x) {
     return std::string(buffer, result.ptr);
 }
 
+std::string significant(double x, int digits) {
+    // The length first: %.40g may need more than any fixed buffer of the usual sizes.
+    const int length = std::snprintf(nullptr, 0, "%.*g", digits, x);
+    std::string text(static_cast<std::size_t>(length), '\0');
+    std::snprintf(text.data(), text.size() + 1, "%.*g", digits, x);
+    return text;
+}
+
 namespace {
 
 // The length of the well-formed UTF-8 sequence at the start of `s` (RFC 3629: no overlong

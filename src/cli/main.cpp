@@ -167,20 +167,13 @@ int run_point(const scene_options& o, const load_options& load, bool json) {
     return 0;
 }
 
-// x with `digits` significant digits: a progress line's value, not a result.
-std::string number_text(double x, int digits) {
-    std::ostringstream s;
-    s << std::setprecision(digits) << x;
-    return s.str();
-}
-
 // curve_of with one progress line before each row (its hook, called between rows: the rows are
 // the same numbers with or without it; tests/cli_curve_plot.sh compares the CSVs).
 scene_curve curve_with_progress(scene s, int points, bool sweep, const std::string& name) {
     if (!progress_shown()) return curve_of(std::move(s), std::nullopt, points, sweep);
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&start]() {
-        return number_text(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3);
+        return significant(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3);
     };
     // The row's load as curve_of chooses it: Q/f given, or the stick end c0 of a sweep
     // (swept_curve: rho = (1 + c0)/2 uniform from 1 to 0).
@@ -193,7 +186,7 @@ scene_curve curve_with_progress(scene s, int points, bool sweep, const std::stri
         std::string what;
         if (sweep) {
             const double rho = 1.0 - static_cast<double>(row) / (points - 1);
-            what = "c0 = " + number_text(row + 1 == static_cast<std::size_t>(points) ? -1.0 : 2.0 * rho - 1.0, 4);
+            what = "c0 = " + significant(row + 1 == static_cast<std::size_t>(points) ? -1.0 : 2.0 * rho - 1.0, 4);
         } else if (row < Qs.size()) {
             what = "Q/f = " + ratio_text(Qs[row] / f, 4);
         }

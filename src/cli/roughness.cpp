@@ -15,12 +15,6 @@
 namespace roughroll::cli {
 namespace {
 
-std::string number(double x) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.12g", x);
-    return buffer;
-}
-
 std::string error_text(double e) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.1e", e);
@@ -30,19 +24,20 @@ std::string error_text(double e) {
 void write_text(std::ostream& out, const std::string& spec, const micro_geometry& g, const roughness_parameters& p) {
     const layer& m = g.material;
     out << "roughness parameters (2.11)-(2.15) of " << one_line(spec) << "\n";
-    out << "  layer: lambda0 = " << number(m.lambda0) << " Pa, mu0 = " << number(m.mu0) << " Pa, H = " << number(m.H)
-        << " m, l = " << number(m.l) << " m\n";
+    out << "  layer: lambda0 = " << significant(m.lambda0, 12) << " Pa, mu0 = " << significant(m.mu0, 12)
+        << " Pa, H = " << significant(m.H, 12) << " m, l = " << significant(m.l, 12) << " m\n";
     out << "  profile " << to_string(g.bottom.kind);
     if (g.bottom.kind == profile_kind::sine || g.bottom.kind == profile_kind::sawtooth)
-        out << " (delta = " << number(g.bottom.delta) << " m)";
+        out << " (delta = " << significant(g.bottom.delta, 12) << " m)";
     if (g.bottom.kind == profile_kind::measured)
         out << " (" << g.bottom.measured.x1.size() << " samples from " << one_line(g.bottom.measured.source) << ")";
     out << ", micro-shape " << to_string(g.shape) << ", decay " << to_string(g.decay) << ", factor of (2.12) "
         << to_string(g.factor_2_12) << "\n\n";
     const auto row = [&out](const char* name, const char* unit, double t, double te, double n, double ne) {
         char line[160];
-        std::snprintf(line, sizeof line, "  %-6s %-5s  %20s +- %-8s  %20s +- %-8s\n", name, unit, number(t).c_str(),
-                      error_text(te).c_str(), number(n).c_str(), error_text(ne).c_str());
+        std::snprintf(line, sizeof line, "  %-6s %-5s  %20s +- %-8s  %20s +- %-8s\n", name, unit,
+                      significant(t, 12).c_str(), error_text(te).c_str(), significant(n, 12).c_str(),
+                      error_text(ne).c_str());
         out << line;
     };
     char header[160];
@@ -54,7 +49,7 @@ void write_text(std::ostream& out, const std::string& spec, const micro_geometry
     out << "\n  averages (2.9), with the quadrature's error estimates:\n";
     const auto average = [&out](const char* name, const char* unit, double v, double e) {
         char line[160];
-        std::snprintf(line, sizeof line, "    %-10s = %20s +- %-8s %s\n", name, number(v).c_str(),
+        std::snprintf(line, sizeof line, "    %-10s = %20s +- %-8s %s\n", name, significant(v, 12).c_str(),
                       error_text(e).c_str(), unit);
         out << line;
     };

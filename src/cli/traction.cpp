@@ -27,17 +27,11 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/traction_table.hpp"
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 
 namespace roughroll::cli {
 
 namespace {
-
-// x with `digits` significant digits, for the plot's labels.
-std::string number(double x, int digits) {
-    std::ostringstream s;
-    s << std::setprecision(digits) << x;
-    return s.str();
-}
 
 // " using 1:COLUMN ... title "TITLE"" of one curve (notitle when TITLE is empty). The
 // cairo terminals snap exactly horizontal segments wider than a pixel to the pixel grid,
@@ -86,10 +80,10 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
     const bool has_slip = std::any_of(k.zones.begin(), k.zones.end(), [](const zone& z) { return !z.stick; });
     const int load_sign = k.Q > 0.0 ? 1 : k.Q < 0.0 ? -1 : 0;
     const std::string data = "'" + gnuplot_path(csv.filename()) + "'";  // beside the script
-    const std::string subtitle = "Q = " + shortest(k.Q) + "  (Q/f = " + ratio_text(k.Q / f, 3) +
-                                 "),   f = " + shortest(f) + ",   c_0 = c/a = " + number(k.c0, 3) +
-                                 ",   {/Symbol x} = " + number(k.xi, 3) + ",   P_H/P_2 = " + number(k.lambda, 4) +
-                                 (k.checks_hold ? "" : "   (checks (3.3), (3.4) VIOLATED)");
+    const std::string subtitle =
+        "Q = " + shortest(k.Q) + "  (Q/f = " + ratio_text(k.Q / f, 3) + "),   f = " + shortest(f) +
+        ",   c_0 = c/a = " + significant(k.c0, 3) + ",   {/Symbol x} = " + significant(k.xi, 3) +
+        ",   P_H/P_2 = " + significant(k.lambda, 4) + (k.checks_hold ? "" : "   (checks (3.3), (3.4) VIOLATED)");
     gp << "# Tractions over the contact, written by roughroll traction. Columns of the CSV:\n"
        << "# 1 r, 2 p, 3 p1, 4 f p, 5 -f p, 6 zone, 7 slip velocity v, 8 p (Hertz), 9 p1 (Carter)\n"
        << gnuplot_output_stem(stem) << "set datafile separator ','\n"
@@ -136,7 +130,7 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
                 gp << "set object " << id << " rect from " << shortest(z.from * xs) << ", graph 0 to "
                    << shortest(z.to * xs) << ", graph 1 behind fc rgb '#e3edf7' fs solid 1.0 noborder\n";
             if (width < 0.04) {
-                name += " (" + number(width, 2) + " a wide)";
+                name += " (" + significant(width, 2) + " a wide)";
                 gp << "set arrow " << id << " from " << shortest(mid * xs) << ", graph 0 to " << shortest(mid * xs)
                    << ", graph 1 nohead lw 2.5 lc rgb '" << colour << "' front\n";
             }
@@ -187,7 +181,8 @@ void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std
             gp << "set yrange [-1:1]\n";
         if (has_stick && has_slip) {
             const bool left = k.c0 > -0.55;
-            gp << "set label 3 \"" << (k.si ? "c = " + number(k.c0 * xs, 3) + " mm" : "c_0 = " + number(k.c0, 3))
+            gp << "set label 3 \""
+               << (k.si ? "c = " + significant(k.c0 * xs, 3) + " mm" : "c_0 = " + significant(k.c0, 3))
                << "\" at c0*xs, graph " << (negative ? 0.25 : 0.6)
                << (left ? " right offset -0.8,0" : " left offset 0.8,0") << " font ',14'\n";
         }
@@ -292,7 +287,7 @@ int run_traction(const traction_options& o) {
                   gnuplot_text(s.label.empty() ? std::filesystem::path(o.scene.path).filename().string() : s.label);
     facts.Q = Q;
     facts.f = f;
-    facts.c0 = level.c0();            // the stick zone the plotted tractions have
+    facts.c0 = level.c0();             // the stick zone the plotted tractions have
     facts.zones = level.layout.zones;  // the zones the plotted tractions have
     facts.xi = solution.xi;
     facts.lambda = normal.lambda;

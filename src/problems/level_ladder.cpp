@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -98,13 +97,6 @@ std::unique_ptr<contact> level_ladder::release(int n) {
 
 namespace {
 
-// Three significant digits: a bound's size, not a value.
-std::string three_digits(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", x);
-    return text;
-}
-
 error_estimate scaled_changes(const level_changes& c, double factor) {
     return error_estimate{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
 }
@@ -177,15 +169,16 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             const auto failing = std::count(o.fails.begin(), o.fails.end(), true);
             if (static_cast<std::size_t>(failing) == o.fails.size()) {
                 const tolerance_check& next = o.at_least.front();
-                beyond_all = "no larger n can meet it (full coupling's estimate is twice the larger of the last two "
-                             "level changes and its zone ends converge at order 1: at n = " +
-                             std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " +
-                             three_digits(next.relative) + " relative; docs/formulation.md 8(q))";
+                beyond_all =
+                    "no larger n can meet it (full coupling's estimate is twice the larger of the last two "
+                    "level changes and its zone ends converge at order 1: at n = " +
+                    std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " + significant(next.relative, 3) +
+                    " relative; docs/formulation.md 8(q))";
             } else if (o.fails.front() && (i + 2 == rungs_.size() || rungs_[i + 2] != 2 * rungs_[i + 1])) {
                 skip[i + 1] = true;
                 const tolerance_check& next = o.at_least.front();
                 skipped = "; n = " + std::to_string(rungs_[i + 1]) + " was not solved: its estimate of " +
-                          next.quantity + " is at least " + three_digits(next.relative) +
+                          next.quantity + " is at least " + significant(next.relative, 3) +
                           " relative (full coupling, from the levels up to n = " + std::to_string(n) +
                           ", docs/formulation.md 8(q))";
             }

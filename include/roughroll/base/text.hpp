@@ -14,6 +14,10 @@ namespace roughroll {
 // Exact, so every digit printed can be trusted, and readable.
 std::string shortest(double x);
 
+// x rounded to `digits` significant digits, as printf's %.<digits>g writes it ("0.000123", "1.23e+06", "nan",
+// "-inf"): a bound's size or a plot's label, where the digits beyond those asked for would be noise.
+std::string significant(double x, int digits);
+
 // Messages are one line of valid UTF-8 (the CLI prints them as such, JSON needs UTF-8), but
 // a quoted TOML key, a string value or a path may hold a newline, another control character
 // or bytes that are not UTF-8 (a file name is any bytes): those are shown as \xNN instead.
