@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -222,8 +221,7 @@ namespace {
 std::string layers_tolerance_advice(double relative, double beta_d, double f) {
     if (!(relative < 0.5)) return {};
     const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
-    char up[32];
-    std::snprintf(up, sizeof up, "%.2g", std::ceil(relative / unit) * unit);
+    const std::string up = significant(std::ceil(relative / unit) * unit, 2);
     const neglected_layers layers = no_slip_layers(beta_d, f);
     const bool ends = layers.thickness * std::fabs(no_slip_creep(beta_d)) > layers.xi_bound;
     return std::string("a tolerance of ") + up +
