@@ -57,8 +57,8 @@ struct plot_facts {
     std::optional<si_point> si;  // a physical scene: drawn in mm and MPa
 };
 
-void write_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std::filesystem::path& stem,
-                   const plot_facts& k) {
+void write_traction_gnuplot(std::ostream& gp, const std::filesystem::path& csv, const std::filesystem::path& stem,
+                            const plot_facts& k) {
     const double f = k.f;
     const bool negative = k.Q < 0.0;  // the mirror case: p1 follows -f p on the slip zone
     // y range of the tractions: the pressure on top with room for the key, -f p below.
@@ -296,7 +296,7 @@ int run_traction(const traction_options& o) {
     facts.v_high = v_high;
     facts.checks_hold = solution.checks.hold();
     facts.si = si;
-    write_gnuplot(script_file.stream(), csv, stem, facts);
+    write_traction_gnuplot(script_file.stream(), csv, stem, facts);
     script_file.commit();
     if (!o.plot) return 0;
     run_gnuplot(script, stem, {".svg", ".png"});
