@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// base/text: numbers to significant digits, messages as one line of valid UTF-8, cut echoes, and the one rule by which a
-// number written as text is read (issue 11).
+// base/text: numbers to significant digits, messages as one line of valid UTF-8, cut echoes, and
+// the one rule by which a number written as text is read (issue 11).
 #include "roughroll/base/text.hpp"
 
 #include <cfloat>

@@ -50,7 +50,8 @@ KEYWORDS = set("""alignas alignof and asm auto bool break case catch char char16
 const_cast continue decltype default delete do double dynamic_cast else enum explicit export extern false float for
 friend goto if inline int long mutable namespace new noexcept not nullptr operator or private protected public register
 reinterpret_cast return short signed sizeof static static_assert static_cast struct switch template this thread_local
-throw true try typedef typeid typename union unsigned using virtual void volatile wchar_t while final override""".split())
+throw true try typedef typeid typename union unsigned using virtual void volatile wchar_t while final
+override""".split())
 SPECIFIERS = {"static", "inline", "constexpr", "const", "extern", "thread_local", "volatile", "mutable", "friend"}
 
 
@@ -275,7 +276,8 @@ def headers(path, roots, cache):
 
 def unity_batches(source_dir, build_dir, cmake):
     """{unity file: [sources in order]} of the unity build of source_dir (its own when build_dir is one)."""
-    cache = (build_dir / "CMakeCache.txt").read_text(errors="replace") if (build_dir / "CMakeCache.txt").is_file() else ""
+    cache_file = build_dir / "CMakeCache.txt"
+    cache = cache_file.read_text(errors="replace") if cache_file.is_file() else ""
     scratch = build_dir / "unity_names"
     if re.search(r"^CMAKE_UNITY_BUILD:\w+=(ON|1|TRUE|YES|Y)$", cache, re.MULTILINE | re.IGNORECASE):
         found = [u for u in build_dir.glob("**/CMakeFiles/*.dir/Unity/unity_*_cxx.cxx") if scratch not in u.parents]

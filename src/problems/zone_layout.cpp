@@ -79,4 +79,3 @@ zone_layout mirrored(zone_layout layout) {
 }
 
 }  // namespace roughroll
-
