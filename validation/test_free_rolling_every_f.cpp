@@ -133,7 +133,8 @@ TEST(FreeRollingEveryF, LayersBoundAgainstTheFiveZonesContinued) {
     using namespace roughroll;
     std::vector<double> ends;
     for (const double f : {0.2, 0.25, 0.3, 0.35, 0.375, 0.4, 0.425, 0.45}) {
-        contact c(roughness{}, f, solver_options{500, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+        contact c(roughness{}, f, solver_options{500, method::product},
+                  dissimilar{beta_al_st, coupling_level::johnson});
         dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
         const auto s = ends.empty() ? d.five_zones(0.0) : d.five_zones(0.0, ends);
         ASSERT_TRUE(s) << f;

@@ -125,9 +125,11 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
     contact full(roughness{}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::full});
     EXPECT_FALSE(full.beyond_every_n(0.0, 1000, default_tolerance).has_value());
     // The law was measured on product integration (the levels of 'product' and 'extrapolated'), not 'paper'.
-    contact product(roughness{}, 0.45, solver_options{96, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact product(roughness{}, 0.45, solver_options{96, method::product},
+                    dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_TRUE(product.beyond_every_n(0.0, 1000, default_tolerance).has_value());
-    contact paper(roughness{}, 0.45, solver_options{200, method::paper}, dissimilar{beta_al_st, coupling_level::johnson});
+    contact paper(roughness{}, 0.45, solver_options{200, method::paper},
+                  dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_FALSE(paper.beyond_every_n(0.0, 1000, default_tolerance).has_value());
 }
 
