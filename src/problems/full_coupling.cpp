@@ -2,6 +2,7 @@
 #include "roughroll/problems/full_coupling.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -78,18 +79,28 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s
 // sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), for three zones of either kind:
 // slip sigma on both sides (S = 1) and the driven three zones (S the blend of 8(g)), whose int p H and W
 // (dissimilar_zones) take p_q^0 (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series'
-// closed form, 8(o)). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
+// closed form, 8(o)); on the blended zone the blend's own (1 +- t)^(3/2) kinks join q too (8(r)). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
 // to carry); five zones, where carrying both zones' kinks (built and measured, 8(o)) made the second stick
 // zone's start converge at order 1 with a larger constant (changes 6.5e-4, 3.2e-4 from n = 32) at 4.5 times
 // the cost; and rough rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, derived
 // in 8(o), not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
-                                               bool smooth) {
+                                               bool smooth, const normal_solution& source_normal, double f) {
     if (!smooth || s.layout.stick_zones() != 1 || !(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0) ||
         s.psi_b.empty())
         return nullptr;
     auto k = std::make_shared<pressure_kinks>();
-    k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b);
+    // The blended zone's right side 2 sign f p Theta (8(g)) has Theta's (1 +- t)^(3/2) kinks, which p's U-series
+    // cannot carry and the entry condition weighs by (1 + t)^(-3/2) (order 1 at the entry): its part
+    // 2 f p (Theta - Theta_3) joins q here, leaving the smoother blend Theta_3 on the right side (8(r)).
+    std::function<double(double)> blend;
+    if (s.layout.opposite()) {
+        const double start = s.start(), rho = 0.5 * (s.c0() - s.start());
+        blend = [&source_normal, f, start, rho](double t) {
+            return 2.0 * f * source_normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
+        };
+    }
+    k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b, blend);
     return k;
 }
 }  // namespace
@@ -126,7 +137,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         };
         std::unique_ptr<iterate> next;
         try {
-            next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty()));
+            next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty(),
+                                       current_ ? current_->normal : johnson, f_));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;

@@ -19,7 +19,7 @@ constexpr double blend_tail = 1e-7;
 }  // namespace
 
 void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
-                              const std::vector<double>& psi_b) {
+                              const std::vector<double>& psi_b, const std::function<double(double)>& blend) {
     if (!(start > -1.0 && start < c0 && c0 < 1.0))
         throw numerical_error(
             "full coupling: a stick zone of the pressure's kinks is not inside the contact "
@@ -36,7 +36,8 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
     double first = 0.0, zeroth = 0.0;
     for (int i = 0; i < rule.n; ++i) {
         const double r = start + z.rho * (rule.nodes[i] + 1.0);
-        g[i] = u_series(psi_b, rule.nodes[i]) / std::sqrt(1.0 - r * r);
+        const double psi = u_series(psi_b, rule.nodes[i]) + (blend ? blend(rule.nodes[i]) : 0.0);
+        g[i] = psi / std::sqrt(1.0 - r * r);
         first += rule.weights[i] * g[i] * r;
         zeroth += rule.weights[i] * g[i];
     }
@@ -144,6 +145,8 @@ std::optional<double> kinks_blend::operator()(double r, double blend) const {
     }
     return sum;
 }
+
+double blend_kinks(double t) { return -2.0 / (15.0 * M_PI) * t * (1.0 - t * t) * (9.0 - 4.0 * t * t); }
 
 void add_kink_points(std::vector<double>& points, const pressure_kinks& kinks, double apart) {
     if (points.empty()) return;

@@ -18,6 +18,7 @@
 // the tangential G (not built; full_coupling keeps the old right side there).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -30,10 +31,11 @@ class kinks_blend;
 
 class pressure_kinks {
 public:
-    // Adds the stick zone [start, c0] whose q(r) = sign sqrt(1 - t^2) psi(t), psi = sum psi_b U_j, its
-    // g expanded on `rule`'s nodes. Needs -1 < start < c0 < 1.
+    // Adds the stick zone [start, c0] whose q(r) = sign sqrt(1 - t^2) psi(t), psi = sum psi_b U_j + blend(t), its
+    // g expanded on `rule`'s nodes. `blend` (empty: 0) is a further part of psi carried with q, analytic on the
+    // closed zone: the blended zone's 2 f p (Theta - Theta_3)/sqrt(1 - t^2) (blend_kinks). Needs -1 < start < c0 < 1.
     void add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
-                  const std::vector<double>& psi_b);
+                  const std::vector<double>& psi_b, const std::function<double(double)>& blend = {});
     bool empty() const { return zones_.empty(); }
 
     double operator()(double r) const;  // p_q^0(r), 0 outside (-1, 1)
@@ -87,6 +89,12 @@ private:
     blended_cauchy unit_;  // W_1
     std::vector<part> parts_;
 };
+
+// (Theta(t) - Theta_3(t))/sqrt(1 - t^2) = -(2/(15 pi)) t (1 - t^2) (9 - 4 t^2) on -1 <= t <= 1 (docs/formulation.md
+// 8(r)): Theta the blend of 8(g) (Theta' = (2/pi) sqrt(1 - t^2), (1 +- t)^(3/2) at the ends), Theta_3 the blend with
+// Theta_3' = (16/(5 pi)) (1 - t^2)^(5/2) ((1 +- t)^(7/2) at the ends). Both blends' arcsin t have the coefficient
+// 1/pi, so their difference is sqrt(1 - t^2) times this polynomial: a part of q that pressure_kinks carries exactly.
+double blend_kinks(double t);
 
 // Adds to `points` (breakpoints of a quadrature over [points' least, points' greatest]) the zone ends of
 // `kinks` that lie strictly inside that range and more than `apart` from every point: an adaptive rule
