@@ -29,9 +29,7 @@ namespace {
 constexpr int start_scan = 32;           // trial starts of the stick zone
 constexpr int least_samples = 2001;      // samples of b p + f G for its least value (gross sliding)
 constexpr int shape_samples = 2001;      // samples of p for "even and decreasing" (complete slip)
-constexpr int newton_iterations = 40;
 constexpr std::size_t traction_memo_size = 1 << 16;  // points of traction's memo before it starts again
-constexpr double newton_tolerance = zone_end_resolution;  // steps below it are the entry's rounding
 // W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
 // integrands' 3/2-power ends and the sqrt at r = 1 analytic): tolerances, and the error GSL's own
 // estimate may keep when it cannot reach them.
@@ -385,90 +383,39 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     return s;
 }
 
-dissimilar_zones::structure dissimilar_zones::equal_directions(double b) {
-    return {[this, b](double start, double c0) { return solver_.solve_on_zone(start, c0, b); },
-            [this](double) { return f_; }};
-}
-
-dissimilar_zones::structure dissimilar_zones::opposite_directions(double b) {
-    // With no stick zone, p1 = -f p before the start and f p after it.
-    return {[this, b](double start, double c0) { return blended(start, c0, b); },
-            [this](double start) { return f_ * (1.0 - 2.0 * load_between(solver_.normal(), -1.0, start)); }};
-}
-
-std::optional<tangential_solution> dissimilar_zones::newton(const structure& z, double magnitude, double start,
-                                                            double c0) {
-    // Newton on F = ((Q - |Q|)/f, psi(-1)) in the zone's midpoint and half-length (zone_newton), on
-    // either structure. Empty: no convergence.
-    std::optional<tangential_solution> last;  // the solve at the last zone, which is the root's
-    const auto residual = [&](const std::vector<stick_span>& x) -> std::optional<std::vector<double>> {
-        last = z.solve(x[0].start, x[0].end);
-        return std::vector<double>{(last->Q - magnitude) / f_, zone_solver::entry_coefficient(*last)};
+stick_zone_operator dissimilar_zones::zone_operator(bool opposite, double b, double magnitude) {
+    // The three zones of 8(g) in the |Q| frame with the forcing b: both slip zones with Q (the collocation
+    // with Dundurs' forcing b p), or the leading one against it (the blended zone).
+    stick_zone_operator op;
+    op.f = f_;
+    // The paper's zone from r = -1 is never the answer (8(g)).
+    op.paper_zone = [](double, bool) -> std::optional<tangential_solution> { return std::nullopt; };
+    op.solve = [this, b, opposite](double start, double c0) {
+        return opposite ? blended(start, c0, b) : solver_.solve_on_zone(start, c0, b);
     };
-    return at_root(zone_newton(residual, {{start, c0, 0.0}}, {false, newton_iterations, newton_tolerance}), last);
-}
-
-tangential_solution dissimilar_zones::three_zones(const structure& z, double magnitude,
-                                                  std::optional<zone_guess> guess) {
-    // With a guess (the coarser level's zone): Newton, accepted when its checks hold.
-    if (guess) {
-        if (auto s = newton(z, magnitude, guess->start, guess->c0)) {
-            s->checks = check(*s);
-            if (s->checks.hold()) return *s;
-        }
-    }
-    // Else scan the starts, clustered towards the edges (Chebyshev), where thin leading slip zones put
-    // the start, for sign changes of the entry condition psi(-1) (zone_family.hpp); each bracket in turn
-    // (from the leading edge); the first whose checks hold is the answer, else the first found.
-    const zone_family zones{[&](double start) {
-                                // Q'(start, c0) is the empty zone's load at c0 = start and falls as the zone grows.
-                                return stick_zone_end(
-                                    [&](double c0) {
-                                        return (c0 <= start ? z.empty_load(start) : z.solve(start, c0).Q) - magnitude;
-                                    },
-                                    start);
-                            },
-                            z.solve, zone_solver::entry_coefficient};
-    std::vector<double> starts;
-    for (int k = 1; k < start_scan; ++k) starts.push_back(-std::cos(M_PI * k / start_scan));
-    const std::vector<zone_trial> trials = scan_starts(zones, {}, starts, false);
-    std::optional<tangential_solution> first;
-    const auto brackets = [&](const std::vector<zone_trial>& trials) -> std::optional<tangential_solution> {
-        for (std::size_t k = 1; k < trials.size(); ++k) {
-            if (!brackets_entry(trials[k - 1], trials[k])) continue;
-            std::optional<tangential_solution> s;
-            try {
-                s = zone_in_bracket(zones, trials[k - 1], trials[k],
-                                    [&](double start, double end) { return newton(z, magnitude, start, end); });
-            } catch (const numerical_error&) {
-                continue;
-            }
-            s->checks = check(*s);
-            if (s->checks.hold()) return s;
-            if (!first) first = s;
-        }
-        return std::nullopt;
+    op.excess = [](const tangential_solution& t, double load) { return t.Q - load; };
+    // Q' with no stick zone: f (both slip zones with Q), or p1 = -f p before the start and f p after it.
+    op.empty_load = [this, opposite](double start) {
+        return opposite ? f_ * (1.0 - 2.0 * load_between(solver_.normal(), -1.0, start)) : f_;
     };
-    if (auto s = brackets(trials)) return *s;
-    if (!first && !trials.empty()) {
-        // Near gross sliding the leading slip zone thins below the scan's first start, 1 - cos(pi/32)
-        // = 4.8e-3 from the edge (the stick zone closes on the leading edge as 7(d)'s does, its
-        // start 1 + s ~ (1 - |Q|/f)^(2/3)): starts geometrically closer to the edge, down to 1e-12,
-        // before the first trial. Only where the scan found nothing, so that no other answer changes.
-        std::vector<double> near_edge;
-        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) near_edge.push_back(-1.0 + gap);
-        std::vector<zone_trial> edge = scan_starts(zones, {}, near_edge, false);
-        edge.push_back(trials.front());
-        if (auto s = brackets(edge)) return *s;
-    }
-    if (first) return *first;  // the caller refuses it: its checks fail
-    // Of this kind: solve tries the other. The message is the user's where no caller answers the load.
-    std::ostringstream msg;
-    msg.precision(6);
-    msg << "dissimilar rollers at |Q|/f = " << magnitude / f_
-        << ": no three zones carry the load at n = " << solver_.normal().rule.n
-        << "; another n may find them (docs/formulation.md 8(g), 8(j))";
-    throw resolution_error(msg.str());
+    op.entry = op.newton_entry = zone_solver::entry_coefficient;  // psi(-1) = 0 (7(b)), absolute
+    op.gross_sliding = [this, b] { return gross_sliding(b); };
+    op.check = [this](const tangential_solution& t) { return check(t); };
+    // Of this kind only: solve tries the other. The message is the user's where no caller answers the load.
+    std::ostringstream refusal;
+    refusal.precision(6);
+    refusal << "dissimilar rollers at |Q|/f = " << magnitude / f_
+            << ": no three zones carry the load at n = " << solver_.normal().rule.n
+            << "; another n may find them (docs/formulation.md 8(g), 8(j))";
+    // The starts clustered towards both edges (Chebyshev), where thin leading slip zones put the start, all
+    // scanned; each bracket in turn from the leading edge, the first zone whose checks hold the answer;
+    // Newton's residuals absolute, its steps down to the entry's rounding (zone_end_resolution).
+    // name, refusal; trial starts, clustered, to r*; every bracket; ends chained; the edge zone; Newton's
+    // residuals relative, its tolerance
+    op.method = {"dissimilar zones",
+                 refusal.str(),
+                 start_scan, true, false, true, false, edge_zone::absent, false, zone_end_resolution};
+    return op;
 }
 
 tangential_solution five_zone_point(const five_zone_solution& v) {
@@ -559,8 +506,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         std::optional<numerical_error> fault;
         for (const bool blend : {opposite, !opposite}) {
             try {
-                tangential_solution t =
-                    three_zones(blend ? opposite_directions(b) : equal_directions(b), magnitude, guess);
+                tangential_solution t = zone_solver(zone_operator(blend, b, magnitude)).solve(magnitude, false, guess);
                 if (t.checks.hold()) {
                     found = t;
                     break;
@@ -578,7 +524,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
         s = found ? *found : *failed;
     }
     s.layout.route = zone_route::general;
-    // The checks of the |Q| problem (three_zones made them) are those of Q: the mirror of 8(h) changes
+    // The checks of the |Q| problem (the zone search made them) are those of Q: the mirror of 8(h) changes
     // the signs of p1 and v together.
     const bool checked = magnitude != f_;
     apply_load_sign(s, Q, "dissimilar zones");

@@ -217,7 +217,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones_at(double Q, doub
     const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
         three_hold = false;
         try {
-            const tangential_solution three = three_zones(opposite_directions(beta), load, std::nullopt);
+            const tangential_solution three = zone_solver(zone_operator(true, beta, load)).solve(load);
             constexpr int samples = 400;
             for (int i = 1; i <= samples; ++i) {
                 const double r = i == samples ? 1.0 : three.c0() + (1.0 - three.c0()) * i / samples;

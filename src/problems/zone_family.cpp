@@ -69,14 +69,8 @@ tangential_solution searched_point(tangential_solution s, double Q, const char* 
                                    const std::function<traction_checks(const tangential_solution&)>& check) {
     s.layout.route = s.start() > -1.0 ? zone_route::general : zone_route::single;
     apply_load_sign(s, Q, what);
-    s.checks = check(s);
+    if (check) s.checks = check(s);
     return s;
-}
-
-tangential_solution first_bracket_zone(const zone_family& family, const std::vector<zone_trial>& trials,
-                                       const zone_newton_from& newton, const char* refusal) {
-    if (trials.size() < 2 || !brackets_entry(trials[trials.size() - 2], trials.back())) throw resolution_error(refusal);
-    return zone_in_bracket(family, trials[trials.size() - 2], trials.back(), newton);
 }
 
 }  // namespace roughroll

@@ -6,8 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
+
+#include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/zone_solver.hpp"
@@ -110,26 +114,35 @@ stick_zone_operator tangential_solver::zone_operator() {
         return solve(Q);
     };
     op.solve = [this](double start, double end) { return solve_on_zone(start, end); };
-    op.load_integral = [](const tangential_solution& t) {
-        return t.rho() * (t.psi_b.empty() ? 0.0 : M_PI_2 * t.psi_b[0]);  // int psi sqrt(1 - t^2) = (pi/2) b_0
+    // Q(s, c) - |Q| = rho int q + (f - |Q|) (3.22), without the O(f) sum that cancels (7(d)): f - |Q| is exact
+    // (Sterbenz, |Q| >= f/2 where it matters) and rho int q keeps its relative digits, where f + rho int q
+    // rounds to ulp(f) (at |Q|/f = 1 - 1e-15 six ulps: the ends found from Q itself were noise, 7(e)).
+    // int psi sqrt(1 - t^2) = (pi/2) b_0.
+    op.excess = [f = f_](const tangential_solution& t, double magnitude) {
+        return t.rho() * (t.psi_b.empty() ? 0.0 : M_PI_2 * t.psi_b[0]) + (f - magnitude);
     };
+    op.empty_load = [f = f_](double) { return f; };
     op.entry = zone_solver::entry_coefficient;
     // psi(-1)/|b_0|: relative, so that it keeps its digits as the zone collapses at gross sliding (7(e)).
     op.newton_entry = [](const tangential_solution& t) {
         return zone_solver::entry_coefficient(t) / std::fabs(t.psi_b[0]);
     };
-    op.G = [this](double r) { return G(r); };
-    op.G_sampled = [this](const std::vector<double>& r) { return G(r); };
+    // w = G (7(d)).
+    op.gross_sliding = [this] {
+        return roughroll::gross_sliding(
+            f_, f_, [this](const std::vector<double>& r) { return G(r); }, [this](double r) { return G(r); });
+    };
     op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this](double magnitude, double point, const zone_newton_from&) {
         return continuation(*this, magnitude, point);
     };
-    // name, refusal, trial starts, scanned to r*, ends chained, edge zone required, Newton's tolerance
+    // name, refusal; trial starts, clustered, to r*; every bracket; ends chained; the edge zone; Newton's
+    // residuals relative, its tolerance
     op.method = {"zone solver",
                  "general zone search: no stick zone between two slip zones carries this load (the entry "
                  "condition psi(-1) = 0 has no root on the scanned starts): its zones have another structure; "
                  "zones = \"auto\" reports the paper's single zone with its checks",
-                 32, false, false, true, collocation_tolerance};
+                 32, false, false, false, false, edge_zone::needed, true, collocation_tolerance};
     return op;
 }
 
@@ -156,14 +169,21 @@ stick_zone_operator one_parameter_solver::zone_operator() {
         }
     };
     op.solve = [this](double start, double end) { return solve_on_zone(start, end); };
-    op.load_integral = [](const tangential_solution& t) { return t.rho() * M_PI_2 * t.psi_b[0]; };
+    op.excess = [f = f_](const tangential_solution& t, double magnitude) {
+        return t.rho() * M_PI_2 * t.psi_b[0] + (f - magnitude);  // as the collocation's (7(g))
+    };
+    op.empty_load = [f = f_](double) { return f; };
     // E needs no scale: Newton's step does not depend on the residuals' units.
     op.entry = op.newton_entry = [this](const tangential_solution& t) { return entry_velocity(t); };
-    op.G = [this](double r) { return G(r); };
-    op.G_sampled = [this](const std::vector<double>& r) {
-        std::vector<double> out(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) out[i] = G(r[i]);
-        return out;
+    op.gross_sliding = [this] {
+        return roughroll::gross_sliding(
+            f_, f_,
+            [this](const std::vector<double>& r) {
+                std::vector<double> out(r.size());
+                for (std::size_t i = 0; i < r.size(); ++i) out[i] = G(r[i]);
+                return out;
+            },
+            [this](double r) { return G(r); });
     };
     op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this](double magnitude, double point,
@@ -172,12 +192,12 @@ stick_zone_operator one_parameter_solver::zone_operator() {
         return std::nullopt;
     };
     // In [-1, r*]: the zone straddles r* and collapses onto it at gross sliding; without the paper's
-    // zone (its system singular near gross sliding) the scan decides.
+    // zone (its system singular near gross sliding) the scan decides. The fields as the collocation's.
     op.method = {"one-parameter zone search",
                  "one-parameter zone search: no stick zone between two slip zones carries this load (the entry "
                  "condition v(s-) = 0 has no root on the scanned starts): its zones have another structure; "
                  "zones = \"auto\" reports the paper's single zone with its checks where it exists",
-                 16, true, true, false, 1e-12};
+                 16, false, true, false, true, edge_zone::tried, true, 1e-12};
     return op;
 }
 

@@ -28,6 +28,8 @@
 //   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling, a driven roller 1
 //     below Q/f ~ 0.9 and a braked one until the slip+ zone closes (Q/f ~ -0.074 at f = 0.05 for
 //     aluminium on steel, 8(j) 4a), by five_zones (five_zones.cpp; below), not through solve().
+// The two three-zone structures are values of the one zone search's operator (zone_operator below,
+// stick_zone_operator.hpp), found by zone_solver; solve tries them in turn (the coarser level's first).
 // Not built in solve() (refused with resolution_error naming what is missing, never a number): free
 // rolling Q = 0 and every load whose answer is not one of the three-zone structures above (five
 // zones), and coupling "full".
@@ -175,18 +177,11 @@ private:
     std::optional<five_zone_solution> continued(std::optional<five_zone_solution> s, double Q, double load);
     double load_under_H(double start, double c0);           // int p H over [-1, 1] for the zone [start, c0]
     double S(const five_zone_solution& s, double r) const;  // -1 + 2 H1 - 2 H2
-    // The system on the zone [start, c0] of one structure, its load Q' the |Q| problem's.
-    using zone_system = std::function<tangential_solution(double start, double c0)>;
-    struct structure {
-        zone_system solve;
-        std::function<double(double start)> empty_load;  // Q' with no stick zone (c0 = start)
-    };
-    structure equal_directions(double b);
-    structure opposite_directions(double b);
-    tangential_solution three_zones(const structure& z, double magnitude, std::optional<zone_guess> guess);
+    // The three zones at |Q| = magnitude with the forcing b as the one zone search's operator: both slip
+    // zones in the direction of Q (`opposite` false), or the leading one against it (8(g)).
+    stick_zone_operator zone_operator(bool opposite, double b, double magnitude);
     tangential_solution blended(double start, double c0, double b);  // the system with S of 8(g)
     tangential_solution gross_sliding(double b);
-    std::optional<tangential_solution> newton(const structure& z, double magnitude, double start, double c0);
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
     double W(double r, double start, double c0);          // L1[p H] of the blended zone

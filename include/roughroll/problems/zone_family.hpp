@@ -50,15 +50,9 @@ bool brackets_entry(const zone_trial& lo, const zone_trial& hi);
 tangential_solution zone_in_bracket(const zone_family& family, const zone_trial& lo, const zone_trial& hi,
                                     const zone_newton_from& newton);
 
-// The zone of the bracket a scan to the first bracket ends on; where it ends on none, no zone of this
-// structure carries the load (not a numerical fault): the resolution_error `refusal`, which zones =
-// "auto" answers with the paper's zone and its failed checks where that zone exists (contact::zones_for);
-// a curve refuses the row (docs/robustness.md).
-tangential_solution first_bracket_zone(const zone_family& family, const std::vector<zone_trial>& trials,
-                                       const zone_newton_from& newton, const char* refusal);
-
 // A search's |Q| solution as the point at Q: general where its stick zone starts inside the contact,
-// the mirror for Q < 0 (apply_load_sign, `what` naming the search), its checks (3.3)-(3.4) by `check`.
+// the mirror for Q < 0 (apply_load_sign, `what` naming the search), its checks (3.3)-(3.4) by `check`
+// (empty: the search made them, in the |Q| frame, whose checks are Q's).
 tangential_solution searched_point(tangential_solution s, double Q, const char* what,
                                    const std::function<traction_checks(const tangential_solution&)>& check);
 

@@ -10,7 +10,7 @@
 // in m (backward where that stays inside [-1, 1]) and -1e-6 in u; else -1e-7 rho in both. Steps halved
 // (damped_newton) to keep -1 < s_1 < c_1 < s_2 < ... < c_k <= 1; it stops after a full step whose size
 // (sum |dm| + rho |du|, or sum |dm| + |d rho|, in r) is below `tolerance`. Empty when it does not
-// converge. Shared by every zone search: zone_solver (both operators), dissimilar_zones.
+// converge. Shared by every zone search: zone_solver (every operator), the five zones.
 #pragma once
 
 #include <functional>
@@ -57,5 +57,31 @@ std::optional<tangential_solution> zone_ends_newton(
     const std::function<tangential_solution(double, double)>& solve_on_zone,
     const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
     int max_iterations, double tolerance);
+
+// The stick zones' systems of a solution, in order from r = -1: one here, two for the five zones
+// (dissimilar_zones.hpp).
+inline std::vector<const tangential_solution*> stick_systems(const tangential_solution& s) { return {&s}; }
+
+// The blend's k stick zones (8(g); 8(j) item 3) at the load Q: F = ((Q(zones) - Q)/f, E(zone_1), ...,
+// E(zone_k), (xi_1 - xi_2)/f, ..., (xi_{k-1} - xi_k)/f) in (m_i, rho_i), absolute (the blend's Q keeps
+// f's scale: its zones do not collapse onto a point). `solve`: the systems on the zones, empty where they
+// fail (the step is halved). k = 1 is the three zones of dissimilar rollers, k = 2 the five zones.
+template <class Solution>
+std::optional<Solution> blend_ends_newton(
+    const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
+    const std::function<double(const tangential_solution&)>& entry, double Q, double f,
+    const std::vector<stick_span>& from, int max_iterations, double tolerance) {
+    std::optional<Solution> last;  // the solve at the last zones, which are the root's
+    const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
+        last = solve(z);
+        if (!last) return std::nullopt;
+        const std::vector<const tangential_solution*> systems = stick_systems(*last);
+        std::vector<double> F{(last->Q - Q) / f};
+        for (const tangential_solution* t : systems) F.push_back(entry(*t));
+        for (std::size_t i = 1; i < systems.size(); ++i) F.push_back((systems[i - 1]->xi - systems[i]->xi) / f);
+        return F;
+    };
+    return at_root(zone_newton(residual, from, {false, max_iterations, tolerance}), last);
+}
 
 }  // namespace roughroll

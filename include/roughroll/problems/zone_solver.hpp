@@ -1,25 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The tangential problem with the zone structure found, not assumed (docs/formulation.md,
-// section 7): one search, generic over the stick-zone operator (stick_zone_operator.hpp: the
-// collocation of (4.4), the Glauert system of the one-parameter limit). The complementarity form
-// of (3.2)-(3.4), for Q >= 0 (Q < 0 is the mirror):
+// sections 7 and 8(g)): one search, generic over the stick-zone operator (stick_zone_operator.hpp: the
+// collocation of (4.4), the Glauert system of the one-parameter limit, the three zones of dissimilar
+// rollers). The complementarity form of (3.2)-(3.4), for Q >= 0 (Q < 0 is the mirror):
 //   stick zone:  v = xi - L1[p1] = 0,          |p1| <= f p                     (3.2), (3.3)
 //   slip zone:   p1 = f p sgn v,               v != 0                          (3.4), (3.15)
 //   int p1 = Q                                                                 (3.13)
 // The structures solved:
 //   - the paper's: stick [-1, c0], slip (c0, 1]: the operator's paper_zone, the fast path;
-//   - slip [-1, s), stick [s, c0], slip (c0, 1], both slip zones in the direction of Q: the
-//     structure when the paper's zone would carry |p1| > f p at its leading end (section
-//     7(c), 7(g)). On the stick zone p1 = f p + q, the operator's equation with the right side
-//     xi + f G(r), rho int q = Q - f, plus its entry condition (psi(-1) = 0 of 7(b), v(s-) = 0 of
-//     7(g)): the traction reaches the bound f p where material enters the stick zone;
+//   - slip [-1, s), stick [s, c0], slip (c0, 1]: the structure when the paper's zone would carry
+//     |p1| > f p at its leading end (section 7(c), 7(g)), and every three-zone structure of dissimilar
+//     rollers (8(g)). On the stick zone the operator's equation, plus its entry condition (psi(-1) = 0
+//     of 7(b), v(s-) = 0 of 7(g)): the traction reaches the bound f p where material enters the stick zone;
 //   - gross sliding |Q| = f (gross_sliding.hpp, 7(d)).
 // (s, c0) solve Q(s, c0) = |Q| and E(s, c0) = 0 along the zones carrying |Q| (zone_family.hpp):
-// the paper's zone first (E <= 0 at s = -1 is the edge inequality), then near gross sliding the
-// operator's model zone, then Newton from a coarse level's zone, then a scan of trial starts and
-// the bracket it ends on. Other structures (slip against Q, several stick zones) are refused
-// (resolution_error), and an answer of the wrong structure fails the checks (zone_checks.hpp);
-// zones = "auto" then keeps the single zone.
+// the paper's zone first where the structure has one (E <= 0 at s = -1 is the edge inequality), then
+// near gross sliding the operator's model zone, then Newton from a coarse level's zone (kept where its
+// checks hold), then a scan of trial starts and its brackets (the method's data). Other structures
+// (several stick zones) are refused (resolution_error), and an answer of the wrong structure fails the
+// checks (zone_checks.hpp); zones = "auto" then keeps the single zone.
 #pragma once
 
 #include <optional>
@@ -50,8 +49,18 @@ public:
     static double entry_coefficient(const tangential_solution& s);
 
 private:
+    // The search's |Q| zone, whether its checks are made (the scan of every bracket makes them) and whether it
+    // is Newton's from the guess (which may be another zone failing the checks: then searched again without).
+    struct found {
+        tangential_solution zone;
+        bool checked, from_guess;
+    };
     // single_end: the paper's zone's c0 at this load, when it was solved (saves one search).
-    tangential_solution general(double magnitude, std::optional<zone_guess> guess, std::optional<double> single_end);
+    found general(double magnitude, std::optional<zone_guess> guess, std::optional<double> single_end);
+    // The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket); `first`:
+    // the first zone solved whose checks fail.
+    std::optional<found> bracketed(const zone_family& zones, const std::vector<zone_trial>& trials, double magnitude,
+                                   std::optional<tangential_solution>& first);
     zone_newton_from newton(double magnitude);  // Newton in the zone ends at |Q| (zone_newton.hpp)
     tangential_solution gross_sliding();
 
