@@ -63,44 +63,64 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
     return t;
 }
 
-// The refusal of a reported point whose coupled zones fail the checks (3.3)-(3.4).
+// The refusal of a reported point whose coupled zones fail the checks (3.3)-(3.4): either the zone structure changes
+// under the coupling (8(e)), or the discrete solution at this n misses them next to a zone end, where the exact
+// slip velocity vanishes like (s - r)^(3/2) and the discrete one keeps a square-root residual of the entry condition
+// whose sign is chance at a given n (free rolling of the pair at n = 32: 8(r)). The checks take no tolerance: the
+// point is refused at this n, and the message says what may answer it.
 resolution_error failed_checks(const tangential_solution& t, double Q, double f) {
     return resolution_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
                             shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
                             "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
-                            "the alternation does not follow; coupling = \"johnson\" answers the load");
+                            "the alternation does not follow, or the discrete zones at this n miss the checks next "
+                            "to a zone end (8(r)); a larger n (--n, or none: the ladder's) may answer it, "
+                            "coupling = \"johnson\" answers the load");
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
 std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s.c0(), s.start2(), s.end2()}; }
 
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
-// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from the stick zone's part q of p1 = sign (f p S + q), q =
-// sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), for three zones of either kind:
-// slip sigma on both sides (S = 1) and the driven three zones (S the blend of 8(g)), whose int p H and W
-// (dissimilar_zones) take p_q^0 (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series'
-// closed form, 8(o)); on the blended zone the blend's own (1 +- t)^(3/2) kinks join q too (8(r)). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
-// to carry); five zones, where carrying both zones' kinks (built and measured, 8(o)) made the second stick
-// zone's start converge at order 1 with a larger constant (changes 6.5e-4, 3.2e-4 from n = 32) at 4.5 times
-// the cost; and rough rollers (the layer terms int p_q^0 K2* in (D1) and int p_q^0 (K2* - K1*) in G, derived
-// in 8(o), not built).
+// p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from a stick zone's part q of p1 = sign (f p S + q), q =
+// sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), one pressure_kinks zone per stick zone:
+// the braked three zones (slip sigma on both sides, S = 1), the driven three zones (S the blend of 8(g)) and five
+// zones (S = -1 + 2 H1 - 2 H2, both stick zones blended: 8(j)), whose int p H and W (dissimilar_zones) take p_q^0
+// (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series' closed form, 8(o)). On a
+// blended zone the blend's own (1 +- t)^(3/2) kinks join q too (8(r)): its part 2 f p (Theta - Theta_3), rising on
+// the first five-zone stick zone (and the driven one), falling on the second, leaves the smoother Theta_3 on the
+// right side; without it the entry converged at order 1 (8(r)). Null elsewhere, where the old right side beta_D p1
+// stays: gross sliding (q = 0, nothing to carry) and rough rollers (the layer terms int p_q^0 K2* in (D1) and
+// int p_q^0 (K2* - K1*) in G, derived in 8(o), not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
                                                bool smooth, const normal_solution& source_normal, double f) {
-    if (!smooth || s.layout.stick_zones() != 1 || !(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0) ||
-        s.psi_b.empty())
-        return nullptr;
+    if (!smooth) return nullptr;
+    // The blend's kinks of the stick zone [start, c0], with the sign of its rise (8(r)).
+    const auto blend_of = [&source_normal, f](double start, double c0, double rise) {
+        const double rho = 0.5 * (c0 - start);
+        return std::function<double(double)>([&source_normal, f, start, rho, rise](double t) {
+            return rise * 2.0 * f * source_normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
+        });
+    };
+    const auto inside = [](const tangential_solution& z) {
+        return z.c0() > z.start() && z.start() > -1.0 && z.c0() < 1.0 && !z.psi_b.empty();
+    };
+    if (s.layout.stick_zones() == 2 && s.five) {
+        const five_zone_solution& v = *s.five;
+        if (!inside(v.zone1) || !inside(v.zone2)) return nullptr;
+        auto k = std::make_shared<pressure_kinks>();
+        k->add_zone(rule, beta_d, v.sign, v.zone1.start(), v.zone1.c0(), v.zone1.psi_b,
+                    blend_of(v.zone1.start(), v.zone1.c0(), 1.0));
+        k->add_zone(rule, beta_d, v.sign, v.zone2.start(), v.zone2.c0(), v.zone2.psi_b,
+                    blend_of(v.zone2.start(), v.zone2.c0(), -1.0));
+        return k;
+    }
+    if (s.layout.stick_zones() != 1 || !inside(s)) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     // The blended zone's right side 2 sign f p Theta (8(g)) has Theta's (1 +- t)^(3/2) kinks, which p's U-series
     // cannot carry and the entry condition weighs by (1 + t)^(-3/2) (order 1 at the entry): its part
     // 2 f p (Theta - Theta_3) joins q here, leaving the smoother blend Theta_3 on the right side (8(r)).
-    std::function<double(double)> blend;
-    if (s.layout.opposite()) {
-        const double start = s.start(), rho = 0.5 * (s.c0() - s.start());
-        blend = [&source_normal, f, start, rho](double t) {
-            return 2.0 * f * source_normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
-        };
-    }
-    k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b, blend);
+    k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b,
+                s.layout.opposite() ? blend_of(s.start(), s.c0(), 1.0) : std::function<double(double)>{});
     return k;
 }
 }  // namespace
