@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The pressure's kinks carried at full coupling beyond the braked three zones (docs/formulation.md 8(l)
 // step 0, 8(o)): the driven three zones (the blended stick zone between opposite slip directions, W's part of p_q^0
-// by Tricomi's identity: 8(o) "W with the kinks") and five zones (both stick zones and blends, 8(r)), besides the braked
-// three zones of test_full_coupling.cpp.
+// by Tricomi's identity: 8(o) "W with the kinks") and five zones (both stick zones and blends, 8(r)), besides the
+// braked three zones of test_full_coupling.cpp.
 //   - int_lo^hi p_q^0 (pressure_kinks::integral, the part of int_c^1 p that the zone search's load and W take)
 //     against GSL's adaptive QAGP of p_q^0 itself, the zone ends as break points: a route that shares only the
 //     definition;
@@ -125,12 +125,10 @@ TEST(FullCouplingKinks, FiveZonesSolveTheProjectedNormalProblem) {
     const std::function<double(double)> coupled = [&](double r) {
         return beta_al_st * c.traction(s, r) - p.kinks->removed(r);
     };
-    EXPECT_NEAR(M_2_PI * p.lambda * p.offset + p.kinks->constant(), -chebyshev_coefficient_by_qagp(coupled, ends, 0, 1e-12),
-                1e-10);
+    const auto projected = [&](int j) { return chebyshev_coefficient_by_qagp(coupled, ends, j, 1e-12); };
+    EXPECT_NEAR(M_2_PI * p.lambda * p.offset + p.kinks->constant(), -projected(0), 1e-10);
     for (int j = 1; j <= n; ++j)
-        EXPECT_NEAR(p.b[j - 1], (j == 1 ? M_2_PI * p.lambda : 0.0) + chebyshev_coefficient_by_qagp(coupled, ends, j, 1e-12),
-                    1e-10)
-            << j;
+        EXPECT_NEAR(p.b[j - 1], (j == 1 ? M_2_PI * p.lambda : 0.0) + projected(j), 1e-10) << j;
 }
 
 // Free rolling's five zones at full coupling: every zone end falls by more than 4 per doubling from n = 64 to 256 (the
