@@ -9,7 +9,8 @@
 //   - the converged driven three zones carry their stick zone's kinks at the point's own ends, the checks holding,
 //     and the pressure solves the projected (D1) with them (QAGP coefficients); five zones likewise with both stick
 //     zones and both blends (8(r)), their ends falling more than 4 times per doubling (the old right side: s2 at
-//     order 1 or worse), free rolling refused at n = 32 (a residual of the entry condition next to s2), held at 48;
+//     order 1 or worse), free rolling refused at n = 32 (a residual of the entry condition next to s2), held at 48,
+//     and answered at f = 0.2, n = 128 (the old program refused it);
 //   - the driven three zones' exit c0, which converged at order 1 without the kinks (changes -7.4e-5, -3.4e-5,
 //     -1.8e-5 per doubling from n = 32), now falls faster than order 1.5 (-1.9e-5, -3.9e-6, -8.8e-7);
 //   - at the driven load the full-coupling estimate (twice the larger of the last two changes, 8(e)) bounds the
@@ -151,6 +152,21 @@ TEST(FullCouplingKinks, FiveZoneEndsConvergeFast) {
         EXPECT_GT(std::fabs(d1), 4.0 * std::fabs(d2)) << i << ": " << d1 << " " << d2;
         EXPECT_LT(std::fabs(d2), 3e-5) << i;
     }
+}
+
+// Free rolling at f = 0.2, n = 128: the old right side refused it ("the coupled zones fail the checks", slip margin
+// -1.1e-7, at the alternation's first step, where without p_q^0 the checks were acted on at once); with both zones'
+// kinks and blends carried the converged five zones hold the checks (slip margin +1.8e-9) and carry an estimate.
+TEST(FullCouplingKinks, FreeRollingAtFrictionTwoTenthsAnswered) {
+    contact c(roughness{}, 0.2, solver_options{128, method::product}, dissimilar{beta_al_st, coupling_level::full});
+    const tangential_solution s = c.point(0.0);
+    ASSERT_EQ(s.layout.stick_zones(), 2);
+    ASSERT_NE(c.normal().kinks, nullptr);
+    EXPECT_TRUE(c.distribution(s).checks.hold());
+    const std::optional<error_estimate> e = c.estimate(s);
+    ASSERT_TRUE(e.has_value());
+    std::printf("f 0.2, n 128: s1 %.10f c1 %.10f s2 %.10f c2 %.10f xi %.12f; estimates %.2g %.2g %.2g\n", s.start(),
+                s.c0(), s.start2(), s.end2(), s.xi, e->start, e->c0, e->xi);
 }
 
 // At n = 32 free rolling's discrete five zones miss (3.4) one grid point before s2 (slip margin -7.2e-9: the
