@@ -199,22 +199,11 @@ double dissimilar_zones::H(double r, double start, double c0) const {
 }
 
 const blended_cauchy* dissimilar_zones::blend_of(double start, double c0) {
-    // The last few zones' W (five zones alternate two; Newton's steps move both), made once per zone.
-    for (const auto& [s, c, w] : blends_)
-        if (s == start && c == c0) return w ? &*w : nullptr;
-    if (blends_.size() == 4) blends_.erase(blends_.begin());
-    blends_.push_back({start, c0, blended_cauchy::make(pressure_b_, start, c0)});
-    const auto& w = std::get<2>(blends_.back());
-    return w ? &*w : nullptr;
+    return blends_(start, c0, [&] { return blended_cauchy::make(pressure_b_, start, c0); });
 }
 
 const kinks_blend* dissimilar_zones::kinks_blend_of(double start, double c0) {
-    for (const auto& [s, c, w] : kinks_blends_)
-        if (s == start && c == c0) return w ? &*w : nullptr;
-    if (kinks_blends_.size() == 4) kinks_blends_.erase(kinks_blends_.begin());
-    kinks_blends_.push_back({start, c0, pressure_kinks_->blend(start, c0)});
-    const auto& w = std::get<2>(kinks_blends_.back());
-    return w ? &*w : nullptr;
+    return kinks_blends_(start, c0, [&] { return pressure_kinks_->blend(start, c0); });
 }
 
 double dissimilar_zones::W(double r, double start, double c0) {

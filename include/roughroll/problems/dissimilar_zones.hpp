@@ -122,6 +122,26 @@ inline zone_layout layout_of(const five_zone_solution& v) {
     return five_zones_layout(v.s1, v.c1, v.s2, v.c2, v.sign > 0.0 ? 1 : -1);
 }
 
+// The last four zones' values of T (W's Cauchy parts of the blended zone, 8(g), 8(o)): five zones alternate
+// two zones and Newton's steps move both, so each is made once per zone. A pointer returned stays valid
+// until the next call; null where `make` gives none (the caller's adaptive quadrature).
+template <class T>
+class zone_memo {
+public:
+    template <class Make>
+    const T* operator()(double start, double c0, const Make& make) {
+        for (const auto& [s, c, value] : entries_)
+            if (s == start && c == c0) return value ? &*value : nullptr;
+        if (entries_.size() == 4) entries_.erase(entries_.begin());
+        entries_.push_back({start, c0, make()});
+        const auto& value = std::get<2>(entries_.back());
+        return value ? &*value : nullptr;
+    }
+
+private:
+    std::vector<std::tuple<double, double, std::optional<T>>> entries_;
+};
+
 class dissimilar_zones {
 public:
     // The tangential solver supplies G, the system (4.4) on any zone with the forcing, the
@@ -204,8 +224,8 @@ private:
     mutable std::optional<u_series_table> pressure_table_;
     std::shared_ptr<const pressure_kinks> pressure_kinks_;  // the normal solution's (null but at full coupling)
     integration_workspace_ptr workspace_;
-    std::vector<std::tuple<double, double, std::optional<blended_cauchy>>> blends_;  // blend_of's last zones
-    std::vector<std::tuple<double, double, std::optional<kinks_blend>>> kinks_blends_;  // kinks_blend_of's
+    zone_memo<blended_cauchy> blends_;    // blend_of's
+    zone_memo<kinks_blend> kinks_blends_;  // kinks_blend_of's
     std::shared_ptr<const five_zone_solution> tractions_of_;  // traction's memo of a five-zone solution's p1
     std::unordered_map<double, double> tractions_;
 };
