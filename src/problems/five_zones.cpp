@@ -3,8 +3,9 @@
 // slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling, of a driven roller 1
 // below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two
 // stick zones, each with its own collocation system (tangential_solver::solve_on_zone) whose right
-// side carries the other zone's L1[q] (block Gauss-Seidel), and Newton (damped_newton) in the four
-// ends; continuations in the load and in beta_D/f (8(h)) where no start is found directly.
+// side carries the other zone's L1[q] (block Gauss-Seidel), and the zone search's Newton in the four
+// ends (blend_ends_newton, zone_newton.hpp); continuations in the load and in beta_D/f (8(h)) where no
+// start is found directly.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,7 +27,6 @@ constexpr int max_sweeps = 200;  // block Gauss-Seidel sweeps of one system
 // gave up: the failures "from f = 0.05's ends at f = 0.049" and from nearby loads (8(j) 4a).
 constexpr double sweep_tolerance = 1e-15;
 constexpr double sweep_rounding = 4.0 * std::numeric_limits<double>::epsilon();
-constexpr int newton_iterations = 40;
 }  // namespace
 
 double dissimilar_zones::S(const five_zone_solution& s, double r) const {
@@ -97,20 +97,18 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends, double beta) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
-    std::optional<five_zone_solution> last;
-    const auto residual = [&](const std::vector<stick_span>& x) -> std::optional<std::vector<double>> {
-        try {
-            last = five_zone_system(x[0].start, x[0].end, x[1].start, x[1].end, beta);
-        } catch (const numerical_error&) {
-            return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
-        }
-        return std::vector<double>{(last->Q - Q) / f_, zone_solver::entry_coefficient(last->zone1),
-                                   zone_solver::entry_coefficient(last->zone2), (last->zone1.xi - last->zone2.xi) / f_};
-    };
-    // In (m1, rho1, m2, rho2) (zone_newton): -1 < s1 < c1 < s2 < c2 <= 1.
-    auto s = at_root(zone_newton(residual, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}},
-                                 {false, newton_iterations, zone_end_resolution}),
-                     last);
+    // The zone search's Newton in the blend's stick zones (blend_ends_newton, k = 2): the load's gap, both entry
+    // conditions psi_k(-1) = 0 and xi1 = xi2, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
+    auto s = blend_ends_newton<five_zone_solution>(
+        [&](const std::vector<stick_span>& z) -> std::optional<five_zone_solution> {
+            try {
+                return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, beta);
+            } catch (const numerical_error&) {
+                return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
+            }
+        },
+        zone_solver::entry_coefficient, Q, f_, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}},
+        zone_newton_iterations, zone_end_resolution);
     if (s) s->checks = check(*s);
     return s;
 }

@@ -19,7 +19,6 @@
 namespace roughroll {
 
 namespace {
-constexpr int newton_iterations = 40;
 // Below this 1 - |Q|/f the search starts from the operator's model zone near gross sliding (7(e), 7(g)).
 constexpr double near_sliding = 1e-4;
 }  // namespace
@@ -44,13 +43,14 @@ zone_newton_from zone_solver::newton(double magnitude) {
         // zones of 8(g), whose load keeps f's scale): F = ((Q - |Q|)/f, E) in (m, rho) (blend_ends_newton).
         // Empty when it does not converge: the caller falls back to Brent.
         if (op_.method.relative_load)
-            return zone_ends_newton(op_.solve, op_.newton_entry, op_.f - magnitude, start, end, newton_iterations,
+            return zone_ends_newton(op_.solve, op_.newton_entry, op_.f - magnitude, start, end, zone_newton_iterations,
                                     op_.method.newton_tolerance);
         return blend_ends_newton<tangential_solution>(
             [this](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
                 return op_.solve(z[0].start, z[0].end);
             },
-            op_.newton_entry, magnitude, op_.f, {{start, end, 0.0}}, newton_iterations, op_.method.newton_tolerance);
+            op_.newton_entry, magnitude, op_.f, {{start, end, 0.0}}, zone_newton_iterations,
+            op_.method.newton_tolerance);
     };
 }
 

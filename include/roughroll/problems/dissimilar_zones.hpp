@@ -113,6 +113,11 @@ struct five_zone_solution {
     int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
 };
 
+// Their stick zones' systems, for the zone search's Newton (blend_ends_newton, zone_newton.hpp).
+inline std::vector<const tangential_solution*> stick_systems(const five_zone_solution& s) {
+    return {&s.zone1, &s.zone2};
+}
+
 // The five zones as a point of contact (contact::point): start, c0 the first stick zone [s1, c1],
 // start2, end2 the second [s2, c2], Q, xi, the checks, the layout (layout_of) and the solution itself
 // (`five`), through which dissimilar_zones::traction and slip_velocity answer for all five zones.

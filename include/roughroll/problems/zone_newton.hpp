@@ -21,6 +21,9 @@
 
 namespace roughroll {
 
+// Newton's iterations in every zone search (zone_solver, the five zones).
+constexpr int zone_newton_iterations = 40;
+
 // One stick zone of a Newton iterate: its ends and half-length (exp u with log_length, not (c - s)/2).
 struct stick_span {
     double start, end, rho;
