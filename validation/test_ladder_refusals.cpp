@@ -174,19 +174,16 @@ full_run run_full(double Q_over_f, std::optional<double> tol, const std::vector<
 }
 }  // namespace
 
-// Driven, Q/f = +0.75 (five zones), tolerance 1e-6: rung 128's stick start changes by about 1e-4 per
-// level, so no rung up to 1000 can reach 1e-6 of the leading slip zone (0.13): refused after rung 128,
-// naming what to change. The old program climbed on (rung 256 solved).
-TEST(LadderRefusals, FullCouplingRefusedWhereNoRungCanMeetTheTolerance) {
+// Driven, Q/f = +0.75 (five zones), tolerance 1e-6. Before the five zones carried their kinks (8(r)),
+// rung 128's stick start changed by about 1e-4 per level at order 1, and rule (b) of 8(q) refused the
+// point after rung 128. With the kinks carried the ends converge at order 2 to 4.5, where a tenth of the
+// order-1 prediction is no longer a certain lower bound at rung 1000 (m/n = 7.8): no rung is excluded by
+// (b), so the ladder climbs (stopped here at rung 256) instead of claiming that no larger n can answer.
+TEST(LadderRefusals, FullCouplingWithTheKinksCarriedHasNoOrderOneLaw) {
     const full_run r = run_full(0.75, 1e-6, {256, 512, 1000});
-    EXPECT_EQ(r.solved, std::vector<int>{128});
-    EXPECT_EQ(r.stopped_at, 0);
-    EXPECT_NE(r.refusal.find("no n up to 1000 meets the tolerance 1e-06"), std::string::npos) << r.refusal;
-    EXPECT_NE(r.refusal.find("no larger n can meet it"), std::string::npos) << r.refusal;
-    EXPECT_NE(r.refusal.find("coupling = \"johnson\""), std::string::npos) << r.refusal;
-    EXPECT_NE(r.refusal.find("--tolerance"), std::string::npos) << r.refusal;
-    EXPECT_EQ(r.refusal.find('\n'), std::string::npos) << r.refusal;
-    EXPECT_EQ(r.refusal.find("::"), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.solved, (std::vector<int>{128, 256}));
+    EXPECT_EQ(r.stopped_at, 256);
+    EXPECT_TRUE(r.refusal.empty()) << r.refusal;
 }
 
 // The same point at 5e-5: rung 256's change from 128 (6.7e-6 of s, 0.13 long) puts rung 512's estimate

@@ -108,14 +108,16 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
     // (a) The next rung, when it doubles n (levels n/2, n, 2n), has an estimate of at least twice
     // |x_n - x_{n/2}| (less both levels' noise), exactly; it fails the tolerance where that exceeds it
     // by more than the scale's own move to that rung (at most half its estimate: tol/2 relative) and 1 %.
-    // (b) Where a zone end converges at order 1 (five zones; the driven three zones' entry, also with
-    // the kinks carried, 8(o)), rung m's estimate is at least twice its change from m/4 to m/2,
-    // 4 C/m with C/n the order-1 constant of rung i: a tenth of it is certain (an end converging at
-    // order 2, the driven exit, stays above that tenth for m/n <= 20: 8(q)).
+    // (b) Where a zone end converges at order 1 (five zones and the driven three zones' entry while the
+    // pressure's kinks are not carried: rough rollers, 8(o)), rung m's estimate is at least twice its
+    // change from m/4 to m/2, 4 C/m with C/n the order-1 constant of rung i: a tenth of it is certain
+    // (8(q)). With the kinks and the blends' kinks carried (smooth rollers, 8(r)) the ends converge at
+    // order 2 to 4.5, where that tenth is certain only while (m/n)^(p-1) <= 5 2^p (m/n <= 6.3 at
+    // order 3, 3.9 at 4.5; the ladder's largest is 7.8): no order-1 law there, only (a).
     outlook o;
     const coupled_changes& changes = *a.estimate->changes;
     const int n = rungs_[i];
-    const bool order_one = a.solution.layout.stick_zones() == 2 || a.solution.layout.opposite();
+    const bool order_one = !c.normal().kinks && (a.solution.layout.stick_zones() == 2 || a.solution.layout.opposite());
     for (std::size_t j = i + 1; j < rungs_.size(); ++j) {
         const int m = rungs_[j];
         std::optional<tolerance_check> certain;
@@ -171,7 +173,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 const tolerance_check& next = o.at_least.front();
                 beyond_all =
                     "no larger n can meet it (full coupling's estimate is twice the larger of the last two "
-                    "level changes and its zone ends converge at order 1: at n = " +
+                    "level changes, and where the pressure's kinks are not carried its zone ends converge at "
+                    "order 1: at n = " +
                     std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " + significant(next.relative, 3) +
                     " relative; docs/formulation.md 8(q))";
             } else if (o.fails.front() && (i + 2 == rungs_.size() || rungs_[i + 2] != 2 * rungs_[i + 1])) {
