@@ -396,14 +396,18 @@ stick_zone_operator dissimilar_zones::zone_operator(bool opposite, double b, dou
     refusal << "dissimilar rollers at |Q|/f = " << magnitude / f_
             << ": no three zones carry the load at n = " << solver_.normal().rule.n
             << "; another n may find them (docs/formulation.md 8(g), 8(j))";
+    op.method.name = "dissimilar zones";
+    op.method.refusal = refusal.str();
     // The starts clustered towards both edges (Chebyshev), where thin leading slip zones put the start, all
-    // scanned; each bracket in turn from the leading edge, the first zone whose checks hold the answer;
-    // Newton's residuals absolute, its steps down to the entry's rounding (zone_end_resolution).
-    // name, refusal; trial starts, clustered, to r*; every bracket; ends chained; the edge zone; Newton's
-    // residuals relative, its tolerance
-    op.method = {"dissimilar zones",
-                 refusal.str(),
-                 start_scan, true, false, true, false, edge_zone::absent, false, zone_end_resolution};
+    // scanned; each bracket in turn from the leading edge, the first zone whose checks hold the answer; no zone
+    // from the leading edge; Newton's residuals absolute, its steps down to the entry's rounding
+    // (zone_end_resolution).
+    op.method.scan = start_scan;
+    op.method.clustered = true;
+    op.method.every_bracket = true;
+    op.method.edge = edge_zone::absent;
+    op.method.relative_load = false;
+    op.method.newton_tolerance = zone_end_resolution;
     return op;
 }
 

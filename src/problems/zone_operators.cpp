@@ -136,13 +136,12 @@ stick_zone_operator tangential_solver::zone_operator() {
     op.near_sliding = [this](double magnitude, double point, const zone_newton_from&) {
         return continuation(*this, magnitude, point);
     };
-    // name, refusal; trial starts, clustered, to r*; every bracket; ends chained; the edge zone; Newton's
-    // residuals relative, its tolerance
-    op.method = {"zone solver",
-                 "general zone search: no stick zone between two slip zones carries this load (the entry "
-                 "condition psi(-1) = 0 has no root on the scanned starts): its zones have another structure; "
-                 "zones = \"auto\" reports the paper's single zone with its checks",
-                 32, false, false, false, false, edge_zone::needed, true, collocation_tolerance};
+    op.method.name = "zone solver";
+    op.method.refusal =
+        "general zone search: no stick zone between two slip zones carries this load (the entry condition psi(-1) "
+        "= 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" reports the "
+        "paper's single zone with its checks";
+    op.method.newton_tolerance = collocation_tolerance;
     return op;
 }
 
@@ -191,13 +190,18 @@ stick_zone_operator one_parameter_solver::zone_operator() {
         if (const auto zone = brush_zone(*this, magnitude, point)) return newton(zone->first, zone->second);
         return std::nullopt;
     };
-    // In [-1, r*]: the zone straddles r* and collapses onto it at gross sliding; without the paper's
-    // zone (its system singular near gross sliding) the scan decides. The fields as the collocation's.
-    op.method = {"one-parameter zone search",
-                 "one-parameter zone search: no stick zone between two slip zones carries this load (the entry "
-                 "condition v(s-) = 0 has no root on the scanned starts): its zones have another structure; "
-                 "zones = \"auto\" reports the paper's single zone with its checks where it exists",
-                 16, false, true, false, true, edge_zone::tried, true, 1e-12};
+    op.method.name = "one-parameter zone search";
+    op.method.refusal =
+        "one-parameter zone search: no stick zone between two slip zones carries this load (the entry condition "
+        "v(s-) = 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" reports "
+        "the paper's single zone with its checks where it exists";
+    // Starts in [-1, r*] (the zone straddles r* and collapses onto it at gross sliding), each end searched near the
+    // last; the paper's zone opens the scan where its system is solved (singular near gross sliding: the scan decides).
+    op.method.scan = 16;
+    op.method.scan_to_least_point = true;
+    op.method.chained_ends = true;
+    op.method.edge = edge_zone::tried;
+    op.method.newton_tolerance = 1e-12;
     return op;
 }
 

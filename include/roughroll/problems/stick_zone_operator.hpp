@@ -33,26 +33,27 @@ namespace roughroll {
 // (not of this structure: dissimilar rollers, 8(g)).
 enum class edge_zone { needed, tried, absent };
 
-// How the search goes beyond the operator, per method.
+// How the search goes beyond the operator, per method: each operator names the fields it sets; the defaults
+// are the collocation's plain search.
 struct zone_search_method {
-    const char* name;     // the search, in messages
-    std::string refusal;  // no zone of the structure carries the load on the scanned starts (resolution_error)
+    const char* name = "";  // the search, in messages
+    std::string refusal;    // no zone of the structure carries the load on the scanned starts (resolution_error)
     // Trial starts: -1 + (top + 1) k/scan < 1, k = 1..scan, top = r* (scan_to_least_point) or 1; or
     // (`clustered`) towards both edges, where thin slip zones put the start, -cos(pi k/scan), k < scan.
-    int scan;
-    bool clustered;
-    bool scan_to_least_point;
+    int scan = 32;
+    bool clustered = false;
+    bool scan_to_least_point = false;
     // How the scan answers (zone_family.hpp): false: the starts up to the first sign change of the entry
     // condition, its bracket's zone; true: every start, each bracket in order, the first zone whose checks
     // (3.3)-(3.4) hold, else the first solved; where no bracket gives a zone, starts 1e-12, 1e-11, ... from
     // the leading edge before the first trial (a thin leading slip zone near gross sliding, 8(g)).
-    bool every_bracket;
-    bool chained_ends;  // each zone's end searched first near the last one found (stick_zone_end)
-    edge_zone edge;
+    bool every_bracket = false;
+    bool chained_ends = false;  // each zone's end searched first near the last one found (stick_zone_end)
+    edge_zone edge = edge_zone::needed;
     // Newton's residuals (zone_newton.hpp): relative, (log(-rho int q/(f - |Q|)), newton_entry) in
     // (m, log rho) (7(e), 7(g)); else absolute, ((Q - |Q|)/f, newton_entry) in (m, rho) (8(g), 8(j)).
-    bool relative_load;
-    double newton_tolerance;  // Newton's last full step in the zone ends, absolute in r
+    bool relative_load = true;
+    double newton_tolerance = 0.0;  // Newton's last full step in the zone ends, absolute in r
 };
 
 struct stick_zone_operator {
