@@ -59,7 +59,9 @@ const char* zone_path(const tangential_solution& s) { return to_string(s.layout.
 nlohmann::json layers_json(const tangential_solution& s) {
     if (!s.layout.layers_neglected()) return nullptr;
     const neglected_layers l = no_slip_layers(s.forcing, s.f);
-    return {{"neglected", true}, {"thickness_bound", l.thickness}, {"crossing", l.crossing}, {"xi_bound", l.xi_bound}};
+    return {{"neglected", true},           {"thickness_bound", l.thickness}, {"crossing", l.crossing},
+            {"xi_shift", l.xi_shift},      {"xi_bound", l.xi_bound},         {"leading", l.leading},
+            {"trailing", l.trailing}};
 }
 
 std::string term_text(const roughness_term& t) {
@@ -197,8 +199,10 @@ void write_summary(std::ostream& out, const point_report& r) {
         const neglected_layers l = no_slip_layers(s.forcing, s.f);
         const double exponent = M_PI * s.f / std::fabs(s.forcing);  // t = 4/(1 + exp(pi f/|beta_d|))
         out << "  edge layers         neglected: each thinner than " << shortest(l.thickness) << " (about 4 exp(-"
-            << shortest(exponent) << "), where |p1| of no slip exceeds f p); xi moved by them at most "
-            << shortest(l.xi_bound) << " (docs/formulation.md 8(n))\n";
+            << shortest(exponent) << "), where |p1| of no slip exceeds f p); xi with their first-order shift "
+            << shortest(l.xi_shift) << ", within " << shortest(l.xi_bound)
+            << " of the model's; the trailing slip zone is the trailing layer (slip, stick, reversed slip, not "
+               "resolved) (docs/formulation.md 8(n))\n";
     }
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)

@@ -17,15 +17,16 @@ namespace roughroll {
 
 namespace {
 // Free rolling of smooth dissimilar rollers at Johnson's level (docs/formulation.md 8(n)): the largest
-// relative estimate of the layers-neglected point, as the ladder compares them: the bound of the layers'
-// effect on xi relative to the no-slip creep, and the layers' thickness bound t for both zone ends
-// (relative to the half-width); none for any other pair or level.
+// relative estimate of the layers-neglected point, as the ladder compares them: the bound of its xi
+// relative to the no-slip creep, and the bounds of the main stick zone's ends (relative to the
+// half-width); none for any other pair or level.
 std::optional<double> layers_relative_bound(const dissimilar& materials, const roughness& surfaces, double f) {
     if (materials.beta_d == 0.0 || materials.coupling == coupling_level::full || !kernel::normal(surfaces).empty() ||
         !kernel::tangential(surfaces).empty())
         return std::nullopt;
     const neglected_layers layers = no_slip_layers(materials.beta_d, f);
-    return std::max(layers.xi_bound / std::fabs(no_slip_creep(materials.beta_d)), layers.thickness);
+    return std::max({layers.xi_bound / std::fabs(no_slip_creep(materials.beta_d)), layers.leading_bound,
+                     layers.trailing_bound});
 }
 }  // namespace
 
@@ -223,11 +224,12 @@ std::string layers_tolerance_advice(double relative, double beta_d, double f) {
     const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
     const std::string up = significant(std::ceil(relative / unit) * unit, 2);
     const neglected_layers layers = no_slip_layers(beta_d, f);
-    const bool ends = layers.thickness * std::fabs(no_slip_creep(beta_d)) > layers.xi_bound;
+    const bool ends =
+        std::max(layers.leading_bound, layers.trailing_bound) * std::fabs(no_slip_creep(beta_d)) > layers.xi_bound;
     return std::string("a tolerance of ") + up +
            " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge layers "
            "neglected (docs/formulation.md 8(n)" +
-           (ends ? ": the creep within a smaller one, the zone ends within the layers' thickness" : "") + ")";
+           (ends ? ": the creep within a smaller one, the zone ends set it" : "") + ")";
 }
 
 // The relative change of the five zones' leading layer 1 + s1 between levels n/2 and n, bounded below

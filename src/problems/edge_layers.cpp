@@ -3,6 +3,7 @@
 #include "roughroll/problems/edge_layers.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <vector>
 
@@ -14,26 +15,48 @@
 namespace roughroll {
 
 namespace {
+// 8(n), "The layers' positions": the leading layer's entry condition on the scale t_c makes
+// Phi(t_a) = t_a (log(t_c/t_a) + 2 log 2 - 1) stationary, t_a = e^(2 log 2 - 2) t_c = (4/e^2) t_c.
+const double leading_ratio = 4.0 * std::exp(-2.0);
+// Its correction, measured 0.1246 t_c^2 to 0.1253 t_c^2 for t_c from 2.8e-3 to 2.5e-2 (the five zones
+// continued in f, n = 500): twice that is the bound, up to the largest t_c measured; below it the
+// derivation's leading order only gains.
+constexpr double leading_correction = 0.25;
+// The trailing layer (slip, stick, reversed slip: not derived), measured 0.8796 to 0.8865 t_c for t_c
+// from 8e-5 to 2.5e-2 (the five zones continued in f, n = 500 and 720; 8(n)): 0.883 t_c within 0.01 t_c
+// there (2.5 times the spread), and outside the measured range only the premise t = 2 t_c.
+constexpr double trailing_ratio = 0.883;
+constexpr double trailing_spread = 0.01;
+constexpr double trailing_measured_from = 8e-5;
+constexpr double laws_measured_to = 0.026;
+
 // 8(n), "Sharper: the leading layer": the five zones' leading layer [-1, -1 + t_a] is one slip zone
 // (8(j) 4a), where d = p1 - p1_ns = (2/pi)(b/pi) sqrt(x(2 - x)) [log(t_c/x) + eps(x)], x = 1 + r,
 // |eps| <= -log(1 - t/2), is known; the load identity int_out d W = 0 (W = |r - m|/sqrt(|r - a||r - b|),
 // from int p1 = int p1_ns = 0 and the bounded inverse on the main stick zone (a, b)) puts the trailing
 // layer's part of xi - xi_ns equal to the leading one's up to t/h of it, so
-//   |xi - xi_ns| <= (b/pi^2) [2 sup|Phi| + 2 t eps + 2 (kappa - 1)(sup Psi + t eps)] + t B/(2 (1 - t)),
+//   |xi - xi_ns + (2 b/pi^2) Phi(t_a)| <= R = (b/pi^2) [2 t eps + 2 (kappa - 1)(sup Psi + t eps)] + t B/(2 (1 - t)),
 // Phi(t_a) = t_a (log(t_c/t_a) + 2 log 2 - 1) over 0 < t_a <= t, Psi its bound of the |log| integral,
 // kappa = sqrt((2 - t)/(2 - 2t)) (1 + t/(2 (1 - t))) the weights' spread, B the pointwise bound (8(n)).
-double leading_layer_bound(double b, double crossing, double t, double pointwise) {
-    if (!(t > 0.0 && crossing > 0.0)) return 0.0;
+struct leading_layer {
+    double phi_max;    // Phi's maximum over 0 < t_a <= t
+    double phi_min;    // its minimum there (at t_a = t, or 0)
+    double remainder;  // R
+};
+
+double phi(double crossing, double ta) { return ta * (std::log(crossing / ta) + 2.0 * M_LN2 - 1.0); }
+
+leading_layer leading_layer_terms(double b, double crossing, double t, double pointwise) {
     const double c = 2.0 * M_LN2 - 1.0;
-    const auto phi = [&](double ta) { return ta * (std::log(crossing / ta) + c); };
-    const double stationary = crossing * std::exp(c - 1.0);  // Phi's maximum, e^(c-1) t_c, at t_a = e^(c-1) t_c
-    const double phi_max = t >= stationary ? stationary : phi(t);
-    const double phi_sup = std::max(phi_max, -phi(t));  // Phi falls past its maximum: |Phi| largest at an end
+    const double stationary = leading_ratio * crossing;  // Phi's maximum, e^(c-1) t_c, at t_a = e^(c-1) t_c
+    const double phi_max = t >= stationary ? stationary : phi(crossing, t);
+    const double phi_min = std::min(0.0, phi(crossing, t));  // Phi falls past its maximum: least at an end
     const double psi_sup = std::max(phi_max, t * (std::fabs(std::log(t / crossing)) + c));
     const double eps = -std::log1p(-0.5 * t);
     const double kappa = std::sqrt((2.0 - t) / (2.0 - 2.0 * t)) * (1.0 + t / (2.0 * (1.0 - t)));
-    return b / (M_PI * M_PI) * (2.0 * phi_sup + 2.0 * t * eps + 2.0 * (kappa - 1.0) * (psi_sup + t * eps)) +
-           t * pointwise / (2.0 * (1.0 - t));
+    const double remainder = b / (M_PI * M_PI) * (2.0 * t * eps + 2.0 * (kappa - 1.0) * (psi_sup + t * eps)) +
+                             t * pointwise / (2.0 * (1.0 - t));
+    return {phi_max, phi_min, remainder};
 }
 }  // namespace
 
@@ -42,19 +65,49 @@ neglected_layers no_slip_layers(double beta_d, double f) {
     // |p1|/(f p) = (b/(pi f)) log((1 - r)/(1 + r)) = 1 at 1 + r = 2/(1 + e^(pi f/b)) (8(g)).
     const double crossing = 2.0 / (1.0 + std::exp(M_PI * f / b));
     const double t = 2.0 * crossing;
+    // Only for thin layers (t < 1/2); thicker ones are no layers: no bound.
+    if (!(t < 0.5)) return {crossing, t, 0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, 0.0, HUGE_VAL, 0.0, HUGE_VAL};
+    if (!(t > 0.0)) return {};  // t_c below the smallest double: the no-slip solution, exactly
     // 8(n): per layer (1/pi) int |p1_model - p1|/sqrt(|eta - a||eta - b|), with |p1| <= (2b/pi^2)
     // sqrt(2x) log(2/x) and f p <= (2f/pi) sqrt(2x) at x = 1 + r < t, and |eta - b| >= 2 - 2t; the
     // integrals t (pi/2)(log(2/t) + 2 log 2 - 1) and t pi/2 of sqrt(x) log(2/x) and sqrt(x) against
     // 1/sqrt(t - x). Both layers: twice.
-    // Only for thin layers (t < 1/2); thicker ones are no layers: no bound.
-    if (!(t < 0.5)) return {crossing, t, HUGE_VAL, HUGE_VAL};
-    double pointwise = 0.0;
-    if (t > 0.0)
-        pointwise = t / std::sqrt(1.0 - t) *
-                    (2.0 * b / (M_PI * M_PI) * (std::log(2.0 / t) + 2.0 * M_LN2 - 1.0) + 2.0 * f / M_PI);
-    // Both are bounds; the leading layer's is the sharper one for thin layers (8(n)).
-    const double bound = std::min(pointwise, leading_layer_bound(b, crossing, t, pointwise));
-    return {crossing, t, bound, pointwise};
+    const double pointwise =
+        t / std::sqrt(1.0 - t) * (2.0 * b / (M_PI * M_PI) * (std::log(2.0 / t) + 2.0 * M_LN2 - 1.0) + 2.0 * f / M_PI);
+    const leading_layer lead = leading_layer_terms(b, crossing, t, pointwise);
+    const double weight = 2.0 * b / (M_PI * M_PI);
+    // The ends (8(n), "The layers' positions"): the leading one derived, the trailing one measured;
+    // outside the laws' range each within the premise t of the edge. The reported -1 + leading and
+    // 1 - trailing round by at most the layer itself or an ulp of 1.
+    const bool laws = crossing <= laws_measured_to;
+    const double leading = leading_ratio * crossing, trailing = trailing_ratio * crossing;
+    const double rounding = std::min(crossing, DBL_EPSILON);
+    const double leading_bound =
+        (laws ? leading_correction * crossing * crossing : std::max(leading, t - leading)) + rounding;
+    const double trailing_bound =
+        (laws && crossing >= trailing_measured_from ? trailing_spread * crossing : std::max(trailing, t - trailing)) +
+        rounding;
+    // The creep with the leading layer's first-order effect, -(2 beta_D/pi^2) Phi(t_a) at t_a = leading
+    // (Phi's maximum, = leading). Within R of it for the model's own t_a; Phi is concave (Phi'' = -1/t_a),
+    // so t_a within e of its maximiser moves it by at most e^2/(2 (leading - e)); where the leading law
+    // is not measured, by Phi's whole range over 0 < t_a <= t.
+    const double shift = -std::copysign(weight, beta_d) * leading;
+    const double phi_spread = laws && leading_bound < leading
+                                  ? leading_bound * leading_bound / (2.0 * (leading - leading_bound))
+                                  : lead.phi_max - lead.phi_min;
+    const double identity = lead.remainder + weight * phi_spread;
+    // The sharper bound of |xi_model - xi_ns| (B or B1), from xi_ns + shift: its distance added.
+    const double sharp = std::min(pointwise, weight * std::max(lead.phi_max, -lead.phi_min) + lead.remainder);
+    return {crossing,
+            t,
+            shift,
+            std::min(identity, sharp + std::fabs(shift)),
+            pointwise,
+            sharp,
+            leading,
+            leading_bound,
+            trailing,
+            trailing_bound};
 }
 
 double no_slip_traction(double beta_d, double r) {
@@ -67,10 +120,16 @@ double no_slip_creep(double beta_d) { return -4.0 * beta_d / (M_PI * M_PI); }
 
 tangential_solution dissimilar_zones::layers_neglected_point() {
     const neglected_layers layers = no_slip_layers(beta_d_, f_);
-    tangential_solution s = zone_solution(f_, -1.0, 1.0, no_slip_creep(beta_d_), 0.0);
+    // The main stick zone [s1, c1] where the model has it (8(n)), its creep to first order in t_c; the
+    // layers beyond it reported as the model's slip zones next to the main one (the leading layer is
+    // that one slip zone; the trailing one holds slip, a stick zone and reversed slip, not resolved).
+    const double s1 = -1.0 + layers.leading, c1 = 1.0 - layers.trailing;
+    tangential_solution s = zone_solution(f_, s1, c1, no_slip_creep(beta_d_) + layers.xi_shift, 0.0);
     s.forcing = beta_d_;  // the frame's sign is 1: beta_D itself (8(h) is built into the closed form)
-    s.layout = layers_neglected_layout();  // stick on [-1, 1], the route no-slip
-    // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)); no slip zone.
+    s.layout = opposite_zones(s1, c1, beta_d_ > 0.0 ? 1 : -1);
+    s.layout.route = zone_route::layers_neglected;
+    // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)); the layers'
+    // traction is neglected, so no slip zone is checked.
     const double t = std::min(layers.thickness, 0.5);
     const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};
     s.checks = check_zones(

@@ -26,13 +26,13 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
         const neglected_layers layers = no_slip_layers(materials_.beta_d, f_);
         const double lambda = normal().lambda;
         return error_estimate{rounding_floor(nodes(), lambda),
-                              layers.thickness,
+                              layers.trailing_bound,
                               layers.xi_bound + 4.0 * DBL_EPSILON * std::fabs(s.xi),
                               0.0,
                               "the model with its edge layers: their bound (no levels; the no-slip solution in closed "
                               "form, formulation 8(n))",
                               false,
-                              layers.thickness};
+                              layers.leading_bound};
     }
     // The levels' differences measure how a solution of the discrete equations moves with n; where
     // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.

@@ -6,26 +6,35 @@
 //   p1(r) = -(2 beta_D/pi^2) sqrt(1 - r^2) log((1 - r)/(1 + r)),   xi = -4 beta_D/pi^2,
 // with |p1|/(f p) = (|beta_D|/(pi f)) |log((1 - r)/(1 + r))| above 1 only in the layers
 //   t_c = 2/(1 + exp(pi f/|beta_D|))   (about 2 exp(-pi f/|beta_D|))
-// at each edge, where the model slips (8(g)). The layers are neglected, and the creep of the model
-// (the five zones, 8(j) 4a) lies within
-//   |xi_model - xi| <= B(t) = t/sqrt(1 - t) [ (2|beta_D|/pi^2)(log(2/t) + 2 log 2 - 1) + 2 f/pi ],
-// t = 2 t_c the bound of either layer's thickness (the solved layers are 0.5 to 0.9 t_c thick, 8(n)):
-// the Hilbert problem of p1_model - p1 on the main stick zone, whose solvability fixes the change of
-// xi by the layers' traction, |p1_model - p1| <= |p1| + f p there. Sharper (8(n), "the leading
-// layer"): the leading layer is one slip zone, where p1_model - p1 is known, and the load identity
-// makes the trailing layer's part equal to the leading one's, so
-//   |xi_model - xi| <= B1(t) ~ (2|beta_D|/pi^2) max(e^(2 log 2 - 2) t_c, -Phi(t)) + O(t^2 log(1/t)),
-// within a factor 1.2 to 2.2 of the distance measured (8(n)); the smaller of the two is used.
-// The checks (3.3)-(3.4) hold on [-1 + t, 1 - t]. P_H/P2 is Johnson's (not moved by the tangential traction).
+// at each edge, where the model slips (8(g)). The layers' traction is neglected; the point reports
+// the model's main stick zone [s1, c1] and its creep to first order in t_c (8(n), "The layers'
+// positions"):
+//   1 + s1 = (4/e^2) t_c   (derived: the leading layer's entry condition, an inner problem on the
+//                           scale t_c),
+//   1 - c1 = 0.883 t_c     (measured: the five zones continued in f at n = 500 and 720),
+//   xi = -4 beta_D/pi^2 - (2 beta_D/pi^2) Phi(1 + s1) = -4 beta_D/pi^2 - (8 beta_D/(pi^2 e^2)) t_c
+//        (the load identity of 8(n), exact up to the remainder R of the leading layer's bound B1).
+// Each within its bound below; where a law is not measured the bound falls back to the layers'
+// thickness bound t = 2 t_c (the solved layers are 0.54 and 0.88 t_c thick, 8(n)).
+// The bounds of neglecting the layers (8(n)): the pointwise B(t) = t/sqrt(1 - t) [(2|beta_D|/pi^2)
+// (log(2/t) + 2 log 2 - 1) + 2 f/pi] and the leading layer's B1 ~ 0.124 |beta_D| t_c on
+// |xi_model + 4 beta_D/pi^2|. The checks (3.3)-(3.4) hold on [-1 + t, 1 - t]. P_H/P2 is Johnson's
+// (not moved by the tangential traction).
 #pragma once
 
 namespace roughroll {
 
 struct neglected_layers {
-    double crossing;   // t_c: where |p1| of the no-slip solution reaches f p, from each edge
-    double thickness;  // t = 2 t_c: the bound of either layer's thickness used in the bound below
-    double xi_bound;   // min(B, B1): the bound of |xi_model - xi| from neglecting both layers
-    double pointwise;  // B(t): the first bound alone (|p1_model - p1| <= |p1| + f p in both layers)
+    double crossing;        // t_c: where |p1| of the no-slip solution reaches f p, from each edge
+    double thickness;       // t = 2 t_c: the bound of either layer's thickness (the premise of every bound)
+    double xi_shift;        // the reported xi minus the no-slip creep: -(2 beta_D/pi^2) Phi((4/e^2) t_c)
+    double xi_bound;        // the bound of |xi_model - (no-slip creep + xi_shift)|
+    double pointwise;       // B(t): the first bound of |xi_model - no-slip creep| alone (8(n))
+    double sharp;           // min(B, B1): the sharper bound of |xi_model - no-slip creep| (8(n), the leading layer)
+    double leading;         // 1 + s1 reported: (4/e^2) t_c
+    double leading_bound;   // the bound of |1 + s1_model - leading|
+    double trailing;        // 1 - c1 reported: 0.883 t_c
+    double trailing_bound;  // the bound of |1 - c1_model - trailing|
 };
 
 // The layers of the no-slip solution at Dundurs' beta_d != 0 and friction f > 0.
