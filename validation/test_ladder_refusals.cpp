@@ -67,7 +67,7 @@ double layers_relative(double f) {
     return std::max({l.xi_bound / std::fabs(no_slip_creep(beta_al_st)), l.leading_bound, l.trailing_bound});
 }
 // Below the layers' route's estimates from f = 0.31 to 0.47 (their trailing end's 0.01 t_c = 1.08e-6 at
-// f = 0.45, the premise's 1.117 t_c from 0.4625 on, 8(n)): since the layers' positions the default
+// f = 0.45, the premise's 1.117 t_c beyond 0.4625, 8(n)): since the layers' positions the default
 // tolerance is met by that route there, so the rule is tested at this one.
 constexpr double fine = 5e-7;
 }  // namespace
