@@ -115,19 +115,19 @@ TEST(FreeRollingEveryF, HalfFrictionAnsweredWithTheLayersNeglected) {
     }
 }
 
-// f = 0.45 below the layers' route's estimates (its trailing end's bound 0.01 t_c = 1.08e-6 of the
+// f = 0.45 below the layers' route's estimates (its trailing end's bound 0.011 t_c = 1.19e-6 of the
 // half-width): a tolerance of 5e-7 is refused at once, naming the tolerance that answers; that tolerance
 // answers with the layers neglected. (Before the layers' positions, f = 0.45 was refused at the default
 // tolerance, 1e-4, naming 0.00022: the ends were known only within t = 2 t_c of the edges.)
 TEST(FreeRollingEveryF, RefusalSaysWhatToChange) {
     const run_result refused = run_point(0.45, "--tolerance 5e-7", false);
     EXPECT_NE(refused.status, 0);
-    const std::string advice = "a tolerance of 1.1e-06 or more";
+    const std::string advice = "a tolerance of 1.2e-06 or more";
     EXPECT_NE(refused.text.find(advice), std::string::npos) << refused.text;
     EXPECT_NE(refused.text.find("--tolerance"), std::string::npos);
     EXPECT_NE(refused.text.find("zone ends"), std::string::npos) << refused.text;
     EXPECT_EQ(refused.text.find("::"), std::string::npos) << "no function name: " << refused.text;
-    const run_result r = run_point(0.45, "--tolerance 1.1e-6");
+    const run_result r = run_point(0.45, "--tolerance 1.2e-6");
     ASSERT_EQ(r.status, 0) << r.text;
     EXPECT_TRUE(r.out["checks_hold"].get<bool>());
     EXPECT_TRUE(r.out.contains("edge_layers"));
@@ -153,7 +153,7 @@ TEST(FreeRollingEveryF, GapAnsweredWithTheLayersPositions) {
         // The main stick zone where the layers end: slip against beta_D before it, with it after.
         const double tc = crossing_of(f);
         EXPECT_NEAR(1.0 + j["stick_start"].get<double>(), leading_of(f), 1e-12 * tc) << f;
-        EXPECT_NEAR(1.0 - j["c0"].get<double>(), 0.883 * tc, 1e-12 * tc) << f;
+        EXPECT_NEAR(1.0 - j["c0"].get<double>(), 0.889 * tc, 1e-12 * tc) << f;
         ASSERT_EQ(j["zones"].size(), 3u) << f;
         EXPECT_EQ(j["zones"][0]["direction"].get<int>(), -1) << f;
         EXPECT_EQ(j["zones"][2]["direction"].get<int>(), 1) << f;
@@ -167,7 +167,7 @@ TEST(FreeRollingEveryF, GapAnsweredWithTheLayersPositions) {
 // of it (measured 0.77 to 0.875: the bound is sharp), where the pointwise bound B was 27 to 72 times
 // the distance. The layers' route's reported values (8(n), "The layers' positions") lie within their
 // estimates of the continued root: the creep with its first-order shift (distances 1.8e-11 to 5e-8,
-// 0.001 to 0.02 of the estimate), the trailing end 0.883 t_c (0.2 to 0.3 of its estimate 0.01 t_c),
+// 0.001 to 0.02 of the estimate), the trailing end 0.889 t_c (0.27 to 0.7 of its estimate 0.011 t_c),
 // and the leading end (4/e^2) t_c within 0.25 t_c^2 where n = 500 resolves it (f <= 0.4: 0.4 to 0.5
 // of the estimate; beyond, n = 500's own error exceeds it: the law is checked there at n = 720 in 8(n)). The five zones' own error is far below the distances (1.7e-6 to 4.5e-5): n = 500 and
 // n = 1000, continued alike, agree in xi to 4e-14 up to f = 0.4 (measured; at 0.425 the continuation at

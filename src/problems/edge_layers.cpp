@@ -22,12 +22,12 @@ const double leading_ratio = 4.0 * std::exp(-2.0);
 // continued in f, n = 500): twice that is the bound, up to the largest t_c measured; below it the
 // derivation's leading order only gains.
 constexpr double leading_correction = 0.25;
-// The trailing layer (slip, stick, reversed slip: not derived), measured 0.8796 to 0.8863 t_c for t_c
-// from 8.2e-5 to 2.5e-2 (the five zones continued in f, n = 500 and 720; 8(n)): 0.883 t_c within 0.01 t_c
-// there (three times the largest deviation, 0.0034), and outside the measured range only the premise t = 2 t_c.
-constexpr double trailing_ratio = 0.883;
-constexpr double trailing_spread = 0.01;
-constexpr double trailing_measured_from = 8.2e-5;
+// The trailing layer (slip, stick, reversed slip): its inner problem on the scale t_c keeps L = log(2/t_c)
+// and gives 1 - c1 from 0.8734 t_c (L = 4.4) rising to 0.8992 t_c (L -> infinity; 8(n), solved with
+// QUADPACK), plus 0.27 t_c^2 (measured); the five zones continued in f give 0.8796 to 0.8863 t_c for t_c
+// from 8.2e-5 to 2.5e-2: 0.889 t_c within 0.011 t_c for every t_c up to the largest measured.
+constexpr double trailing_ratio = 0.889;
+constexpr double trailing_spread = 0.011;
 constexpr double laws_measured_to = 0.026;
 
 // 8(n), "Sharper: the leading layer": the five zones' leading layer [-1, -1 + t_a] is one slip zone
@@ -76,7 +76,7 @@ neglected_layers no_slip_layers(double beta_d, double f) {
         t / std::sqrt(1.0 - t) * (2.0 * b / (M_PI * M_PI) * (std::log(2.0 / t) + 2.0 * M_LN2 - 1.0) + 2.0 * f / M_PI);
     const leading_layer lead = leading_layer_terms(b, crossing, t, pointwise);
     const double weight = 2.0 * b / (M_PI * M_PI);
-    // The ends (8(n), "The layers' positions"): the leading one derived, the trailing one measured;
+    // The ends (8(n), "The layers' positions"): both from their inner problems (the trailing one's range);
     // outside the laws' range each within the premise t of the edge. The reported -1 + leading and
     // 1 - trailing round by at most the layer itself or an ulp of 1.
     const bool laws = crossing <= laws_measured_to;
@@ -85,8 +85,7 @@ neglected_layers no_slip_layers(double beta_d, double f) {
     const double leading_bound =
         (laws ? leading_correction * crossing * crossing : std::max(leading, t - leading)) + rounding;
     const double trailing_bound =
-        (laws && crossing >= trailing_measured_from ? trailing_spread * crossing : std::max(trailing, t - trailing)) +
-        rounding;
+        (laws ? trailing_spread * crossing : std::max(trailing, t - trailing)) + rounding;
     // The creep with the leading layer's first-order effect, -(2 beta_D/pi^2) Phi(t_a) at t_a = leading
     // (Phi's maximum, = leading). Within R of it for the model's own t_a; Phi is concave (Phi'' = -1/t_a),
     // so t_a within e of its maximiser moves it by at most e^2/(2 (leading - e)); where the leading law
