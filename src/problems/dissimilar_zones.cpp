@@ -486,42 +486,34 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
                                               "not three"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
-    tangential_solution s;
-    if (magnitude == f_) {
-        s = gross_sliding(b);
-    } else {
-        // The structure the hint names first (the coarser level's, when extrapolating), then the
-        // other one: both slip zones in the direction of Q, or the leading one against it. The first
-        // whose checks hold is the answer; else one that fails them, for the caller to refuse.
-        // A structure with no zone is a resolution_error; a numerical fault (a GSL status, a singular
-        // system) of either search is kept and, where neither structure answers, rethrown as the fault.
-        std::optional<tangential_solution> found, failed;
-        std::optional<numerical_error> fault;
-        for (const bool blend : {opposite, !opposite}) {
-            try {
-                tangential_solution t = zone_solver(zone_operator(blend, b, magnitude)).solve(magnitude, false, guess);
-                if (t.checks.hold()) {
-                    found = t;
-                    break;
-                }
-                if (!failed) failed = t;
-            } catch (const resolution_error&) {
-            } catch (const numerical_error& e) {
-                if (!fault) fault = e;
+    // The structure the hint names first (the coarser level's, when extrapolating), then the other one: both slip
+    // zones in the direction of Q, or the leading one against it (at |Q| = f both are the zone search's gross
+    // sliding). The first whose checks hold is the answer; else one that fails them, for the caller to refuse.
+    // A structure with no zone is a resolution_error; a numerical fault (a GSL status, a singular system) of
+    // either search is kept and, where neither structure answers, rethrown as the fault.
+    std::optional<tangential_solution> found, failed;
+    std::optional<numerical_error> fault;
+    for (const bool blend : {opposite, !opposite}) {
+        try {
+            tangential_solution t = zone_solver(zone_operator(blend, b, magnitude)).solve(magnitude, false, guess);
+            if (t.checks.hold()) {
+                found = t;
+                break;
             }
+            if (!failed) failed = t;
+        } catch (const resolution_error&) {
+        } catch (const numerical_error& e) {
+            if (!fault) fault = e;
         }
-        if (!found && !failed && fault) throw *fault;
-        if (!found && !failed)
-            throw resolution_error(
-                no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
-        s = found ? *found : *failed;
     }
-    s.layout.route = zone_route::general;
+    if (!found && !failed && fault) throw *fault;
+    if (!found && !failed)
+        throw resolution_error(no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
+    tangential_solution s = found ? *found : *failed;
+    s.layout.route = zone_route::general;  // gross sliding's too, where r* = -1 (the paper's edge form)
     // The checks of the |Q| problem (the zone search made them) are those of Q: the mirror of 8(h) changes
     // the signs of p1 and v together.
-    const bool checked = magnitude != f_;
     apply_load_sign(s, Q, "dissimilar zones");
-    if (!checked) s.checks = check(s);
     return s;
 }
 
