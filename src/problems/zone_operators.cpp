@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,15 @@ namespace {
 // coefficients of the collocation solution), which moves the root by a few 1e-12; below 1e-11 the
 // steps are that noise (measured), and Brent's 1e-15 is no closer.
 constexpr double collocation_tolerance = 1e-11;
+
+// The refusal where the scan of starts ends on no bracket of the entry condition (zone_solver::general).
+std::string no_zone_between_slips(const char* search, const char* entry, const char* single_exists) {
+    return std::string(search) + ": no stick zone between two slip zones carries this load (the entry condition " +
+           entry +
+           " = 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" "
+           "reports the paper's single zone with its checks" +
+           single_exists;
+}
 
 std::optional<tangential_solution> continuation(tangential_solver& single, double magnitude, double point) {
     // Near gross sliding the stick zone [s, c] is short around r*, the interior point where G is
@@ -137,10 +147,7 @@ stick_zone_operator tangential_solver::zone_operator() {
         return continuation(*this, magnitude, point);
     };
     op.method.name = "zone solver";
-    op.method.refusal =
-        "general zone search: no stick zone between two slip zones carries this load (the entry condition psi(-1) "
-        "= 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" reports the "
-        "paper's single zone with its checks";
+    op.method.refusal = no_zone_between_slips("general zone search", "psi(-1)", "");
     op.method.newton_tolerance = collocation_tolerance;
     return op;
 }
@@ -191,10 +198,7 @@ stick_zone_operator one_parameter_solver::zone_operator() {
         return std::nullopt;
     };
     op.method.name = "one-parameter zone search";
-    op.method.refusal =
-        "one-parameter zone search: no stick zone between two slip zones carries this load (the entry condition "
-        "v(s-) = 0 has no root on the scanned starts): its zones have another structure; zones = \"auto\" reports "
-        "the paper's single zone with its checks where it exists";
+    op.method.refusal = no_zone_between_slips("one-parameter zone search", "v(s-)", " where it exists");
     // Starts in [-1, r*] (the zone straddles r* and collapses onto it at gross sliding), each end searched near the
     // last; the paper's zone opens the scan where its system is solved (singular near gross sliding: the scan decides).
     op.method.scan = 16;
