@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Gauss-Chebyshev rule (4.6)-(4.7) and the U-series tools built on it.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/numerics/cauchy_u_table.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "tolerance.hpp"
@@ -104,6 +106,115 @@ TEST(USeries, ExactTrailingZerosChangeNoBit) {
         EXPECT_EQ(out[i], u_series(short_b, x[i]));
     }
     EXPECT_EQ(u_series(std::vector<double>(5, 0.0), 0.4), 0.0);
+}
+
+namespace {
+// cauchy_u_series in long double from the double x: the reference the table and the series are held to.
+long double cauchy_reference(const std::vector<double>& b, double x) {
+    long double sum = 0.0L;
+    const long double X = x;
+    if (std::fabs(x) < 1.0) {
+        long double t_prev = 1.0L, t = X;
+        for (double bj : b) {
+            sum += bj * t;
+            const long double next = 2.0L * X * t - t_prev;
+            t_prev = t;
+            t = next;
+        }
+    } else {
+        const long double z = 1.0L / (X + std::copysign(std::sqrt(X * X - 1.0L), X));  // no cancellation at large |x|
+        long double zp = z;
+        for (double bj : b) {
+            sum += bj * zp;
+            zp *= z;
+        }
+    }
+    return -sum;
+}
+}  // namespace
+
+TEST(CauchyUTable, AgreesWithTheSeriesWithinItsBound) {
+    // The tabulated c(x) = cauchy_u_series(b, x) (p_q^0's factor at full coupling) against the series summed in
+    // long double, for coefficients like a stick zone's g (falling algebraically, alternating) and n from just above
+    // a panel's 25 terms to 1000, at points uniform in phi inside, uniform in w = acosh |x| outside on both sides,
+    // beyond the outer panels, and next to x = +-1 on both sides. The table may differ by its bound (at most eps B)
+    // and the rounding of an acos or acosh, a 25-term Clenshaw and the conditioning of c at x (|c'(x)| eps |x|,
+    // measured here by a difference); a panel misplaced, a side swapped or a bound too small shows as far more.
+    for (int n : {26, 64, 128, 300, 1000}) {
+        std::vector<double> b(n);
+        double l1 = 0.0;
+        for (int j = 0; j < n; ++j) {
+            b[j] = (j % 2 == 0 ? 0.4 : -0.7) / std::pow(1.0 + j, 1.5) + 1e-5 * std::cos(3.0 * j);
+            l1 += std::fabs(b[j]);
+        }
+        const cauchy_u_table table(b);
+        EXPECT_LE(table.error_bound(), GSL_DBL_EPSILON * l1) << "n = " << n;
+        std::vector<double> x;
+        for (int i = 1; i < 2000; ++i) x.push_back(std::cos(M_PI * i / 2000.0 + 1e-4 * std::sin(7.0 * i)));
+        for (int i = 0; i <= 2000; ++i) {
+            const double w = 4.0 * i / 2000.0 + 1e-4 * std::sin(5.0 * i);
+            x.insert(x.end(), {std::cosh(w), -std::cosh(w)});
+        }
+        for (double d : {1e-3, 1e-8, 1e-13, 1e-16}) x.insert(x.end(), {1.0 - d, -1.0 + d, 1.0 + 2.0 * d, -1.0 - 2.0 * d});
+        x.insert(x.end(), {1.0, -1.0, 30.0, -1e3, 1e8});
+        double worst = 0.0;
+        for (const double xi : x) {
+            const long double ref = cauchy_reference(b, xi);
+            const double step = 64.0 * GSL_DBL_EPSILON * std::fabs(xi);
+            const double x_up = std::fabs(xi) < 1.0 && xi + step >= 1.0 ? xi - step : xi + step;
+            const double slope = std::fabs(static_cast<double>((cauchy_reference(b, x_up) - ref) / (x_up - xi)));
+            const double allowed = table.error_bound() + 32.0 * GSL_DBL_EPSILON * (l1 + slope * std::fabs(xi));
+            const double error = std::fabs(static_cast<double>(table(xi) - ref));
+            EXPECT_LE(error, allowed) << "n = " << n << ", x = " << xi;
+            worst = std::max(worst, error / allowed);
+        }
+        EXPECT_GT(worst, 0.0);
+        EXPECT_GT(table.inner_panels(), 0);
+        EXPECT_GT(table.outer_panels(), 0);
+    }
+    EXPECT_THROW(cauchy_u_table(std::vector<double>{}), numerical_error);
+    EXPECT_THROW(cauchy_u_table(std::vector<double>{1.0, NAN}), numerical_error);
+}
+
+TEST(CauchyUTable, OuterBoundHoldsOnCoarsePanels) {
+    // outer_bound against the measured error of the outer panels where it is far above rounding: the table's
+    // construction cannot be made coarse, so the panels' interpolant is rebuilt here from the same nodes, for a
+    // series with all |b_j| equal (the largest c for its B). A bound without the growth e^(n (x - h)) fails here.
+    const int n = 128;
+    std::vector<double> b(n);
+    double l1 = 0.0;
+    for (int j = 0; j < n; ++j) {
+        b[j] = j % 3 == 1 ? -1.0 : 1.0;
+        l1 += 1.0;
+    }
+    const auto c = [&b](double w) {
+        const double z = std::exp(-w);
+        double zp = z, sum = 0.0;
+        for (double bj : b) {
+            sum += bj * zp;
+            zp *= z;
+        }
+        return -sum;
+    };
+    const std::vector<double> to_c = theta_panels::values_to_coefficients();
+    const int size = theta_panels::degree + 1;
+    for (double length : {0.35, 0.25, 0.18}) {
+        const double bound = cauchy_u_table::outer_bound(n, length) * l1;
+        double worst = 0.0;
+        std::vector<double> coefficients(size);
+        for (int k = 0; k < size; ++k) {
+            coefficients[k] = 0.0;
+            for (int i = 0; i < size; ++i) coefficients[k] += to_c[k * size + i] * c(0.5 * length * (theta_panels::lobatto(i) + 1.0));
+        }
+        for (int i = 0; i <= 1000; ++i) {
+            const double s = -1.0 + 2.0 * i / 1000.0;
+            double value = 0.0;
+            for (int k = 0; k < size; ++k) value += coefficients[k] * std::cos(k * std::acos(s));
+            worst = std::max(worst, std::fabs(value - c(0.5 * length * (s + 1.0))));
+        }
+        EXPECT_LE(worst, bound + n * GSL_DBL_EPSILON * l1) << "panel length " << length;
+        EXPECT_GT(worst, 1e-30);
+    }
 }
 
 TEST(HertzSolution, IsOneTermExactly) {

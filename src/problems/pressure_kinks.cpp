@@ -24,7 +24,7 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
         throw numerical_error(
             "full coupling: a stick zone of the pressure's kinks is not inside the contact "
             "(docs/formulation.md 8(l))");
-    zone z{start, 0.5 * (c0 - start), beta_d * sign, {}};
+    zone z{start, 0.5 * (c0 - start), beta_d * sign, {}, nullptr};
     if (legendre_nodes_.empty()) {
         const gauss_legendre legendre(2 * rule.n + 32);
         legendre_nodes_ = legendre.nodes;
@@ -42,6 +42,7 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
         zeroth += rule.weights[i] * g[i];
     }
     z.b = u_coefficients(rule, g);
+    z.cauchy = std::make_shared<const cauchy_u_table>(z.b);
     load_ += z.amplitude * z.rho * first;
     constant_ += z.amplitude * z.rho * zeroth * M_1_PI;
     zones_.push_back(std::move(z));
@@ -49,7 +50,7 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
 
 double pressure_kinks::factor(double r) const {
     double h = 0.0;  // H[q/sqrt(1 - r^2)]: the zone variable's Cauchy integral (d eta/(eta - r) = d tau/(tau - t))
-    for (const zone& z : zones_) h += z.amplitude * cauchy_u_series(z.b, (r - z.start) / z.rho - 1.0);
+    for (const zone& z : zones_) h += z.amplitude * (*z.cauchy)((r - z.start) / z.rho - 1.0);
     return h;
 }
 
@@ -127,7 +128,7 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
             if (!w1) return std::nullopt;
             values[i] = u_series(z.b, rule.nodes[i]) * *w1;
         }
-        k.parts_.push_back({z.start, z.rho, z.amplitude, z.b, u_coefficients(rule, values)});
+        k.parts_.push_back({z.start, z.rho, z.amplitude, z.b, u_coefficients(rule, values), z.cauchy});
     }
     return k;
 }
@@ -141,7 +142,7 @@ std::optional<double> kinks_blend::operator()(double r, double blend) const {
         const double t = (r - z.start) / z.rho - 1.0;
         const double inside =
             std::fabs(t) < 1.0 && blend != 0.0 ? root * blend * std::sqrt((1.0 - t) * (1.0 + t)) * u_series(z.g, t) : 0.0;
-        sum += z.amplitude * (*w1 * cauchy_u_series(z.g, t) - inside - cauchy_u_series(z.gw, t));
+        sum += z.amplitude * (*w1 * (*z.cauchy)(t) - inside - cauchy_u_series(z.gw, t));
     }
     return sum;
 }

@@ -19,10 +19,12 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "roughroll/numerics/blended_cauchy.hpp"
+#include "roughroll/numerics/cauchy_u_table.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
@@ -58,6 +60,9 @@ private:
     struct zone {
         double start, rho, amplitude;  // amplitude = beta_D sign
         std::vector<double> b;         // U coefficients of g(t) = psi(t)/sqrt(1 - r(t)^2)
+        // H[g] = cauchy_u_series(b, t) tabulated (cauchy_u_table.hpp): p_q^0 is read by every quadrature of W and
+        // int p H, and a value from the table costs an acos or acosh and 25 terms instead of n (within eps sum |b|).
+        std::shared_ptr<const cauchy_u_table> cauchy;
     };
     std::vector<zone> zones_;
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
@@ -84,7 +89,8 @@ private:
     explicit kinks_blend(blended_cauchy unit) : unit_(std::move(unit)) {}
     struct part {
         double start, rho, amplitude;
-        std::vector<double> g, gw;  // U coefficients of g and of g W_1 on the kink zone
+        std::vector<double> g, gw;                   // U coefficients of g and of g W_1 on the kink zone
+        std::shared_ptr<const cauchy_u_table> cauchy;  // H[g], the zone's table
     };
     blended_cauchy unit_;  // W_1
     std::vector<part> parts_;
