@@ -105,8 +105,20 @@ tangential_solution tangential_solver::solve_zone(double start, double c0, doubl
     for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
     const std::vector<double> g = G(r);
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
-    if (forcing != 0.0)  // Dundurs' term of (D2), docs/formulation.md 8(e): xi + sigma beta_D p + f G
-        for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + forcing * normal_.pressure(r[m]));
+    if (forcing != 0.0) {  // Dundurs' term of (D2), docs/formulation.md 8(e): xi + sigma beta_D p + f G
+        // p = normal_solution::pressure at the n + 1 points, bit for bit, its U-series summed for all at once (the
+        // batched Clenshaw of quadrature.hpp): at full coupling every zone solve of Newton's steps takes it.
+        std::vector<double> phi(r.size());
+        u_series(normal_.b, r.data(), phi.data(), r.size());
+        for (int m = 0; m <= n_; ++m) {
+            double p = 0.0;  // (4.1), + p_q^0 with the kinks (8(l) step 0)
+            if (std::fabs(r[m]) < 1.0) {
+                p = phi[m] * std::sqrt(1.0 - r[m] * r[m]);
+                if (normal_.kinks) p += (*normal_.kinks)(r[m]);
+            }
+            gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + forcing * p);
+        }
+    }
     if (extra)
         for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + (*extra)[m]);
     std::ostringstream context;
