@@ -14,7 +14,7 @@
 namespace roughroll {
 
 namespace {
-std::string at_load(double Q, double f) { return "full coupling at Q/f = " + shortest(Q / f) + ": "; }
+std::string coupling_at_load(double Q, double f) { return "full coupling at Q/f = " + shortest(Q / f) + ": "; }
 }  // namespace
 
 // One step k of the alternation: p^(k) (solving (D1) with beta_D p1^(k-1)), its solver and zones
@@ -51,7 +51,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
     if (previous.layout.stick_zones() == 2) {
         const auto v = z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()});
         if (!v)
-            throw resolution_error(at_load(Q, f) +
+            throw resolution_error(coupling_at_load(Q, f) +
                                    "Newton finds no five zones from the previous iterate's ends "
                                    "(the zone structure changes under the coupling; docs/formulation.md 8(e)), "
                                    "which the alternation does not follow; coupling = \"johnson\" answers the load");
@@ -69,7 +69,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
 // whose sign is chance at a given n (free rolling of the pair at n = 32: 8(r)). The checks take no tolerance: the
 // point is refused at this n, and the message says what may answer it.
 resolution_error failed_checks(const tangential_solution& t, double Q, double f) {
-    return resolution_error(at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
+    return resolution_error(coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
                             shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
                             "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
                             "the alternation does not follow, or the discrete zones at this n miss the checks next "
@@ -187,7 +187,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         }
         if (!(std::isfinite(value_change) && std::isfinite(end_change)) && lagging) throw *lagging;
         if (!(std::isfinite(value_change) && std::isfinite(end_change)))
-            throw numerical_error(at_load(Q, f_) + "the alternation gives a non-finite value at step " +
+            throw numerical_error(coupling_at_load(Q, f_) + "the alternation gives a non-finite value at step " +
                                   std::to_string(k));
         summary_.changes.push_back(value_change);
         if (k > 2 && previous_change > 0.0)
@@ -222,7 +222,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             if (lagging) throw *lagging;
             std::ostringstream msg;
             msg.precision(3);
-            msg << at_load(Q, f_) << "the alternation does not contract (changes " << summary_.changes[k - 3] << ", "
+            msg << coupling_at_load(Q, f_) << "the alternation does not contract (changes " << summary_.changes[k - 3] << ", "
                 << previous_change << ", " << value_change << "; docs/formulation.md 8(e))";
             throw numerical_error(msg.str());
         }
@@ -231,7 +231,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     if (lagging) throw *lagging;
     std::ostringstream msg;
     msg.precision(3);
-    msg << at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations
+    msg << coupling_at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations
         << " steps (last change " << previous_change << "; docs/formulation.md 8(e))";
     throw numerical_error(msg.str());
 }
