@@ -16,6 +16,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 #include "test_zones_low_order.hpp"
 #include "../tests/tolerance.hpp"

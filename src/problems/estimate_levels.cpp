@@ -43,17 +43,16 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
 }
 
 std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
-    if (reported_ && s.layout.general() && !dissimilar_) {
+    if (reported_ && s.layout.general() && model_->structure() == estimate_structure::paper) {
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
-        if (!last_coarse_ || last_coarse_->Q != s.Q)
-            last_coarse_ = companion_->general_point(s.Q, zone_guess{s.start(), s.c0()});
+        const tangential_solution coarse = companion_->model_->like(s, options_.how, nodes());
         // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
         // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
         const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
-        return error_estimate{std::fabs(reported_->lambda - normal_->lambda) + floor.lambda,
-                              std::fabs(s.c0() - last_coarse_->c0()) + floor.c0,
-                              std::fabs(s.xi - last_coarse_->xi) + floor.xi,
+        return error_estimate{std::fabs(reported_->lambda - normal_level().lambda) + floor.lambda,
+                              std::fabs(s.c0() - coarse.c0()) + floor.c0,
+                              std::fabs(s.xi - coarse.xi) + floor.xi,
                               0.0,
                               "n/2 (general zone search: level n, not extrapolated)",
                               false};
@@ -124,43 +123,15 @@ void contact::make_finer(int m) {
 tangential_solution contact::structure_level(contact& level, const tangential_solution& s,
                                              const tangential_solution& own, bool swept) {
     if (swept) return level.level_at_stick_end(own.c0(), false, sweeping_near_);
-    // A point of the general path is compared with the general path's answers at the levels.
-    if (!dissimilar_)
-        return s.layout.general() ? level.general_point(s.Q, zone_guess{s.start(), s.c0()}) : level.level_point(s.Q, false);
-    if (coupled_) {
-        // Full coupling (8(e)): the level's own alternation from its own Johnson's point (a Johnson's
-        // point against a coupled n would measure the coupling, not the discretisation). A level that
-        // cannot be coupled leaves no honest estimate (the point itself was).
-        try {
-            return level.coupled_level_point(s.Q, level.johnson_level_point(s.Q, s), false);
-        } catch (const numerical_error& why) {
-            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::full_coupling) +
-                                   "level " + std::to_string(level.nodes()) + ": " + why.what());
-        }
-    }
-    if (s.layout.stick_zones() == 2) {
-        // Five zones (8(j)): the level from this level's ends (Newton), else its own search.
-        const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
-        const five_zone_solution* v = level.five_level_point(last_five_load_, &ends);
-        if (v == nullptr)
-            throw resolution_error(no_honest_estimate(options_.how, nodes(), estimate_structure::dissimilar) +
-                                   "level " + std::to_string(level.nodes()) +
-                                   " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
-                                   (nodes() < max_nodes
-                                        ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
-                                        : "n is at its largest, so the load is beyond the method's reach"));
-        return five_zone_point(*v);
-    }
-    return level.dissimilar_level_point(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
+    return level.model_->like(s, options_.how, nodes());
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
                                       const std::array<tangential_solution, 3>& at, bool swept) {
     int self = 0;
     while (levels_[self] != nullptr) ++self;
-    const estimate_structure structure = !dissimilar_ ? estimate_structure::paper
-                                         : coupled_   ? estimate_structure::full_coupling
-                                                      : estimate_structure::dissimilar;
+    const estimate_structure structure = model_->structure();
+    const bool paper = structure == estimate_structure::paper;
     const double lambda = normal().lambda, strength = kernel_strength();
     const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
     const rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
@@ -169,7 +140,7 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
     using q = estimated_quantity;
     using est = error_estimate;
     std::vector<q> table;
-    if (!dissimilar_) {
+    if (paper) {
         const bool x = reported_ != nullptr;  // Richardson's values, all three
         table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda, x, true, &est::lambda},
                  {"xi", value_xi, floor.xi, floor.xi, x, true, &est::xi},
@@ -181,7 +152,8 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
         // level n's at full coupling: contact::normal), with no second chance.
         table = {
-            {"P_H/P2", nullptr, floor.lambda, floor.lambda, reported_ != nullptr && !coupled_, false, &est::lambda},
+            {"P_H/P2", nullptr, floor.lambda, floor.lambda,
+             reported_ != nullptr && structure != estimate_structure::full_coupling, false, &est::lambda},
             {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
             {"c0", value_c0, ends, finer_ends, false, true, &est::c0},
             {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start}};
@@ -208,15 +180,15 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         } catch (const resolution_error&) {
             return std::nullopt;
         } catch (const numerical_error&) {
-            if (!s.layout.general() && !dissimilar_) throw;
+            if (!s.layout.general() && paper) throw;
             return std::nullopt;
         } catch (const error&) {
-            if (!dissimilar_) throw;
+            if (paper) throw;
             return std::nullopt;
         }
     };
     const estimate_point point{
-        options_.how,       nodes(),           self, structure, reported_ != nullptr && !dissimilar_, own.checks.hold(),
+        options_.how,       nodes(),           self, structure, reported_ != nullptr && paper, own.checks.hold(),
         swept ? "c0" : "Q", swept ? s.c0() : s.Q};
     return estimate_from_levels(table, levels, finer, point);
 }

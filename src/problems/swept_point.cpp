@@ -12,13 +12,6 @@
 
 namespace roughroll {
 
-tangential_solution contact::level_at_stick_end(double c0, bool checked, bool near) {
-    // A sweep's consecutive c0 give nearby systems: refined on the previous factorisation
-    // (dense_system::solve_near, docs/formulation.md "Swept points refined on the previous
-    // factorisation"), the same solution to rounding.
-    return limit_ ? limit_->at_stick_end(c0, checked) : tangential_->at_stick_end(c0, checked, near);
-}
-
 void check_sweepable(const dissimilar& materials) {
     if (materials.beta_d != 0.0)
         throw input_error(

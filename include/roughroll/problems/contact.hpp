@@ -17,9 +17,11 @@
 // (one_parameter_solver, docs/formulation.md "The one-parameter limit"): same solutions,
 // same conventions, no two-parameter tangential solver.
 //
-// The members are defined by idea: the points and their zone structures in contact.cpp, the error
-// estimate's levels and table in estimate_levels.cpp (its rule: point_estimate.hpp), the points of a
-// curve swept in c0 in swept_point.cpp.
+// The model of the points (the paper's, its one-parameter limit, dissimilar rollers at Johnson's
+// level or at full coupling) is chosen once (point_model.hpp: paper_model.cpp, dissimilar_model.cpp);
+// the contact keeps the levels around it: Richardson's lambda in contact.cpp, the error estimate's
+// levels and table in estimate_levels.cpp (its rule: point_estimate.hpp), the points of a curve
+// swept in c0 in swept_point.cpp.
 #pragma once
 
 #include <memory>
@@ -33,14 +35,11 @@
 #include "roughroll/model/carter.hpp"
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/point_model.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
-#include "roughroll/problems/dissimilar_zones.hpp"
-#include "roughroll/problems/full_coupling.hpp"
-#include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
 
@@ -120,105 +119,50 @@ public:
     std::vector<distribution_row> distributions(const tangential_solution& d, const std::vector<double>& grid);
 
 private:
-    // The solution at c0 of this contact's own level (no extrapolation, no estimate).
-    // near: refined on the last factorisation (dense_system::solve_near) while sweeping_near_.
-    tangential_solution level_at_stick_end(double c0, bool checked, bool near);
+    // The solution at c0 of this contact's own level (no extrapolation, no estimate). A sweep's
+    // consecutive c0 give nearby systems: `near` refines on the last factorisation while sweeping_near_
+    // (dense_system::solve_near, docs/formulation.md "Swept points refined on the previous
+    // factorisation"), the same solution to rounding.
+    tangential_solution level_at_stick_end(double c0, bool checked, bool near) {
+        return model_->at_stick_end(c0, checked, near);
+    }
     swept_point swept_at(double c0);  // at_stick_end's point, by the route sweeping_near_ picks
     // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
     // Q +- error) outside [0, f] at an inner c0.
     void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
-    // The point at Q of this contact's own level: cached, so that the levels of an estimate
-    // and the coarse level of an extrapolation are solved once per Q.
-    // `checked`: with the checks (3.3)-(3.4) (a point reported), or without (a level of an
-    // extrapolation or an estimate).
-    // `guess`: a c0 near the root (the level below's), where the root search starts.
-    const tangential_solution& level_point(double Q, bool checked, std::optional<double> guess = std::nullopt,
-                                           std::optional<double> slope = std::nullopt);
     // estimate() before its check of s's inequalities: the levels' estimate, or its refusal.
     std::optional<error_estimate> levels_estimate(const tangential_solution& s);
     int nodes() const { return options_.nodes(); }
-    const normal_solution& normal_level() const;  // this level's own (lambda not extrapolated)
-    method level_method() const;                  // product for extrapolated, else the method itself
-    bool build_levels();                          // the two other levels of the estimate; false when none fit
-    double kernel_strength() const;               // the larger kernel's sum |T|, for the rounding floors
-    kernel widest_kernel() const;                 // one term at either kernel's largest rate: the resolution both need
+    const normal_solution& normal_level() const { return model_->normal(); }  // lambda not extrapolated
+    method level_method() const;  // product for extrapolated, else the method itself
+    bool build_levels();          // the two other levels of the estimate; false when none fit
+    std::vector<point_model*> models_below();  // the models of the estimate's levels below this one
+    double kernel_strength() const;            // the larger kernel's sum |T|, for the rounding floors
+    kernel widest_kernel() const;  // one term at either kernel's largest rate: the resolution both need
     // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
     // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
                                  const std::array<tangential_solution, 3>& at_levels, bool swept);
     // The solution of `level` (an estimate level, or level 2n) on the structure of s: at own's c0
-    // for a curve swept in c0, else at s's load on s's zone path (the paper's single zone, the
-    // general search, or dissimilar rollers' three zones, five zones or full coupling, each from
-    // s's zone ends). resolution_error where the level has no such solution.
+    // for a curve swept in c0, else at s's load on s's zone structure (point_model::like).
+    // resolution_error where the level has no such solution.
     tangential_solution structure_level(contact& level, const tangential_solution& s, const tangential_solution& own,
                                         bool swept);
-    // The point at Q of this contact's own level by zone_solver's general search (docs/formulation.md
-    // section 7), started from `guess` (the coarse level's zone) when given.
-    tangential_solution general_point(double Q, std::optional<zone_guess> guess = std::nullopt);
-    // The paper's single zone s where it holds (or options_.zones says "single"); else the
-    // general search's answer where it holds its checks (or options_.zones says "general");
-    // else s, its checks failed. `coarse`: the coarse level's point, for the guesses.
-    tangential_solution zones_for(double Q, tangential_solution s, const tangential_solution* coarse);
 
     roughness surfaces_;
     solver_options options_;
     double f_;
     dissimilar materials_;
     std::unique_ptr<contact> companion_;                  // method::extrapolated: the coarse level n/2 (product)
+    std::unique_ptr<point_model> model_;                  // the points' model, chosen once (point_model.hpp)
+    std::unique_ptr<normal_solution> reported_;           // extrapolated lambda, or empty
     std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
     std::array<contact*, 3> levels_{};                    // the estimate's levels, coarsest first; nullptr: this one
     bool levels_built_ = false;
     bool sweeping_near_ = true;                  // false: at_stick_end's second, fresh-LU route for a refused point
     std::unique_ptr<contact> finer_;             // level 2n: the second chance of a ratio that fails
     void make_finer(int m);                      // finer_ at m = 2n nodes, made once (with this contact's checkpoint)
-    std::unique_ptr<normal_solution> normal_;    // owned here, referenced by the solver
-    std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
-    std::unique_ptr<tangential_solver> tangential_;
-    std::unique_ptr<zone_solver> zones_;  // the general search, on tangential_
-    // Dissimilar rollers (beta_D != 0, docs/formulation.md 8): the zones of Johnson's level, on
-    // tangential_; every point is reported at level n (not extrapolated), estimated on three levels.
-    std::unique_ptr<dissimilar_zones> dissimilar_;
-    std::optional<tangential_solution> last_dissimilar_;  // this level's last point
-    const tangential_solution& dissimilar_level_point(double Q, std::optional<zone_guess> guess, bool opposite);
-    tangential_solution dissimilar_point(double Q);  // Johnson's, then coupled_ where it is set
-    // Free rolling of smooth rollers at Johnson's level whose neglected edge layers bound xi's change
-    // within the tolerance (docs/formulation.md 8(n)): answered by the no-slip solution.
-    bool layers_negligible(double Q) const;
-    // The edge layers' bound on xi relative to the no-slip creep for free rolling of smooth rollers at
-    // Johnson's level (8(n)), computed once; empty for any other pair or level.
-    std::optional<double> free_rolling_layers_;
-    std::optional<double> layers_bound(double Q) const { return Q == 0.0 ? free_rolling_layers_ : std::nullopt; }
-    tangential_solution johnson_point(double Q);     // Johnson's level, the estimate's levels first
-    // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the
-    // coarser level's) when given and Newton converges from them, else without a guess; nullptr when
-    // none is found. Cached as last_five_.
-    const five_zone_solution* five_level_point(double Q, const std::vector<double>* ends);
-    std::optional<five_zone_solution> last_five_;  // this level's last five-zone point
-    double last_five_load_ = 0.0;                  // the load it was asked for
-    // Full coupling (docs/formulation.md 8(e); materials_.coupling == full, beta_D != 0): the
-    // alternation from Johnson's point on this level, cached per Q (coupled_load_).
-    std::unique_ptr<full_coupling> coupled_;
-    std::optional<double> coupled_load_;  // the load of coupled_'s last point; empty: none solved
-    tangential_solution coupled_point_;
-    // Johnson's point at Q of this level near `near` (another level's point: its ends start Newton).
-    tangential_solution johnson_level_point(double Q, const tangential_solution& near);
-    // The fully coupled point at Q of this level from Johnson's point `johnson` of this level;
-    // `checked` as full_coupling::solve (the cache keeps a checked point for an unchecked call).
-    const tangential_solution& coupled_level_point(double Q, const tangential_solution& johnson, bool checked);
-    bool coupled_checked_ = false;
-    // The zones workspace a solution of this contact is evaluated with (the coupled one after a
-    // point at full coupling).
-    dissimilar_zones& zones_of_point();
-    std::unique_ptr<one_parameter_solver> limit_;          // method::one_parameter: the only solver
-    std::unique_ptr<zone_solver> limit_zones_;            // its general search (docs/formulation.md 7(g))
-    std::optional<tangential_solution> last_fine_;         // level n of the last extrapolated point
-    std::optional<tangential_solution> last_coarse_;       // level n/2 of the last general-path point
-    std::optional<tangential_solution> last_level_point_;  // level_point's cache
-    bool last_level_point_checked_ = false;
     std::function<void()> checkpoint_;
-    void checkpoint() const {
-        if (checkpoint_) checkpoint_();
-    }
 };
 
 // A curve swept in c0 (contact::at_stick_end) is the paper's single zone: input_error for dissimilar rollers (8(g)).

@@ -1,0 +1,365 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Dissimilar rollers (beta_D != 0, docs/formulation.md section 8) as point_models (point_model.hpp):
+// Johnson's level (three zones of either kind, five zones, or the edge layers neglected, 8(g)-8(n)),
+// and full coupling (8(e)), the alternation from Johnson's point of the same level. Every point is
+// reported at level n (not extrapolated) and estimated on three levels of the same model.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/edge_layers.hpp"
+#include "roughroll/problems/full_coupling.hpp"
+#include "roughroll/problems/point_model.hpp"
+
+namespace roughroll {
+
+namespace {
+
+// Free rolling of smooth dissimilar rollers at Johnson's level (docs/formulation.md 8(n)): the largest
+// relative estimate of the layers-neglected point, as the ladder compares them: the bound of its xi
+// relative to the no-slip creep, and the bounds of the main stick zone's ends (relative to the
+// half-width); none for any other pair or level.
+std::optional<double> layers_relative_bound(const dissimilar& materials, const roughness& surfaces, double f) {
+    if (materials.coupling == coupling_level::full || !kernel::normal(surfaces).empty() ||
+        !kernel::tangential(surfaces).empty())
+        return std::nullopt;
+    const neglected_layers layers = no_slip_layers(materials.beta_d, f);
+    return std::max({layers.xi_bound / std::fabs(no_slip_creep(materials.beta_d)), layers.leading_bound,
+                     layers.trailing_bound});
+}
+
+// The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
+// would be neglected, and which of the route's estimates sets it; empty where the bound is no use
+// (half of xi or more).
+std::string layers_tolerance_advice(double relative, double beta_d, double f) {
+    if (!(relative < 0.5)) return {};
+    const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
+    const std::string up = significant(std::ceil(relative / unit) * unit, 2);
+    const neglected_layers layers = no_slip_layers(beta_d, f);
+    const bool ends =
+        std::max(layers.leading_bound, layers.trailing_bound) * std::fabs(no_slip_creep(beta_d)) > layers.xi_bound;
+    return std::string("a tolerance of ") + up +
+           " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge layers "
+           "neglected (docs/formulation.md 8(n)" +
+           (ends ? ": the creep within a smaller one, the zone ends set it" : "") + ")";
+}
+
+// The relative change of the five zones' leading layer 1 + s1 between levels n/2 and n, bounded below
+// (docs/formulation.md 8(n), "Beyond every n"): at Q = 0 the layers scale with t_c and sit at the
+// main zone's ends, where the collocation's nodes are spaced as 1/n^2, so the change is a function of
+// x = t_c n^2 alone, measured 3 exp(-0.57 sqrt(x)) to within 10 % for x from 36 to 555 (and larger
+// below 36); a tenth of it, and nothing beyond the measured range.
+constexpr double layer_change_measured_to = 555.0;
+double layer_change_lower_bound(double x) {
+    return x <= layer_change_measured_to ? 0.3 * std::exp(-0.57 * std::sqrt(x)) : 0.0;
+}
+
+normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
+    normal_solution normal = solve_normal(kernel::normal(surfaces), options.nodes(), level_of(options.how), cache);
+    normal.how = options.how;
+    return normal;
+}
+
+std::vector<double> ends_of(const five_zone_solution& v) { return {v.s1, v.c1, v.s2, v.c2}; }
+
+// Johnson's level: the zones of dissimilar_zones on the uncoupled pressure.
+class johnson_model : public point_model {
+public:
+    johnson_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                  normal_cache* cache)
+        : f_(f),
+          materials_(materials),
+          options_(options),
+          normal_(level_normal(surfaces, options, cache)),
+          tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f),
+          zones_(tangential_, kernel::tangential(surfaces), materials.beta_d),
+          layers_(layers_relative_bound(materials, surfaces, f)) {}
+
+    const normal_solution& normal() const override { return normal_; }
+    tangential_solver* tangential() override { return &tangential_; }
+    estimate_structure structure() const override { return estimate_structure::dissimilar; }
+    double traction(const tangential_solution& d, double r) override { return zones_of_point().traction(d, r); }
+    double slip_velocity(const tangential_solution& d, double r) override {
+        return zones_of_point().slip_velocity(d, r);
+    }
+    std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r) override {
+        if (d.layout.opposite() || d.layout.layers_neglected()) return point_model::slip_velocity(d, r);
+        return solver_of_point().slip_velocity(d, r);  // the collocation's sweep
+    }
+
+    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override {
+        if (layers_negligible(Q)) return zones_.layers_neglected_point();
+        try {
+            // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
+            check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
+            return johnson_point(Q, below());
+        } catch (const resolution_error& why) {
+            // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
+            // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
+            const std::optional<double> bound = layers_bound(Q);
+            const std::string advice = bound ? layers_tolerance_advice(*bound, materials_.beta_d, f_) : std::string();
+            if (advice.empty()) throw;
+            throw resolution_error(std::string(why.what()) + "; " + advice);
+        }
+    }
+
+    tangential_solution like(const tangential_solution& s, method how, int n) override {
+        if (s.layout.stick_zones() != 2) return three(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
+        // Five zones (8(j)): the level from the point's ends (Newton), else its own search.
+        const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
+        const five_zone_solution* v = five(s.Q, &ends);
+        if (v == nullptr)
+            throw resolution_error(no_honest_estimate(how, n, estimate_structure::dissimilar) + "level " +
+                                   std::to_string(nodes()) + " finds no five zones at Q = " + shortest(s.Q) +
+                                   " from level n's zones; " +
+                                   (n < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
+                                                  : "n is at its largest, so the load is beyond the method's reach"));
+        return five_zone_point(*v);
+    }
+
+    std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
+        // Free rolling of smooth rollers at Johnson's level whose layers the tolerance does not neglect:
+        // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
+        // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
+        const std::optional<double> bound = layers_bound(Q);
+        if (!bound || *bound <= tolerance) return std::nullopt;
+        // The law was measured on product integration.
+        if (level_of(options_.how) != method::product) return std::nullopt;
+        const double crossing = no_slip_layers(materials_.beta_d, f_).crossing;
+        const double x = crossing * top * top;
+        const double change = layer_change_lower_bound(x);
+        if (!(change > tolerance)) return std::nullopt;
+        std::ostringstream msg;
+        msg.precision(2);
+        msg << "no n up to " << top << " meets the tolerance " << shortest(tolerance)
+            << " (relative) for free rolling of these rollers at f = " << shortest(f_) << ": its edge layers, about "
+            << crossing << " of the half-width, are too thin (at n = " << top
+            << " the five zones' leading layer still changes by more than " << change << " of itself from n = "
+            << top / 2 << ", docs/formulation.md 8(n))";
+        const std::string advice = layers_tolerance_advice(*bound, materials_.beta_d, f_);
+        if (!advice.empty()) msg << "; " << advice;
+        return msg.str();
+    }
+
+protected:
+    int nodes() const { return options_.nodes(); }
+    // The zones and solver a solution of this model is evaluated with (full coupling's after its point).
+    virtual dissimilar_zones& zones_of_point() { return zones_; }
+    virtual tangential_solver& solver_of_point() { return tangential_; }
+
+    // Johnson's point at Q of this level: the estimate's levels `below` first, coarsest first, each from
+    // the zone of the level below (Newton), so that only the coarsest scans the starts of the stick zone.
+    tangential_solution johnson_point(double Q, const std::vector<point_model*>& below);
+
+    // Johnson's point at Q of this level near `near` (another level's point: its ends start Newton).
+    tangential_solution johnson_near(double Q, const tangential_solution& near) {
+        if (near.layout.stick_zones() != 2)
+            return three(Q, zone_guess{near.start(), near.c0()}, near.layout.opposite());
+        const std::vector<double> ends{near.start(), near.c0(), near.start2(), near.end2()};
+        const five_zone_solution* v = five(Q, &ends);
+        if (v == nullptr)
+            throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) + ": no five zones at Q = " +
+                                   shortest(Q) +
+                                   " from the neighbouring level's zones (the five zones change "
+                                   "between levels); another n may find them");
+        tangential_solution t = five_zone_point(*v);
+        t.Q = Q;
+        return t;
+    }
+
+    double f_;
+    dissimilar materials_;
+    solver_options options_;
+    normal_solution normal_;
+    tangential_solver tangential_;
+    dissimilar_zones zones_;
+
+private:
+    // Three zones at Q on this level (dissimilar_zones::solve), cached per Q.
+    const tangential_solution& three(double Q, std::optional<zone_guess> guess, bool opposite) {
+        checkpoint();
+        if (!last_three_ || !(last_three_->Q == Q)) last_three_ = zones_.solve(Q, guess, opposite);
+        return *last_three_;
+    }
+    // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the coarser
+    // level's) when given and Newton converges from them, else without a guess; nullptr when none is
+    // found. Cached per Q.
+    const five_zone_solution* five(double Q, const std::vector<double>* ends) {
+        checkpoint();
+        if (last_five_ && last_five_load_ == Q) return &*last_five_;
+        std::optional<five_zone_solution> v;
+        try {
+            // From the coarser level's ends first (Newton, as the three-zone levels), else from the
+            // three zones of 8(j) item 4 and the continuation in Q (dissimilar_zones::five_zones).
+            // On a curve, the previous row's five zones continued in the load come next (a start only:
+            // the root is the same to Newton's tolerance, validation/test_dissimilar_curve.cpp).
+            if (ends) v = zones_.five_zones(Q, *ends);
+            if (!v && last_five_) v = zones_.five_zones_from(Q, *last_five_);
+            if (!v) v = zones_.five_zones(Q);
+        } catch (const numerical_error&) {
+            v.reset();  // no five zones found on this level
+        }
+        if (!v) return nullptr;
+        last_five_ = v;
+        last_five_load_ = Q;
+        return &*last_five_;
+    }
+    // The five zones at Q, the levels `below` first (each from the ends of the one below it).
+    tangential_solution five_point(double Q, const std::vector<point_model*>& below, const error& why);
+
+    // The edge layers' bound on xi relative to the no-slip creep for free rolling of smooth rollers at
+    // Johnson's level (8(n)); empty for any other load, pair or level.
+    std::optional<double> layers_bound(double Q) const { return Q == 0.0 ? layers_ : std::nullopt; }
+    // Layers that move xi, and the zone ends, by less than the tolerance: the no-slip solution with them
+    // neglected answers.
+    bool layers_negligible(double Q) const {
+        const std::optional<double> relative = layers_bound(Q);
+        return relative && *relative <= options_.tolerance.value_or(default_tolerance);
+    }
+
+    std::optional<double> layers_;
+    std::optional<tangential_solution> last_three_;
+    std::optional<five_zone_solution> last_five_;
+    double last_five_load_ = 0.0;  // the load it was asked for
+};
+
+johnson_model& as_johnson(point_model* m) { return dynamic_cast<johnson_model&>(*m); }
+
+tangential_solution johnson_model::johnson_point(double Q, const std::vector<point_model*>& below) {
+    std::optional<zone_guess> guess;
+    bool opposite = false;
+    for (point_model* level : below) {
+        try {
+            const tangential_solution& t = as_johnson(level).three(Q, guess, opposite);
+            guess = zone_guess{t.start(), t.c0()};
+            opposite = t.layout.opposite();
+        } catch (const resolution_error&) {  // no three zones on this level: the next searches without a guess
+            guess.reset();
+        } catch (const numerical_error&) {
+            guess.reset();
+        }
+    }
+    // Free rolling, no three zones, or three zones that fail (3.3)-(3.4) (resolution_error), or a
+    // numerical fault of their search: five zones (|Q| < f; on the braked side, Q/sgn(beta_D) < 0,
+    // until the slip+ zone closes, 8(j) 4a).
+    try {
+        tangential_solution s = three(Q, guess, opposite);
+        require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
+        return s;
+    } catch (const resolution_error& why) {
+        return five_point(Q, below, why);
+    } catch (const numerical_error& why) {
+        return five_point(Q, below, why);
+    }
+}
+
+tangential_solution johnson_model::five_point(double Q, const std::vector<point_model*>& below, const error& why) {
+    // Where none are found either, the first error stands: a fault aborts; a structure not found at this
+    // n is a refusal (a curve's refused row, docs/robustness.md), saying so.
+    if (!(std::fabs(Q) < f_)) throw;
+    std::vector<double> ends;
+    for (point_model* level : below) {
+        const five_zone_solution* v = as_johnson(level).five(Q, ends.empty() ? nullptr : &ends);
+        ends = v ? ends_of(*v) : std::vector<double>{};
+    }
+    const five_zone_solution* v = five(Q, ends.empty() ? nullptr : &ends);
+    if (v == nullptr) {
+        if (dynamic_cast<const resolution_error*>(&why) == nullptr) throw;
+        throw resolution_error(std::string(why.what()) +
+                               "; no five zones (slip, stick, reversed slip, stick, slip) are found at n = " +
+                               std::to_string(nodes()) +
+                               " either (their search starts from the coarser levels' zones): another n may "
+                               "find them, except on the driven side closer than Q/f = 0.998 to gross sliding, "
+                               "which no n reaches yet (docs/robustness.md)");
+    }
+    tangential_solution s = five_zone_point(*v);
+    s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
+    // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
+    // on steel at n = 32, 8(j) 4a), or Newton from under-resolved coarser ends landing on another
+    // root (f = 0.425..0.5 at n = 1000, 8(n) "Beyond every n"); a resolution_error either way (a
+    // curve's row is refused, not the curve).
+    if (!s.checks.hold())
+        throw resolution_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
+                               ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
+                               "(3.3)-(3.4) (margins: stick " +
+                               shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
+                               "): a zone is below the collocation's resolution at n = " + std::to_string(nodes()) +
+                               ", or the search from the coarser levels' zones found other five zones than the "
+                               "physical ones (docs/formulation.md 8(j), 8(n)); " +
+                               (nodes() < max_nodes
+                                    ? "a larger n (at most " + std::to_string(max_nodes) + ") may resolve it"
+                                    : "n is at its largest, so this load is beyond the method's reach"));
+    return s;
+}
+
+// Full coupling (docs/formulation.md 8(e)): the alternation from Johnson's point on this level, cached per Q.
+class coupled_model final : public johnson_model {
+public:
+    coupled_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                  normal_cache* cache)
+        : johnson_model(surfaces, f, options, materials, cache),
+          coupling_(kernel::tangential(surfaces), kernel::normal(surfaces), options.nodes(), level_of(options.how), f,
+                    materials.beta_d) {}
+
+    // After a point the coupled pressure of that point (not extrapolated); before, Johnson's.
+    const normal_solution& normal() const override { return load_ ? coupling_.normal() : normal_; }
+    const coupling_summary* coupling() const override { return load_ ? &coupling_.summary() : nullptr; }
+    estimate_structure structure() const override { return estimate_structure::full_coupling; }
+    void set_checkpoint(std::function<void()> hook) override {
+        coupling_.set_checkpoint(hook);
+        point_model::set_checkpoint(std::move(hook));
+    }
+
+    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override {
+        check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
+        return coupled(Q, johnson_point(Q, below()), true);
+    }
+    tangential_solution like(const tangential_solution& s, method how, int n) override {
+        // The level's own alternation from its own Johnson's point (a Johnson's point against a coupled n
+        // would measure the coupling, not the discretisation). A level that cannot be coupled leaves no
+        // honest estimate (the point itself was).
+        try {
+            return coupled(s.Q, johnson_near(s.Q, s), false);
+        } catch (const numerical_error& why) {
+            throw resolution_error(no_honest_estimate(how, n, estimate_structure::full_coupling) + "level " +
+                                   std::to_string(nodes()) + ": " + why.what());
+        }
+    }
+
+protected:
+    dissimilar_zones& zones_of_point() override { return load_ ? coupling_.zones() : zones_; }
+    tangential_solver& solver_of_point() override { return load_ ? coupling_.tangential() : tangential_; }
+
+private:
+    // The coupled point at Q from Johnson's point `johnson` of this level; `checked` as
+    // full_coupling::solve (the cache keeps a checked point for an unchecked call).
+    const tangential_solution& coupled(double Q, const tangential_solution& johnson, bool checked) {
+        checkpoint();
+        if (load_ && *load_ == Q && (checked_ || !checked)) return point_;
+        load_.reset();  // Johnson's pressure and zones until the alternation has converged
+        point_ = coupling_.solve(normal_, zones_, johnson, checked);
+        load_ = Q;
+        checked_ = checked;
+        return point_;
+    }
+
+    full_coupling coupling_;
+    std::optional<double> load_;  // the load of the last coupled point; empty: none solved
+    tangential_solution point_;
+    bool checked_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<point_model> make_dissimilar_model(const roughness& surfaces, double f, const solver_options& options,
+                                                   const dissimilar& materials, normal_cache* cache) {
+    if (materials.coupling == coupling_level::full)
+        return std::make_unique<coupled_model>(surfaces, f, options, materials, cache);
+    return std::make_unique<johnson_model>(surfaces, f, options, materials, cache);
+}
+
+}  // namespace roughroll

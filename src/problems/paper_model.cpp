@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The paper's problem as a point_model (point_model.hpp): the stick zone [-1, c0] of (4.4)-(4.5), and
+// zone_solver's general search where it fails its checks (options.zones, docs/formulation.md section 7),
+// on the two-parameter collocation (with Richardson's rule for 'extrapolated') or on the one-parameter
+// limit's Glauert system (7(g)); and make_point_model, which chooses the model once.
+#include <cmath>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/problems/one_parameter.hpp"
+#include "roughroll/problems/point_model.hpp"
+#include "roughroll/problems/zone_solver.hpp"
+
+namespace roughroll {
+
+tangential_solution point_model::at_stick_end(double, bool, bool) {
+    throw input_error("a curve swept in c0 (--sweep, Python sweep=True) is the paper's single zone only");
+}
+
+namespace {
+
+// The paper's zone and the general search on one solver.
+class zone_model : public point_model {
+public:
+    explicit zone_model(const solver_options& options) : options_(options) {}
+    estimate_structure structure() const override { return estimate_structure::paper; }
+
+    // The single zone at Q of this level, cached: the levels of an estimate and the coarse level of an
+    // extrapolation are solved once per Q. `checked`: with the checks (3.3)-(3.4) (a point reported), or
+    // without (a level). `guess`, `slope`: a c0 near the root (the level below's) and dQ/dc0 there.
+    const tangential_solution& single(double Q, bool checked, std::optional<double> guess = std::nullopt,
+                                      std::optional<double> slope = std::nullopt) {
+        checkpoint();
+        if (!last_ || !(last_->Q == Q) || (checked && !last_checked_)) {
+            last_ = solve(Q, guess, checked, slope);
+            last_checked_ = checked || checks_always_;
+        }
+        return *last_;
+    }
+    // zone_solver's general search at Q (section 7), from `guess` (the coarse level's zone) when given.
+    virtual tangential_solution general(double Q, std::optional<zone_guess> guess) {
+        checkpoint();
+        return zones_->solve(Q, true, guess);
+    }
+    tangential_solution like(const tangential_solution& s, method, int) override {
+        return s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}) : single(s.Q, false);
+    }
+
+protected:
+    virtual tangential_solution solve(double Q, std::optional<double> guess, bool checked,
+                                      std::optional<double> slope) = 0;
+    // The paper's single zone s where it holds (or options.zones says "single"); else the general
+    // search's answer where it holds its checks (or options.zones says "general"); else s, its checks
+    // failed. `guess`: the coarse level's zone.
+    tangential_solution zones_for(double Q, tangential_solution s, std::optional<zone_guess> guess) {
+        if (options_.zones == zone_search::general) return general(Q, guess);
+        if (options_.zones == zone_search::single || s.checks.hold()) return s;
+        // A structure the general search does not cover (no root, or its answer fails the checks
+        // too): the single zone, its checks failed.
+        try {
+            tangential_solution g = general(Q, guess);
+            return g.checks.hold() ? g : s;
+        } catch (const resolution_error&) {  // no zone of the general structure (zone_solver.hpp)
+            return s;
+        } catch (const numerical_error&) {
+            return s;
+        }
+    }
+
+    solver_options options_;
+    std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
+    bool checks_always_ = false;          // the solver checks every point it solves
+
+private:
+    std::optional<tangential_solution> last_;  // single's cache
+    bool last_checked_ = false;
+};
+
+zone_model& as_zone_model(point_model* m) { return dynamic_cast<zone_model&>(*m); }
+
+normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
+    normal_solution normal = solve_normal(kernel::normal(surfaces), options.nodes(), level_of(options.how), cache);
+    normal.how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
+    return normal;
+}
+
+// The collocation of (4.4) (tangential_solver); for 'extrapolated', Richardson's rule on the companion
+// level n/2 (product integration): P_H/P2 by contact, c0 and xi here.
+class collocation_model final : public zone_model {
+public:
+    collocation_model(const roughness& surfaces, double f, const solver_options& options, normal_cache* cache,
+                      point_model* companion)
+        : zone_model(options),
+          normal_(level_normal(surfaces, options, cache)),
+          tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f),
+          companion_(companion ? &as_zone_model(companion) : nullptr) {
+        zones_ = std::make_unique<zone_solver>(tangential_.zone_operator());
+    }
+    const normal_solution& normal() const override { return normal_; }
+    tangential_solver* tangential() override { return &tangential_; }
+    double traction(const tangential_solution& d, double r) override { return tangential_.traction(d, r); }
+    double slip_velocity(const tangential_solution& d, double r) override { return tangential_.slip_velocity(d, r); }
+    std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r) override {
+        return tangential_.slip_velocity(d, r);
+    }
+    tangential_solution at_stick_end(double c0, bool checked, bool near) override {
+        return tangential_.at_stick_end(c0, checked, near);
+    }
+    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override;
+    tangential_solution distribution(const tangential_solution& s) override {
+        // For 'extrapolated' the level-n solution at the same Q, whose c0 and xi are level n's (within the
+        // error estimate of the extrapolated ones).
+        if (!companion_) return s;
+        if (!last_fine_ || last_fine_->Q != s.Q)
+            last_fine_ = s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}) : tangential_.solve(s.Q);
+        return *last_fine_;
+    }
+
+private:
+    tangential_solution solve(double Q, std::optional<double> guess, bool checked,
+                              std::optional<double> slope) override {
+        return tangential_.solve(Q, guess, checked, slope);
+    }
+
+    normal_solution normal_;
+    tangential_solver tangential_;
+    zone_model* companion_;                        // 'extrapolated': level n/2
+    std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
+};
+
+tangential_solution collocation_model::point(double Q, const std::function<std::vector<point_model*>()>& below) {
+    // Each level's root search starts from the root of the level below: n/4 (the estimate's
+    // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's,
+    // with a Newton step on the slope of the level below.
+    std::optional<double> start, slope, quarter_c0;
+    // Level n starts from its own c0 as the levels n/4 and n/2 predict it, c0_n = c0_{n/2} +
+    // (c0_{n/2} - c0_{n/4})/2^p where the error falls as n^-p (Richardson's rule, (4.6)): within
+    // ~1e-10 instead of the ~1e-8 of c0_{n/2}, so that the Newton step on the slope of n/2 lands
+    // within the search's 1e-15 and level n costs two solves, not three. Only the start: the
+    // secant from it converges to the same root either way (stick_end_for_load).
+    const auto predicted = [&](double half) -> std::optional<double> {
+        if (!quarter_c0 || !(half > -1.0 && half < 1.0)) return half;
+        const int order = level_of(options_.how) == method::product ? 4 : 2;
+        const double c0 = half + (half - *quarter_c0) / std::ldexp(1.0, order);
+        return c0 > -1.0 && c0 < 1.0 ? c0 : half;
+    };
+    const std::vector<point_model*> levels = below();
+    if (levels.size() == 2) {  // n/4 and n/2
+        try {
+            const tangential_solution& quarter = as_zone_model(levels[0]).single(Q, false);
+            if (quarter.c0() > -1.0 && quarter.c0() < 1.0) quarter_c0 = quarter.c0();
+            start = quarter.c0();
+            slope = quarter.load_slope;
+            if (!companion_) {  // else the companion is n/2, solved below
+                const tangential_solution& half = as_zone_model(levels[1]).single(Q, false, start, slope);
+                start = predicted(half.c0());
+                slope = half.load_slope;
+            }
+        } catch (const error&) {  // the estimate will say why; the search goes without a start
+            start = slope = std::nullopt;
+        }
+    }
+    if (!companion_) return zones_for(Q, single(Q, true, start, slope), std::nullopt);
+    tangential_solution coarse = companion_->single(Q, false, start, slope);
+    tangential_solution s = zones_for(Q, tangential_.solve(Q, predicted(coarse.c0()), true, coarse.load_slope),
+                                      zone_guess{coarse.start(), coarse.c0()});
+    // Both levels on the same path: the coarse level's zones by the general search too.
+    last_fine_ = s;
+    if (s.layout.general()) {
+        // The general path is not extrapolated: its zone ends do not yet converge at a clean
+        // n^-4 at the default n (docs/formulation.md 7(e)). Level n, estimated against n/2.
+        coarse = companion_->general(Q, zone_guess{s.start(), s.c0()});
+        // Refused where the fast path's extrapolation is: a creep at the edge of the double range.
+        if (!std::isfinite(richardson(s.xi, coarse.xi)))
+            throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
+        return s;
+    }
+    s.layout = one_stick_zone(s.start(), richardson(s.c0(), coarse.c0()), s.layout.route,
+                              s.sign < 0.0 ? -1 : 1);  // the paper's zone, extrapolated
+    s.xi = richardson(s.xi, coarse.xi);
+    if (!(std::isfinite(s.c0()) && std::isfinite(s.xi)))
+        throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
+    return s;
+}
+
+// The one-parameter limit (one_parameter_solver): no levels below, no extrapolation.
+class limit_model final : public zone_model {
+public:
+    limit_model(const roughness& surfaces, double f, const solver_options& options)
+        : zone_model(options), limit_(surfaces, f, options.nodes()) {
+        zones_ = std::make_unique<zone_solver>(limit_.zone_operator());
+        checks_always_ = true;
+    }
+    const normal_solution& normal() const override { return limit_.normal(); }
+    tangential_solver* tangential() override { return nullptr; }
+    double traction(const tangential_solution& d, double r) override { return limit_.traction(d, r); }
+    using point_model::slip_velocity;
+    double slip_velocity(const tangential_solution& d, double r) override { return limit_.slip_velocity(d, r); }
+    tangential_solution at_stick_end(double c0, bool checked, bool) override {
+        return limit_.at_stick_end(c0, checked);
+    }
+    tangential_solution general(double Q, std::optional<zone_guess>) override {
+        checkpoint();
+        return zones_->solve(Q, true);
+    }
+    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>&) override {
+        // Its search is cheap: no starts from the levels below.
+        if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);
+        // The one-parameter paper's zone can be singular where the general zone is not (its
+        // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)).
+        try {
+            return zones_for(Q, single(Q, true), std::nullopt);
+        } catch (const numerical_error&) {
+            return general(Q, std::nullopt);
+        }
+    }
+
+private:
+    tangential_solution solve(double Q, std::optional<double> guess, bool, std::optional<double>) override {
+        return limit_.solve(Q, guess);
+    }
+
+    one_parameter_solver limit_;
+};
+
+}  // namespace
+
+std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double f, const solver_options& options,
+                                              const dissimilar& materials, normal_cache* cache,
+                                              point_model* companion) {
+    if (options.how == method::one_parameter) return std::make_unique<limit_model>(surfaces, f, options);
+    if (materials.beta_d != 0.0) return make_dissimilar_model(surfaces, f, options, materials, cache);
+    return std::make_unique<collocation_model>(surfaces, f, options, cache, companion);
+}
+
+}  // namespace roughroll
