@@ -58,14 +58,6 @@ double layer_change_lower_bound(double x) {
     return x <= layer_change_measured_to ? 0.3 * std::exp(-0.57 * std::sqrt(x)) : 0.0;
 }
 
-normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
-    normal_solution normal = solve_normal(kernel::normal(surfaces), options.nodes(), level_of(options.how), cache);
-    normal.how = options.how;
-    return normal;
-}
-
-std::vector<double> ends_of(const five_zone_solution& v) { return {v.s1, v.c1, v.s2, v.c2}; }
-
 // Johnson's level: the zones of dissimilar_zones on the uncoupled pressure.
 class johnson_model : public point_model {
 public:
@@ -107,18 +99,21 @@ public:
         }
     }
 
+    // Johnson's point of this level from the zone ends of s (Newton).
     tangential_solution like(const tangential_solution& s, method how, int n) override {
         if (s.layout.stick_zones() != 2) return three(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
         // Five zones (8(j)): the level from the point's ends (Newton), else its own search.
         const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
         const five_zone_solution* v = five(s.Q, &ends);
         if (v == nullptr)
-            throw resolution_error(no_honest_estimate(how, n, estimate_structure::dissimilar) + "level " +
+            throw resolution_error(no_honest_estimate(how, n, structure()) + "level " +
                                    std::to_string(nodes()) + " finds no five zones at Q = " + shortest(s.Q) +
                                    " from level n's zones; " +
                                    (n < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
                                                   : "n is at its largest, so the load is beyond the method's reach"));
-        return five_zone_point(*v);
+        tangential_solution t = five_zone_point(*v);
+        t.Q = s.Q;  // the load asked for (full coupling's alternation solves at it)
+        return t;
     }
 
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
@@ -154,22 +149,6 @@ protected:
     // Johnson's point at Q of this level: the estimate's levels `below` first, coarsest first, each from
     // the zone of the level below (Newton), so that only the coarsest scans the starts of the stick zone.
     tangential_solution johnson_point(double Q, const std::vector<point_model*>& below);
-
-    // Johnson's point at Q of this level near `near` (another level's point: its ends start Newton).
-    tangential_solution johnson_near(double Q, const tangential_solution& near) {
-        if (near.layout.stick_zones() != 2)
-            return three(Q, zone_guess{near.start(), near.c0()}, near.layout.opposite());
-        const std::vector<double> ends{near.start(), near.c0(), near.start2(), near.end2()};
-        const five_zone_solution* v = five(Q, &ends);
-        if (v == nullptr)
-            throw resolution_error("dissimilar rollers at n = " + std::to_string(nodes()) + ": no five zones at Q = " +
-                                   shortest(Q) +
-                                   " from the neighbouring level's zones (the five zones change "
-                                   "between levels); another n may find them");
-        tangential_solution t = five_zone_point(*v);
-        t.Q = Q;
-        return t;
-    }
 
     double f_;
     dissimilar materials_;
@@ -264,7 +243,7 @@ tangential_solution johnson_model::five_point(double Q, const std::vector<point_
     std::vector<double> ends;
     for (point_model* level : below) {
         const five_zone_solution* v = as_johnson(level).five(Q, ends.empty() ? nullptr : &ends);
-        ends = v ? ends_of(*v) : std::vector<double>{};
+        ends = v ? std::vector<double>{v->s1, v->c1, v->s2, v->c2} : std::vector<double>{};
     }
     const five_zone_solution* v = five(Q, ends.empty() ? nullptr : &ends);
     if (v == nullptr) {
@@ -323,7 +302,7 @@ public:
         // would measure the coupling, not the discretisation). A level that cannot be coupled leaves no
         // honest estimate (the point itself was).
         try {
-            return coupled(s.Q, johnson_near(s.Q, s), false);
+            return coupled(s.Q, johnson_model::like(s, how, n), false);
         } catch (const numerical_error& why) {
             throw resolution_error(no_honest_estimate(how, n, estimate_structure::full_coupling) + "level " +
                                    std::to_string(nodes()) + ": " + why.what());

@@ -12,6 +12,12 @@
 
 namespace roughroll {
 
+normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
+    normal_solution normal = solve_normal(kernel::normal(surfaces), options.nodes(), level_of(options.how), cache);
+    normal.how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
+    return normal;
+}
+
 tangential_solution point_model::at_stick_end(double, bool, bool) {
     throw input_error("a curve swept in c0 (--sweep, Python sweep=True) is the paper's single zone only");
 }
@@ -76,12 +82,6 @@ private:
 };
 
 zone_model& as_zone_model(point_model* m) { return dynamic_cast<zone_model&>(*m); }
-
-normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
-    normal_solution normal = solve_normal(kernel::normal(surfaces), options.nodes(), level_of(options.how), cache);
-    normal.how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
-    return normal;
-}
 
 // The collocation of (4.4) (tangential_solver); for 'extrapolated', Richardson's rule on the companion
 // level n/2 (product integration): P_H/P2 by contact, c0 and xi here.

@@ -64,7 +64,7 @@ public:
         return v;
     }
 
-    // contact::beyond_every_n and the layers-neglected estimate's bound: dissimilar rollers only.
+    // contact::beyond_every_n (free rolling of smooth dissimilar rollers at Johnson's level only).
     virtual std::optional<std::string> beyond_every_n(double, int, double) const { return std::nullopt; }
 
 protected:
@@ -80,6 +80,9 @@ protected:
 std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double f, const solver_options& options,
                                               const dissimilar& materials, normal_cache* cache,
                                               point_model* companion);
+
+// The normal problem of a model at n = options.nodes() by the level method (normal_problem.hpp).
+normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache);
 
 // The models of dissimilar rollers (dissimilar_model.cpp), for make_point_model.
 std::unique_ptr<point_model> make_dissimilar_model(const roughness& surfaces, double f, const solver_options& options,
