@@ -202,13 +202,23 @@ TEST(LadderRefusals, FullCouplingSkipsARungCertainToFail) {
     EXPECT_EQ(r.stopped_at, 1000);
 }
 
-// Braked, Q/f = -0.75 (three zones of one direction, the pressure's kinks carried, 8(l)): no order-1 law,
-// and rung 256 meets the default tolerance: answered there, as before.
+// Braked, Q/f = -0.75 (three zones of one direction, the pressure's kinks carried, 8(l)): no order-1 law.
+// Rung 128's changes contract (the start's 2.5e-5, 1.0e-5 from n = 32: ratio 2.4) on zones of at least ten nodes of
+// level 32, so the three-level rule of 8(q) takes three times the last change, 3.1e-5 of s (0.44 long), within the
+// default tolerance: answered at rung 128 (the old program's twice the larger change, 4.9e-5, needed rung 256), every
+// estimate above its distance from n = 512.
 TEST(LadderRefusals, FullCouplingStillAnswersWhereARungMeetsTheTolerance) {
-    const full_run r = run_full(-0.75, std::nullopt, {512, 1000});
+    const full_run r = run_full(-0.75, std::nullopt, {256, 512, 1000});
     ASSERT_TRUE(r.answer.has_value()) << r.refusal;
-    EXPECT_EQ(r.answer->n, 256);
-    EXPECT_EQ(r.solved, (std::vector<int>{128, 256}));
+    EXPECT_EQ(r.answer->n, 128);
+    EXPECT_EQ(r.solved, (std::vector<int>{128}));
+    const tangential_solution& s = r.answer->solution;
+    const error_estimate& e = *r.answer->estimate;
+    contact fine(roughness{}, 0.05, solver_options{512, method::product}, dissimilar{beta_al_st, coupling_level::full});
+    const tangential_solution f = fine.point(-0.75 * 0.05);
+    EXPECT_GE(e.start, std::fabs(s.start() - f.start()));
+    EXPECT_GE(e.c0, std::fabs(s.c0() - f.c0()));
+    EXPECT_GE(e.xi, std::fabs(s.xi - f.xi));
 }
 
 // The changes behind a full-coupling estimate are the levels' own: level n/4, n/2, n solved apart.

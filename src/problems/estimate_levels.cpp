@@ -187,9 +187,11 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
             return std::nullopt;
         }
     };
-    const estimate_point point{
+    estimate_point point{
         options_.how,       nodes(),           self, structure, reported_ != nullptr && paper, own.checks.hold(),
         swept ? "c0" : "Q", swept ? s.c0() : s.Q};
+    // 8(q) "The three-level rule at full coupling"
+    point.kinks_carried = structure == estimate_structure::full_coupling && normal().kinks != nullptr;
     return estimate_from_levels(table, levels, finer, point);
 }
 

@@ -106,8 +106,10 @@ error_estimate scaled_changes(const level_changes& c, double factor) {
 level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, std::size_t i) const {
     // Full coupling (docs/formulation.md 8(q)): each later rung's estimate from rung i's level changes.
     // (a) The next rung, when it doubles n (levels n/2, n, 2n), has an estimate of at least twice
-    // |x_n - x_{n/2}| (less both levels' noise), exactly; it fails the tolerance where that exceeds it
-    // by more than the scale's own move to that rung (at most half its estimate: tol/2 relative) and 1 %.
+    // |x_n - x_{n/2}| (less both levels' noise), exactly, or where its levels may take the three-level rule
+    // (8(q) "The three-level rule at full coupling") 3/2^p of it (changes.next_factor); it fails the
+    // tolerance where that exceeds it by more than the scale's own move to that rung (at most half its
+    // estimate: tol/2 relative) and 1 %.
     // (b) Where a zone end converges at order 1 (five zones and the driven three zones' entry while the
     // pressure's kinks are not carried: rough rollers, 8(o)), rung m's estimate is at least twice its
     // change from m/4 to m/2, 4 C/m with C/n the order-1 constant of rung i: a tenth of it is certain
@@ -122,7 +124,7 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
         const int m = rungs_[j];
         std::optional<tolerance_check> certain;
         if (j == i + 1 && m == 2 * n) {
-            const tolerance_check t = check(c, a.solution, scaled_changes(changes.last, 2.0));
+            const tolerance_check t = check(c, a.solution, scaled_changes(changes.last, changes.next_factor));
             if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) certain = t;
         }
         if (order_one && !certain) {
@@ -172,9 +174,9 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             if (static_cast<std::size_t>(failing) == o.fails.size()) {
                 const tolerance_check& next = o.at_least.front();
                 beyond_all =
-                    "no larger n can meet it (full coupling's estimate is twice the larger of the last two "
-                    "level changes, and where the pressure's kinks are not carried its zone ends converge at "
-                    "order 1: at n = " +
+                    "no larger n can meet it (full coupling's estimate holds at least a share of the last level "
+                    "change, and where the pressure's kinks are not carried its zone ends converge at order 1: at n "
+                    "= " +
                     std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " + significant(next.relative, 3) +
                     " relative; docs/formulation.md 8(q))";
             } else if (o.fails.front() && (i + 2 == rungs_.size() || rungs_[i + 2] != 2 * rungs_[i + 1])) {

@@ -24,8 +24,12 @@ struct level_changes {
     double lambda = 0.0, c0 = 0.0, xi = 0.0, start = 0.0;
 };
 struct coupled_changes {
-    level_changes last;       // |x_n - x_{n/2}| less both levels' noise: twice it is in the estimate at 2n
+    level_changes last;  // |x_n - x_{n/2}| less both levels' noise: `next_factor` times it is in the estimate at 2n
     level_changes order_one;  // min(|x_n - x_{n/2}|, |x_{n/2} - x_{n/4}|/2) less the noise: C/n where x_k = x + C/k
+    // The certain share of rung 2n's estimate in |x_n - x_{n/2}| (8(q) rule (a)): 2 where the levels n/2, n, 2n can only
+    // take twice the larger change, 3/2^p where they may take the three-level rule (three times at least a 2^p-th of
+    // the change before: 8(q) "The three-level rule at full coupling").
+    double next_factor = 2.0;
 };
 
 // The error estimate of a point, per quantity. Every estimate comes from three levels of the same
@@ -71,7 +75,8 @@ double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, dou
 // The structures whose estimates differ in rule or in name: the paper's problem (beta_D = 0, every
 // zone search, the one-parameter limit), dissimilar rollers at Johnson's level (three or five zones,
 // level n reported, not extrapolated), and at full coupling (8(e): twice the larger of the last two
-// level changes, no asymptotic rule).
+// level changes, no asymptotic rule; 8(q): three times the last change, at least a 2^p-th of the one before,
+// where the changes contract and the kinks are carried and resolved).
 enum class estimate_structure { paper, dissimilar, full_coupling };
 
 // What a table reads off a level's solution: its accessors (the second stick zone's ends are the
@@ -114,7 +119,15 @@ struct estimate_point {
     bool checks_hold;  // its inequalities (3.3)-(3.4) hold: the second chance is given
     const char* at;    // the input a refusal names, "Q" or "c0"
     double at_value;
+    // Full coupling with the pressure's and the blends' kinks carried (smooth rollers, 8(r)): where every zone also
+    // holds two nodes of the coarsest level, the levels' changes are read by the three-level rule (8(q)).
+    bool kinks_carried = false;
 };
+
+// The fewest nodes of the m-point Gauss-Chebyshev rule (cos(k pi/(m + 1))) inside one zone of s (from -1 through
+// the zone ends to 1): below two the zone's ends fall between the same nodes and their changes with n are not
+// convergence (8(q) "The three-level rule at full coupling").
+double fewest_zone_nodes(const tangential_solution& s, int m);
 
 // The estimate from the three levels (coarsest first). Per quantity: error_bound's rule; where the
 // three levels show no estimate, a second chance on n/2, n, 2n (only for a point whose checks hold,
