@@ -12,7 +12,6 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
-#include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
@@ -27,11 +26,6 @@ zone_solver::zone_solver(stick_zone_operator op) : op_(std::move(op)) {}
 
 double zone_solver::entry_coefficient(const tangential_solution& s) {
     return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
-}
-
-tangential_solution zone_solver::gross_sliding() {
-    // w = G (7(d)), w = b p + f G (8(g)): xi = -min w.
-    return op_.gross_sliding();
 }
 
 zone_newton_from zone_solver::newton(double magnitude) {
@@ -114,7 +108,7 @@ zone_solver::found zone_solver::general(double magnitude, std::optional<zone_gue
     // r*, where G is least: the stick zone straddles it and collapses onto it at gross sliding (7(d)).
     std::optional<double> point;
     const auto least_point = [&] {
-        if (!point) point = gross_sliding().c0();
+        if (!point) point = op_.gross_sliding().c0();
         return *point;
     };
     // Near gross sliding: from the operator's model zone at r*, before the coarse level's guess,
@@ -166,7 +160,7 @@ tangential_solution zone_solver::solve(double Q, bool force_general, std::option
     check_load_resolvable(magnitude, op_.f);
     const auto search = [&](std::optional<zone_guess> g) {
         if (magnitude == op_.f)
-            return std::make_pair(searched_point(gross_sliding(), Q, op_.method.name, op_.check), false);
+            return std::make_pair(searched_point(op_.gross_sliding(), Q, op_.method.name, op_.check), false);
         found z = general(magnitude, g, single_end);
         // The checks the scan made in the |Q| frame are Q's: the mirror changes the signs of p1 and v together.
         return std::make_pair(

@@ -62,7 +62,6 @@ private:
     std::optional<found> bracketed(const zone_family& zones, const std::vector<zone_trial>& trials, double magnitude,
                                    std::optional<tangential_solution>& first);
     zone_newton_from newton(double magnitude);  // Newton in the zone ends at |Q| (zone_newton.hpp)
-    tangential_solution gross_sliding();
 
     stick_zone_operator op_;
 };
