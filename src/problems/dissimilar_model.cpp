@@ -172,13 +172,13 @@ private:
         if (last_five_ && last_five_load_ == Q) return &*last_five_;
         std::optional<five_zone_solution> v;
         try {
-            // From the coarser level's ends first (Newton, as the three-zone levels), else from the
-            // three zones of 8(j) item 4 and the continuation in Q (dissimilar_zones::five_zones).
-            // On a curve, the previous row's five zones continued in the load come next (a start only:
-            // the root is the same to Newton's tolerance, validation/test_dissimilar_curve.cpp).
-            if (ends) v = zones_.five_zones(Q, *ends);
-            if (!v && last_five_) v = zones_.five_zones_from(Q, *last_five_);
-            if (!v) v = zones_.five_zones(Q);
+            // From the coarser level's ends first (Newton, as the three-zone levels); on a curve the previous
+            // row's five zones continued in the load next (a start only: the root is the same to Newton's
+            // tolerance, validation/test_dissimilar_curve.cpp); then the search's own (zone_start.hpp, 8(j) 4a).
+            std::vector<five_zone_start> first;
+            if (ends) first.push_back(five_zone_start::at_ends(*ends));
+            if (last_five_) first.push_back(five_zone_start::continuing(*last_five_));
+            v = zones_.five_zones(Q, std::move(first));
         } catch (const numerical_error&) {
             v.reset();  // no five zones found on this level
         }

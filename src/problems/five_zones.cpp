@@ -4,8 +4,7 @@
 // below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two
 // stick zones, each with its own collocation system (tangential_solver::solve_on_zone) whose right
 // side carries the other zone's L1[q] (block Gauss-Seidel), and the zone search's Newton in the four
-// ends (blend_ends_newton, zone_newton.hpp); continuations in the load and in beta_D/f (8(h)) where no
-// start is found directly.
+// ends (blend_ends_newton, zone_newton.hpp) from the starts of zone_start.hpp, tried in turn by one loop.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -27,6 +26,12 @@ constexpr int max_sweeps = 200;  // block Gauss-Seidel sweeps of one system
 // gave up: the failures "from f = 0.05's ends at f = 0.049" and from nearby loads (8(j) 4a).
 constexpr double sweep_tolerance = 1e-15;
 constexpr double sweep_rounding = 4.0 * std::numeric_limits<double>::epsilon();
+// The continuations' steps (8(j) 4a): in the load f/8, halved down to f/1024 (the slip+ zone closing near the
+// braked transition); in the forcing factors 2^(1/4), halved in the exponent down to 2^(1/64).
+constexpr double load_step = 1.0 / 8.0, smallest_load_step = 1.0 / 1024.0;  // times f
+constexpr double forcing_step = 0.25, smallest_forcing_step = 1.0 / 64.0;   // in log2 of the forcing
+// The scan's loads Q/f = k/8, 1/4 first: it gave starts at f = 0.05 and 0.1 (each try costs about a continuation).
+constexpr int scan_loads[] = {2, 4, 1, 3, 5, 6, 7};
 }  // namespace
 
 double dissimilar_zones::S(const five_zone_solution& s, double r) const {
@@ -136,117 +141,81 @@ traction_checks dissimilar_zones::check(const five_zone_solution& s) {
                        [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
 }
 
-}  // namespace roughroll
-
-namespace roughroll {
-
-std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q) {
-    // In the frame beta_D > 0 (8(h)): the load sign * Q, |Q| < f.
-    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
-    if (!(std::fabs(Q) < f_)) throw input_error("five zones without a guess: |Q| < f");
-    Q *= sign;
-    const double beta = std::fabs(beta_d_);
-    // By 8(h) the ends depend on Q/f and beta_D/f alone. The starts below (three zones at loads
-    // Q/f = k/8) were found for beta_D/f from 1.4 to 5.8; outside [1, 6] (f <= 0.02 or f >= 0.15 for
-    // aluminium on steel) free rolling is solved at beta_D/f = 2.875 (f = 0.05's) or 1.5 (near
-    // f = 0.1's) and continued in the forcing to beta_D at this f, then in the load to Q.
-    const double ratio = beta / f_;
-    if (ratio >= 1.0 && ratio <= 6.0) return five_zones_at(sign * Q, beta);
-    const double reach = ratio > 6.0 ? 2.875 : 1.5;
-    auto s = five_zones_at(0.0, reach * f_);
-    if (!s) return std::nullopt;
-    // Steps of a factor 2^(1/4) in the forcing, halved (in the exponent, down to 2^(1/64)) where
-    // Newton fails, doubled again after a success. (Steps of 2^(1/2) from 2.875 down to 0.72 met
-    // a root at f = 0.2 whose checks fail, its slip+ zone 1.5e-4 long, not the one continued in f.)
-    constexpr double largest = 0.25;
-    double b = reach * f_, exponent = largest;
-    const double down = ratio < reach ? -1.0 : 1.0;
-    while (b != beta && exponent >= 1.0 / 64.0) {
-        double next = b * std::pow(2.0, down * exponent);
-        if ((next - beta) * down > 0.0) next = beta;
-        if (auto t = five_zones(0.0, {s->s1, s->c1, s->s2, s->c2}, next)) {
-            s = t;
-            b = next;
-            exponent = std::min(2.0 * exponent, largest);
-        } else {
-            exponent *= 0.5;
-        }
+std::vector<five_zone_start> dissimilar_zones::search_starts(double Q) const {
+    // In the frame beta_D > 0 (8(h)) the scan's loads lie above sign * Q; the starts' loads have Q's sign. Outside
+    // beta_D/f in [1, 6] (f <= 0.02 or f >= 0.15 for aluminium on steel) free rolling at 2.875 (f = 0.05's) or 1.5.
+    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0, beta = std::fabs(beta_d_), ratio = beta / f_;
+    const bool inside = ratio >= 1.0 && ratio <= 6.0;
+    const double forcing = inside ? beta : (ratio > 6.0 ? 2.875 : 1.5) * f_, from = inside ? sign * Q : 0.0;
+    std::vector<five_zone_start> starts;
+    if (inside && from > 0.0) starts.push_back(five_zone_start::three_zones_at(Q, beta));
+    for (const int k : scan_loads) {
+        if (k * f_ / 8.0 <= from) continue;
+        five_zone_start s = five_zone_start::three_zones_at(sign * (k * f_ / 8.0), forcing);
+        if (!inside) s.path = {{zone_parameter::load, 0.0}, {zone_parameter::forcing, beta}};
+        // Free rolling at the scan's forcing, and the braked side (reached through free rolling), are every start's.
+        if (!inside) s.shared_after = 1;
+        if (inside && from < 0.0) s.shared_after = 0;
+        starts.push_back(std::move(s));
     }
-    if (b != beta) return std::nullopt;
-    if (Q == 0.0) return s;
-    return continued(s, sign * Q, 0.0);
+    return starts;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::five_zones_from(double Q, const five_zone_solution& from) {
+std::optional<five_zone_solution> dissimilar_zones::from_three_zones(double load, double forcing, bool& holds) {
+    // slip-, stick [s, c], slip+ leave v < 0 near the trailing edge (8(j) item 4): the second zone from there.
+    holds = false;
+    const double frame = (beta_d_ > 0.0 ? 1.0 : -1.0) * load;
+    try {
+        const tangential_solution three = zone_solver(zone_operator(true, forcing, frame)).solve(frame);
+        constexpr int samples = 400;
+        for (int i = 1; i <= samples; ++i) {
+            const double r = i == samples ? 1.0 : three.c0() + (1.0 - three.c0()) * i / samples;
+            if (!(slip_velocity(three, r) < 0.0)) continue;
+            const double turn = three.c0() + (1.0 - three.c0()) * (i - 0.5) / samples;
+            return five_zones(load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, forcing);
+        }
+        holds = true;  // v > 0 up to the edge: the three zones are the answer
+    } catch (const error&) {
+        // no three zones carry this load (resolution_error), or W fails on them: no start from here
+    }
+    return std::nullopt;
+}
+
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::vector<five_zone_start> starts) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
-    return continued(from, Q, from.sign * from.Q);
-}
-
-std::optional<five_zone_solution> dissimilar_zones::continued(std::optional<five_zone_solution> s, double Q,
-                                                              double load) {
-    // Steps of f/8 in the load, halved (down to f/1024, the slip+ zone closing near the braked
-    // transition, 8(j) 4a) where Newton fails, doubled again after a success; in the frame's loads.
-    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
-    Q *= sign;
-    const double direction = Q < load ? -1.0 : 1.0;
-    double step = f_ / 8.0;
-    while (load != Q && step >= f_ / 1024.0) {
-        double target = load + direction * step;
-        if ((target - Q) * direction > 0.0) target = Q;
-        if (auto t = five_zones(sign * target, {s->s1, s->c1, s->s2, s->c2}, s->forcing)) {
-            s = t;
-            load = target;
-            step = std::min(2.0 * step, f_ / 8.0);
+    const std::vector<five_zone_start> own = search_starts(Q);
+    starts.insert(starts.end(), own.begin(), own.end());
+    for (const five_zone_start& start : starts) {
+        double load = Q, forcing = std::fabs(beta_d_);  // where s is, nominally (Newton's load differs by its residual)
+        std::optional<five_zone_solution> s;
+        if (start.from == five_zone_start::base::ends) {
+            s = five_zones(Q, start.ends, forcing);
+        } else if (start.from == five_zone_start::base::solved) {
+            s = start.solved;
+            load = s->Q;
+            forcing = s->forcing;
         } else {
-            step *= 0.5;
+            bool holds = false;
+            load = start.load;
+            forcing = start.forcing;
+            s = from_three_zones(load, forcing, holds);
+            if (holds && load == Q) return std::nullopt;  // not five zones: dissimilar_zones::solve answers Q
         }
-    }
-    if (load != Q) return std::nullopt;
-    return s;
-}
-
-std::optional<five_zone_solution> dissimilar_zones::five_zones_at(double Q, double beta) {
-    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
-    Q *= sign;
-    // The three zones slip-, stick [s, c], slip+ solve their equations at these loads but leave
-    // v < 0 near the trailing edge (8(j) item 4): the first zone is theirs, the second starts
-    // where their v turns negative, halfway to the edge.
-    bool three_hold = false;  // v > 0 up to the edge on the three zones at the last load tried
-    const auto from_three_zones = [&](double load) -> std::optional<five_zone_solution> {
-        three_hold = false;
-        try {
-            const tangential_solution three = zone_solver(zone_operator(true, beta, load)).solve(load);
-            constexpr int samples = 400;
-            for (int i = 1; i <= samples; ++i) {
-                const double r = i == samples ? 1.0 : three.c0() + (1.0 - three.c0()) * i / samples;
-                if (!(slip_velocity(three, r) < 0.0)) continue;
-                const double turn = three.c0() + (1.0 - three.c0()) * (i - 0.5) / samples;
-                return five_zones(sign * load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, beta);
-            }
-            three_hold = true;  // v > 0 up to the edge: the three zones are the answer
-        } catch (const error&) {
-            // no three zones carry this load (resolution_error), or W fails on them: no start from here
+        std::vector<zone_leg> path = start.path;
+        path.push_back({zone_parameter::load, Q});
+        for (std::size_t leg = 0; s && leg < path.size(); ++leg) {
+            const bool in_load = path[leg].parameter == zone_parameter::load;
+            double& at = in_load ? load : forcing;
+            s = continued(
+                *s, at, path[leg].target, in_load ? load_step * f_ : forcing_step,
+                in_load ? smallest_load_step * f_ : smallest_forcing_step, !in_load,
+                [&](double next, const five_zone_solution& p) {
+                    return five_zones(in_load ? next : load, {p.s1, p.c1, p.s2, p.c2}, in_load ? p.forcing : next);
+                });
+            if (!s && leg >= start.shared_after) return std::nullopt;
+            at = path[leg].target;
         }
-        return std::nullopt;
-    };
-    if (Q > 0.0) {
-        if (auto s = from_three_zones(Q)) return s;
-        if (three_hold) return std::nullopt;  // not five zones: dissimilar_zones::solve answers it
-    }
-    // Free rolling (no three zones carry Q = 0), the braked side (Q < 0: continued from free
-    // rolling through Q = 0 to where the slip+ zone closes, 8(j) 4a) and loads whose three zones
-    // give no start: from a load Q/f = k/8 above Q whose three zones give one (each scan costs
-    // about as much as the whole continuation: Q/f = 1/4 first, where they did for f = 0.05 and
-    // 0.1), down to Q, Newton from the previous ends each time.
-    for (const int k : {2, 4, 1, 3, 5, 6, 7}) {
-        const double from = k * f_ / 8.0;
-        if (from <= Q) continue;
-        auto s = from_three_zones(from);
-        if (!s) continue;
-        // A driven load another start may still reach; a braked one (Q < 0) is reached through
-        // free rolling from every start alike, so a stop there is the transition: no more starts.
-        auto t = continued(s, sign * Q, from);
-        if (t || Q < 0.0) return t;
+        if (s) return s;
     }
     return std::nullopt;
 }

@@ -53,6 +53,7 @@
 #include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_solver.hpp"
+#include "roughroll/problems/zone_start.hpp"
 
 namespace roughroll {
 
@@ -113,6 +114,8 @@ struct five_zone_solution {
     int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
 };
 
+using five_zone_start = zone_start<five_zone_solution>;  // a start of their search (zone_start.hpp)
+
 // Their stick zones' systems, for the zone search's Newton (blend_ends_newton, zone_newton.hpp).
 inline std::vector<const tangential_solution*> stick_systems(const five_zone_solution& s) {
     return {&s.zone1, &s.zone2};
@@ -166,24 +169,15 @@ public:
     // `opposite`: try the leading slip against Q first (the coarser level's structure).
     tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false);
 
-    // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1,
-    // s2, c2) (damped_newton); empty when Newton does not converge. The checks are made, not acted on.
+    // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1, s2, c2) (damped_newton);
+    // empty when Newton does not converge. The checks are made, not acted on.
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends);
-    // The same with the forcing `beta` in place of |beta_D| (the frame's): a step of the continuation
-    // in beta_D/f (8(h): at fixed f the ends depend on beta_D/f alone).
-    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends, double beta);
-    // Five zones at load Q continued in the load from `from` (a curve's previous row; Newton from
-    // each step's ends, steps halved where it fails): empty where the continuation stops.
-    std::optional<five_zone_solution> five_zones_from(double Q, const five_zone_solution& from);
-    // Five zones at load Q, |Q| < f, without a guess: Newton from the three zones of a driven
-    // roller 1 at the same Q (the leading slip against Q, which fail (3.4) near the trailing edge)
-    // and a trailing stick zone where their v turns negative; else from such three zones at a load
-    // Q/f = k/8 above Q, continued in the load down to Q (through free rolling to the braked side,
-    // Q/sgn(beta_D) < 0, 8(j) 4a); for beta_D/f outside [1, 6] free rolling at beta_D/f = 2.875
-    // continued in the forcing first (8(h), 8(j) 4a). Empty when no start converges, where the
-    // continuation ends (the slip+ zone closes: the three zones of a braked roller 1 are the
-    // answer), and when the driven three zones keep v > 0 up to the trailing edge.
-    std::optional<five_zone_solution> five_zones(double Q);
+    // Five zones at load Q, |Q| < f, from the starts `first` (the coarser level's ends, a curve's previous row),
+    // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q is the answer; empty where
+    // none does, where the continuation ends on the braked side (the three zones of a braked roller 1 answer), and
+    // where the driven three zones at Q keep v > 0 up to the trailing edge (they answer).
+    std::optional<five_zone_solution> five_zones(double Q, std::vector<five_zone_start> first);
+    std::optional<five_zone_solution> five_zones(double Q) { return five_zones(Q, std::vector<five_zone_start>{}); }
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
     five_zone_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
     double traction(const five_zone_solution& s, double r);       // p1(r)
@@ -196,10 +190,12 @@ public:
     tangential_solution layers_neglected_point();
 
 private:
-    // five_zones(Q) at the forcing beta (the frame's), its starts from the three zones at loads k/8.
-    std::optional<five_zone_solution> five_zones_at(double Q, double beta);
-    // Newton from s's ends at loads stepping from `load` to Q (the frame's loads times sgn beta_D).
-    std::optional<five_zone_solution> continued(std::optional<five_zone_solution> s, double Q, double load);
+    // Newton from `ends` with the forcing `beta` in place of |beta_D| (a step of the continuation in beta_D/f).
+    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends, double beta);
+    std::vector<five_zone_start> search_starts(double Q) const;  // five_zones(Q)'s own starts
+    // Newton from the driven three zones at `load` with `forcing`; `holds` where their v stays positive up to the
+    // edge (they are the answer: no five zones).
+    std::optional<five_zone_solution> from_three_zones(double load, double forcing, bool& holds);
     double load_under_H(double start, double c0);           // int p H over [-1, 1] for the zone [start, c0]
     double S(const five_zone_solution& s, double r) const;  // -1 + 2 H1 - 2 H2
     // The three zones at |Q| = magnitude with the forcing b as the one zone search's operator: both slip
