@@ -98,6 +98,44 @@ TEST(DissimilarSmallBeta, RefusedAtOnceWithWhatToDo) {
     }
 }
 
+// A real pair at large friction (issue 24, 7): aluminium on steel at f = 1, whose leading slip zone
+// (6.5e-10 of the half-width at free rolling, 2e-11 at Q/f = 0.5, 2e-8 at -0.5) is below what any n
+// resolves. Each refusal says what answers instead: free rolling of smooth rollers at Johnson's level,
+// the edge layers neglected (8(n)), solved here; nothing for a load or a rough pair. Never "set beta_d
+// = 0": for beta_D = 0.144 that changes the physics (at free rolling xi = -4 beta_D/pi^2 is all of it).
+TEST(DissimilarSmallBeta, RealPairAtLargeFrictionNamesWhatAnswers) {
+    const double f = 1.0;
+    for (const bool rough : {false, true}) {
+        for (const double ratio : {0.0, 0.5, -0.5}) {
+            SCOPED_TRACE(std::string(rough ? "layers" : "smooth") + ", Q/f = " + std::to_string(ratio));
+            for (const coupling_level level : {coupling_level::full, coupling_level::johnson}) {
+                const bool full = level == coupling_level::full;
+                contact c(rough ? layers() : roughness{}, f, solver_options{128, method::product},
+                          dissimilar{beta_al_st, level});
+                const bool layers_route = !rough && ratio == 0.0;  // Johnson's level answers it
+                if (layers_route && !full) {
+                    const tangential_solution s = c.point(0.0);
+                    EXPECT_TRUE(s.layout.layers_neglected());
+                    EXPECT_TRUE(s.checks.hold());
+                    continue;
+                }
+                try {
+                    c.point(ratio * f);
+                    ADD_FAILURE() << "answered";
+                } catch (const resolution_error& e) {
+                    const std::string what = e.what();
+                    EXPECT_EQ(what.find("set beta_d = 0"), std::string::npos) << what;
+                    EXPECT_EQ(what.find("::"), std::string::npos) << what;
+                    EXPECT_NE(what.find("no n up to 1000 resolves it"), std::string::npos) << what;
+                    EXPECT_EQ(what.find("coupling = \"johnson\" answers this free rolling") != std::string::npos,
+                              layers_route && full)
+                        << what;
+                }
+            }
+        }
+    }
+}
+
 // The estimate of the leading slip zone against the zones found, and loads the search answers are
 // not refused: at n = 128, beta_D/f = 0.6 at Q/f = -0.5 (three zones) and 0.479 (aluminium on steel at
 // f = 0.3) at free rolling (five zones), where the start lies within a factor 2 of the estimate.

@@ -117,6 +117,14 @@ public:
     }
 
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
+        // A leading slip zone thinner than the largest rung resolves (8(j) item 11): refused before any solve.
+        if (!layers_negligible(Q)) {
+            try {
+                check_edge_zones(Q, top);
+            } catch (const resolution_error& why) {
+                return std::string(why.what());
+            }
+        }
         // Free rolling of smooth rollers at Johnson's level whose layers the tolerance does not neglect:
         // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
         // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
@@ -142,6 +150,21 @@ public:
 
 protected:
     int nodes() const { return options_.nodes(); }
+    // check_edge_zones_resolvable at n, its refusal followed by what answers the load instead.
+    void check_edge_zones(double Q, int n) const {
+        try {
+            check_edge_zones_resolvable(materials_.beta_d, f_, Q, n);
+        } catch (const resolution_error& why) {
+            const std::string advice = edge_zones_advice(Q);
+            if (advice.empty()) throw;
+            throw resolution_error(std::string(why.what()) + "; " + advice);
+        }
+    }
+    // At Johnson's level: free rolling of smooth rollers, the tolerance at which its layers would be neglected.
+    virtual std::string edge_zones_advice(double Q) const {
+        const std::optional<double> bound = layers_bound(Q);
+        return bound ? layers_tolerance_advice(*bound, materials_.beta_d, f_) : std::string();
+    }
     // The zones and solver a solution of this model is evaluated with (full coupling's after its point).
     virtual dissimilar_zones& zones_of_point() { return zones_; }
     virtual tangential_solver& solver_of_point() { return tangential_; }
@@ -281,6 +304,7 @@ public:
     coupled_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
                   normal_cache* cache)
         : johnson_model(surfaces, f, options, materials, cache),
+          johnson_layers_(layers_relative_bound(dissimilar{materials.beta_d, coupling_level::johnson}, surfaces, f)),
           coupling_(kernel::tangential(surfaces), kernel::normal(surfaces), options.nodes(), level_of(options.how), f,
                     materials.beta_d) {}
 
@@ -294,7 +318,7 @@ public:
     }
 
     tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override {
-        check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
+        check_edge_zones(Q, nodes());
         return coupled(Q, johnson_point(Q, below()), true);
     }
     tangential_solution like(const tangential_solution& s, method how, int n) override {
@@ -310,6 +334,17 @@ public:
     }
 
 protected:
+    // Free rolling of smooth rollers: Johnson's level answers it with the edge layers neglected (8(n)),
+    // at the tolerance it names where the default does not neglect them. Full coupling has no such route.
+    std::string edge_zones_advice(double Q) const override {
+        if (!(Q == 0.0 && johnson_layers_)) return {};
+        if (*johnson_layers_ <= options_.tolerance.value_or(default_tolerance))
+            return "coupling = \"johnson\" answers this free rolling with its edge layers neglected and the pressure "
+                   "uncoupled (docs/formulation.md 8(n))";
+        const std::string advice = layers_tolerance_advice(*johnson_layers_, materials_.beta_d, f_);
+        return advice.empty() ? advice : "with coupling = \"johnson\", " + advice;
+    }
+
     dissimilar_zones& zones_of_point() override { return load_ ? coupling_.zones() : zones_; }
     tangential_solver& solver_of_point() override { return load_ ? coupling_.tangential() : tangential_; }
 
@@ -326,6 +361,7 @@ private:
         return point_;
     }
 
+    std::optional<double> johnson_layers_;  // layers_relative_bound at Johnson's level, for the advice
     full_coupling coupling_;
     std::optional<double> load_;  // the load of the last coupled point; empty: none solved
     tangential_solution point_;

@@ -96,12 +96,28 @@ void check_edge_zones_resolvable(double beta_d, double f, double Q, int n) {
     if (thickness >= thinnest) return;
     // The |beta_D| at which the estimate reaches the thinnest zone: pi f kappa/log(2/thinnest).
     const double needed = M_PI * f * edge_kappa(beta_d, f, Q) / std::log(2.0 / thinnest);
+    // The n from which thinnest_edge_zone(n) is below the zone, where that n exists.
+    const double first_n = std::ceil(std::sqrt(0.01 * 0.5 * M_PI * M_PI / thickness));
     std::ostringstream msg;
     msg.precision(3);
-    msg << "beta_d = " << beta_d << " is below what the dissimilar zone search resolves at Q/f = " << Q / f
-        << " and n = " << n << " (|beta_d| >= " << needed << " needed: the slip zone at the leading edge, about "
-        << thickness << " thick, is thinner than " << thinnest << ", docs/formulation.md 8(j) item 11); set beta_d = 0 "
-        << "(equal materials) for the paper's problem, whose results differ by O(beta_d)";
+    msg << "dissimilar rollers (beta_d = " << beta_d << ") at Q/f = " << Q / f << " and n = " << n
+        << ": the slip zone at the leading edge (";
+    if (thickness > 0.0)
+        msg << "about " << thickness << " of the half-width";
+    else
+        msg << "below the smallest double";
+    msg << ") is thinner than the " << thinnest << " the zone search resolves (|beta_d| >= " << needed
+        << " needed; docs/formulation.md 8(j) item 11)";
+    if (first_n <= max_nodes)
+        msg << "; a larger n (" << static_cast<int>(first_n) << " to " << max_nodes
+            << ") passes this bound, but the search is not known to answer near it";
+    else
+        msg << "; no n up to " << max_nodes << " resolves it, so the load is beyond the method's reach for these "
+            << "rollers";
+    // Equal materials move xi by O(beta_D) ((4/pi^2) |beta_D| at no slip, 8(f)) against a creep of the order
+    // of |Q|: a fair model only where that is within the default tolerance (never at free rolling).
+    if (std::fabs(beta_d) <= default_tolerance * std::fabs(Q))
+        msg << "; set beta_d = 0 (equal materials) for the paper's problem, whose results differ by O(beta_d)";
     throw resolution_error(msg.str());
 }
 

@@ -146,10 +146,12 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     };
     std::optional<best_reached> best;
     std::string last_reason, skipped, beyond_all;
+    bool refused_last = false;  // the last rung tried refused the point (its reason says what to change)
     std::vector<bool> skip(rungs_.size(), false);
     for (std::size_t i = from; i < rungs_.size() && beyond_all.empty(); ++i) {
         const int n = rungs_[i];
         if (skip[i]) continue;
+        refused_last = false;
         try {
             contact& c = at(n);
             answer a = solve(c, n);
@@ -189,6 +191,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
         } catch (const resolution_error& e) {  // this rung cannot answer: the next may
             last_reason = one_line(e.what());
+            refused_last = true;
         }
     }
     const std::string top = std::to_string(rungs_.back());
@@ -204,7 +207,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + top + ": " + last_reason +
-               skipped + "); give n to see that point, or try another method or zone search";
+               skipped + ")" + (refused_last ? "" : "; give n to see that point, or try another method or zone search");
     }
     throw resolution_error(msg);
 }
