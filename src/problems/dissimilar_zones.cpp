@@ -451,7 +451,8 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
         if (fresh) at->second = traction(*s.five, r);
         return at->second;
     }
-    if (s.layout.layers_neglected()) return no_slip_traction(beta_d_, r);  // 8(n)
+    if (s.layout.layers_neglected())  // 8(n): f p on the layers, the no-slip traction on the main stick zone
+        return layers_neglected_traction(s.layout, beta_d_, f_, solver_.normal().pressure(r), r);
     // solver_.traction is sign (f p + q0); the blended zone subtracts 2 f p (1 - H) (8(g)).
     const double t = solver_.traction(s, r);
     if (!s.layout.opposite()) return t;

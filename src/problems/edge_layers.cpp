@@ -26,6 +26,14 @@ constexpr double leading_correction = 0.25;
 // and gives 1 - c1 from 0.8734 t_c (L = 4.4) rising to 0.8992 t_c (L -> infinity; 8(n), solved with
 // QUADPACK), plus 0.27 t_c^2 (measured); the five zones continued in f give 0.8796 to 0.8863 t_c for t_c
 // from 8.2e-5 to 2.5e-2: 0.889 t_c within 0.011 t_c for every t_c up to the largest measured.
+// The band [0.878, 0.900] is tightest at its top, 0.0008 t_c above the inner problem's limit 0.8992 (review of
+// the layers' positions), and that margin is enough: the limit is reached only as t_c -> 0, and below
+// t_c = DBL_EPSILON the bound carries t_c itself (`rounding` below), so the band alone bounds the end only where
+// L <= log(2/DBL_EPSILON) = 36.7, where Y1 <= 0.8953 (+ 0.27 t_c, below 1e-15 there): a top margin of at least
+// 0.0047 t_c, against the inner problem's error 6e-6 (QUADPACK against GSL) and the correction's spread
+// (0.269 to 0.274 t_c, 1.3e-4 t_c at t_c = 0.026, where the bottom margin is 0.0022 t_c). Measured in
+// validation/test_free_rolling_every_f.cpp (TrailingLayerFromItsInnerProblem); widening it would loosen the
+// estimate without a reason.
 constexpr double trailing_ratio = 0.889;
 constexpr double trailing_spread = 0.011;
 constexpr double laws_measured_to = 0.026;
@@ -117,6 +125,23 @@ double no_slip_traction(double beta_d, double r) {
 
 double no_slip_creep(double beta_d) { return -4.0 * beta_d / (M_PI * M_PI); }
 
+double layers_neglected_traction(const zone_layout& layout, double beta_d, double f, double pressure, double r) {
+    // 8(n), "The layers' traction": the leading layer is one slip zone of the model, p1 = -sgn(beta_D) f p
+    // exactly (8(g), 8(j) 4a, "Sharper: the leading layer"); the trailing layer slips with sgn(beta_D) where
+    // it meets the main stick zone (the inner problem's slip+ on (Y2, Y1) t_c from the edge, where p1_ns
+    // exceeds f p and the model holds it at f p), its last 0.24 t_c a stick zone and reversed slip, not
+    // resolved: reported as that first slip. The no-slip traction would exceed f p in both (|p1_ns| = f p at
+    // t_c from each edge, 8(g)), against the zones. The ends belong to the slip zones: p1 = +-f p there (the
+    // model's traction is continuous at s1 and c1).
+    // On the main stick zone the no-slip traction held to [-f p, f p]: it exceeds f p within t_c of either edge,
+    // i.e. on [s1, -1 + t_c) and (1 - t_c, c1] (s1 and c1 lie 0.54 and 0.89 t_c from the edges), where the model's
+    // stick traction obeys (3.3); the projection onto [-f p, f p] is never farther from it than p1_ns.
+    const double limit = f * pressure;
+    for (const zone& z : layout.zones)
+        if (!z.stick && r >= z.from && r <= z.to) return z.direction * limit;
+    return std::max(-limit, std::min(limit, no_slip_traction(beta_d, r)));
+}
+
 tangential_solution dissimilar_zones::layers_neglected_point() {
     const neglected_layers layers = no_slip_layers(beta_d_, f_);
     // The main stick zone [s1, c1] where the model has it (8(n)), its creep to first order in t_c; the
@@ -127,8 +152,9 @@ tangential_solution dissimilar_zones::layers_neglected_point() {
     s.forcing = beta_d_;  // the frame's sign is 1: beta_D itself (8(h) is built into the closed form)
     s.layout = opposite_zones(s1, c1, beta_d_ > 0.0 ? 1 : -1);
     s.layout.route = zone_route::layers_neglected;
-    // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)); the layers'
-    // traction is neglected, so no slip zone is checked.
+    // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)): on p1_ns itself,
+    // which the reported traction (layers_neglected_traction) is there unless it exceeds f p. The layers' slip
+    // velocity is not resolved (reported 0), so no slip zone is checked.
     const double t = std::min(layers.thickness, 0.5);
     const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};
     s.checks = check_zones(

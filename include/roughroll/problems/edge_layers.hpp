@@ -6,9 +6,9 @@
 //   p1(r) = -(2 beta_D/pi^2) sqrt(1 - r^2) log((1 - r)/(1 + r)),   xi = -4 beta_D/pi^2,
 // with |p1|/(f p) = (|beta_D|/(pi f)) |log((1 - r)/(1 + r))| above 1 only in the layers
 //   t_c = 2/(1 + exp(pi f/|beta_D|))   (about 2 exp(-pi f/|beta_D|))
-// at each edge, where the model slips (8(g)). The layers' traction is neglected; the point reports
-// the model's main stick zone [s1, c1] and its creep to first order in t_c (8(n), "The layers'
-// positions"):
+// at each edge, where the model slips (8(g)). The layers' effect on the main stick zone's traction is
+// neglected; the point reports the model's main stick zone [s1, c1] and its creep to first order in t_c
+// (8(n), "The layers' positions"), and the traction f p on the layers (layers_neglected_traction):
 //   1 + s1 = (4/e^2) t_c   (derived: the leading layer's entry condition, an inner problem on the
 //                           scale t_c),
 //   1 - c1 = 0.889 t_c     (the trailing layer's inner problem, whose answer drifts with log(1/t_c)
@@ -22,6 +22,8 @@
 // |xi_model + 4 beta_D/pi^2|. The checks (3.3)-(3.4) hold on [-1 + t, 1 - t]. P_H/P2 is Johnson's
 // (not moved by the tangential traction).
 #pragma once
+
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -44,5 +46,10 @@ neglected_layers no_slip_layers(double beta_d, double f);
 // The no-slip solution of 8(f) at Q = 0: its traction p1(r) on [-1, 1] and its creep xi.
 double no_slip_traction(double beta_d, double r);
 double no_slip_creep(double beta_d);
+
+// The traction the layers-neglected point reports at r (8(n), "The layers' traction"): on a slip zone of its
+// layout (the layers) f p with the zone's direction, the sign of p1 there (-sgn(beta_D) on the leading layer,
+// sgn(beta_D) on the trailing one); on its stick zone the no-slip traction. `pressure` is p at r.
+double layers_neglected_traction(const zone_layout& layout, double beta_d, double f, double pressure, double r);
 
 }  // namespace roughroll
