@@ -529,7 +529,8 @@ TEST(FreeRollingEveryF, TrailingLayerFromItsInnerProblem) {
     gsl_set_error_handler_off();
     std::vector<double> y{0.8734, 0.2516, 0.0497};
     double previous = 0.0;
-    for (const double tc : {2.5e-2, 2.85e-3, 1.0774624328038951e-4, 8.2004e-5, 1e-6, 1e-10, DBL_EPSILON, 1e-40, 1e-80, 1e-300}) {
+    for (const double tc :
+         {2.5e-2, 2.85e-3, 1.0774624328038951e-4, 8.2004e-5, 1e-6, 1e-10, DBL_EPSILON, 1e-40, 1e-80, 1e-300}) {
         const double L = std::log(2.0 / tc);
         y = trailing_layer(L, y);
         std::printf("t_c = %.3g (L = %.2f): Y1 = %.6f, Y2 = %.6f, Y3 = %.6f\n", tc, L, y[0], y[1], y[2]);
@@ -694,10 +695,15 @@ struct leading_inner {
         return (J - 2.0 * gA / std::sqrt(A)) / M_PI;
     }
     // (1/pi) PV int_0^inf d(S)/(S - X) dS at X > A: g on (0, A) (QAWS), d on (A, 2X + 1) (QAWC), the tail (QAGIU).
-    double half_line(double A, double X) {
+    // The slip zone's part alone, (1/pi) int_0^A g(S)/(S - X) dS: what the stick zone's d cancels.
+    double slip_part(double A, double X) {
         auto on_slip = [X](double S) { return -1.0 / (S - X); };
-        const double slip =
-            qaws([](double S, void* p) { return (*static_cast<decltype(on_slip)*>(p))(S); }, &on_slip, 0.0, A, 0.5, 0.0, 1);
+        return qaws([](double S, void* p) { return (*static_cast<decltype(on_slip)*>(p))(S); }, &on_slip, 0.0, A,
+                    0.5, 0.0, 1) /
+               M_PI;
+    }
+    double half_line(double A, double X) {
+        const double slip = M_PI * slip_part(A, X);
         auto on_stick = [&](double S) { return d(A, S); };
         gsl_function F{[](double S, void* p) { return (*static_cast<decltype(on_stick)*>(p))(S); }, &on_stick};
         double pv = 0.0, tail = 0.0, error = 0.0;
@@ -720,9 +726,11 @@ TEST(FreeRollingEveryF, LeadingLayerFromItsInnerProblem) {
     // (1) The bounded solution solves the half-line equation (at A = 4/e^2 and at a wrong A alike).
     for (const double A : {root_expected, 0.5}) {
         for (const double X : {0.7, 1.0, 2.0, 5.0}) {
-            const double residual = p.half_line(A, X);
-            std::printf("A = %.6f, X = %.1f: (1/pi) PV int d/(S - X) = %.3g\n", A, X, residual);
+            const double residual = p.half_line(A, X), slip = p.slip_part(A, X);
+            std::printf("A = %.6f, X = %.1f: (1/pi) PV int d/(S - X) = %.3g (the slip zone's part %.4g)\n", A, X,
+                        residual, slip);
             EXPECT_LT(std::fabs(residual), 1e-8) << A << " " << X;
+            EXPECT_GT(std::fabs(slip), 1e-3) << A << " " << X;  // a cancellation, not two zeros
         }
     }
     // (2) c(A) against the formula's d near A: (d(A + h) - g(A))/sqrt(h) = c + k sqrt(h) + O(h), extrapolated.

@@ -26,14 +26,15 @@ constexpr double leading_correction = 0.25;
 // and gives 1 - c1 from 0.8734 t_c (L = 4.4) rising to 0.8992 t_c (L -> infinity; 8(n), solved with
 // QUADPACK), plus 0.27 t_c^2 (measured); the five zones continued in f give 0.8796 to 0.8863 t_c for t_c
 // from 8.2e-5 to 2.5e-2: 0.889 t_c within 0.011 t_c for every t_c up to the largest measured.
-// The band [0.878, 0.900] is tightest at its top, 0.0008 t_c above the inner problem's limit 0.8992 (review of
-// the layers' positions), and that margin is enough: the limit is reached only as t_c -> 0, and below
-// t_c = DBL_EPSILON the bound carries t_c itself (`rounding` below), so the band alone bounds the end only where
-// L <= log(2/DBL_EPSILON) = 36.7, where Y1 <= 0.8953 (+ 0.27 t_c, below 1e-15 there): a top margin of at least
-// 0.0047 t_c, against the inner problem's error 6e-6 (QUADPACK against GSL) and the correction's spread
-// (0.269 to 0.274 t_c, 1.3e-4 t_c at t_c = 0.026, where the bottom margin is 0.0022 t_c). Measured in
-// validation/test_free_rolling_every_f.cpp (TrailingLayerFromItsInnerProblem); widening it would loosen the
-// estimate without a reason.
+// The band [0.878, 0.900] is tightest at its top, 0.0008 t_c above the inner problem's limit 0.8992 (review
+// of the layers' positions), and that margin is enough: the limit is reached only as t_c -> 0, and below
+// t_c = DBL_EPSILON the bound carries t_c itself (`rounding` below), so the band alone bounds the end only
+// where L <= log(2/DBL_EPSILON) = 36.7, where Y1 + 0.27 t_c <= 0.8953 (largest at t_c = DBL_EPSILON: Y1
+// rises as t_c falls, faster than the correction falls): a top margin of at least 0.0047 t_c, against the
+// inner problem's error 6e-6 (QUADPACK against GSL) and the correction's spread (0.269 to 0.274 t_c:
+// 1.3e-4 t_c at t_c = 0.026, where the bottom margin is 0.0022 t_c). Measured in
+// validation/test_free_rolling_every_f.cpp (TrailingLayerFromItsInnerProblem); widening the band would
+// loosen the estimate without a reason.
 constexpr double trailing_ratio = 0.889;
 constexpr double trailing_spread = 0.011;
 constexpr double laws_measured_to = 0.026;

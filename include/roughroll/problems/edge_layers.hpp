@@ -49,7 +49,8 @@ double no_slip_creep(double beta_d);
 
 // The traction the layers-neglected point reports at r (8(n), "The layers' traction"): on a slip zone of its
 // layout (the layers) f p with the zone's direction, the sign of p1 there (-sgn(beta_D) on the leading layer,
-// sgn(beta_D) on the trailing one); on its stick zone the no-slip traction. `pressure` is p at r.
+// sgn(beta_D) on the trailing one); on its stick zone the no-slip traction held to [-f p, f p] (it exceeds f p
+// within t_c of the edges). `pressure` is p at r.
 double layers_neglected_traction(const zone_layout& layout, double beta_d, double f, double pressure, double r);
 
 }  // namespace roughroll
