@@ -237,7 +237,7 @@ scene betatype "$(printf 'beta_d = "0.1"\n%s\n' "$good")"
 scene coupling "$(printf 'coupling = "strong"\n%s\n' "$good")"
 scene couplingtype "$(printf 'coupling = 1\n%s\n' "$good")"
 scene pairfull "$(printf 'coupling = "full"\n%s\n' "$pair")"
-scene betaoneparam "$(printf 'beta_d = 0.1\n%s\nmethod = "one-parameter"\n' "$good")"
+scene betaoneparam "$(printf 'beta_d = 0.1\ncoupling = "full"\n%s\nmethod = "one-parameter"\n' "$good")"
 scene betasingle "$(printf 'beta_d = 0.1\n%s\nzones = "single"\n' "$good")"
 expect pair-poisson-range "'cylinder1.poisson' must be in (-1, 0.5]" -- point "$dir/pairnu.toml"
 expect pair-poisson-minus-one "'cylinder2.poisson' must be in (-1, 0.5]" -- point "$dir/pairnulow.toml"
@@ -256,7 +256,7 @@ expect coupling-type "toml: 'coupling' must be a string" -- point "$dir/coupling
 # A physical scene at full coupling settles a width per load (the curve's rows too): a sweep in c0
 # is refused as for every beta_d != 0, before any width is searched.
 expect coupling-full-physical-sweep "a curve swept in c0" -- curve "$dir/pairfull.toml" --sweep --points 3
-expect beta-one-parameter "not available for method 'one-parameter'" -- point "$dir/betaoneparam.toml"
+expect beta-one-parameter "only Johnson's level is derived for the one-parameter limit" -- point "$dir/betaoneparam.toml"
 expect beta-zones-single "zones 'single' with beta_d != 0" -- point "$dir/betasingle.toml"
 scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"
 expect beta-sweep "solve the curve at given loads instead: curve without --sweep" -- curve "$dir/betafree.toml" --sweep --points 3

@@ -53,10 +53,13 @@ std::string no_three_zones(double Q, double f, const std::string& why) {
 void check_dissimilar(const dissimilar& materials, const solver_options& options) {
     check_beta_d(materials.beta_d);
     if (materials.beta_d == 0.0) return;  // the paper's problem at both coupling levels (8(d))
+    const bool limit = options.how == method::one_parameter;  // Johnson's level only (8(s)); its paper's zone may hold
     const char* refusal =
-        options.how == method::one_parameter
-            ? "beta_d != 0 is not available for method 'one-parameter': its edge behaviour is not "
-              "derived (docs/formulation.md 8(g)); use 'product' or 'extrapolated'"
+        limit ? (materials.coupling == coupling_level::full
+                     ? "coupling 'full' with method 'one-parameter' and beta_d != 0: only Johnson's level is derived "
+                       "for the one-parameter limit (docs/formulation.md 8(s)); use coupling = \"johnson\", or method "
+                       "'product' or 'extrapolated'"
+                     : nullptr)
         : options.zones == zone_search::single
             ? "zones 'single' with beta_d != 0: the paper's stick zone from r = -1 is never the answer "
               "for dissimilar rollers (docs/formulation.md 8(g)); use 'auto' or 'general'"

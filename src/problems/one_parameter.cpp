@@ -13,6 +13,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
@@ -102,15 +103,17 @@ normal_solution one_parameter_normal(double eps2, int n) {
                            nullptr};
 }
 
-one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int n)
+one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int n, double beta_d)
     : eps_(eps),
       f_(f),
       n_(n),
+      beta_d_(beta_d),
       tangential_system_((check_node_count(n), static_cast<std::size_t>(n) + 1)),
       normal_(one_parameter_normal(eps.normal, n)) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     if (!(std::isfinite(eps.tangential) && eps.tangential >= 0.0))
         throw input_error("the tangential compliance eps1 must be finite and >= 0");
+    check_beta_d(beta_d);
     // The c0-independent parts of the stick equation's rows: sin phi_m and cos((j+1) phi_m).
     sin_.resize(n_ + 1);
     cos_.resize(static_cast<std::size_t>(n_ + 1) * n_);
@@ -139,14 +142,21 @@ double one_parameter_solver::G(double r) const {
     return linear + (eps_.normal - eps_.tangential) * pressure_slope(r);
 }
 
-tangential_solution one_parameter_solver::solve_system(double c0) { return solve_on_zone(-1.0, c0); }
+double one_parameter_solver::sliding_velocity(double forcing, double r) const {
+    return forcing == 0.0 ? f_ * G(r) : forcing * normal_.pressure(r) + f_ * G(r);  // 8(s), as 8(g)
+}
 
-tangential_solution one_parameter_solver::solve_on_zone(double start, double c0) {
-    // "The one-parameter limit", stick equation: H[q] + (eps1/rho) q'(t) = xi + f G(r(t)) with
+tangential_solution one_parameter_solver::solve_system(double c0, double forcing) {
+    return solve_on_zone(-1.0, c0, forcing);
+}
+
+tangential_solution one_parameter_solver::solve_on_zone(double start, double c0, std::optional<double> given) {
+    const double forcing = given.value_or(forcing_at(1.0));
+    // "The one-parameter limit", stick equation: H[q] + (eps1/rho) q'(t) = xi + b p(r(t)) + f G(r(t)) with
     // q = sum_j c_j sin((j+1) phi), t = cos phi, multiplied by -sin phi at the points of (4.7):
-    //   sum_j c_j cos((j+1) phi_m) [sin phi_m + (eps1/rho)(j+1)] + xi sin phi_m = -f G(r_m) sin phi_m,
+    //   sum_j c_j cos((j+1) phi_m) [sin phi_m + (eps1/rho)(j+1)] + xi sin phi_m = -(b p(r_m) + f G(r_m)) sin phi_m,
     // on the stick zone [start, c0], r = start + rho (t + 1) (docs/formulation.md 7(g); the
-    // paper's zone is start = -1, E4).
+    // paper's zone is start = -1, E4); b is Dundurs' forcing of the |Q| problem (8(s), (D2) at Johnson's level).
     const double rho = 0.5 * (c0 - start);
     const double stiffness = eps_.tangential / rho;
     gsl_matrix* a = tangential_system_.matrix();
@@ -156,7 +166,7 @@ tangential_solution one_parameter_solver::solve_on_zone(double start, double c0)
             gsl_matrix_set(a, m, j, cos_[static_cast<std::size_t>(m) * n_ + j] * (sin_[m] + stiffness * (j + 1)));
         gsl_matrix_set(a, m, n_, sin_[m]);
         const double r = start + rho * (normal_.rule.collocation[m] + 1.0);  // E4
-        gsl_vector_set(rhs, m, -f_ * G(r) * sin_[m]);                        // E5
+        gsl_vector_set(rhs, m, -sliding_velocity(forcing, r) * sin_[m]);     // E5, 8(s)
     }
     std::ostringstream context;
     context.precision(17);
@@ -165,16 +175,34 @@ tangential_solution one_parameter_solver::solve_on_zone(double start, double c0)
     std::vector<double> psi_b(n_);
     for (int j = 0; j < n_; ++j) psi_b[j] = gsl_vector_get(x, j);
     const double Q = f_ + rho * M_PI_2 * psi_b[0];  // (3.22): rho int q = Q - f, int q = (pi/2) c_0
-    return zone_solution(f_, start, c0, gsl_vector_get(x, n_), Q, std::move(psi_b), tangential_system_.rcond());
+    tangential_solution s =
+        zone_solution(f_, start, c0, gsl_vector_get(x, n_), Q, std::move(psi_b), tangential_system_.rcond());
+    s.forcing = forcing;
+    return s;
 }
 
-tangential_solution one_parameter_solver::full_stick() const {
-    // q = -f p, xi = 0 (H[p] + eps1 p' = -G on the whole contact), as for tangential_solver.
-    return full_stick_solution(f_, normal_.b);
+tangential_solution one_parameter_solver::full_stick(double forcing) {
+    // q = -f p, xi = 0 (H[p] + eps1 p' = -G on the whole contact), as for tangential_solver. With
+    // Dundurs' forcing the stick traction is p1 = f p + q, odd (8(s): H + eps1 d/dr maps odd onto even
+    // functions and b p is even), so Q = 0 again, from the system on the whole contact.
+    if (forcing == 0.0) return full_stick_solution(f_, normal_.b);
+    tangential_solution s = solve_on_zone(-1.0, 1.0, forcing);
+    s.Q = 0.0;  // int p1 = 0 by parity; the sum f + (pi/2) c_0 is that to rounding
+    return s;
 }
 
-tangential_solution one_parameter_solver::gross_sliding() const {
-    const tangential_solution s = gross_sliding_at(f_, -1.0, -f_ * G(-1.0));  // 2(g)
+tangential_solution one_parameter_solver::gross_sliding(double forcing) const {
+    // 2(g); with Dundurs' forcing the stick point is where w = b p + f G is least (8(s), as 8(g)).
+    const auto sampled = [&](const std::vector<double>& r) {
+        std::vector<double> out(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) out[i] = sliding_velocity(forcing, r[i]);
+        return out;
+    };
+    tangential_solution s = forcing == 0.0 ? gross_sliding_at(f_, -1.0, -f_ * G(-1.0))
+                                           : roughroll::gross_sliding(f_, 1.0, sampled, [&](double r) {
+                                                 return sliding_velocity(forcing, r);
+                                             });
+    s.forcing = forcing;
     if (!std::isfinite(s.xi))
         throw input_error(
             "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
@@ -184,29 +212,33 @@ tangential_solution one_parameter_solver::gross_sliding() const {
 
 tangential_solution one_parameter_solver::at_stick_end(double c0, bool checked) {
     if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
-    tangential_solution s = c0 == 1.0 ? full_stick() : c0 == -1.0 ? gross_sliding() : solve_system(c0);
+    const double forcing = forcing_at(1.0);  // the Q >= 0 branch
+    tangential_solution s = c0 == 1.0    ? full_stick(forcing)
+                            : c0 == -1.0 ? gross_sliding(forcing)
+                                         : solve_system(c0, forcing);
     if (checked) s.checks = check(s);
     return s;
 }
 
-double one_parameter_solver::load(double c0) {
+double one_parameter_solver::load(double c0, std::optional<double> forcing) {
     if (c0 <= -1.0) return f_;
-    if (c0 >= 1.0) return 0.0;
-    return solve_system(c0).Q;
+    if (c0 >= 1.0) return 0.0;  // full stick: p1 odd (8(s))
+    return solve_system(c0, forcing.value_or(forcing_at(1.0))).Q;
 }
 
 tangential_solution one_parameter_solver::solve(double Q, std::optional<double> guess) {
+    const double forcing = forcing_at(Q);  // the |Q| problem's (8(s))
     const auto search = [&](double target) {
         check_load_resolvable(target, f_);
-        // Q(-1) = f > |Q| and, at c0 = 1, q = -f p gives Q = 0 < |Q| (root_search.hpp).
-        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess,
+        // Q(-1) = f > |Q| and, at c0 = 1, full stick gives Q = 0 < |Q| (root_search.hpp, 8(s)).
+        const root c0 = stick_end_for_load([&](double c) { return load(c, forcing); }, target, guess,
                                            "one-parameter Brent search for c0");
-        tangential_solution s = solve_system(c0.x);
+        tangential_solution s = solve_system(c0.x, forcing);
         s.iterations = c0.iterations;
         return s;
     };
     tangential_solution s = at_load(
-        Q, f_, [this] { return full_stick(); }, [this] { return gross_sliding(); }, search,
+        Q, f_, [&] { return full_stick(forcing); }, [&] { return gross_sliding(forcing); }, search,
         "one-parameter tangential problem");
     s.checks = check(s);
     return s;
@@ -219,10 +251,11 @@ double one_parameter_solver::traction(const tangential_solution& s, double r) co
 double one_parameter_solver::slip_velocity_magnitude(const tangential_solution& s, double r) const {
     // (3.6) in the limit: v = xi - (H[p1] + eps1 p1') with p1 = f p + q. On the slip zone p1 = f p, and
     // H[p] + eps1 p' = -G by the normal equation, so v = xi + f G(r) - H[q](r), H[q] outside the stick
-    // interval (|t| > 1: cauchy_u_series, no principal value; t < -1 on a slip zone [-1, start)).
+    // interval (|t| > 1: cauchy_u_series, no principal value; t < -1 on a slip zone [-1, start)); plus
+    // Dundurs' b p of (D2) (8(s)).
     const double rho = s.rho();
     const double hq = s.psi_b.empty() || rho == 0.0 ? 0.0 : cauchy_u_series(s.psi_b, (r - s.start()) / rho - 1.0);
-    return s.sign * s.xi + f_ * G(r) - hq;
+    return s.sign * s.xi + sliding_velocity(s.forcing, r) - hq;
 }
 
 double one_parameter_solver::slip_velocity(const tangential_solution& s, double r) const {
@@ -233,7 +266,10 @@ double one_parameter_solver::slip_velocity(const tangential_solution& s, double 
 traction_checks one_parameter_solver::check(const tangential_solution& s) const {
     // (3.3) to the rounding of the collocation solution, as tangential_solver::rounding: the terms of
     // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q; (3.4) likewise.
-    const double rounding = stick_system_floor(n_, std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda))) / f_;
+    // Dundurs' b p adds |b| max p to that size (8(s); p is even and largest at r = 0).
+    const double size =
+        std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda)) + std::fabs(s.forcing) * normal_.pressure(0.0);
+    const double rounding = stick_system_floor(n_, size) / f_;
     return check_zones(
         s.layout.zones, {f_, least_pressure(normal_), rounding, true, nullptr, nullptr},
         [this](double r) { return normal_.pressure(r); }, [&](double r) { return traction(s, r); },

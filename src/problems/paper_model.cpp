@@ -4,6 +4,9 @@
 // on the two-parameter collocation (with Richardson's rule for 'extrapolated') or on the one-parameter
 // limit's Glauert system (7(g)); and make_point_model, which chooses the model once.
 #include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/one_parameter.hpp"
@@ -182,12 +185,15 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
     return s;
 }
 
-// The one-parameter limit (one_parameter_solver): no levels below, no extrapolation.
+// The one-parameter limit (one_parameter_solver): no levels below, no extrapolation. For dissimilar
+// rollers (Johnson's level, docs/formulation.md 8(s)) one search per sign of Q, each with its forcing
+// sgn(Q) beta_D, and a point whose checks fail refused: its structure (slip against Q at an edge) is not built.
 class limit_model final : public zone_model {
 public:
-    limit_model(const roughness& surfaces, double f, const solver_options& options)
-        : zone_model(options), limit_(surfaces, f, options.nodes()) {
-        zones_ = std::make_unique<zone_solver>(limit_.zone_operator());
+    limit_model(const roughness& surfaces, double f, const solver_options& options, double beta_d)
+        : zone_model(options), limit_(surfaces, f, options.nodes(), beta_d) {
+        zones_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(1.0)));
+        if (beta_d != 0.0) braked_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(-1.0)));
         checks_always_ = true;
     }
     const normal_solution& normal() const override { return limit_.normal(); }
@@ -200,9 +206,26 @@ public:
     }
     tangential_solution general(double Q, std::optional<zone_guess>) override {
         checkpoint();
-        return zones_->solve(Q, true);
+        return (Q < 0.0 && braked_ ? braked_ : zones_)->solve(Q, true);
     }
     tangential_solution point(double Q, const std::function<std::vector<point_model*>()>&) override {
+        tangential_solution s = limit_point(Q);
+        if (limit_.beta_d() == 0.0 || s.checks.hold()) return s;
+        // Dissimilar rollers: refused, with the search's zone where there is one (its margins, not the paper zone's).
+        std::optional<tangential_solution> searched;
+        if (s.layout.general()) {
+            searched = s;
+        } else if (options_.zones != zone_search::single) {
+            try {
+                searched = general(Q, std::nullopt);
+            } catch (const error&) {  // no zone of the structure: its refusal is the one below
+            }
+        }
+        refuse_dissimilar(searched.value_or(s));
+    }
+
+private:
+    tangential_solution limit_point(double Q) {
         // Its search is cheap: no starts from the levels below.
         if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);
         // The one-parameter paper's zone can be singular where the general zone is not (its
@@ -213,13 +236,31 @@ public:
             return general(Q, std::nullopt);
         }
     }
-
-private:
+    // A point of dissimilar rollers whose checks fail (8(s)): a zone between slips with Q whose stick margin alone
+    // fails, by less than entry_floor, is the entry's discretisation (7(h): -6.9e-8, -5.7e-9, +1.2e-9 at n = 64, 128,
+    // 256 measured), which a larger n resolves; anything else is a structure with slip against Q, not built.
+    [[noreturn]] void refuse_dissimilar(const tangential_solution& s) const {
+        constexpr double entry_floor = 1e-6;
+        const bool discretisation =
+            s.layout.general() && s.checks.slip_margin >= 0.0 && s.checks.stick_margin > -entry_floor;
+        std::ostringstream msg;
+        msg.precision(3);
+        msg << "method 'one-parameter' with beta_d = " << limit_.beta_d() << " at Q/f = " << s.Q / limit_.friction()
+            << ": the stick zone fails (3.3)-(3.4) (margins: stick " << s.checks.stick_margin << ", slip "
+            << s.checks.slip_margin << "); "
+            << (discretisation ? "the entry's discretisation (docs/formulation.md 7(h)): set n = " +
+                                     std::to_string(2 * options_.nodes())
+                               : std::string("the zones have slip against Q (free rolling: in both directions), which "
+                                             "the limit does not build (docs/formulation.md 8(s)): use method 'product' "
+                                             "or 'extrapolated'"));
+        throw resolution_error(msg.str());
+    }
     tangential_solution solve(double Q, std::optional<double> guess, bool, std::optional<double>) override {
         return limit_.solve(Q, guess);
     }
 
     one_parameter_solver limit_;
+    std::unique_ptr<zone_solver> braked_;  // Q < 0 with beta_D != 0: the forcing -beta_D (8(s))
 };
 
 }  // namespace
@@ -227,7 +268,8 @@ private:
 std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double f, const solver_options& options,
                                               const dissimilar& materials, normal_cache* cache,
                                               point_model* companion) {
-    if (options.how == method::one_parameter) return std::make_unique<limit_model>(surfaces, f, options);
+    if (options.how == method::one_parameter)
+        return std::make_unique<limit_model>(surfaces, f, options, materials.beta_d);  // Johnson's level (8(s))
     if (materials.beta_d != 0.0) return make_dissimilar_model(surfaces, f, options, materials, cache);
     return std::make_unique<collocation_model>(surfaces, f, options, cache, companion);
 }

@@ -98,17 +98,21 @@ std::optional<tangential_solution> continuation(tangential_solver& single, doubl
     return model_zone();
 }
 
-std::optional<std::pair<double, double>> brush_zone(const one_parameter_solver& single, double magnitude,
-                                                    double point) {
-    // A short zone at r*, where G is least: eps1/rho dominates H (the brush model), and with
-    // f G = f G* + k (r - r*)^2, k = f G''/2, the stick equation eps1 q' = xi + f G, q(s) = q(c) = 0
-    // and the entry condition q'(s) = 0 give the zone [r* - L/3, r* + 2L/3] and
-    // f - |Q| = k L^4/(36 eps1) (docs/formulation.md 7(g)). Empty at an edge or where G'' <= 0.
+std::optional<std::pair<double, double>> brush_zone(const one_parameter_solver& single, double forcing,
+                                                    double magnitude, double point) {
+    // A short zone at r*, where w = b p + f G is least (b = 0 but for dissimilar rollers, 8(s)): eps1/rho
+    // dominates H (the brush model), and with w = w* + k (r - r*)^2, k = w''/2, the stick equation
+    // eps1 q' = xi + w, q(s) = q(c) = 0 and the entry condition q'(s) = 0 give the zone
+    // [r* - L/3, r* + 2L/3] and f - |Q| = k L^4/(36 eps1) (docs/formulation.md 7(g)). Empty at an edge or
+    // where w'' <= 0.
     const double eps1 = single.eps().tangential, f = single.friction();
     const double room = std::min(1.0 + point, 1.0 - point);
     if (!(eps1 > 0.0 && room > 0.0)) return std::nullopt;
     const double h = std::min(1e-3, 0.25 * room);
-    const double k = 0.5 * f * (single.G(point - h) - 2.0 * single.G(point) + single.G(point + h)) / (h * h);
+    // w/scale: G itself without Dundurs' forcing (scale f), so that the paper's problem keeps its digits.
+    const double scale = forcing == 0.0 ? f : 1.0;
+    const auto w = [&](double r) { return forcing == 0.0 ? single.G(r) : single.sliding_velocity(forcing, r); };
+    const double k = 0.5 * scale * (w(point - h) - 2.0 * w(point) + w(point + h)) / (h * h);
     if (!(k > 0.0 && std::isfinite(k))) return std::nullopt;
     const double L = std::pow(36.0 * eps1 * (f - magnitude) / k, 0.25);
     if (!(point - L / 3.0 > -1.0 && point + 2.0 * L / 3.0 <= 1.0)) return std::nullopt;
@@ -153,14 +157,15 @@ stick_zone_operator tangential_solver::zone_operator() {
 }
 
 double one_parameter_solver::entry_velocity(const tangential_solution& s) const {
-    // 7(g): at t = -1 the stick equation reads (eps1/rho) q'(-1) = xi + f G(start) - H[q](-1), and
-    // H[sin((j+1) phi)] = -T_{j+1}(t) gives H[q](-1) = -sum_j c_j T_{j+1}(-1) = sum_j (-1)^j c_j.
+    // 7(g): at t = -1 the stick equation reads (eps1/rho) q'(-1) = xi + b p(start) + f G(start) - H[q](-1)
+    // (b: Dundurs' forcing, 8(s)), and H[sin((j+1) phi)] = -T_{j+1}(t) gives
+    // H[q](-1) = -sum_j c_j T_{j+1}(-1) = sum_j (-1)^j c_j.
     double h = 0.0;
     for (std::size_t j = 0; j < s.psi_b.size(); ++j) h += (j % 2 == 0 ? 1.0 : -1.0) * s.psi_b[j];
-    return s.xi + f_ * G(s.start()) - h;
+    return s.xi + sliding_velocity(s.forcing, s.start()) - h;
 }
 
-stick_zone_operator one_parameter_solver::zone_operator() {
+stick_zone_operator one_parameter_solver::zone_operator(double forcing) {
     stick_zone_operator op;
     op.f = f_;
     op.paper_zone = [this](double Q, bool) -> std::optional<tangential_solution> {
@@ -174,27 +179,29 @@ stick_zone_operator one_parameter_solver::zone_operator() {
             return std::nullopt;
         }
     };
-    op.solve = [this](double start, double end) { return solve_on_zone(start, end); };
+    op.solve = [this, forcing](double start, double end) { return solve_on_zone(start, end, forcing); };
     op.excess = [f = f_](const tangential_solution& t, double magnitude) {
         return t.rho() * M_PI_2 * t.psi_b[0] + (f - magnitude);  // as the collocation's (7(g))
     };
     op.empty_load = [f = f_](double) { return f; };
     // E needs no scale: Newton's step does not depend on the residuals' units.
     op.entry = op.newton_entry = [this](const tangential_solution& t) { return entry_velocity(t); };
-    op.gross_sliding = [this] {
-        return roughroll::gross_sliding(
-            f_, f_,
-            [this](const std::vector<double>& r) {
-                std::vector<double> out(r.size());
-                for (std::size_t i = 0; i < r.size(); ++i) out[i] = G(r[i]);
-                return out;
-            },
-            [this](double r) { return G(r); });
+    op.gross_sliding = [this, forcing] {
+        if (forcing == 0.0)
+            return roughroll::gross_sliding(
+                f_, f_,
+                [this](const std::vector<double>& r) {
+                    std::vector<double> out(r.size());
+                    for (std::size_t i = 0; i < r.size(); ++i) out[i] = G(r[i]);
+                    return out;
+                },
+                [this](double r) { return G(r); });
+        return gross_sliding(forcing);  // w = b p + f G (8(s))
     };
     op.check = [this](const tangential_solution& t) { return check(t); };
-    op.near_sliding = [this](double magnitude, double point,
-                             const zone_newton_from& newton) -> std::optional<tangential_solution> {
-        if (const auto zone = brush_zone(*this, magnitude, point)) return newton(zone->first, zone->second);
+    op.near_sliding = [this, forcing](double magnitude, double point,
+                                      const zone_newton_from& newton) -> std::optional<tangential_solution> {
+        if (const auto zone = brush_zone(*this, forcing, magnitude, point)) return newton(zone->first, zone->second);
         return std::nullopt;
     };
     op.method.name = "one-parameter zone search";
