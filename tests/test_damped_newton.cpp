@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The damped Newton of the zone ends (numerics/damped_newton.hpp): a root in three unknowns
 // against its closed form, the damping that keeps the iterate inside its domain, and the empty
-// answers (singular Jacobian, residual undefined at the start, no convergence).
+// answers (singular Jacobian, residual undefined at the start, no convergence); the stop at F's
+// rounding where it lies above the tolerance, and no stop there while Newton still contracts.
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -64,4 +67,52 @@ TEST(DampedNewton, EmptyWhenItCannotConverge) {
         return std::vector<double>{x[0] * x[0] + 1.0};
     };
     EXPECT_FALSE(damped_newton(with_steps(no_root), {0.5}, {40, 1e-12, 1e-6}));
+}
+
+namespace {
+// A rounding of 1e-9 that is a fixed function of x's bits (as an entry condition's at large n: the same x gives
+// the same F, the nearest other x another one): a hash of the bits, uniform in [-1e-9, 1e-9].
+double jitter(double x) {
+    std::uint64_t u = 0;
+    std::memcpy(&u, &x, sizeof u);
+    u *= 0x9E3779B97F4A7C15ULL;
+    u ^= u >> 29;
+    u *= 0xBF58476D1CE4E5B9ULL;
+    return 1e-9 * (static_cast<double>(u >> 11) * 0x1p-52 - 1.0);
+}
+}  // namespace
+
+TEST(DampedNewton, StopsAtTheRoundingOfF) {
+    // (x - 1, y - 2) with a rounding of 1e-9 at the tolerance 1e-12: the steps stay at 1e-9 and the iterations run
+    // out (the five zones' Newton at n >= 384 before the stop, docs/formulation.md 8(q)); told the rounding's size,
+    // Newton stops at the second step within it that does not contract, within the rounding of the root.
+    newton_problem p;
+    p.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] - 1.0 + jitter(x[0] + x[1]), x[1] - 2.0 + jitter(x[0] - x[1])};
+    };
+    p = with_steps(p);
+    EXPECT_FALSE(damped_newton(p, {1.5, 1.5}, {40, 1e-12, 1e-6}));
+    p.rounding = [](const std::vector<double>&) { return 1e-8; };
+    const auto root = damped_newton(p, {1.5, 1.5}, {40, 1e-12, 1e-6});
+    ASSERT_TRUE(root);
+    EXPECT_NEAR(root->x[0], 1.0, 2e-9);
+    EXPECT_NEAR(root->x[1], 2.0, 2e-9);
+    EXPECT_LE(root->iterations, 10);
+}
+
+TEST(DampedNewton, NoStopAtTheRoundingWhileNewtonContracts) {
+    // The smooth problem above told of a rounding far larger than its own: its steps contract (quadratically), so
+    // Newton goes on to the tolerance and the root is as exact as without it.
+    newton_problem p;
+    p.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] * x[0] + x[1] + x[2] - 3.0, x[0] + x[1] * x[1] - x[2] - 1.0,
+                                   std::exp(x[2] - 1.0) - x[0] * x[1]};
+    };
+    p = with_steps(p);
+    const auto plain = damped_newton(p, {1.3, 0.8, 1.2}, {40, 1e-12, 1e-6});
+    p.rounding = [](const std::vector<double>&) { return 1e-2; };
+    const auto told = damped_newton(p, {1.3, 0.8, 1.2}, {40, 1e-12, 1e-6});
+    ASSERT_TRUE(plain && told);
+    EXPECT_EQ(told->iterations, plain->iterations);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(told->x[i], plain->x[i]);
 }

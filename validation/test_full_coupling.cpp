@@ -307,6 +307,31 @@ TEST(FullCouplingPhysical, WidthCarriesTheLoadAtTheCoupledLambda) {
     }
 }
 
+// Free rolling of the pair's scene at n = 384 (the command line's `point --n 384 --Q 0`), the least n of its points
+// refused from 2a4be27 on ("Newton finds no five zones from the previous iterate's ends"; e008087 refused n = 640 and
+// 768): the five zones' Newton reached its floor, steps of 2e-11 to 6e-11 in the ends made by the entry conditions'
+// rounding, and ran out of iterations waiting for a step below the tolerance 1e-11. Stopped at that rounding
+// (damped_newton, 8(q)), the point is answered, its two stick zones hold the checks (3.3)-(3.4), and it lies within
+// the estimates of the point at n = 256 (levels 64, 128, 256).
+TEST(FullCouplingPhysical, FreeRollingAnsweredWhereTheEndsRoundingPassesTheTolerance) {
+    const auto at = [](int n) {
+        scene s = pair();
+        override_solver(s, n, "extrapolated");
+        return solve_point(s, 0.0);
+    };
+    const scene_point p = at(384);
+    EXPECT_EQ(p.solution.layout.stick_zones(), 2);
+    EXPECT_TRUE(p.solution.checks.hold());
+    const scene_point q = at(256);
+    ASSERT_TRUE(q.estimate.has_value());
+    const tangential_solution &s = p.solution, &t = q.solution;
+    std::printf("n 384 - 256: xi %.3g (estimate %.3g), c0 %.3g (%.3g), start %.3g (%.3g)\n", s.xi - t.xi,
+                q.estimate->xi, s.c0() - t.c0(), q.estimate->c0, s.start() - t.start(), q.estimate->start);
+    EXPECT_LE(std::fabs(s.xi - t.xi), q.estimate->xi);
+    EXPECT_LE(std::fabs(s.c0() - t.c0()), q.estimate->c0);
+    EXPECT_LE(std::fabs(s.start() - t.start()), q.estimate->start);
+}
+
 // A smooth pair's point (solve_point at a given n): the alternation that gives lambda for the width is
 // the point's own, not solved again. The checkpoint runs before each step of every alternation and
 // before each level's point (also one answered from the contact's cache): solve_point asks the

@@ -48,6 +48,7 @@ std::optional<newton_root> damped_newton(const newton_problem& problem, std::vec
     auto F = problem.residual(x);
     if (!F) return std::nullopt;
     const std::size_t k = x.size();
+    double last_full = -1.0;  // the size of the last step if it was a full one within F's rounding, else -1
     for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
         // The Jacobian column by column, by forward differences.
         std::vector<std::vector<double>> J(F->size(), std::vector<double>(k));
@@ -73,7 +74,12 @@ std::optional<newton_root> damped_newton(const newton_problem& problem, std::vec
         }
         x = next;
         F = F_next;
-        if (step == 1.0 && problem.step_size(x, *dx) <= options.tolerance) return newton_root{x, iteration};
+        const double size = step == 1.0 ? problem.step_size(x, *dx) : -1.0;
+        if (step == 1.0 && size <= options.tolerance) return newton_root{x, iteration};
+        // At the rounding floor: two full steps within F's rounding at x, the second not contracting.
+        const bool rounded = step == 1.0 && problem.rounding && size <= problem.rounding(x);
+        if (rounded && last_full >= 0.0 && size >= last_full) return newton_root{x, iteration};
+        last_full = rounded ? size : -1.0;
     }
     return std::nullopt;
 }

@@ -52,6 +52,7 @@ std::optional<int> zone_newton(
             size += (log_length && j % 2 == 1 ? std::exp(x[j]) : 1.0) * std::fabs(dx[j]);
         return size;
     };
+    if (options.rounding) problem.rounding = [&options](const std::vector<double>&) { return options.rounding(); };
     std::vector<double> x0;
     for (const stick_span& z : from) {
         const double half = 0.5 * (z.end - z.start);

@@ -4,8 +4,12 @@
 //   J_ij = (F_i(x + h_j e_j) - F_i(x)) / h_j,   J dx = -F(x)   (GSL's LU),
 //   x <- x + lambda dx, lambda = 1, 1/2, 1/4, ... until x + lambda dx is inside the domain and F is
 // defined there (lambda >= min_step). It stops after a full step (lambda = 1) whose size, measured by
-// the caller, is at most `tolerance`. Empty when it does not converge: a singular or non-finite
-// Jacobian, no admissible step, F undefined at x0 or at a difference point, or max_iterations spent;
+// the caller, is at most `tolerance`, or at the limit of the accuracy F carries: where the caller gives
+// the size of the steps F's rounding makes (`rounding`), after two successive full steps within it,
+// the second no smaller than the first (a contracting Newton step is far smaller than the one before:
+// what is left is F's rounding, below which a later step gets only by chance). Empty when it does not
+// converge: a singular or non-finite Jacobian, no admissible step, F undefined at x0 or at a
+// difference point, or max_iterations spent;
 // the callers then fall back to bracketing (Brent). Whatever F throws passes through.
 #pragma once
 
@@ -24,6 +28,9 @@ struct newton_problem {
     std::function<bool(const std::vector<double>&)> inside;
     // The size of the step dx taken to x, compared with the tolerance (in r, the zone ends' unit).
     std::function<double(const std::vector<double>& x, const std::vector<double>& dx)> step_size;
+    // The size (as step_size measures it) of the steps F's rounding makes at x, asked right after F(x); empty: F's
+    // rounding is taken to lie below `tolerance`.
+    std::function<double(const std::vector<double>& x)> rounding;
 };
 
 struct newton_options {
