@@ -452,3 +452,31 @@ TEST(Zones, Output) {
     EXPECT_NE(first.find(",2,-1"), std::string::npos) << first;
     EXPECT_NE(second.find(",3,-0.98"), std::string::npos) << second;
 }
+
+// The text's "method, n" line names the closed form that answered a point where no zone search did
+// (issue 24, 7): gross sliding and full stick of the paper's problem, the no-slip solution of dissimilar
+// rollers with the edge layers neglected (formulation 8(n)); a searched point keeps "method, n".
+TEST(PointText, MethodLineNamesTheClosedForm) {
+    const double f = 0.3;
+    const auto method_line = [](contact& c, double Q) {
+        const tangential_solution s = c.point(Q);
+        std::ostringstream text;
+        write_summary(text, point_report{"", c.normal(), s, 0.0, std::nullopt, std::nullopt});
+        const std::string all = text.str();
+        const std::size_t at = all.find("  method, n           ");
+        EXPECT_NE(at, std::string::npos) << all;
+        return at == std::string::npos ? all : all.substr(at + 22, all.find('\n', at) - at - 22);
+    };
+    contact paper(roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}}, f, solver_options{64, method::product});
+    EXPECT_EQ(method_line(paper, f), "closed form: gross sliding (docs/formulation.md 2(g), 8(g)); pressure product, n = 64");
+    EXPECT_EQ(method_line(paper, -f), "closed form: gross sliding (docs/formulation.md 2(g), 8(g)); pressure product, n = 64");
+    EXPECT_EQ(method_line(paper, 0.0), "closed form: full stick (c0 = 1, xi = 0); pressure product, n = 64");
+    EXPECT_EQ(method_line(paper, 0.5 * f), "product, 64");
+    // Aluminium on steel (beta_D = 0.1438) at f = 1: free rolling with its layers neglected; a searched
+    // point of the same pair (f = 0.05, Q/f = -0.75, three zones) keeps the method.
+    contact layers(roughness{}, 1.0, solver_options{64, method::product}, dissimilar{0.1438, coupling_level::johnson});
+    EXPECT_EQ(method_line(layers, 0.0),
+              "closed form: no slip with the edge layers neglected (docs/formulation.md 8(n)); pressure product, n = 64");
+    contact braked(roughness{}, 0.05, solver_options{64, method::product}, dissimilar{0.1438, coupling_level::johnson});
+    EXPECT_EQ(method_line(braked, -0.0375), "product, 64");
+}

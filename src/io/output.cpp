@@ -55,6 +55,16 @@ nlohmann::json zones_json(const tangential_solution& s) {
 // single, general, or no-slip (the edge layers neglected, docs/formulation.md 8(n)).
 const char* zone_path(const tangential_solution& s) { return to_string(s.layout.route); }
 
+// The closed form that gave the point's traction and creep, where no zone search did; the method and n
+// are then the pressure's. Null for every other point. (Carter's closed form of smooth equal rollers is
+// not told apart here: the solution does not carry the kernels.)
+const char* closed_form(const tangential_solution& s) {
+    if (s.layout.layers_neglected()) return "no slip with the edge layers neglected (docs/formulation.md 8(n))";
+    if (std::fabs(s.Q) == s.f) return "gross sliding (docs/formulation.md 2(g), 8(g))";
+    if (s.Q == 0.0 && s.forcing == 0.0) return "full stick (c0 = 1, xi = 0)";
+    return nullptr;
+}
+
 // The neglected edge layers of a free-rolling point at large friction (8(n)): null for every other point.
 nlohmann::json layers_json(const tangential_solution& s) {
     if (!s.layout.layers_neglected()) return nullptr;
@@ -185,7 +195,12 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  c0 = c/a            " << shortest(s.c0()) << "   (Carter " << shortest(smooth.c0) << ")\n"
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
-        << "  method, n           " << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
+        << "  method, n           ";
+    if (const char* form = closed_form(s))
+        out << "closed form: " << form << "; pressure " << to_string(r.normal.how) << ", n = " << r.normal.rule.n
+            << "\n";
+    else
+        out << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
     if (s.forcing != 0.0 && !r.coupling)
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
     if (s.forcing != 0.0 && r.coupling)
