@@ -250,7 +250,7 @@ double dissimilar_zones::W(double r, double start, double c0) {
                     const double z = eta - r;
                     return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
                 },
-                points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+                points[i], points[i + 1], "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))");
         w += term.T * total;
     }
     return w;
@@ -279,7 +279,7 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         double total = 0.0;
         for (std::size_t i = 0; i + 1 < points.size(); ++i)
-            total += integrate_piece(integrand, points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+            total += integrate_piece(integrand, points[i], points[i + 1], "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))");
         return total;
     };
     // r within `breakpoint_apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
@@ -314,7 +314,7 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
                     const double ge = edge_pressure(eta) * H(eta, start, c0);
                     return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
                 },
-                points[i], points[i + 1], "dissimilar zones: W of the blended stick zone");
+                points[i], points[i + 1], "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))");
         }
         return M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
     }
@@ -370,7 +370,7 @@ double dissimilar_zones::load_under_H(double start, double c0) {
     std::sort(points.begin(), points.end());
     double inner = 0.0;
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        inner += integrate_piece(pressure_theta, points[i], points[i + 1], "dissimilar zones: int p Theta");
+        inner += integrate_piece(pressure_theta, points[i], points[i + 1], "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))");
     return inner + load_between(solver_.normal(), c0, 1.0);
 }
 
@@ -415,7 +415,7 @@ stick_zone_operator dissimilar_zones::zone_operator(bool opposite, double b, dou
     refusal << "dissimilar rollers at |Q|/f = " << magnitude / f_
             << ": no three zones carry the load at n = " << solver_.normal().rule.n
             << "; another n may find them (docs/formulation.md 8(g), 8(j))";
-    op.method.name = "dissimilar zones";
+    op.method.name = "dissimilar rollers' zone search";
     op.method.refusal = refusal.str();
     // The starts clustered towards both edges (Chebyshev), where thin leading slip zones put the start, all
     // scanned; each bracket in turn from the leading edge, the first zone whose checks hold the answer; no zone
@@ -493,7 +493,7 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
             for (std::size_t i = 0; i < r.size(); ++i) w[i] = b * normal.pressure(r[i]) + f_ * w[i];
             return w;
         },
-        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true, "dissimilar zones");
+        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true, "dissimilar rollers at gross sliding");
     s.forcing = b;
     return s;
 }
@@ -533,7 +533,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     s.layout.route = zone_route::general;  // gross sliding's too, where r* = -1 (the paper's edge form)
     // The checks of the |Q| problem (the zone search made them) are those of Q: the mirror of 8(h) changes
     // the signs of p1 and v together.
-    apply_load_sign(s, Q, "dissimilar zones");
+    apply_load_sign(s, Q, "dissimilar rollers");
     return s;
 }
 

@@ -52,9 +52,9 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
         const auto v = z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()});
         if (!v)
             throw resolution_error(coupling_at_load(Q, f) +
-                                   "Newton finds no five zones from the previous iterate's ends "
-                                   "(the zone structure changes under the coupling; docs/formulation.md 8(e)), "
-                                   "which the alternation does not follow; coupling = \"johnson\" answers the load");
+                                   "the five zones (slip, stick, reversed slip, stick, slip) are lost between two "
+                                   "steps of the alternation (the zone structure changes under the coupling; "
+                                   "docs/formulation.md 8(e)); coupling = \"johnson\" answers the load");
         t = five_zone_point(*v);
         t.Q = Q;
     } else {
