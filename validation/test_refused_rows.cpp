@@ -136,6 +136,24 @@ TEST(DissimilarSmallBeta, RealPairAtLargeFrictionNamesWhatAnswers) {
     }
 }
 
+// Full coupling at f = 1e6, gross sliding: the coupling term beta_D p1 of (D1), of order beta_D f, turns
+// the coupled pressure negative. The refusal says so (not "the zone structure changes"), and the load it
+// sends to, Johnson's level, is answered with its checks holding.
+TEST(DissimilarSmallBeta, FullCouplingPressureBelowZeroSaysSo) {
+    const double f = 1e6;
+    contact full(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::full});
+    try {
+        full.point(f);
+        ADD_FAILURE() << "answered";
+    } catch (const resolution_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("the coupled pressure turns negative"), std::string::npos) << what;
+        EXPECT_NE(what.find("coupling = \"johnson\" answers the load"), std::string::npos) << what;
+    }
+    contact johnson(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    EXPECT_TRUE(johnson.point(f).checks.hold());
+}
+
 // The estimate of the leading slip zone against the zones found, and loads the search answers are
 // not refused: at n = 128, beta_D/f = 0.6 at Q/f = -0.5 (three zones) and 0.479 (aluminium on steel at
 // f = 0.3) at free rolling (five zones), where the start lies within a factor 2 of the estimate.

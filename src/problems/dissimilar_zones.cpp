@@ -103,7 +103,7 @@ void check_edge_zones_resolvable(double beta_d, double f, double Q, int n) {
     const double first_n = std::ceil(std::sqrt(0.01 * 0.5 * M_PI * M_PI / thickness));
     std::ostringstream msg;
     msg.precision(3);
-    msg << "dissimilar rollers (beta_d = " << beta_d << ") at Q/f = " << Q / f << " and n = " << n
+    msg << "dissimilar rollers (beta_d = " << beta_d << ") at Q/f = " << shortest(Q / f) << " and n = " << n
         << ": the slip zone at the leading edge (";
     if (thickness > 0.0)
         msg << "about " << thickness << " of the half-width";

@@ -69,6 +69,14 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
 // whose sign is chance at a given n (free rolling of the pair at n = 32: 8(r)). The checks take no tolerance: the
 // point is refused at this n, and the message says what may answer it.
 resolution_error failed_checks(const tangential_solution& t, double Q, double f) {
+    // The coupled pressure below zero: the term beta_D p1 of (D1), of order beta_D f, outweighs the load's
+    // pressure (aluminium on steel at f = 1e6, gross sliding: margin -3.9e4), so the contact would open.
+    if (!t.checks.pressure_holds)
+        return resolution_error(coupling_at_load(Q, f) + "the coupled pressure turns negative (margin p " +
+                                shortest(t.checks.pressure_margin) +
+                                "): the coupling term beta_d p1 of the normal problem, of order beta_d f, outweighs "
+                                "the pressure at this friction (docs/formulation.md 8(e)); coupling = \"johnson\" "
+                                "answers the load");
     return resolution_error(coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
                             shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
                             "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
