@@ -17,27 +17,17 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_dissimilar(materials, options);
-    const int n = options.nodes();
-    if (options.how == method::extrapolated && !(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty())) {
-        // Richardson's rule holds only where the error already falls like n^-4.
-        check_extrapolation_range(widest_kernel(), n, "these kernels");
-        companion_ = std::make_unique<contact>(surfaces, f, solver_options{n / 2, method::product, options.zones},
-                                               materials, cache);
-    }
-    model_ = make_point_model(surfaces, f, options, materials, cache, companion_ ? companion_->model_.get() : nullptr);
-    if (companion_) {
+    // Richardson's rule holds only where the error already falls like n^-4.
+    if (extrapolates(surfaces, options)) check_extrapolation_range(widest_kernel(), options.nodes(), "these kernels");
+    model_ = make_point_model(surfaces, f, options, materials, cache);
+    if (extrapolates(surfaces, options)) {
+        companion_ = &model_->level(options.nodes() / 2);
         reported_ = std::make_unique<normal_solution>(model_->normal());
         reported_->lambda = richardson(reported_->lambda, companion_->normal().lambda);
     }
 }
 
-void contact::set_checkpoint(std::function<void()> hook) {
-    checkpoint_ = std::move(hook);
-    model_->set_checkpoint(checkpoint_);
-    for (contact* c : {companion_.get(), finer_.get()})
-        if (c) c->set_checkpoint(checkpoint_);
-    for (const auto& c : owned_levels_) c->set_checkpoint(checkpoint_);
-}
+void contact::set_checkpoint(std::function<void()> hook) { model_->set_checkpoint(std::move(hook)); }
 
 const normal_solution& contact::normal() const {
     // At full coupling after a point, level n's coupled pressure, not extrapolated (docs/formulation.md 8(e)).
@@ -53,21 +43,14 @@ tangential_solver& contact::tangential() {
         "contact::slip_velocity");
 }
 
-std::vector<point_model*> contact::models_below() {
-    std::vector<point_model*> below;
-    if (build_levels())
-        for (contact* level : levels_) {
-            if (level == nullptr) break;
-            below.push_back(level->model_.get());
-        }
-    return below;
-}
-
 tangential_solution contact::point(double Q) {
-    return model_->point(Q, [this] { return models_below(); });
+    return model_->point(Q, [this] {  // the n of the estimate's levels below this one (nullptr: this one)
+        std::vector<int> below;
+        if (build_levels())
+            for (int i = 0; levels_[i] != nullptr; ++i) below.push_back(levels_[i]->nodes());
+        return below;
+    });
 }
-
-method contact::level_method() const { return level_of(options_.how); }
 
 kernel contact::widest_kernel() const {
     const double rate = std::max(kernel::normal(surfaces_).max_rate(), kernel::tangential(surfaces_).max_rate());
@@ -82,9 +65,7 @@ std::optional<std::string> contact::beyond_every_n(double Q, int top, double tol
 
 double contact::traction(const tangential_solution& d, double r) { return model_->traction(d, r); }
 
-double contact::slip_velocity(const tangential_solution& d, double r) {
-    return model_->slip_velocity(d, r);
-}
+double contact::slip_velocity(const tangential_solution& d, double r) { return model_->slip_velocity(d, r); }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
     return model_->slip_velocity(d, r);

@@ -58,14 +58,13 @@ double layer_change_lower_bound(double x) {
     return x <= layer_change_measured_to ? 0.3 * std::exp(-0.57 * std::sqrt(x)) : 0.0;
 }
 
-// Johnson's level: the zones of dissimilar_zones on the uncoupled pressure.
+// Johnson's zones (dissimilar_zones) on the uncoupled pressure of a level: Johnson's level itself
+// (uncoupled_model) and the start of full coupling's alternation (coupled_model).
 class johnson_model : public point_model {
 public:
     johnson_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
                   normal_cache* cache)
-        : f_(f),
-          materials_(materials),
-          options_(options),
+        : point_model(surfaces, f, options, materials),
           normal_(level_normal(surfaces, options, cache)),
           tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f),
           zones_(tangential_, kernel::tangential(surfaces), materials.beta_d),
@@ -81,22 +80,6 @@ public:
     std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r) override {
         if (d.layout.opposite() || d.layout.layers_neglected()) return point_model::slip_velocity(d, r);
         return solver_of_point().slip_velocity(d, r);  // the collocation's sweep
-    }
-
-    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override {
-        if (layers_negligible(Q)) return zones_.layers_neglected_point();
-        try {
-            // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
-            check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
-            return johnson_point(Q, below());
-        } catch (const resolution_error& why) {
-            // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
-            // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
-            const std::optional<double> bound = layers_bound(Q);
-            const std::string advice = bound ? layers_tolerance_advice(*bound, materials_.beta_d, f_) : std::string();
-            if (advice.empty()) throw;
-            throw resolution_error(std::string(why.what()) + "; " + advice);
-        }
     }
 
     // Johnson's point of this level from the zone ends of s (Newton).
@@ -149,7 +132,6 @@ public:
     }
 
 protected:
-    int nodes() const { return options_.nodes(); }
     // check_edge_zones_resolvable at n, its refusal followed by what answers the load instead.
     void check_edge_zones(double Q, int n) const {
         try {
@@ -171,11 +153,18 @@ protected:
 
     // Johnson's point at Q of this level: the estimate's levels `below` first, coarsest first, each from
     // the zone of the level below (Newton), so that only the coarsest scans the starts of the stick zone.
-    tangential_solution johnson_point(double Q, const std::vector<point_model*>& below);
+    tangential_solution johnson_point(double Q, const std::vector<johnson_model*>& below);
 
-    double f_;
-    dissimilar materials_;
-    solver_options options_;
+    // The edge layers' bound on xi relative to the no-slip creep for free rolling of smooth rollers at
+    // Johnson's level (8(n)); empty for any other load, pair or level.
+    std::optional<double> layers_bound(double Q) const { return Q == 0.0 ? layers_ : std::nullopt; }
+    // Layers that move xi, and the zone ends, by less than the tolerance: the no-slip solution with them
+    // neglected answers.
+    bool layers_negligible(double Q) const {
+        const std::optional<double> relative = layers_bound(Q);
+        return relative && *relative <= options_.tolerance.value_or(default_tolerance);
+    }
+
     normal_solution normal_;
     tangential_solver tangential_;
     dissimilar_zones zones_;
@@ -210,18 +199,9 @@ private:
         last_five_load_ = Q;
         return &*last_five_;
     }
-    // The five zones at Q, the levels `below` first (each from the ends of the one below it).
-    tangential_solution five_point(double Q, const std::vector<point_model*>& below, const error& why);
-
-    // The edge layers' bound on xi relative to the no-slip creep for free rolling of smooth rollers at
-    // Johnson's level (8(n)); empty for any other load, pair or level.
-    std::optional<double> layers_bound(double Q) const { return Q == 0.0 ? layers_ : std::nullopt; }
-    // Layers that move xi, and the zone ends, by less than the tolerance: the no-slip solution with them
-    // neglected answers.
-    bool layers_negligible(double Q) const {
-        const std::optional<double> relative = layers_bound(Q);
-        return relative && *relative <= options_.tolerance.value_or(default_tolerance);
-    }
+    // The point of five zones at Q, the levels `below` first (each from the ends of the one below it);
+    // empty where none are found, or at |Q| >= f, where none are searched.
+    std::optional<tangential_solution> five_point(double Q, const std::vector<johnson_model*>& below);
 
     std::optional<double> layers_;
     std::optional<tangential_solution> last_three_;
@@ -229,14 +209,12 @@ private:
     double last_five_load_ = 0.0;  // the load it was asked for
 };
 
-johnson_model& as_johnson(point_model* m) { return dynamic_cast<johnson_model&>(*m); }
-
-tangential_solution johnson_model::johnson_point(double Q, const std::vector<point_model*>& below) {
+tangential_solution johnson_model::johnson_point(double Q, const std::vector<johnson_model*>& below) {
     std::optional<zone_guess> guess;
     bool opposite = false;
-    for (point_model* level : below) {
+    for (johnson_model* level : below) {
         try {
-            const tangential_solution& t = as_johnson(level).three(Q, guess, opposite);
+            const tangential_solution& t = level->three(Q, guess, opposite);
             guess = zone_guess{t.start(), t.c0()};
             opposite = t.layout.opposite();
         } catch (const resolution_error&) {  // no three zones on this level: the next searches without a guess
@@ -247,37 +225,37 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<poi
     }
     // Free rolling, no three zones, or three zones that fail (3.3)-(3.4) (resolution_error), or a
     // numerical fault of their search: five zones (|Q| < f; on the braked side, Q/sgn(beta_D) < 0,
-    // until the slip+ zone closes, 8(j) 4a).
+    // until the slip+ zone closes, 8(j) 4a). Where none are found either, the first error stands: a fault
+    // aborts; a structure not found at this n is a refusal (a curve's refused row, docs/robustness.md),
+    // saying so. Each `throw;` is inside the handler of the error it rethrows (outside one it terminates).
     try {
         tangential_solution s = three(Q, guess, opposite);
         require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
         return s;
     } catch (const resolution_error& why) {
-        return five_point(Q, below, why);
-    } catch (const numerical_error& why) {
-        return five_point(Q, below, why);
-    }
-}
-
-tangential_solution johnson_model::five_point(double Q, const std::vector<point_model*>& below, const error& why) {
-    // Where none are found either, the first error stands: a fault aborts; a structure not found at this
-    // n is a refusal (a curve's refused row, docs/robustness.md), saying so.
-    if (!(std::fabs(Q) < f_)) throw;
-    std::vector<double> ends;
-    for (point_model* level : below) {
-        const five_zone_solution* v = as_johnson(level).five(Q, ends.empty() ? nullptr : &ends);
-        ends = v ? std::vector<double>{v->s1, v->c1, v->s2, v->c2} : std::vector<double>{};
-    }
-    const five_zone_solution* v = five(Q, ends.empty() ? nullptr : &ends);
-    if (v == nullptr) {
-        if (dynamic_cast<const resolution_error*>(&why) == nullptr) throw;
+        if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
+        if (!(std::fabs(Q) < f_)) throw;
         throw resolution_error(std::string(why.what()) +
                                "; no five zones (slip, stick, reversed slip, stick, slip) are found at n = " +
                                std::to_string(nodes()) +
                                " either (their search starts from the coarser levels' zones): another n may "
                                "find them, except on the driven side closer than Q/f = 0.998 to gross sliding, "
                                "which no n reaches yet (docs/robustness.md)");
+    } catch (const numerical_error&) {
+        if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
+        throw;
     }
+}
+
+std::optional<tangential_solution> johnson_model::five_point(double Q, const std::vector<johnson_model*>& below) {
+    if (!(std::fabs(Q) < f_)) return std::nullopt;
+    std::vector<double> ends;
+    for (johnson_model* level : below) {
+        const five_zone_solution* v = level->five(Q, ends.empty() ? nullptr : &ends);
+        ends = v ? std::vector<double>{v->s1, v->c1, v->s2, v->c2} : std::vector<double>{};
+    }
+    const five_zone_solution* v = five(Q, ends.empty() ? nullptr : &ends);
+    if (v == nullptr) return std::nullopt;
     tangential_solution s = five_zone_point(*v);
     s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
     // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
@@ -298,13 +276,41 @@ tangential_solution johnson_model::five_point(double Q, const std::vector<point_
     return s;
 }
 
-// Full coupling (docs/formulation.md 8(e)): the alternation from Johnson's point on this level, cached per Q.
+// Johnson's level (8(g)-8(n)); its levels are Johnson's levels.
+class uncoupled_model final : public johnson_model {
+public:
+    uncoupled_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                    normal_cache* cache)
+        : johnson_model(surfaces, f, options, materials, cache), levels_(*this, cache) {}
+    point_model& level(int m) override { return levels_.at(m); }
+    tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
+        if (layers_negligible(Q)) return zones_.layers_neglected_point();
+        try {
+            // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
+            check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
+            return johnson_point(Q, levels_.at<johnson_model>(below()));
+        } catch (const resolution_error& why) {
+            // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
+            // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
+            const std::string advice = edge_zones_advice(Q);
+            if (advice.empty()) throw;
+            throw resolution_error(std::string(why.what()) + "; " + advice);
+        }
+    }
+
+private:
+    model_levels<uncoupled_model> levels_;
+};
+
+// Full coupling (docs/formulation.md 8(e)): the alternation from Johnson's point on this level, cached per Q;
+// its levels are full coupling's, each from its own Johnson's point.
 class coupled_model final : public johnson_model {
 public:
     coupled_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
                   normal_cache* cache)
         : johnson_model(surfaces, f, options, materials, cache),
           johnson_layers_(layers_relative_bound(dissimilar{materials.beta_d, coupling_level::johnson}, surfaces, f)),
+          levels_(*this, cache),
           coupling_(kernel::tangential(surfaces), kernel::normal(surfaces), options.nodes(), level_of(options.how), f,
                     materials.beta_d) {}
 
@@ -317,9 +323,10 @@ public:
         point_model::set_checkpoint(std::move(hook));
     }
 
-    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override {
+    point_model& level(int m) override { return levels_.at(m); }
+    tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
         check_edge_zones(Q, nodes());
-        return coupled(Q, johnson_point(Q, below()), true);
+        return coupled(Q, johnson_point(Q, levels_.at<johnson_model>(below())), true);
     }
     tangential_solution like(const tangential_solution& s, method how, int n) override {
         // The level's own alternation from its own Johnson's point (a Johnson's point against a coupled n
@@ -362,6 +369,7 @@ private:
     }
 
     std::optional<double> johnson_layers_;  // layers_relative_bound at Johnson's level, for the advice
+    model_levels<coupled_model> levels_;
     full_coupling coupling_;
     std::optional<double> load_;  // the load of the last coupled point; empty: none solved
     tangential_solution point_;
@@ -374,7 +382,7 @@ std::unique_ptr<point_model> make_dissimilar_model(const roughness& surfaces, do
                                                    const dissimilar& materials, normal_cache* cache) {
     if (materials.coupling == coupling_level::full)
         return std::make_unique<coupled_model>(surfaces, f, options, materials, cache);
-    return std::make_unique<johnson_model>(surfaces, f, options, materials, cache);
+    return std::make_unique<uncoupled_model>(surfaces, f, options, materials, cache);
 }
 
 }  // namespace roughroll

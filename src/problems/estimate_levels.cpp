@@ -37,54 +37,36 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     // The levels' differences measure how a solution of the discrete equations moves with n; where
     // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.
     // They are still solved: where they do not converge the point is refused, as any other.
-    std::optional<error_estimate> e = levels_estimate(s);
-    if (!s.checks.hold()) return std::nullopt;
-    return e;
-}
-
-std::optional<error_estimate> contact::levels_estimate(const tangential_solution& s) {
+    std::optional<error_estimate> e;
     if (reported_ && s.layout.general() && model_->structure() == estimate_structure::paper) {
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
-        const tangential_solution coarse = companion_->model_->like(s, options_.how, nodes());
+        const tangential_solution coarse = companion_->like(s, options_.how, nodes());
         // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
         // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
         const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
-        return error_estimate{std::fabs(reported_->lambda - normal_level().lambda) + floor.lambda,
-                              std::fabs(s.c0() - coarse.c0()) + floor.c0,
-                              std::fabs(s.xi - coarse.xi) + floor.xi,
-                              0.0,
-                              "n/2 (general zone search: level n, not extrapolated)",
-                              false};
+        e = error_estimate{std::fabs(reported_->lambda - model_->normal().lambda) + floor.lambda,
+                           std::fabs(s.c0() - coarse.c0()) + floor.c0,
+                           std::fabs(s.xi - coarse.xi) + floor.xi,
+                           0.0,
+                           "n/2 (general zone search: level n, not extrapolated)",
+                           false};
+    } else if (build_levels()) {
+        // Three levels of the level method on the structure of s (for dissimilar rollers the reported
+        // values are level n's; for the paper's problem those of its distributions).
+        const tangential_solution own = distribution(s);
+        std::array<tangential_solution, 3> at{};
+        for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->like(s, options_.how, nodes()) : own;
+        e = estimate_from(s, own, at, false);
     }
-    // Three levels of the level method on the structure of s (for dissimilar rollers the reported
-    // values are level n's; for the paper's problem those of its distributions).
-    if (!build_levels()) return std::nullopt;
-    const tangential_solution own = distribution(s);
-    std::array<tangential_solution, 3> at{};
-    for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? structure_level(*levels_[i], s, own, false) : own;
-    return estimate_from(s, own, at, false);
+    if (!s.checks.hold()) return std::nullopt;
+    return e;
 }
 
 bool contact::build_levels() {
     if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
     levels_built_ = true;
-    // A plain contact at m nodes (the level method), or null when m is outside the nodes
-    // supported or the kernels are beyond its resolution.
-    const method how = level_method();
-    auto plain = [&](int m) -> contact* {
-        if (m < min_nodes || m > max_nodes) return nullptr;
-        if (m == nodes() / 2 && companion_) return companion_.get();
-        for (const auto& c : owned_levels_)
-            if (c->nodes() == m) return c.get();
-        try {
-            owned_levels_.push_back(std::make_unique<contact>(surfaces_, f_, solver_options{m, how}, materials_));
-            owned_levels_.back()->set_checkpoint(checkpoint_);
-            return owned_levels_.back().get();
-        } catch (const resolution_error&) {
-            return nullptr;
-        }
-    };
+    const method how = level_of(options_.how);
     const int n = nodes();
     // Three levels n_0, 2 n_0, 4 n_0 containing n: n/4, n/2, n, else n/2, n, 2n (for
     // extrapolated, Richardson's value from the middle levels), else n, 2n, 4n. First the
@@ -98,12 +80,15 @@ bool contact::build_levels() {
             if (m < min_nodes || (n << i) > max_nodes) continue;
             if (require_range && how != method::one_parameter && !in_asymptotic_range(widest_kernel(), m, how))
                 continue;
-            std::array<contact*, 3> at{};
+            std::array<point_model*, 3> at{};
             bool ok = true;
             for (int k = 0; k < 3 && ok; ++k) {
                 if (k == 2 - i) continue;  // this contact's own level
-                at[k] = plain(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
-                ok = at[k] != nullptr;
+                try {
+                    at[k] = &model_->level(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
+                } catch (const resolution_error&) {  // the kernels beyond its resolution
+                    ok = false;
+                }
             }
             if (ok) {
                 levels_ = at;
@@ -112,18 +97,6 @@ bool contact::build_levels() {
         }
     }
     return false;
-}
-
-void contact::make_finer(int m) {
-    if (finer_) return;
-    finer_ = std::make_unique<contact>(surfaces_, f_, solver_options{m, level_method()}, materials_);
-    finer_->set_checkpoint(checkpoint_);
-}
-
-tangential_solution contact::structure_level(contact& level, const tangential_solution& s,
-                                             const tangential_solution& own, bool swept) {
-    if (swept) return level.level_at_stick_end(own.c0(), false, sweeping_near_);
-    return level.model_->like(s, options_.how, nodes());
 }
 
 error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
@@ -151,12 +124,11 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
         // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
         // level n's at full coupling: contact::normal), with no second chance.
-        table = {
-            {"P_H/P2", nullptr, floor.lambda, floor.lambda,
-             reported_ != nullptr && structure != estimate_structure::full_coupling, false, &est::lambda},
-            {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
-            {"c0", value_c0, ends, finer_ends, false, true, &est::c0},
-            {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start}};
+        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda,
+                  reported_ != nullptr && structure != estimate_structure::full_coupling, false, &est::lambda},
+                 {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
+                 {"c0", value_c0, ends, finer_ends, false, true, &est::c0},
+                 {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start}};
         // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
         // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
         if (s.layout.stick_zones() == 2) {
@@ -166,17 +138,19 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         }
     }
     std::array<estimate_level, 3> levels;
-    for (int i = 0; i < 3; ++i)
-        levels[i] = {at[i], levels_[i] ? levels_[i]->normal_level().lambda : normal_level().lambda};
+    for (int i = 0; i < 3; ++i) levels[i] = {at[i], (levels_[i] ? levels_[i] : model_.get())->normal().lambda};
     // Level 2n on the structure of s, where n is the finest level. A search that finds no zone
     // there leaves no fourth level; for the paper's single zone a numerical fault is one.
     const auto finer = [&]() -> std::optional<estimate_level> {
         const int m = 2 * nodes();
         if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;
         try {
-            make_finer(m);
-            tangential_solution t = structure_level(*finer_, s, own, swept);
-            return estimate_level{std::move(t), finer_->normal_level().lambda};
+            // At own's c0 on a curve swept in c0, else on the structure of s (its point first: at full
+            // coupling it sets the pressure).
+            point_model& level = model_->level(m);
+            return estimate_level{
+                swept ? level.at_stick_end(own.c0(), false, sweeping_near_) : level.like(s, options_.how, nodes()),
+                level.normal().lambda};
         } catch (const resolution_error&) {
             return std::nullopt;
         } catch (const numerical_error&) {

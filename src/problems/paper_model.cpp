@@ -30,7 +30,8 @@ namespace {
 // The paper's zone and the general search on one solver.
 class zone_model : public point_model {
 public:
-    explicit zone_model(const solver_options& options) : options_(options) {}
+    zone_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
+        : point_model(surfaces, f, options, materials) {}
     estimate_structure structure() const override { return estimate_structure::paper; }
 
     // The single zone at Q of this level, cached: the levels of an estimate and the coarse level of an
@@ -75,7 +76,6 @@ protected:
         }
     }
 
-    solver_options options_;
     std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
     bool checks_always_ = false;          // the solver checks every point it solves
 
@@ -84,20 +84,20 @@ private:
     bool last_checked_ = false;
 };
 
-zone_model& as_zone_model(point_model* m) { return dynamic_cast<zone_model&>(*m); }
-
 // The collocation of (4.4) (tangential_solver); for 'extrapolated', Richardson's rule on the companion
 // level n/2 (product integration): P_H/P2 by contact, c0 and xi here.
 class collocation_model final : public zone_model {
 public:
-    collocation_model(const roughness& surfaces, double f, const solver_options& options, normal_cache* cache,
-                      point_model* companion)
-        : zone_model(options),
+    collocation_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                      normal_cache* cache)
+        : zone_model(surfaces, f, options, materials),
+          levels_(*this, cache),
+          companion_(extrapolates(surfaces, options) ? &levels_.at(options.nodes() / 2) : nullptr),
           normal_(level_normal(surfaces, options, cache)),
-          tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f),
-          companion_(companion ? &as_zone_model(companion) : nullptr) {
+          tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f) {
         zones_ = std::make_unique<zone_solver>(tangential_.zone_operator());
     }
+    point_model& level(int m) override { return levels_.at(m); }
     const normal_solution& normal() const override { return normal_; }
     tangential_solver* tangential() override { return &tangential_; }
     double traction(const tangential_solution& d, double r) override { return tangential_.traction(d, r); }
@@ -108,7 +108,7 @@ public:
     tangential_solution at_stick_end(double c0, bool checked, bool near) override {
         return tangential_.at_stick_end(c0, checked, near);
     }
-    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) override;
+    tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override;
     tangential_solution distribution(const tangential_solution& s) override {
         // For 'extrapolated' the level-n solution at the same Q, whose c0 and xi are level n's (within the
         // error estimate of the extrapolated ones).
@@ -124,13 +124,14 @@ private:
         return tangential_.solve(Q, guess, checked, slope);
     }
 
+    model_levels<collocation_model> levels_;
+    collocation_model* companion_;  // 'extrapolated': level n/2
     normal_solution normal_;
     tangential_solver tangential_;
-    zone_model* companion_;                        // 'extrapolated': level n/2
     std::optional<tangential_solution> last_fine_;  // level n of the last extrapolated point
 };
 
-tangential_solution collocation_model::point(double Q, const std::function<std::vector<point_model*>()>& below) {
+tangential_solution collocation_model::point(double Q, const std::function<std::vector<int>()>& below) {
     // Each level's root search starts from the root of the level below: n/4 (the estimate's
     // coarsest level, solved here anyway) from Carter's c0, n/2 from n/4's root, n from n/2's,
     // with a Newton step on the slope of the level below.
@@ -146,15 +147,15 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
         const double c0 = half + (half - *quarter_c0) / std::ldexp(1.0, order);
         return c0 > -1.0 && c0 < 1.0 ? c0 : half;
     };
-    const std::vector<point_model*> levels = below();
+    const std::vector<collocation_model*> levels = levels_.at(below());
     if (levels.size() == 2) {  // n/4 and n/2
         try {
-            const tangential_solution& quarter = as_zone_model(levels[0]).single(Q, false);
+            const tangential_solution& quarter = levels[0]->single(Q, false);
             if (quarter.c0() > -1.0 && quarter.c0() < 1.0) quarter_c0 = quarter.c0();
             start = quarter.c0();
             slope = quarter.load_slope;
             if (!companion_) {  // else the companion is n/2, solved below
-                const tangential_solution& half = as_zone_model(levels[1]).single(Q, false, start, slope);
+                const tangential_solution& half = levels[1]->single(Q, false, start, slope);
                 start = predicted(half.c0());
                 slope = half.load_slope;
             }
@@ -190,12 +191,17 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
 // sgn(Q) beta_D, and a point whose checks fail refused: its structure (slip against Q at an edge) is not built.
 class limit_model final : public zone_model {
 public:
-    limit_model(const roughness& surfaces, double f, const solver_options& options, double beta_d)
-        : zone_model(options), limit_(surfaces, f, options.nodes(), beta_d) {
+    limit_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                normal_cache* cache)
+        : zone_model(surfaces, f, options, materials),
+          levels_(*this, cache),
+          limit_(surfaces, f, options.nodes(), materials.beta_d) {
         zones_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(1.0)));
-        if (beta_d != 0.0) braked_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(-1.0)));
+        if (materials.beta_d != 0.0)
+            braked_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(-1.0)));
         checks_always_ = true;
     }
+    point_model& level(int m) override { return levels_.at(m); }
     const normal_solution& normal() const override { return limit_.normal(); }
     tangential_solver* tangential() override { return nullptr; }
     double traction(const tangential_solution& d, double r) override { return limit_.traction(d, r); }
@@ -208,7 +214,7 @@ public:
         checkpoint();
         return (Q < 0.0 && braked_ ? braked_ : zones_)->solve(Q, true);
     }
-    tangential_solution point(double Q, const std::function<std::vector<point_model*>()>&) override {
+    tangential_solution point(double Q, const std::function<std::vector<int>()>&) override {
         tangential_solution s = limit_point(Q);
         if (limit_.beta_d() == 0.0 || s.checks.hold()) return s;
         // Dissimilar rollers: refused, with the search's zone where there is one (its margins, not the paper zone's).
@@ -259,6 +265,7 @@ private:
         return limit_.solve(Q, guess);
     }
 
+    model_levels<limit_model> levels_;
     one_parameter_solver limit_;
     std::unique_ptr<zone_solver> braked_;  // Q < 0 with beta_D != 0: the forcing -beta_D (8(s))
 };
@@ -266,12 +273,11 @@ private:
 }  // namespace
 
 std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double f, const solver_options& options,
-                                              const dissimilar& materials, normal_cache* cache,
-                                              point_model* companion) {
-    if (options.how == method::one_parameter)
-        return std::make_unique<limit_model>(surfaces, f, options, materials.beta_d);  // Johnson's level (8(s))
+                                              const dissimilar& materials, normal_cache* cache) {
+    if (options.how == method::one_parameter)  // Johnson's level for dissimilar rollers (8(s))
+        return std::make_unique<limit_model>(surfaces, f, options, materials, cache);
     if (materials.beta_d != 0.0) return make_dissimilar_model(surfaces, f, options, materials, cache);
-    return std::make_unique<collocation_model>(surfaces, f, options, cache, companion);
+    return std::make_unique<collocation_model>(surfaces, f, options, materials, cache);
 }
 
 }  // namespace roughroll

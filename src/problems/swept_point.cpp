@@ -41,12 +41,12 @@ contact::swept_point contact::at_stick_end(double c0) {
 }
 
 contact::swept_point contact::swept_at(double c0) {
-    tangential_solution s = level_at_stick_end(c0, true, sweeping_near_);
+    tangential_solution s = model_->at_stick_end(c0, true, sweeping_near_);
     const tangential_solution own = s;
     std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
     if (reported_) {
         // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        coarse = companion_->level_at_stick_end(c0, false, sweeping_near_);
+        coarse = companion_->at_stick_end(c0, false, sweeping_near_);
         // Q = 0 and f at c0 = 1 and -1 are exact on every level: kept exact (Carter's columns).
         if (c0 != 1.0 && c0 != -1.0) s.Q = richardson(s.Q, coarse->Q);
         s.xi = richardson(s.xi, coarse->xi);
@@ -63,9 +63,9 @@ contact::swept_point contact::swept_at(double c0) {
     if (!build_levels()) return {s, std::nullopt};
     std::array<tangential_solution, 3> at{};
     for (int i = 0; i < 3; ++i)
-        at[i] = !levels_[i]                                ? own
-                : coarse && levels_[i] == companion_.get() ? *coarse  // solved above: not again
-                                                           : levels_[i]->level_at_stick_end(c0, false, sweeping_near_);
+        at[i] = !levels_[i]                          ? own
+                : coarse && levels_[i] == companion_ ? *coarse  // solved above: not again
+                                                     : levels_[i]->at_stick_end(c0, false, sweeping_near_);
     const error_estimate e = estimate_from(s, own, at, true);
     // The same for the load's error interval: Q +- e.Q reaching beyond [0, f] cannot be told from
     // full stick or gross sliding (and may be no physical point at all).

@@ -18,10 +18,10 @@
 // same conventions, no two-parameter tangential solver.
 //
 // The model of the points (the paper's, its one-parameter limit, dissimilar rollers at Johnson's
-// level or at full coupling) is chosen once (point_model.hpp: paper_model.cpp, dissimilar_model.cpp);
-// the contact keeps the levels around it: Richardson's lambda in contact.cpp, the error estimate's
-// levels and table in estimate_levels.cpp (its rule: point_estimate.hpp), the points of a curve
-// swept in c0 in swept_point.cpp.
+// level or at full coupling) is chosen once (point_model.hpp: paper_model.cpp, dissimilar_model.cpp)
+// and keeps its levels at other n; the contact chooses among them: Richardson's lambda in contact.cpp,
+// the error estimate's levels and table in estimate_levels.cpp (its rule: point_estimate.hpp), the
+// points of a curve swept in c0 in swept_point.cpp.
 #pragma once
 
 #include <memory>
@@ -119,50 +119,32 @@ public:
     std::vector<distribution_row> distributions(const tangential_solution& d, const std::vector<double>& grid);
 
 private:
-    // The solution at c0 of this contact's own level (no extrapolation, no estimate). A sweep's
-    // consecutive c0 give nearby systems: `near` refines on the last factorisation while sweeping_near_
-    // (dense_system::solve_near, docs/formulation.md "Swept points refined on the previous
-    // factorisation"), the same solution to rounding.
-    tangential_solution level_at_stick_end(double c0, bool checked, bool near) {
-        return model_->at_stick_end(c0, checked, near);
-    }
+    // A sweep's consecutive c0 give nearby systems: each level's point at c0 (point_model::at_stick_end)
+    // refines on its last factorisation while sweeping_near_ (dense_system::solve_near, docs/formulation.md
+    // "Swept points refined on the previous factorisation"), the same solution to rounding.
     swept_point swept_at(double c0);  // at_stick_end's point, by the route sweeping_near_ picks
     // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
     // Q +- error) outside [0, f] at an inner c0.
     void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
-    // estimate() before its check of s's inequalities: the levels' estimate, or its refusal.
-    std::optional<error_estimate> levels_estimate(const tangential_solution& s);
     int nodes() const { return options_.nodes(); }
-    const normal_solution& normal_level() const { return model_->normal(); }  // lambda not extrapolated
-    method level_method() const;  // product for extrapolated, else the method itself
-    bool build_levels();          // the two other levels of the estimate; false when none fit
-    std::vector<point_model*> models_below();  // the models of the estimate's levels below this one
-    double kernel_strength() const;            // the larger kernel's sum |T|, for the rounding floors
-    kernel widest_kernel() const;  // one term at either kernel's largest rate: the resolution both need
+    bool build_levels();             // the two other levels of the estimate; false when none fit
+    double kernel_strength() const;  // the larger kernel's sum |T|, for the rounding floors
+    kernel widest_kernel() const;    // one term at either kernel's largest rate: the resolution both need
     // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
     // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
                                  const std::array<tangential_solution, 3>& at_levels, bool swept);
-    // The solution of `level` (an estimate level, or level 2n) on the structure of s: at own's c0
-    // for a curve swept in c0, else at s's load on s's zone structure (point_model::like).
-    // resolution_error where the level has no such solution.
-    tangential_solution structure_level(contact& level, const tangential_solution& s, const tangential_solution& own,
-                                        bool swept);
 
     roughness surfaces_;
     solver_options options_;
     double f_;
     dissimilar materials_;
-    std::unique_ptr<contact> companion_;                  // method::extrapolated: the coarse level n/2 (product)
-    std::unique_ptr<point_model> model_;                  // the points' model, chosen once (point_model.hpp)
-    std::unique_ptr<normal_solution> reported_;           // extrapolated lambda, or empty
-    std::vector<std::unique_ptr<contact>> owned_levels_;  // estimate levels not otherwise held
-    std::array<contact*, 3> levels_{};                    // the estimate's levels, coarsest first; nullptr: this one
+    std::unique_ptr<point_model> model_;         // the points' model, chosen once (point_model.hpp)
+    point_model* companion_ = nullptr;           // method::extrapolated: the coarse level n/2 (product)
+    std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
+    std::array<point_model*, 3> levels_{};       // the estimate's levels, coarsest first; nullptr: this one
     bool levels_built_ = false;
-    bool sweeping_near_ = true;                  // false: at_stick_end's second, fresh-LU route for a refused point
-    std::unique_ptr<contact> finer_;             // level 2n: the second chance of a ratio that fails
-    void make_finer(int m);                      // finer_ at m = 2n nodes, made once (with this contact's checkpoint)
-    std::function<void()> checkpoint_;
+    bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
 };
 
 // A curve swept in c0 (contact::at_stick_end) is the paper's single zone: input_error for dissimilar rollers (8(g)).

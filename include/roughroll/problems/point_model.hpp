@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The model of one level's points, chosen once from the options and the materials (make_point_model)
-// and held by contact, which keeps the levels, Richardson's lambda and the estimate around it:
+// and held by contact, which keeps Richardson's lambda and the estimate around it:
 //   - the paper's stick zone [-1, c0] and zone_solver's general search (docs/formulation.md 4, 7) on
 //     the collocation of (4.4), with Richardson's rule on a companion level n/2 for 'extrapolated';
 //   - the same on the one-parameter limit's Glauert system ("The one-parameter limit", 7(g));
 //   - dissimilar rollers at Johnson's level (8(g)-8(n)): three or five zones, or the edge layers
 //     neglected for free rolling of smooth rollers (8(n));
 //   - dissimilar rollers at full coupling (8(e)): the alternation from Johnson's point of the level.
-// Each model caches its last point per Q, so that the levels of an estimate are solved once.
+// Each model keeps its levels (the same model at the estimate's other n, model_levels) as its own type,
+// and caches its last point per Q, so that the levels of an estimate are solved once.
 #pragma once
 
 #include <functional>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "roughroll/model/dissimilar.hpp"
+#include "roughroll/model/kernel.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/full_coupling.hpp"
@@ -28,11 +30,13 @@ namespace roughroll {
 
 class point_model {
 public:
-    point_model() = default;
+    point_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
+        : surfaces_(surfaces), f_(f), options_(options), materials_(materials) {}
     point_model(const point_model&) = delete;  // its solvers refer to its normal solution
     point_model& operator=(const point_model&) = delete;
     virtual ~point_model() = default;
 
+    int nodes() const { return options_.nodes(); }
     // This level's own normal solution (lambda not extrapolated); at full coupling, after a point,
     // that point's coupled pressure.
     virtual const normal_solution& normal() const = 0;
@@ -42,10 +46,13 @@ public:
     virtual tangential_solver* tangential() = 0;
     virtual estimate_structure structure() const = 0;
     virtual void set_checkpoint(std::function<void()> hook) { checkpoint_ = std::move(hook); }
+    // This model at m nodes by the level method (model_levels): an estimate level, the companion n/2 of
+    // 'extrapolated' or level 2n. resolution_error where m does not resolve the kernels.
+    virtual point_model& level(int m) = 0;
 
-    // The point reported at Q, its checks made. `below`: the same model at the estimate's levels below
-    // this one, coarsest first (their points start this level's search), built on the first call.
-    virtual tangential_solution point(double Q, const std::function<std::vector<point_model*>()>& below) = 0;
+    // The point reported at Q, its checks made. `below`: the n of the estimate's levels below this one,
+    // coarsest first (their points start this level's search), asked for on the first call.
+    virtual tangential_solution point(double Q, const std::function<std::vector<int>()>& below) = 0;
     // This level's solution at s.Q on the zone structure of s (another level's point of this model), its
     // checks made but not acted on: a level of s's estimate. resolution_error where the level has no such
     // solution, naming the estimate of method `how` at n (no_honest_estimate) as refused.
@@ -68,18 +75,59 @@ public:
     virtual std::optional<std::string> beyond_every_n(double, int, double) const { return std::nullopt; }
 
 protected:
+    template <class M>
+    friend class model_levels;
     void checkpoint() const {
         if (checkpoint_) checkpoint_();
     }
+    roughness surfaces_;  // the scene, whose levels differ in n alone (model_levels)
+    double f_;
+    solver_options options_;
+    dissimilar materials_;
     std::function<void()> checkpoint_;
 };
 
+// 'extrapolated' on rough surfaces: Richardson's rule on the level n/2 (a smooth scene is exact at one level).
+inline bool extrapolates(const roughness& surfaces, const solver_options& options) {
+    return options.how == method::extrapolated &&
+           !(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty());
+}
+
+// The levels of a model of final type M (point_model::level): its holder's scene at m nodes by the level
+// method, each made once and kept, with the holder's checkpoint. A model reaches its levels as M, so the
+// type says which levels it may use. Under 'extrapolated' the level n/2 is made first, its normal problem
+// from `cache` (normal_problem.hpp).
+template <class M>
+class model_levels {
+public:
+    model_levels(const point_model& holder, normal_cache* cache) : holder_(holder) {
+        if (extrapolates(holder.surfaces_, holder.options_)) at(holder.nodes() / 2, cache);
+    }
+    M& at(int m, normal_cache* cache = nullptr) {
+        for (const std::unique_ptr<M>& level : made_)
+            if (level->nodes() == m) return *level;
+        const solver_options options{m, level_of(holder_.options_.how), holder_.options_.zones};
+        made_.push_back(std::make_unique<M>(holder_.surfaces_, holder_.f_, options, holder_.materials_, cache));
+        made_.back()->set_checkpoint([&holder = holder_] { holder.checkpoint(); });
+        return *made_.back();
+    }
+    // The levels at each n of `ms`, as B (M or a base of it).
+    template <class B = M>
+    std::vector<B*> at(const std::vector<int>& ms) {
+        std::vector<B*> levels;
+        for (int m : ms) levels.push_back(&at(m));
+        return levels;
+    }
+
+private:
+    const point_model& holder_;
+    std::vector<std::unique_ptr<M>> made_;
+};
+
 // The model of `materials` and `options` at n = options.nodes() (its normal problem from `cache` where
-// solved before, normal_problem.hpp). `companion`: the level n/2 of 'extrapolated' (the paper's problem
-// extrapolates its points on it; dissimilar rollers report level n), else nullptr.
+// solved before, normal_problem.hpp).
 std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double f, const solver_options& options,
-                                              const dissimilar& materials, normal_cache* cache,
-                                              point_model* companion);
+                                              const dissimilar& materials, normal_cache* cache);
 
 // The normal problem of a model at n = options.nodes() by the level method (normal_problem.hpp).
 normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache);
