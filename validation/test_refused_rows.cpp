@@ -148,7 +148,8 @@ TEST(DissimilarSmallBeta, FullCouplingPressureBelowZeroSaysSo) {
     } catch (const resolution_error& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("the coupled pressure turns negative"), std::string::npos) << what;
-        EXPECT_NE(what.find("coupling = \"johnson\" answers the load"), std::string::npos) << what;
+        EXPECT_NE(what.find("the contact would open"), std::string::npos) << what;
+        EXPECT_NE(what.find("coupling = \"johnson\" answers it"), std::string::npos) << what;
     }
     contact johnson(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_TRUE(johnson.point(f).checks.hold());

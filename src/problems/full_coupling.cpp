@@ -52,9 +52,9 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
         const auto v = z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()});
         if (!v)
             throw resolution_error(coupling_at_load(Q, f) +
-                                   "the five zones (slip, stick, reversed slip, stick, slip) are lost between two "
-                                   "steps of the alternation (the zone structure changes under the coupling; "
-                                   "docs/formulation.md 8(e)); coupling = \"johnson\" answers the load");
+                                   "the five zones (slip, stick, reversed slip, stick, slip) are not found again "
+                                   "from the previous step of the alternation at this n (docs/formulation.md 8(e), "
+                                   "8(q)); another n may answer, and coupling = \"johnson\" answers the load");
         t = five_zone_point(*v);
         t.Q = Q;
     } else {
@@ -75,8 +75,9 @@ resolution_error failed_checks(const tangential_solution& t, double Q, double f)
         return resolution_error(coupling_at_load(Q, f) + "the coupled pressure turns negative (margin p " +
                                 shortest(t.checks.pressure_margin) +
                                 "): the coupling term beta_d p1 of the normal problem, of order beta_d f, outweighs "
-                                "the pressure at this friction (docs/formulation.md 8(e)); coupling = \"johnson\" "
-                                "answers the load");
+                                "the pressure at this friction, so the contact would open: the load is beyond the "
+                                "coupled model (docs/formulation.md 8(e)); coupling = \"johnson\" answers it without "
+                                "that term, an approximation of order beta_d f here");
     return resolution_error(coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: stick " +
                             shortest(t.checks.stick_margin) + ", slip " + shortest(t.checks.slip_margin) +
                             "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "

@@ -189,6 +189,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                           " relative (full coupling, from the levels up to n = " + std::to_string(n) +
                           ", docs/formulation.md 8(q))";
             }
+        } catch (const beyond_method_error&) {  // no rung can: its own line says what to change
+            throw;
         } catch (const resolution_error& e) {  // this rung cannot answer: the next may
             last_reason = one_line(e.what());
             refused_last = true;

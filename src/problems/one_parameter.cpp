@@ -114,6 +114,12 @@ one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int
     if (!(std::isfinite(eps.tangential) && eps.tangential >= 0.0))
         throw input_error("the tangential compliance eps1 must be finite and >= 0");
     check_beta_d(beta_d);
+    // 8(s): a stick zone reaches a contact edge only because eps1 q' governs the traction there; without a
+    // tangential layer the edges slip as for half-spaces (8(g)), a structure this limit does not build.
+    if (beta_d != 0.0 && eps.tangential == 0.0)
+        throw input_error("method 'one-parameter' with beta_d != 0 needs a tangential layer (eps1 > 0): without one "
+                          "the contact edges slip as for half-spaces (docs/formulation.md 8(g), 8(s)); use method "
+                          "'product' or 'extrapolated'");
     // The c0-independent parts of the stick equation's rows: sin phi_m and cos((j+1) phi_m).
     sin_.resize(n_ + 1);
     cos_.resize(static_cast<std::size_t>(n_ + 1) * n_);

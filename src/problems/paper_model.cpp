@@ -3,12 +3,14 @@
 // zone_solver's general search where it fails its checks (options.zones, docs/formulation.md section 7),
 // on the two-parameter collocation (with Richardson's rule for 'extrapolated') or on the one-parameter
 // limit's Glauert system (7(g)); and make_point_model, which chooses the model once.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
 #include <string>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/point_model.hpp"
 #include "roughroll/problems/zone_solver.hpp"
@@ -254,11 +256,14 @@ private:
         msg << "method 'one-parameter' with beta_d = " << limit_.beta_d() << " at Q/f = " << s.Q / limit_.friction()
             << ": the stick zone fails (3.3)-(3.4) (margins: stick " << s.checks.stick_margin << ", slip "
             << s.checks.slip_margin << "); "
-            << (discretisation ? "the entry's discretisation (docs/formulation.md 7(h)): set n = " +
-                                     std::to_string(2 * options_.nodes())
+            << (discretisation ? "the entry's discretisation (docs/formulation.md 7(h)): " +
+                                     (options_.nodes() < max_nodes
+                                          ? "set n = " + std::to_string(std::min(2 * options_.nodes(), max_nodes))
+                                          : std::string("n is at its largest; use method 'product'"))
                                : std::string("the zones have slip against Q (free rolling: in both directions), which "
                                              "the limit does not build (docs/formulation.md 8(s)): use method 'product' "
                                              "or 'extrapolated'"));
+        if (!discretisation) throw beyond_method_error(msg.str());
         throw resolution_error(msg.str());
     }
     tangential_solution solve(double Q, std::optional<double> guess, bool, std::optional<double>) override {

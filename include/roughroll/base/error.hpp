@@ -29,6 +29,14 @@ public:
     using error::error;
 };
 
+// A case that no n of the chosen method resolves (a zone structure the method does not build): the
+// line names what to change, and the ladder of levels refuses it at the rung that found it, not after
+// climbing to the top.
+class beyond_method_error : public resolution_error {
+public:
+    using resolution_error::resolution_error;
+};
+
 // A numerical fault: a GSL status, a singular system, a non-finite result,
 // a root search without a bracket.
 class numerical_error : public error {
