@@ -132,15 +132,20 @@ public:
     }
 
 protected:
-    // check_edge_zones_resolvable at n, its refusal followed by what answers the load instead.
-    void check_edge_zones(double Q, int n) const {
+    // `solve()`, its refusal (resolution_error) followed by what answers the load instead, where something does.
+    template <class F>
+    auto advised(double Q, F&& solve) const -> decltype(solve()) {
         try {
-            check_edge_zones_resolvable(materials_.beta_d, f_, Q, n);
+            return solve();
         } catch (const resolution_error& why) {
             const std::string advice = edge_zones_advice(Q);
             if (advice.empty()) throw;
             throw resolution_error(std::string(why.what()) + "; " + advice);
         }
+    }
+    // check_edge_zones_resolvable at n, advised.
+    void check_edge_zones(double Q, int n) const {
+        advised(Q, [&] { check_edge_zones_resolvable(materials_.beta_d, f_, Q, n); });
     }
     // At Johnson's level: free rolling of smooth rollers, the tolerance at which its layers would be neglected.
     virtual std::string edge_zones_advice(double Q) const {
@@ -285,17 +290,13 @@ public:
     point_model& level(int m) override { return levels_.at(m); }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
         if (layers_negligible(Q)) return zones_.layers_neglected_point();
-        try {
+        // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
+        // (docs/formulation.md 8(n)): any refusal names the tolerance at which they would be neglected.
+        return advised(Q, [&] {
             // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
             check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
             return johnson_point(Q, levels_.at<johnson_model>(below()));
-        } catch (const resolution_error& why) {
-            // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
-            // (docs/formulation.md 8(n)): the tolerance at which they would be neglected.
-            const std::string advice = edge_zones_advice(Q);
-            if (advice.empty()) throw;
-            throw resolution_error(std::string(why.what()) + "; " + advice);
-        }
+        });
     }
 
 private:

@@ -30,6 +30,9 @@ constexpr int start_scan = 32;           // trial starts of the stick zone
 constexpr int least_samples = 2001;      // samples of b p + f G for its least value (gross sliding)
 constexpr int shape_samples = 2001;      // samples of p for "even and decreasing" (complete slip)
 constexpr std::size_t traction_memo_size = 1 << 16;  // points of traction's memo before it starts again
+// The context of a fault in the blended zone's integrals (W and its Cauchy part), as the user reads it.
+constexpr const char* w_context =
+    "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))";
 // W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
 // integrands' 3/2-power ends and the sqrt at r = 1 analytic): tolerances, and the error GSL's own
 // estimate may keep when it cannot reach them.
@@ -100,7 +103,7 @@ void check_edge_zones_resolvable(double beta_d, double f, double Q, int n) {
     // The |beta_D| at which the estimate reaches the thinnest zone: pi f kappa/log(2/thinnest).
     const double needed = M_PI * f * edge_kappa(beta_d, f, Q) / std::log(2.0 / thinnest);
     // The n from which thinnest_edge_zone(n) is below the zone, where that n exists.
-    const double first_n = std::ceil(std::sqrt(0.01 * 0.5 * M_PI * M_PI / thickness));
+    const double first_n = std::ceil(std::sqrt(thinnest_edge_zone(1) / thickness));
     std::ostringstream msg;
     msg.precision(3);
     msg << "dissimilar rollers (beta_d = " << beta_d << ") at Q/f = " << shortest(Q / f) << " and n = " << n
@@ -250,7 +253,7 @@ double dissimilar_zones::W(double r, double start, double c0) {
                     const double z = eta - r;
                     return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
                 },
-                points[i], points[i + 1], "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))");
+                points[i], points[i + 1], w_context);
         w += term.T * total;
     }
     return w;
@@ -279,7 +282,7 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     const auto integrate = [&](const std::function<double(double)>& integrand) {
         double total = 0.0;
         for (std::size_t i = 0; i + 1 < points.size(); ++i)
-            total += integrate_piece(integrand, points[i], points[i + 1], "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))");
+            total += integrate_piece(integrand, points[i], points[i + 1], w_context);
         return total;
     };
     // r within `breakpoint_apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
@@ -314,7 +317,7 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
                     const double ge = edge_pressure(eta) * H(eta, start, c0);
                     return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
                 },
-                points[i], points[i + 1], "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))");
+                points[i], points[i + 1], w_context);
         }
         return M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
     }
@@ -370,7 +373,8 @@ double dissimilar_zones::load_under_H(double start, double c0) {
     std::sort(points.begin(), points.end());
     double inner = 0.0;
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        inner += integrate_piece(pressure_theta, points[i], points[i + 1], "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))");
+        inner += integrate_piece(pressure_theta, points[i], points[i + 1],
+                                 "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))");
     return inner + load_between(solver_.normal(), c0, 1.0);
 }
 
@@ -493,7 +497,8 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
             for (std::size_t i = 0; i < r.size(); ++i) w[i] = b * normal.pressure(r[i]) + f_ * w[i];
             return w;
         },
-        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true, "dissimilar rollers at gross sliding");
+        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true,
+        "dissimilar rollers at gross sliding");
     s.forcing = b;
     return s;
 }
