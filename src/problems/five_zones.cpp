@@ -4,7 +4,7 @@
 // below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two
 // stick zones, each with its own collocation system (tangential_solver::solve_on_zone) whose right
 // side carries the other zone's L1[q] (block Gauss-Seidel), and the zone search's Newton in the four
-// ends (blend_ends_newton, zone_newton.hpp) from the starts of zone_start.hpp, tried in turn by one loop.
+// ends (ends_newton, zone_newton.hpp) from the starts of zone_start.hpp, tried in turn by one loop.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -102,9 +102,9 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends, double beta) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
-    // The zone search's Newton in the blend's stick zones (blend_ends_newton, k = 2): the load's gap, both entry
+    // The zone search's Newton in the blend's stick zones (ends_newton, k = 2): the load's gap, both entry
     // conditions psi_k(-1) = 0 and xi1 = xi2, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
-    auto s = blend_ends_newton<five_zone_solution>(
+    auto s = ends_newton<five_zone_solution>(
         [&](const std::vector<stick_span>& z) -> std::optional<five_zone_solution> {
             try {
                 return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, beta);
@@ -112,7 +112,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
                 return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
             }
         },
-        zone_solver::entry_coefficient, Q, f_, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}},
+        zone_solver::entry_coefficient, Q, f_, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}}, false,
         zone_newton_iterations, zone_end_resolution);
     if (s) s->checks = check(*s);
     return s;

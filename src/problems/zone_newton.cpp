@@ -4,8 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include <gsl/gsl_math.h>
-
 #include "roughroll/numerics/damped_newton.hpp"
 
 namespace roughroll {
@@ -33,8 +31,8 @@ bool inside(const std::vector<double>& x, bool log_length) {
 
 std::optional<int> zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
-    const std::vector<stick_span>& from, const zone_newton_options& options) {
-    const bool log_length = options.log_length;
+    const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
+    const std::function<double()>& rounding) {
     newton_problem problem;
     problem.residual = [&](const std::vector<double>& x) { return residual(spans_of(x, log_length)); };
     problem.inside = [log_length](const std::vector<double>& x) { return inside(x, log_length); };
@@ -52,31 +50,16 @@ std::optional<int> zone_newton(
             size += (log_length && j % 2 == 1 ? std::exp(x[j]) : 1.0) * std::fabs(dx[j]);
         return size;
     };
-    if (options.rounding) problem.rounding = [&options](const std::vector<double>&) { return options.rounding(); };
+    if (rounding) problem.rounding = [&rounding](const std::vector<double>&) { return rounding(); };
     std::vector<double> x0;
     for (const stick_span& z : from) {
         const double half = 0.5 * (z.end - z.start);
         x0.push_back(0.5 * (z.start + z.end));
         x0.push_back(log_length ? std::log(half) : half);
     }
-    const auto root = damped_newton(problem, x0, {options.max_iterations, options.tolerance, 1e-6});
+    const auto root = damped_newton(problem, x0, {max_iterations, tolerance, 1e-6});
     if (!root) return std::nullopt;
     return root->iterations;
-}
-
-std::optional<tangential_solution> zone_ends_newton(
-    const std::function<tangential_solution(double, double)>& solve_on_zone,
-    const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
-    int max_iterations, double tolerance) {
-    if (!(gap > 0.0 && c0 > start)) return std::nullopt;
-    std::optional<tangential_solution> last;  // the solve at the last zone, which is the root's
-    const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
-        last = solve_on_zone(z[0].start, z[0].end);
-        const double deficit = -z[0].rho * M_PI_2 * last->psi_b[0];
-        if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
-        return std::vector<double>{std::log(deficit / gap), entry(*last)};
-    };
-    return at_root(zone_newton(residual, {{start, c0, 0.0}}, {true, max_iterations, tolerance}), last);
 }
 
 }  // namespace roughroll

@@ -29,21 +29,14 @@ double zone_solver::entry_coefficient(const tangential_solution& s) {
 }
 
 zone_newton_from zone_solver::newton(double magnitude) {
-    return [this, magnitude](double start, double end) -> std::optional<tangential_solution> {
-        // Relative: F = (log(-rho int q / (f - |Q|)), E) in the zone's midpoint m and u = log rho
-        // (docs/formulation.md 7(e), 7(g); zone_ends_newton): the load's component keeps its digits as the
-        // zone collapses at gross sliding (rho -> 0, f - |Q| -> 0), and is close to linear in u
-        // (rho int q ~ -kappa rho^k), so Newton converges from a zone far off in size. Absolute (the blended
-        // zones of 8(g), whose load keeps f's scale): F = ((Q - |Q|)/f, E) in (m, rho) (blend_ends_newton).
-        // Empty when it does not converge: the caller falls back to Brent.
-        if (op_.method.relative_load)
-            return zone_ends_newton(op_.solve, op_.newton_entry, op_.f - magnitude, start, end, zone_newton_iterations,
-                                    op_.method.newton_tolerance);
-        return blend_ends_newton<tangential_solution>(
+    return [this, magnitude](double start, double end) {
+        // The operator's residuals (ends_newton): relative for the zones of one slip direction (7(e), 7(g)),
+        // absolute for the blended zones of 8(g). Empty when it does not converge: the caller falls back to Brent.
+        return ends_newton<tangential_solution>(
             [this](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
                 return op_.solve(z[0].start, z[0].end);
             },
-            op_.newton_entry, magnitude, op_.f, {{start, end, 0.0}}, zone_newton_iterations,
+            op_.newton_entry, magnitude, op_.f, {{start, end, 0.0}}, op_.method.relative_load, zone_newton_iterations,
             op_.method.newton_tolerance);
     };
 }

@@ -116,7 +116,7 @@ struct five_zone_solution {
 
 using five_zone_start = zone_start<five_zone_solution>;  // a start of their search (zone_start.hpp)
 
-// Their stick zones' systems, for the zone search's Newton (blend_ends_newton, zone_newton.hpp).
+// Their stick zones' systems, for the zone search's Newton (ends_newton, zone_newton.hpp).
 inline std::vector<const tangential_solution*> stick_systems(const five_zone_solution& s) {
     return {&s.zone1, &s.zone2};
 }

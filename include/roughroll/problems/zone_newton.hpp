@@ -14,10 +14,13 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
+
+#include <gsl/gsl_math.h>
 
 #include "roughroll/problems/tangential_problem.hpp"
 
@@ -31,59 +34,47 @@ struct stick_span {
     double start, end, rho;
 };
 
-struct zone_newton_options {
-    bool log_length;
-    int max_iterations;
-    double tolerance;
-    // The ends' rounding at the last residual's zones (damped_newton's `rounding`); empty: below `tolerance`.
-    std::function<double()> rounding = {};
-};
-
-// The Newton iterations from the zones `from` to a root of `residual` (empty where the zones leave
-// the family the residuals describe); empty when it does not converge. The last call of `residual`
-// is at the root.
+// The Newton iterations from the zones `from` to a root of `residual` (empty where the zones leave the family
+// the residuals describe), in (m, log rho) with `log_length`, else (m, rho); `rounding`: the ends' rounding at
+// the last residual's zones (damped_newton's), empty: below `tolerance`. Empty when it does not converge. The
+// last call of `residual` is at the root.
 std::optional<int> zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
-    const std::vector<stick_span>& from, const zone_newton_options& options);
-
-// The solution at Newton's root, the last one solved, with Newton's iterations; empty without a root.
-// `last` by reference: it is read after the iteration that fills it, whatever the order in which a
-// call's arguments are evaluated.
-template <class Solution>
-std::optional<Solution> at_root(std::optional<int> iterations, const std::optional<Solution>& last) {
-    if (!iterations || !last) return std::nullopt;
-    std::optional<Solution> s = last;
-    s->iterations = *iterations;
-    return s;
-}
-
-// One zone of one slip direction (7(e), 7(g)): F_0 = log(-rho (pi/2) psi_0 / gap) (the load's gap
-// f - Q(s, c) = -rho int q relative to `gap` = f - |Q| > 0), F_1 = `entry` of the solution (psi(-1)/|psi_0|,
-// or q'(s) in the one-parameter limit), in (m, log rho). `solve_on_zone(s, c)`: the system on [s, c].
-std::optional<tangential_solution> zone_ends_newton(
-    const std::function<tangential_solution(double, double)>& solve_on_zone,
-    const std::function<double(const tangential_solution&)>& entry, double gap, double start, double c0,
-    int max_iterations, double tolerance);
+    const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
+    const std::function<double()>& rounding);
 
 // The stick zones' systems of a solution, in order from r = -1: one here, two for the five zones
 // (dissimilar_zones.hpp).
 inline std::vector<const tangential_solution*> stick_systems(const tangential_solution& s) { return {&s}; }
 
-// The blend's k stick zones (8(g); 8(j) item 3) at the load Q: F = ((Q(zones) - Q)/f, E(zone_1), ...,
-// E(zone_k), (xi_1 - xi_2)/f, ..., (xi_{k-1} - xi_k)/f) in (m_i, rho_i), absolute (the blend's Q keeps
-// f's scale: its zones do not collapse onto a point). `solve`: the systems on the zones, empty where they
-// fail (the step is halved). k = 1 is the three zones of dissimilar rollers, k = 2 the five zones.
+// Newton in the ends of k stick zones at the load Q, for every zone search. `solve`: the systems on the zones,
+// empty where they fail (the step is halved). The residuals, per zone structure:
+//   - `relative` (k = 1, one slip direction: 7(e), 7(g)): F_0 = log(-rho (pi/2) psi_0 / (f - Q)), the load's
+//     gap f - Q(s, c) = -rho int q relative to f - Q > 0, which keeps its digits as the zone collapses at gross
+//     sliding and is close to linear in u = log rho (rho int q ~ -kappa rho^k), so that Newton converges from a
+//     zone far off in size; F_1 = `entry` (psi(-1)/|psi_0|, or q'(s) in the one-parameter limit); in (m, log rho);
+//   - else the blend (8(g); 8(j) item 3): F = ((Q(zones) - Q)/f, E(zone_1), ..., E(zone_k), (xi_1 - xi_2)/f, ...,
+//     (xi_{k-1} - xi_k)/f) in (m_i, rho_i), absolute (the blend's Q keeps f's scale: its zones do not collapse
+//     onto a point); k = 1 the three zones of dissimilar rollers, k = 2 the five zones.
 template <class Solution>
-std::optional<Solution> blend_ends_newton(
+std::optional<Solution> ends_newton(
     const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
     const std::function<double(const tangential_solution&)>& entry, double Q, double f,
-    const std::vector<stick_span>& from, int max_iterations, double tolerance) {
+    const std::vector<stick_span>& from, bool relative, int max_iterations, double tolerance) {
+    if (relative && !(f - Q > 0.0)) return std::nullopt;
     std::optional<Solution> last;  // the solve at the last zones, which are the root's
     const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
         last = solve(z);
         if (!last) return std::nullopt;
         const std::vector<const tangential_solution*> systems = stick_systems(*last);
-        std::vector<double> F{(last->Q - Q) / f};
+        std::vector<double> F;
+        if (relative) {
+            const double deficit = -z[0].rho * M_PI_2 * systems[0]->psi_b[0];
+            if (!(deficit > 0.0)) return std::nullopt;  // this zone carries more than f: off the family
+            F.push_back(std::log(deficit / (f - Q)));
+        } else {
+            F.push_back((last->Q - Q) / f);
+        }
         for (const tangential_solution* t : systems) F.push_back(entry(*t));
         for (std::size_t i = 1; i < systems.size(); ++i) F.push_back((systems[i - 1]->xi - systems[i]->xi) / f);
         return F;
@@ -98,7 +89,11 @@ std::optional<Solution> blend_ends_newton(
         for (const tangential_solution* t : stick_systems(*last)) rcond = std::min(rcond, t->rcond);
         return std::numeric_limits<double>::epsilon() / rcond;
     };
-    return at_root(zone_newton(residual, from, {false, max_iterations, tolerance, rounding}), last);
+    const std::optional<int> iterations =
+        zone_newton(residual, from, relative, max_iterations, tolerance, relative ? std::function<double()>{} : rounding);
+    if (!iterations || !last) return std::nullopt;
+    last->iterations = *iterations;  // the solution at the root, the last one solved
+    return last;
 }
 
 }  // namespace roughroll
