@@ -19,7 +19,6 @@
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/gross_sliding.hpp"
-#include "roughroll/problems/zone_family.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/zone_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -12,7 +14,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/quadrature.hpp"
-#include "roughroll/problems/zone_family.hpp"
+#include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
@@ -20,67 +22,158 @@ namespace roughroll {
 namespace {
 // Below this 1 - |Q|/f the search starts from the operator's model zone near gross sliding (7(e), 7(g)).
 constexpr double near_sliding = 1e-4;
-}  // namespace
+constexpr double end_tolerance = 1e-15;  // zone ends by Brent, absolute in r
+constexpr int brent_iterations = 200;
 
-zone_solver::zone_solver(stick_zone_operator op) : op_(std::move(op)) {}
+// The stick zones [s, c(s)] that carry a load |Q| < f (7(e) step 3; 7(g); 8(g)). For a start s the end c(s) is
+// the root of the load's excess
+//   e(c) = Q(s, c) - |Q|  on (s, 1],   e(s) > 0 (no stick zone: the slip zones carry more than |Q|),
+// falling as the zone grows, by Brent to 1e-15 in r. Along the family the entry condition E(s) of the zone
+// [s, c(s)] (psi(-1) = 0 of 7(b), v(s-) = 0 of 7(g)) vanishes at the answer: trial starts are scanned for its
+// sign changes, and a bracket is solved by Newton from the zone interpolated between its trials (ends_newton),
+// else by Brent on s (each start with its own end: nested Brent).
+struct zone_family {
+    std::function<std::optional<double>(double start)> end;  // empty where no end carries |Q|
+    std::function<tangential_solution(double start, double end)> solve;
+    std::function<double(const tangential_solution&)> entry;
+};
 
-double zone_solver::entry_coefficient(const tangential_solution& s) {
-    return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
+struct zone_trial {
+    double start, end, entry;
+};
+
+// The end c in (start, 1] with excess(c) = 0, where excess(start) > 0 > excess(1); empty where no end carries
+// the load. `near`: the end of a nearby start, tried first on a bracket of half-width 1e-3.
+std::optional<double> stick_zone_end(const std::function<double(double)>& excess, double start,
+                                     std::optional<double> near) {
+    const char* what = "Brent search for the stick zone's end";
+    if (near) {
+        const double lo = std::max(start, *near - 1e-3), hi = std::min(1.0, *near + 1e-3);
+        if (lo < hi && excess(lo) > 0.0 && excess(hi) < 0.0)
+            return brent_root(excess, lo, hi, end_tolerance, 0.0, brent_iterations, what).x;
+    }
+    if (!(excess(start) > 0.0 && excess(1.0) < 0.0)) return std::nullopt;
+    return brent_root(excess, start, 1.0, end_tolerance, 0.0, brent_iterations, what).x;
 }
 
-zone_newton_from zone_solver::newton(double magnitude) {
-    return [this, magnitude](double start, double end) {
+// Whether E changes sign between two trials (an unknown, NaN, entry counts as positive).
+bool brackets_entry(const zone_trial& lo, const zone_trial& hi) { return !(lo.entry <= 0.0) != !(hi.entry <= 0.0); }
+
+// The trials at `starts`, in order, after `trials`. `to_first_bracket`: stop after the first trial whose entry
+// changes sign against the one before (brackets_entry), and at a start without a zone or whose zone fails to
+// solve (numerical_error); else every start is tried, one without a zone skipped.
+std::vector<zone_trial> scan_starts(const zone_family& family, std::vector<zone_trial> trials,
+                                    const std::vector<double>& starts, bool to_first_bracket) {
+    for (const double start : starts) {
+        std::optional<zone_trial> t;
+        try {
+            if (const auto end = family.end(start)) t = zone_trial{start, *end, family.entry(family.solve(start, *end))};
+        } catch (const numerical_error&) {
+            if (!to_first_bracket) throw;
+        }
+        if (!t) {
+            if (to_first_bracket) break;
+            continue;
+        }
+        trials.push_back(*t);
+        if (to_first_bracket && trials.size() > 1 && brackets_entry(trials[trials.size() - 2], trials.back())) break;
+    }
+    return trials;
+}
+
+// The zone of a bracket [lo, hi] of E: `newton` from the interpolated zone (from hi's where lo's entry is
+// unknown), else Brent on the start; numerical_error where Brent fails or a start has no zone.
+tangential_solution zone_in_bracket(const zone_family& family, const zone_trial& lo, const zone_trial& hi,
+                                    const zone_newton_from& newton) {
+    const double w = std::isnan(lo.entry) ? 1.0 : lo.entry / (lo.entry - hi.entry);
+    if (auto s = newton(lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end))) return *s;
+    const auto end = [&](double start) {
+        const auto c = family.end(start);
+        if (!c) throw numerical_error("zone search: no stick zone carries the load inside a bracket of its entry condition");
+        return *c;
+    };
+    const root r = brent_root([&](double start) { return family.entry(family.solve(start, end(start))); }, lo.start,
+                              hi.start, end_tolerance, 0.0, brent_iterations, "Brent search for the stick zone's start");
+    tangential_solution s = family.solve(r.x, end(r.x));
+    s.iterations = r.iterations;
+    return s;
+}
+
+// A search's |Q| solution as the point at Q: general where its stick zone starts inside the contact, the mirror
+// for Q < 0 (apply_load_sign, `what` naming the search), its checks (3.3)-(3.4) by `check` (empty: the search
+// made them, in the |Q| frame, whose checks are Q's).
+tangential_solution searched_point(tangential_solution s, double Q, const char* what,
+                                   const std::function<traction_checks(const tangential_solution&)>& check) {
+    s.layout.route = s.start() > -1.0 ? zone_route::general : zone_route::single;
+    apply_load_sign(s, Q, what);
+    if (check) s.checks = check(s);
+    return s;
+}
+// Newton in the zone ends at |Q| (ends_newton, zone_newton.hpp).
+zone_newton_from newton_at(const stick_zone_operator& op, double magnitude) {
+    return [&op, magnitude](double start, double end) {
         // The operator's residuals (ends_newton): relative for the zones of one slip direction (7(e), 7(g)),
         // absolute for the blended zones of 8(g). Empty when it does not converge: the caller falls back to Brent.
         return ends_newton<tangential_solution>(
-            [this](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
-                return op_.solve(z[0].start, z[0].end);
+            [&op](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
+                return op.solve(z[0].start, z[0].end);
             },
-            op_.newton_entry, magnitude, op_.f, {{start, end, 0.0}}, op_.method.relative_load, zone_newton_iterations,
-            op_.method.newton_tolerance);
+            op.newton_entry, magnitude, op.f, {{start, end, 0.0}}, op.method.relative_load, zone_newton_iterations,
+            op.method.newton_tolerance);
     };
 }
 
-std::optional<zone_solver::found> zone_solver::bracketed(const zone_family& zones,
-                                                         const std::vector<zone_trial>& trials, double magnitude,
-                                                         std::optional<tangential_solution>& first) {
-    const bool every = op_.method.every_bracket;
+// The search's |Q| zone, whether its checks are made (the scan of every bracket makes them) and whether it is
+// Newton's from the guess (which may be another zone failing the checks: then searched again without).
+struct found {
+    tangential_solution zone;
+    bool checked, from_guess;
+};
+
+// The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket); `first`: the
+// first zone solved whose checks fail.
+std::optional<found> bracketed(const stick_zone_operator& op, const zone_family& zones,
+                               const std::vector<zone_trial>& trials, double magnitude,
+                               std::optional<tangential_solution>& first) {
+    const bool every = op.method.every_bracket;
     for (std::size_t k = 1; k < trials.size(); ++k) {
         if (!brackets_entry(trials[k - 1], trials[k])) continue;
         std::optional<tangential_solution> s;
         try {
-            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton(magnitude));
+            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton_at(op, magnitude));
         } catch (const numerical_error&) {
             if (!every) throw;
             continue;  // a bracket that fails to solve: the next one may answer
         }
         // The scan to the first bracket ends on it: its zone answers, checked by the caller.
         if (!every) return found{*s, false, false};
-        s->checks = op_.check(*s);
+        s->checks = op.check(*s);
         if (s->checks.hold()) return found{*s, true, false};
         if (!first) first = s;
     }
     return std::nullopt;
 }
 
-zone_solver::found zone_solver::general(double magnitude, std::optional<zone_guess> guess,
-                                        std::optional<double> single_end) {
-    const double f = op_.f;
-    const zone_search_method& method = op_.method;
+// The general search at |Q| = magnitude; single_end: the paper's zone's c0 at this load, when it was solved
+// (saves one search).
+found general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
+                     std::optional<double> single_end) {
+    const double f = op.f;
+    const zone_search_method& method = op.method;
     // Q(start, c0) - |Q| falls from the empty zone's load (c0 = start) as the zone grows (7(c)), in the
     // operator's form (its excess).
     std::optional<double> last_end = single_end;
     const zone_family zones{[&](double start) {
                                 const auto c = stick_zone_end(
                                     [&](double c0) {
-                                        if (c0 <= start) return op_.empty_load(start) - magnitude;
-                                        return op_.excess(op_.solve(start, c0), magnitude);
+                                        if (c0 <= start) return op.empty_load(start) - magnitude;
+                                        return op.excess(op.solve(start, c0), magnitude);
                                     },
                                     start, method.chained_ends ? last_end : std::nullopt);
                                 if (c) last_end = c;
                                 return c;
                             },
-                            op_.solve, op_.entry};
+                            op.solve, op.entry};
     // The paper's zone first: if E <= 0 at start = -1 it is the answer (7(b), 7(g)).
     std::optional<double> edge_end = single_end;
     if (!edge_end && method.edge == edge_zone::needed) {
@@ -94,25 +187,25 @@ zone_solver::found zone_solver::general(double magnitude, std::optional<zone_gue
     }
     double at_edge_entry = std::numeric_limits<double>::quiet_NaN();  // unknown: the scan decides
     if (edge_end) {
-        tangential_solution at_edge = op_.solve(-1.0, *edge_end);
-        at_edge_entry = op_.entry(at_edge);
+        tangential_solution at_edge = op.solve(-1.0, *edge_end);
+        at_edge_entry = op.entry(at_edge);
         if (at_edge_entry <= 0.0) return {at_edge, false, false};
     }
     // r*, where G is least: the stick zone straddles it and collapses onto it at gross sliding (7(d)).
     std::optional<double> point;
     const auto least_point = [&] {
-        if (!point) point = op_.gross_sliding().c0();
+        if (!point) point = op.gross_sliding().c0();
         return *point;
     };
     // Near gross sliding: from the operator's model zone at r*, before the coarse level's guess,
     // which rounding makes no better.
-    if (op_.near_sliding && f - magnitude <= near_sliding * f)
-        if (auto s = op_.near_sliding(magnitude, least_point(), newton(magnitude))) return {*s, false, false};
+    if (op.near_sliding && f - magnitude <= near_sliding * f)
+        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude))) return {*s, false, false};
     // Newton from the coarse level's zone when extrapolating.
     if (guess && guess->start > -1.0)
-        if (auto s = newton(magnitude)(guess->start, guess->c0)) return {*s, false, true};
+        if (auto s = newton_at(op, magnitude)(guess->start, guess->c0)) return {*s, false, true};
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
-    // (7(e), zone_family.hpp), the zone from the leading edge (where the structure has one) first.
+    // (7(e), zone_family above), the zone from the leading edge (where the structure has one) first.
     std::vector<double> starts;
     if (method.clustered) {
         for (int k = 1; k < method.scan; ++k) starts.push_back(-std::cos(M_PI * k / method.scan));
@@ -125,7 +218,7 @@ zone_solver::found zone_solver::general(double magnitude, std::optional<zone_gue
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
     const std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
     std::optional<tangential_solution> first;
-    if (auto s = bracketed(zones, trials, magnitude, first)) return *s;
+    if (auto s = bracketed(op, zones, trials, magnitude, first)) return *s;
     if (method.every_bracket && !first && !trials.empty()) {
         // Near gross sliding the leading slip zone of dissimilar rollers thins below the clustered scan's
         // first start, 1 - cos(pi/32) = 4.8e-3 from the edge (the stick zone closes on the leading edge as
@@ -135,7 +228,7 @@ zone_solver::found zone_solver::general(double magnitude, std::optional<zone_gue
         for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) near_edge.push_back(-1.0 + gap);
         std::vector<zone_trial> edge = scan_starts(zones, {}, near_edge, false);
         edge.push_back(trials.front());
-        if (auto s = bracketed(zones, edge, magnitude, first)) return *s;
+        if (auto s = bracketed(op, zones, edge, magnitude, first)) return *s;
     }
     if (first) return {*first, true, false};  // the caller refuses it: its checks fail
     // Where the scan ends on no bracket, no zone of this structure carries the load (not a numerical
@@ -143,6 +236,13 @@ zone_solver::found zone_solver::general(double magnitude, std::optional<zone_gue
     // (contact::zones_for), dissimilar_zones::solve tries its other structure, a curve refuses the row
     // (docs/robustness.md).
     throw resolution_error(method.refusal);
+}
+}  // namespace
+
+zone_solver::zone_solver(stick_zone_operator op) : op_(std::move(op)) {}
+
+double zone_solver::entry_coefficient(const tangential_solution& s) {
+    return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
 }
 
 tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
@@ -154,7 +254,7 @@ tangential_solution zone_solver::solve(double Q, bool force_general, std::option
     const auto search = [&](std::optional<zone_guess> g) {
         if (magnitude == op_.f)
             return std::make_pair(searched_point(op_.gross_sliding(), Q, op_.method.name, op_.check), false);
-        found z = general(magnitude, g, single_end);
+        found z = general_search(op_, magnitude, g, single_end);
         // The checks the scan made in the |Q| frame are Q's: the mirror changes the signs of p1 and v together.
         return std::make_pair(
             searched_point(std::move(z.zone), Q, op_.method.name, z.checked ? decltype(op_.check){} : op_.check),

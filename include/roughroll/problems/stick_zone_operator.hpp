@@ -24,7 +24,6 @@
 #include <vector>
 
 #include "roughroll/problems/tangential_problem.hpp"
-#include "roughroll/problems/zone_family.hpp"
 
 namespace roughroll {
 
@@ -43,7 +42,7 @@ struct zone_search_method {
     int scan = 32;
     bool clustered = false;
     bool scan_to_least_point = false;
-    // How the scan answers (zone_family.hpp): false: the starts up to the first sign change of the entry
+    // How the scan answers (zone_solver.cpp): false: the starts up to the first sign change of the entry
     // condition, its bracket's zone; true: every start, each bracket in order, the first zone whose checks
     // (3.3)-(3.4) hold, else the first solved; where no bracket gives a zone, starts 1e-12, 1e-11, ... from
     // the leading edge before the first trial (a thin leading slip zone near gross sliding, 8(g)).
@@ -55,6 +54,10 @@ struct zone_search_method {
     bool relative_load = true;
     double newton_tolerance = 0.0;  // Newton's last full step in the zone ends, absolute in r
 };
+
+// Newton in the ends of a zone (start, end) at the load asked (ends_newton, zone_newton.hpp); empty where it does
+// not converge.
+using zone_newton_from = std::function<std::optional<tangential_solution>(double start, double end)>;
 
 struct stick_zone_operator {
     double f;  // friction coefficient

@@ -13,7 +13,7 @@
 //     rollers (8(g)). On the stick zone the operator's equation, plus its entry condition (psi(-1) = 0
 //     of 7(b), v(s-) = 0 of 7(g)): the traction reaches the bound f p where material enters the stick zone;
 //   - gross sliding |Q| = f (gross_sliding.hpp, 7(d)).
-// (s, c0) solve Q(s, c0) = |Q| and E(s, c0) = 0 along the zones carrying |Q| (zone_family.hpp):
+// (s, c0) solve Q(s, c0) = |Q| and E(s, c0) = 0 along the zones carrying |Q| (the family of 7(e), 7(g)):
 // the paper's zone first where the structure has one (E <= 0 at s = -1 is the edge inequality), then
 // near gross sliding the operator's model zone, then Newton from a coarse level's zone (kept where its
 // checks hold), then a scan of trial starts and its brackets (the method's data). Other structures
@@ -49,20 +49,6 @@ public:
     static double entry_coefficient(const tangential_solution& s);
 
 private:
-    // The search's |Q| zone, whether its checks are made (the scan of every bracket makes them) and whether it
-    // is Newton's from the guess (which may be another zone failing the checks: then searched again without).
-    struct found {
-        tangential_solution zone;
-        bool checked, from_guess;
-    };
-    // single_end: the paper's zone's c0 at this load, when it was solved (saves one search).
-    found general(double magnitude, std::optional<zone_guess> guess, std::optional<double> single_end);
-    // The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket); `first`:
-    // the first zone solved whose checks fail.
-    std::optional<found> bracketed(const zone_family& zones, const std::vector<zone_trial>& trials, double magnitude,
-                                   std::optional<tangential_solution>& first);
-    zone_newton_from newton(double magnitude);  // Newton in the zone ends at |Q| (zone_newton.hpp)
-
     stick_zone_operator op_;
 };
 

@@ -17,7 +17,7 @@
 //     there (2.875 or 1.5) continued in beta_D/f, then in Q (factors 2^(1/4): 2^(1/2) met, at f = 0.2, another
 //     root whose checks fail).
 // The one-stick-zone search's own starts (zone_solver: the paper's zone, the near-sliding asymptote of 7(d)-(e), the
-// coarser level's zone, the scan of stick-zone starts and its brackets, zone_family.hpp) stay its own: five zones
+// coarser level's zone, the scan of stick-zone starts and its brackets, zone_solver.cpp) stay its own: five zones
 // never reach gross sliding (three zones take over, 8(j) 4, 4a) and their scan is one of loads, not of starts.
 #pragma once
 
