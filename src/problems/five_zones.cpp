@@ -95,19 +95,17 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     return s;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends) {
-    return five_zones(Q, ends, std::fabs(beta_d_));
-}
-
-std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends, double beta) {
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends,
+                                                               std::optional<double> beta) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
+    const double forcing = beta.value_or(std::fabs(beta_d_));
     // The zone search's Newton in the blend's stick zones (ends_newton, k = 2): the load's gap, both entry
     // conditions psi_k(-1) = 0 and xi1 = xi2, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
     auto s = ends_newton<five_zone_solution>(
         [&](const std::vector<stick_span>& z) -> std::optional<five_zone_solution> {
             try {
-                return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, beta);
+                return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, forcing);
             } catch (const numerical_error&) {
                 return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
             }

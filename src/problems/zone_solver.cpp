@@ -67,7 +67,8 @@ std::vector<zone_trial> scan_starts(const zone_family& family, std::vector<zone_
     for (const double start : starts) {
         std::optional<zone_trial> t;
         try {
-            if (const auto end = family.end(start)) t = zone_trial{start, *end, family.entry(family.solve(start, *end))};
+            if (const auto end = family.end(start))
+                t = zone_trial{start, *end, family.entry(family.solve(start, *end))};
         } catch (const numerical_error&) {
             if (!to_first_bracket) throw;
         }
@@ -89,11 +90,14 @@ tangential_solution zone_in_bracket(const zone_family& family, const zone_trial&
     if (auto s = newton(lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end))) return *s;
     const auto end = [&](double start) {
         const auto c = family.end(start);
-        if (!c) throw numerical_error("zone search: no stick zone carries the load inside a bracket of its entry condition");
+        if (!c)
+            throw numerical_error(
+                "zone search: no stick zone carries the load inside a bracket of its entry condition");
         return *c;
     };
-    const root r = brent_root([&](double start) { return family.entry(family.solve(start, end(start))); }, lo.start,
-                              hi.start, end_tolerance, 0.0, brent_iterations, "Brent search for the stick zone's start");
+    const root r =
+        brent_root([&](double start) { return family.entry(family.solve(start, end(start))); }, lo.start, hi.start,
+                   end_tolerance, 0.0, brent_iterations, "Brent search for the stick zone's start");
     tangential_solution s = family.solve(r.x, end(r.x));
     s.iterations = r.iterations;
     return s;

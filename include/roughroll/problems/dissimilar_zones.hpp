@@ -169,9 +169,11 @@ public:
     // `opposite`: try the leading slip against Q first (the coarser level's structure).
     tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false);
 
-    // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1, s2, c2) (damped_newton);
-    // empty when Newton does not converge. The checks are made, not acted on.
-    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends);
+    // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1, s2, c2) (damped_newton),
+    // with the forcing `beta` in place of |beta_D| where given (a step of the continuation in beta_D/f); empty
+    // when Newton does not converge. The checks are made, not acted on.
+    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends,
+                                                 std::optional<double> beta = std::nullopt);
     // Five zones at load Q, |Q| < f, from the starts `first` (the coarser level's ends, a curve's previous row),
     // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q is the answer; empty where
     // none does, where the continuation ends on the braked side (the three zones of a braked roller 1 answer), and
@@ -190,8 +192,6 @@ public:
     tangential_solution layers_neglected_point();
 
 private:
-    // Newton from `ends` with the forcing `beta` in place of |beta_D| (a step of the continuation in beta_D/f).
-    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends, double beta);
     std::vector<five_zone_start> search_starts(double Q) const;  // five_zones(Q)'s own starts
     // Newton from the driven three zones at `load` with `forcing`; `holds` where their v stays positive up to the
     // edge (they are the answer: no five zones).

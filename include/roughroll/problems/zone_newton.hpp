@@ -57,10 +57,10 @@ inline std::vector<const tangential_solution*> stick_systems(const tangential_so
 //     (xi_{k-1} - xi_k)/f) in (m_i, rho_i), absolute (the blend's Q keeps f's scale: its zones do not collapse
 //     onto a point); k = 1 the three zones of dissimilar rollers, k = 2 the five zones.
 template <class Solution>
-std::optional<Solution> ends_newton(
-    const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
-    const std::function<double(const tangential_solution&)>& entry, double Q, double f,
-    const std::vector<stick_span>& from, bool relative, int max_iterations, double tolerance) {
+std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
+                                    const std::function<double(const tangential_solution&)>& entry, double Q, double f,
+                                    const std::vector<stick_span>& from, bool relative, int max_iterations,
+                                    double tolerance) {
     if (relative && !(f - Q > 0.0)) return std::nullopt;
     std::optional<Solution> last;  // the solve at the last zones, which are the root's
     const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
@@ -89,8 +89,8 @@ std::optional<Solution> ends_newton(
         for (const tangential_solution* t : stick_systems(*last)) rcond = std::min(rcond, t->rcond);
         return std::numeric_limits<double>::epsilon() / rcond;
     };
-    const std::optional<int> iterations =
-        zone_newton(residual, from, relative, max_iterations, tolerance, relative ? std::function<double()>{} : rounding);
+    const std::optional<int> iterations = zone_newton(residual, from, relative, max_iterations, tolerance,
+                                                      relative ? std::function<double()>{} : rounding);
     if (!iterations || !last) return std::nullopt;
     last->iterations = *iterations;  // the solution at the root, the last one solved
     return last;
