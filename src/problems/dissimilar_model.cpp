@@ -87,16 +87,11 @@ public:
         if (s.layout.stick_zones() != 2) return three(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
         // Five zones (8(j)): the level from the point's ends (Newton), else its own search.
         const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
-        const five_zone_solution* v = five(s.Q, &ends);
-        if (v == nullptr)
-            throw resolution_error(no_honest_estimate(how, n, structure()) + "level " +
-                                   std::to_string(nodes()) + " finds no five zones at Q = " + shortest(s.Q) +
-                                   " from level n's zones; " +
-                                   (n < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
-                                                  : "n is at its largest, so the load is beyond the method's reach"));
-        tangential_solution t = five_zone_point(*v);
-        t.Q = s.Q;  // the load asked for (full coupling's alternation solves at it)
-        return t;
+        if (std::optional<tangential_solution> t = five(s.Q, &ends)) return *t;
+        throw resolution_error(no_honest_estimate(how, n, structure()) + "level " + std::to_string(nodes()) +
+                               " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
+                               (n < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
+                                              : "n is at its largest, so the load is beyond the method's reach"));
     }
 
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
@@ -181,28 +176,32 @@ private:
         if (!last_three_ || !(last_three_->Q == Q)) last_three_ = zones_.solve(Q, guess, opposite);
         return *last_three_;
     }
-    // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the coarser
-    // level's) when given and Newton converges from them, else without a guess; nullptr when none is
-    // found. Cached per Q.
-    const five_zone_solution* five(double Q, const std::vector<double>* ends) {
+    // Five zones (docs/formulation.md 8(j)) at Q on this level as the point at Q (the load asked for: Newton's
+    // solved load differs by its residual, 1e-17 at Q = 0, and full coupling's alternation solves at Q), from
+    // `ends` (s1, c1, s2, c2: the coarser level's) when given and Newton converges from them, else without a
+    // guess; empty when none are found. Cached per Q.
+    std::optional<tangential_solution> five(double Q, const std::vector<double>* ends) {
         checkpoint();
-        if (last_five_ && last_five_load_ == Q) return &*last_five_;
-        std::optional<five_zone_solution> v;
-        try {
-            // From the coarser level's ends first (Newton, as the three-zone levels); on a curve the previous
-            // row's five zones continued in the load next (a start only: the root is the same to Newton's
-            // tolerance, validation/test_dissimilar_curve.cpp); then the search's own (zone_start.hpp, 8(j) 4a).
-            std::vector<five_zone_start> first;
-            if (ends) first.push_back(five_zone_start::at_ends(*ends));
-            if (last_five_) first.push_back(five_zone_start::continuing(*last_five_));
-            v = zones_.five_zones(Q, std::move(first));
-        } catch (const numerical_error&) {
-            v.reset();  // no five zones found on this level
+        if (!(last_five_ && last_five_load_ == Q)) {
+            std::optional<five_zone_solution> v;
+            try {
+                // From the coarser level's ends first (Newton, as the three-zone levels); on a curve the previous
+                // row's five zones continued in the load next (a start only: the root is the same to Newton's
+                // tolerance, validation/test_dissimilar_curve.cpp); then the search's own (zone_start.hpp, 8(j) 4a).
+                std::vector<five_zone_start> first;
+                if (ends) first.push_back(five_zone_start::at_ends(*ends));
+                if (last_five_) first.push_back(five_zone_start::continuing(*last_five_));
+                v = zones_.five_zones(Q, std::move(first));
+            } catch (const numerical_error&) {
+                v.reset();  // no five zones found on this level
+            }
+            if (!v) return std::nullopt;
+            last_five_ = v;
+            last_five_load_ = Q;
         }
-        if (!v) return nullptr;
-        last_five_ = v;
-        last_five_load_ = Q;
-        return &*last_five_;
+        tangential_solution s = five_zone_point(*last_five_);
+        s.Q = Q;
+        return s;
     }
     // The point of five zones at Q, the levels `below` first (each from the ends of the one below it);
     // empty where none are found, or at |Q| >= f, where none are searched.
@@ -256,22 +255,20 @@ std::optional<tangential_solution> johnson_model::five_point(double Q, const std
     if (!(std::fabs(Q) < f_)) return std::nullopt;
     std::vector<double> ends;
     for (johnson_model* level : below) {
-        const five_zone_solution* v = level->five(Q, ends.empty() ? nullptr : &ends);
-        ends = v ? std::vector<double>{v->s1, v->c1, v->s2, v->c2} : std::vector<double>{};
+        const std::optional<tangential_solution> v = level->five(Q, ends.empty() ? nullptr : &ends);
+        ends = v ? std::vector<double>{v->start(), v->c0(), v->start2(), v->end2()} : std::vector<double>{};
     }
-    const five_zone_solution* v = five(Q, ends.empty() ? nullptr : &ends);
-    if (v == nullptr) return std::nullopt;
-    tangential_solution s = five_zone_point(*v);
-    s.Q = Q;  // the load asked for; Newton's solved load differs by its residual (1e-17 at Q = 0)
+    std::optional<tangential_solution> s = five(Q, ends.empty() ? nullptr : &ends);
+    if (!s) return std::nullopt;
     // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
     // on steel at n = 32, 8(j) 4a), or Newton from under-resolved coarser ends landing on another
     // root (f = 0.425..0.5 at n = 1000, 8(n) "Beyond every n"); a resolution_error either way (a
     // curve's row is refused, not the curve).
-    if (!s.checks.hold())
+    if (!s->checks.hold())
         throw resolution_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
                                ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
                                "(3.3)-(3.4) (margins: stick " +
-                               shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) +
+                               shortest(s->checks.stick_margin) + ", slip " + shortest(s->checks.slip_margin) +
                                "): a zone is below the collocation's resolution at n = " + std::to_string(nodes()) +
                                ", or the search from the coarser levels' zones found other five zones than the "
                                "physical ones (docs/formulation.md 8(j), 8(n)); " +
