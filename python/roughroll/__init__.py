@@ -475,7 +475,8 @@ class Scene:
         Notes
         -----
         Keys: ``point`` (the Point), ``r``, ``p`` (the pressure a p2/P2 of (4.1)), ``p1`` (the
-        traction a p1/P2 of (3.15)), ``slip_velocity`` (v of (3.6), 0 on the stick zone),
+        traction a p1/P2 of (3.15)), ``slip_velocity`` (v of (3.6), 0 on the stick zone;
+        NaN where not resolved: the trailing edge layer of free rolling with its layers neglected, formulation 8(n)),
         ``stick`` (start <= r < c0: the stick zone, which starts at -1 in the paper's structure), ``f_p`` (the Coulomb limit f p of (3.3)),
         ``p_hertz`` and ``p1_carter`` (smooth cylinders at the same Q and f, each on its own
         half-width: Hertz's pressure and Carter's traction, dimensionless as ``p`` and ``p1``) and

@@ -53,6 +53,7 @@ struct plot_facts {
     std::vector<zone> zones;  // from r = -1 to 1: one, three or five (formulation 7, 8(j))
     double p_max;
     double v_low, v_high;        // least and greatest slip velocity, 0 included: v may take both signs (8(g))
+    bool v_unresolved;           // some v not resolved ('-' in the CSV: the trailing edge layer, 8(n))
     bool checks_hold;            // (3.3), (3.4) and p >= 0 on the solver's own grids
     std::optional<si_point> si;  // a physical scene: drawn in mm and MPa
 };
@@ -87,6 +88,7 @@ void write_traction_gnuplot(std::ostream& gp, const std::filesystem::path& csv, 
     gp << "# Tractions over the contact, written by roughroll traction. Columns of the CSV:\n"
        << "# 1 r, 2 p, 3 p1, 4 f p, 5 -f p, 6 zone, 7 slip velocity v, 8 p (Hertz), 9 p1 (Carter)\n"
        << gnuplot_output_stem(stem) << "set datafile separator ','\n"
+       << (k.v_unresolved ? "set datafile missing '-'  # v not resolved on the trailing edge layer\n" : "")
        << "c0 = " << shortest(k.c0) << "\n"
        << "# Scales: r -> x (xs: the contact's, xh: the smooth cylinders'), p -> pressure (ps, ph)\n"
        << "xs = " << shortest(xs) << "\nps = " << shortest(ps) << "\nxh = " << shortest(xh) << "\nph = " << shortest(ph)
@@ -253,9 +255,11 @@ int run_traction(const traction_options& o) {
     double v_low = 0.0, v_high = 0.0;
     for (const traction_row& row : rows) {
         p_max = std::max(p_max, row.p);
+        if (std::isnan(row.v)) continue;  // not resolved (the trailing edge layer, formulation 8(n)): no value
         v_low = std::min(v_low, row.v);
         v_high = std::max(v_high, row.v);
     }
+    const bool unresolved = std::any_of(rows.begin(), rows.end(), [](const traction_row& row) { return std::isnan(row.v); });
 
     std::ostream& out = csv_file.stream();
     out << "# roughroll " << version() << "\n"
@@ -268,6 +272,9 @@ int run_traction(const traction_options& o) {
         << "# zones (r = x1/a): " << zones_text(level) << "\n"
         << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick or slip, the zones above;"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
+    if (unresolved)
+        out << "# slip_velocity '-': not resolved, on the trailing edge layer (slip, a stick zone and reversed slip"
+               " within the slip zone reported there; its velocity changes sign; docs/formulation.md 8(n))\n";
     if (si)
         out << "# SI: a = " << shortest(si->a) << " m (Hertz " << shortest(si->a_hertz)
             << " m), P2 = " << shortest(si->P2) << " N/m, xi1 = " << shortest(si->xi1)
@@ -275,7 +282,8 @@ int run_traction(const traction_options& o) {
     out << "r,p,p1,f_p,minus_f_p,zone,slip_velocity,p_hertz,p1_carter" << (si ? ",x1_m,p2_Pa,p1_Pa" : "") << "\n";
     for (const auto& row : rows) {
         out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p) << ','
-            << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ',' << shortest(row.v) << ','
+            << shortest(-f * row.p) << ',' << (row.stick ? "stick" : "slip") << ','
+            << (std::isnan(row.v) ? std::string("-") : shortest(row.v)) << ','
             << shortest(row.p_hertz) << ',' << shortest(row.p1_carter);
         if (si) out << ',' << shortest(*row.x1_m) << ',' << shortest(*row.p2_Pa) << ',' << shortest(*row.p1_Pa);
         out << '\n';
@@ -294,6 +302,7 @@ int run_traction(const traction_options& o) {
     facts.p_max = p_max;
     facts.v_low = v_low;
     facts.v_high = v_high;
+    facts.v_unresolved = unresolved;
     facts.checks_hold = solution.checks.hold();
     facts.si = si;
     write_traction_gnuplot(script_file.stream(), csv, stem, facts);

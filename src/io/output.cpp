@@ -216,8 +216,9 @@ void write_summary(std::ostream& out, const point_report& r) {
         out << "  edge layers         neglected: each thinner than " << shortest(l.thickness) << " (about 4 exp(-"
             << shortest(exponent) << "), where |p1| of no slip exceeds f p); xi with their first-order shift "
             << shortest(l.xi_shift) << ", within " << shortest(l.xi_bound)
-            << " of the model's; the trailing slip zone is the trailing layer (slip, stick, reversed slip, not "
-               "resolved) (docs/formulation.md 8(n))\n";
+            << " of the model's; the leading layer's slip velocity from its inner problem; the trailing slip zone "
+               "is the trailing layer (slip, stick, reversed slip, not resolved: its slip velocity not available, "
+               "'-' in the traction table) (docs/formulation.md 8(n))\n";
     }
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)

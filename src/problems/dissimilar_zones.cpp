@@ -467,7 +467,7 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
 
 double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
     if (s.layout.stick_zones() == 2) return slip_velocity(*s.five, r);
-    if (s.layout.layers_neglected()) return 0.0;  // stick everywhere outside the neglected layers (8(n))
+    if (s.layout.layers_neglected()) return layers_neglected_slip_velocity(s.layout, beta_d_, r);  // 8(n)
     const double v = solver_.slip_velocity(s, r);
     if (!s.layout.opposite() || s.sticks(r)) return v;
     const double x = std::clamp(r, -1.0, 1.0);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -143,6 +144,28 @@ double layers_neglected_traction(const zone_layout& layout, double beta_d, doubl
     return std::max(-limit, std::min(limit, no_slip_traction(beta_d, r)));
 }
 
+double layers_neglected_slip_velocity(const zone_layout& layout, double beta_d, double r) {
+    // 8(n), "The layers' slip velocity": v = xi - H[p1] + beta_D p (D2) is Delta xi - H[d], d = p1 - p1_ns (p1_ns
+    // solves the stick equation everywhere). On the leading layer's scale H[d] is O(sqrt(t_c)), Delta xi O(t_c):
+    // v = -(2 beta_D/pi^2) sqrt(2 t_c) H[D](X), D the inner problem's solution, whose Hilbert transform on its slip
+    // zone (0, A) is 2 sqrt(A) (sin theta - theta cos theta), cos^2 theta = X/A, at A = 4/e^2. With x = t_c X and
+    // t_a = A t_c: sqrt(2 t_a) sin theta = sqrt(2 (t_a - x)), sqrt(2 t_a) cos theta = sqrt(2 x).
+    const zone* lead = layout.zones.empty() || layout.zones.front().stick ? nullptr : &layout.zones.front();
+    const zone* trail = layout.zones.empty() || layout.zones.back().stick ? nullptr : &layout.zones.back();
+    if (trail != nullptr && trail != lead && r > trail->from && r <= trail->to)
+        return std::numeric_limits<double>::quiet_NaN();  // slip, stick, reversed slip: not resolved (8(n))
+    if (lead == nullptr || !(r >= lead->from && r < lead->to)) return 0.0;  // the main stick zone
+    // x and t_a - x without cancellation: 1 + r is exact for r in [-1, -1/2] (Sterbenz), and so is t_a = 1 + s1.
+    const double x = std::max(0.0, 1.0 + r), ta = 1.0 + lead->to, rest = std::max(0.0, ta - x);
+    // theta = atan(sqrt(rest/x)) (pi/2 at the edge); sin theta - theta cos theta = theta^3/3 - theta^5/30 +
+    // theta^7/840 - ... near s1 (the entry: v = O((s1 - r)^(3/2))), taken from the series below theta = 0.03, where
+    // the difference would lose more (eps/theta^2) than the series' remainder (theta^6/15120, relative).
+    const double theta = std::atan2(std::sqrt(rest), std::sqrt(x)), t2 = theta * theta;
+    const double shape = theta < 0.03 ? std::sqrt(ta) * theta * t2 * (1.0 / 3.0 - t2 * (1.0 / 30.0 - t2 / 840.0))
+                                      : std::sqrt(rest) - std::sqrt(x) * theta;  // sqrt(t_a) (sin - theta cos)
+    return -4.0 * beta_d / (M_PI * M_PI) * M_SQRT2 * shape;
+}
+
 tangential_solution dissimilar_zones::layers_neglected_point() {
     const neglected_layers layers = no_slip_layers(beta_d_, f_);
     // The main stick zone [s1, c1] where the model has it (8(n)), its creep to first order in t_c; the
@@ -154,8 +177,9 @@ tangential_solution dissimilar_zones::layers_neglected_point() {
     s.layout = opposite_zones(s1, c1, beta_d_ > 0.0 ? 1 : -1);
     s.layout.route = zone_route::layers_neglected;
     // (3.3) outside the layers, where |p1| < f p by construction (the test that it is, 8(n)): on p1_ns itself,
-    // which the reported traction (layers_neglected_traction) is there unless it exceeds f p. The layers' slip
-    // velocity is not resolved (reported 0), so no slip zone is checked.
+    // which the reported traction (layers_neglected_traction) is there unless it exceeds f p. No slip zone is
+    // checked: the leading layer's velocity has its direction by construction (sin theta > theta cos theta on
+    // (0, pi/2], layers_neglected_slip_velocity), the trailing layer's is not resolved.
     const double t = std::min(layers.thickness, 0.5);
     const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};
     s.checks = check_zones(

@@ -3,7 +3,8 @@
 // for a physical scene, the same in SI units: the rows `roughroll traction` writes as CSV and
 // Python's Scene.traction returns as arrays, computed here once for both.
 //   r, p = a p2/P2 of (4.1), p1 = a p1/P2 of (3.15), the slip velocity v of (3.6) (0 on a stick
-//   zone), stick: r on a stick zone (contact::distributions);
+//   zone; NaN where not resolved: the trailing edge layer of a point with its layers neglected,
+//   docs/formulation.md 8(n)), stick: r on a stick zone (contact::distributions);
 //   p_hertz, p1_carter: Carter's smooth cylinders at the same Q and f, each on its own half-width
 //   (Hertz's p = (2/pi) sqrt(1 - r^2); p1 = f p - (2 f/pi) sqrt(rho^2 - (r + 1 - rho)^2) on the
 //   stick zone [-1, c0], rho = (1 + c0)/2 (Johnson, Contact Mechanics 8.4), with the sign of Q);

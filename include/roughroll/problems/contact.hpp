@@ -103,15 +103,17 @@ public:
     // too thin for n = top (docs/formulation.md 8(n), "Beyond every n").
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const;
 
-    // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone) for a
-    // solution d of this contact as returned by distribution(), for every method.
+    // p1(r) of (3.15) and the slip velocity v(r) of (3.6) (0 on the stick zone; NaN where not resolved,
+    // as distributions() says) for a solution d of this contact as returned by distribution(), for every method.
     double traction(const tangential_solution& d, double r);
     double slip_velocity(const tangential_solution& d, double r);
     std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r);
 
     // The distributions of d (as distribution() returns it) at each r of `grid`: the pressure
     // p of (4.1), the traction p1 of (3.15), the slip velocity v of (3.6), 0 on the stick zone
-    // [start, c0] (3.2). Throws numerical_error naming r where a value is not finite.
+    // [start, c0] (3.2), NaN where it is not resolved (the trailing edge layer of a point with its
+    // layers neglected, docs/formulation.md 8(n)). Throws numerical_error naming r where any other
+    // value is not finite.
     struct distribution_row {
         double r, p, p1, v;
         bool stick;

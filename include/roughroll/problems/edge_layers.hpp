@@ -8,7 +8,8 @@
 //   t_c = 2/(1 + exp(pi f/|beta_D|))   (about 2 exp(-pi f/|beta_D|))
 // at each edge, where the model slips (8(g)). The layers' effect on the main stick zone's traction is
 // neglected; the point reports the model's main stick zone [s1, c1] and its creep to first order in t_c
-// (8(n), "The layers' positions"), and the traction f p on the layers (layers_neglected_traction):
+// (8(n), "The layers' positions"), the traction f p on the layers (layers_neglected_traction) and the leading
+// layer's slip velocity from its inner problem (layers_neglected_slip_velocity; the trailing layer's: NaN):
 //   1 + s1 = (4/e^2) t_c   (derived: the leading layer's entry condition, an inner problem on the
 //                           scale t_c),
 //   1 - c1 = 0.889 t_c     (the trailing layer's inner problem, whose answer drifts with log(1/t_c)
@@ -52,5 +53,13 @@ double no_slip_creep(double beta_d);
 // sgn(beta_D) on the trailing one); on its stick zone the no-slip traction held to [-f p, f p] (it exceeds f p
 // within t_c of the edges). `pressure` is p at r.
 double layers_neglected_traction(const zone_layout& layout, double beta_d, double f, double pressure, double r);
+
+// The slip velocity v of (3.6) the layers-neglected point reports at r (8(n), "The layers' slip velocity"): on the
+// leading layer [-1, s1) the leading order of its inner problem, in closed form (x = 1 + r, t_a = 1 + s1 = (4/e^2) t_c),
+//   v = -(4 beta_D/pi^2) sqrt(2) [sqrt(t_a - x) - sqrt(x) atan(sqrt((t_a - x)/x))],
+// of the layer's direction -sgn(beta_D), 0 at s1 (the entry condition), within 0.25 t_c of |v(-1)| (measured against
+// the five zones); 0 on the main stick zone [s1, c1]; NaN (not resolved) on the trailing layer (c1, 1], which holds
+// slip, a stick zone and reversed slip, so v there changes sign and its inner problem is not solved by the program.
+double layers_neglected_slip_velocity(const zone_layout& layout, double beta_d, double r);
 
 }  // namespace roughroll
