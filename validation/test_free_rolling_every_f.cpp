@@ -861,7 +861,7 @@ TEST(FreeRollingEveryF, LeadingLayerSlipVelocityFromItsInnerProblem) {
 }
 
 // The leading layer's slip velocity against the program's five zones, which resolve the layer as a zone of their
-// own (v of (3.6) from their collocation), at f = 0.2 (the five zones at the default tolerance, n = 256; the layers
+// own (v of (3.6) from their collocation), at f = 0.2 (the five zones at the default tolerance, n = 128; the layers
 // neglected at 0.5) and f = 0.31 (8(n), "Against the five zones through the program": the five zones at 1e-5,
 // n = 512; the layers at the default tolerance), each on the rows of both leading slip zones of one grid. Measured
 // (8(n)): the largest difference is 0.252 t_c and 0.250 t_c of |v(-1)| (6.1e-5 and 1.7e-6; the second order of the
