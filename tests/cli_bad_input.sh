@@ -253,13 +253,13 @@ expect beta-d-nan "beta_d = nan must be finite" -- point "$dir/betanan.toml"
 expect beta-d-type "'beta_d' must be a number" -- point "$dir/betatype.toml"
 expect coupling-unknown "unknown coupling 'strong'" -- point "$dir/coupling.toml"
 expect coupling-type "toml: 'coupling' must be a string" -- point "$dir/couplingtype.toml"
-# A physical scene at full coupling settles a width per load (the curve's rows too): a sweep in c0
-# is refused as for every beta_d != 0, before any width is searched.
-expect coupling-full-physical-sweep "a curve swept in c0" -- curve "$dir/pairfull.toml" --sweep --points 3
+# A physical scene at full coupling settles a width per load (the curve's rows too): a swept curve
+# (continued in the load at Johnson's level only) is refused, before any width is searched.
+expect coupling-full-physical-sweep 'solve the curve without --sweep (Python sweep=False: --points loads from -f to f, the same rows), or set coupling = "johnson"' -- curve "$dir/pairfull.toml" --sweep --points 3
 expect beta-one-parameter "only Johnson's level is derived for the one-parameter limit" -- point "$dir/betaoneparam.toml"
 expect beta-zones-single "zones 'single' with beta_d != 0" -- point "$dir/betasingle.toml"
-scene betafree "$(printf 'friction = 0.05\nbeta_d = 0.14\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"
-expect beta-sweep "solve the curve at given loads instead: curve without --sweep" -- curve "$dir/betafree.toml" --sweep --points 3
+scene betafull "$(printf 'friction = 0.05\nbeta_d = 0.14\ncoupling = "full"\nQ = 0.0\n[solver]\nn = 32\nmethod = "product"\n')"
+expect beta-full-sweep "is continued in the load at Johnson's level only" -- curve "$dir/betafull.toml" --sweep --points 3
 # (A zone below the resolution is refused only after a solve: validate_five_zone_points tests it,
 # without a wall-clock limit. Every row here is refused before any solve.)
 # "increase n" only where a larger n can help (issue 23): kernels that no n up to 1000 resolves at n/2.

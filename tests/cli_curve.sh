@@ -112,6 +112,21 @@ timeout "$hang_guard" "$bin" curve "$data/fig2a-T1.toml" --points 3 >"$dir/out" 
 data_lines "$dir/out"
 [ "$(tail -n +2 "$dir/out" | cut -d, -f"$(column zone_path)" | sort -u)" = single ] || fail "zone_path: Fig. 2a rows not single"
 
+# --- Dissimilar rollers swept (issue 24, 7): the loads of the curve without --sweep, each row continued from the
+# previous row's zones; every row the same point, its xi within the row's estimate of the other's.
+timeout "$hang_guard" "$bin" curve "$data/aluminium-on-steel.toml" --points 6 --sweep >"$dir/out" 2>"$dir/err" ||
+    fail "dissimilar sweep: the curve failed: $(cat "$dir/err")"
+grep -q '^# .*swept in the load: Q/f over the curve' "$dir/out" || fail "dissimilar sweep: the header does not say so"
+data_lines "$dir/out"
+cp "$dir/out" "$dir/swept"
+timeout "$hang_guard" "$bin" curve "$data/aluminium-on-steel.toml" --points 6 >"$dir/out" 2>"$dir/err" ||
+    fail "dissimilar sweep: the curve at given loads failed: $(cat "$dir/err")"
+data_lines "$dir/out"
+k=$(column xi) e=$(column xi_error_estimate) z=$(column zones)
+paste -d, <(cut -d, -f1,"$k","$e","$z" "$dir/swept") <(cut -d, -f1,"$k","$e","$z" "$dir/out") |
+    awk -F, 'NR > 1 { d = $2 - $6; if (d < 0) d = -d; if ($1 != $5 || $4 != $8 || !(d <= $3) || $3 == "") bad = 1; n++ }
+             END { exit !(n == 6 && !bad) }' || fail "dissimilar sweep: rows differ from the curve at given loads"
+
 # --- Bad input still aborts at once: exit 2, one line, nothing written.
 timeout "$hang_guard" "$bin" curve "$dir/stiff.toml" --points 1 --csv "$dir/bad.csv" >"$dir/out" 2>"$dir/err"
 status=$?

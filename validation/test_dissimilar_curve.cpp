@@ -105,3 +105,78 @@ TEST(DissimilarCurve, ContinuousThroughTheBrakedTransition) {
     EXPECT_GT(*low, 0.0);
     EXPECT_LT(*high, 1.25 * *low);
 }
+
+namespace {
+// Each row of a curve continued in the load (swept_curve, continued_curve) against the point solved alone
+// (a fresh contact: no previous row, the zone search from its own starts): the same structure, and the creep and
+// the zone ends within the point's own error estimate (in fact to Newton's resolution, printed). Returns the
+// largest |xi_row - xi_alone| over the rows.
+double expect_rows_are_points(const std::vector<double>& loads, const std::vector<curve_point>& rows) {
+    EXPECT_EQ(rows.size(), loads.size());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        contact alone = scene(beta_al_st);
+        const tangential_solution s = alone.point(loads[i]);
+        const std::optional<error_estimate> e = alone.estimate(s);
+        const curve_point& row = rows[i];
+        if (row.is_refused()) {
+            ADD_FAILURE() << "Q/f = " << loads[i] / f << " refused on the swept curve, answered alone: " << row.refused;
+            continue;
+        }
+        EXPECT_EQ(row.solution.Q, loads[i]);
+        if (!e || !row.estimate) {
+            ADD_FAILURE() << "Q/f = " << loads[i] / f << ": no estimate alone or on the curve";
+            continue;
+        }
+        EXPECT_EQ(row.solution.layout.stick_zones(), s.layout.stick_zones()) << loads[i];
+        EXPECT_EQ(row.solution.layout.opposite(), s.layout.opposite()) << loads[i];
+        EXPECT_TRUE(row.solution.checks.hold()) << loads[i];
+        const double d = std::fabs(row.solution.xi - s.xi);
+        largest = std::max(largest, d);
+        EXPECT_LE(d, e->xi) << loads[i];
+        EXPECT_LE(std::fabs(row.solution.c0() - s.c0()), e->c0) << loads[i];
+        EXPECT_LE(std::fabs(row.solution.start() - s.start()), std::max(e->start, e->c0)) << loads[i];
+        if (s.layout.stick_zones() == 2) {
+            EXPECT_LE(std::fabs(s.start2() - row.solution.start2()), std::max(e->start, e->c0)) << loads[i];
+            EXPECT_LE(std::fabs(s.end2() - row.solution.end2()), std::max(e->start, e->c0)) << loads[i];
+        }
+        EXPECT_LE(d, row.estimate->xi) << loads[i];  // the row's own estimate covers the gap too
+        std::printf("Q/f = %+.3f: %s, xi %.12f, alone %.1e apart (estimate %.1e)\n", loads[i] / f,
+                    s.layout.stick_zones() == 2 ? "five zones" : s.layout.opposite() ? "three, opposite" : "three", s.xi,
+                    d, e->xi);
+    }
+    return largest;
+}
+}  // namespace
+
+// --sweep for dissimilar rollers (issue 24, 7): the curve over -f..f continued in the load, each row started from
+// the previous row's zones (three zones as the zone search's guess, five zones by Newton from their ends), through
+// gross sliding at -f, the three zones of a braked roller, the five zones around free rolling, the driven three
+// zones with the leading slip against Q, and gross sliding at f.
+TEST(DissimilarCurve, SweptRowsArePointsSolvedAlone) {
+    contact c = scene(beta_al_st);
+    const std::vector<curve_point> rows = swept_curve(c, 21);
+    const double largest = expect_rows_are_points(curve_loads(21, f, beta_al_st), rows);
+    std::printf("largest |xi_row - xi_alone| %.1e\n", largest);
+}
+
+// Where the structure changes between rows: five zones to the braked three zones (8(j) 4a, Q/f about -0.074) and
+// the driven five zones to the three zones with the leading slip against Q (between Q/f = 0.7 and 0.8 at n = 32),
+// in steps of 0.005 f and 0.01 f, both ways: a start of the other structure must end on the point's structure, never on another root.
+TEST(DissimilarCurve, ContinuedThroughStructureChanges) {
+    std::vector<double> braked, driven;
+    for (int k = 12; k <= 18; ++k) braked.push_back(-0.005 * k * f);  // Q/f = -0.06 .. -0.09
+    for (int k = 70; k <= 80; ++k) driven.push_back(0.01 * k * f);  // Q/f = 0.70 .. 0.80
+    for (std::vector<double> loads : {braked, driven}) {
+        for (int way = 0; way < 2; ++way) {
+            if (way == 1) std::reverse(loads.begin(), loads.end());
+            contact c = scene(beta_al_st);
+            const std::vector<curve_point> rows = continued_curve(c, loads);
+            int changes = 0;
+            for (std::size_t i = 1; i < rows.size(); ++i)
+                if (rows[i].solution.layout.zones.size() != rows[i - 1].solution.layout.zones.size()) ++changes;
+            EXPECT_GE(changes, 1) << "the window must hold a change of structure";
+            expect_rows_are_points(loads, rows);
+        }
+    }
+}

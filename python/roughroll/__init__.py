@@ -371,7 +371,8 @@ class Scene:
         points : int
             The rows of a curve without ``loads``.
         sweep : bool
-            Sweep the curve in c0 instead of solving each load.
+            Sweep the curve in c0 instead of solving each load (dissimilar rollers at Johnson's
+            level: the same loads, each row started from the previous row's zones).
         method : {'extrapolated', 'product', 'paper', 'one-parameter'}, optional
             Overrides the scene's ``[solver] method``, as ``--method``.
         n : int, optional
@@ -396,7 +397,10 @@ class Scene:
         Without ``loads``: ``points`` loads Q/f = 1 - (1 - u)^2, u uniform on [0, 1], each solved
         for c0 by Brent on (4.5) (for dissimilar rollers, ``beta_d != 0``: Q uniform from -f to f,
         the curve not being odd in Q, each row the point at its load, formulation 8(j)); with ``sweep=True`` the curve is swept in c0 instead
-        ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)).
+        ((1 + c0)/2 uniform, one linear solve of (4.4)-(4.5) per point, the loads being Q(c0)); for
+        dissimilar rollers at ``coupling = "johnson"`` the loads stay those of the curve and each row's
+        zone search starts from the previous row's zones (the same points, 2 to 3.5 times faster;
+        refused at ``coupling = "full"``).
         Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
         slip zones), stick_start (formulation section 7) and zone_path ("single", "general", or

@@ -180,11 +180,13 @@ scene_curve curve_with_progress(scene s, int points, bool sweep, const std::stri
     const std::vector<double> Qs = curve_loads(points, s.friction, s.materials.beta_d);
     const double f = s.friction;
     std::size_t row = 0;
-    progress(name + ": " + std::to_string(points) + (sweep ? " points swept in c0" : " loads") +
+    const bool in_c0 = sweep && s.materials.beta_d == 0.0;  // dissimilar rollers: continued in the load
+    progress(name + ": " + std::to_string(points) +
+             (in_c0 ? " points swept in c0" : sweep ? " loads, each row from the previous one's zones" : " loads") +
              (s.physical ? " (contact width first)" : ""));
     const auto before_row = [&]() {
         std::string what;
-        if (sweep) {
+        if (in_c0) {
             const double rho = 1.0 - static_cast<double>(row) / (points - 1);
             what = "c0 = " + significant(row + 1 == static_cast<std::size_t>(points) ? -1.0 : 2.0 * rho - 1.0, 4);
         } else if (row < Qs.size()) {
@@ -267,13 +269,15 @@ int run_curve(const curve_options& o) {
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         scene& s = scenes[k];
         const std::string& path = o.paths[k];
-        const curve_header header{path, s.label, s.friction, s.solver, o.sweep, s.physical.has_value()};
+        const bool in_c0 = o.sweep && s.materials.beta_d == 0.0;  // dissimilar rollers: continued in the load
+        const curve_header header{path,   s.label, s.friction, s.solver, in_c0, s.physical.has_value(),
+                                  o.sweep && !in_c0};
         curve_plot_scene facts;
         facts.csv = csv_paths.empty() ? fs::path() : csv_paths[k];
         facts.title = s.label.empty() ? fs::path(path).filename().string() : s.label;
         facts.friction = s.friction;
         facts.physical = s.physical.has_value();
-        facts.swept = o.sweep;
+        facts.swept = in_c0;
         facts.two_sided = s.materials.beta_d != 0.0;
         const scene_curve c = curve_with_progress(std::move(s), o.points, o.sweep, fs::path(path).filename().string());
         std::optional<si_context> si;

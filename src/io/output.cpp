@@ -259,8 +259,10 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
                               "below the relative tolerance " +
                                   shortest(h.solver.tolerance.value_or(default_tolerance)) + ")")
         << ", zones = " << to_string(h.solver.zones) << "; "
-        << (h.swept ? "swept in c0: each row's load Q(c0) is found for its stick zone end c0"
-                    : "loads given: Q/f over the curve's range, dense near gross sliding")
+        << (h.swept       ? "swept in c0: each row's load Q(c0) is found for its stick zone end c0"
+            : h.continued ? "swept in the load: Q/f over the curve's range, each row's zone search started from the "
+                            "previous row's zones"
+                          : "loads given: Q/f over the curve's range, dense near gross sliding")
         << "\n"
         << "# Q = P1/P2, Q_over_f = Q/f; c0 = c/a, the stick zone's end (r = x1/a); xi: the creep, dimensionless "
            "(docs/formulation.md), xi_over_f = xi/f; xi_carter, c0_carter: Carter's smooth cylinders, same f, at the "

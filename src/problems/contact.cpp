@@ -43,13 +43,19 @@ tangential_solver& contact::tangential() {
         "contact::slip_velocity");
 }
 
+std::vector<int> contact::below() {
+    std::vector<int> ns;
+    if (build_levels())
+        for (int i = 0; levels_[i] != nullptr; ++i) ns.push_back(levels_[i]->nodes());  // nullptr: this one
+    return ns;
+}
+
 tangential_solution contact::point(double Q) {
-    return model_->point(Q, [this] {  // the n of the estimate's levels below this one (nullptr: this one)
-        std::vector<int> below;
-        if (build_levels())
-            for (int i = 0; levels_[i] != nullptr; ++i) below.push_back(levels_[i]->nodes());
-        return below;
-    });
+    return model_->point(Q, [this] { return below(); });
+}
+
+tangential_solution contact::continued_point(double Q, const tangential_solution& previous) {
+    return model_->continued(Q, previous, [this] { return below(); });
 }
 
 kernel contact::widest_kernel() const {

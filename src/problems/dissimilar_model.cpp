@@ -153,7 +153,9 @@ protected:
 
     // Johnson's point at Q of this level: the estimate's levels `below` first, coarsest first, each from
     // the zone of the level below (Newton), so that only the coarsest scans the starts of the stick zone.
-    tangential_solution johnson_point(double Q, const std::vector<johnson_model*>& below);
+    // `previous`: a curve's previous row (contact::continued_point), whose zones start the coarsest level.
+    tangential_solution johnson_point(double Q, const std::vector<johnson_model*>& below,
+                                      const tangential_solution* previous = nullptr);
 
     // The edge layers' bound on xi relative to the no-slip creep for free rolling of smooth rollers at
     // Johnson's level (8(n)); empty for any other load, pair or level.
@@ -206,6 +208,12 @@ private:
     // The point of five zones at Q, the levels `below` first (each from the ends of the one below it);
     // empty where none are found, or at |Q| >= f, where none are searched.
     std::optional<tangential_solution> five_point(double Q, const std::vector<johnson_model*>& below);
+    // The point of five zones at Q by Newton alone on every level, the coarsest from `ends` (a curve's previous
+    // row, continued in the load), each other from the level below; empty where Newton does not converge on a
+    // level or the checks of this level's zones fail, with no level's cache touched: the point's own search
+    // then answers. Kept as each level's five zones at Q where it answers (the estimate's levels reuse them).
+    std::optional<tangential_solution> five_continued(double Q, const std::vector<johnson_model*>& below,
+                                                      std::vector<double> ends);
 
     std::optional<double> layers_;
     std::optional<tangential_solution> last_three_;
@@ -213,9 +221,24 @@ private:
     double last_five_load_ = 0.0;  // the load it was asked for
 };
 
-tangential_solution johnson_model::johnson_point(double Q, const std::vector<johnson_model*>& below) {
+tangential_solution johnson_model::johnson_point(double Q, const std::vector<johnson_model*>& below,
+                                                 const tangential_solution* previous) {
     std::optional<zone_guess> guess;
     bool opposite = false;
+    // A curve's previous row as the coarsest level's start (zone_start.hpp: a layout already solved, continued in
+    // the load; 8(j) 10): its five zones by Newton from their ends, its three zones as the zone search's guess
+    // (zone_solver: Newton, the scan where Newton fails or lands on a zone failing the checks). Rows of gross
+    // sliding or of the edge layers neglected (8(n)) give no start.
+    if (previous && std::fabs(previous->Q) < f_ && std::fabs(Q) < f_ && !previous->layout.layers_neglected()) {
+        if (previous->layout.stick_zones() == 2) {
+            if (std::optional<tangential_solution> s = five_continued(
+                    Q, below, {previous->start(), previous->c0(), previous->start2(), previous->end2()}))
+                return *s;
+        } else if (previous->layout.stick_zones() == 1 && previous->start() > -1.0) {
+            guess = zone_guess{previous->start(), previous->c0()};
+            opposite = previous->layout.opposite();
+        }
+    }
     for (johnson_model* level : below) {
         try {
             const tangential_solution& t = level->three(Q, guess, opposite);
@@ -249,6 +272,33 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
         if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
         throw;
     }
+}
+
+std::optional<tangential_solution> johnson_model::five_continued(double Q, const std::vector<johnson_model*>& below,
+                                                                 std::vector<double> ends) {
+    std::vector<johnson_model*> levels = below;
+    levels.push_back(this);
+    std::vector<five_zone_solution> found;
+    for (johnson_model* level : levels) {
+        level->checkpoint();
+        std::optional<five_zone_solution> v;
+        try {
+            v = level->zones_.five_zones(Q, ends);  // Newton from the ends (damped_newton), empty where it fails
+        } catch (const numerical_error&) {
+        }
+        if (!v) return std::nullopt;
+        ends = {v->s1, v->c1, v->s2, v->c2};
+        found.push_back(std::move(*v));
+    }
+    tangential_solution s = five_zone_point(found.back());
+    s.Q = Q;  // as five_point: the load asked for
+    // A root whose checks fail is another structure's (the transitions of 8(j) 4a): the point's search decides.
+    if (!s.checks.hold()) return std::nullopt;
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        levels[i]->last_five_ = std::move(found[i]);
+        levels[i]->last_five_load_ = Q;
+    }
+    return s;
 }
 
 std::optional<tangential_solution> johnson_model::five_point(double Q, const std::vector<johnson_model*>& below) {
@@ -286,17 +336,26 @@ public:
         : johnson_model(surfaces, f, options, materials, cache), levels_(*this, cache) {}
     point_model& level(int m) override { return levels_.at(m); }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
+        return solved(Q, below, nullptr);
+    }
+    tangential_solution continued(double Q, const tangential_solution& previous,
+                                  const std::function<std::vector<int>()>& below) override {
+        return solved(Q, below, &previous);
+    }
+
+private:
+    tangential_solution solved(double Q, const std::function<std::vector<int>()>& below,
+                               const tangential_solution* previous) {
         if (layers_negligible(Q)) return zones_.layers_neglected_point();
         // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
         // (docs/formulation.md 8(n)): any refusal names the tolerance at which they would be neglected.
         return advised(Q, [&] {
             // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
             check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
-            return johnson_point(Q, levels_.at<johnson_model>(below()));
+            return johnson_point(Q, levels_.at<johnson_model>(below()), previous);
         });
     }
 
-private:
     model_levels<uncoupled_model> levels_;
 };
 

@@ -252,20 +252,22 @@ std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<do
     std::vector<curve_point> rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, loads, before_row);
     const double f = c.friction();
     n_used.assign(rows.size(), first);
+    // Swept in c0 (beta_D = 0); dissimilar rollers' swept curve is continued at the given loads (swept_curve).
+    const bool in_c0 = sweep && c.materials().beta_d == 0.0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
         curve_point& row = rows[i];
         if (!row.is_refused() && ladder.answers(c, row.solution, row.estimate)) continue;
         // What the row was given: its load, or on a swept curve its stick end (swept_curve's c0s).
         const double given =
-            sweep ? (i + 1 == rows.size() ? -1.0 : 2.0 * (1.0 - static_cast<double>(i) / (points - 1)) - 1.0)
+            in_c0 ? (i + 1 == rows.size() ? -1.0 : 2.0 * (1.0 - static_cast<double>(i) / (points - 1)) - 1.0)
                   : loads[i];
         try {
-            level_ladder::answer a = sweep ? ladder.at_stick_end(given, 1) : ladder.point(given, 1);
+            level_ladder::answer a = in_c0 ? ladder.at_stick_end(given, 1) : ladder.point(given, 1);
             const carter_point smooth = carter(a.solution.Q, f);
             row = curve_point{std::move(a.solution), smooth, std::move(a.estimate), {}};
             n_used[i] = a.n;
         } catch (const resolution_error& e) {  // no rung answers this row: a refused row, the curve goes on
-            if (!sweep) {
+            if (!in_c0) {
                 row = refused_load(given, f, e);
             } else {
                 curve_point refused = refused_load(0.0, f, e);  // its shape; then what a swept row was given

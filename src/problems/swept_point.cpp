@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // contact's points of a creep curve swept in c0 (contact::at_stick_end, contact.hpp): Q(c0) of (4.5)
 // without a root search, Richardson's rule at the same c0, its estimate, and the refusal of a load
-// outside [0, f].
+// outside [0, f]; and which scenes take a swept curve (check_sweepable).
 #include <cmath>
 #include <sstream>
 
@@ -13,16 +13,20 @@
 namespace roughroll {
 
 void check_sweepable(const dissimilar& materials) {
-    if (materials.beta_d != 0.0)
+    if (materials.beta_d != 0.0 && materials.coupling == coupling_level::full)
         throw input_error(
-            "a curve swept in c0 (--sweep, Python sweep=True) is not available for beta_d != 0: c0 ends the paper's "
-            "stick zone from the leading edge, which dissimilar rollers never have, and their five zones near free "
-            "rolling have no single end to sweep (docs/formulation.md 8(g), 8(j) item 10); solve the curve at given "
-            "loads instead: curve without --sweep (Python sweep=False) takes --points loads from -f to f");
+            "a swept curve (--sweep, Python sweep=True) of dissimilar rollers is continued in the load at Johnson's "
+            "level only: at coupling = \"full\" each row's alternation starts from its own Johnson's point "
+            "(docs/formulation.md 8(e)); solve the curve without --sweep (Python sweep=False: --points loads from -f to "
+            "f, the same rows), or set coupling = \"johnson\"");
 }
 
 contact::swept_point contact::at_stick_end(double c0) {
-    check_sweepable(materials_);
+    if (materials_.beta_d != 0.0)
+        throw input_error(
+            "a point at a stick zone's end c0 is not defined for beta_d != 0: c0 ends the paper's stick zone from the "
+            "leading edge, which dissimilar rollers never have (docs/formulation.md 8(g)); swept_curve continues "
+            "their curve in the load instead");
     try {
         return swept_at(c0);
     } catch (const resolution_error&) {

@@ -78,6 +78,7 @@ struct curve_header {
     solver_options solver;  // n = 0: the ladder chose each row's n (column n) for solver.tolerance
     bool swept;             // loads Q(c0) of a sweep in c0, else the curve's given loads
     bool physical;          // the columns P1_N_per_m, xi1, xi1_carter follow
+    bool continued;         // dissimilar rollers swept: the given loads, each row from the previous row's zones
 };
 void write_curve_header(std::ostream& out, const curve_header& h);
 

@@ -66,6 +66,13 @@ public:
     double friction() const { return f_; }
 
     tangential_solution point(double Q);
+    // point(Q) on a curve continued in the load (swept_curve of dissimilar rollers): `previous`, the
+    // curve's previous answered row of this contact, starts the zone search (its three zones' ends, or
+    // its five zones' ends, Newton's start on each level); where that start does not reach a zone
+    // structure whose checks hold, the point's own search answers. The same point to Newton's
+    // resolution (validation/test_dissimilar_curve.cpp).
+    tangential_solution continued_point(double Q, const tangential_solution& previous);
+    const dissimilar& materials() const { return materials_; }
 
     // A caller's hook, called before each level's solve (and each step of full coupling's
     // alternation) of point(), estimate() and at_stick_end(): what it throws ends the solve there
@@ -129,6 +136,7 @@ private:
     // Q +- error) outside [0, f] at an inner c0.
     void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
     int nodes() const { return options_.nodes(); }
+    std::vector<int> below();        // the n of the estimate's levels below this one, coarsest first
     bool build_levels();             // the two other levels of the estimate; false when none fit
     double kernel_strength() const;  // the larger kernel's sum |T|, for the rounding floors
     kernel widest_kernel() const;    // one term at either kernel's largest rate: the resolution both need
@@ -149,7 +157,8 @@ private:
     bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
 };
 
-// A curve swept in c0 (contact::at_stick_end) is the paper's single zone: input_error for dissimilar rollers (8(g)).
+// A swept curve (swept_curve): in c0 for beta_D = 0, continued in the load for dissimilar rollers at
+// Johnson's level; input_error at coupling "full" (its alternation keeps no start from a previous row).
 void check_sweepable(const dissimilar& materials);
 
 }  // namespace roughroll

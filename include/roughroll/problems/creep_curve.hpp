@@ -45,11 +45,18 @@ std::vector<double> curve_loads(int points, double f, double beta_d);
 // module checks for Ctrl-C there); what it throws ends the curve.
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
                                      const std::function<void()>& before_row = {});
+// creep_curve with each row after an answered one started from that row's zones (contact::continued_point,
+// a continuation in the load: dissimilar rollers' swept curve); the same points to Newton's resolution.
+std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
+                                         const std::function<void()>& before_row = {});
 // The row of creep_curve for a load Q refused by `why`.
 curve_point refused_load(double Q, double f, const resolution_error& why);
 
 // A creep curve swept in c0 from 1 to -1 (rho = (1 + c0)/2 uniform): one linear solve per
-// point, no root search; the loads are Q(c0), dense near f as in curve_loads.
+// point, no root search; the loads are Q(c0), dense near f as in curve_loads. For dissimilar
+// rollers (beta_D != 0, Johnson's level; check_sweepable refuses coupling "full") no c0 parametrises
+// the zones (8(g)): the rows of creep_curve at curve_loads(points, f, beta_D), each continued from the
+// previous answered row (contact::continued_point), the same points to Newton's resolution.
 std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {});
 
 }  // namespace roughroll

@@ -53,6 +53,15 @@ public:
     // The point reported at Q, its checks made. `below`: the n of the estimate's levels below this one,
     // coarsest first (their points start this level's search), asked for on the first call.
     virtual tangential_solution point(double Q, const std::function<std::vector<int>()>& below) = 0;
+    // The point at Q of a curve continued in the load (contact::continued_point): `previous`, the curve's
+    // previous row, is a start of the same zone search (issue 24, 3: a layout already solved, zone_start.hpp),
+    // tried before the search's own; the answer is the point's, to Newton's resolution. Models with one
+    // structure (the paper's, its one-parameter limit) have no start to give: their point.
+    virtual tangential_solution continued(double Q, const tangential_solution& previous,
+                                          const std::function<std::vector<int>()>& below) {
+        static_cast<void>(previous);
+        return point(Q, below);
+    }
     // This level's solution at s.Q on the zone structure of s (another level's point of this model), its
     // checks made but not acted on: a level of s's estimate. resolution_error where the level has no such
     // solution, naming the estimate of method `how` at n (no_honest_estimate) as refused.
