@@ -12,12 +12,21 @@
 //     coupled lambda, checked on a contact built apart at the width found; to first order in beta_D,
 //     lambda - lambda_J = -beta_D int p1_J r/sqrt(1 - r^2) with Johnson's traction p1_J (8(c)),
 //     integrated by GSL's QAWS, and the remainder falls like beta_D^2; the rollers exchanged with
-//     Q -> -Q keep the width; a curve settles each row's width at its load.
+//     Q -> -Q keep the width; a curve settles each row's width at its load;
+//   - the alternation started from the coarser level's converged coupling reaches the fixed point that the
+//     one from Johnson's point reaches, to within the stopping rule, in fewer steps (8(e), "The start from
+//     the coarser level");
+//   - free rolling at f = 0.5 .. 0.8, whose edge layers (the full level's crossing t_c) are too thin for n = 1000, is
+//     refused by the ladder before any level is solved (it climbed every rung for minutes before), naming
+//     coupling = "johnson"; f = 0.3 still climbs (8(n) "Beyond every n").
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -26,6 +35,11 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/full_coupling.hpp"
+#include "roughroll/problems/level_ladder.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 #include "aluminium_on_steel.hpp"
 #include "chebyshev_by_qagp.hpp"
 
@@ -39,6 +53,106 @@ contact full(int n, double beta = beta_al_st) {
 }
 
 }  // namespace
+
+namespace {
+// Johnson's level of the smooth pair at n and load Q: Hertz's pressure and Johnson's three zones.
+struct johnson_level {
+    johnson_level(int n, double Q)
+        : hertz(hertz_solution(n, method::product)),
+          solver(hertz, kernel{}, kernel{}, f),
+          zones(solver, kernel{}, beta_al_st),
+          point(zones.solve(Q)) {}
+    const normal_solution hertz;
+    tangential_solver solver;
+    dissimilar_zones zones;
+    const tangential_solution point;
+};
+}  // namespace
+
+// The start from the coarser level (docs/formulation.md 8(e)): the alternation at n = 64 from level 32's converged
+// coupling against the same alternation from Johnson's point, the braked three zones and the driven three zones
+// (their blended stick zone, W and the blend's kinks). The two reach one fixed point of level 64's map, each
+// stopping once a step changes lambda, e, xi by 1e-12 and the ends by 1e-10 at most, with successive changes
+// falling by the contraction (0.02-0.07): so they agree to a few times those. The coarser level itself differs
+// by the discretisation (1e-7 and more): a start that leaked into the answer would show.
+TEST(FullCoupling, StartFromTheCoarserLevelReachesTheSameFixedPoint) {
+    for (const double q : {-0.75, 0.9}) {
+        SCOPED_TRACE(q);
+        const double Q = q * f;
+        johnson_level cj(32, Q), fj(64, Q);
+        full_coupling coarse(kernel{}, kernel{}, 32, method::product, f, beta_al_st);
+        full_coupling from_johnson(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
+        full_coupling from_coarse(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
+        const tangential_solution c = coarse.solve(cj.hertz, cj.zones, cj.point, false);
+        const tangential_solution a = from_johnson.solve(fj.hertz, fj.zones, fj.point, false);
+        const tangential_solution b = from_coarse.solve(fj.hertz, fj.zones, fj.point, false, &coarse);
+        EXPECT_EQ(from_johnson.summary().start_level, 0);
+        EXPECT_EQ(from_coarse.summary().start_level, 32);
+        EXPECT_LT(from_coarse.summary().iterations, from_johnson.summary().iterations);
+        EXPECT_NEAR(b.xi, a.xi, 1e-11);
+        EXPECT_NEAR(from_coarse.normal().lambda, from_johnson.normal().lambda, 1e-11);
+        EXPECT_NEAR(from_coarse.normal().offset, from_johnson.normal().offset, 1e-11);
+        EXPECT_NEAR(b.start(), a.start(), 1e-9);
+        EXPECT_NEAR(b.c0(), a.c0(), 1e-9);
+        // The levels differ far beyond those bounds.
+        EXPECT_GT(std::fabs(c.xi - a.xi), 1e-9);
+        EXPECT_GT(std::fabs(c.c0() - a.c0()), 1e-7);
+        std::printf("Q/f = %g: steps %d from Johnson's point, %d from level 32; xi %.3g, c0 %.3g apart (levels: %.3g, %.3g)\n",
+                    q, from_johnson.summary().iterations, from_coarse.summary().iterations, b.xi - a.xi,
+                    b.c0() - a.c0(), c.xi - a.xi, c.c0() - a.c0());
+    }
+}
+
+namespace {
+// Thrown by the checkpoint: a level was about to be solved.
+struct level_solved : std::runtime_error {
+    level_solved() : std::runtime_error("a level was solved") {}
+};
+
+// The ladder's free rolling at full coupling and friction `friction`, default settings: the refusal's line, or
+// empty when a rung started to solve a level (the checkpoint runs before every level's solve and every step).
+std::string free_rolling_refusal(double friction) {
+    level_ladder ladder(solver_options{}, roughness{}, [friction](int n) {
+        auto c = std::make_unique<contact>(roughness{}, friction, solver_options{n},
+                                           dissimilar{beta_al_st, coupling_level::full});
+        c->set_checkpoint([] { throw level_solved(); });
+        return c;
+    });
+    try {
+        ladder.point(0.0);
+        ADD_FAILURE() << "f = " << friction << ": answered without a solve";
+    } catch (const resolution_error& e) {
+        return e.what();
+    } catch (const level_solved&) {
+    }
+    return {};
+}
+}  // namespace
+
+// Full coupling's edge layers at free rolling, crossing t_c = 2/(1 + exp(arctan(f)/|epsilon|)) (8(p)): too thin for
+// n = 1000 from f = 0.453 at the default tolerance (x = t_c 1000^2 below 196, 8(n) "Beyond every n"), refused
+// before any solve with what answers.
+TEST(FullCoupling, FreeRollingBeyondEveryNRefusedBeforeAnySolve) {
+    // The crossing against its limit and Johnson's level: t_c -> 2 exp(-pi f/|beta_D|) to first order in beta_D and f.
+    const double epsilon = std::log((1.0 - beta_al_st) / (1.0 + beta_al_st)) / (2.0 * M_PI);
+    EXPECT_NEAR(coupled_layers_crossing(beta_al_st, 0.6), 2.0 / (1.0 + std::exp(std::atan(0.6) / -epsilon)), 1e-20);
+    EXPECT_NEAR(coupled_layers_crossing(1e-3, 1e-3) / (2.0 / (1.0 + std::exp(M_PI))), 1.0, 1e-5);
+    for (const double friction : {0.5, 0.6, 0.7, 0.8}) {
+        SCOPED_TRACE(friction);
+        const std::string why = free_rolling_refusal(friction);
+        EXPECT_NE(why.find("no n up to 1000 meets the tolerance"), std::string::npos) << why;
+        EXPECT_NE(why.find("edge layers"), std::string::npos) << why;
+        EXPECT_NE(why.find("coupling = \"johnson\" answers"), std::string::npos) << why;
+        EXPECT_EQ(why.find('\n'), std::string::npos) << why;
+        EXPECT_EQ(why.find("::"), std::string::npos) << why;
+    }
+    // f = 0.3: x = 3.6e3, beyond the measured law: the ladder solves.
+    EXPECT_GT(coupled_layers_crossing(beta_al_st, 0.3) * 1e6, 555.0);
+    EXPECT_EQ(free_rolling_refusal(0.3), "");
+    // A load other than free rolling is not refused by it.
+    contact driven(roughness{}, 0.6, solver_options{128}, dissimilar{beta_al_st, coupling_level::full});
+    EXPECT_FALSE(driven.beyond_every_n(0.3, 1000, default_tolerance).has_value());
+}
 
 TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
     for (const double Q : {-0.75 * f, 0.75 * f}) {
@@ -406,6 +520,22 @@ TEST(FullCouplingPhysical, RollersExchangedKeepTheWidth) {
 
 // A curve of a physical scene at full coupling settles each row's width at the row's load, as a
 // point does; the widths differ between the loads.
+// The refusal of FullCoupling.FreeRollingBeyondEveryNRefusedBeforeAnySolve for a physical scene at the default
+// settings: before the first rung settles its width (a solve at the load, the five-zone search that fails; before,
+// minutes of CPU at f = 0.5 .. 0.8).
+TEST(FullCouplingPhysical, FreeRollingBeyondEveryNRefusedBeforeTheWidth) {
+    scene s = pair();
+    s.friction = 0.6;
+    s.solver.n = 0;
+    s.solver.how = method::extrapolated;
+    try {
+        solve_point(s, 0.0, [] { throw level_solved(); });
+        ADD_FAILURE() << "answered";
+    } catch (const resolution_error& e) {
+        EXPECT_NE(std::string(e.what()).find("coupling = \"johnson\" answers"), std::string::npos) << e.what();
+    }
+}
+
 TEST(FullCouplingPhysical, CurveRowsHaveTheirOwnWidths) {
     const std::vector<double> loads{-0.75 * f, -0.5 * f};
     const scene_curve c = curve_of(pair(), loads, 0, false);

@@ -146,6 +146,7 @@ nlohmann::json to_json(const point_report& r) {
                          {"hertz_load_ratio_johnson", r.coupling->lambda_johnson},
                          {"peak_pressure_change", r.coupling->peak_pressure_change},
                          {"iterations", r.coupling->iterations},
+                         {"start_level", r.coupling->start_level},
                          {"contraction", r.coupling->contraction}});
     nlohmann::json point = {
         {"label", r.label},
@@ -205,7 +206,10 @@ void write_summary(std::ostream& out, const point_report& r) {
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
     if (s.forcing != 0.0 && r.coupling)
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing)
-            << "   (full coupling: " << r.coupling->iterations << " normal solves after Johnson's, contraction "
+            << "   (full coupling: " << r.coupling->iterations << " normal solves after "
+            << (r.coupling->start_level > 0 ? "level " + std::to_string(r.coupling->start_level) + "'s coupling"
+                                            : std::string("Johnson's"))
+            << ", contraction "
             << shortest(r.coupling->contraction) << ")\n"
             << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
             << shortest(r.coupling->lambda_johnson) << "; peak pressure at the same P2 changed by "

@@ -135,6 +135,21 @@ struct scene_rungs {
     }
 };
 
+// A point that no rung answers (contact::beyond_every_n) refused before the first rung settles its width, which
+// is a solve at the load (for full coupling's free rolling beyond every n, minutes of a search that fails): the rule
+// does not depend on the width (smooth rollers alone, and the edge zones' bound of beta_D, f, Q and n), so the
+// scene's contact as given answers it.
+void refuse_beyond_every_n(const scene& s, double Q, int top) {
+    std::optional<std::string> why;
+    try {
+        why = contact(s.surfaces, s.friction, s.solver, s.materials)
+                  .beyond_every_n(Q, top, s.solver.tolerance.value_or(default_tolerance));
+    } catch (const resolution_error&) {
+        return;  // a contact that cannot be built: the ladder refuses it as before
+    }
+    if (why) throw resolution_error(*why);
+}
+
 level_ladder ladder_of(const scene& s, scene_rungs& rungs) {
     return level_ladder(s.solver, s.surfaces, [&rungs](int n) { return rungs(n); });
 }
@@ -149,6 +164,7 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
     if (s.solver.n == 0) {  // the ladder chooses n (problems/level_ladder.hpp)
         scene_rungs rungs{s, Q, checkpoint, {}};
         level_ladder ladder = ladder_of(s, rungs);
+        refuse_beyond_every_n(s, Q, ladder.rungs().back());
         level_ladder::answer a = ladder.point(Q);
         const double seconds = since_start();
         std::unique_ptr<contact> c = ladder.release(a.n);

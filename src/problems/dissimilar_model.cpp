@@ -106,22 +106,21 @@ public:
         // Free rolling of smooth rollers at Johnson's level whose layers the tolerance does not neglect:
         // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
         // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
-        const std::optional<double> bound = layers_bound(Q);
-        if (!bound || *bound <= tolerance) return std::nullopt;
+        const std::optional<double> crossing = unresolved_layers(Q, tolerance);
+        if (!crossing) return std::nullopt;
         // The law was measured on product integration.
         if (level_of(options_.how) != method::product) return std::nullopt;
-        const double crossing = no_slip_layers(materials_.beta_d, f_).crossing;
-        const double x = crossing * top * top;
+        const double x = *crossing * top * top;
         const double change = layer_change_lower_bound(x);
         if (!(change > tolerance)) return std::nullopt;
         std::ostringstream msg;
         msg.precision(2);
         msg << "no n up to " << top << " meets the tolerance " << shortest(tolerance)
             << " (relative) for free rolling of these rollers at f = " << shortest(f_) << ": its edge layers, about "
-            << crossing << " of the half-width, are too thin (at n = " << top
+            << *crossing << " of the half-width, are too thin (at n = " << top
             << " the five zones' leading layer still changes by more than " << change << " of itself from n = "
             << top / 2 << ", docs/formulation.md 8(n))";
-        const std::string advice = layers_tolerance_advice(*bound, materials_.beta_d, f_);
+        const std::string advice = edge_zones_advice(Q);
         if (!advice.empty()) msg << "; " << advice;
         return msg.str();
     }
@@ -141,6 +140,13 @@ protected:
     // check_edge_zones_resolvable at n, advised.
     void check_edge_zones(double Q, int n) const {
         advised(Q, [&] { check_edge_zones_resolvable(materials_.beta_d, f_, Q, n); });
+    }
+    // The crossing t_c of the edge layers whose resolution beyond_every_n bounds (free rolling of smooth rollers),
+    // where the point needs them resolved: at Johnson's level where the tolerance does not neglect them.
+    virtual std::optional<double> unresolved_layers(double Q, double tolerance) const {
+        const std::optional<double> bound = layers_bound(Q);
+        if (!bound || *bound <= tolerance) return std::nullopt;
+        return no_slip_layers(materials_.beta_d, f_).crossing;
     }
     // At Johnson's level: free rolling of smooth rollers, the tolerance at which its layers would be neglected.
     virtual std::string edge_zones_advice(double Q) const {
@@ -383,7 +389,23 @@ public:
     point_model& level(int m) override { return levels_.at(m); }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
         check_edge_zones(Q, nodes());
-        return coupled(Q, johnson_point(Q, levels_.at<johnson_model>(below())), true);
+        const std::vector<int> ms = below();
+        const tangential_solution johnson = johnson_point(Q, levels_.at<johnson_model>(ms));
+        // The estimate's levels first, coarsest first, each alternation from the one below (8(e), "The start
+        // from the coarser level"); a level that fails leaves the next to Johnson's point (and its refusal
+        // to the estimate, which asks it again).
+        const full_coupling* start = nullptr;
+        for (coupled_model* level : levels_.at(ms)) {
+            try {
+                level->coupled(Q, level->johnson_model::like(johnson, options_.how, nodes()), false, start);
+                start = &level->coupling_;
+            } catch (const numerical_error&) {
+                start = nullptr;
+            } catch (const resolution_error&) {
+                start = nullptr;
+            }
+        }
+        return coupled(Q, johnson, true, start);
     }
     tangential_solution like(const tangential_solution& s, method how, int n) override {
         // The level's own alternation from its own Johnson's point (a Johnson's point against a coupled n
@@ -398,6 +420,13 @@ public:
     }
 
 protected:
+    // Free rolling of smooth rollers: no layers-neglected route, so always resolved, at the full level's crossing
+    // (8(p) "The edges"; 8(n) "Beyond every n", at full coupling, where the leading layer's changes lie above
+    // Johnson's law).
+    std::optional<double> unresolved_layers(double Q, double) const override {
+        if (!(Q == 0.0 && johnson_layers_)) return std::nullopt;
+        return coupled_layers_crossing(materials_.beta_d, f_);
+    }
     // Free rolling of smooth rollers: Johnson's level answers it with the edge layers neglected (8(n)),
     // at the tolerance it names where the default does not neglect them. Full coupling has no such route.
     std::string edge_zones_advice(double Q) const override {
@@ -415,11 +444,12 @@ protected:
 private:
     // The coupled point at Q from Johnson's point `johnson` of this level; `checked` as
     // full_coupling::solve (the cache keeps a checked point for an unchecked call).
-    const tangential_solution& coupled(double Q, const tangential_solution& johnson, bool checked) {
+    const tangential_solution& coupled(double Q, const tangential_solution& johnson, bool checked,
+                                       const full_coupling* start = nullptr) {
         checkpoint();
         if (load_ && *load_ == Q && (checked_ || !checked)) return point_;
         load_.reset();  // Johnson's pressure and zones until the alternation has converged
-        point_ = coupling_.solve(normal_, zones_, johnson, checked);
+        point_ = coupling_.solve(normal_, zones_, johnson, checked, start);
         load_ = Q;
         checked_ = checked;
         return point_;

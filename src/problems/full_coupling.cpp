@@ -8,6 +8,8 @@
 #include <optional>
 #include <sstream>
 
+#include <gsl/gsl_math.h>
+
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 
@@ -26,6 +28,11 @@ struct full_coupling::iterate {
     std::unique_ptr<dissimilar_zones> zones;
     tangential_solution s;
 };
+
+double coupled_layers_crossing(double beta_d, double f) {
+    const double epsilon = std::log((1.0 - beta_d) / (1.0 + beta_d)) / (2.0 * M_PI);  // 8(p), "The fundamental function"
+    return 2.0 / (1.0 + std::exp(std::atan(f) / std::fabs(epsilon)));
+}
 
 full_coupling::full_coupling(const kernel& k1, const kernel& k2, int n, method how, double f, double beta_d)
     : k1_(k1), k2_(k2), f_(f), beta_d_(beta_d), normal_solver_(n, how) {
@@ -135,17 +142,24 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
 }  // namespace
 
 const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
-                                                const tangential_solution& johnson_point, bool checked) {
+                                                const tangential_solution& johnson_point, bool checked,
+                                                const full_coupling* coarser) {
     const double Q = johnson_point.Q;
     current_.reset();
     previous_.reset();
     summary_ = coupling_summary{};
     summary_.lambda_johnson = johnson.lambda;
-    // The source of beta_D p1^(k) for normal solve k + 1: Johnson's point at k = 0 (its zones
-    // workspace outlives this solve: the contact's), then the current iterate.
-    dissimilar_zones* source_zones = &johnson_zones;
-    tangential_solution source = johnson_point;
-    double lambda = johnson.lambda, offset = 0.0;
+    // The source of beta_D p1^(k) for normal solve k + 1: at k = 0 Johnson's point (its zones workspace
+    // outlives this solve: the contact's) or the coarser level's converged iterate (8(e), "The start from
+    // the coarser level": the same load, its p1 a function of r evaluated at this level's points), then the
+    // current iterate.
+    const iterate* start = coarser != nullptr && coarser->current_ && coarser->current_->s.Q == Q
+                               ? coarser->current_.get()
+                               : nullptr;
+    dissimilar_zones* source_zones = start ? start->zones.get() : &johnson_zones;
+    tangential_solution source = start ? start->s : johnson_point;
+    double lambda = start ? start->normal.lambda : johnson.lambda, offset = start ? start->normal.offset : 0.0;
+    if (start) summary_.start_level = start->normal.rule.n;
     double previous_change = 0.0;
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     for (int k = 1; k <= coupling_max_iterations; ++k) {
@@ -167,7 +181,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         std::unique_ptr<iterate> next;
         try {
             next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty(),
-                                       current_ ? current_->normal : johnson, f_));
+                                       current_ ? current_->normal : start ? start->normal : johnson, f_));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;
@@ -216,7 +230,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         offset = current_->normal.offset;
         summary_.iterations = k;
 
-        if (value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance) {
+        // From a coarser level, the first change is the two levels' difference, not the alternation's: at
+        // least two steps, so that the point's G never refers to the coarser level's iterate.
+        if (value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance && !(start && k == 1)) {
             if (checked && !current_->s.checks.hold()) throw failed_checks(current_->s, Q, f_);
             summary_.offset = offset;
             summary_.peak_pressure_change =

@@ -41,9 +41,15 @@ constexpr double coupling_value_tolerance = 1e-12;
 constexpr double coupling_end_tolerance = 10.0 * zone_end_resolution;
 constexpr int coupling_max_iterations = 40;
 
+// Free rolling of smooth rollers at full coupling: the distance t_c from either edge where |p1| of the fully coupled
+// no-slip solution reaches f p, 2/(1 + exp(arctan(f)/|epsilon|)) with tanh(pi epsilon) = -beta_D (docs/formulation.md
+// 8(p), "The edges"); the edge layers of the five zones scale with it.
+double coupled_layers_crossing(double beta_d, double f);
+
 // What the alternation measured, for the report of a point.
 struct coupling_summary {
-    int iterations = 0;           // normal solves after Johnson's
+    int iterations = 0;           // normal solves after the start (Johnson's point or a coarser level's coupling)
+    int start_level = 0;          // n of the coarser level whose converged coupling started it; 0: Johnson's point
     double offset = 0.0;          // e = x_c/a of 8(c)
     double lambda_johnson = 0.0;  // P_H/P2 of Johnson's level
     // The relative change of the physical peak pressure from Johnson's level at the same rollers and
@@ -69,8 +75,13 @@ public:
     // `johnson`, its zones workspace (on `johnson`) and its point (k = 0 of the alternation).
     // `checked`: each step's checks (3.3)-(3.4) must hold (a point reported), else numerical_error;
     // without, they are made, not acted on (a level of an estimate, as at Johnson's level).
+    // `coarser`: a coarser level's alternation converged at the same load; its last iterate (beta_D p1, its
+    // zone ends and kinks, evaluated at this level's points) replaces Johnson's point as the start, which
+    // the alternation then leaves for this level's own fixed point (docs/formulation.md 8(e), "The start
+    // from the coarser level"); it must outlive this call only.
     const tangential_solution& solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
-                                     const tangential_solution& johnson_point, bool checked);
+                                     const tangential_solution& johnson_point, bool checked,
+                                     const full_coupling* coarser = nullptr);
 
     // The last solve's pressure p (with lambda, e and its beta_D p1 term), solver and zones, through
     // which traction, slip velocity and checks of the point are evaluated; valid until the next solve.
