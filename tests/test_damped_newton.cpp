@@ -2,7 +2,8 @@
 // The damped Newton of the zone ends (numerics/damped_newton.hpp): a root in three unknowns
 // against its closed form, the damping that keeps the iterate inside its domain, and the empty
 // answers (singular Jacobian, residual undefined at the start, no convergence); the stop at F's
-// rounding where it lies above the tolerance, and no stop there while Newton still contracts.
+// rounding where it lies above the tolerance, no stop there while Newton still contracts, nor where
+// that rounding passes its cap (far from the root).
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -70,34 +71,60 @@ TEST(DampedNewton, EmptyWhenItCannotConverge) {
 }
 
 namespace {
-// A rounding of 1e-9 that is a fixed function of x's bits (as an entry condition's at large n: the same x gives
-// the same F, the nearest other x another one): a hash of the bits, uniform in [-1e-9, 1e-9].
-double jitter(double x) {
+// A rounding of size `a` that is a fixed function of x's bits (as an entry condition's at large n: the same x gives
+// the same F, the nearest other x another one): a hash of the bits, uniform in [-a, a].
+double jitter(double x, double a) {
     std::uint64_t u = 0;
     std::memcpy(&u, &x, sizeof u);
     u *= 0x9E3779B97F4A7C15ULL;
     u ^= u >> 29;
     u *= 0xBF58476D1CE4E5B9ULL;
-    return 1e-9 * (static_cast<double>(u >> 11) * 0x1p-52 - 1.0);
+    return a * (static_cast<double>(u >> 11) * 0x1p-52 - 1.0);
+}
+
+// (x - 1, y - 2) with a rounding of size a: the root (1, 2), whose Newton steps are the rounding's once it is reached.
+newton_problem rounded_linear(double a) {
+    newton_problem p;
+    p.residual = [a](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] - 1.0 + jitter(x[0] + x[1], a), x[1] - 2.0 + jitter(x[0] - x[1], a)};
+    };
+    return with_steps(p);
 }
 }  // namespace
 
 TEST(DampedNewton, StopsAtTheRoundingOfF) {
-    // (x - 1, y - 2) with a rounding of 1e-9 at the tolerance 1e-12: the steps stay at 1e-9 and the iterations run
-    // out (the five zones' Newton at n >= 384 before the stop, docs/formulation.md 8(q)); told the rounding's size,
-    // Newton stops at the second step within it that does not contract, within the rounding of the root.
-    newton_problem p;
-    p.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
-        return std::vector<double>{x[0] - 1.0 + jitter(x[0] + x[1]), x[1] - 2.0 + jitter(x[0] - x[1])};
-    };
-    p = with_steps(p);
-    EXPECT_FALSE(damped_newton(p, {1.5, 1.5}, {40, 1e-12, 1e-6}));
-    p.rounding = [](const std::vector<double>&) { return 1e-8; };
-    const auto root = damped_newton(p, {1.5, 1.5}, {40, 1e-12, 1e-6});
+    // A rounding of 3e-10 at the zone ends' tolerance 1e-11: the steps stay near 3e-10 and the iterations run out (the
+    // five zones' Newton at n >= 384 before the stop, docs/formulation.md 8(q)); told the rounding's size, 4e-9 (eps/rcond
+    // of the five zones' systems at n = 1000, whose floor steps are 0.004 to 0.17 of it), Newton stops at the second
+    // step within it that does not contract, within the rounding of the root.
+    newton_problem p = rounded_linear(3e-10);
+    EXPECT_FALSE(damped_newton(p, {1.5, 1.5}, {40, 1e-11, 1e-6}));
+    p.rounding = [](const std::vector<double>&) { return 4e-9; };
+    const auto root = damped_newton(p, {1.5, 1.5}, {40, 1e-11, 1e-6});
     ASSERT_TRUE(root);
-    EXPECT_NEAR(root->x[0], 1.0, 2e-9);
-    EXPECT_NEAR(root->x[1], 2.0, 2e-9);
+    EXPECT_NEAR(root->x[0], 1.0, 6e-10);
+    EXPECT_NEAR(root->x[1], 2.0, 6e-10);
     EXPECT_LE(root->iterations, 10);
+}
+
+TEST(DampedNewton, NoRoundingStopBeyondItsCap) {
+    // An ill-conditioned F (rcond 2e-13): a rounding of 1e-4, of which it is told, 1e-3 = eps/rcond (the differences
+    // of the Jacobian 0.1 long, so that the rounding leaves it 1e-3 off). Two steps within that rounding, the second
+    // not contracting, come at about 1e-4 from the root: a stop there would be a root 1e7 tolerances off, reported as
+    // converged. Above rounding_cap tolerances the rounding stop is none: no root.
+    newton_problem p = rounded_linear(1e-4);
+    p.difference_step = [](const std::vector<double>&, std::size_t) { return -0.1; };
+    p.rounding = [](const std::vector<double>&) { return 1e-3; };
+    EXPECT_FALSE(damped_newton(p, {1.5, 1.5}, {40, 1e-11, 1e-6}));
+    // Far from any root: x^3 - 2x + 2 from x = 0 cycles between 0 and 1 (Newton's 2-cycle, its root -1.769), full steps
+    // of size 1 that do not contract; told of a rounding of 10, the stop would report 0 or 1 as the root.
+    newton_problem cycle;
+    cycle.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+        return std::vector<double>{x[0] * x[0] * x[0] - 2.0 * x[0] + 2.0};
+    };
+    cycle = with_steps(cycle);
+    cycle.rounding = [](const std::vector<double>&) { return 10.0; };
+    EXPECT_FALSE(damped_newton(cycle, {0.0}, {40, 1e-11, 1e-6}));
 }
 
 TEST(DampedNewton, NoStopAtTheRoundingWhileNewtonContracts) {

@@ -7,7 +7,9 @@
 // the caller, is at most `tolerance`, or at the limit of the accuracy F carries: where the caller gives
 // the size of the steps F's rounding makes (`rounding`), after two successive full steps within it,
 // the second no smaller than the first (a contracting Newton step is far smaller than the one before:
-// what is left is F's rounding, below which a later step gets only by chance). Empty when it does not
+// what is left is F's rounding, below which a later step gets only by chance), and only where that
+// rounding is at most `rounding_cap` tolerances: an ill-conditioned F (a rounding near the iterate's
+// distance from the root) or a non-contracting cycle far from it is no root. Empty when it does not
 // converge: a singular or non-finite Jacobian, no admissible step, F undefined at x0 or at a
 // difference point, or max_iterations spent;
 // the callers then fall back to bracketing (Brent). Whatever F throws passes through.
@@ -37,6 +39,11 @@ struct newton_options {
     int max_iterations = 40;
     double tolerance = 1e-11;
     double min_step = 1e-6;  // the smallest damping factor lambda
+    // The largest rounding (in tolerances) at which the rounding stop is a stop (docs/formulation.md 8(q), "The
+    // five zones' Newton at large n"): the zone ends' eps/rcond, 1.5e-10, 8.6e-10, 4.0e-9 at n = 250, 500, 1000
+    // (max_nodes) on free rolling of the pair at Johnson's level, is at most 400 of their tolerances 1e-11; 1000
+    // leaves 2.5 for other scenes. Beyond it the ends would be known to no more than 1e-8 of the half-width.
+    double rounding_cap = 1000.0;
 };
 
 struct newton_root {
