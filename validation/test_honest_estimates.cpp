@@ -26,6 +26,7 @@
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 
 using namespace roughroll;
@@ -396,4 +397,72 @@ TEST(HonestEstimates, EstimateGridSeed2UnderReports) {
                                                       0.01883, 0.0188299999834296, product_1000, extrapolated_512);
     EXPECT_LT(gross_sliding.spread_xi, 1e-16);
     EXPECT_TRUE(honest_or_refused_at(gross_sliding, solver_options{32, method::product}));
+}
+
+// The zone ends' floor is their levels' Newton resolution (docs/formulation.md 8(q), "The estimates' floor of the zone
+// ends"): made-up levels of Johnson's five zones with the stick start's changes of free rolling over n = 250, 500, 1000
+// (-4.8e-12, 6.55e-11, which refused the point at n = 1000 before). Where every level met Newton's tolerance the floor
+// is zone_ends_floor's 2 zone_end_resolution, and those changes are no convergence: refused. Where level n stopped at its
+// rounding 4e-9 (eps/rcond of its zone systems), the floor carries it: answered, the estimate at least twice that
+// rounding, so a level's distance from its root (up to the rounding) is inside it.
+TEST(HonestEstimates, ZoneEndsFloorIsTheLevelsNewtonResolution) {
+    const auto level = [](double start, double resolution) {
+        tangential_solution t{};
+        t.layout = one_stick_zone(start, 0.4953535486);
+        t.ends_resolution = resolution;
+        return estimate_level{t, 1.0};
+    };
+    const double s = -0.6891857193;
+    const double floor = 2.0 * zone_end_resolution;
+    const std::vector<estimated_quantity> table{
+        {"the stick zone's start", value_start, floor, floor, false, true, &error_estimate::start, true}};
+    const auto finer = []() -> std::optional<estimate_level> { return std::nullopt; };
+    const estimate_point p{method::product, 1000, 2, estimate_structure::dissimilar, false, true, "Q", 0.0};
+    const std::array<estimate_level, 3> tolerance{level(s, zone_end_resolution),
+                                                  level(s - 4.8e-12, zone_end_resolution),
+                                                  level(s - 4.8e-12 + 6.55e-11, zone_end_resolution)};
+    EXPECT_THROW(estimate_from_levels(table, tolerance, finer, p), resolution_error);
+    EXPECT_EQ(newton_floor_excess({&tolerance[0].solution, &tolerance[1].solution, &tolerance[2].solution}), 0.0)
+        << "levels at Newton's tolerance: zone_ends_floor's floor, bit for bit";
+    const std::array<estimate_level, 3> rounded{level(s, zone_end_resolution), level(s - 4.8e-12, 8.6e-10),
+                                                level(s - 4.8e-12 + 6.55e-11, 4e-9)};
+    const error_estimate e = estimate_from_levels(table, rounded, finer, p);
+    EXPECT_GE(e.start, 2.0 * 4e-9);
+    EXPECT_LE(e.start, 2.0 * 4e-9 + floor + 6.55e-11);
+}
+
+// Johnson's five zones of free rolling (data/aluminium-on-steel.toml, Q = 0) at n = 1000, whose Newton stops at its
+// rounding floor (eps/rcond 4e-9 of the zone systems): refused before ("the stick zone's start does not converge
+// visibly over the levels n = 250, 500, 1000", changes -4.8e-12, 6.55e-11, against a floor of 2e-11), answered with the
+// levels' resolution in the floor. Against the point at n = 512 (levels 128, 256, 512; level 512 at its rounding
+// 9.2e-10), a second solution at other nodes: every zone end within the sum of both estimates.
+TEST(HonestEstimates, JohnsonFiveZonesAnsweredAtTheirRoundingFloor) {
+    const auto at = [](int n) {
+        scene sc = read_scene(ROUGHROLL_DATA "/aluminium-on-steel.toml");
+        override_solver(sc, n, std::nullopt);
+        return solve_point(sc, 0.0);
+    };
+    std::optional<scene_point> fine, coarse;
+    try {
+        fine = at(1000);
+        coarse = at(512);
+    } catch (const resolution_error& e) {
+        FAIL() << e.what();
+    }
+    ASSERT_TRUE(fine->estimate && coarse->estimate);
+    const tangential_solution &a = fine->solution, &b = coarse->solution;
+    ASSERT_EQ(a.layout.stick_zones(), 2);
+    EXPECT_GT(a.ends_resolution, zone_end_resolution) << "Newton at n = 1000 stopped at its rounding";
+    const error_estimate &ea = *fine->estimate, &eb = *coarse->estimate;
+    std::printf(
+        "n 1000 - 512: start %.3g (estimates %.3g, %.3g), c0 %.3g (%.3g, %.3g), start2 %.3g, end2 %.3g; "
+        "resolution %.3g\n",
+        a.start() - b.start(), ea.start, eb.start, a.c0() - b.c0(), ea.c0, eb.c0, a.start2() - b.start2(),
+        a.end2() - b.end2(), a.ends_resolution);
+    EXPECT_GE(ea.start, 2.0 * (a.ends_resolution - zone_end_resolution));
+    EXPECT_LE(std::fabs(a.start() - b.start()), ea.start + eb.start);
+    EXPECT_LE(std::fabs(a.c0() - b.c0()), ea.c0 + eb.c0);
+    EXPECT_LE(std::fabs(a.start2() - b.start2()), ea.start + eb.start);
+    EXPECT_LE(std::fabs(a.end2() - b.end2()), ea.c0 + eb.c0);
+    EXPECT_LE(std::fabs(a.xi - b.xi), ea.xi + eb.xi);
 }

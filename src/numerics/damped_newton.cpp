@@ -75,13 +75,12 @@ std::optional<newton_root> damped_newton(const newton_problem& problem, std::vec
         x = next;
         F = F_next;
         const double size = step == 1.0 ? problem.step_size(x, *dx) : -1.0;
-        if (step == 1.0 && size <= options.tolerance) return newton_root{x, iteration};
+        if (step == 1.0 && size <= options.tolerance) return newton_root{x, iteration, options.tolerance};
         // At the rounding floor: two full steps within F's rounding at x, the second not contracting, that rounding
         // within the cap.
         const double rounding = step == 1.0 && problem.rounding ? problem.rounding(x) : -1.0;
-        const bool rounded =
-            step == 1.0 && size <= rounding && rounding <= options.rounding_cap * options.tolerance;
-        if (rounded && last_full >= 0.0 && size >= last_full) return newton_root{x, iteration};
+        const bool rounded = step == 1.0 && size <= rounding && rounding <= options.rounding_cap * options.tolerance;
+        if (rounded && last_full >= 0.0 && size >= last_full) return newton_root{x, iteration, rounding};
         last_full = rounded ? size : -1.0;
     }
     return std::nullopt;

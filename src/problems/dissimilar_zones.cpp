@@ -437,6 +437,7 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
     tangential_solution s = zone_solution(v.f, v.s1, v.c1, v.xi, v.Q, {}, std::min(v.zone1.rcond, v.zone2.rcond));
     s.sign = v.sign;
     s.iterations = v.iterations;
+    s.ends_resolution = v.ends_resolution;
     s.checks = v.checks;
     s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
     s.five = std::make_shared<const five_zone_solution>(v);

@@ -127,14 +127,14 @@ error_estimate contact::estimate_from(const tangential_solution& s, const tangen
         table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda,
                   reported_ != nullptr && structure != estimate_structure::full_coupling, false, &est::lambda},
                  {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
-                 {"c0", value_c0, ends, finer_ends, false, true, &est::c0},
-                 {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start}};
+                 {"c0", value_c0, ends, finer_ends, false, true, &est::c0, true},
+                 {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start, true}};
         // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
         // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
         if (s.layout.stick_zones() == 2) {
-            table.push_back({"the second stick zone's end", value_end2, ends, finer_ends, false, true, &est::c0});
+            table.push_back({"the second stick zone's end", value_end2, ends, finer_ends, false, true, &est::c0, true});
             table.push_back(
-                {"the second stick zone's start", value_start2, ends, finer_ends, false, true, &est::start});
+                {"the second stick zone's start", value_start2, ends, finer_ends, false, true, &est::start, true});
         }
     }
     std::array<estimate_level, 3> levels;

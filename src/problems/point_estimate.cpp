@@ -55,7 +55,8 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
 }
 
 double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f, double strength) {
-    // Each level's ends are Newton's within zone_end_resolution, so the difference of two levels
+    // Each level's ends are Newton's within zone_end_resolution where it met that tolerance (where it
+    // stopped at its rounding, the rule adds the excess: newton_floor_excess), so the difference of two levels
     // carries up to twice that: below it, a difference is that noise, not a ratio (free rolling of
     // data/aluminium-on-steel.toml at n = 512 had been refused on -1.6e-13, -1.08e-11). Near gross
     // sliding the entry condition's rounding moves the ends by rho/|b_0| times it (formulation 8(m),
@@ -65,6 +66,12 @@ double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, dou
                          f * std::max({1.0, std::fabs(lambda), strength});
     return c0_floor + 2.0 * zone_end_resolution +
            (s.psi_b.empty() ? 0.0 : entry_ends_floor(m, terms, s.rho(), s.psi_b[0]));
+}
+
+double newton_floor_excess(std::initializer_list<const tangential_solution*> levels) {
+    double resolution = zone_end_resolution;
+    for (const tangential_solution* s : levels) resolution = std::max(resolution, s->ends_resolution);
+    return 2.0 * (resolution - zone_end_resolution);
 }
 
 double fewest_zone_nodes(const tangential_solution& s, int m) {
@@ -172,6 +179,11 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     const auto value = [](const estimated_quantity& q, const estimate_level& l) {
         return q.value ? q.value(l.solution) : l.lambda;
     };
+    // The floor of q over three levels: a zone end's carries their Newton resolution (newton_floor_excess).
+    const auto floor_over = [](const estimated_quantity& q, double floor, const estimate_level& a,
+                               const estimate_level& b, const estimate_level& c) {
+        return floor + (q.newton_end ? newton_floor_excess({&a.solution, &b.solution, &c.solution}) : 0.0);
+    };
     error_estimate e{0.0, 0.0, 0.0, 0.0, "", false};
     bool second_chance = false, confirmed = false;
     // Level 2n confirms quantity q's bound b from n/4, n/2, n on n/2, n, 2n (error_bound.hpp): the
@@ -179,7 +191,8 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     // is the one of those levels' finest, 2n.
     const auto confirm_on_finer = [&](const estimated_quantity& q, const estimate_level& a, const error_bound& b) {
         const three_levels fine{value(q, levels[1]), value(q, levels[2]), value(q, a)};
-        error_bound fb = confirm_error(fine, order, q.extrapolated, q.finer_floor);
+        error_bound fb =
+            confirm_error(fine, order, q.extrapolated, floor_over(q, q.finer_floor, levels[1], levels[2], a));
         if (!fb.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
         fb.value = std::max(fb.value, b.value);
         fb.asymptotic = fb.asymptotic && b.asymptotic;
@@ -191,11 +204,12 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     for (std::size_t i = 0; i < table.size(); ++i) {
         const estimated_quantity& q = table[i];
         const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
+        const double floor = floor_over(q, q.floor, levels[0], levels[1], levels[2]);
         // Full coupling (8(e)): the errors change sign between levels, so no asymptotic rule holds; where the kinks are
         // carried and resolved, the three-level rule of 8(q) (coupled_bound).
-        error_bound b = coupled ? coupled_bound(v, q.floor, three_level, order)
-                                : bound_error(v, order, reported_value{p.self, q.extrapolated}, q.floor);
-        const bool rounding = std::fabs(v.finest - v.middle) <= q.floor;  // the ratio then means nothing
+        error_bound b = coupled ? coupled_bound(v, floor, three_level, order)
+                                : bound_error(v, order, reported_value{p.self, q.extrapolated}, floor);
+        const bool rounding = std::fabs(v.finest - v.middle) <= floor;  // the ratio then means nothing
         const bool confirm = p.structure == estimate_structure::paper && b.resolved &&
                              (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
         const bool chance = !coupled && !b.resolved && p.checks_hold && q.second_chance;
@@ -210,7 +224,8 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
             // accepted only where they show at least order p - 1.
             if (const estimate_level* a = finer_level()) {
                 const three_levels fine{v.middle, v.finest, value(q, *a)};
-                b = bound_error(fine, order, reported_value{1, q.extrapolated}, q.finer_floor);
+                b = bound_error(fine, order, reported_value{1, q.extrapolated},
+                                floor_over(q, q.finer_floor, levels[1], levels[2], *a));
                 if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
                 second_chance = second_chance || b.resolved;
                 if (!b.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
@@ -244,7 +259,7 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
             const estimated_quantity& q = table[i];
             const double d1 = std::fabs(value(q, levels[1]) - value(q, levels[0]));
             const double d2 = std::fabs(value(q, levels[2]) - value(q, levels[1]));
-            const double noise = q.floor + 4.0 * coupling_end_tolerance;
+            const double noise = floor_over(q, q.floor, levels[0], levels[1], levels[2]) + 4.0 * coupling_end_tolerance;
             last.*q.out = std::max(last.*q.out, std::max(d2 - noise, 0.0));
             order_one.*q.out = std::max(order_one.*q.out, std::max(std::min(d2, 0.5 * d1) - noise, 0.0));
         }

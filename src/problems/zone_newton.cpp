@@ -29,7 +29,7 @@ bool inside(const std::vector<double>& x, bool log_length) {
 }
 }  // namespace
 
-std::optional<int> zone_newton(
+std::optional<newton_root> zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
     const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
     const std::function<double()>& rounding) {
@@ -57,9 +57,7 @@ std::optional<int> zone_newton(
         x0.push_back(0.5 * (z.start + z.end));
         x0.push_back(log_length ? std::log(half) : half);
     }
-    const auto root = damped_newton(problem, x0, {max_iterations, tolerance, 1e-6});
-    if (!root) return std::nullopt;
-    return root->iterations;
+    return damped_newton(problem, x0, {max_iterations, tolerance, 1e-6});
 }
 
 }  // namespace roughroll

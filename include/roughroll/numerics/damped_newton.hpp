@@ -49,6 +49,9 @@ struct newton_options {
 struct newton_root {
     std::vector<double> x;
     int iterations;
+    // How well x is fixed (in step_size's unit): the tolerance where a step got below it, else the rounding the stop
+    // accepted (docs/formulation.md 8(q), "The estimates' floor of the zone ends").
+    double resolution;
 };
 
 std::optional<newton_root> damped_newton(const newton_problem& problem, std::vector<double> x0,

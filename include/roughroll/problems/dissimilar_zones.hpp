@@ -111,6 +111,7 @@ struct five_zone_solution {
     tangential_solution zone1, zone2;  // each zone's system (its psi and xi_k)
     traction_checks checks;            // (3.3) on both stick zones, (3.4) with S on the three slip zones
     int iterations = 0;                // Newton's
+    double ends_resolution = 0.0;      // Newton's (newton_root::resolution)
     int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
 };
 

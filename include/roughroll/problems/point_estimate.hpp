@@ -9,6 +9,7 @@
 
 #include <array>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,6 +73,12 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
 // both), and near gross sliding the entry condition's rounding moved by rho/|b_0| (entry_ends_floor).
 double zone_ends_floor(int m, double c0_floor, const tangential_solution& s, double lambda, double f, double strength);
 
+// What a floor of zone ends over `levels` gains where a level's Newton stopped at its rounding (docs/formulation.md 8(q),
+// "The estimates' floor of the zone ends"): each level's ends lie within its ends_resolution, so a difference of two
+// carries up to twice the largest; zone_ends_floor has twice zone_end_resolution, so twice the excess over it (0 where
+// every level met the tolerance).
+double newton_floor_excess(std::initializer_list<const tangential_solution*> levels);
+
 // The structures whose estimates differ in rule or in name: the paper's problem (beta_D = 0, every
 // zone search, the one-parameter limit), dissimilar rollers at Johnson's level (three or five zones,
 // level n reported, not extrapolated), and at full coupling (8(e): twice the larger of the last two
@@ -101,6 +108,10 @@ struct estimated_quantity {
     bool extrapolated;   // reported as Richardson's value of levels n and n/2
     bool second_chance;  // bounded from n/2, n, 2n where n/4, n/2, n give no estimate
     double error_estimate::*out;
+    // A zone end of Newton's: where a level's Newton stopped at its rounding above zone_end_resolution, the floor (which
+    // has twice zone_end_resolution, zone_ends_floor) gains twice the excess of the levels' largest resolution
+    // (newton_floor_excess).
+    bool newton_end = false;
 };
 
 // A level's solution on the structure of the point, and the level's P_H/P2.

@@ -22,6 +22,7 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
@@ -38,7 +39,7 @@ struct stick_span {
 // the residuals describe), in (m, log rho) with `log_length`, else (m, rho); `rounding`: the ends' rounding at
 // the last residual's zones (damped_newton's), empty: below `tolerance`. Empty when it does not converge. The
 // last call of `residual` is at the root.
-std::optional<int> zone_newton(
+std::optional<newton_root> zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
     const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
     const std::function<double()>& rounding);
@@ -89,10 +90,11 @@ std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(
         for (const tangential_solution* t : stick_systems(*last)) rcond = std::min(rcond, t->rcond);
         return std::numeric_limits<double>::epsilon() / rcond;
     };
-    const std::optional<int> iterations = zone_newton(residual, from, relative, max_iterations, tolerance,
-                                                      relative ? std::function<double()>{} : rounding);
-    if (!iterations || !last) return std::nullopt;
-    last->iterations = *iterations;  // the solution at the root, the last one solved
+    const std::optional<newton_root> root = zone_newton(residual, from, relative, max_iterations, tolerance,
+                                                        relative ? std::function<double()>{} : rounding);
+    if (!root || !last) return std::nullopt;
+    last->iterations = root->iterations;  // the solution at the root, the last one solved
+    last->ends_resolution = root->resolution;
     return last;
 }
 
