@@ -18,6 +18,8 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/creep_curve.hpp"
+#include "roughroll/problems/one_parameter.hpp"
+#include "roughroll/problems/zone_solver.hpp"
 #include "aluminium_on_steel.hpp"
 
 using namespace roughroll;
@@ -200,6 +202,63 @@ TEST(RefusedRows, OneParameterZoneSearchWithoutARoot) {
     EXPECT_NE(rows[1].refused.find("no root"), std::string::npos) << rows[1].refused;
     EXPECT_TRUE(std::isnan(rows[1].solution.xi));
     EXPECT_FALSE(rows[2].is_refused());
+}
+
+// The zone search's two outcomes short of a zone: "no zone of the structure carries the load" is an empty result
+// (the no-root case above: equal materials at Q/f = 1 - 1e-12), which the caller words as physics; a numerical fault
+// on the way (here a singular zone system, injected into the operator's solve) stays a numerical_error with its line.
+TEST(RefusedRows, ZoneSearchNoZoneIsEmptyAFaultIsAFault) {
+    const double f = 0.3;
+    one_parameter_solver limit(roughness{{{1.0, 1.0}, {1.0, 1.0}}, {}}, f, 128);
+    zone_solver search(limit.zone_operator());
+    EXPECT_FALSE(search.find(f * (1.0 - 1e-12), true).has_value());
+    EXPECT_THROW(search.solve(f * (1.0 - 1e-12), true), resolution_error);
+    ASSERT_TRUE(search.find(0.5 * f, true).has_value());
+    stick_zone_operator faulty = limit.zone_operator();
+    faulty.solve = [](double, double) -> tangential_solution {
+        throw numerical_error("injected fault: singular zone system");
+    };
+    zone_solver broken(std::move(faulty));
+    try {
+        broken.find(0.5 * f, true);
+        ADD_FAILURE() << "a zone without a solve";
+    } catch (const numerical_error& e) {
+        EXPECT_EQ(std::string(e.what()), "injected fault: singular zone system");
+    }
+}
+
+// The one-parameter method for dissimilar rollers (docs/formulation.md 8(s)): a point whose zones fail the checks is
+// refused with the physics ("slip against Q": use another method) only where the general zone search finds no zone
+// of its structure; a numerical fault of that search keeps its own line and type (before, every error of the search
+// read as "slip against Q"). Scene B of validate_one_parameter_dissimilar (eps = 0.2 at A = 1, beta_D = 0.1,
+// f = 0.05), driven at Q/f = 0.5: the leading edge slips against Q. The fault is injected at the contact's
+// checkpoint, which every level's search passes before it solves: from the second call on (the paper's zone, the
+// first, is solved and fails its checks).
+TEST(RefusedRows, OneParameterSearchFaultIsNotSlipAgainstQ) {
+    roughness scene_b;
+    scene_b.cylinder1.normal = scene_b.cylinder1.tangential = {0.1, 1.0};
+    const double f = 0.05, Q = 0.5 * f;
+    const auto limit = [&] { return contact(scene_b, f, solver_options{128, method::one_parameter}, dissimilar{0.1}); };
+    try {
+        limit().point(Q);
+        ADD_FAILURE() << "answered";
+    } catch (const beyond_method_error& e) {
+        EXPECT_NE(std::string(e.what()).find("slip against Q"), std::string::npos) << e.what();
+    }
+    contact faulty = limit();
+    int calls = 0;
+    faulty.set_checkpoint([&] {
+        if (++calls > 1) throw numerical_error("injected fault: singular zone system");
+    });
+    try {
+        faulty.point(Q);
+        ADD_FAILURE() << "answered";
+    } catch (const numerical_error& e) {
+        EXPECT_EQ(std::string(e.what()), "injected fault: singular zone system");
+    } catch (const error& e) {
+        ADD_FAILURE() << "the fault read as: " << e.what();
+    }
+    EXPECT_GT(calls, 1);
 }
 
 // A layer thickness that puts k or t of (2.11)-(2.14) beyond double precision is bad input naming its

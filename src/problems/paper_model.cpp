@@ -214,7 +214,7 @@ public:
     }
     tangential_solution general(double Q, std::optional<zone_guess>) override {
         checkpoint();
-        return (Q < 0.0 && braked_ ? braked_ : zones_)->solve(Q, true);
+        return search(Q).solve(Q, true);
     }
     tangential_solution point(double Q, const std::function<std::vector<int>()>&) override {
         tangential_solution s = limit_point(Q);
@@ -224,15 +224,16 @@ public:
         if (s.layout.general()) {
             searched = s;
         } else if (options_.zones != zone_search::single) {
-            try {
-                searched = general(Q, std::nullopt);
-            } catch (const error&) {  // no zone of the structure: its refusal is the one below
-            }
+            // Empty where no zone of the structure carries Q: its refusal is the one below. A numerical fault of
+            // the search is not that statement and keeps its own line (numerical_error).
+            checkpoint();
+            searched = search(Q).find(Q, true);
         }
         refuse_dissimilar(searched.value_or(s));
     }
 
 private:
+    zone_solver& search(double Q) { return *(Q < 0.0 && braked_ ? braked_ : zones_); }  // Q's forcing sgn(Q) beta_D
     tangential_solution limit_point(double Q) {
         // Its search is cheap: no starts from the levels below.
         if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);

@@ -159,9 +159,9 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_family&
 }
 
 // The general search at |Q| = magnitude; single_end: the paper's zone's c0 at this load, when it was solved
-// (saves one search).
-found general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
-                     std::optional<double> single_end) {
+// (saves one search). Empty where the scan ends on no bracket: no zone of the structure carries |Q|.
+std::optional<found> general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
+                                    std::optional<double> single_end) {
     const double f = op.f;
     const zone_search_method& method = op.method;
     // Q(start, c0) - |Q| falls from the empty zone's load (c0 = start) as the zone grows (7(c)), in the
@@ -193,7 +193,7 @@ found general_search(const stick_zone_operator& op, double magnitude, std::optio
     if (edge_end) {
         tangential_solution at_edge = op.solve(-1.0, *edge_end);
         at_edge_entry = op.entry(at_edge);
-        if (at_edge_entry <= 0.0) return {at_edge, false, false};
+        if (at_edge_entry <= 0.0) return found{at_edge, false, false};
     }
     // r*, where G is least: the stick zone straddles it and collapses onto it at gross sliding (7(d)).
     std::optional<double> point;
@@ -204,10 +204,11 @@ found general_search(const stick_zone_operator& op, double magnitude, std::optio
     // Near gross sliding: from the operator's model zone at r*, before the coarse level's guess,
     // which rounding makes no better.
     if (op.near_sliding && f - magnitude <= near_sliding * f)
-        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude))) return {*s, false, false};
+        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude)))
+            return found{*s, false, false};
     // Newton from the coarse level's zone when extrapolating.
     if (guess && guess->start > -1.0)
-        if (auto s = newton_at(op, magnitude)(guess->start, guess->c0)) return {*s, false, true};
+        if (auto s = newton_at(op, magnitude)(guess->start, guess->c0)) return found{*s, false, true};
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
     // (7(e), zone_family above), the zone from the leading edge (where the structure has one) first.
     std::vector<double> starts;
@@ -234,12 +235,12 @@ found general_search(const stick_zone_operator& op, double magnitude, std::optio
         edge.push_back(trials.front());
         if (auto s = bracketed(op, zones, edge, magnitude, first)) return *s;
     }
-    if (first) return {*first, true, false};  // the caller refuses it: its checks fail
+    if (first) return found{*first, true, false};  // the caller refuses it: its checks fail
     // Where the scan ends on no bracket, no zone of this structure carries the load (not a numerical
     // fault): zones = "auto" answers with the paper's zone and its failed checks where that zone exists
     // (contact::zones_for), dissimilar_zones::solve tries its other structure, a curve refuses the row
     // (docs/robustness.md).
-    throw resolution_error(method.refusal);
+    return std::nullopt;
 }
 }  // namespace
 
@@ -249,26 +250,32 @@ double zone_solver::entry_coefficient(const tangential_solution& s) {
     return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
 }
 
-tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
+std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, std::optional<zone_guess> guess) {
     const double magnitude = load_magnitude(Q, op_.f);
     const std::optional<tangential_solution> single = op_.paper_zone(Q, force_general && magnitude != 0.0);
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
     const std::optional<double> single_end = single ? std::optional<double>(single->c0()) : std::nullopt;
     check_load_resolvable(magnitude, op_.f);
+    if (magnitude == op_.f) return searched_point(op_.gross_sliding(), Q, op_.method.name, op_.check);
     const auto search = [&](std::optional<zone_guess> g) {
-        if (magnitude == op_.f)
-            return std::make_pair(searched_point(op_.gross_sliding(), Q, op_.method.name, op_.check), false);
-        found z = general_search(op_, magnitude, g, single_end);
+        std::optional<found> z = general_search(op_, magnitude, g, single_end);
         // The checks the scan made in the |Q| frame are Q's: the mirror changes the signs of p1 and v together.
-        return std::make_pair(
-            searched_point(std::move(z.zone), Q, op_.method.name, z.checked ? decltype(op_.check){} : op_.check),
-            z.from_guess);
+        if (z)
+            z->zone = searched_point(std::move(z->zone), Q, op_.method.name,
+                                     z->checked ? decltype(op_.check){} : op_.check);
+        return z;
     };
-    auto [s, from_guess] = search(guess);
+    std::optional<found> z = search(guess);
     // Newton from a guess may find another zone that solves both conditions but not the
     // inequalities (seen near s = 0.97 while it wandered): then search without the guess.
-    if (from_guess && !s.checks.hold()) s = search(std::nullopt).first;
-    return s;
+    if (z && z->from_guess && !z->zone.checks.hold()) z = search(std::nullopt);
+    if (!z) return std::nullopt;
+    return std::move(z->zone);
+}
+
+tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
+    if (std::optional<tangential_solution> s = find(Q, force_general, guess)) return *std::move(s);
+    throw resolution_error(op_.method.refusal);
 }
 
 }  // namespace roughroll

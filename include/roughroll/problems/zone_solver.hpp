@@ -42,7 +42,13 @@ public:
     // when its checks hold, else the general search. `force_general` runs the search in any
     // case (where the paper's structure holds it ends at start = -1, the single zone).
     // `guess`: a zone near the one sought, the start of a Newton iteration (7(e)).
+    // Where no zone of the search's structure carries the load (the scan of starts ends on no bracket of the
+    // entry condition): a resolution_error with the operator's refusal.
     tangential_solution solve(double Q, bool force_general = false, std::optional<zone_guess> guess = std::nullopt);
+    // The same search, "no zone of the structure" an empty result (a physical outcome the caller words); a
+    // numerical fault on the way (a GSL status, a singular system) stays a numerical_error with its own line.
+    std::optional<tangential_solution> find(double Q, bool force_general = false,
+                                            std::optional<zone_guess> guess = std::nullopt);
 
     // psi(t = -1) of a collocation solution's stick zone: the coefficient of sqrt(1 + t) in q at its
     // start, the entry condition of 7(b).
