@@ -51,6 +51,21 @@ grep -q 'no n up to 1000 meets the tolerance 1e-09 (relative): the best estimate
     fail "--tolerance 1e-9: $(cat "$dir/err")"
 [ -s "$dir/out" ] && fail "--tolerance 1e-9: wrote stdout"
 
+# The ladder's last line: a rung's refusal that names no change of its own (|Q|/f below the load equation's
+# precision) is followed by the ladder's advice; one that names it (a kernel too steep for 'extrapolated' at every
+# n: use method 'product') is not (issue 24: the advice was dropped after any refusal).
+run point "$dir/near.toml" --Q 1e-12 >"$dir/out" 2>"$dir/err"
+status=$?
+[ "$status" -eq 2 ] || fail "--Q 1e-12: exit $status, expected 2"
+grep -q 'is below 1e-10, the relative precision of the load equation .*; give n to see that point, or try another method or zone search$' "$dir/err" ||
+    fail "--Q 1e-12: no advice: $(cat "$dir/err")"
+printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 20000\n' >"$dir/steeper.toml"
+run point "$dir/steeper.toml" >"$dir/out" 2>"$dir/err"
+status=$?
+[ "$status" -eq 2 ] || fail "A = 20000: exit $status, expected 2"
+grep -q "; use method 'product' (no n up to 1000 resolves them at n/2))\$" "$dir/err" ||
+    fail "A = 20000: not its own advice alone: $(cat "$dir/err")"
+
 run curve "$dir/near.toml" --points 3 --csv "$dir/c.csv" 2>"$dir/err"
 status=$?
 [ "$status" -eq 0 ] || [ "$status" -eq 3 ] || fail "curve: exit $status: $(cat "$dir/err")"

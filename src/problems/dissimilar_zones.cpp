@@ -42,7 +42,7 @@ constexpr double quadrature_accepted = 1e-10;
 // Breakpoints of W's quadrature closer than this are not cut (r next to an end, the kinks' ends at the zone's).
 constexpr double breakpoint_apart = 1e-9;
 
-// Why no three zones answer a load (a resolution_error: no zone of that structure at this n, which a
+// Why no three zones answer a load (an unadvised_refusal: no zone of that structure at this n, which a
 // point answers by five zones or refuses; never a numerical fault, docs/robustness.md).
 std::string no_three_zones(double Q, double f, const std::string& why) {
     std::ostringstream msg;
@@ -506,9 +506,9 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
 tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
-        throw resolution_error(no_three_zones(Q, f_,
-                                              "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
-                                              "not three"));
+        throw unadvised_refusal(no_three_zones(Q, f_,
+                                               "free rolling has five zones (slip, stick, reversed slip, stick, slip), "
+                                               "not three"));
     check_load_resolvable(magnitude, f_);
     const double b = (Q > 0.0 ? 1.0 : -1.0) * beta_d_;  // the mirror of 8(h): the |Q| problem's forcing
     // The structure the hint names first (the coarser level's, when extrapolating), then the other one: both slip
@@ -533,7 +533,8 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     }
     if (!found && !failed && fault) throw *fault;
     if (!found && !failed)
-        throw resolution_error(no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
+        throw unadvised_refusal(
+            no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
     tangential_solution s = found ? *found : *failed;
     s.layout.route = zone_route::general;  // gross sliding's too, where r* = -1 (the paper's edge form)
     // The checks of the |Q| problem (the zone search made them) are those of Q: the mirror of 8(h) changes
@@ -544,7 +545,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
 
 void require_checks(const tangential_solution& s) {
     if (s.checks.hold()) return;
-    throw resolution_error(no_three_zones(
+    throw unadvised_refusal(no_three_zones(
         s.Q, s.f,
         "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
             shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) + ")"));

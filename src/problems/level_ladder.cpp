@@ -146,12 +146,12 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     };
     std::optional<best_reached> best;
     std::string last_reason, skipped, beyond_all;
-    bool refused_last = false;  // the last rung tried refused the point (its reason says what to change)
+    bool advised_last = false;  // the last rung tried refused the point with a line that says what to change
     std::vector<bool> skip(rungs_.size(), false);
     for (std::size_t i = from; i < rungs_.size() && beyond_all.empty(); ++i) {
         const int n = rungs_[i];
         if (skip[i]) continue;
-        refused_last = false;
+        advised_last = false;
         try {
             contact& c = at(n);
             answer a = solve(c, n);
@@ -191,9 +191,11 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
         } catch (const beyond_method_error&) {  // no rung can: its own line says what to change
             throw;
-        } catch (const resolution_error& e) {  // this rung cannot answer: the next may
+        } catch (const unadvised_refusal& e) {  // this rung cannot answer, and its line names no change
             last_reason = one_line(e.what());
-            refused_last = true;
+        } catch (const resolution_error& e) {  // this rung cannot answer: the next may; its line says what to change
+            last_reason = one_line(e.what());
+            advised_last = true;
         }
     }
     const std::string top = std::to_string(rungs_.back());
@@ -209,7 +211,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + top + ": " + last_reason +
-               skipped + ")" + (refused_last ? "" : "; give n to see that point, or try another method or zone search");
+               skipped + ")" + (advised_last ? "" : "; give n to see that point, or try another method or zone search");
     }
     throw resolution_error(msg);
 }

@@ -216,7 +216,7 @@ void check_load_resolvable(double magnitude, double f) {
     msg << "|Q|/f = " << magnitude / f << " is below " << min_load_ratio
         << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
            "cannot be resolved (Q = 0 is solved exactly)";
-    throw resolution_error(msg.str());
+    throw unadvised_refusal(msg.str());
 }
 
 tangential_solution at_load(double Q, double f, const std::function<tangential_solution()>& full_stick,
