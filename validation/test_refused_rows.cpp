@@ -81,7 +81,7 @@ TEST(DissimilarSmallBeta, RefusedAtOnceWithWhatToDo) {
             // Refused before any solve: the contact's line is the pre-check's own (a refusal after a
             // search would carry the search's text), not a wall-clock limit a busy machine can hit.
             const std::string before_any_solve =
-                refusal_of([&] { check_edge_zones_resolvable(1e-6, f, ratio * f, 128); });
+                refusal_of([&] { check_edge_zones_resolvable(1e-6, f, ratio * f, 128, default_tolerance); });
             EXPECT_FALSE(before_any_solve.empty());
             const std::string what = refusal_of([&] { c.point(ratio * f); });
             if (what.empty()) {
@@ -104,6 +104,35 @@ TEST(DissimilarSmallBeta, RefusedAtOnceWithWhatToDo) {
         EXPECT_NEAR(c.point(f).xi, 2.0 * f / M_PI, 1e-12);
         EXPECT_NEAR(c.point(-f).xi, -2.0 / M_PI * std::sqrt(1e-12 + f * f), 1e-12);
     }
+}
+
+// "set beta_d = 0" is advised where equal materials move xi by less than the user's relative tolerance: by at most
+// (2/pi) |beta_D| (the largest Hertz pressure times |beta_D|, docs/formulation.md 8(f) at both limits) against a creep
+// of at least |Q|/pi, i.e. where 2 |beta_D| <= tolerance |Q| (before: |beta_D| <= 1e-4 |Q| whatever the tolerance).
+// Both sides of the rule are measured on aluminium on steel at f = 0.05 (three zones, braked and driven): the creep's
+// change from beta_D to 0 against (2/pi) |beta_D|, and the creep at beta_D = 0 against |Q|/pi.
+TEST(DissimilarSmallBeta, EqualMaterialsAdvisedWithinTheTolerance) {
+    const double f = 0.05;
+    for (const double Q : {-0.0375, -0.02, 0.02, 0.045}) {
+        SCOPED_TRACE(Q);
+        contact pair(roughness{}, f, solver_options{64, method::product}, dissimilar{beta_al_st});
+        contact equal(roughness{}, f, solver_options{64, method::product});
+        const double xi = pair.point(Q).xi, xi0 = equal.point(Q).xi;
+        EXPECT_LE(std::fabs(xi - xi0), 2.0 / M_PI * beta_al_st);
+        EXPECT_GE(std::fabs(xi0), std::fabs(Q) / M_PI);
+    }
+    // beta_D = 1e-6 at Q/f = 0.5: xi moves by up to 8e-5 of itself, beyond a tolerance of 1e-5, within 1e-4.
+    const auto advice = [&](double beta, double tol) {
+        contact c(roughness{}, f, solver_options{128, method::product, zone_search::automatic, tol},
+                  dissimilar{beta, coupling_level::johnson});
+        const std::string what = refusal_of([&] { c.point(0.5 * f); });
+        EXPECT_NE(what.find("|beta_d| >= "), std::string::npos) << what;
+        return what.find("set beta_d = 0") != std::string::npos;
+    };
+    EXPECT_TRUE(advice(1e-6, 1e-4));
+    EXPECT_FALSE(advice(1e-6, 1e-5));
+    EXPECT_TRUE(advice(1e-5, 1e-3));   // 2e-5 <= 2.5e-5 (the old rule refused it: 1e-5 > 1e-4 |Q|)
+    EXPECT_FALSE(advice(1e-5, 1e-4));
 }
 
 // A real pair at large friction (issue 24, 7): aluminium on steel at f = 1, whose leading slip zone
@@ -169,7 +198,7 @@ TEST(DissimilarSmallBeta, LeadingZoneEstimateAgainstTheSolvedStart) {
     for (const auto& [ratio, load] : {std::pair{0.6, -0.5}, std::pair{0.479, 0.0}}) {
         SCOPED_TRACE("beta_D/f = " + std::to_string(ratio) + ", Q/f = " + std::to_string(load));
         const double beta = ratio * f, estimate = leading_zone_estimate(beta, f, load * f);
-        EXPECT_NO_THROW(check_edge_zones_resolvable(beta, f, load * f, 128));
+        EXPECT_NO_THROW(check_edge_zones_resolvable(beta, f, load * f, 128, default_tolerance));
         contact c(roughness{}, f, solver_options{128, method::product}, dissimilar{beta, coupling_level::johnson});
         const tangential_solution s = c.point(load * f);
         EXPECT_TRUE(s.checks.hold());
@@ -178,13 +207,13 @@ TEST(DissimilarSmallBeta, LeadingZoneEstimateAgainstTheSolvedStart) {
     }
     // The refusal's threshold is what it says: at the |beta_d| it names, the load is not refused.
     try {
-        check_edge_zones_resolvable(0.01 * f, f, 0.0, 128);
+        check_edge_zones_resolvable(0.01 * f, f, 0.0, 128, default_tolerance);
         ADD_FAILURE() << "beta_D/f = 0.01 not refused";
     } catch (const resolution_error& e) {
         const std::string what = e.what();
         const double needed = std::stod(what.substr(what.find(">= ") + 3));
-        EXPECT_NO_THROW(check_edge_zones_resolvable(1.01 * needed, f, 0.0, 128));  // needed to 3 digits
-        EXPECT_THROW(check_edge_zones_resolvable(0.99 * needed, f, 0.0, 128), resolution_error);
+        EXPECT_NO_THROW(check_edge_zones_resolvable(1.01 * needed, f, 0.0, 128, default_tolerance));  // needed to 3 digits
+        EXPECT_THROW(check_edge_zones_resolvable(0.99 * needed, f, 0.0, 128, default_tolerance), resolution_error);
     }
 }
 

@@ -139,7 +139,9 @@ protected:
     }
     // check_edge_zones_resolvable at n, advised.
     void check_edge_zones(double Q, int n) const {
-        advised(Q, [&] { check_edge_zones_resolvable(materials_.beta_d, f_, Q, n); });
+        advised(Q, [&] {
+            check_edge_zones_resolvable(materials_.beta_d, f_, Q, n, options_.tolerance.value_or(default_tolerance));
+        });
     }
     // The crossing t_c of the edge layers whose resolution beyond_every_n bounds (free rolling of smooth rollers),
     // where the point needs them resolved: at Johnson's level where the tolerance does not neglect them.
@@ -357,7 +359,8 @@ private:
         // (docs/formulation.md 8(n)): any refusal names the tolerance at which they would be neglected.
         return advised(Q, [&] {
             // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
-            check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes());
+            check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes(),
+                                        options_.tolerance.value_or(default_tolerance));
             return johnson_point(Q, levels_.at<johnson_model>(below()), previous);
         });
     }

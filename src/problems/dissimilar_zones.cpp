@@ -95,7 +95,7 @@ double thinnest_edge_zone(int n) {
     return 0.01 * 0.5 * M_PI * M_PI / (static_cast<double>(n) * n);
 }
 
-void check_edge_zones_resolvable(double beta_d, double f, double Q, int n) {
+void check_edge_zones_resolvable(double beta_d, double f, double Q, int n, double tolerance) {
     if (beta_d == 0.0 || !(std::fabs(Q) < f)) return;  // gross sliding: no zones to find (8(g))
     const double thickness = leading_zone_estimate(beta_d, f, Q), thinnest = thinnest_edge_zone(n);
     if (thickness >= thinnest) return;
@@ -119,9 +119,11 @@ void check_edge_zones_resolvable(double beta_d, double f, double Q, int n) {
     else
         msg << "; no n up to " << max_nodes << " resolves it, so the load is beyond the method's reach for these "
             << "rollers";
-    // Equal materials move xi by O(beta_D) ((4/pi^2) |beta_D| at no slip, 8(f)) against a creep of the order
-    // of |Q|: a fair model only where that is within the default tolerance (never at free rolling).
-    if (std::fabs(beta_d) <= default_tolerance * std::fabs(Q))
+    // Equal materials move xi by at most max(p) |beta_D| = (2/pi) |beta_D| on Hertz's pressure at both limits of
+    // 8(f) (complete slip: beta_D p(r_c); no slip: (4/pi^2) |beta_D|), against a creep of at least |Q|/pi (no slip
+    // Q/pi; Carter's (2f/pi)(1 - sqrt(1 - |Q|/f)) above it): a relative change of at most 2 |beta_D|/|Q|, within
+    // the user's relative tolerance where 2 |beta_D| <= tolerance |Q| (never at free rolling).
+    if (2.0 * std::fabs(beta_d) <= tolerance * std::fabs(Q))
         msg << "; set beta_d = 0 (equal materials) for the paper's problem, whose results differ by O(beta_d)";
     throw resolution_error(msg.str());
 }

@@ -77,11 +77,11 @@ complete_slip complete_slip_creep(const normal_solution& normal, double beta_d, 
 // with kappa from Carter's traction at the load (docs/formulation.md 8(j) item 11). Below
 // thinnest_edge_zone(n), a hundredth of the collocation's end spacing (pi^2/2)/n^2, no point is resolved
 // at n (measured there), and contact::point refuses the load at once (check_edge_zones_resolvable: a
-// resolution_error saying which |beta_d| is needed, or beta_d = 0) instead of after minutes of search.
-// Gross sliding |Q| = f is never refused.
+// resolution_error saying which |beta_d| is needed, and beta_d = 0 where that moves xi by less than the user's
+// relative `tolerance`) instead of after minutes of search. Gross sliding |Q| = f is never refused.
 double leading_zone_estimate(double beta_d, double f, double Q);
 double thinnest_edge_zone(int n);
-void check_edge_zones_resolvable(double beta_d, double f, double Q, int n);
+void check_edge_zones_resolvable(double beta_d, double f, double Q, int n, double tolerance);
 
 // int_lo^hi p(r) dr for the pressure (4.1), in closed form from its U-series (r = cos theta:
 // U_j(r) sqrt(1 - r^2) dr = -sin((j + 1) theta) sin(theta) d theta).
