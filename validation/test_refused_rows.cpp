@@ -290,6 +290,25 @@ TEST(RefusedRows, OneParameterSearchFaultIsNotSlipAgainstQ) {
     EXPECT_GT(calls, 1);
 }
 
+// The one-parameter method's refusal reads back the user's beta_d and load exactly (before: three digits, 0.123 and
+// 0.123) and shows a margin over no zone of its kind in words (free rolling has no slip zone: was "slip inf").
+// f = 1/16, so that Q/f of Q = 0.12345 f is 0.12345 to the bit.
+TEST(RefusedRows, OneParameterRefusalReadsBackTheInput) {
+    roughness layered;
+    layered.cylinder1.normal = layered.cylinder1.tangential = {0.1, 1.0};
+    const double f = 0.0625;
+    contact c(layered, f, solver_options{128, method::one_parameter}, dissimilar{0.1234});
+    const std::string loaded = refusal_of([&] { c.point(0.12345 * f); });
+    EXPECT_NE(loaded.find("with beta_d = 0.1234 at Q/f = 0.12345: "), std::string::npos) << loaded;
+    const std::string free = refusal_of([&] { c.point(0.0); });
+    EXPECT_NE(free.find("no slip zone"), std::string::npos) << free;
+    for (const std::string& what : {loaded, free}) {
+        EXPECT_NE(what.find("use method 'product'"), std::string::npos) << what;
+        EXPECT_EQ(what.find("inf"), std::string::npos) << what;
+        EXPECT_EQ(what.find("nan"), std::string::npos) << what;
+    }
+}
+
 // A layer thickness that puts k or t of (2.11)-(2.14) beyond double precision is bad input naming its
 // file and keys (before: "H = 1e+300 m with mu0 = ... outside the range of double precision" alone,
 // from the library's conditions, with neither file nor key).

@@ -13,6 +13,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/base/text.hpp"
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -40,13 +41,13 @@ void add_compliance(double& eps, const roughness_term& term, const char* what) {
     if (!term.present()) return;
     if (!(std::isfinite(term.T) && std::isfinite(term.A) && term.T > 0.0 && term.A >= 0.0)) {
         std::ostringstream msg;
-        msg << what << ": T = " << term.T << ", A = " << term.A << " must be finite, T > 0, A >= 0";
+        msg << what << ": T = " << shortest(term.T) << ", A = " << shortest(term.A) << " must be finite, T > 0, A >= 0";
         throw input_error(msg.str());
     }
     if (term.A == 0.0) {
         std::ostringstream msg;
-        msg << what << ": T = " << term.T << " with A = 0 has no one-parameter limit (2T/A^2 is infinite: "
-            << "the kernel T sgn z does not decay); use a two-parameter method";
+        msg << what << ": T = " << shortest(term.T) << " with A = 0 has no one-parameter limit (2T/A^2 is infinite: "
+            << "the kernel T sgn z does not decay); use method 'product' or 'extrapolated'";
         throw input_error(msg.str());
     }
     eps += 2.0 * term.T / (term.A * term.A);  // docs/formulation.md 2(c), "The one-parameter limit"
@@ -212,7 +213,7 @@ tangential_solution one_parameter_solver::gross_sliding(double forcing) const {
     if (!std::isfinite(s.xi))
         throw input_error(
             "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
-            "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1)");
+            "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1); a load |Q| < f has a finite one");
     return s;
 }
 

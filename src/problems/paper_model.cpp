@@ -10,9 +10,11 @@
 #include <string>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/point_model.hpp"
+#include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -252,11 +254,10 @@ private:
         constexpr double entry_floor = 1e-6;
         const bool discretisation =
             s.layout.general() && s.checks.slip_margin >= 0.0 && s.checks.stick_margin > -entry_floor;
-        std::ostringstream msg;
-        msg.precision(3);
-        msg << "method 'one-parameter' with beta_d = " << limit_.beta_d() << " at Q/f = " << s.Q / limit_.friction()
-            << ": the stick zone fails (3.3)-(3.4) (margins: stick " << s.checks.stick_margin << ", slip "
-            << s.checks.slip_margin << "); "
+        std::ostringstream msg;  // the user's beta_d and load exactly (shortest), the computed margins to 3 digits
+        msg << "method 'one-parameter' with beta_d = " << shortest(limit_.beta_d())
+            << " at Q/f = " << shortest(s.Q / limit_.friction()) << ": the stick zone fails (3.3)-(3.4) (margins: "
+            << margins_text(s.checks) << "); "
             << (discretisation ? "the entry's discretisation (docs/formulation.md 7(h)): " +
                                      (options_.nodes() < max_nodes
                                           ? "set n = " + std::to_string(std::min(2 * options_.nodes(), max_nodes))

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/full_coupling.hpp"
@@ -113,7 +114,7 @@ constexpr double coupled_contracting_share = 3.0;
     const bool paper = p.structure == estimate_structure::paper;
     msg << " does not converge visibly over " << (paper ? "n = " : "the levels n = ") << coarsest_n << ", "
         << 2 * coarsest_n << ", " << 4 * coarsest_n << " (differences " << used.middle - used.coarsest << ", "
-        << used.finest - used.middle << ") at " << p.at << " = " << p.at_value;
+        << used.finest - used.middle << ") at " << p.at << " = " << shortest(p.at_value);  // the user's input, exactly
     // A larger n helps only where its levels fit below max_nodes (the finest is n, or 2n above).
     if (paper)
         msg << (p.n < max_nodes ? "; increase n, or the scene is beyond the method's reach"

@@ -3,8 +3,11 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include <gsl/gsl_math.h>
+
+#include "roughroll/base/text.hpp"
 
 namespace roughroll {
 
@@ -77,6 +80,18 @@ traction_checks check_zones(const std::vector<zone>& zones, zone_check_terms ter
         return out;
     };
     return check_zones(zones, terms);
+}
+
+namespace {
+std::string margin_text(const char* kind, double margin) {
+    if (margin == std::numeric_limits<double>::infinity()) return std::string("no ") + kind + " zone";
+    if (!std::isfinite(margin)) return std::string(kind) + " not finite";
+    return std::string(kind) + " " + significant(margin, 3);
+}
+}  // namespace
+
+std::string margins_text(const traction_checks& c) {
+    return margin_text("stick", c.stick_margin) + ", " + margin_text("slip", c.slip_margin);
 }
 
 }  // namespace roughroll

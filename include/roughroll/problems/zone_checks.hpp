@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "roughroll/problems/normal_problem.hpp"
@@ -39,5 +40,10 @@ traction_checks check_zones(const std::vector<zone>& zones, zone_check_terms ter
 
 // min p of (4.1) on the check grid of (-1, 1).
 double least_pressure(const normal_solution& normal);
+
+// The margins (3.3)-(3.4) as a refusal shows them, "stick -0.00255, slip 0.331" (computed values: three significant
+// digits). A margin over no zone of its kind (+infinity: the minimum over an empty set) reads "no slip zone", one
+// that is not a finite number "stick not finite": never "inf" or "nan".
+std::string margins_text(const traction_checks& c);
 
 }  // namespace roughroll
