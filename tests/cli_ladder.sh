@@ -51,14 +51,16 @@ grep -q 'no n up to 1000 meets the tolerance 1e-09 (relative): the best estimate
     fail "--tolerance 1e-9: $(cat "$dir/err")"
 [ -s "$dir/out" ] && fail "--tolerance 1e-9: wrote stdout"
 
-# The ladder's last line: a rung's refusal that names no change of its own (|Q|/f below the load equation's
-# precision) is followed by the ladder's advice; one that names it (a kernel too steep for 'extrapolated' at every
-# n: use method 'product') is not (issue 24: the advice was dropped after any refusal).
+# A load below the load equation's precision is beyond every n: refused at the first rung with its own advice,
+# no ladder advice after it (issue 24: "give n to see that point" was added, which no n answers). A rung's
+# refusal that names its change (a kernel too steep for 'extrapolated' at every n: use method 'product') keeps
+# it alone; validation/test_ladder_refusals.cpp has the ladder's advice after a refusal naming none.
 run point "$dir/near.toml" --Q 1e-12 >"$dir/out" 2>"$dir/err"
 status=$?
 [ "$status" -eq 2 ] || fail "--Q 1e-12: exit $status, expected 2"
-grep -q 'is below 1e-10, the relative precision of the load equation .*; give n to see that point, or try another method or zone search$' "$dir/err" ||
-    fail "--Q 1e-12: no advice: $(cat "$dir/err")"
+grep -q 'is below 1e-10, the relative precision of the load equation .* at any n; give |Q|/f >= 1e-10, or Q = 0 (solved exactly)$' "$dir/err" ||
+    fail "--Q 1e-12: not its own advice alone: $(cat "$dir/err")"
+grep -q 'no n up to' "$dir/err" && fail "--Q 1e-12: the ladder climbed: $(cat "$dir/err")"
 printf 'friction = 0.3\nQ = 0.15\n[cylinder1.normal]\nT = 1\nA = 20000\n' >"$dir/steeper.toml"
 run point "$dir/steeper.toml" >"$dir/out" 2>"$dir/err"
 status=$?

@@ -241,3 +241,49 @@ TEST(LadderRefusals, FullCouplingEstimateCarriesItsLastLevelChange) {
     contact johnson(roughness{}, 0.05, solver_options{64, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_FALSE(johnson.estimate(johnson.point(0.75 * 0.05))->changes.has_value());
 }
+
+// The ladder's last line after rungs that refused (issue 24, review): a refusal whose line names no change
+// (unadvised_refusal: no three zones at this n) is followed by the ladder's advice; one whose line names it
+// (resolution_error) is not; one beyond every n (beyond_method_error) stops the climb at its rung, its line
+// alone. Every rung of the paper's problem refuses at its first level's solve (the contacts' checkpoint).
+namespace {
+struct every_rung_refused {
+    std::string line;
+    int rungs_built = 0;
+};
+
+template <class refusal>
+every_rung_refused every_rung_refuses(const std::string& reason) {
+    every_rung_refused r;
+    level_ladder ladder(solver_options{}, roughness{}, [&](int n) {
+        ++r.rungs_built;
+        auto c = std::make_unique<contact>(roughness{}, 0.3, solver_options{n});
+        c->set_checkpoint([reason] { throw refusal(reason); });
+        return c;
+    });
+    try {
+        ladder.point(0.15);
+        ADD_FAILURE() << "answered";
+    } catch (const resolution_error& e) {
+        r.line = e.what();
+    }
+    return r;
+}
+
+bool ends_with(const std::string& s, const std::string& end) {
+    return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+}  // namespace
+
+TEST(LadderRefusals, AdviceOnlyAfterARefusalNamingNoChange) {
+    const std::string advice = "; give n to see that point, or try another method or zone search";
+    const every_rung_refused unadvised = every_rung_refuses<unadvised_refusal>("no zone here");
+    EXPECT_EQ(unadvised.rungs_built, 4);
+    EXPECT_TRUE(ends_with(unadvised.line, "(at n = 1000: no zone here)" + advice)) << unadvised.line;
+    const every_rung_refused advised = every_rung_refuses<resolution_error>("no zone here; use method 'product'");
+    EXPECT_EQ(advised.rungs_built, 4);
+    EXPECT_TRUE(ends_with(advised.line, "(at n = 1000: no zone here; use method 'product')")) << advised.line;
+    const every_rung_refused beyond = every_rung_refuses<beyond_method_error>("beyond every n; give Q = 0");
+    EXPECT_EQ(beyond.rungs_built, 1);
+    EXPECT_EQ(beyond.line, "beyond every n; give Q = 0");
+}

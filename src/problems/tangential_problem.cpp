@@ -215,8 +215,9 @@ void check_load_resolvable(double magnitude, double f) {
     std::ostringstream msg;
     msg << "|Q|/f = " << magnitude / f << " is below " << min_load_ratio
         << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
-           "cannot be resolved (Q = 0 is solved exactly)";
-    throw unadvised_refusal(msg.str());
+           "cannot be resolved at any n; give |Q|/f >= "
+        << min_load_ratio << ", or Q = 0 (solved exactly)";
+    throw beyond_method_error(msg.str());
 }
 
 tangential_solution at_load(double Q, double f, const std::function<tangential_solution()>& full_stick,

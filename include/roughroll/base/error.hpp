@@ -38,9 +38,9 @@ public:
 };
 
 // A refusal whose line says what cannot be resolved but not what the user can change, because that depends
-// on how the point was asked (no three zones of dissimilar rollers carry the load; |Q|/f below the load
-// equation's precision): the ladder of levels adds its advice (give n, another method or zone search), which
-// it leaves off a resolution_error whose own line names what to change.
+// on how the point was asked (no three zones of dissimilar rollers carry the load at this n): the ladder of
+// levels adds its advice (give n, another method or zone search), which it leaves off a resolution_error
+// whose own line names what to change.
 class unadvised_refusal : public resolution_error {
 public:
     using resolution_error::resolution_error;
