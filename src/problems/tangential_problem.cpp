@@ -22,9 +22,7 @@ namespace roughroll {
 
 namespace {
 constexpr double min_load_ratio = 1e-10;  // smallest |Q|/f > 0 solved (see solve)
-}  // namespace
 
-namespace {
 // The resolution check before any workspace is sized by the kernel's rate.
 const kernel& resolved(const kernel& k, const normal_solution& normal) {
     check_resolution(k, normal.rule, normal.how, "K1* (tangential kernel)");
@@ -77,16 +75,11 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
 double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
 tangential_solution tangential_solver::solve_system(double c0, bool near) {
-    return solve_zone(-1.0, c0, 0.0, nullptr, near);
+    return solve_on_zone(-1.0, c0, 0.0, nullptr, near);
 }
 
 tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
-                                                     const std::vector<double>* extra) {
-    return solve_zone(start, c0, forcing, extra, false);
-}
-
-tangential_solution tangential_solver::solve_zone(double start, double c0, double forcing,
-                                                  const std::vector<double>* extra, bool near) {
+                                                     const std::vector<double>* extra, bool near) {
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
     // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
     const double rho = 0.5 * (c0 - start);

@@ -152,8 +152,9 @@ public:
     // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`:
     // values added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1)
     // (the blended stick zone of 8(g)); s.Q is then f + rho int q still, for the caller to correct.
+    // `near`: as at_stick_end.
     tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
-                                      const std::vector<double>* extra = nullptr);
+                                      const std::vector<double>* extra = nullptr, bool near = false);
 
     double G(double r);                                            // (3.25)
     std::vector<double> G(const std::vector<double>& r);           // at points of [-1, 1], in any order
@@ -173,8 +174,6 @@ public:
 
 private:
     tangential_solution solve_system(double c0, bool near = false);  // |Q| problem at c0 in (-1, 1]
-    tangential_solution solve_zone(double start, double c0, double forcing, const std::vector<double>* extra,
-                                   bool near);  // solve_on_zone; near: as at_stick_end
     tangential_solution full_stick();
     tangential_solution gross_sliding();
     tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
