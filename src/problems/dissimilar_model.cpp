@@ -186,10 +186,9 @@ private:
         if (!last_three_ || !(last_three_->Q == Q)) last_three_ = zones_.solve(Q, guess, opposite);
         return *last_three_;
     }
-    // Five zones (docs/formulation.md 8(j)) at Q on this level as the point at Q (the load asked for: Newton's
-    // solved load differs by its residual, 1e-17 at Q = 0, and full coupling's alternation solves at Q), from
-    // `ends` (s1, c1, s2, c2: the coarser level's) when given and Newton converges from them, else without a
-    // guess; empty when none are found. Cached per Q.
+    // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the coarser level's)
+    // when given, as the point at the load asked (Newton's differs by its residual, 1e-17 at Q = 0; full
+    // coupling's alternation solves at Q); empty when none are found. Cached per Q.
     std::optional<tangential_solution> five(double Q, const std::vector<double>* ends) {
         checkpoint();
         if (!(last_five_ && last_five_load_ == Q)) {

@@ -34,10 +34,6 @@ constexpr double forcing_step = 0.25, smallest_forcing_step = 1.0 / 64.0;   // i
 constexpr int scan_loads[] = {2, 4, 1, 3, 5, 6, 7};
 }  // namespace
 
-double dissimilar_zones::S(const five_zone_solution& s, double r) const {
-    return s.sign * (-1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2));
-}
-
 five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2, double beta) {
     // Solved in the frame beta_D > 0 with the forcing beta (|beta_D| but on a continuation in
     // beta_D/f); for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v with the opposite
@@ -117,7 +113,8 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
 }
 
 double dissimilar_zones::traction(const five_zone_solution& s, double r) {
-    double p1 = f_ * pressure(r) * S(s, r);
+    // p1 = f p S + q1 + q2, S = -1 + 2 H1 - 2 H2 in the frame beta_D > 0 (8(j)).
+    double p1 = f_ * pressure(r) * (s.sign * (-1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2)));
     for (const tangential_solution* t : {&s.zone1, &s.zone2})
         if (r > t->start() && r < t->c0()) p1 += s.sign * stick_traction(*t, r);
     return p1;

@@ -113,6 +113,7 @@ tangential_solution searched_point(tangential_solution s, double Q, const char* 
     if (check) s.checks = check(s);
     return s;
 }
+
 // Newton in the zone ends at |Q| (ends_newton, zone_newton.hpp).
 zone_newton_from newton_at(const stick_zone_operator& op, double magnitude) {
     return [&op, magnitude](double start, double end) {

@@ -198,7 +198,6 @@ private:
     // edge (they are the answer: no five zones).
     std::optional<five_zone_solution> from_three_zones(double load, double forcing, bool& holds);
     double load_under_H(double start, double c0);           // int p H over [-1, 1] for the zone [start, c0]
-    double S(const five_zone_solution& s, double r) const;  // -1 + 2 H1 - 2 H2
     // The three zones at |Q| = magnitude with the forcing b as the one zone search's operator: both slip
     // zones in the direction of Q (`opposite` false), or the leading one against it (8(g)).
     stick_zone_operator zone_operator(bool opposite, double b, double magnitude);
