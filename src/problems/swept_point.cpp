@@ -25,8 +25,8 @@ contact::swept_point contact::at_stick_end(double c0) {
     if (materials_.beta_d != 0.0)
         throw input_error(
             "a point at a stick zone's end c0 is not defined for beta_d != 0: c0 ends the paper's stick zone from the "
-            "leading edge, which dissimilar rollers never have (docs/formulation.md 8(g)); swept_curve continues "
-            "their curve in the load instead");
+            "leading edge, which dissimilar rollers never have (docs/formulation.md 8(g)); a swept curve (--sweep) "
+            "continues their curve in the load instead");
     try {
         return swept_at(c0);
     } catch (const resolution_error&) {

@@ -152,7 +152,8 @@ public:
     // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`:
     // values added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1)
     // (the blended stick zone of 8(g)); s.Q is then f + rho int q still, for the caller to correct.
-    // `near`: as at_stick_end.
+    // `near` = true: a sweep's next system, solved by refinement on the last factorisation where that
+    // converges (dense_system::solve_near; at_stick_end's route), false: a fresh LU.
     tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
                                       const std::vector<double>* extra = nullptr, bool near = false);
 
