@@ -26,7 +26,6 @@ namespace roughroll {
 
 namespace {
 constexpr int start_scan = 32;           // trial starts of the stick zone
-constexpr int least_samples = 2001;      // samples of b p + f G for its least value (gross sliding)
 constexpr int shape_samples = 2001;      // samples of p for "even and decreasing" (complete slip)
 constexpr std::size_t traction_memo_size = 1 << 16;  // points of traction's memo before it starts again
 // The context of a fault in the blended zone's integrals (W and its Cauchy part), as the user reads it.
@@ -491,18 +490,9 @@ zone_check_terms dissimilar_zones::blended_checks() {
 
 tangential_solution dissimilar_zones::gross_sliding(double b) {
     // w = b p + f G (8(g)), least at either edge or inside.
-    const normal_solution& normal = solver_.normal();
-    tangential_solution s = roughroll::gross_sliding(
-        f_, 1.0,
-        [&](const std::vector<double>& r) {
-            std::vector<double> w = solver_.G(r);
-            for (std::size_t i = 0; i < r.size(); ++i) w[i] = b * normal.pressure(r[i]) + f_ * w[i];
-            return w;
-        },
-        [&](double x) { return b * normal.pressure(x) + f_ * solver_.G(x); }, least_samples, true,
+    return roughroll::gross_sliding(
+        solver_.normal(), f_, b, [this](const std::vector<double>& r) { return solver_.G(r); }, true,
         "dissimilar rollers at gross sliding");
-    s.forcing = b;
-    return s;
 }
 
 tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {

@@ -10,12 +10,21 @@ tangential_solution gross_sliding_at(double f, double point, double xi) {
     return zone_solution(f, point, point, xi, f);
 }
 
-tangential_solution gross_sliding(double f, double scale,
-                                  const std::function<std::vector<double>(const std::vector<double>&)>& sampled,
-                                  const std::function<double(double)>& value, int samples, bool trailing_edge,
-                                  const std::string& who) {
-    const least_value least = least_on_contact(sampled, value, samples, trailing_edge, who);
-    return gross_sliding_at(f, least.r, -scale * least.value);
+tangential_solution gross_sliding(const normal_solution& normal, double f, double forcing,
+                                  const std::function<std::vector<double>(const std::vector<double>&)>& G,
+                                  bool trailing_edge, const std::string& who) {
+    // w = G without forcing (7(d)), b p + f G with it (8(g), 8(s)).
+    const auto w = [&](const std::vector<double>& r) {
+        std::vector<double> out = G(r);
+        if (forcing != 0.0)
+            for (std::size_t i = 0; i < r.size(); ++i) out[i] = forcing * normal.pressure(r[i]) + f * out[i];
+        return out;
+    };
+    const least_value least = least_on_contact(
+        w, [&](double r) { return w(std::vector<double>{r}).front(); }, 2001, trailing_edge, who);
+    tangential_solution s = gross_sliding_at(f, least.r, -(forcing == 0.0 ? f : 1.0) * least.value);
+    s.forcing = forcing;
+    return s;
 }
 
 }  // namespace roughroll

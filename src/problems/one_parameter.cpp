@@ -200,21 +200,20 @@ tangential_solution one_parameter_solver::full_stick(double forcing) {
 
 tangential_solution one_parameter_solver::gross_sliding(double forcing) const {
     // 2(g); with Dundurs' forcing the stick point is where w = b p + f G is least (8(s), as 8(g)).
-    const auto sampled = [&](const std::vector<double>& r) {
-        std::vector<double> out(r.size());
-        for (std::size_t i = 0; i < r.size(); ++i) out[i] = sliding_velocity(forcing, r[i]);
-        return out;
-    };
-    tangential_solution s = forcing == 0.0 ? gross_sliding_at(f_, -1.0, -f_ * G(-1.0))
-                                           : roughroll::gross_sliding(f_, 1.0, sampled, [&](double r) {
-                                                 return sliding_velocity(forcing, r);
-                                             });
-    s.forcing = forcing;
+    tangential_solution s =
+        forcing == 0.0 ? gross_sliding_at(f_, -1.0, -f_ * G(-1.0))
+                       : roughroll::gross_sliding(normal_, f_, forcing, [this](const auto& r) { return G(r); });
     if (!std::isfinite(s.xi))
         throw input_error(
             "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
             "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1); a load |Q| < f has a finite one");
     return s;
+}
+
+std::vector<double> one_parameter_solver::G(const std::vector<double>& r) const {
+    std::vector<double> g(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) g[i] = G(r[i]);
+    return g;
 }
 
 tangential_solution one_parameter_solver::at_stick_end(double c0, bool checked) {

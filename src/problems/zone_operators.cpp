@@ -143,8 +143,7 @@ stick_zone_operator tangential_solver::zone_operator() {
     };
     // w = G (7(d)).
     op.gross_sliding = [this] {
-        return roughroll::gross_sliding(
-            f_, f_, [this](const std::vector<double>& r) { return G(r); }, [this](double r) { return G(r); });
+        return roughroll::gross_sliding(normal_, f_, 0.0, [this](const auto& r) { return G(r); });
     };
     op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this](double magnitude, double point, const zone_newton_from&) {
@@ -186,17 +185,10 @@ stick_zone_operator one_parameter_solver::zone_operator(double forcing) {
     op.empty_load = [f = f_](double) { return f; };
     // E needs no scale: Newton's step does not depend on the residuals' units.
     op.entry = op.newton_entry = [this](const tangential_solution& t) { return entry_velocity(t); };
+    // w = G, its least point in place of the paper's edge form; b p + f G (8(s)).
     op.gross_sliding = [this, forcing] {
-        if (forcing == 0.0)
-            return roughroll::gross_sliding(
-                f_, f_,
-                [this](const std::vector<double>& r) {
-                    std::vector<double> out(r.size());
-                    for (std::size_t i = 0; i < r.size(); ++i) out[i] = G(r[i]);
-                    return out;
-                },
-                [this](double r) { return G(r); });
-        return gross_sliding(forcing);  // w = b p + f G (8(s))
+        return forcing == 0.0 ? roughroll::gross_sliding(normal_, f_, 0.0, [this](const auto& r) { return G(r); })
+                              : gross_sliding(forcing);
     };
     op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this, forcing](double magnitude, double point,

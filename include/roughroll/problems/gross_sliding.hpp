@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Gross sliding, |Q| = f (docs/formulation.md 2(g), 7(d), 8(g)): p1 = f p on the whole contact of the
+// Gross sliding, |Q| = f (docs/formulation.md 2(g), 7(d), 8(g), 8(s)): p1 = f p on the whole contact of the
 // |Q| problem, q = 0, and the slip velocity of (3.6) with (3.15),
 //   v(r) = xi + scale w(r) >= 0        (3.4),   w = G of (3.25) (scale f), or b p + f G (scale 1)
 //                                                with Dundurs' forcing b of 8(e),
@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
@@ -23,12 +24,12 @@ namespace roughroll {
 // (Q = f, no stick traction, rcond 1: no system is solved).
 tangential_solution gross_sliding_at(double f, double point, double xi);
 
-// The least point r* of w on [-1, 1] (least_on_contact: `sampled` at points in descending order,
-// `value` at one point; `samples`, `trailing_edge` and `who` as there) and the solution there,
-// xi = -scale w(r*).
-tangential_solution gross_sliding(double f, double scale,
-                                  const std::function<std::vector<double>(const std::vector<double>&)>& sampled,
-                                  const std::function<double(double)>& value, int samples = 2001,
+// The least point r* of w on [-1, 1] and the solution there with its forcing b: w = G (scale f) for b = 0,
+// else w = b p + f G (scale 1), p the pressure of `normal`; `G` at points in descending order
+// (least_on_contact: 2001 samples, golden section, the edge r = -1 compared, and r = 1 with `trailing_edge`;
+// `who` opens its message).
+tangential_solution gross_sliding(const normal_solution& normal, double f, double forcing,
+                                  const std::function<std::vector<double>(const std::vector<double>&)>& G,
                                   bool trailing_edge = false, const std::string& who = "zone solver");
 
 }  // namespace roughroll

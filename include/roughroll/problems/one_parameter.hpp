@@ -83,6 +83,7 @@ public:
 
     double pressure_slope(double r) const;                               // p'(r) on [-1, 1]
     double G(double r) const;                                            // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
+    std::vector<double> G(const std::vector<double>& r) const;           // at points of [-1, 1], in any order
     double traction(const tangential_solution& s, double r) const;       // p1(r), (3.15)
     double slip_velocity(const tangential_solution& s, double r) const;  // v(r), 0 on the stick zone
     traction_checks check(const tangential_solution& s) const;           // p >= 0, (3.3), (3.4)
