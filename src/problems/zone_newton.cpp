@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/zone_newton.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "roughroll/numerics/damped_newton.hpp"
@@ -9,6 +11,16 @@
 namespace roughroll {
 
 namespace {
+// The difference step of the Jacobian in (m, rho) is 1e-7 rho, but at least 16 times the ends' rounding eps/rcond
+// (ends_newton's `rounding`, where given) and 2^16 eps: the residuals carry that rounding, and a step near it measures
+// noise. Only stick zones shorter than about 1e-3 meet the floor at n <= 1000: the five zones near complete slip, whose
+// stick zones are O(f/beta_D) long (1.8e-5 at f = 1e-6 for aluminium on steel, docs/formulation.md 8(f)); there the
+// step 1e-7 rho, 9e-13 in r, lay below the rounding 4e-12 (n = 65) to 2.3e-11 (n = 129), and full coupling's
+// alternation, whose pressure is a series, wandered without converging at every n (8(p), "Complete slip at full
+// coupling").
+constexpr double rounding_steps = 16.0;
+constexpr double smallest_difference_step = 65536.0 * std::numeric_limits<double>::epsilon();
+
 // The zones of x = (m_1, l_1, ..., m_k, l_k).
 std::vector<stick_span> spans_of(const std::vector<double>& x, bool log_length) {
     std::vector<stick_span> z(x.size() / 2);
@@ -36,8 +48,9 @@ std::optional<newton_root> zone_newton(
     newton_problem problem;
     problem.residual = [&](const std::vector<double>& x) { return residual(spans_of(x, log_length)); };
     problem.inside = [log_length](const std::vector<double>& x) { return inside(x, log_length); };
-    problem.difference_step = [log_length](const std::vector<double>& x, std::size_t j) {
-        if (!log_length) return -1e-7 * x[j | 1];
+    problem.difference_step = [log_length, &rounding](const std::vector<double>& x, std::size_t j) {
+        if (!log_length)
+            return -std::max({1e-7 * x[j | 1], smallest_difference_step, rounding ? rounding_steps * rounding() : 0.0});
         if (j % 2 == 1) return -1e-6;
         const double h = 1e-6 * std::exp(x[j + 1]);
         std::vector<double> y = x;
