@@ -54,17 +54,6 @@ run_result run_point(double f, const std::string& options = "", bool json = true
     return r;
 }
 
-// The complete-slip limit of free rolling, 8(f): 2 phi + sin 2 phi = pi/2 by bisection (not the
-// library's complete_slip_creep), xi_0 = -(2/pi) cos(phi) beta_D.
-double complete_slip_limit() {
-    double lo = 0.0, hi = 1.0;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (2.0 * mid + std::sin(2.0 * mid) < M_PI_2 ? lo : hi) = mid;
-    }
-    return -2.0 / M_PI * std::cos(lo) * beta_al_st;
-}
-
 double no_slip_limit() { return -4.0 * beta_al_st / (M_PI * M_PI); }
 
 // The crossing t_c of 8(n), written out: 1 + r = 2/(1 + exp(pi f/beta_D)).

@@ -63,16 +63,6 @@ answered point_of(const std::string& scene, double f, const std::string& options
 // 8(p): tanh(pi epsilon) = -beta_D.
 double epsilon_of(double beta) { return std::log((1.0 - beta) / (1.0 + beta)) / (2.0 * M_PI); }
 
-// The complete-slip limit of free rolling, 8(f): 2 phi + sin 2 phi = pi/2 by bisection, xi_0 = -(2/pi) cos(phi) beta_D.
-double complete_slip_limit() {
-    double lo = 0.0, hi = 1.0;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (2.0 * mid + std::sin(2.0 * mid) < M_PI_2 ? lo : hi) = mid;
-    }
-    return -2.0 / M_PI * std::cos(lo) * beta_al_st;
-}
-
 // The fundamental function w = sqrt(1 - r^2) exp(i epsilon Lambda), Lambda = log((1 + r)/(1 - r)) (8(p)): its real
 // (part 0) or imaginary (part 1) part.
 struct w_part {
