@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <gsl/gsl_errno.h>
@@ -153,4 +154,39 @@ TEST(BlendedCauchy, WithTheKinksAgainstAdaptiveQuadratureOfTheDefinition) {
             }
     std::printf("worst difference: %.2g (delta <= 1e-9), %.2g (delta = 1e-5)\n", worst_converged, worst_early);
     EXPECT_GT(compared, 150);
+}
+
+// The batched forms (dissimilar_zones::W at a zone's collocation points) give each point's scalar value bit for bit:
+// blocks of 8 with a partial last one, points inside and outside the kink zone (blend 0 and not), at and beyond the
+// edges (W_1 empty there: both empty), and series of n = 129 terms.
+TEST(BlendedCauchy, BatchedEqualsPointByPoint) {
+    std::vector<double> series, psi;
+    for (int j = 0; j < 129; ++j) series.push_back((j == 0 ? M_2_PI : 0.0) + 1e-3 * std::sin(0.7 * j + 0.3) / (1.0 + j));
+    for (int j = 0; j < 40; ++j) psi.push_back(0.02 * std::cos(0.9 * j) / (1.0 + j * j));
+    const double s = -0.5633, c = 0.4942;
+    const gauss_chebyshev rule(129);
+    pressure_kinks k;
+    k.add_zone(rule, 0.1438337, -1.0, s, c, psi);
+    k.add_zone(rule, 0.1438337, 1.0, 0.6, 0.9, psi);
+    const auto series_part = blended_cauchy::make(series, s, c);
+    const auto kinks_part = k.blend(s, c);
+    ASSERT_TRUE(series_part && kinks_part);
+    std::vector<double> r, blend;
+    for (const double x : rule.collocation) r.push_back(0.5 * (c - s) * (x + 1.0) + s);
+    for (int i = 0; i < 37; ++i) r.push_back(-1.0 + 2.0 * i / 36.0);
+    r.insert(r.end(), {1.0, -1.0, 1.5, s, c, 0.6, 0.75});
+    for (const double x : r) blend.push_back(theta_blend(x, s, c));
+    std::vector<std::optional<double>> a(r.size()), b(r.size());
+    (*series_part)(r.data(), a.data(), r.size());
+    (*kinks_part)(r.data(), blend.data(), b.data(), r.size());
+    int compared = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        const auto a1 = (*series_part)(r[i]), b1 = (*kinks_part)(r[i], blend[i]);
+        ASSERT_EQ(a[i].has_value(), a1.has_value()) << "r = " << r[i];
+        ASSERT_EQ(b[i].has_value(), b1.has_value()) << "r = " << r[i];
+        if (a1) EXPECT_EQ(*a[i], *a1) << "r = " << r[i];
+        if (b1) EXPECT_EQ(*b[i], *b1) << "r = " << r[i];
+        compared += a1.has_value() && b1.has_value();
+    }
+    EXPECT_GT(compared, 170);
 }

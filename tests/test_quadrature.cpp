@@ -59,13 +59,14 @@ TEST(USeries, InterpolatesAPolynomialExactly) {
 
 // The batched Cauchy transform (the slip-velocity checks, tangential_solver::check) gives each
 // point's scalar value bit for bit: points outside (-1, 1) on both sides, at +-1, a block with a
-// point inside (the scalar route), a partial last block; and the closed form for phi = 1.
+// point inside (the scalar route), blocks inside, a partial last block; and the closed form for phi = 1.
 TEST(USeries, BatchedCauchyTransformEqualsTheScalarOne) {
     std::vector<double> b;
     for (int j = 0; j < 129; ++j) b.push_back(std::sin(0.7 * j + 0.3) / (1.0 + j));
     std::vector<double> x;
     for (int i = 0; i < 200; ++i) x.push_back(1.0 + 3.0 * std::pow(std::sin(M_PI * (i + 0.5) / 400), 2));  // (1, 4]
     x.insert(x.end(), {-1.0, 1.0, -1.5, -40.0, 1.0 + 1e-15, 0.3, 2.0, -0.99, 7.0, 1.25, -2.0});
+    for (int i = 0; i < 27; ++i) x.push_back(std::cos(M_PI * (i + 0.5) / 27));  // blocks inside (-1, 1)
     std::vector<double> out(x.size());
     cauchy_u_series(b, x.data(), out.data(), x.size());
     for (std::size_t i = 0; i < x.size(); ++i) EXPECT_EQ(out[i], cauchy_u_series(b, x[i])) << "x = " << x[i];

@@ -97,7 +97,36 @@ std::optional<double> blended_cauchy::operator()(double r) const {
         smooth += (j == 0 ? 1.0 : 2.0) * d * sigma_[j];
         d2 = d1, d1 = d;
     }
-    const double p = std::sqrt((1.0 - r) * (1.0 + r)) * u_series(b_, r);
+    return finish(r, smooth, u_series(b_, r));
+}
+
+void blended_cauchy::operator()(const double* r, std::optional<double>* out, std::size_t count) const {
+    // The two Clenshaw recurrences of operator() are chains of dependent operations, n terms each: blocks of
+    // points advance together, each point's operations in the order of the scalar version (bit for bit).
+    constexpr std::size_t block = 8;
+    std::vector<double> series(count);
+    u_series(b_, r, series.data(), count);
+    for (std::size_t first = 0; first < count; first += block) {
+        const std::size_t width = std::min(block, count - first);
+        double two_r[block] = {}, smooth[block] = {}, d1[block] = {}, d2[block] = {};
+        for (std::size_t i = 0; i < width; ++i) two_r[i] = 2.0 * r[first + i];
+        for (std::size_t j = sigma_.size(); j-- > 0;) {
+            const double fj = f_[j + 1], weight = (j == 0 ? 1.0 : 2.0), sj = sigma_[j];
+            for (std::size_t i = 0; i < block; ++i) {
+                const double d = fj + two_r[i] * d1[i] - d2[i];
+                smooth[i] += weight * d * sj;
+                d2[i] = d1[i], d1[i] = d;
+            }
+        }
+        for (std::size_t i = 0; i < width; ++i) {
+            const double x = r[first + i];
+            out[first + i] = x >= -1.0 && x <= 1.0 ? finish(x, smooth[i], series[first + i]) : std::nullopt;
+        }
+    }
+}
+
+std::optional<double> blended_cauchy::finish(double r, double smooth, double series) const {
+    const double p = std::sqrt((1.0 - r) * (1.0 + r)) * series;
     if (p == 0.0) return M_1_PI * smooth;
     // ell(r) = int Theta' log|e - r| dt = log rho + (2/pi) int sqrt(1 - t^2) log|t - tau| dt, tau = (r - s)/rho - 1.
     const double rho = 0.5 * (c_ - s_), tau = std::fabs((r - s_) / rho - 1.0);

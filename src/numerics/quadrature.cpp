@@ -178,13 +178,35 @@ double cauchy_u_series(const std::vector<double>& b, double x) {
 }
 
 void cauchy_u_series(const std::vector<double>& b, const double* x, double* out, std::size_t count) {
-    // As u_series above: blocks of points outside (-1, 1) advance together, each in the order
-    // of the scalar version; a block with a point inside takes the scalar version.
+    // As u_series above: blocks of points outside (-1, 1), or inside it, advance together, each in the
+    // order of the scalar version; a block with points on both sides takes the scalar version.
     constexpr std::size_t block = 8;
     for (std::size_t first = 0; first < count; first += block) {
         const std::size_t width = std::min(block, count - first);
-        bool outside = true;
-        for (std::size_t i = 0; i < width; ++i) outside = outside && !(std::fabs(x[first + i]) < 1.0);
+        bool outside = true, inside = true;
+        for (std::size_t i = 0; i < width; ++i) {
+            const bool in = std::fabs(x[first + i]) < 1.0;
+            outside = outside && !in;
+            inside = inside && in;
+        }
+        if (inside) {  // the T recurrences side by side (the points of a zone inside it)
+            double two_x[block] = {}, t_prev[block] = {}, t[block] = {}, sum[block] = {};
+            for (std::size_t i = 0; i < width; ++i) {
+                two_x[i] = 2.0 * x[first + i];
+                t_prev[i] = 1.0;
+                t[i] = x[first + i];
+            }
+            for (double bj : b) {
+                for (std::size_t i = 0; i < block; ++i) {
+                    sum[i] += bj * t[i];
+                    const double t_next = two_x[i] * t[i] - t_prev[i];
+                    t_prev[i] = t[i];
+                    t[i] = t_next;
+                }
+            }
+            for (std::size_t i = 0; i < width; ++i) out[first + i] = -sum[i];
+            continue;
+        }
         if (!outside) {
             for (std::size_t i = 0; i < width; ++i) out[first + i] = cauchy_u_series(b, x[first + i]);
             continue;

@@ -228,33 +228,46 @@ const kinks_blend* dissimilar_zones::kinks_blend_of(double start, double c0) {
     return kinks_blends_(start, c0, [&] { return pressure_kinks_->blend(start, c0); });
 }
 
-double dissimilar_zones::W(double r, double start, double c0) {
+double dissimilar_zones::W(double r, double start, double c0) { return W(std::vector<double>{r}, start, c0)[0]; }
+
+std::vector<double> dissimilar_zones::W(const std::vector<double>& r, double start, double c0) {
     // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta, g = p H
     // (zero on [-1, s)). The Cauchy part is linear in p = sqrt(1 - r^2) phi + p_q^0: that of the U-series as a mean
     // of steps in closed form (blended_cauchy, docs/formulation.md 8(g) "W of the blend as a mean of steps"), and
     // with the kinks carried (full coupling, 8(l) step 0) that of p_q^0 H by Tricomi's identity (kinks_blend,
     // 8(o) "W with the kinks"). Where either declines (a zone at an edge), the whole p by adaptive quadrature.
-    const blended_cauchy* blend = blend_of(start, c0);
-    std::optional<double> cauchy = blend ? (*blend)(r) : std::nullopt;
-    if (cauchy && pressure_kinks_) {
+    // The closed forms' n-term sums are taken for all points of r side by side (bit for bit as point by point).
+    const std::size_t count = r.size();
+    std::vector<std::optional<double>> cauchy(count);
+    if (const blended_cauchy* blend = blend_of(start, c0)) (*blend)(r.data(), cauchy.data(), count);
+    if (pressure_kinks_ && std::any_of(cauchy.begin(), cauchy.end(), [](const auto& w) { return w.has_value(); })) {
         const kinks_blend* kinks = kinks_blend_of(start, c0);
-        const std::optional<double> part = kinks ? (*kinks)(r, H(r, start, c0)) : std::nullopt;
-        cauchy = part ? std::optional<double>(*cauchy + *part) : std::nullopt;
+        std::vector<std::optional<double>> part(count);
+        if (kinks) {
+            std::vector<double> blends(count);
+            for (std::size_t i = 0; i < count; ++i) blends[i] = H(r[i], start, c0);
+            (*kinks)(r.data(), blends.data(), part.data(), count);
+        }
+        for (std::size_t i = 0; i < count; ++i)
+            cauchy[i] = cauchy[i] && part[i] ? std::optional<double>(*cauchy[i] + *part[i]) : std::nullopt;
     }
-    double w = cauchy ? *cauchy : cauchy_by_quadrature(r, start, c0);
+    std::vector<double> w(count);
+    for (std::size_t i = 0; i < count; ++i) w[i] = cauchy[i] ? *cauchy[i] : cauchy_by_quadrature(r[i], start, c0);
     if (k1_.terms().empty()) return w;
     const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
-    const std::vector<double> points = breakpoints(r, start, c0);
-    for (const auto& term : k1_.terms()) {
-        double total = 0.0;
-        for (std::size_t i = 0; i + 1 < points.size(); ++i)
-            total += integrate_piece(
-                [&](double eta) {
-                    const double z = eta - r;
-                    return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
-                },
-                points[i], points[i + 1], w_context);
-        w += term.T * total;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::vector<double> points = breakpoints(r[i], start, c0);
+        for (const auto& term : k1_.terms()) {
+            double total = 0.0;
+            for (std::size_t k = 0; k + 1 < points.size(); ++k)
+                total += integrate_piece(
+                    [&](double eta) {
+                        const double z = eta - r[i];
+                        return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+                    },
+                    points[k], points[k + 1], w_context);
+            w[i] += term.T * total;
+        }
     }
     return w;
 }
@@ -385,9 +398,9 @@ tangential_solution dissimilar_zones::blended(double start, double c0, double b)
     const gauss_chebyshev& rule = solver_.normal().rule;
     std::vector<double> r(rule.collocation.size());
     for (std::size_t m = 0; m < r.size(); ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;
-    const std::vector<double> g = solver_.G(r);
+    const std::vector<double> g = solver_.G(r), w = W(r, start, c0);
     std::vector<double> extra(r.size());
-    for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + W(r[m], start, c0));
+    for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + w[m]);
     tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
     // Q' = f (2 int p H - 1) + rho int q, where solve_on_zone gave f + rho int q.
     s.Q += 2.0 * f_ * load_under_H(start, c0) - 2.0 * f_;

@@ -47,9 +47,9 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     }
     // solve_on_zone's right side is xi + b p + f G; the blend's is xi + b p - f G - 2 f W1 + 2 f W2.
     const auto base = [&](const std::vector<double>& r) {
-        const std::vector<double> g = solver_.G(r);
+        const std::vector<double> g = solver_.G(r), w1 = W(r, s1, c1), w2 = W(r, s2, c2);
         std::vector<double> e(r.size());
-        for (std::size_t m = 0; m < r.size(); ++m) e[m] = -2.0 * f_ * (g[m] + W(r[m], s1, c1) - W(r[m], s2, c2));
+        for (std::size_t m = 0; m < r.size(); ++m) e[m] = -2.0 * f_ * (g[m] + w1[m] - w2[m]);
         return e;
     };
     const std::vector<double> base1 = base(r1), base2 = base(r2);

@@ -123,10 +123,11 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         if (tail > blend_tail * size) return std::nullopt;
         const gauss_chebyshev rule(std::max(min_nodes, m));
         std::vector<double> values(static_cast<std::size_t>(rule.n));
+        u_series(z.b, rule.nodes.data(), values.data(), values.size());  // g at the nodes, side by side (bit for bit)
         for (int i = 0; i < rule.n; ++i) {
             const auto w1 = k.unit_(z.start + z.rho * (rule.nodes[i] + 1.0));
             if (!w1) return std::nullopt;
-            values[i] = u_series(z.b, rule.nodes[i]) * *w1;
+            values[i] *= *w1;
         }
         k.parts_.push_back({z.start, z.rho, z.amplitude, z.b, u_coefficients(rule, values), z.cauchy});
     }
@@ -145,6 +146,38 @@ std::optional<double> kinks_blend::operator()(double r, double blend) const {
         sum += z.amplitude * (*w1 * (*z.cauchy)(t) - inside - cauchy_u_series(z.gw, t));
     }
     return sum;
+}
+
+void kinks_blend::operator()(const double* r, const double* blend, std::optional<double>* out, std::size_t count) const {
+    // operator() at each point, bit for bit: W_1, then per part the n-term sums u_series(g) (only where the point is
+    // inside the part's zone with a blend) and cauchy_u_series(g W_1) for all points at once (their batched forms).
+    std::vector<std::optional<double>> w1(count);
+    unit_(r, w1.data(), count);
+    std::vector<double> sum(count, 0.0), t(count), inside(count), series(count), gathered, summed;
+    std::vector<std::size_t> which;
+    for (const part& z : parts_) {
+        which.clear();
+        gathered.clear();
+        for (std::size_t i = 0; i < count; ++i) {
+            t[i] = (r[i] - z.start) / z.rho - 1.0;
+            inside[i] = 0.0;
+            if (std::fabs(t[i]) < 1.0 && blend[i] != 0.0) {
+                which.push_back(i);
+                gathered.push_back(t[i]);
+            }
+        }
+        summed.resize(gathered.size());
+        u_series(z.g, gathered.data(), summed.data(), gathered.size());
+        for (std::size_t k = 0; k < which.size(); ++k) {
+            const std::size_t i = which[k];
+            const double root = std::sqrt((1.0 - r[i]) * (1.0 + r[i]));
+            inside[i] = root * blend[i] * std::sqrt((1.0 - t[i]) * (1.0 + t[i])) * summed[k];
+        }
+        cauchy_u_series(z.gw, t.data(), series.data(), count);
+        for (std::size_t i = 0; i < count; ++i)
+            if (w1[i]) sum[i] += z.amplitude * (*w1[i] * (*z.cauchy)(t[i]) - inside[i] - series[i]);
+    }
+    for (std::size_t i = 0; i < count; ++i) out[i] = w1[i] ? std::optional<double>(sum[i]) : std::nullopt;
 }
 
 double blend_kinks(double t) { return -2.0 / (15.0 * M_PI) * t * (1.0 - t * t) * (9.0 - 4.0 * t * t); }

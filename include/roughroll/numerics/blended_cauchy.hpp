@@ -35,12 +35,17 @@ public:
 
     // W(r) for -1 <= r <= 1; empty where Lambda(r) does not converge by most_nodes.
     std::optional<double> operator()(double r) const;
+    // The same at each of `count` points r[i] into out[i], bit for bit as operator()(r[i]) (its Clenshaw sums
+    // for blocks of points together: W at a zone's collocation points, dissimilar_zones::W).
+    void operator()(const double* r, std::optional<double>* out, std::size_t count) const;
 
     double start() const { return s_; }
     double end() const { return c_; }
 
 private:
     blended_cauchy() = default;
+    // W(r) from the sums sum_j c_j(r) sigma_j (`smooth`) and sum_j b_j U_j(r) (`series`): p(r)'s logarithms.
+    std::optional<double> finish(double r, double smooth, double series) const;
     struct node {
         double half_sin, half_cos;  // sin, cos of theta_e/2 at the node
         double weight;              // the node's weight in the rule that adds it (halved at each later level)

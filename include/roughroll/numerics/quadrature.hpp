@@ -61,7 +61,7 @@ void u_series(const std::vector<double>& b, const double* x, double* out, std::s
 //     = -sum_j b_j T_{j+1}(x)                        for |x| < 1 (principal value),
 //     = -sum_j b_j z^{j+1},  z = x - sgn(x) sqrt(x^2-1)  for |x| > 1.
 double cauchy_u_series(const std::vector<double>& b, double x);
-// The same at count points x[i] into out[i], the power recurrences of points with |x| >= 1 run
+// The same at count points x[i] into out[i], the recurrences of points on one side of |x| = 1 run
 // side by side (each value is the one cauchy_u_series(b, x[i]) gives, bit for bit).
 void cauchy_u_series(const std::vector<double>& b, const double* x, double* out, std::size_t count);
 

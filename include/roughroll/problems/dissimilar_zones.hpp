@@ -206,6 +206,7 @@ private:
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
+    std::vector<double> W(const std::vector<double>& r, double start, double c0);  // the same at each r[i]
     double cauchy_by_quadrature(double r, double start, double c0);  // W's Cauchy part by adaptive quadrature
     std::vector<double> breakpoints(double r, double start, double c0) const;  // W's pieces
     const blended_cauchy* blend_of(double start, double c0);  // W's Cauchy part on the zone, null: adaptive

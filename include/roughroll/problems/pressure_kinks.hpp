@@ -83,6 +83,9 @@ class kinks_blend {
 public:
     // W_q(r) for -1 <= r <= 1, `blend` the value H(r) of the stick zone's blend; empty where W_1(r) does not converge.
     std::optional<double> operator()(double r, double blend) const;
+    // The same at `count` points r[i] with blends blend[i] into out[i], bit for bit (the n-term sums of the points
+    // side by side: W at a zone's collocation points, dissimilar_zones::W).
+    void operator()(const double* r, const double* blend, std::optional<double>* out, std::size_t count) const;
 
 private:
     friend class pressure_kinks;
