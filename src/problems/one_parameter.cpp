@@ -153,10 +153,6 @@ double one_parameter_solver::sliding_velocity(double forcing, double r) const {
     return forcing == 0.0 ? f_ * G(r) : forcing * normal_.pressure(r) + f_ * G(r);  // 8(s), as 8(g)
 }
 
-tangential_solution one_parameter_solver::solve_system(double c0, double forcing) {
-    return solve_on_zone(-1.0, c0, forcing);
-}
-
 tangential_solution one_parameter_solver::solve_on_zone(double start, double c0, std::optional<double> given) {
     const double forcing = given.value_or(forcing_at(1.0));
     // "The one-parameter limit", stick equation: H[q] + (eps1/rho) q'(t) = xi + b p(r(t)) + f G(r(t)) with
@@ -221,7 +217,7 @@ tangential_solution one_parameter_solver::at_stick_end(double c0, bool checked) 
     const double forcing = forcing_at(1.0);  // the Q >= 0 branch
     tangential_solution s = c0 == 1.0    ? full_stick(forcing)
                             : c0 == -1.0 ? gross_sliding(forcing)
-                                         : solve_system(c0, forcing);
+                                         : solve_on_zone(-1.0, c0, forcing);
     if (checked) s.checks = check(s);
     return s;
 }
@@ -229,7 +225,7 @@ tangential_solution one_parameter_solver::at_stick_end(double c0, bool checked) 
 double one_parameter_solver::load(double c0, std::optional<double> forcing) {
     if (c0 <= -1.0) return f_;
     if (c0 >= 1.0) return 0.0;  // full stick: p1 odd (8(s))
-    return solve_system(c0, forcing.value_or(forcing_at(1.0))).Q;
+    return solve_on_zone(-1.0, c0, forcing).Q;
 }
 
 tangential_solution one_parameter_solver::solve(double Q, std::optional<double> guess) {
@@ -239,7 +235,7 @@ tangential_solution one_parameter_solver::solve(double Q, std::optional<double> 
         // Q(-1) = f > |Q| and, at c0 = 1, full stick gives Q = 0 < |Q| (root_search.hpp, 8(s)).
         const root c0 = stick_end_for_load([&](double c) { return load(c, forcing); }, target, guess,
                                            "one-parameter Brent search for c0");
-        tangential_solution s = solve_system(c0.x, forcing);
+        tangential_solution s = solve_on_zone(-1.0, c0.x, forcing);
         s.iterations = c0.iterations;
         return s;
     };

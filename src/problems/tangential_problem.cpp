@@ -74,10 +74,6 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
 
 double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
-tangential_solution tangential_solver::solve_system(double c0, bool near) {
-    return solve_on_zone(-1.0, c0, 0.0, nullptr, near);
-}
-
 tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
                                                      const std::vector<double>* extra, bool near) {
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
@@ -171,7 +167,7 @@ tangential_solution tangential_solver::at_stick_end(double c0, bool checked, boo
         const carter_stick_end smooth = carter_at_stick_end(c0, f_);  // Smooth: Carter's closed form
         s = carter_solution(smooth.Q, c0, smooth.xi);
     } else {
-        s = c0 == -1.0 ? gross_sliding() : solve_system(c0, near);
+        s = c0 == -1.0 ? gross_sliding() : solve_on_zone(-1.0, c0, 0.0, nullptr, near);
     }
     if (checked) s.checks = check(s);
     return s;
@@ -186,7 +182,7 @@ tangential_solution tangential_solver::carter_solution(double Q, double c0, doub
 
 double tangential_solver::load(double c0) {
     if (c0 <= -1.0) return f_;
-    last_system_ = solve_system(c0);  // kept: the root search ends on a c0 it evaluated
+    last_system_ = solve_on_zone(-1.0, c0);  // kept: the root search ends on a c0 it evaluated
     return last_system_->Q;
 }
 
@@ -259,7 +255,7 @@ tangential_solution tangential_solver::solve(double Q, std::optional<double> gue
         };
         const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess, "root search for c0",
                                            full_stick_below, carter(target, f_).c0, slope);
-        tangential_solution s = last_system_ && last_system_->c0() == c0.x ? *last_system_ : solve_system(c0.x);
+        tangential_solution s = last_system_ && last_system_->c0() == c0.x ? *last_system_ : solve_on_zone(-1.0, c0.x);
         s.iterations = c0.iterations;
         s.load_slope = c0.slope;
         return s;

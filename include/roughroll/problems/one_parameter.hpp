@@ -97,7 +97,6 @@ public:
     double sliding_velocity(double forcing, double r) const;
 
 private:
-    tangential_solution solve_system(double c0, double forcing);
     tangential_solution full_stick(double forcing);
     tangential_solution gross_sliding(double forcing) const;
     double slip_velocity_magnitude(const tangential_solution& s, double r) const;

@@ -147,7 +147,7 @@ public:
     double load(double c0);  // Q(c0) alone, Q >= 0 branch
     // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
     // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
-    // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is solve_system.
+    // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is the paper's zone.
     // `forcing`: Dundurs' sigma beta_D of docs/formulation.md 8(e), added as forcing * p(r) to
     // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`:
     // values added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1)
@@ -174,7 +174,6 @@ public:
     stick_zone_operator zone_operator();
 
 private:
-    tangential_solution solve_system(double c0, bool near = false);  // |Q| problem at c0 in (-1, 1]
     tangential_solution full_stick();
     tangential_solution gross_sliding();
     tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
