@@ -25,6 +25,7 @@
 #include "roughroll/io/profile_csv.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/problems/creep_curve.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/load_ratio.hpp"
 #include "../validation/zone_scenes.hpp"
 

@@ -4,8 +4,9 @@
 # of the library (roughroll_core), the program (roughroll), the test programs (every
 # add_executable of tests/ and validation/, `foreach(name ...)` lists expanded) and the shell
 # tests of tests/CMakeLists.txt with those of Makefile.am, and prints the differences. The
-# installed headers too: CMake installs every include/roughroll/**.hpp, Makefile.am its
-# *_HEADERS lists, and a header missing there breaks `make install` consumers.
+# installed headers too: CMake installs ROUGHROLL_PUBLIC_HEADERS, Makefile.am its roughroll_*_HEADERS
+# lists, and a header missing there breaks `make install` consumers; and every include/roughroll/**.hpp
+# is in one of Makefile.am's *_HEADERS (installed or noinst_HEADERS), or `make dist` leaves it out.
 # Usage: build_sources_match.sh [SOURCE_DIR]   (default: the directory above this script)
 set -euo pipefail
 src=${1:-"$(dirname "$0")/.."}
@@ -62,8 +63,10 @@ cmake_list() {
     # Shell tests: ${CMAKE_CURRENT_SOURCE_DIR}/NAME.sh in tests/CMakeLists.txt.
     flat tests/CMakeLists.txt | grep -oE '\$\{CMAKE_CURRENT_SOURCE_DIR\}/[A-Za-z0-9_.-]+\.sh' |
         sed 's|^${CMAKE_CURRENT_SOURCE_DIR}/|script tests/|'
-    # install(DIRECTORY include/roughroll ... PATTERN "*.hpp"): every header under it.
-    find include/roughroll -name '*.hpp' | sed 's/^/header /'
+    # set(ROUGHROLL_PUBLIC_HEADERS ...): the installed headers.
+    words "$(call "$top" set ROUGHROLL_PUBLIC_HEADERS)" | grep '\.hpp$' | sed 's/^/header /'
+    # Every header of the tree, for the distribution.
+    find include/roughroll -name '*.hpp' | sed 's/^/dist /'
 }
 
 # Makefile.am with continuation lines joined and comments removed: VAR = VALUE per line.
@@ -86,13 +89,14 @@ am_list() {
             *) echo "$v" ;;
         esac
     done | grep -E '^tests/.*\.sh$' | sed 's/^/script /'
-    am_values '[A-Za-z0-9_]+_HEADERS' | grep '^include/roughroll/.*\.hpp$' | sed 's/^/header /'
+    am_values 'roughroll_[a-z]+_HEADERS' | grep '^include/roughroll/.*\.hpp$' | sed 's/^/header /'
+    am_values '[A-Za-z0-9_]+_HEADERS' | grep '^include/roughroll/.*\.hpp$' | sed 's/^/dist /'
 }
 
 cmake=$(cmake_list | sort -u)
 am=$(am_list | sort -u)
 status=0
-for kind in library program test script header; do
+for kind in library program test script header dist; do
     if ! grep -q "^$kind " <<<"$cmake"; then
         echo "FAIL: no $kind sources found in the CMake files"; status=1
     fi

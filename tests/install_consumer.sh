@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Installs an already-built roughroll into a temporary prefix and builds tests/consumer against
-# it twice, with CMake's find_package(roughroll) and with pkg-config; runs both consumers.
+# Installs an already-built roughroll into a temporary prefix, checks that its headers include only
+# installed ones (installed_headers.sh), and builds tests/consumer against it twice, with CMake's
+# find_package(roughroll) and with pkg-config; runs both consumers.
 # Fails (non-zero) when the install, a build or a consumer's check fails.
 # Usage: tests/install_consumer.sh SOURCE_DIR BUILD_DIR   (CTest test install_consumer)
 set -euo pipefail
@@ -15,9 +16,15 @@ prefix=$work/prefix
 
 echo "== cmake --install $build --prefix $prefix"
 cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log" >&2; exit 1; }
-for f in bin/roughroll include/roughroll/problems/contact.hpp; do
+for f in bin/roughroll include/roughroll/roughroll.hpp include/roughroll/problems/contact.hpp; do
     [ -e "$prefix/$f" ] || { echo "install_consumer: $f not installed" >&2; exit 1; }
 done
+# Only the public headers (CMakeLists.txt, ROUGHROLL_PUBLIC_HEADERS): the solvers' and numerics' stay here.
+for f in include/roughroll/problems/point_model.hpp include/roughroll/problems/tangential_problem.hpp \
+         include/roughroll/numerics/collocation.hpp; do
+    [ ! -e "$prefix/$f" ] || { echo "install_consumer: $f installed, a header of the library's own" >&2; exit 1; }
+done
+"$src/tests/installed_headers.sh" "$prefix/include"
 
 echo "== CMake: find_package(roughroll $version)"
 cmake -S "$src/tests/consumer" -B "$work/cmake" -DCMAKE_PREFIX_PATH="$prefix" \

@@ -17,6 +17,7 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "aluminium_on_steel.hpp"
 #include "test_zones_low_order.hpp"
 #include "../tests/tolerance.hpp"

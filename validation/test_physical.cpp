@@ -8,6 +8,7 @@
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 #include "roughroll/base/error.hpp"
 #include "../tests/tolerance.hpp"
 

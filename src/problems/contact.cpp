@@ -10,10 +10,12 @@
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 
+#include "contact_impl.hpp"
+
 namespace roughroll {
 
-contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                 normal_cache* cache)
+contact::impl::impl(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                    normal_cache* cache)
     : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_dissimilar(materials, options);
@@ -27,23 +29,37 @@ contact::contact(const roughness& surfaces, double f, const solver_options& opti
     }
 }
 
-void contact::set_checkpoint(std::function<void()> hook) { model_->set_checkpoint(std::move(hook)); }
+contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+                 normal_cache* cache)
+    : impl_(std::make_unique<impl>(surfaces, f, options, materials, cache)) {}
 
-const normal_solution& contact::normal() const {
+contact::contact(contact&&) noexcept = default;
+contact& contact::operator=(contact&&) noexcept = default;
+contact::~contact() = default;
+
+double contact::friction() const { return impl_->f_; }
+
+const dissimilar& contact::materials() const { return impl_->materials_; }
+
+void contact::set_checkpoint(std::function<void()> hook) { impl_->model_->set_checkpoint(std::move(hook)); }
+
+const normal_solution& contact::normal() const { return impl_->normal(); }
+
+const normal_solution& contact::impl::normal() const {
     // At full coupling after a point, level n's coupled pressure, not extrapolated (docs/formulation.md 8(e)).
     return reported_ && !model_->coupling() ? *reported_ : model_->normal();
 }
 
-const coupling_summary* contact::coupling() const { return model_->coupling(); }
+const coupling_summary* contact::coupling() const { return impl_->model_->coupling(); }
 
 tangential_solver& contact::tangential() {
-    if (tangential_solver* t = model_->tangential()) return *t;
+    if (tangential_solver* t = impl_->model_->tangential()) return *t;
     throw input_error(
         "method 'one-parameter' has no two-parameter tangential solver: use contact::traction and "
         "contact::slip_velocity");
 }
 
-std::vector<int> contact::below() {
+std::vector<int> contact::impl::below() {
     std::vector<int> ns;
     if (build_levels())
         for (int i = 0; levels_[i] != nullptr; ++i) ns.push_back(levels_[i]->nodes());  // nullptr: this one
@@ -51,30 +67,34 @@ std::vector<int> contact::below() {
 }
 
 tangential_solution contact::point(double Q) {
-    return model_->point(Q, [this] { return below(); });
+    return impl_->model_->point(Q, [this] { return impl_->below(); });
 }
 
 tangential_solution contact::continued_point(double Q, const tangential_solution& previous) {
-    return model_->continued(Q, previous, [this] { return below(); });
+    return impl_->model_->continued(Q, previous, [this] { return impl_->below(); });
 }
 
-kernel contact::widest_kernel() const {
+kernel contact::impl::widest_kernel() const {
     const double rate = std::max(kernel::normal(surfaces_).max_rate(), kernel::tangential(surfaces_).max_rate());
     return kernel(std::vector<exponential_term>{{1.0, rate}});
 }
 
-tangential_solution contact::distribution(const tangential_solution& s) { return model_->distribution(s); }
+tangential_solution contact::distribution(const tangential_solution& s) { return impl_->distribution(s); }
+
+std::optional<error_estimate> contact::estimate(const tangential_solution& s) { return impl_->estimate(s); }
+
+contact::swept_point contact::at_stick_end(double c0) { return impl_->at_stick_end(c0); }
 
 std::optional<std::string> contact::beyond_every_n(double Q, int top, double tolerance) const {
-    return model_->beyond_every_n(Q, top, tolerance);
+    return impl_->model_->beyond_every_n(Q, top, tolerance);
 }
 
-double contact::traction(const tangential_solution& d, double r) { return model_->traction(d, r); }
+double contact::traction(const tangential_solution& d, double r) { return impl_->model_->traction(d, r); }
 
-double contact::slip_velocity(const tangential_solution& d, double r) { return model_->slip_velocity(d, r); }
+double contact::slip_velocity(const tangential_solution& d, double r) { return impl_->model_->slip_velocity(d, r); }
 
 std::vector<double> contact::slip_velocity(const tangential_solution& d, const std::vector<double>& r) {
-    return model_->slip_velocity(d, r);
+    return impl_->model_->slip_velocity(d, r);
 }
 
 std::vector<contact::distribution_row> contact::distributions(const tangential_solution& d,

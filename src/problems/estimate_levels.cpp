@@ -14,13 +14,15 @@
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 
+#include "contact_impl.hpp"
+
 namespace roughroll {
 
-double contact::kernel_strength() const {
+double contact::impl::kernel_strength() const {
     return std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
 }
 
-std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+std::optional<error_estimate> contact::impl::estimate(const tangential_solution& s) {
     // The edge layers neglected (8(n)): no levels, the layers' bound (the closed form has no n).
     if (s.layout.layers_neglected()) {
         const neglected_layers layers = no_slip_layers(materials_.beta_d, f_);
@@ -63,7 +65,7 @@ std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     return e;
 }
 
-bool contact::build_levels() {
+bool contact::impl::build_levels() {
     if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
     levels_built_ = true;
     const method how = level_of(options_.how);
@@ -99,8 +101,8 @@ bool contact::build_levels() {
     return false;
 }
 
-error_estimate contact::estimate_from(const tangential_solution& s, const tangential_solution& own,
-                                      const std::array<tangential_solution, 3>& at, bool swept) {
+error_estimate contact::impl::estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                            const std::array<tangential_solution, 3>& at, bool swept) {
     int self = 0;
     while (levels_[self] != nullptr) ++self;
     const estimate_structure structure = model_->structure();

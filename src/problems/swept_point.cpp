@@ -10,6 +10,8 @@
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/problems/contact.hpp"
 
+#include "contact_impl.hpp"
+
 namespace roughroll {
 
 void check_sweepable(const dissimilar& materials) {
@@ -21,7 +23,7 @@ void check_sweepable(const dissimilar& materials) {
             "f, the same rows), or set coupling = \"johnson\"");
 }
 
-contact::swept_point contact::at_stick_end(double c0) {
+contact::swept_point contact::impl::at_stick_end(double c0) {
     if (materials_.beta_d != 0.0)
         throw input_error(
             "a point at a stick zone's end c0 is not defined for beta_d != 0: c0 ends the paper's stick zone from the "
@@ -44,7 +46,7 @@ contact::swept_point contact::at_stick_end(double c0) {
     }
 }
 
-contact::swept_point contact::swept_at(double c0) {
+contact::swept_point contact::impl::swept_at(double c0) {
     tangential_solution s = model_->at_stick_end(c0, true, sweeping_near_);
     const tangential_solution own = s;
     std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
@@ -78,7 +80,7 @@ contact::swept_point contact::swept_at(double c0) {
     return {s, e};
 }
 
-void contact::refuse_load_outside(const tangential_solution& s, std::optional<double> error) const {
+void contact::impl::refuse_load_outside(const tangential_solution& s, std::optional<double> error) const {
     if (s.c0() == 1.0 || s.c0() == -1.0) return;  // Q = 0 and Q = f exactly (full stick, gross sliding)
     const double d = error.value_or(0.0);
     if (s.Q - d >= 0.0 && s.Q + d <= f_) return;

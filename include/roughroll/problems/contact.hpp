@@ -22,11 +22,14 @@
 // and keeps its levels at other n; the contact chooses among them: Richardson's lambda in contact.cpp,
 // the error estimate's levels and table in estimate_levels.cpp (its rule: point_estimate.hpp), the
 // points of a curve swept in c0 in swept_point.cpp.
+//
+// Its state (the model, its levels, the caches) is contact::impl (src/problems/contact_impl.hpp), behind
+// a pointer: this header names only the public values (roughroll.hpp), not the solvers. Move-only, as
+// the model it owns.
 #pragma once
 
-#include <memory>
-#include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,14 +37,17 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/model/carter.hpp"
 #include "roughroll/model/dissimilar.hpp"
-#include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
-#include "roughroll/problems/point_model.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/coupling_summary.hpp"
+#include "roughroll/problems/error_estimate.hpp"
+#include "roughroll/problems/normal_solution.hpp"
+#include "roughroll/problems/tangential_solution.hpp"
 
 namespace roughroll {
+
+class normal_cache;       // problems/normal_problem.hpp
+class tangential_solver;  // problems/tangential_problem.hpp
 
 class contact {
 public:
@@ -52,6 +58,9 @@ public:
     // contact keeps copies, not the cache.
     contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {},
             normal_cache* cache = nullptr);
+    contact(contact&&) noexcept;
+    contact& operator=(contact&&) noexcept;
+    ~contact();
 
     // The normal solution as reported (lambda extrapolated for method::extrapolated). At full
     // coupling of dissimilar rollers (docs/formulation.md 8(e)) the pressure depends on Q: after a
@@ -63,7 +72,7 @@ public:
     // The two-parameter tangential solver; for method::one_parameter there is none: throws
     // input_error (use traction() and slip_velocity() below, which serve every method).
     tangential_solver& tangential();
-    double friction() const { return f_; }
+    double friction() const;
 
     tangential_solution point(double Q);
     // point(Q) on a curve continued in the load (swept_curve of dissimilar rollers): `previous`, the
@@ -72,7 +81,7 @@ public:
     // structure whose checks hold, the point's own search answers. The same point to Newton's
     // resolution (validation/test_dissimilar_curve.cpp).
     tangential_solution continued_point(double Q, const tangential_solution& previous);
-    const dissimilar& materials() const { return materials_; }
+    const dissimilar& materials() const;
 
     // A caller's hook, called before each level's solve (and each step of full coupling's
     // alternation) of point(), estimate() and at_stick_end(): what it throws ends the solve there
@@ -128,33 +137,8 @@ public:
     std::vector<distribution_row> distributions(const tangential_solution& d, const std::vector<double>& grid);
 
 private:
-    // A sweep's consecutive c0 give nearby systems: each level's point at c0 (point_model::at_stick_end)
-    // refines on its last factorisation while sweeping_near_ (dense_system::solve_near, docs/formulation.md
-    // "Swept points refined on the previous factorisation"), the same solution to rounding.
-    swept_point swept_at(double c0);  // at_stick_end's point, by the route sweeping_near_ picks
-    // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
-    // Q +- error) outside [0, f] at an inner c0.
-    void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
-    int nodes() const { return options_.nodes(); }
-    std::vector<int> below();        // the n of the estimate's levels below this one, coarsest first
-    bool build_levels();             // the two other levels of the estimate; false when none fit
-    double kernel_strength() const;  // the larger kernel's sum |T|, for the rounding floors
-    kernel widest_kernel() const;    // one term at either kernel's largest rate: the resolution both need
-    // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
-    // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
-    error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
-                                 const std::array<tangential_solution, 3>& at_levels, bool swept);
-
-    roughness surfaces_;
-    solver_options options_;
-    double f_;
-    dissimilar materials_;
-    std::unique_ptr<point_model> model_;         // the points' model, chosen once (point_model.hpp)
-    point_model* companion_ = nullptr;           // method::extrapolated: the coarse level n/2 (product)
-    std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
-    std::array<point_model*, 3> levels_{};       // the estimate's levels, coarsest first; nullptr: this one
-    bool levels_built_ = false;
-    bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
+    struct impl;  // src/problems/contact_impl.hpp
+    std::unique_ptr<impl> impl_;
 };
 
 // A swept curve (swept_curve): in c0 for beta_D = 0, continued in the load for dissimilar rollers at

@@ -27,6 +27,7 @@
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/coupling_summary.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
@@ -45,20 +46,6 @@ constexpr int coupling_max_iterations = 40;
 // no-slip solution reaches f p, 2/(1 + exp(arctan(f)/|epsilon|)) with tanh(pi epsilon) = -beta_D (docs/formulation.md
 // 8(p), "The edges"); the edge layers of the five zones scale with it.
 double coupled_layers_crossing(double beta_d, double f);
-
-// What the alternation measured, for the report of a point.
-struct coupling_summary {
-    int iterations = 0;           // normal solves after the start (Johnson's point or a coarser level's coupling)
-    int start_level = 0;          // n of the coarser level whose converged coupling started it; 0: Johnson's point
-    double offset = 0.0;          // e = x_c/a of 8(c)
-    double lambda_johnson = 0.0;  // P_H/P2 of Johnson's level
-    // The relative change of the physical peak pressure from Johnson's level at the same rollers and
-    // normal load P2: p_phys = p P2/a with a^2 proportional to P_H = lambda P2, so
-    // (p_max/p_max,J) sqrt(lambda_J/lambda) - 1 (docs/formulation.md 8(e)).
-    double peak_pressure_change = 0.0;
-    double contraction = 0.0;     // the largest ratio of successive changes after the first two steps
-    std::vector<double> changes;  // the largest change of lambda, e, xi per step (the ends' apart)
-};
 
 class full_coupling {
 public:

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The error estimate of a point, per quantity, as contact::estimate returns it and the reports print
+// it (docs/performance.md, "How the error estimates are made"). A value, apart from its rule
+// (point_estimate.hpp): part of the public interface (roughroll.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace roughroll {
+
+// Full coupling's level changes (docs/formulation.md 8(q)), one per field of error_estimate (each the
+// largest over the zone ends folded into it, as the estimate folds them).
+struct level_changes {
+    double lambda = 0.0, c0 = 0.0, xi = 0.0, start = 0.0;
+};
+struct coupled_changes {
+    level_changes last;  // |x_n - x_{n/2}| less both levels' noise: `next_factor` times it is in the estimate at 2n
+    level_changes order_one;  // min(|x_n - x_{n/2}|, |x_{n/2} - x_{n/4}|/2) less the noise: C/n where x_k = x + C/k
+    // The certain share of rung 2n's estimate in |x_n - x_{n/2}| (8(q) rule (a)): 2 where the levels n/2, n, 2n can only
+    // take twice the larger change, 3/2^p where they may take the three-level rule (three times at least a 2^p-th of
+    // the change before: 8(q) "The three-level rule at full coupling").
+    double next_factor = 2.0;
+};
+
+// The error estimate of a point, per quantity. Every estimate comes from three levels of the same
+// plain discretisation (the method itself; product integration for method::extrapolated): n/4,
+// n/2, n where n/2 is in the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n,
+// 4n. The observed ratio of the two differences decides (numerics/error_bound.hpp): where it shows
+// the method's order, the classic estimates (the difference from n/2, about 2^p - 1 times the
+// error at n; for method::extrapolated the difference from level n); where it shows a lower order,
+// a bound from the observed ratio; where the levels do not converge visibly, no estimate: the point
+// is refused (resolution_error). Each estimate includes a rounding floor (floors_at below).
+struct error_estimate {
+    double lambda;  // P_H/P2
+    double c0;      // 0 for a point of a curve swept in c0 (c0 is then the input)
+    double xi;
+    double Q;             // 0 for a point at a given Q (Q is then the input)
+    std::string against;  // the levels used, e.g. "n/2 (levels n/4, n/2, n)"
+    bool bounded;         // a quantity converged below the method's order: bound from the observed ratio
+    double start = 0.0;   // the stick zone's start, for dissimilar rollers (docs/formulation.md 8); else 0
+    // Full coupling on levels n/4, n/2, n: the changes behind the estimate, which bound the next rungs'
+    // estimates (level_ladder, docs/formulation.md 8(q)); empty for every other rule.
+    std::optional<coupled_changes> changes = std::nullopt;
+};
+
+}  // namespace roughroll

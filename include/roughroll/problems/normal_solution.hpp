@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The solution of the normal problem (3.19)-(3.20) as the solver (normal_problem.hpp) returns it and
+// the reports read it: phi at the nodes of the rule (4.6), its U coefficients, lambda = P_H/P2 and
+// the pressure p(r) of (4.1) with its peak. A value, apart from the solver: part of the public interface
+// (roughroll.hpp); the kernel term's operator and the kinks it may share stay declared only.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/numerics/quadrature.hpp"
+
+namespace roughroll {
+
+class kernel_operator;  // numerics/collocation.hpp
+class pressure_kinks;   // problems/pressure_kinks.hpp
+
+struct normal_solution {
+    gauss_chebyshev rule;
+    method how;
+    std::vector<double> phi;  // phi(eta_k) of (4.1)
+    std::vector<double> b;    // U coefficients of the interpolant of phi
+    double lambda;            // P_H/P2
+    double gamma;             // gamma_0n, tends to 0 as n grows (4.8)
+    double rcond;             // reciprocal condition of the LU factor U
+    // The kernel term's operator of (4.2) (product integration: its sweep workspace), shared
+    // with the tangential solver when K1*'s rates do not exceed K2*'s: the Lagrange basis at
+    // the sweep's quadrature points is then computed once per level. Empty for Hertz.
+    std::shared_ptr<const kernel_operator> kernel_term;
+    // Full coupling of dissimilar rollers (docs/formulation.md 8(e)): beta_D p1(r) of the (D1) this
+    // pressure solves, and its offset e = pi gamma_0n/(2 lambda) (8(c)); G = -L1[p] then gains
+    // (2/pi) lambda e + beta_D p1 (tangential_solver::G). Empty and 0 for the uncoupled problem.
+    std::function<double(double)> tangential_term;
+    double offset = 0.0;
+    // Full coupling, docs/formulation.md 8(l) step 0: the explicit term p_q^0 carrying the pressure's
+    // one-sided kinks at the zone ends (pressure_kinks.hpp), p = phi sqrt(1 - r^2) + p_q^0. Null otherwise.
+    std::shared_ptr<const pressure_kinks> kinks;
+
+    double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2) (4.1), + p_q^0(r) with `kinks`
+};
+
+// The peak of the pressure p(r) of (4.1) on (-1, 1): its value (in units of P2/a) and position r.
+// Sampled at 2001 points and refined by golden section (least_value.hpp): the value to rounding,
+// r to about 1e-8 (a flat maximum); Hertz's peak is 2/pi at r = 0.
+struct pressure_peak {
+    double r, p;
+};
+pressure_peak peak_of(const normal_solution& s);
+
+}  // namespace roughroll

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// contact's state and its work (contact.hpp), behind the public class's pointer so that the installed
+// header names no solver: the model of the points and its levels (point_model.hpp), Richardson's
+// lambda, the estimate's levels and the sweep's route. Not installed; contact.cpp, estimate_levels.cpp
+// and swept_point.cpp define its members, contact's own forward to them.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "roughroll/model/kernel.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/point_model.hpp"
+
+namespace roughroll {
+
+struct contact::impl {
+    impl(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
+         normal_cache* cache);
+
+    const normal_solution& normal() const;  // contact::normal
+    tangential_solution distribution(const tangential_solution& s) { return model_->distribution(s); }
+    std::optional<error_estimate> estimate(const tangential_solution& s);  // contact::estimate
+    swept_point at_stick_end(double c0);                                   // contact::at_stick_end
+
+    // A sweep's consecutive c0 give nearby systems: each level's point at c0 (point_model::at_stick_end)
+    // refines on its last factorisation while sweeping_near_ (dense_system::solve_near, docs/formulation.md
+    // "Swept points refined on the previous factorisation"), the same solution to rounding.
+    swept_point swept_at(double c0);  // at_stick_end's point, by the route sweeping_near_ picks
+    // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
+    // Q +- error) outside [0, f] at an inner c0.
+    void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;
+    int nodes() const { return options_.nodes(); }
+    std::vector<int> below();        // the n of the estimate's levels below this one, coarsest first
+    bool build_levels();             // the two other levels of the estimate; false when none fit
+    double kernel_strength() const;  // the larger kernel's sum |T|, for the rounding floors
+    kernel widest_kernel() const;    // one term at either kernel's largest rate: the resolution both need
+    // The estimate from the three levels' solutions (s of this contact, level-n values `own`): the
+    // table of s's structure, the rule of point_estimate.hpp, level 2n solved where it asks.
+    error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
+                                 const std::array<tangential_solution, 3>& at_levels, bool swept);
+
+    roughness surfaces_;
+    solver_options options_;
+    double f_;
+    dissimilar materials_;
+    std::unique_ptr<point_model> model_;         // the points' model, chosen once (point_model.hpp)
+    point_model* companion_ = nullptr;           // method::extrapolated: the coarse level n/2 (product)
+    std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
+    std::array<point_model*, 3> levels_{};       // the estimate's levels, coarsest first; nullptr: this one
+    bool levels_built_ = false;
+    bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
+};
+
+}  // namespace roughroll
