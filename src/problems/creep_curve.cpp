@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "roughroll/base/text.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
 
