@@ -4,14 +4,17 @@
 // trailing edge r = 1 (W of the blended zones, docs/formulation.md 8(j) item 3); small beta_D refused
 // at once with what to do (8(j) item 11); no "increase n" where a larger n cannot help.
 #include <functional>
+#include <optional>
 #include <utility>
 #include <cmath>
+#include <regex>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/text.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/numerics/error_bound.hpp"
@@ -26,6 +29,23 @@ using namespace roughroll;
 
 namespace {
 roughness layers() { return roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}}; }
+
+// Whether `line` shows the margins (3.3)-(3.4) as margins_text writes them (zone_checks.hpp): each a computed value to
+// three significant digits, or a zone kind in words; "(margins: stick X, slip Y)", read back.
+bool margins_as_computed(const std::string& line) {
+    static const std::regex form(R"(\(margins: (stick [^,]+|no stick zone), (slip [^)]+|no slip zone)\))");
+    std::smatch m;
+    if (!std::regex_search(line, m, form)) return false;
+    for (const std::string kind : {"stick ", "slip "})
+        for (std::size_t i = 1; i <= 2; ++i) {
+            const std::string part = m[i];
+            if (part.rfind(kind, 0) != 0) continue;
+            const std::string value = part.substr(kind.size());
+            if (value == "not finite") continue;
+            if (significant(std::stod(value), 3) != value) return false;
+        }
+    return true;
+}
 
 // The line of the resolution_error `solve` refuses with; empty where it answers.
 std::string refusal_of(const std::function<void()>& solve) {
@@ -356,6 +376,29 @@ TEST(RefusedRows, RoughPairRowWithoutItsZonesIsRefusedNotAborted) {
     EXPECT_NE(curve.rows[1].refused.find("fail the checks"), std::string::npos) << curve.rows[1].refused;
     EXPECT_NE(curve.rows[1].refused.find("another n may find them"), std::string::npos) << curve.rows[1].refused;
     EXPECT_EQ(curve.rows[1].refused.find("not built yet"), std::string::npos) << curve.rows[1].refused;
+    EXPECT_TRUE(margins_as_computed(curve.rows[1].refused)) << curve.rows[1].refused;
+}
+
+// Every refusal of failed checks shows the margins as margins_text writes them (issue 24, review): three significant
+// digits of a computed value (before, the five zones' and full coupling's refusals printed all 17, "stick
+// 7.619638045519572e-09"). Aluminium on steel at n = 32 (data/aluminium-on-steel.toml): free rolling at f = 0.3, whose
+// five zones fail the checks at this n (johnson_model::five_point), and at full coupling, f = 0.05 (the golden
+// file point-al-steel-full-Q0.json); the three zones' refusal is in the test above.
+TEST(RefusedRows, MarginsOfFailedChecksAsComputed) {
+    scene five = read_scene(ROUGHROLL_DATA "/aluminium-on-steel.toml");
+    override_friction(five, 0.3);
+    override_solver(five, 32, std::nullopt);
+    const std::string five_line = refusal_of([&] { solve_point(five, 0.0); });
+    EXPECT_NE(five_line.find("the five zones (slip, stick, reversed slip, stick, slip) fail the checks"),
+              std::string::npos)
+        << five_line;
+    EXPECT_TRUE(margins_as_computed(five_line)) << five_line;
+    scene full = read_scene(ROUGHROLL_DATA "/aluminium-on-steel.toml");
+    full.materials.coupling = coupling_level::full;
+    override_solver(full, 32, std::nullopt);
+    const std::string full_line = refusal_of([&] { solve_point(full, 0.0); });
+    EXPECT_NE(full_line.find("the coupled zones fail the checks"), std::string::npos) << full_line;
+    EXPECT_TRUE(margins_as_computed(full_line)) << full_line;
 }
 
 // A swept row of the ground steel rollers (data/steel-rollers-ground.toml, the README's scene) at

@@ -324,8 +324,7 @@ std::optional<tangential_solution> johnson_model::five_point(double Q, const std
     if (!s->checks.hold())
         throw resolution_error("dissimilar rollers at Q/f = " + shortest(Q / f_) +
                                ": the five zones (slip, stick, reversed slip, stick, slip) fail the checks "
-                               "(3.3)-(3.4) (margins: stick " +
-                               shortest(s->checks.stick_margin) + ", slip " + shortest(s->checks.slip_margin) +
+                               "(3.3)-(3.4) (margins: " + margins_text(s->checks) +
                                "): a zone is below the collocation's resolution at n = " + std::to_string(nodes()) +
                                ", or the search from the coarser levels' zones found other five zones than the "
                                "physical ones (docs/formulation.md 8(j), 8(n)); " +

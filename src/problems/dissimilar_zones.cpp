@@ -552,8 +552,8 @@ void require_checks(const tangential_solution& s) {
     if (s.checks.hold()) return;
     throw unadvised_refusal(no_three_zones(
         s.Q, s.f,
-        "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: stick " +
-            shortest(s.checks.stick_margin) + ", slip " + shortest(s.checks.slip_margin) + ")"));
+        "the three zones (slip in either direction at each edge) fail the checks (3.3)-(3.4) (margins: " +
+            margins_text(s.checks) + ")"));
 }
 
 }  // namespace roughroll
