@@ -24,6 +24,7 @@
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 #include "aluminium_on_steel.hpp"
+#include "zone_scenes.hpp"
 
 using namespace roughroll;
 
@@ -271,6 +272,53 @@ TEST(RefusedRows, ZoneSearchNoZoneIsEmptyAFaultIsAFault) {
     try {
         broken.find(0.5 * f, true);
         ADD_FAILURE() << "a zone without a solve";
+    } catch (const numerical_error& e) {
+        EXPECT_EQ(std::string(e.what()), "injected fault: singular zone system");
+    }
+}
+
+// The same for the collocation's zone search and the paper model (issue 24, review): a scene whose single zone fails
+// its checks near gross sliding (zone_scenes::tangential_dominates_a, Q/f = 1 - 1e-3), so that the general search
+// scans its starts to the first bracket. A zone system that fails at a scanned start (injected: every zone off the
+// leading edge) is a fault of the search, not "no zone carries the load" (before, the scan stopped there and the
+// search came back empty); and a fault of the general search under zones = "auto" is not answered with the single
+// zone and its failed checks (before, zone_model::zones_for caught it as if no zone were found).
+TEST(RefusedRows, CollocationZoneSearchFaultIsAFault) {
+    const double f = 0.3, Q = (1.0 - 1e-3) * f;
+    contact c(zone_scenes::tangential_dominates_a(), f, solver_options{48, method::product});
+    zone_solver search(c.tangential().zone_operator());
+    const std::optional<tangential_solution> clean = search.find(Q);
+    ASSERT_TRUE(clean.has_value());
+    ASSERT_TRUE(clean->layout.general() && clean->checks.hold());
+    stick_zone_operator faulty = c.tangential().zone_operator();
+    const auto solve = faulty.solve;
+    faulty.solve = [solve](double start, double end) -> tangential_solution {
+        if (start > -1.0) throw numerical_error("injected fault: singular zone system");
+        return solve(start, end);
+    };
+    zone_solver broken(std::move(faulty));
+    try {
+        const std::optional<tangential_solution> s = broken.find(Q);
+        ADD_FAILURE() << (s ? "a zone without its solve" : "the fault read as no zone");
+    } catch (const numerical_error& e) {
+        EXPECT_EQ(std::string(e.what()), "injected fault: singular zone system");
+    }
+    // Through the contact (zones = "auto"): the general search's fault, injected at its checkpoint (the last of the
+    // point's: the single zone and the levels below it come first), keeps its line.
+    const auto point = [&](int fault_at) {
+        contact p(zone_scenes::tangential_dominates_a(), f, solver_options{64, method::product});
+        int calls = 0;
+        p.set_checkpoint([&] {
+            if (++calls == fault_at) throw numerical_error("injected fault: singular zone system");
+        });
+        const tangential_solution s = p.point(Q);
+        return std::make_pair(s, calls);
+    };
+    const auto [answer, calls] = point(0);
+    ASSERT_TRUE(answer.layout.general() && answer.checks.hold());
+    try {
+        const tangential_solution s = point(calls).first;
+        ADD_FAILURE() << "answered, general " << s.layout.general() << ", checks hold " << s.checks.hold();
     } catch (const numerical_error& e) {
         EXPECT_EQ(std::string(e.what()), "injected fault: singular zone system");
     }

@@ -55,6 +55,12 @@ public:
         checkpoint();
         return zones_->solve(Q, true, guess);
     }
+    // The same search, empty where no zone of its structure carries Q (zone_solver::find); a numerical fault on the
+    // way stays a numerical_error.
+    virtual std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess> guess) {
+        checkpoint();
+        return zones_->find(Q, true, guess);
+    }
     tangential_solution like(const tangential_solution& s, method, int) override {
         return s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}) : single(s.Q, false);
     }
@@ -68,16 +74,15 @@ protected:
     tangential_solution zones_for(double Q, tangential_solution s, std::optional<zone_guess> guess) {
         if (options_.zones == zone_search::general) return general(Q, guess);
         if (options_.zones == zone_search::single || s.checks.hold()) return s;
-        // A structure the general search does not cover (no root, or its answer fails the checks
-        // too): the single zone, its checks failed.
+        // A structure the general search does not cover (no zone of it carries Q: an empty find, or a load the
+        // search refuses; or its answer fails the checks too): the single zone, its checks failed. A numerical fault
+        // of the search (a GSL status, a singular system) is not that statement and keeps its own line.
+        std::optional<tangential_solution> g;
         try {
-            tangential_solution g = general(Q, guess);
-            return g.checks.hold() ? g : s;
-        } catch (const resolution_error&) {  // no zone of the general structure (zone_solver.hpp)
-            return s;
-        } catch (const numerical_error&) {
-            return s;
+            g = find_general(Q, guess);
+        } catch (const resolution_error&) {
         }
+        return g && g->checks.hold() ? *g : s;
     }
 
     std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
@@ -218,6 +223,10 @@ public:
         checkpoint();
         return search(Q).solve(Q, true);
     }
+    std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess>) override {
+        checkpoint();
+        return search(Q).find(Q, true);
+    }
     tangential_solution point(double Q, const std::function<std::vector<int>()>&) override {
         tangential_solution s = limit_point(Q);
         if (limit_.beta_d() == 0.0 || s.checks.hold()) return s;
@@ -228,8 +237,7 @@ public:
         } else if (options_.zones != zone_search::single) {
             // Empty where no zone of the structure carries Q: its refusal is the one below. A numerical fault of
             // the search is not that statement and keeps its own line (numerical_error).
-            checkpoint();
-            searched = search(Q).find(Q, true);
+            searched = find_general(Q, std::nullopt);
         }
         refuse_dissimilar(searched.value_or(s));
     }

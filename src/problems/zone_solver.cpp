@@ -60,18 +60,13 @@ std::optional<double> stick_zone_end(const std::function<double(double)>& excess
 bool brackets_entry(const zone_trial& lo, const zone_trial& hi) { return !(lo.entry <= 0.0) != !(hi.entry <= 0.0); }
 
 // The trials at `starts`, in order, after `trials`. `to_first_bracket`: stop after the first trial whose entry
-// changes sign against the one before (brackets_entry), and at a start without a zone or whose zone fails to
-// solve (numerical_error); else every start is tried, one without a zone skipped.
+// changes sign against the one before (brackets_entry), and at a start without a zone; else every start is tried,
+// one without a zone skipped. A zone that fails to solve (numerical_error) is a fault either way, not "no zone".
 std::vector<zone_trial> scan_starts(const zone_family& family, std::vector<zone_trial> trials,
                                     const std::vector<double>& starts, bool to_first_bracket) {
     for (const double start : starts) {
         std::optional<zone_trial> t;
-        try {
-            if (const auto end = family.end(start))
-                t = zone_trial{start, *end, family.entry(family.solve(start, *end))};
-        } catch (const numerical_error&) {
-            if (!to_first_bracket) throw;
-        }
+        if (const auto end = family.end(start)) t = zone_trial{start, *end, family.entry(family.solve(start, *end))};
         if (!t) {
             if (to_first_bracket) break;
             continue;
@@ -216,9 +211,13 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     if (method.clustered) {
         for (int k = 1; k < method.scan; ++k) starts.push_back(-std::cos(M_PI * k / method.scan));
     } else {
+        // Starts inside (-1, 1) only: the zone from the leading edge is the opening trial's. Where r* = -1 (the
+        // one-parameter limit near gross sliding, 7(g)) every start of the scan to r* would be the edge, each zone
+        // [-1, c] there too short to solve (singular at Q/f = 1 - 1e-12): no start, no zone of the structure.
         const double top = method.scan_to_least_point ? least_point() : 1.0;
         for (int k = 1; k <= method.scan; ++k)
-            if (const double start = -1.0 + (top + 1.0) * k / method.scan; start < 1.0) starts.push_back(start);
+            if (const double start = -1.0 + (top + 1.0) * k / method.scan; start > -1.0 && start < 1.0)
+                starts.push_back(start);
     }
     std::vector<zone_trial> opening;
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
