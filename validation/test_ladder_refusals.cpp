@@ -245,7 +245,8 @@ TEST(LadderRefusals, FullCouplingEstimateCarriesItsLastLevelChange) {
 // The ladder's last line after rungs that refused (issue 24, review): a refusal whose line names no change
 // (unadvised_refusal: no three zones at this n) is followed by the ladder's advice; one whose line names it
 // (resolution_error) is not; one beyond every n (beyond_method_error) stops the climb at its rung, its line
-// alone. Every rung of the paper's problem refuses at its first level's solve (the contacts' checkpoint).
+// alone; one at the rounding limit (rounding_limit_error) stops it too, within the ladder's line. Every rung of the
+// paper's problem refuses at its first level's solve (the contacts' checkpoint).
 namespace {
 struct every_rung_refused {
     std::string line;
@@ -286,4 +287,18 @@ TEST(LadderRefusals, AdviceOnlyAfterARefusalNamingNoChange) {
     const every_rung_refused beyond = every_rung_refuses<beyond_method_error>("beyond every n; give Q = 0");
     EXPECT_EQ(beyond.rungs_built, 1);
     EXPECT_EQ(beyond.line, "beyond every n; give Q = 0");
+}
+
+// A rung whose zone ends' Newton stops at a rounding beyond its cap (rounding_limit_error, numerics/damped_newton.hpp):
+// that rounding grows with n, so the ladder climbs no higher and its line is the rung's, which names what lowers it,
+// with no advice added. Before, it was an empty search like any other, refused with "another n may find them", and
+// the ladder climbed to n = 1000 (four rungs built) to end on the top rung's line.
+TEST(LadderRefusals, RoundingLimitStopsTheClimb) {
+    const every_rung_refused limit = every_rung_refuses<rounding_limit_error>(
+        "the zone ends are not resolved at this n: give a smaller n, or a larger tolerance");
+    EXPECT_EQ(limit.rungs_built, 1);
+    EXPECT_TRUE(ends_with(limit.line,
+                          "(at n = 128: the zone ends are not resolved at this n: give a smaller n, or a larger "
+                          "tolerance)"))
+        << limit.line;
 }

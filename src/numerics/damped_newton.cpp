@@ -41,12 +41,12 @@ std::optional<std::vector<double>> newton_step(const std::vector<std::vector<dou
 }
 }  // namespace
 
-std::optional<newton_root> damped_newton(const newton_problem& problem, std::vector<double> x,
-                                         const newton_options& options) {
+newton_result damped_newton(const newton_problem& problem, std::vector<double> x, const newton_options& options) {
+    const newton_result none{newton_stop::no_root, std::nullopt};
     const auto inside = [&](const std::vector<double>& y) { return !problem.inside || problem.inside(y); };
-    if (!inside(x)) return std::nullopt;
+    if (!inside(x)) return none;
     auto F = problem.residual(x);
-    if (!F) return std::nullopt;
+    if (!F) return none;
     const std::size_t k = x.size();
     double last_full = -1.0;  // the size of the last step if it was a full one within F's rounding, else -1
     for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
@@ -57,11 +57,11 @@ std::optional<newton_root> damped_newton(const newton_problem& problem, std::vec
             std::vector<double> y = x;
             y[j] += h;
             const auto Fy = problem.residual(y);
-            if (!Fy) return std::nullopt;
+            if (!Fy) return none;
             for (std::size_t i = 0; i < F->size(); ++i) J[i][j] = ((*Fy)[i] - (*F)[i]) / h;
         }
         const auto dx = newton_step(J, *F);
-        if (!dx) return std::nullopt;
+        if (!dx) return none;
         // Damping: halve the step until it lands inside and F is defined there.
         double step = 1.0;
         std::vector<double> next(k);
@@ -70,20 +70,26 @@ std::optional<newton_root> damped_newton(const newton_problem& problem, std::vec
             for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + step * (*dx)[j];
             if (inside(next) && (F_next = problem.residual(next))) break;
             step *= 0.5;
-            if (step < options.min_step) return std::nullopt;
+            if (step < options.min_step) return none;
         }
         x = next;
         F = F_next;
         const double size = step == 1.0 ? problem.step_size(x, *dx) : -1.0;
-        if (step == 1.0 && size <= options.tolerance) return newton_root{x, iteration, options.tolerance};
-        // At the rounding floor: two full steps within F's rounding at x, the second not contracting, that rounding
-        // within the cap.
+        if (step == 1.0 && size <= options.tolerance)
+            return {newton_stop::root, newton_root{x, iteration, options.tolerance}};
+        // At the rounding floor: two full steps within F's rounding at x, the second not contracting. Within the cap
+        // a root to that rounding; beyond it the stop is the limit F's rounding sets, reported as such (the steps
+        // that follow are that rounding's: one below the tolerance would be chance).
         const double rounding = step == 1.0 && problem.rounding ? problem.rounding(x) : -1.0;
-        const bool rounded = step == 1.0 && size <= rounding && rounding <= options.rounding_cap * options.tolerance;
-        if (rounded && last_full >= 0.0 && size >= last_full) return newton_root{x, iteration, rounding};
+        const bool rounded = step == 1.0 && size <= rounding;
+        if (rounded && last_full >= 0.0 && size >= last_full) {
+            if (rounding <= options.rounding_cap * options.tolerance)
+                return {newton_stop::root, newton_root{x, iteration, rounding}};
+            return {newton_stop::rounding_limit, std::nullopt, rounding};
+        }
         last_full = rounded ? size : -1.0;
     }
-    return std::nullopt;
+    return none;
 }
 
 }  // namespace roughroll

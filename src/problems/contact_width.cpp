@@ -49,6 +49,8 @@ std::function<double(double)> width_function(const physical_scene& s, double a_H
     return [&s, a_H, &load_ratio](double x) {
         try {
             return load_ratio(roughness_at(s, x * a_H)) - x * x;
+        } catch (const rounding_limit_error& e) {  // its kind kept: the ladder climbs no higher
+            throw rounding_limit_error(at_width(x, a_H) + e.what());
         } catch (const resolution_error& e) {
             throw resolution_error(at_width(x, a_H) + e.what());
         } catch (const numerical_error& e) {

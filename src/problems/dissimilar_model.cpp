@@ -266,6 +266,9 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
         tangential_solution s = three(Q, guess, opposite);
         require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
         return s;
+    } catch (const rounding_limit_error&) {  // its line says what to change; not "another n"
+        if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
+        throw;
     } catch (const resolution_error& why) {
         if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
         if (!(std::fabs(Q) < f_)) throw;

@@ -523,6 +523,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     // either search is kept and, where neither structure answers, rethrown as the fault.
     std::optional<tangential_solution> found, failed;
     std::optional<numerical_error> fault;
+    std::optional<rounding_limit_error> limit;  // Newton at the ends' rounding beyond its cap: said as such
     for (const bool blend : {opposite, !opposite}) {
         try {
             tangential_solution t = zone_solver(zone_operator(blend, b, magnitude)).solve(magnitude, false, guess);
@@ -531,12 +532,15 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
                 break;
             }
             if (!failed) failed = t;
+        } catch (const rounding_limit_error& e) {
+            if (!limit) limit = e;
         } catch (const resolution_error&) {
         } catch (const numerical_error& e) {
             if (!fault) fault = e;
         }
     }
     if (!found && !failed && fault) throw *fault;
+    if (!found && !failed && limit) throw *limit;
     if (!found && !failed)
         throw unadvised_refusal(
             no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));

@@ -170,6 +170,8 @@ std::optional<five_zone_solution> dissimilar_zones::from_three_zones(double load
             return five_zones(load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, forcing);
         }
         holds = true;  // v > 0 up to the edge: the three zones are the answer
+    } catch (const rounding_limit_error&) {
+        throw;  // the ends' rounding at this n: no start answers
     } catch (const error&) {
         // no three zones carry this load (resolution_error), or W fails on them: no start from here
     }

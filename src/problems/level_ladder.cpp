@@ -147,11 +147,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     std::optional<best_reached> best;
     std::string last_reason, skipped, beyond_all;
     bool advised_last = false;  // the last rung tried refused the point with a line that says what to change
+    bool rounding_limit = false;  // the last rung tried met the ends' rounding limit, which grows with n: no rung above
+    int last_n = rungs_.back();   // the last rung tried
     std::vector<bool> skip(rungs_.size(), false);
-    for (std::size_t i = from; i < rungs_.size() && beyond_all.empty(); ++i) {
+    for (std::size_t i = from; i < rungs_.size() && beyond_all.empty() && !rounding_limit; ++i) {
         const int n = rungs_[i];
         if (skip[i]) continue;
         advised_last = false;
+        last_n = n;
         try {
             contact& c = at(n);
             answer a = solve(c, n);
@@ -191,6 +194,9 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
         } catch (const beyond_method_error&) {  // no rung can: its own line says what to change
             throw;
+        } catch (const rounding_limit_error& e) {  // its line says what to change; a larger n rounds worse
+            last_reason = one_line(e.what());
+            advised_last = rounding_limit = true;
         } catch (const unadvised_refusal& e) {  // this rung cannot answer, and its line names no change
             last_reason = one_line(e.what());
         } catch (const resolution_error& e) {  // this rung cannot answer: the next may; its line says what to change
@@ -210,7 +216,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             "another method" +
             (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {
-        msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + top + ": " + last_reason +
+        msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + std::to_string(last_n) +
+               ": " + last_reason +
                skipped + ")" + (advised_last ? "" : "; give n to see that point, or try another method or zone search");
     }
     throw resolution_error(msg);

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "roughroll/base/text.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
 
 namespace roughroll {
@@ -41,7 +43,7 @@ bool inside(const std::vector<double>& x, bool log_length) {
 }
 }  // namespace
 
-std::optional<newton_root> zone_newton(
+newton_result zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
     const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
     const std::function<double()>& rounding) {
@@ -71,6 +73,17 @@ std::optional<newton_root> zone_newton(
         x0.push_back(log_length ? std::log(half) : half);
     }
     return damped_newton(problem, x0, {max_iterations, tolerance, 1e-6});
+}
+
+std::string rounding_limit_refusal(const newton_result& stop, double tolerance) {
+    // The rounding is eps/rcond of the zone systems (ends_newton), which grows with n (1.5e-10, 8.6e-10, 4.0e-9 at
+    // n = 250, 500, 1000 on free rolling of the pair, docs/formulation.md 8(q)): a smaller n lowers it; with the
+    // ladder choosing n, a larger tolerance stops the climb at a smaller n.
+    return "the zone ends are not resolved at this n: the rounding of their systems (" + significant(stop.rounding, 3) +
+           " of the half-width) passes " + shortest(newton_options{}.rounding_cap) + " times their tolerance " +
+           shortest(tolerance) +
+           " and grows with n; give a smaller n, or a larger tolerance (solver.tolerance, --tolerance) where n is "
+           "the ladder's";
 }
 
 }  // namespace roughroll

@@ -46,6 +46,14 @@ public:
     using resolution_error::resolution_error;
 };
 
+// A refusal at the limit the rounding of this n sets (the zone ends' Newton stopped at a rounding beyond its cap,
+// numerics/damped_newton.hpp): the rounding grows with n, so its line advises a smaller n or a larger tolerance, and
+// the ladder of levels climbs no higher.
+class rounding_limit_error : public resolution_error {
+public:
+    using resolution_error::resolution_error;
+};
+
 // A numerical fault: a GSL status, a singular system, a non-finite result,
 // a root search without a bracket.
 class numerical_error : public error {

@@ -9,10 +9,12 @@
 // the second no smaller than the first (a contracting Newton step is far smaller than the one before:
 // what is left is F's rounding, below which a later step gets only by chance), and only where that
 // rounding is at most `rounding_cap` tolerances: an ill-conditioned F (a rounding near the iterate's
-// distance from the root) or a non-contracting cycle far from it is no root. Empty when it does not
-// converge: a singular or non-finite Jacobian, no admissible step, F undefined at x0 or at a
-// difference point, or max_iterations spent;
-// the callers then fall back to bracketing (Brent). Whatever F throws passes through.
+// distance from the root) or a non-contracting cycle far from it is no root. The result says why it
+// stopped (newton_stop): a root; at F's rounding beyond the cap (stopped there, as no later step can
+// tell more: the caller refuses with what lowers that rounding, not as for a search that may succeed
+// elsewhere); or no root: a singular or non-finite Jacobian, no admissible step, F undefined at x0 or
+// at a difference point, or max_iterations spent, where the callers fall back to bracketing (Brent).
+// Whatever F throws passes through.
 #pragma once
 
 #include <functional>
@@ -54,7 +56,19 @@ struct newton_root {
     double resolution;
 };
 
-std::optional<newton_root> damped_newton(const newton_problem& problem, std::vector<double> x0,
-                                         const newton_options& options);
+// Why damped_newton stopped.
+enum class newton_stop {
+    root,            // a full step below the tolerance, or the rounding stop within rounding_cap tolerances
+    rounding_limit,  // the rounding stop, F's rounding beyond rounding_cap tolerances: x is known to no better
+    no_root,         // no convergence (singular Jacobian, no admissible step, F undefined, iterations spent)
+};
+
+struct newton_result {
+    newton_stop stop;
+    std::optional<newton_root> root;  // where stop == root
+    double rounding = 0.0;            // at rounding_limit: F's rounding there (step_size's unit)
+};
+
+newton_result damped_newton(const newton_problem& problem, std::vector<double> x0, const newton_options& options);
 
 }  // namespace roughroll

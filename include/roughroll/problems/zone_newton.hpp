@@ -18,10 +18,12 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
@@ -30,6 +32,10 @@ namespace roughroll {
 // Newton's iterations in every zone search (zone_solver, the five zones).
 constexpr int zone_newton_iterations = 40;
 
+// The refusal where the zone ends' Newton stopped at a rounding beyond its cap (newton_stop::rounding_limit): what
+// limits the ends, and what lowers it.
+std::string rounding_limit_refusal(const newton_result& stop, double tolerance);
+
 // One stick zone of a Newton iterate: its ends and half-length (exp u with log_length, not (c - s)/2).
 struct stick_span {
     double start, end, rho;
@@ -37,9 +43,9 @@ struct stick_span {
 
 // The Newton iterations from the zones `from` to a root of `residual` (empty where the zones leave the family
 // the residuals describe), in (m, log rho) with `log_length`, else (m, rho); `rounding`: the ends' rounding at
-// the last residual's zones (damped_newton's), empty: below `tolerance`. Empty when it does not converge. The
-// last call of `residual` is at the root.
-std::optional<newton_root> zone_newton(
+// the last residual's zones (damped_newton's), empty: below `tolerance`; damped_newton's result (why it stopped).
+// The last call of `residual` is at the root.
+newton_result zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
     const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
     const std::function<double()>& rounding);
@@ -57,6 +63,8 @@ inline std::vector<const tangential_solution*> stick_systems(const tangential_so
 //   - else the blend (8(g); 8(j) item 3): F = ((Q(zones) - Q)/f, E(zone_1), ..., E(zone_k), (xi_1 - xi_2)/f, ...,
 //     (xi_{k-1} - xi_k)/f) in (m_i, rho_i), absolute (the blend's Q keeps f's scale: its zones do not collapse
 //     onto a point); k = 1 the three zones of dissimilar rollers, k = 2 the five zones.
+// Empty where Newton does not converge (the caller falls back or searches on); a rounding_limit_error where it stops
+// at the ends' rounding beyond its cap, which no other start at this n improves and a larger n makes worse.
 template <class Solution>
 std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
                                     const std::function<double(const tangential_solution&)>& entry, double Q, double f,
@@ -90,8 +98,11 @@ std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(
         for (const tangential_solution* t : stick_systems(*last)) rcond = std::min(rcond, t->rcond);
         return std::numeric_limits<double>::epsilon() / rcond;
     };
-    const std::optional<newton_root> root = zone_newton(residual, from, relative, max_iterations, tolerance,
-                                                        relative ? std::function<double()>{} : rounding);
+    const newton_result result = zone_newton(residual, from, relative, max_iterations, tolerance,
+                                             relative ? std::function<double()>{} : rounding);
+    if (result.stop == newton_stop::rounding_limit)
+        throw rounding_limit_error(rounding_limit_refusal(result, tolerance));
+    const std::optional<newton_root>& root = result.root;
     if (!root || !last) return std::nullopt;
     last->iterations = root->iterations;  // the solution at the root, the last one solved
     last->ends_resolution = root->resolution;
