@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Free rolling (Q = 0) of Bentall and Johnson's pair at full coupling (data/aluminium-on-steel.toml with
-// coupling = "full", issue 24, 7): `roughroll point --json` at the default settings near complete slip
-// (f = 1e-6, 1e-5, 1e-4), answered with its checks holding, the creep between the two limits and within
-// beta_D f of Johnson's level there (both levels agree to O(beta_D f) at complete slip, docs/formulation.md
-// 8(f)); the no-slip limit of full coupling (Bufler, 8(p)) checked independently: the fundamental function's
+// coupling = "full", issue 24, 7): near complete slip (f = 1e-6, 1e-5, 1e-4) refused at n = 128 where the
+// five zones' ends drift with n (docs/formulation.md 8(p), 8(q) "Changes that do not fall"); the no-slip limit of full coupling (Bufler, 8(p)) checked independently: the fundamental function's
 // identity by GSL's Cauchy principal value (QAWC), the limit's creep from its quadratures, and the program's
 // creeps at f = 0.1, 0.15, 0.19 extrapolated in the full level's layer thickness t_c to it, not to Johnson's.
 #include <cmath>
@@ -88,36 +86,22 @@ double hilbert_of(w_part w, double r, gsl_integration_workspace* ws) {
 void expect_full(const nlohmann::json& out) { EXPECT_EQ(out["coupling"]["level"], "full") << out.dump(); }
 }  // namespace
 
-// Near complete slip the two coupling levels agree to O(beta_D f) (8(f)): the pressure moves by beta_D p1 = O(beta_D f).
-// f = 1e-6 had run for minutes (the five zones' Newton on stick zones 1.8e-5 long, the difference step below the
-// ends' rounding: zone_newton.cpp); answered at the default settings with its checks holding.
-TEST(FullCouplingEveryF, CompleteSlipSideAgreesWithJohnsonsLevel) {
+// Near complete slip the five zones' ends at full coupling drift (8(p), "Complete slip at full coupling"): at f = 1e-6
+// c0 changes by the same 1.3e-7 per doubling of n from 32 to 512, as if a + b log n, and P_H/P2 likewise at f = 1e-5 and
+// 1e-4 (2e-12, 1.9e-10 per doubling), while Johnson's level converges to 2e-15. Twice the larger change was no bound
+// there (at f = 1e-6, 0.95 of the distance to n = 512 already), so such levels give no estimate (8(q), "Changes that
+// do not fall"): each point at n = 128 is refused, naming the quantity and its changes; Johnson's level answers.
+TEST(FullCouplingEveryF, CompleteSlipSideRefusedWhereTheEndsDrift) {
     const std::string full = scene_with("full"), johnson = std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml";
     ASSERT_FALSE(full.empty());
-    const double xi0 = complete_slip_limit();
-    const double epsilon = epsilon_of(beta_al_st);
-    const double no_slip = 4.0 * epsilon / (M_PI * (1.0 + 4.0 * epsilon * epsilon));
-    double previous = -1.0;
     for (const double f : {1e-6, 1e-5, 1e-4}) {
         SCOPED_TRACE(f);
-        const answered a = point_of(full, f), j = point_of(johnson, f);
-        ASSERT_EQ(a.status, 0) << a.text;
+        const answered a = point_of(full, f, "--n 128"), j = point_of(johnson, f, "--n 128");
+        EXPECT_NE(a.status, 0) << a.text;
+        EXPECT_NE(a.text.find("(dissimilar rollers, full coupling)"), std::string::npos) << a.text;
+        EXPECT_NE(a.text.find("does not converge visibly over the levels n = 32, 64, 128"), std::string::npos) << a.text;
         ASSERT_EQ(j.status, 0) << j.text;
-        expect_full(a.out);
-        EXPECT_TRUE(a.out["checks_hold"].get<bool>()) << a.out["checks"].dump();
-        EXPECT_EQ(a.out["zones"].size(), 5u) << a.text;  // slip, stick, reversed slip, stick, slip (8(j))
-        const double xi = a.out["xi"], estimate = a.out["error_estimate"]["xi"];
-        const double xi_j = j.out["xi"], estimate_j = j.out["error_estimate"]["xi"];
-        // Between the limits, rising with f (towards the no-slip creep).
-        EXPECT_GT(xi, xi0 - estimate);
-        EXPECT_LT(xi, no_slip);
-        EXPECT_GT(xi, previous);
-        previous = xi;
-        // The coupling's effect O(beta_D f): measured 1.3e-11, 1.1e-9, 8.1e-8 at f = 1e-6, 1e-5, 1e-4 (1e-4 to 6e-3 of
-        // beta_D f).
-        EXPECT_LE(std::fabs(xi - xi_j), beta_al_st * f + estimate + estimate_j) << xi << " " << xi_j;
-        // Complete slip approached (8(f)): measured 0.001 f, 0.006 f, 0.034 f from the limit (Johnson's level alike).
-        EXPECT_LE(std::fabs(xi - xi0), 0.1 * f + estimate) << xi - xi0;
+        EXPECT_TRUE(j.out["checks_hold"].get<bool>()) << j.text;
     }
     std::remove(full.c_str());
 }

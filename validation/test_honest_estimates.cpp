@@ -333,11 +333,25 @@ TEST(HonestEstimates, OneRuleForEveryStructure) {
     }
     EXPECT_EQ(solved, 0) << "no second chance for a point whose checks fail";
 
+    // Full coupling (8(e), 8(q) "Changes that do not fall"): equal changes (d1 = d2) show no convergence and refuse;
+    // changes falling by 4 per doubling give twice the larger; by 4/3 the geometric rest 2 |d2|/(d1/d2 - 1).
     p.structure = estimate_structure::full_coupling;
-    const error_estimate c = estimate_from_levels(table, levels, finer, p);
-    EXPECT_EQ(c.xi, 2.0);  // twice the larger of |2 - 1| and |3 - 2|
+    try {
+        estimate_from_levels(table, levels, finer, p);
+        ADD_FAILURE() << "full coupling's levels whose changes do not fall must refuse the point";
+    } catch (const resolution_error& why) {
+        EXPECT_NE(std::string(why.what()).find("xi does not converge visibly over the levels n = 16, 32, 64"),
+                  std::string::npos)
+            << why.what();
+    }
+    const auto full_estimate = [&](double coarsest, double middle, double finest) {
+        return estimate_from_levels(table, {level(coarsest), level(middle), level(finest)}, finer, p);
+    };
+    const error_estimate c = full_estimate(1.0, 3.0, 3.5);
+    EXPECT_EQ(c.xi, 4.0);  // twice the larger of |3 - 1| and |3.5 - 3|
     EXPECT_TRUE(c.bounded);
     EXPECT_EQ(c.against.rfind("levels n/4, n/2, n (dissimilar rollers, full coupling", 0), 0u) << c.against;
+    EXPECT_DOUBLE_EQ(full_estimate(1.0, 2.0, 2.75).xi, 2.0 * 0.75 / (1.0 / 0.75 - 1.0));  // 4.5, not 2
 }
 
 // Level 2n, once solved for one quantity, confirms every other (point_estimate.cpp): made-up levels
