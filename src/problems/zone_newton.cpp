@@ -15,8 +15,10 @@ namespace roughroll {
 namespace {
 // The difference step of the Jacobian in (m, rho) is 1e-7 rho, but at least 16 times the ends' rounding eps/rcond
 // (ends_newton's `rounding`, where given) and 2^16 eps: the residuals carry that rounding, and a step near it measures
-// noise. Only stick zones shorter than about 1e-3 meet the floor at n <= 1000: the five zones near complete slip, whose
-// stick zones are O(f/beta_D) long (1.8e-5 at f = 1e-6 for aluminium on steel, docs/formulation.md 8(f)); there the
+// noise. The floor passes 1e-7 rho where rho < 16 (eps/rcond)/1e-7: with eps/rcond 1.5e-10, 8.6e-10, 4.0e-9 at n = 250,
+// 500, 1000 (8(q)), rho below 0.024, 0.14, 0.64, so at large n it sets the step of most zones (their points move by
+// the stopping rule's rounding, 8(p)). It was made for the five zones near complete slip, whose stick zones are
+// O(f/beta_D) long (1.8e-5 at f = 1e-6 for aluminium on steel, docs/formulation.md 8(f)); there the
 // step 1e-7 rho, 9e-13 in r, lay below the rounding 4e-12 (n = 65) to 2.3e-11 (n = 129), and full coupling's
 // alternation, whose pressure is a series, wandered without converging at every n (8(p), "Complete slip at full
 // coupling").
