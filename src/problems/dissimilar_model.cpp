@@ -14,6 +14,7 @@
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/point_model.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
@@ -87,7 +88,9 @@ public:
         if (s.layout.stick_zones() != 2) return three(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
         // Five zones (8(j)): the level from the point's ends (Newton), else its own search.
         const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
-        if (std::optional<tangential_solution> t = five(s.Q, &ends)) return *t;
+        rounding_limits met;
+        if (std::optional<tangential_solution> t = five(s.Q, &ends, met)) return *t;
+        if (met.met()) throw rounding_limit_error(met.refusal());
         throw resolution_error(no_honest_estimate(how, n, structure()) + "level " + std::to_string(nodes()) +
                                " finds no five zones at Q = " + shortest(s.Q) + " from level n's zones; " +
                                (n < max_nodes ? "another n (at most " + std::to_string(max_nodes) + ") may find them"
@@ -188,8 +191,9 @@ private:
     }
     // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the coarser level's)
     // when given, as the point at the load asked (Newton's differs by its residual, 1e-17 at Q = 0; full
-    // coupling's alternation solves at Q); empty when none are found. Cached per Q.
-    std::optional<tangential_solution> five(double Q, const std::vector<double>* ends) {
+    // coupling's alternation solves at Q); empty when none are found (the rounding limits met on the way noted in
+    // `met`). Cached per Q.
+    std::optional<tangential_solution> five(double Q, const std::vector<double>* ends, rounding_limits& met) {
         checkpoint();
         if (!(last_five_ && last_five_load_ == Q)) {
             std::optional<five_zone_solution> v;
@@ -200,7 +204,7 @@ private:
                 std::vector<five_zone_start> first;
                 if (ends) first.push_back(five_zone_start::at_ends(*ends));
                 if (last_five_) first.push_back(five_zone_start::continuing(*last_five_));
-                v = zones_.five_zones(Q, std::move(first));
+                v = zones_.five_zones(Q, std::move(first), &met);
             } catch (const numerical_error&) {
                 v.reset();  // no five zones found on this level
             }
@@ -213,14 +217,17 @@ private:
         return s;
     }
     // The point of five zones at Q, the levels `below` first (each from the ends of the one below it);
-    // empty where none are found, or at |Q| >= f, where none are searched.
-    std::optional<tangential_solution> five_point(double Q, const std::vector<johnson_model*>& below);
+    // empty where none are found (the rounding limits met on the way noted in `met`), or at |Q| >= f, where none are
+    // searched.
+    std::optional<tangential_solution> five_point(double Q, const std::vector<johnson_model*>& below,
+                                                  rounding_limits& met);
     // The point of five zones at Q by Newton alone on every level, the coarsest from `ends` (a curve's previous
     // row, continued in the load), each other from the level below; empty where Newton does not converge on a
     // level or the checks of this level's zones fail, with no level's cache touched: the point's own search
-    // then answers. Kept as each level's five zones at Q where it answers (the estimate's levels reuse them).
+    // then answers. Kept as each level's five zones at Q where it answers (the estimate's levels reuse them). A
+    // Newton stopped at the ends' rounding limit is noted in `met`.
     std::optional<tangential_solution> five_continued(double Q, const std::vector<johnson_model*>& below,
-                                                      std::vector<double> ends);
+                                                      std::vector<double> ends, rounding_limits& met);
 
     std::optional<double> layers_;
     std::optional<tangential_solution> last_three_;
@@ -232,6 +239,8 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
                                                  const tangential_solution* previous) {
     std::optional<zone_guess> guess;
     bool opposite = false;
+    // The ends' rounding limit met by a route below (zone_newton.hpp): the refusal where no route answers.
+    rounding_limits met;
     // A curve's previous row as the coarsest level's start (zone_start.hpp: a layout already solved, continued in
     // the load; 8(j) 10): its five zones by Newton from their ends, its three zones as the zone search's guess
     // (zone_solver: Newton, the scan where Newton fails or lands on a zone failing the checks). Rows of gross
@@ -239,7 +248,7 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
     if (previous && std::fabs(previous->Q) < f_ && std::fabs(Q) < f_ && !previous->layout.layers_neglected()) {
         if (previous->layout.stick_zones() == 2) {
             if (std::optional<tangential_solution> s = five_continued(
-                    Q, below, {previous->start(), previous->c0(), previous->start2(), previous->end2()}))
+                    Q, below, {previous->start(), previous->c0(), previous->start2(), previous->end2()}, met))
                 return *s;
         } else if (previous->layout.stick_zones() == 1 && previous->start() > -1.0) {
             guess = zone_guess{previous->start(), previous->c0()};
@@ -261,16 +270,18 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
     // numerical fault of their search: five zones (|Q| < f; on the braked side, Q/sgn(beta_D) < 0,
     // until the slip+ zone closes, 8(j) 4a). Where none are found either, the first error stands: a fault
     // aborts; a structure not found at this n is a refusal (a curve's refused row, docs/robustness.md),
-    // saying so. Each `throw;` is inside the handler of the error it rethrows (outside one it terminates).
+    // saying so, or the ends' rounding limit where a route met it. Each `throw;` is inside the handler of the error it
+    // rethrows (outside one it terminates).
     try {
         tangential_solution s = three(Q, guess, opposite);
         require_checks(s);  // a point reported holds (3.3)-(3.4); a level of its estimate need not
         return s;
     } catch (const rounding_limit_error&) {  // its line says what to change; not "another n"
-        if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
+        if (std::optional<tangential_solution> s = five_point(Q, below, met)) return *s;
         throw;
     } catch (const resolution_error& why) {
-        if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
+        if (std::optional<tangential_solution> s = five_point(Q, below, met)) return *s;
+        if (met.met()) throw rounding_limit_error(met.refusal());
         if (!(std::fabs(Q) < f_)) throw;
         throw resolution_error(std::string(why.what()) +
                                "; no five zones (slip, stick, reversed slip, stick, slip) are found at n = " +
@@ -279,13 +290,13 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
                                "find them, except on the driven side closer than Q/f = 0.998 to gross sliding, "
                                "which no n reaches yet (docs/robustness.md)");
     } catch (const numerical_error&) {
-        if (std::optional<tangential_solution> s = five_point(Q, below)) return *s;
+        if (std::optional<tangential_solution> s = five_point(Q, below, met)) return *s;
         throw;
     }
 }
 
 std::optional<tangential_solution> johnson_model::five_continued(double Q, const std::vector<johnson_model*>& below,
-                                                                 std::vector<double> ends) {
+                                                                 std::vector<double> ends, rounding_limits& met) {
     std::vector<johnson_model*> levels = below;
     levels.push_back(this);
     std::vector<five_zone_solution> found;
@@ -293,7 +304,7 @@ std::optional<tangential_solution> johnson_model::five_continued(double Q, const
         level->checkpoint();
         std::optional<five_zone_solution> v;
         try {
-            v = level->zones_.five_zones(Q, ends);  // Newton from the ends (damped_newton), empty where it fails
+            v = level->zones_.five_zones(Q, ends, std::nullopt, &met);  // Newton from the ends, empty where it fails
         } catch (const numerical_error&) {
         }
         if (!v) return std::nullopt;
@@ -311,14 +322,15 @@ std::optional<tangential_solution> johnson_model::five_continued(double Q, const
     return s;
 }
 
-std::optional<tangential_solution> johnson_model::five_point(double Q, const std::vector<johnson_model*>& below) {
+std::optional<tangential_solution> johnson_model::five_point(double Q, const std::vector<johnson_model*>& below,
+                                                             rounding_limits& met) {
     if (!(std::fabs(Q) < f_)) return std::nullopt;
     std::vector<double> ends;
     for (johnson_model* level : below) {
-        const std::optional<tangential_solution> v = level->five(Q, ends.empty() ? nullptr : &ends);
+        const std::optional<tangential_solution> v = level->five(Q, ends.empty() ? nullptr : &ends, met);
         ends = v ? std::vector<double>{v->start(), v->c0(), v->start2(), v->end2()} : std::vector<double>{};
     }
-    std::optional<tangential_solution> s = five(Q, ends.empty() ? nullptr : &ends);
+    std::optional<tangential_solution> s = five(Q, ends.empty() ? nullptr : &ends, met);
     if (!s) return std::nullopt;
     // Failing checks on a converged root: zones thinner than n resolves (f = 0.3 for aluminium
     // on steel at n = 32, 8(j) 4a), or Newton from under-resolved coarser ends landing on another

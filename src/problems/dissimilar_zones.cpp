@@ -519,28 +519,29 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     // The structure the hint names first (the coarser level's, when extrapolating), then the other one: both slip
     // zones in the direction of Q, or the leading one against it (at |Q| = f both are the zone search's gross
     // sliding). The first whose checks hold is the answer; else one that fails them, for the caller to refuse.
-    // A structure with no zone is a resolution_error; a numerical fault (a GSL status, a singular system) of
-    // either search is kept and, where neither structure answers, rethrown as the fault.
+    // A structure with no zone is an empty find; a numerical fault (a GSL status, a singular system) of either search
+    // is kept and, where neither structure answers, rethrown as the fault; where neither answers and a Newton of either
+    // stopped at the ends' rounding limit, that is the refusal (zone_newton.hpp).
     std::optional<tangential_solution> found, failed;
     std::optional<numerical_error> fault;
-    std::optional<rounding_limit_error> limit;  // Newton at the ends' rounding beyond its cap: said as such
+    rounding_limits met;
     for (const bool blend : {opposite, !opposite}) {
         try {
-            tangential_solution t = zone_solver(zone_operator(blend, b, magnitude)).solve(magnitude, false, guess);
-            if (t.checks.hold()) {
+            std::optional<tangential_solution> t =
+                zone_solver(zone_operator(blend, b, magnitude)).find(magnitude, false, guess, met);
+            if (!t) continue;
+            if (t->checks.hold()) {
                 found = t;
                 break;
             }
             if (!failed) failed = t;
-        } catch (const rounding_limit_error& e) {
-            if (!limit) limit = e;
         } catch (const resolution_error&) {
         } catch (const numerical_error& e) {
             if (!fault) fault = e;
         }
     }
     if (!found && !failed && fault) throw *fault;
-    if (!found && !failed && limit) throw *limit;
+    if (!found && !failed && met.met()) throw rounding_limit_error(met.refusal());
     if (!found && !failed)
         throw unadvised_refusal(
             no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));

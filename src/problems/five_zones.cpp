@@ -92,10 +92,11 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
 }
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends,
-                                                               std::optional<double> beta) {
+                                                               std::optional<double> beta, rounding_limits* met) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     const double forcing = beta.value_or(std::fabs(beta_d_));
+    rounding_limits own;  // where the caller keeps none
     // The zone search's Newton in the blend's stick zones (ends_newton, k = 2): the load's gap, both entry
     // conditions psi_k(-1) = 0 and xi1 = xi2, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
     auto s = ends_newton<five_zone_solution>(
@@ -107,7 +108,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
             }
         },
         zone_solver::entry_coefficient, Q, f_, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}}, false,
-        zone_newton_iterations, zone_end_resolution);
+        zone_newton_iterations, zone_end_resolution, met ? *met : own);
     if (s) s->checks = check(*s);
     return s;
 }
@@ -156,37 +157,42 @@ std::vector<five_zone_start> dissimilar_zones::search_starts(double Q) const {
     return starts;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::from_three_zones(double load, double forcing, bool& holds) {
+std::optional<five_zone_solution> dissimilar_zones::from_three_zones(double load, double forcing, bool& holds,
+                                                                     rounding_limits& met) {
     // slip-, stick [s, c], slip+ leave v < 0 near the trailing edge (8(j) item 4): the second zone from there.
     holds = false;
     const double frame = (beta_d_ > 0.0 ? 1.0 : -1.0) * load;
     try {
-        const tangential_solution three = zone_solver(zone_operator(true, forcing, frame)).solve(frame);
+        const std::optional<tangential_solution> found =
+            zone_solver(zone_operator(true, forcing, frame)).find(frame, false, std::nullopt, met);
+        if (!found) return std::nullopt;  // no three zones carry this load: no start from here
+        const tangential_solution& three = *found;
         constexpr int samples = 400;
         for (int i = 1; i <= samples; ++i) {
             const double r = i == samples ? 1.0 : three.c0() + (1.0 - three.c0()) * i / samples;
             if (!(slip_velocity(three, r) < 0.0)) continue;
             const double turn = three.c0() + (1.0 - three.c0()) * (i - 0.5) / samples;
-            return five_zones(load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, forcing);
+            return five_zones(load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, forcing, &met);
         }
         holds = true;  // v > 0 up to the edge: the three zones are the answer
-    } catch (const rounding_limit_error&) {
-        throw;  // the ends' rounding at this n: no start answers
     } catch (const error&) {
-        // no three zones carry this load (resolution_error), or W fails on them: no start from here
+        // a load the three zones' search refuses (resolution_error), or W fails on them: no start from here
     }
     return std::nullopt;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::vector<five_zone_start> starts) {
+std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::vector<five_zone_start> starts,
+                                                               rounding_limits* met) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
+    rounding_limits kept;  // where the caller keeps none
+    rounding_limits& limits = met ? *met : kept;
     const std::vector<five_zone_start> own = search_starts(Q);
     starts.insert(starts.end(), own.begin(), own.end());
     for (const five_zone_start& start : starts) {
         double load = Q, forcing = std::fabs(beta_d_);  // where s is, nominally (Newton's load differs by its residual)
         std::optional<five_zone_solution> s;
         if (start.from == five_zone_start::base::ends) {
-            s = five_zones(Q, start.ends, forcing);
+            s = five_zones(Q, start.ends, forcing, &limits);
         } else if (start.from == five_zone_start::base::solved) {
             s = start.solved;
             load = s->Q;
@@ -195,7 +201,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
             bool holds = false;
             load = start.load;
             forcing = start.forcing;
-            s = from_three_zones(load, forcing, holds);
+            s = from_three_zones(load, forcing, holds, limits);
             if (holds && load == Q) return std::nullopt;  // not five zones: dissimilar_zones::solve answers Q
         }
         std::vector<zone_leg> path = start.path;
@@ -207,7 +213,8 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
                 *s, at, path[leg].target, in_load ? load_step * f_ : forcing_step,
                 in_load ? smallest_load_step * f_ : smallest_forcing_step, !in_load,
                 [&](double next, const five_zone_solution& p) {
-                    return five_zones(in_load ? next : load, {p.s1, p.c1, p.s2, p.c2}, in_load ? p.forcing : next);
+                    return five_zones(in_load ? next : load, {p.s1, p.c1, p.s2, p.c2}, in_load ? p.forcing : next,
+                                      &limits);
                 });
             if (!s && leg >= start.shared_after) return std::nullopt;
             at = path[leg].target;

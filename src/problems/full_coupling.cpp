@@ -12,6 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
@@ -56,7 +57,10 @@ namespace {
 tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f) {
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
-        const auto v = z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()});
+        rounding_limits met;
+        const auto v =
+            z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()}, std::nullopt, &met);
+        if (!v && met.met()) throw rounding_limit_error(coupling_at_load(Q, f) + met.refusal());
         if (!v)
             throw resolution_error(coupling_at_load(Q, f) +
                                    "the five zones (slip, stick, reversed slip, stick, slip) are not found again "

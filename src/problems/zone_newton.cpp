@@ -77,13 +77,20 @@ newton_result zone_newton(
     return damped_newton(problem, x0, {max_iterations, tolerance, 1e-6});
 }
 
-std::string rounding_limit_refusal(const newton_result& stop, double tolerance) {
+void rounding_limits::note(const newton_result& stop, double tolerance) {
+    if (stop.stop != newton_stop::rounding_limit || (met_ && stop.rounding <= rounding_)) return;
+    met_ = true;
+    rounding_ = stop.rounding;
+    tolerance_ = tolerance;
+}
+
+std::string rounding_limits::refusal() const {
     // The rounding is eps/rcond of the zone systems (ends_newton), which grows with n (1.5e-10, 8.6e-10, 4.0e-9 at
     // n = 250, 500, 1000 on free rolling of the pair, docs/formulation.md 8(q)): a smaller n lowers it; with the
     // ladder choosing n, a larger tolerance stops the climb at a smaller n.
-    return "the zone ends are not resolved at this n: the rounding of their systems (" + significant(stop.rounding, 3) +
+    return "the zone ends are not resolved at this n: the rounding of their systems (" + significant(rounding_, 3) +
            " of the half-width) passes " + shortest(newton_options{}.rounding_cap) + " times their tolerance " +
-           shortest(tolerance) +
+           shortest(tolerance_) +
            " and grows with n; give a smaller n, or a larger tolerance (solver.tolerance, --tolerance) where n is "
            "the ladder's";
 }

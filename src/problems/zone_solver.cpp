@@ -109,17 +109,18 @@ tangential_solution searched_point(tangential_solution s, double Q, const char* 
     return s;
 }
 
-// Newton in the zone ends at |Q| (ends_newton, zone_newton.hpp).
-zone_newton_from newton_at(const stick_zone_operator& op, double magnitude) {
-    return [&op, magnitude](double start, double end) {
+// Newton in the zone ends at |Q| (ends_newton, zone_newton.hpp), its stops at the rounding limit noted in `met`.
+zone_newton_from newton_at(const stick_zone_operator& op, double magnitude, rounding_limits& met) {
+    return [&op, magnitude, &met](double start, double end) {
         // The operator's residuals (ends_newton): relative for the zones of one slip direction (7(e), 7(g)),
-        // absolute for the blended zones of 8(g). Empty when it does not converge: the caller falls back to Brent.
+        // absolute for the blended zones of 8(g). Empty when it does not converge, or stops at the rounding limit:
+        // the caller falls back to Brent, or to its next start.
         return ends_newton<tangential_solution>(
             [&op](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
                 return op.solve(z[0].start, z[0].end);
             },
             op.newton_entry, magnitude, op.f, {{start, end, 0.0}}, op.method.relative_load, zone_newton_iterations,
-            op.method.newton_tolerance);
+            op.method.newton_tolerance, met);
     };
 }
 
@@ -134,13 +135,13 @@ struct found {
 // first zone solved whose checks fail.
 std::optional<found> bracketed(const stick_zone_operator& op, const zone_family& zones,
                                const std::vector<zone_trial>& trials, double magnitude,
-                               std::optional<tangential_solution>& first) {
+                               std::optional<tangential_solution>& first, rounding_limits& met) {
     const bool every = op.method.every_bracket;
     for (std::size_t k = 1; k < trials.size(); ++k) {
         if (!brackets_entry(trials[k - 1], trials[k])) continue;
         std::optional<tangential_solution> s;
         try {
-            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton_at(op, magnitude));
+            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton_at(op, magnitude, met));
         } catch (const numerical_error&) {
             if (!every) throw;
             continue;  // a bracket that fails to solve: the next one may answer
@@ -155,9 +156,10 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_family&
 }
 
 // The general search at |Q| = magnitude; single_end: the paper's zone's c0 at this load, when it was solved
-// (saves one search). Empty where the scan ends on no bracket: no zone of the structure carries |Q|.
+// (saves one search). Empty where the scan ends on no bracket: no zone of the structure carries |Q|, or none is
+// found where a Newton of the search stopped at the rounding limit (noted in `met`).
 std::optional<found> general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
-                                    std::optional<double> single_end) {
+                                    std::optional<double> single_end, rounding_limits& met) {
     const double f = op.f;
     const zone_search_method& method = op.method;
     // Q(start, c0) - |Q| falls from the empty zone's load (c0 = start) as the zone grows (7(c)), in the
@@ -200,11 +202,11 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     // Near gross sliding: from the operator's model zone at r*, before the coarse level's guess,
     // which rounding makes no better.
     if (op.near_sliding && f - magnitude <= near_sliding * f)
-        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude)))
+        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude, met)))
             return found{*s, false, false};
     // Newton from the coarse level's zone when extrapolating.
     if (guess && guess->start > -1.0)
-        if (auto s = newton_at(op, magnitude)(guess->start, guess->c0)) return found{*s, false, true};
+        if (auto s = newton_at(op, magnitude, met)(guess->start, guess->c0)) return found{*s, false, true};
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
     // (7(e), zone_family above), the zone from the leading edge (where the structure has one) first.
     std::vector<double> starts;
@@ -223,7 +225,7 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
     const std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
     std::optional<tangential_solution> first;
-    if (auto s = bracketed(op, zones, trials, magnitude, first)) return *s;
+    if (auto s = bracketed(op, zones, trials, magnitude, first, met)) return *s;
     if (method.every_bracket && !first && !trials.empty()) {
         // Near gross sliding the leading slip zone of dissimilar rollers thins below the clustered scan's
         // first start, 1 - cos(pi/32) = 4.8e-3 from the edge (the stick zone closes on the leading edge as
@@ -233,7 +235,7 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
         for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) near_edge.push_back(-1.0 + gap);
         std::vector<zone_trial> edge = scan_starts(zones, {}, near_edge, false);
         edge.push_back(trials.front());
-        if (auto s = bracketed(op, zones, edge, magnitude, first)) return *s;
+        if (auto s = bracketed(op, zones, edge, magnitude, first, met)) return *s;
     }
     if (first) return found{*first, true, false};  // the caller refuses it: its checks fail
     // Where the scan ends on no bracket, no zone of this structure carries the load (not a numerical
@@ -251,6 +253,14 @@ double zone_solver::entry_coefficient(const tangential_solution& s) {
 }
 
 std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, std::optional<zone_guess> guess) {
+    rounding_limits met;
+    std::optional<tangential_solution> s = find(Q, force_general, guess, met);
+    if (!s && met.met()) throw rounding_limit_error(met.refusal());
+    return s;
+}
+
+std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, std::optional<zone_guess> guess,
+                                                     rounding_limits& met) {
     const double magnitude = load_magnitude(Q, op_.f);
     const std::optional<tangential_solution> single = op_.paper_zone(Q, force_general && magnitude != 0.0);
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
@@ -258,7 +268,7 @@ std::optional<tangential_solution> zone_solver::find(double Q, bool force_genera
     check_load_resolvable(magnitude, op_.f);
     if (magnitude == op_.f) return searched_point(op_.gross_sliding(), Q, op_.method.name, op_.check);
     const auto search = [&](std::optional<zone_guess> g) {
-        std::optional<found> z = general_search(op_, magnitude, g, single_end);
+        std::optional<found> z = general_search(op_, magnitude, g, single_end, met);
         // The checks the scan made in the |Q| frame are Q's: the mirror changes the signs of p1 and v together.
         if (z)
             z->zone = searched_point(std::move(z->zone), Q, op_.method.name,

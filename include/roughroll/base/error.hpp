@@ -47,8 +47,9 @@ public:
 };
 
 // A refusal at the limit the rounding of this n sets (the zone ends' Newton stopped at a rounding beyond its cap,
-// numerics/damped_newton.hpp): the rounding grows with n, so its line advises a smaller n or a larger tolerance, and
-// the ladder of levels climbs no higher.
+// numerics/damped_newton.hpp), thrown by a zone search that found nothing on any of its routes, the limit met on one
+// (problems/zone_newton.hpp, rounding_limits): the rounding grows with n, so its line advises a smaller n, and the
+// ladder of levels climbs no higher.
 class rounding_limit_error : public resolution_error {
 public:
     using resolution_error::resolution_error;

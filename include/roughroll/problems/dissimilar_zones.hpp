@@ -172,14 +172,20 @@ public:
 
     // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1, s2, c2) (damped_newton),
     // with the forcing `beta` in place of |beta_D| where given (a step of the continuation in beta_D/f); empty
-    // when Newton does not converge. The checks are made, not acted on.
+    // when Newton does not converge, and where it stops at the ends' rounding limit, noted in `met` where given
+    // (zone_newton.hpp: the caller refuses with it where none of its routes answers). The checks are made, not
+    // acted on.
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends,
-                                                 std::optional<double> beta = std::nullopt);
+                                                 std::optional<double> beta = std::nullopt,
+                                                 rounding_limits* met = nullptr);
     // Five zones at load Q, |Q| < f, from the starts `first` (the coarser level's ends, a curve's previous row),
     // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q is the answer; empty where
     // none does, where the continuation ends on the braked side (the three zones of a braked roller 1 answer), and
-    // where the driven three zones at Q keep v > 0 up to the trailing edge (they answer).
-    std::optional<five_zone_solution> five_zones(double Q, std::vector<five_zone_start> first);
+    // where the driven three zones at Q keep v > 0 up to the trailing edge (they answer). A start whose Newton (of
+    // the three zones or the five) stops at the ends' rounding limit gives nothing, the next start is tried; the
+    // limit is noted in `met` where given.
+    std::optional<five_zone_solution> five_zones(double Q, std::vector<five_zone_start> first,
+                                                 rounding_limits* met = nullptr);
     std::optional<five_zone_solution> five_zones(double Q) { return five_zones(Q, std::vector<five_zone_start>{}); }
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
     five_zone_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
@@ -196,7 +202,7 @@ private:
     std::vector<five_zone_start> search_starts(double Q) const;  // five_zones(Q)'s own starts
     // Newton from the driven three zones at `load` with `forcing`; `holds` where their v stays positive up to the
     // edge (they are the answer: no five zones).
-    std::optional<five_zone_solution> from_three_zones(double load, double forcing, bool& holds);
+    std::optional<five_zone_solution> from_three_zones(double load, double forcing, bool& holds, rounding_limits& met);
     double load_under_H(double start, double c0);           // int p H over [-1, 1] for the zone [start, c0]
     // The three zones at |Q| = magnitude with the forcing b as the one zone search's operator: both slip
     // zones in the direction of Q (`opposite` false), or the leading one against it (8(g)).

@@ -23,7 +23,6 @@
 
 #include <gsl/gsl_math.h>
 
-#include "roughroll/base/error.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
@@ -32,9 +31,23 @@ namespace roughroll {
 // Newton's iterations in every zone search (zone_solver, the five zones).
 constexpr int zone_newton_iterations = 40;
 
-// The refusal where the zone ends' Newton stopped at a rounding beyond its cap (newton_stop::rounding_limit): what
-// limits the ends, and what lowers it.
-std::string rounding_limit_refusal(const newton_result& stop, double tolerance);
+// The rounding limits a search met on its routes (newton_stop::rounding_limit: the zone ends' Newton stopped at a
+// rounding beyond its cap). To a route such a stop is "no root from here": it tries its next start, bracket or
+// fallback (Brent), as for any Newton without a root, and notes the stop here. Only the search that ends with nothing
+// on every route, the limit met on one of them, refuses with it (rounding_limit_error, `refusal`): the rounding grows
+// with n, so "no zones at this n" would advise the wrong change (docs/formulation.md 8(q), "The stop's reason").
+class rounding_limits {
+public:
+    // Notes damped_newton's stop where it is the rounding limit (Newton's tolerance `tolerance`); else nothing.
+    void note(const newton_result& stop, double tolerance);
+    bool met() const { return met_; }
+    // The refusal's line: what limits the ends (the largest rounding met), and what lowers it.
+    std::string refusal() const;
+
+private:
+    bool met_ = false;
+    double rounding_ = 0.0, tolerance_ = 0.0;  // the largest rounding met, and its Newton's tolerance
+};
 
 // One stick zone of a Newton iterate: its ends and half-length (exp u with log_length, not (c - s)/2).
 struct stick_span {
@@ -63,13 +76,13 @@ inline std::vector<const tangential_solution*> stick_systems(const tangential_so
 //   - else the blend (8(g); 8(j) item 3): F = ((Q(zones) - Q)/f, E(zone_1), ..., E(zone_k), (xi_1 - xi_2)/f, ...,
 //     (xi_{k-1} - xi_k)/f) in (m_i, rho_i), absolute (the blend's Q keeps f's scale: its zones do not collapse
 //     onto a point); k = 1 the three zones of dissimilar rollers, k = 2 the five zones.
-// Empty where Newton does not converge (the caller falls back or searches on); a rounding_limit_error where it stops
-// at the ends' rounding beyond its cap, which no other start at this n improves and a larger n makes worse.
+// Empty where Newton does not converge (the caller falls back or searches on), and where it stops at the ends'
+// rounding beyond its cap, which it notes in `met` (the search refuses with it where no route answers).
 template <class Solution>
 std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
                                     const std::function<double(const tangential_solution&)>& entry, double Q, double f,
                                     const std::vector<stick_span>& from, bool relative, int max_iterations,
-                                    double tolerance) {
+                                    double tolerance, rounding_limits& met) {
     if (relative && !(f - Q > 0.0)) return std::nullopt;
     std::optional<Solution> last;  // the solve at the last zones, which are the root's
     const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
@@ -100,8 +113,7 @@ std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(
     };
     const newton_result result = zone_newton(residual, from, relative, max_iterations, tolerance,
                                              relative ? std::function<double()>{} : rounding);
-    if (result.stop == newton_stop::rounding_limit)
-        throw rounding_limit_error(rounding_limit_refusal(result, tolerance));
+    met.note(result, tolerance);
     const std::optional<newton_root>& root = result.root;
     if (!root || !last) return std::nullopt;
     last->iterations = root->iterations;  // the solution at the root, the last one solved
