@@ -87,7 +87,7 @@ public:
     tangential_solution like(const tangential_solution& s, method how, int n) override {
         if (s.layout.stick_zones() != 2) return three(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
         // Five zones (8(j)): the level from the point's ends (Newton), else its own search.
-        const std::vector<double> ends{s.start(), s.c0(), s.start2(), s.end2()};
+        const std::vector<double> ends = s.layout.stick_ends();
         rounding_limits met;
         if (std::optional<tangential_solution> t = five(s.Q, &ends, met)) return *t;
         if (met.met()) throw rounding_limit_error(met.refusal());
@@ -247,8 +247,7 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
     // sliding or of the edge layers neglected (8(n)) give no start.
     if (previous && std::fabs(previous->Q) < f_ && std::fabs(Q) < f_ && !previous->layout.layers_neglected()) {
         if (previous->layout.stick_zones() == 2) {
-            if (std::optional<tangential_solution> s = five_continued(
-                    Q, below, {previous->start(), previous->c0(), previous->start2(), previous->end2()}, met))
+            if (std::optional<tangential_solution> s = five_continued(Q, below, previous->layout.stick_ends(), met))
                 return *s;
         } else if (previous->layout.stick_zones() == 1 && previous->start() > -1.0) {
             guess = zone_guess{previous->start(), previous->c0()};
@@ -328,7 +327,7 @@ std::optional<tangential_solution> johnson_model::five_point(double Q, const std
     std::vector<double> ends;
     for (johnson_model* level : below) {
         const std::optional<tangential_solution> v = level->five(Q, ends.empty() ? nullptr : &ends, met);
-        ends = v ? std::vector<double>{v->start(), v->c0(), v->start2(), v->end2()} : std::vector<double>{};
+        ends = v ? v->layout.stick_ends() : std::vector<double>{};
     }
     std::optional<tangential_solution> s = five(Q, ends.empty() ? nullptr : &ends, met);
     if (!s) return std::nullopt;

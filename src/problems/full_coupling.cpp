@@ -58,8 +58,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
         rounding_limits met;
-        const auto v =
-            z.five_zones(Q, {previous.start(), previous.c0(), previous.start2(), previous.end2()}, std::nullopt, &met);
+        const auto v = z.five_zones(Q, previous.layout.stick_ends(), std::nullopt, &met);
         if (!v && met.met()) throw rounding_limit_error(coupling_at_load(Q, f) + met.refusal());
         if (!v)
             throw resolution_error(coupling_at_load(Q, f) +

@@ -77,11 +77,8 @@ double newton_floor_excess(std::initializer_list<const tangential_solution*> lev
 
 double fewest_zone_nodes(const tangential_solution& s, int m) {
     // Nodes cos(k pi/(m + 1)) inside [a, b]: (acos a - acos b)(m + 1)/pi.
-    std::vector<double> ends{-1.0, s.start(), s.c0()};
-    if (s.layout.stick_zones() == 2) {
-        ends.push_back(s.start2());
-        ends.push_back(s.end2());
-    }
+    std::vector<double> ends = s.layout.stick_ends();
+    ends.insert(ends.begin(), -1.0);
     ends.push_back(1.0);
     double fewest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {

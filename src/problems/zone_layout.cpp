@@ -31,6 +31,13 @@ const zone& zone_layout::stick_zone(std::size_t k) const {
                             std::to_string(stick_zones()) + " (a solution gets its zones from a solver)");
 }
 
+std::vector<double> zone_layout::stick_ends() const {
+    std::vector<double> ends;
+    for (const zone& z : zones)
+        if (z.stick) ends.insert(ends.end(), {z.from, z.to});
+    return ends;
+}
+
 bool zone_layout::sticks(double r) const {
     for (const zone& z : zones)
         if (z.stick && r >= z.from && r < z.to) return true;

@@ -38,6 +38,9 @@ struct zone_layout {
     std::size_t stick_zones() const;
     // The k-th stick zone from r = -1; std::out_of_range for k >= stick_zones() (no solver asks for one).
     const zone& stick_zone(std::size_t k) const;
+    // The ends of the stick zones from r = -1, each zone's from and to: [start, c0] of one zone, (s1, c1, s2, c2)
+    // of five (the start of Newton's method in the ends, zone_newton.hpp; the nodes between them, point_estimate).
+    std::vector<double> stick_ends() const;
     // r on a stick zone [from, to): the half-open zone the slip velocity's sweeps skip.
     bool sticks(double r) const;
     // Slip zones in both directions: the blended stick zone of 8(g), and the five zones of 8(j).
