@@ -228,7 +228,17 @@ const kinks_blend* dissimilar_zones::kinks_blend_of(double start, double c0) {
     return kinks_blends_(start, c0, [&] { return pressure_kinks_->blend(start, c0); });
 }
 
-double dissimilar_zones::W(double r, double start, double c0) { return W(std::vector<double>{r}, start, c0)[0]; }
+double dissimilar_zones::W(double r, double start, double c0) {
+    // The batched form's closed forms at one point (blended_cauchy, kinks_blend: bit for bit the same sums).
+    const blended_cauchy* blend = blend_of(start, c0);
+    std::optional<double> cauchy = blend ? (*blend)(r) : std::nullopt;
+    if (pressure_kinks_ && cauchy) {
+        const kinks_blend* kinks = kinks_blend_of(start, c0);
+        const std::optional<double> part = kinks ? (*kinks)(r, H(r, start, c0)) : std::nullopt;
+        cauchy = part ? std::optional<double>(*cauchy + *part) : std::nullopt;
+    }
+    return completed_W(r, cauchy, start, c0);
+}
 
 std::vector<double> dissimilar_zones::W(const std::vector<double>& r, double start, double c0) {
     // W(r) = L1[p H](r) = (1/pi) PV int_s^1 g(eta)/(eta - r) d eta + int_s^1 g(eta) K1*(eta - r) d eta, g = p H
@@ -252,22 +262,26 @@ std::vector<double> dissimilar_zones::W(const std::vector<double>& r, double sta
             cauchy[i] = cauchy[i] && part[i] ? std::optional<double>(*cauchy[i] + *part[i]) : std::nullopt;
     }
     std::vector<double> w(count);
-    for (std::size_t i = 0; i < count; ++i) w[i] = cauchy[i] ? *cauchy[i] : cauchy_by_quadrature(r[i], start, c0);
+    for (std::size_t i = 0; i < count; ++i) w[i] = completed_W(r[i], cauchy[i], start, c0);
+    return w;
+}
+
+double dissimilar_zones::completed_W(double r, const std::optional<double>& cauchy, double start, double c0) {
+    // The Cauchy part where the closed forms declined, by adaptive quadrature; then the terms of K1*.
+    double w = cauchy ? *cauchy : cauchy_by_quadrature(r, start, c0);
     if (k1_.terms().empty()) return w;
     const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::vector<double> points = breakpoints(r[i], start, c0);
-        for (const auto& term : k1_.terms()) {
-            double total = 0.0;
-            for (std::size_t k = 0; k + 1 < points.size(); ++k)
-                total += integrate_piece(
-                    [&](double eta) {
-                        const double z = eta - r[i];
-                        return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
-                    },
-                    points[k], points[k + 1], w_context);
-            w[i] += term.T * total;
-        }
+    const std::vector<double> points = breakpoints(r, start, c0);
+    for (const auto& term : k1_.terms()) {
+        double total = 0.0;
+        for (std::size_t k = 0; k + 1 < points.size(); ++k)
+            total += integrate_piece(
+                [&](double eta) {
+                    const double z = eta - r;
+                    return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+                },
+                points[k], points[k + 1], w_context);
+        w += term.T * total;
     }
     return w;
 }

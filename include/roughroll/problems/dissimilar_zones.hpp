@@ -213,6 +213,8 @@ private:
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
     std::vector<double> W(const std::vector<double>& r, double start, double c0);  // the same at each r[i]
+    // W at r from its closed-form Cauchy part (empty: declined): that part by quadrature where empty, + K1*'s terms.
+    double completed_W(double r, const std::optional<double>& cauchy, double start, double c0);
     double cauchy_by_quadrature(double r, double start, double c0);  // W's Cauchy part by adaptive quadrature
     std::vector<double> breakpoints(double r, double start, double c0) const;  // W's pieces
     const blended_cauchy* blend_of(double start, double c0);  // W's Cauchy part on the zone, null: adaptive
