@@ -185,10 +185,9 @@ stick_zone_operator one_parameter_solver::zone_operator(double forcing) {
     op.empty_load = [f = f_](double) { return f; };
     // E needs no scale: Newton's step does not depend on the residuals' units.
     op.entry = op.newton_entry = [this](const tangential_solution& t) { return entry_velocity(t); };
-    // w = G, its least point in place of the paper's edge form; b p + f G (8(s)).
+    // w = G, or b p + f G (8(s)): its least point in place of the paper's edge form.
     op.gross_sliding = [this, forcing] {
-        return forcing == 0.0 ? roughroll::gross_sliding(normal_, f_, 0.0, [this](const auto& r) { return G(r); })
-                              : gross_sliding(forcing);
+        return roughroll::gross_sliding(normal_, f_, forcing, [this](const auto& r) { return G(r); });
     };
     op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this, forcing](double magnitude, double point,
