@@ -25,9 +25,7 @@
 //   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
 //     point r*: xi' = -min_r (b p + f G) (8(g));
 //   - the complete-slip limit f -> 0 (8(f)), its own special case (complete_slip_creep).
-//   - five zones, slip -1, stick, slip +1, stick, slip -1 (beta_D > 0): free rolling, a driven roller 1
-//     below Q/f ~ 0.9 and a braked one until the slip+ zone closes (Q/f ~ -0.074 at f = 0.05 for
-//     aluminium on steel, 8(j) 4a), by five_zones (five_zones.cpp; below), not through solve().
+//   - five zones (8(j)): five_zone_solution below, by five_zones (five_zones.cpp), not through solve().
 // The two three-zone structures are values of the one zone search's operator (zone_operator below,
 // stick_zone_operator.hpp), found by zone_solver; solve tries them in turn (the coarser level's first).
 // Not built in solve() (refused with resolution_error naming what is missing, never a number): free
