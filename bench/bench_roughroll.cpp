@@ -24,6 +24,7 @@
 #include "roughroll/layer/roughness_parameters.hpp"
 #include "roughroll/io/profile_csv.hpp"
 #include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/load_ratio.hpp"
@@ -437,8 +438,31 @@ void bm_coupling_point(benchmark::State& state) {
         benchmark::DoNotOptimize(c.point(Q).xi);
     }
 }
+// The ladder's climb at the default settings (issue 24, 4 and 5; docs/performance.md "The rungs share their
+// levels"), as `roughroll point` solves it: arg 0, the one-parameter case near gross sliding (eps1 = 0.1,
+// eps2 = 0.3, Q/f = 0.9999: rungs 128 and 256, whose levels the store shares); 1, Fig. 2a's T = 1 at
+// Q/f = 0.5 (answered at the first rung, 128); 2, aluminium on steel at full coupling, driven Q/f = +0.75
+// (rungs 128, 256, 512, whose levels are each rung's own).
+void bm_ladder_point(benchmark::State& state) {
+    const std::string data = std::string(ROUGHROLL_SOURCE_DIR) + "/data/";
+    scene s;
+    if (state.range(0) == 0) {
+        s = parse_scene(
+            "friction = 0.3\nQ = 0.29997\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
+            "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\n",
+            "near-sliding.toml");
+    } else if (state.range(0) == 1) {
+        s = read_scene(data + "fig2a-T1.toml");
+    } else {
+        s = read_scene(data + "aluminium-on-steel.toml");
+        s.materials.coupling = coupling_level::full;
+        s.Q = 0.75 * s.friction;
+    }
+    for (auto _ : state) benchmark::DoNotOptimize(solve_point(s, std::nullopt).solution.xi);
+}
 }  // namespace
 
+BENCHMARK(bm_ladder_point)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(bm_coupling_point)
     ->ArgsProduct({{0, 1}, {0, 1}, {32, 64}})
     ->Unit(benchmark::kMillisecond)

@@ -13,6 +13,7 @@
 //  - Every row of Fig. 2's curves (data/fig2*.toml) meets the default tolerance at the default n
 //    of the default method and of the files' own method: no cost there.
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -24,6 +25,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 
 using namespace roughroll;
@@ -86,6 +88,43 @@ TEST(LevelLadder, ExplicitNIsTodaysPoint) {
         const nlohmann::json b = without_seconds(to_json(solve_point(fixed, std::nullopt).report()));
         EXPECT_EQ(a.dump(), b.dump());
     }
+}
+
+// The rungs share their levels (issue 24, 4; level_store in point_model.hpp): the near-sliding climb solves
+// rung 128 (levels 32, 64, 128 and 256, the one-parameter limit's confirmation) and rung 256 (64, 128, 256,
+// 512). Each n is made once (on the store-less ladder 64, 128 and 256 were made twice), and the answer is
+// the one rung 256 gives alone, byte for byte: the shared levels are the limit's, which no start moves.
+TEST(LevelLadder, RungsShareTheirLevels) {
+    const scene s = parse_scene(near_sliding, "ladder.toml");
+    level_ladder ladder(s.solver, s.surfaces, [&s](int n, const std::shared_ptr<level_store>& levels) {
+        solver_options at = s.solver;
+        if (n != at.nodes()) at.n = n;
+        return std::make_unique<contact>(s.surfaces, s.friction, at, s.materials, nullptr, levels);
+    });
+    const level_ladder::answer a = ladder.point(0.29997);
+    EXPECT_EQ(a.n, 256);
+    for (int n : {32, 64, 128, 256, 512}) EXPECT_EQ(ladder.levels().made(n), 1) << "n = " << n;
+    EXPECT_EQ(ladder.levels().made(1000), 0);
+    // Rung 256 alone, a contact with no store: every level its own.
+    solver_options alone = s.solver;
+    alone.n = 256;
+    contact c(s.surfaces, s.friction, alone, s.materials);
+    const tangential_solution p = c.point(0.29997);
+    const std::optional<error_estimate> e = c.estimate(p);
+    ASSERT_TRUE(e && a.estimate);
+    EXPECT_EQ(a.solution.xi, p.xi);
+    EXPECT_EQ(a.solution.c0(), p.c0());
+    EXPECT_EQ(a.solution.start(), p.start());
+    EXPECT_EQ(ladder.at(256).normal().lambda, c.normal().lambda);
+    EXPECT_EQ(a.estimate->lambda, e->lambda);
+    EXPECT_EQ(a.estimate->c0, e->c0);
+    EXPECT_EQ(a.estimate->xi, e->xi);
+    EXPECT_EQ(a.estimate->against, e->against);
+    // and the program's answer, through scene_rungs, is the explicit n = 256 point's JSON (but for the seconds)
+    const nlohmann::json climbed = without_seconds(to_json(solve_point(s, std::nullopt).report()));
+    const nlohmann::json fixed =
+        without_seconds(to_json(solve_point(with_solver(near_sliding, "n = 256\n"), std::nullopt).report()));
+    EXPECT_EQ(climbed.dump(), fixed.dump());
 }
 
 // zones = "single": the paper's zone, its checks reported and never acted on. Near gross sliding it

@@ -83,13 +83,13 @@ point_report scene_point::report() const {
 namespace {
 // The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
 contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
-                        const std::function<void()>& checkpoint) {
+                        const std::function<void()>& checkpoint, const std::shared_ptr<level_store>& levels = nullptr) {
     normal_cache cache;
     if (width_follows_tangential_load(s) && smooth(*s.physical)) {
         // Full coupling of a smooth pair: the dimensionless contact does not depend on the width
         // (no layer; find_width takes a = a_H sqrt(lambda) from one coupled point), so the contact
         // whose point gives lambda is the contact at the width found, its coupled point at Q kept.
-        contact c(s.surfaces, s.friction, s.solver, s.materials, &cache);
+        contact c(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
         c.set_checkpoint(checkpoint);
         width = find_width(
             *s.physical,
@@ -102,7 +102,7 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
         return c;
     }
     width = settle_width(s, &cache, Q, checkpoint);
-    contact c(s.surfaces, s.friction, s.solver, s.materials, &cache);
+    contact c(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
     c.set_checkpoint(checkpoint);
     return c;
 }
@@ -118,16 +118,16 @@ struct scene_rungs {
     std::function<void()> checkpoint;
     std::map<int, std::pair<scene, std::optional<contact_width>>> settled;
 
-    std::unique_ptr<contact> operator()(int n) {
+    std::unique_ptr<contact> operator()(int n, const std::shared_ptr<level_store>& levels) {
         scene at = given;
         if (n != at.solver.nodes()) at.solver.n = n;
         std::optional<contact_width> width;
         std::unique_ptr<contact> c;
         if (Q) {
-            c = std::make_unique<contact>(settled_contact(at, width, *Q, checkpoint));
+            c = std::make_unique<contact>(settled_contact(at, width, *Q, checkpoint, levels));
         } else {
             width = settle_width(at);
-            c = std::make_unique<contact>(at.surfaces, at.friction, at.solver, at.materials);
+            c = std::make_unique<contact>(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels);
             c->set_checkpoint(checkpoint);
         }
         settled.insert_or_assign(n, std::make_pair(std::move(at), width));
@@ -151,7 +151,8 @@ void refuse_beyond_every_n(const scene& s, double Q, int top) {
 }
 
 level_ladder ladder_of(const scene& s, scene_rungs& rungs) {
-    return level_ladder(s.solver, s.surfaces, [&rungs](int n) { return rungs(n); });
+    return level_ladder(s.solver, s.surfaces,
+                        [&rungs](int n, const std::shared_ptr<level_store>& levels) { return rungs(n, levels); });
 }
 }  // namespace
 

@@ -15,13 +15,15 @@
 namespace roughroll {
 
 contact::impl::impl(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                    normal_cache* cache)
+                    normal_cache* cache, const std::shared_ptr<level_store>& levels)
     : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_dissimilar(materials, options);
     // Richardson's rule holds only where the error already falls like n^-4.
     if (extrapolates(surfaces, options)) check_extrapolation_range(widest_kernel(), options.nodes(), "these kernels");
-    model_ = make_point_model(surfaces, f, options, materials, cache);
+    const auto make = [&] { return make_point_model(surfaces, f, options, materials, cache); };
+    model_ = levels ? levels->model({surfaces, f, materials, options}, make) : make();
+    if (levels) model_->share_levels_in(levels);
     if (extrapolates(surfaces, options)) {
         companion_ = &model_->level(options.nodes() / 2);
         reported_ = std::make_unique<normal_solution>(model_->normal());
@@ -30,8 +32,8 @@ contact::impl::impl(const roughness& surfaces, double f, const solver_options& o
 }
 
 contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                 normal_cache* cache)
-    : impl_(std::make_unique<impl>(surfaces, f, options, materials, cache)) {}
+                 normal_cache* cache, const std::shared_ptr<level_store>& levels)
+    : impl_(std::make_unique<impl>(surfaces, f, options, materials, cache, levels)) {}
 
 contact::contact(contact&&) noexcept = default;
 contact& contact::operator=(contact&&) noexcept = default;

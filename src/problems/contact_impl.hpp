@@ -19,7 +19,7 @@ namespace roughroll {
 
 struct contact::impl {
     impl(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-         normal_cache* cache);
+         normal_cache* cache, const std::shared_ptr<level_store>& levels);
 
     const normal_solution& normal() const;  // contact::normal
     tangential_solution distribution(const tangential_solution& s) { return model_->distribution(s); }
@@ -47,7 +47,7 @@ struct contact::impl {
     solver_options options_;
     double f_;
     dissimilar materials_;
-    std::unique_ptr<point_model> model_;         // the points' model, chosen once (point_model.hpp)
+    std::shared_ptr<point_model> model_;         // the points' model, chosen once (point_model.hpp)
     point_model* companion_ = nullptr;           // method::extrapolated: the coarse level n/2 (product)
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::array<point_model*, 3> levels_{};       // the estimate's levels, coarsest first; nullptr: this one

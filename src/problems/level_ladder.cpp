@@ -68,9 +68,14 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
       tolerance_(options.tolerance.value_or(default_tolerance)),
       strength_(std::max(kernel::tangential(surfaces).strength(), kernel::normal(surfaces).strength())),
       flagged_final_(options.zones == zone_search::single),
-      make_(std::move(make)) {
+      make_(std::move(make)),
+      levels_(std::make_shared<level_store>()) {
     check_tolerance(tolerance_, "the tolerance");
 }
+
+level_ladder::level_ladder(const solver_options& options, const roughness& surfaces,
+                           const std::function<std::unique_ptr<contact>(int n)>& make)
+    : level_ladder(options, surfaces, [make](int n, const std::shared_ptr<level_store>&) { return make(n); }) {}
 
 bool level_ladder::answers(const contact& c, const tangential_solution& s,
                            const std::optional<error_estimate>& e) const {
@@ -84,7 +89,7 @@ tolerance_check level_ladder::check(const contact& c, const tangential_solution&
 
 contact& level_ladder::at(int n) {
     std::unique_ptr<contact>& c = built_[n];
-    if (!c) c = make_(n);
+    if (!c) c = make_(n, levels_);
     return *c;
 }
 

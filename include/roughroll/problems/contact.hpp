@@ -47,6 +47,7 @@
 namespace roughroll {
 
 class normal_cache;       // problems/normal_problem.hpp
+class level_store;        // problems/point_model.hpp
 class tangential_solver;  // problems/tangential_problem.hpp
 
 class contact {
@@ -55,9 +56,11 @@ public:
     // section 8); the default beta_D = 0 is the paper's problem, solved by exactly the same calls.
     // `cache`: the normal problems of the scene solved before (the width search's, whose last
     // trial is the width found: normal_problem.hpp), for this level and its companion; the
-    // contact keeps copies, not the cache.
+    // contact keeps copies, not the cache. `levels`: the store of a ladder's rungs (level_ladder.hpp), where
+    // the model and its levels are taken from when another rung made them and their numbers are the same
+    // (point_model.hpp); none: every level made here.
     contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {},
-            normal_cache* cache = nullptr);
+            normal_cache* cache = nullptr, const std::shared_ptr<level_store>& levels = nullptr);
     contact(contact&&) noexcept;
     contact& operator=(contact&&) noexcept;
     ~contact();

@@ -11,6 +11,13 @@
 // (a physical scene settles its contact width at each rung's n), kept for the next point of a
 // curve. At the first rung the point is exactly contact::point and contact::estimate at the
 // method's default n, so a point that meets the tolerance there is today's point, digit for digit.
+//
+// The rungs share their levels through the ladder's level_store (issue 24, 4; point_model.hpp): rung n
+// solves n/4, n/2, n (and 2n where its estimate asks), rung 2n n/2, n, 2n (and 4n), so a level whose
+// numbers do not depend on which rung asked first (point_model::shareable, the one-parameter limit) is
+// solved once per climb and given to every rung after. Other models' levels start from the level below
+// them, which differs between rungs: each rung solves them as its own, so that every rung's numbers are
+// the ones it gives alone (docs/performance.md "The rungs share their levels").
 #pragma once
 
 #include <functional>
@@ -23,6 +30,7 @@
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/creep_curve.hpp"
+#include "roughroll/problems/point_model.hpp"
 
 namespace roughroll {
 
@@ -54,8 +62,12 @@ public:
     // search: with zone_search::single (the paper's zone, its checks reported and never acted on) a
     // point whose checks fail is answered, flagged, at the rung where it fails, as at a given n: no n
     // makes a wrong zone structure right.
-    using rung_factory = std::function<std::unique_ptr<contact>(int n)>;
+    // With `levels`, the ladder's store, for the contact's constructor: the rungs share their levels. A
+    // factory of n alone builds rungs that share none (each solves its levels as its own).
+    using rung_factory = std::function<std::unique_ptr<contact>(int n, const std::shared_ptr<level_store>& levels)>;
     level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make);
+    level_ladder(const solver_options& options, const roughness& surfaces,
+                 const std::function<std::unique_ptr<contact>(int n)>& make);
 
     // A point answered at the rung `n`, with its estimate (within the tolerance).
     struct answer {
@@ -81,6 +93,8 @@ public:
     contact& at(int n);
     // Hands the contact of rung n over (built again if asked for later).
     std::unique_ptr<contact> release(int n);
+    // The levels the rungs made and share (level_store::made counts them by n).
+    const level_store& levels() const { return *levels_; }
 
 private:
     using solve_rung = std::function<answer(contact&, int n)>;
@@ -99,6 +113,7 @@ private:
     double strength_;     // the kernels' sum |T| (kernel::strength)
     bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
     rung_factory make_;
+    std::shared_ptr<level_store> levels_;  // held by the rungs' models too (a released contact outlives the ladder)
     std::map<int, std::unique_ptr<contact>> built_;
 };
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +28,8 @@
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
+
+class level_store;
 
 class point_model {
 public:
@@ -83,6 +86,16 @@ public:
     // contact::beyond_every_n (free rolling of smooth dissimilar rollers at Johnson's level only).
     virtual std::optional<std::string> beyond_every_n(double, int, double) const { return std::nullopt; }
 
+    // Whether every solution of this model is the same whatever was asked of it before and from which start: no
+    // level's point starts another's search, and its caches hold what a fresh solve gives, bit for bit (the
+    // one-parameter limit). Such a model is shared by the rungs of a ladder (level_store); any other model's
+    // levels start from the level below them, which differs between rungs (8(e) "The start from the coarser
+    // level"; the paper's root from n/4's, Johnson's zones from the coarser level's), so sharing it would move
+    // the next rung's numbers.
+    virtual bool shareable() const { return false; }
+    // The ladder's store (level_store) where this model's levels are asked for first; none by default.
+    void share_levels_in(std::weak_ptr<level_store> store) { store_ = std::move(store); }
+
 protected:
     template <class M>
     friend class model_levels;
@@ -94,6 +107,52 @@ protected:
     solver_options options_;
     dissimilar materials_;
     std::function<void()> checkpoint_;
+    std::weak_ptr<level_store> store_;  // the ladder's, where it has one (it may end before this model)
+};
+
+// The levels solved by the rungs of one ladder (issue 24, 4; level_ladder.hpp): a point_model made once per
+// key (the scene's roughness and friction, the materials, n, the method, the zone search and the tolerance,
+// everything a level's numbers depend on) is given again to the next rung that asks for the same key, where
+// the model is shareable() (its numbers the same bit for bit, whoever asked first). Counts the models made at
+// each n, shared or not: a level solved twice in a climb shows as 2.
+class level_store {
+public:
+    struct key {
+        roughness surfaces;
+        double f;
+        dissimilar materials;
+        solver_options options;
+    };
+    // The model at k: the shared one made before, else make()'s, kept where it is shareable().
+    std::shared_ptr<point_model> model(const key& k, const std::function<std::unique_ptr<point_model>()>& make) {
+        for (const auto& [at, m] : shared_)
+            if (same(at, k)) return m;
+        std::shared_ptr<point_model> m = make();
+        ++made_[k.options.nodes()];
+        if (m->shareable()) shared_.emplace_back(k, m);
+        return m;
+    }
+    // How many models at n were made (each solves its level at most once per load).
+    int made(int n) const {
+        const auto it = made_.find(n);
+        return it == made_.end() ? 0 : it->second;
+    }
+
+private:
+    static bool same(const key& a, const key& b) {
+        const auto term = [](const roughness_term& x, const roughness_term& y) { return x.T == y.T && x.A == y.A; };
+        const auto cylinder = [&term](const cylinder_roughness& x, const cylinder_roughness& y) {
+            return term(x.tangential, y.tangential) && term(x.normal, y.normal);
+        };
+        const solver_options &x = a.options, &y = b.options;
+        return cylinder(a.surfaces.cylinder1, b.surfaces.cylinder1) &&
+               cylinder(a.surfaces.cylinder2, b.surfaces.cylinder2) && a.f == b.f &&
+               a.materials.beta_d == b.materials.beta_d && a.materials.coupling == b.materials.coupling &&
+               x.nodes() == y.nodes() && x.how == y.how && x.zones == y.zones &&
+               x.tolerance.value_or(default_tolerance) == y.tolerance.value_or(default_tolerance);
+    }
+    std::vector<std::pair<key, std::shared_ptr<point_model>>> shared_;
+    std::map<int, int> made_;
 };
 
 // 'extrapolated' on rough surfaces: Richardson's rule on the level n/2 (a smooth scene is exact at one level).
@@ -113,11 +172,26 @@ public:
         if (extrapolates(holder.surfaces_, holder.options_)) at(holder.nodes() / 2, cache);
     }
     M& at(int m, normal_cache* cache = nullptr) {
-        for (const std::unique_ptr<M>& level : made_)
+        for (const std::shared_ptr<M>& level : made_)
             if (level->nodes() == m) return *level;
         const solver_options options{m, level_of(holder_.options_.how), holder_.options_.zones};
-        made_.push_back(std::make_unique<M>(holder_.surfaces_, holder_.f_, options, holder_.materials_, cache));
-        made_.back()->set_checkpoint([&holder = holder_] { holder.checkpoint(); });
+        const auto make = [&] {
+            return std::make_unique<M>(holder_.surfaces_, holder_.f_, options, holder_.materials_, cache);
+        };
+        // In a ladder, its store's level where another rung made it (a shareable model); counted there either way.
+        const std::shared_ptr<level_store> store = holder_.store_.lock();
+        std::shared_ptr<M> level;
+        if (store)
+            level = std::dynamic_pointer_cast<M>(
+                store->model({holder_.surfaces_, holder_.f_, holder_.materials_, options}, make));
+        if (!level) level = make();
+        if (store && level->shareable()) {
+            level->share_levels_in(store);
+            level->set_checkpoint(holder_.checkpoint_);  // a copy: the rung that made it may end first
+        } else {
+            level->set_checkpoint([&holder = holder_] { holder.checkpoint(); });
+        }
+        made_.push_back(std::move(level));
         return *made_.back();
     }
     // The levels at each n of `ms`, as B (M or a base of it).
@@ -130,7 +204,7 @@ public:
 
 private:
     const point_model& holder_;
-    std::vector<std::unique_ptr<M>> made_;
+    std::vector<std::shared_ptr<M>> made_;
 };
 
 // The model of `materials` and `options` at n = options.nodes() (its normal problem from `cache` where
