@@ -132,7 +132,7 @@ public:
         if (m->shareable()) shared_.emplace_back(k, m);
         return m;
     }
-    // How many models at n were made (each solves its level at most once per load).
+    // How many models at n were made: a level solved by two rungs on models of their own counts 2.
     int made(int n) const {
         const auto it = made_.find(n);
         return it == made_.end() ? 0 : it->second;
