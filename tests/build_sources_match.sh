@@ -93,6 +93,36 @@ am_list() {
     am_values '[A-Za-z0-9_]+_HEADERS' | grep '^include/roughroll/.*\.hpp$' | sed 's/^/dist /'
 }
 
+# What the CMake build and its tests read besides the files compared below: every script and file of tests/ (the shell
+# tests, install_consumer.sh, installed_headers.sh, the consumer), configure_file's inputs and each add_subdirectory's
+# CMakeLists.txt. Each must be in Makefile.am's distribution (EXTRA_DIST or the shell tests, as a file or inside a
+# listed folder), or the tarball of `make dist` does not build with CMake (`shipped` below).
+cmake_reads() {
+    local top
+    top=$(flat CMakeLists.txt)
+    find tests -type f \( -name '*.sh' -o -name '*.py' -o -path 'tests/consumer/*' \)
+    printf '%s\n' "$top" | grep -oE 'configure_(package_config_)?file\([[:space:]]*[^ )$]+' | sed -E 's/^[^(]*\([[:space:]]*//'
+    printf '%s\n' "$top" | grep -oE 'add_subdirectory\([[:space:]]*[^ )]+' | sed -E 's/^[^(]*\([[:space:]]*//; s|$|/CMakeLists.txt|'
+}
+am_dist() {
+    local v
+    for v in $(am_values 'EXTRA_DIST'); do
+        case $v in
+            \$\(*\)) v=${v#\$\(}; am_values "${v%\)}" ;;
+            *) echo "$v" ;;
+        esac
+    done
+}
+dist_list=$(am_dist)
+not_shipped=""
+while IFS= read -r f; do
+    shipped=no
+    while IFS= read -r d; do
+        [ "$f" = "$d" ] || [ "${f#"$d"/}" != "$f" ] && { shipped=yes; break; }
+    done <<<"$dist_list"
+    [ "$shipped" = yes ] || not_shipped+="    $f"$'\n'
+done < <(cmake_reads | sort -u)
+
 cmake=$(cmake_list | sort -u)
 am=$(am_list | sort -u)
 status=0
@@ -111,6 +141,10 @@ if [ -n "$only_cmake" ]; then
 fi
 if [ -n "$only_am" ]; then
     echo "FAIL: only in Makefile.am:"; sed 's/^/    /' <<<"$only_am"; status=1
+fi
+if [ -n "$not_shipped" ]; then
+    echo "FAIL: read by the CMake build or its tests, not in Makefile.am's EXTRA_DIST (make dist leaves it out):"
+    printf '%s' "$not_shipped"; status=1
 fi
 if [ "$status" -eq 0 ]; then
     echo "ok: CMake and Makefile.am build the same $(wc -l <<<"$cmake") files:"
