@@ -297,10 +297,9 @@ TEST(LadderRefusals, AdviceOnlyAfterARefusalNamingNoChange) {
 // the ladder climbed to n = 1000 (four rungs built) to end on the top rung's line.
 TEST(LadderRefusals, RoundingLimitStopsTheClimb) {
     const every_rung_refused limit = every_rung_refuses<rounding_limit_error>(
-        "the zone ends are not resolved at this n: give a smaller n, or a larger tolerance");
+        "the zone ends are not resolved at this n: give a smaller n");
     EXPECT_EQ(limit.rungs_built, 1);
     EXPECT_TRUE(ends_with(limit.line,
-                          "(at n = 128: the zone ends are not resolved at this n: give a smaller n, or a larger "
-                          "tolerance)"))
+                          "(at n = 128: the zone ends are not resolved at this n: give a smaller n)"))
         << limit.line;
 }

@@ -10,6 +10,7 @@
 // stops at the limit from every start, while Brent on the clean entry condition finds s* to 1e-15. Before, the stop
 // was a rounding_limit_error thrown from the first Newton, past the scan and Brent: the point was refused.
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 #include "roughroll/problems/zone_newton.hpp"
@@ -125,4 +129,61 @@ TEST(RoundingLimit, RefusedWithTheLimitOnlyWhereEveryRouteFails) {
     rounding_limits none;
     EXPECT_FALSE(zone_solver(made_up(1e-3, answer_start, 2, false)).find(Q, false, guess, none));
     EXPECT_FALSE(none.met());
+}
+
+// What the limit's refusal advises (review S5): the rounding eps/rcond grows with n and the zone ends' tolerance is
+// fixed, so the line names a smaller n, given or the ladder's, and not the user's tolerance, which does not change it.
+// Only where a lower rung of the ladder answered with an estimate above the tolerance does a larger tolerance help
+// (the ladder then stops at that rung): the ladder's line says so there, names the rung that met the limit as the
+// last one tried, and does not claim that the rungs above it were tried. Before, the refusal advised "a larger
+// tolerance" even at the ladder's first rung and for a given n, and the ladder's line read "no n up to 1000" after
+// a limit met at n = 256, with the limit left out.
+namespace {
+std::string limit_line() {
+    rounding_limits met;
+    met.note(newton_result{newton_stop::rounding_limit, std::nullopt, 2.2e-7}, 1e-11);
+    return met.refusal();
+}
+
+// The ladder on the paper's problem of a rough roller (layers eps = 0.1 at A = 1: estimates of about 4e-10, not the
+// smooth rollers' zero; f = 0.3, Q = 0.15) with `tolerance`, whose rungs from `limit_at` on meet the rounding limit at
+// their first solve (the contact's checkpoint); its refusal line.
+std::string ladder_line(double tolerance, int limit_at) {
+    solver_options options;
+    options.tolerance = tolerance;
+    roughness rough;
+    rough.cylinder1.normal = rough.cylinder1.tangential = {0.1, 1.0};
+    level_ladder ladder(options, rough, [limit_at, rough](int n) {
+        auto c = std::make_unique<contact>(rough, 0.3, solver_options{n});
+        if (n >= limit_at) c->set_checkpoint([] { throw rounding_limit_error(limit_line()); });
+        return c;
+    });
+    try {
+        ladder.point(0.15);
+        ADD_FAILURE() << "answered";
+    } catch (const resolution_error& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(RoundingLimit, AdviceNamesOnlyWhatTheUserCanChange) {
+    const std::string line = limit_line();
+    EXPECT_EQ(line,
+              "the zone ends are not resolved at this n: the rounding of their systems (2.2e-07 of the half-width) "
+              "passes 1000 times their tolerance 1e-11 and grows with n; give a smaller n");
+    // At the ladder's first rung: no rung below it to stop at, no tolerance to raise.
+    const std::string first = ladder_line(1e-6, 128);
+    EXPECT_EQ(first, "no n up to 128 meets the tolerance 1e-06 (relative): no n gave an answer whose checks hold with "
+                     "an error estimate (at n = 128: " + line + ")");
+    // At the second rung, after the first answered with an estimate above a tolerance of 1e-13: raise the tolerance
+    // (the first rung then answers), or give a smaller n; the climb ended at n = 256.
+    const std::string second = ladder_line(1e-13, 256);
+    EXPECT_EQ(second.rfind("no n up to 256 meets the tolerance 1e-13 (relative): the best estimate reached is ", 0), 0u)
+        << second;
+    EXPECT_NE(second.find(" at n = 128, and at n = 256 " + line + "; raise the tolerance (solver.tolerance, "
+                          "--tolerance), give n to accept a larger estimate"),
+              std::string::npos)
+        << second;
 }

@@ -209,7 +209,9 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             advised_last = true;
         }
     }
-    const std::string top = std::to_string(rungs_.back());
+    // The rounding limit ends the climb at the rung that met it: no rung above was tried. Its line advises a smaller
+    // n; a larger tolerance helps only where a lower rung answered with an estimate above it (`best`), said there.
+    const std::string top = std::to_string(rounding_limit ? last_n : rungs_.back());
     std::string msg = "no n up to " + top + " meets the tolerance " + shortest(tolerance_) + " (relative)";
     if (best) {
         const double relative = best->check.relative;
@@ -217,6 +219,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
             (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
             " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped : ", and " + beyond_all) +
+            (rounding_limit ? ", and at n = " + std::to_string(last_n) + " " + last_reason : std::string()) +
             "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate, or try "
             "another method" +
             (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");

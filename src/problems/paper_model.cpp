@@ -5,6 +5,7 @@
 // limit's Glauert system (7(g)); and make_point_model, which chooses the model once.
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -72,17 +73,41 @@ protected:
     // search's answer where it holds its checks (or options.zones says "general"); else s, its checks
     // failed. `guess`: the coarse level's zone.
     tangential_solution zones_for(double Q, tangential_solution s, std::optional<zone_guess> guess) {
-        if (options_.zones == zone_search::general) return general(Q, guess);
+        if (options_.zones == zone_search::general) {
+            try {
+                return general(Q, guess);
+            } catch (const numerical_error&) {
+                std::throw_with_nested(numerical_error(general_search_fault(Q, nullptr)));
+            }
+        }
         if (options_.zones == zone_search::single || s.checks.hold()) return s;
         // A structure the general search does not cover (no zone of it carries Q: an empty find, or a load the
         // search refuses; or its answer fails the checks too): the single zone, its checks failed. A numerical fault
-        // of the search (a GSL status, a singular system) is not that statement and keeps its own line.
+        // of the search (a GSL status, a singular system) is not that statement: a numerical_error in the user's
+        // terms, the search's own line nested in it.
         std::optional<tangential_solution> g;
         try {
             g = find_general(Q, guess);
         } catch (const resolution_error&) {
+        } catch (const numerical_error&) {
+            std::throw_with_nested(numerical_error(general_search_fault(Q, &s.checks)));
         }
         return g && g->checks.hold() ? *g : s;
+    }
+    // The line of a numerical fault of the general search (a zone system singular at a trial start, a root search of
+    // a zone end without convergence): what failed in the scene's terms and what the user can change. `single`: the
+    // paper's zone's checks, which failed and made zones = "auto" search (null under zones = "general").
+    std::string general_search_fault(double Q, const traction_checks* single) const {
+        std::string line = "at Q/f = " + shortest(Q / f_) + " ";
+        if (single)
+            line += "the paper's stick zone from the leading edge fails the checks (3.3)-(3.4) (margins: " +
+                    margins_text(*single) + "), and the search for a stick zone between two slip zones ";
+        else
+            line += "the search for a stick zone between two slip zones (zones = \"general\") ";
+        return line + "failed numerically at n = " + std::to_string(nodes()) +
+               " (a zone's system or the root search of its ends, docs/formulation.md 7(e)); another n may get "
+               "through, and zones = \"single\" (solver.zones, --zones) reports the paper's zone" +
+               (single ? " with its failed checks" : "");
     }
 
     std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
@@ -251,12 +276,15 @@ private:
         // Its search is cheap: no starts from the levels below.
         if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);
         // The one-parameter paper's zone can be singular where the general zone is not (its
-        // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)).
+        // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)). A fault of the general
+        // search is zones_for's, worded for the user (the same search again would meet it again).
+        std::optional<tangential_solution> paper;
         try {
-            return zones_for(Q, single(Q, true), std::nullopt);
+            paper = single(Q, true);
         } catch (const numerical_error&) {
             return general(Q, std::nullopt);
         }
+        return zones_for(Q, *std::move(paper), std::nullopt);
     }
     // A point of dissimilar rollers whose checks fail (8(s)): a zone between slips with Q whose stick margin alone
     // fails, by less than entry_floor, is the entry's discretisation (7(h): -6.9e-8, -5.7e-9, +1.2e-9 at n = 64, 128,

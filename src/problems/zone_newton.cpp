@@ -86,13 +86,12 @@ void rounding_limits::note(const newton_result& stop, double tolerance) {
 
 std::string rounding_limits::refusal() const {
     // The rounding is eps/rcond of the zone systems (ends_newton), which grows with n (1.5e-10, 8.6e-10, 4.0e-9 at
-    // n = 250, 500, 1000 on free rolling of the pair, docs/formulation.md 8(q)): a smaller n lowers it; with the
-    // ladder choosing n, a larger tolerance stops the climb at a smaller n.
+    // n = 250, 500, 1000 on free rolling of the pair, docs/formulation.md 8(q)): a smaller n lowers it, whether n was
+    // given or the ladder's. The user's tolerance does not change it (the ends' tolerance is fixed); where a lower
+    // rung of the ladder answered with an estimate above it, the ladder's line says to raise it (level_ladder.cpp).
     return "the zone ends are not resolved at this n: the rounding of their systems (" + significant(rounding_, 3) +
            " of the half-width) passes " + shortest(newton_options{}.rounding_cap) + " times their tolerance " +
-           shortest(tolerance_) +
-           " and grows with n; give a smaller n, or a larger tolerance (solver.tolerance, --tolerance) where n is "
-           "the ladder's";
+           shortest(tolerance_) + " and grows with n; give a smaller n";
 }
 
 }  // namespace roughroll
