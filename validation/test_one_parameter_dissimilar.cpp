@@ -197,6 +197,13 @@ TEST(OneParameterDissimilar, RefusesWhatItDoesNotBuild) {
     EXPECT_THROW(contact(scaled(1.0, eps), f_a, solver_options{128, method::one_parameter},
                          dissimilar{beta, coupling_level::full}),
                  input_error);
+    // eps2 = 0 < eps1: the creep at |Q| = f is unbounded with Dundurs' forcing too (G(-1) = -infinity), said as such
+    // at both signs of Q (was "zone solver: G of (3.25) is not finite" for beta_d != 0).
+    roughness no_normal_layer;
+    no_normal_layer.cylinder1.tangential = {0.5 * eps, 1.0};
+    contact layered(no_normal_layer, f_a, solver_options{128, method::one_parameter}, dissimilar{beta});
+    EXPECT_THROW(layered.point(f_a), input_error);
+    EXPECT_THROW(layered.point(-f_a), input_error);
 }
 
 // Without a tangential layer (eps1 = 0) the edges slip as for half-spaces (8(g)): the limit's stick zone from

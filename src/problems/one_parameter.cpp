@@ -195,15 +195,15 @@ tangential_solution one_parameter_solver::full_stick(double forcing) {
 }
 
 tangential_solution one_parameter_solver::gross_sliding(double forcing) const {
-    // 2(g); with Dundurs' forcing the stick point is where w = b p + f G is least (8(s), as 8(g)).
-    tangential_solution s =
-        forcing == 0.0 ? gross_sliding_at(f_, -1.0, -f_ * G(-1.0))
-                       : roughroll::gross_sliding(normal_, f_, forcing, [this](const auto& r) { return G(r); });
-    if (!std::isfinite(s.xi))
+    // 2(g); with Dundurs' forcing the stick point is where w = b p + f G is least (8(s), as 8(g)). G(-1) first: with
+    // eps2 = 0 < eps1 it is -infinity for either form, which the least point's samples would call a numerical fault.
+    const double edge = G(-1.0);
+    if (!std::isfinite(edge))
         throw input_error(
             "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
             "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1); a load |Q| < f has a finite one");
-    return s;
+    return forcing == 0.0 ? gross_sliding_at(f_, -1.0, -f_ * edge)
+                          : roughroll::gross_sliding(normal_, f_, forcing, [this](const auto& r) { return G(r); });
 }
 
 std::vector<double> one_parameter_solver::G(const std::vector<double>& r) const {
