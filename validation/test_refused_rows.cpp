@@ -462,6 +462,47 @@ TEST(RefusedRows, MarginsOfFailedChecksAsComputed) {
     EXPECT_TRUE(margins_as_computed(full_line)) << full_line;
 }
 
+// A curve row that no n up to 1000 answers (contact::beyond_every_n, docs/formulation.md 8(n) "Beyond every n") is
+// refused before any solve with the line `point` refuses the same load with (beyond_every_n of the scene). Before, the
+// row was solved at the first rung (a physical scene at full coupling: the width search's coupled points at the load),
+// and only the climb from the second rung found the line. Shown by the levels solved, not by time: every contact's
+// checkpoint (called before each level's solve) throws, which no curve absorbs. Aluminium on steel, smooth: Johnson's
+// level at f = 0.45 and the tolerance 5e-7 (edge layers too thin for n = 1000, too thick to neglect), and full coupling
+// at f = 0.5, whose width follows the load (its own crossing, 8(p) "The edges").
+TEST(RefusedRows, RowBeyondEveryNRefusedBeforeAnySolve) {
+    struct level_solved {};
+    const auto no_solve = [] { throw level_solved(); };
+    for (const bool full : {false, true}) {
+        SCOPED_TRACE(full ? "full coupling, f = 0.5" : "Johnson's level, f = 0.45, tolerance 5e-7");
+        scene s = read_scene(ROUGHROLL_DATA "/aluminium-on-steel.toml");
+        override_friction(s, full ? 0.5 : 0.45);
+        if (full) s.materials.coupling = coupling_level::full;
+        override_solver(s, std::nullopt, std::nullopt, std::nullopt, full ? std::nullopt : std::optional<double>(5e-7));
+        ASSERT_EQ(width_follows_tangential_load(s), full);
+        const std::optional<std::string> line = beyond_every_n(s, 0.0);
+        ASSERT_TRUE(line.has_value());
+        std::string point_line;
+        try {
+            solve_point(s, 0.0, no_solve);
+            ADD_FAILURE() << "the point was answered";
+        } catch (const resolution_error& e) {
+            point_line = e.what();
+        } catch (const level_solved&) {
+            ADD_FAILURE() << "the point solved a level";
+        }
+        EXPECT_EQ(point_line, *line);
+        try {
+            const scene_curve c = curve_of(s, std::vector<double>{0.0}, 0, false, {}, no_solve);
+            ASSERT_EQ(c.rows.size(), 1u);
+            EXPECT_TRUE(c.rows[0].is_refused());
+            EXPECT_EQ(c.rows[0].refused, refused_load(0.0, s.friction, resolution_error(*line)).refused);
+            EXPECT_EQ(c.nodes.at(0), 0);
+        } catch (const level_solved&) {
+            ADD_FAILURE() << "the curve solved a level for the row";
+        }
+    }
+}
+
 // A swept row of the ground steel rollers (data/steel-rollers-ground.toml, the README's scene) at
 // c0 = -0.65: Q(c0) moves by 1e-8 from n/4 to n/2 and then alternates, -8.0e-11, +8.0e-11 over
 // n/2, n, 2n. The fourth level (docs/performance.md) had refused the row (not visibly converging);

@@ -80,6 +80,19 @@ point_report scene_point::report() const {
             coupled ? std::optional<coupling_summary>(*coupled) : std::nullopt};
 }
 
+std::optional<std::string> beyond_every_n(const scene& s, double Q) {
+    if (s.solver.n != 0) return std::nullopt;  // an explicit n: no ladder
+    // The rule does not depend on the width (smooth rollers alone, and the edge zones' bound of beta_D, f, Q and n),
+    // so the scene's contact as given answers it, before a physical scene's width search solves at the load (for
+    // full coupling's free rolling beyond every n, minutes of a search that fails).
+    try {
+        return contact(s.surfaces, s.friction, s.solver, s.materials)
+            .beyond_every_n(Q, ladder_rungs(s.solver.how).back(), s.solver.tolerance.value_or(default_tolerance));
+    } catch (const resolution_error&) {
+        return std::nullopt;  // a contact that cannot be built: the ladder refuses it as before
+    }
+}
+
 namespace {
 // The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
 contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
@@ -135,19 +148,9 @@ struct scene_rungs {
     }
 };
 
-// A point that no rung answers (contact::beyond_every_n) refused before the first rung settles its width, which
-// is a solve at the load (for full coupling's free rolling beyond every n, minutes of a search that fails): the rule
-// does not depend on the width (smooth rollers alone, and the edge zones' bound of beta_D, f, Q and n), so the
-// scene's contact as given answers it.
-void refuse_beyond_every_n(const scene& s, double Q, int top) {
-    std::optional<std::string> why;
-    try {
-        why = contact(s.surfaces, s.friction, s.solver, s.materials)
-                  .beyond_every_n(Q, top, s.solver.tolerance.value_or(default_tolerance));
-    } catch (const resolution_error&) {
-        return;  // a contact that cannot be built: the ladder refuses it as before
-    }
-    if (why) throw resolution_error(*why);
+// A point or row of the ladder that no rung answers, refused before the first rung settles its width (beyond_every_n).
+void refuse_beyond_every_n(const scene& s, double Q) {
+    if (const std::optional<std::string> why = beyond_every_n(s, Q)) throw resolution_error(*why);
 }
 
 level_ladder ladder_of(const scene& s, scene_rungs& rungs) {
@@ -165,7 +168,7 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
     if (s.solver.n == 0) {  // the ladder chooses n (problems/level_ladder.hpp)
         scene_rungs rungs{s, Q, checkpoint, {}};
         level_ladder ladder = ladder_of(s, rungs);
-        refuse_beyond_every_n(s, Q, ladder.rungs().back());
+        refuse_beyond_every_n(s, Q);
         level_ladder::answer a = ladder.point(Q);
         const double seconds = since_start();
         std::unique_ptr<contact> c = ladder.release(a.n);
@@ -223,6 +226,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
             if (climbs) {
                 scene_rungs rungs{s, Q, checkpoint, {}};
                 level_ladder ladder = ladder_of(s, rungs);
+                refuse_beyond_every_n(s, Q);  // as solve_point: before the width's solves
                 std::vector<int> used;
                 std::vector<curve_point> row = ladder_curve(ladder, {Q}, 1, false, used);
                 auto& [settled, width] = rungs.settled.at(used.front() != 0 ? used.front() : ladder.rungs().front());

@@ -56,12 +56,17 @@ std::vector<double> curve_loads(int points, double f, double beta_d) {
 namespace {
 // The rows of creep_curve; `continued`: each row after an answered one started from it (contact::continued_point).
 std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, bool continued,
-                                 const std::function<void()>& before_row) {
+                                 const std::function<void()>& before_row, const refusal_before_solve& refused_at_once) {
     std::vector<curve_point> rows;
     rows.reserve(loads.size());
     const tangential_solution* previous = nullptr;
     for (double Q : loads) {
         if (before_row) before_row();
+        if (const std::optional<std::string> why = refused_at_once ? refused_at_once(Q) : std::nullopt) {
+            rows.push_back(refused_load(Q, c.friction(), resolution_error(*why)));
+            previous = nullptr;
+            continue;
+        }
         try {
             tangential_solution s = continued && previous ? c.continued_point(Q, *previous) : c.point(Q);
             const auto e = c.estimate(s);
@@ -76,13 +81,15 @@ std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, b
 }
 }  // namespace
 
-std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row) {
+std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row,
+                                     const refusal_before_solve& refused_at_once) {
     check_curve_points(points);
     check_sweepable(c.materials());
     // Dissimilar rollers have no single stick end to sweep (8(g), 8(j)): their rows at curve_loads, each started
     // from the previous row's zones (a continuation in the load, 8(j) 10).
     if (c.materials().beta_d != 0.0)
-        return continued_curve(c, curve_loads(points, c.friction(), c.materials().beta_d), before_row);
+        return continued_curve(c, curve_loads(points, c.friction(), c.materials().beta_d), before_row,
+                               refused_at_once);
     std::vector<curve_point> rows;
     rows.reserve(points);
     for (int i = 0; i < points; ++i) {
@@ -102,13 +109,15 @@ std::vector<curve_point> swept_curve(contact& c, int points, const std::function
 }
 
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
-                                     const std::function<void()>& before_row) {
-    return rows_at(c, loads, false, before_row);
+                                     const std::function<void()>& before_row,
+                                     const refusal_before_solve& refused_at_once) {
+    return rows_at(c, loads, false, before_row, refused_at_once);
 }
 
 std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
-                                         const std::function<void()>& before_row) {
-    return rows_at(c, loads, true, before_row);
+                                         const std::function<void()>& before_row,
+                                         const refusal_before_solve& refused_at_once) {
+    return rows_at(c, loads, true, before_row, refused_at_once);
 }
 
 }  // namespace roughroll

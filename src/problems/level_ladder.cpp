@@ -266,7 +266,15 @@ std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<do
                                       std::vector<int>& n_used, const std::function<void()>& before_row) {
     const int first = ladder.rungs().front();
     contact& c = ladder.at(first);
-    std::vector<curve_point> rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, loads, before_row);
+    // A row no rung can answer is refused before any solve, with point()'s line (contact::beyond_every_n).
+    std::vector<bool> at_once;
+    const refusal_before_solve beyond = [&](double Q) {
+        std::optional<std::string> why = c.beyond_every_n(Q, ladder.rungs().back(), ladder.tolerance());
+        at_once.push_back(why.has_value());
+        return why;
+    };
+    std::vector<curve_point> rows =
+        sweep ? swept_curve(c, points, before_row, beyond) : creep_curve(c, loads, before_row, beyond);
     const double f = c.friction();
     n_used.assign(rows.size(), first);
     // Swept in c0 (beta_D = 0); dissimilar rollers' swept curve is continued at the given loads (swept_curve).
@@ -274,6 +282,10 @@ std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<do
     for (std::size_t i = 0; i < rows.size(); ++i) {
         curve_point& row = rows[i];
         if (!row.is_refused() && ladder.answers(c, row.solution, row.estimate)) continue;
+        if (!in_c0 && at_once.at(i)) {
+            n_used[i] = 0;
+            continue;
+        }
         // What the row was given: its load, or on a swept curve its stick end (swept_curve's c0s).
         const double given =
             in_c0 ? (i + 1 == rows.size() ? -1.0 : 2.0 * (1.0 - static_cast<double>(i) / (points - 1)) - 1.0)

@@ -48,6 +48,12 @@ std::optional<contact_width> settle_width(scene& s, normal_cache* cache = nullpt
 // A physical scene's point in SI units (nothing for a dimensionless scene).
 std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t);
 
+// Why no n the ladder tries (problems/level_ladder.hpp) can answer the point of s at the load Q within the
+// scene's tolerance, decided before any solve and before a physical scene's width is settled: one line saying
+// what to change (contact::beyond_every_n for the ladder's top rung); empty where a rung may answer, and
+// where s gives n (no ladder). solve_point refuses such a point, and curve_of such a row, with this line.
+std::optional<std::string> beyond_every_n(const scene& s, double Q);
+
 // A solved point with everything its report refers to.
 struct scene_point {
     scene settled;  // the scene, its surfaces at the contact width

@@ -41,14 +41,21 @@ std::vector<double> curve_loads(int points, double f);
 // docs/formulation.md 8(h)).
 std::vector<double> curve_loads(int points, double f, double beta_d);
 
+// Why the point at a load Q is refused before any solve (the ladder's contact::beyond_every_n for its top
+// rung, problems/level_ladder.hpp): one line; empty where the row is to be solved.
+using refusal_before_solve = std::function<std::optional<std::string>(double Q)>;
+
 // `before_row`, when set, is called before each row: a caller's hook between rows (the Python
-// module checks for Ctrl-C there); what it throws ends the curve.
+// module checks for Ctrl-C there); what it throws ends the curve. `refused_at_once`, when set, is
+// asked after `before_row`: a row it gives a line for is refused with that line, no level solved.
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
-                                     const std::function<void()>& before_row = {});
+                                     const std::function<void()>& before_row = {},
+                                     const refusal_before_solve& refused_at_once = {});
 // creep_curve with each row after an answered one started from that row's zones (contact::continued_point,
 // a continuation in the load: dissimilar rollers' swept curve); the same points to Newton's resolution.
 std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
-                                         const std::function<void()>& before_row = {});
+                                         const std::function<void()>& before_row = {},
+                                         const refusal_before_solve& refused_at_once = {});
 // The row of creep_curve for a load Q refused by `why`.
 curve_point refused_load(double Q, double f, const resolution_error& why);
 
@@ -57,6 +64,8 @@ curve_point refused_load(double Q, double f, const resolution_error& why);
 // rollers (beta_D != 0, Johnson's level; check_sweepable refuses coupling "full") no c0 parametrises
 // the zones (8(g)): the rows of creep_curve at curve_loads(points, f, beta_D), each continued from the
 // previous answered row (contact::continued_point), the same points to Newton's resolution.
-std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {});
+// `refused_at_once`: as creep_curve's, for the rows of dissimilar rollers (a load each; never asked of a row swept in c0).
+std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {},
+                                     const refusal_before_solve& refused_at_once = {});
 
 }  // namespace roughroll
