@@ -19,6 +19,7 @@
 
 #include "roughroll/problems/contact_width.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/io/micro_geometry_input.hpp"
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/layer/roughness_parameters.hpp"
@@ -391,7 +392,7 @@ void bm_five_zones(benchmark::State& state) {
     for (auto _ : state) {
         contact c(r, f, solver_options{static_cast<int>(state.range(2)), method::product},
                   dissimilar{beta, coupling_level::johnson});
-        dissimilar_zones d(c.tangential(), kernel::tangential(r), beta);
+        dissimilar_zones d(tangential_of(c), kernel::tangential(r), beta);
         const auto s = d.five_zones(Q);
         if (!s) state.SkipWithError("five zones: no answer");
         benchmark::DoNotOptimize(s ? s->xi : 0.0);

@@ -21,7 +21,8 @@ for f in bin/roughroll include/roughroll/roughroll.hpp include/roughroll/problem
 done
 # Only the public headers (CMakeLists.txt, ROUGHROLL_PUBLIC_HEADERS): the solvers' and numerics' stay here.
 for f in include/roughroll/problems/point_model.hpp include/roughroll/problems/tangential_problem.hpp \
-         include/roughroll/numerics/collocation.hpp; do
+         include/roughroll/problems/contact_internals.hpp include/roughroll/numerics/collocation.hpp \
+         include/roughroll/numerics/quadrature.hpp; do
     [ ! -e "$prefix/$f" ] || { echo "install_consumer: $f installed, a header of the library's own" >&2; exit 1; }
 done
 "$src/tests/installed_headers.sh" "$prefix/include"

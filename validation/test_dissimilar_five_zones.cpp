@@ -15,6 +15,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "aluminium_on_steel.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "test_zones_low_order.hpp"
@@ -25,7 +26,7 @@ namespace {
 // The product's five zones at (f, Q), n = 32, found without a guess (dissimilar_zones::five_zones).
 five_zone_solution product(double f, double Q, int n = 32, const roughness& r = roughness{}) {
     contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-    dissimilar_zones d(c.tangential(), kernel::tangential(r), beta_al_st);
+    dissimilar_zones d(tangential_of(c), kernel::tangential(r), beta_al_st);
     const auto s = d.five_zones(Q);
     if (!s) throw numerical_error("five zones: no start converged");
     return *s;
@@ -115,7 +116,7 @@ TEST(DissimilarFiveZones, DrivenAtThreeQuarters) {
 TEST(DissimilarFiveZones, SlipVelocityUpToTheTrailingEdge) {
     const double f = 0.05, Q = 0.75 * f;
     contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-    dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
+    dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st);
     const auto s = d.five_zones(Q);
     ASSERT_TRUE(s.has_value());
     std::vector<double> v;
@@ -136,7 +137,7 @@ TEST(DissimilarFiveZones, ConvergesInN) {
         // The other levels by Newton from n = 32's ends, as the levels of an estimate are found.
         const auto level = [&](int n) {
             contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-            dissimilar_zones d(c.tangential(), kernel::tangential(r), beta_al_st);
+            dissimilar_zones d(tangential_of(c), kernel::tangential(r), beta_al_st);
             const auto s = d.five_zones(0.0, {b.s1, b.c1, b.s2, b.c2});
             if (!s) throw numerical_error("five zones: Newton from the n = 32 ends did not converge");
             EXPECT_TRUE(s->checks.hold()) << n;
@@ -160,7 +161,7 @@ TEST(DissimilarFiveZones, RollersExchanged) {
     const double f = 0.05;
     for (double Q : {0.0, 0.75 * f}) {
         contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-        dissimilar_zones d(c.tangential(), kernel{}, beta_al_st), e(c.tangential(), kernel{}, -beta_al_st);
+        dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st), e(tangential_of(c), kernel{}, -beta_al_st);
         const auto a = d.five_zones(Q), b = e.five_zones(-Q);
         ASSERT_TRUE(a && b);
         EXPECT_EQ(a->s1, b->s1);
@@ -193,7 +194,7 @@ TEST(DissimilarFiveZones, NearbyScenesAllSolve) {
                                                     {0.1438337435056057, 64}};
     for (const auto& [beta, n] : cases) {
         contact c(roughness{}, f, solver_options{n, method::product}, dissimilar{beta, coupling_level::johnson});
-        dissimilar_zones d(c.tangential(), kernel{}, beta);
+        dissimilar_zones d(tangential_of(c), kernel{}, beta);
         const auto s = d.five_zones(0.0);
         ASSERT_TRUE(s) << beta << " " << n;
         EXPECT_TRUE(s->checks.hold());
@@ -211,7 +212,7 @@ TEST(DissimilarFiveZones, TowardsNoSlip) {
     std::vector<double> ends, distance;
     for (double f : {0.1, 0.125, 0.15, 0.175, 0.2}) {
         contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-        dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
+        dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st);
         const auto s = ends.empty() ? d.five_zones(0.0) : d.five_zones(0.0, ends);
         ASSERT_TRUE(s) << f;
         EXPECT_TRUE(s->checks.hold()) << f;
@@ -272,7 +273,7 @@ TEST(DissimilarFiveZones, LargeFrictionByContinuationInBetaOverF) {
 TEST(DissimilarFiveZones, BrakedSideHandsOverToThreeZones) {
     const double f = 0.05;
     contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-    dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
+    dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st);
     const auto near = d.five_zones(-0.02 * f);
     ASSERT_TRUE(near);
     EXPECT_TRUE(near->checks.hold());

@@ -17,6 +17,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "aluminium_on_steel.hpp"
 #include "command_output.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
@@ -39,7 +40,7 @@ run_result run_point(double Q, const char* scene = "aluminium-on-steel.toml", in
 void agrees(double Q) {
     const double f = 0.05;
     contact c(roughness{}, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-    dissimilar_zones d(c.tangential(), kernel::tangential(roughness{}), beta_al_st);
+    dissimilar_zones d(tangential_of(c), kernel::tangential(roughness{}), beta_al_st);
     const auto s = d.five_zones(Q);
     ASSERT_TRUE(s);
     ASSERT_TRUE(s->checks.hold());

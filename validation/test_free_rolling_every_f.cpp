@@ -31,6 +31,7 @@
 #include "aluminium_on_steel.hpp"
 #include "command_output.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/level_ladder.hpp"
@@ -228,7 +229,7 @@ TEST(FreeRollingEveryF, LayersBoundAgainstTheFiveZonesContinued) {
     for (const double f : {0.2, 0.25, 0.3, 0.35, 0.375, 0.4, 0.425, 0.45}) {
         contact c(roughness{}, f, solver_options{500, method::product},
                   dissimilar{beta_al_st, coupling_level::johnson});
-        dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
+        dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st);
         const auto s = ends.empty() ? d.five_zones(0.0) : d.five_zones(0.0, ends);
         ASSERT_TRUE(s) << f;
         ASSERT_TRUE(s->checks.hold()) << f;
@@ -281,7 +282,7 @@ TEST(FreeRollingEveryF, OtherFiveZonesFailTheStickCheck) {
     using namespace roughroll;
     const double f = 0.43;
     contact c(roughness{}, f, solver_options{512, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
-    dissimilar_zones d(c.tangential(), kernel{}, beta_al_st);
+    dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st);
     const double tc = no_slip_layers(beta_al_st, f).crossing;
     // Starts near each root (8 digits of the roots measured): Newton's roots, not these, are checked.
     const auto physical = d.five_zones(0.0, {-0.99990987, 0.99985233, 0.99995967, 0.99999555});

@@ -10,6 +10,7 @@
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/load_ratio.hpp"
@@ -291,7 +292,7 @@ TEST(OneParameter, ContactDispatchAndLoadRatio) {
     const auto swept = c.at_stick_end(0.2);
     EXPECT_EQ(swept.solution.xi, direct.at_stick_end(0.2).xi);
     ASSERT_TRUE(swept.estimate.has_value());
-    EXPECT_THROW(c.tangential(), input_error);
+    EXPECT_THROW(tangential_of(c), input_error);
 
     for (const solver_options o : {solver_options{128, method::one_parameter}, solver_options{64, method::paper},
                                    solver_options{64, method::product}, solver_options{128, method::extrapolated}}) {

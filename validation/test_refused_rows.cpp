@@ -20,6 +20,7 @@
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "roughroll/problems/one_parameter.hpp"
@@ -299,11 +300,11 @@ std::string nested_line(const std::exception& e) {
 TEST(RefusedRows, CollocationZoneSearchFaultIsAFault) {
     const double f = 0.3, Q = (1.0 - 1e-3) * f;
     contact c(zone_scenes::tangential_dominates_a(), f, solver_options{48, method::product});
-    zone_solver search(c.tangential().zone_operator());
+    zone_solver search(tangential_of(c).zone_operator());
     const std::optional<tangential_solution> clean = search.find(Q);
     ASSERT_TRUE(clean.has_value());
     ASSERT_TRUE(clean->layout.general() && clean->checks.hold());
-    stick_zone_operator faulty = c.tangential().zone_operator();
+    stick_zone_operator faulty = tangential_of(c).zone_operator();
     const auto solve = faulty.solve;
     faulty.solve = [solve](double start, double end) -> tangential_solution {
         if (start > -1.0) throw numerical_error("injected fault: singular zone system");

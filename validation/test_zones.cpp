@@ -23,6 +23,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "test_zones_low_order.hpp"
@@ -54,7 +55,7 @@ roughness unequal_kernels() {  // data/unequal-kernels.toml
 struct solved {
     contact c;
     zone_solver zones;
-    solved(const roughness& r, int n) : c(r, f, solver_options{n, method::product}), zones(c.tangential().zone_operator()) {}
+    solved(const roughness& r, int n) : c(r, f, solver_options{n, method::product}), zones(tangential_of(c).zone_operator()) {}
 };
 
 double integrate(const std::function<double(double)>& g, double lo, double hi, double pole = NAN) {
@@ -74,7 +75,7 @@ double integrate(const std::function<double(double)>& g, double lo, double hi, d
 // L1[p1](r) of 2(b) on the whole contact, by adaptive quadrature: the Cauchy principal value
 // (QAWC) and the kernel split at its jump (QAGS), from the traction alone.
 double unreduced_operator(solved& s, const tangential_solution& z, const kernel& k1, double r) {
-    const auto p1 = [&](double eta) { return s.c.tangential().traction(z, eta); };
+    const auto p1 = [&](double eta) { return tangential_of(s.c).traction(z, eta); };
     double sum = M_1_PI * integrate(p1, -1.0, 1.0, r);
     const auto kernel_term = [&](double eta) { return p1(eta) * k1(eta - r); };
     sum += integrate(kernel_term, -1.0, r) + integrate(kernel_term, r, 1.0);
@@ -111,7 +112,7 @@ TEST(Zones, SlipStickSlipSatisfiesComplementarity) {
         solved s(r, 48);
         for (double gap : {1e-4, 1e-9}) {
             const double Q = (1.0 - gap) * f;
-            EXPECT_FALSE(s.c.tangential().solve(Q).checks.stick_holds) << gap;
+            EXPECT_FALSE(tangential_of(s.c).solve(Q).checks.stick_holds) << gap;
             const tangential_solution z = s.zones.solve(Q);
             EXPECT_TRUE(z.layout.general()) << gap;
             ASSERT_EQ(z.layout.zones.size(), 3u);
@@ -137,14 +138,14 @@ TEST(Zones, SolvesTheUnreducedEquations) {
     const double Q = (1.0 - 1e-3) * f;
     const tangential_solution z = s.zones.solve(Q);
     ASSERT_TRUE(z.layout.general());
-    const auto p1 = [&](double eta) { return s.c.tangential().traction(z, eta); };
+    const auto p1 = [&](double eta) { return tangential_of(s.c).traction(z, eta); };
     EXPECT_NEAR(integrate(p1, -1.0, z.start()) + integrate(p1, z.start(), z.c0()) + integrate(p1, z.c0(), 1.0), Q, 1e-9);
     for (double u : {0.1, 0.37, 0.5, 0.81}) {
         const double x = z.start() + u * (z.c0() - z.start());
         EXPECT_NEAR(unreduced_operator(s, z, k1, x), z.xi, 1e-8) << x;
     }
     for (double x : {-0.999, 0.5 * (-1.0 + z.start()), 0.0, 0.9}) {
-        EXPECT_NEAR(z.xi - unreduced_operator(s, z, k1, x), s.c.tangential().slip_velocity(z, x), 1e-8) << x;
+        EXPECT_NEAR(z.xi - unreduced_operator(s, z, k1, x), tangential_of(s.c).slip_velocity(z, x), 1e-8) << x;
     }
 }
 
@@ -185,7 +186,7 @@ TEST(Zones, CreepCurveContinuousUpToGrossSliding) {
     EXPECT_GT(sliding.start(), -1.0);
     // xi(f) = -f min G: no sampled point lies lower.
     for (int i = 0; i <= 400; ++i)
-        EXPECT_LE(-sliding.xi / f, s.c.tangential().G(-1.0 + i / 200.0) + tol::few_roundings);
+        EXPECT_LE(-sliding.xi / f, tangential_of(s.c).G(-1.0 + i / 200.0) + tol::few_roundings);
     EXPECT_GE(sliding.checks.slip_margin, -tol::margin_floor);
     const tangential_solution mirror = s.zones.solve(-(1.0 - 1e-6) * f);
     const tangential_solution direct = s.zones.solve((1.0 - 1e-6) * f);
@@ -266,7 +267,7 @@ TEST(ZonesGridRoute, FindsSlipStickSlip) {
     const roughness r = tangential_dominates_a();
     solved s(r, 48);
     const double Q = (1.0 - 1e-2) * f;
-    ASSERT_FALSE(s.c.tangential().solve(Q).checks.stick_holds);
+    ASSERT_FALSE(tangential_of(s.c).solve(Q).checks.stick_holds);
     const tangential_solution z = s.zones.solve(Q);
     ASSERT_TRUE(z.layout.general());
     const grid_pair g = grid_route(s.c, r, Q, 200);
@@ -404,10 +405,10 @@ TEST(Zones, ScanOfScenes) {
         r.cylinder2.tangential = {T(0.3, 6.0), A()};
         r.cylinder2.normal = {T(0.03, 0.6), A()};
         solved s(r, 32);
-        const double slope = (s.c.tangential().G(-1.0 + 1e-7) - s.c.tangential().G(-1.0)) / 1e-7;
+        const double slope = (tangential_of(s.c).G(-1.0 + 1e-7) - tangential_of(s.c).G(-1.0)) / 1e-7;
         for (double gap : {1e-3, 1e-9}) {
             const double Q = (1.0 - gap) * f;
-            if (s.c.tangential().solve(Q).checks.hold()) continue;
+            if (tangential_of(s.c).solve(Q).checks.hold()) continue;
             ++failing;
             EXPECT_LT(slope, 0.0) << scene;
             const tangential_solution z = s.zones.solve(Q);

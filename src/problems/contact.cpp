@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,8 +55,8 @@ const normal_solution& contact::impl::normal() const {
 
 const coupling_summary* contact::coupling() const { return impl_->model_->coupling(); }
 
-tangential_solver& contact::tangential() {
-    if (tangential_solver* t = impl_->model_->tangential()) return *t;
+tangential_solver& contact_internals::tangential(contact& c) {
+    if (tangential_solver* t = c.impl_->model_->tangential()) return *t;
     throw input_error(
         "method 'one-parameter' has no two-parameter tangential solver: use contact::traction and "
         "contact::slip_velocity");

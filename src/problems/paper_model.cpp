@@ -140,6 +140,7 @@ public:
         return tangential_.slip_velocity(d, r);
     }
     tangential_solution at_stick_end(double c0, bool checked, bool near) override {
+        checkpoint();  // as every level's solve (contact::set_checkpoint)
         return tangential_.at_stick_end(c0, checked, near);
     }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override;
@@ -245,6 +246,7 @@ public:
     using point_model::slip_velocity;
     double slip_velocity(const tangential_solution& d, double r) override { return limit_.slip_velocity(d, r); }
     tangential_solution at_stick_end(double c0, bool checked, bool) override {
+        checkpoint();
         return limit_.at_stick_end(c0, checked);
     }
     tangential_solution general(double Q, std::optional<zone_guess>) override {

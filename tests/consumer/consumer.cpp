@@ -5,17 +5,64 @@
 // scene (which links toml++ through the library), solves the smooth scene's creep point and a rough
 // one (the smooth one by the contact's closed-form path), and exits 1 unless the smooth xi is Carter's
 // and the rough point satisfies the paper's checks with an error estimate that bounds its distance
-// from the default method's point.
+// from the default method's point; then calls every member contact.hpp declares on the rough contact.
 #include <cmath>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "roughroll/roughroll.hpp"  // nlohmann/json.hpp included, must compile here
 #include "roughroll/io/micro_geometry_input.hpp"
 #include "roughroll/io/profile_csv.hpp"
 #include "roughroll/io/roughness_output.hpp"
 #include "roughroll/layer/piecewise_averages.hpp"
+
+namespace {
+bool fails(const std::string& what) {
+    std::cerr << "consumer: " << what << "\n";
+    return false;
+}
+
+// Every member contact.hpp declares, called from the install tree alone (issue 24 review S8: contact::tangential()
+// returned a type no installed header defined; normal_solution's rule is the installed gauss_chebyshev.hpp's):
+// `c` the rough contact at n = 32 and s its point at Q.
+bool every_member(roughroll::contact& c, const roughroll::tangential_solution& s, double Q, double f) {
+    using namespace roughroll;
+    const normal_solution& normal = c.normal();
+    if (normal.rule.n != 32 || normal.rule.nodes.size() != 32 || normal.phi.size() != 32)
+        return fails("the normal solution's rule is not the contact's n = 32");
+    const pressure_peak peak = peak_of(normal);
+    if (!(peak.p > 0.0 && peak.p < 2.0 / std::acos(-1.0)))
+        return fails("the rough pressure's peak is not below Hertz's 2/pi");  // the layer flattens it (README)
+    if (c.coupling() != nullptr || c.friction() != f || c.materials().beta_d != 0.0)
+        return fails("the contact's coupling, friction or materials are not the scene's");
+    const tangential_solution d = c.distribution(s);
+    const std::vector<double> grid{-0.5, 0.0, 0.5};
+    const std::vector<contact::distribution_row> rows = c.distributions(d, grid);
+    const std::vector<double> v = c.slip_velocity(d, grid);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const contact::distribution_row& row = rows[i];
+        if (row.p1 != c.traction(d, row.r) || row.v != c.slip_velocity(d, row.r) || row.v != v[i] ||
+            !(std::fabs(row.p1) <= f * row.p * (1.0 + 1e-12)))
+            return fails("the distributions disagree with traction() and slip_velocity(), or |p1| > f p, at r = " +
+                         shortest(row.r));
+    }
+    int levels = 0;
+    c.set_checkpoint([&levels] { ++levels; });
+    const contact::swept_point swept = c.at_stick_end(s.c0());
+    if (levels == 0 || !(std::fabs(swept.solution.Q - Q) <= 1e-8))
+        return fails("the point swept at the stick end c0 did not call the checkpoint (" + std::to_string(levels) +
+                     " levels) or has another load (" + shortest(swept.solution.Q - Q) + " from the point's)");
+    if (!(std::fabs(c.continued_point(Q, s).xi - s.xi) <= 1e-10))
+        return fails("the point continued from s has another creep");
+    if (c.beyond_every_n(Q, max_nodes, 1e-4))
+        return fails("the ladder's rule refuses a load the contact answers");
+    std::cout << "rough:  every member of contact.hpp called (peak pressure " << shortest(peak.p) << ", " << levels
+              << " levels solved for the swept point)\n";
+    return true;
+}
+}  // namespace
 
 int main() {
     using namespace roughroll;
@@ -49,5 +96,5 @@ int main() {
         std::cerr << "consumer: the rough point has no error estimate, or its xi is further from the default's\n";
         return 1;
     }
-    return 0;
+    return every_member(c, s, Q, rough.friction) ? 0 : 1;
 }

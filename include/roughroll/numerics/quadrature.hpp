@@ -13,24 +13,9 @@
 #include <cstddef>
 #include <vector>
 
+#include "roughroll/numerics/gauss_chebyshev.hpp"  // the rule (installed: normal_solution holds one)
+
 namespace roughroll {
-
-// The documented range of n: at least 2 nodes, and no more than a dense
-// (n+2)x(n+2) system that solves in about a second.
-constexpr int min_nodes = 2;
-constexpr int max_nodes = 1000;
-
-// Throws input_error naming n when it is outside [min_nodes, max_nodes].
-void check_node_count(int n);
-
-struct gauss_chebyshev {
-    explicit gauss_chebyshev(int n);  // throws input_error outside [min_nodes, max_nodes]
-
-    int n;
-    std::vector<double> nodes;        // eta_k = cos(k pi/(n+1)), k = 1..n      (4.6)
-    std::vector<double> weights;      // w_k = pi/(n+1) sin^2(k pi/(n+1))       (4.6)
-    std::vector<double> collocation;  // s_m = cos((2m-1) pi/(2n+2)), m = 1..n+1 (4.7)
-};
 
 // Gauss-Legendre nodes and weights on [-1, 1], by gsl_integration_fixed (Golub-Welsch).
 // Not gsl_integration_glfixed: that is exact only at its tabulated orders and loses

@@ -46,9 +46,8 @@
 
 namespace roughroll {
 
-class normal_cache;       // problems/normal_problem.hpp
-class level_store;        // problems/point_model.hpp
-class tangential_solver;  // problems/tangential_problem.hpp
+class normal_cache;  // problems/normal_problem.hpp (a cache the caller may pass; nullptr: none)
+class level_store;   // problems/point_model.hpp (a ladder's store of levels; nullptr: none)
 
 class contact {
 public:
@@ -72,9 +71,6 @@ public:
     // What the alternation of full coupling measured at the last point (offset e, iterations,
     // contraction, pressure change); nullptr at Johnson's level and before a point.
     const coupling_summary* coupling() const;
-    // The two-parameter tangential solver; for method::one_parameter there is none: throws
-    // input_error (use traction() and slip_velocity() below, which serve every method).
-    tangential_solver& tangential();
     double friction() const;
 
     tangential_solution point(double Q);
@@ -140,6 +136,8 @@ public:
     std::vector<distribution_row> distributions(const tangential_solution& d, const std::vector<double>& grid);
 
 private:
+    // The library's own access to the solvers behind a contact (problems/contact_internals.hpp, not installed).
+    friend struct contact_internals;
     struct impl;  // src/problems/contact_impl.hpp
     std::unique_ptr<impl> impl_;
 };

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "roughroll/numerics/method.hpp"
-#include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/numerics/gauss_chebyshev.hpp"
 
 namespace roughroll {
 

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The library's own access to the solvers behind a contact (contact.hpp): its tests reach the
+// two-parameter tangential solver of a level through it. Not installed: the public contact's
+// traction(), slip_velocity() and distributions() serve every method, and the solver's header
+// (tangential_problem.hpp) brings the numerics with it.
+#pragma once
+
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+
+namespace roughroll {
+
+struct contact_internals {
+    // The two-parameter tangential solver of c's level; for method::one_parameter there is none:
+    // throws input_error (contact::traction and contact::slip_velocity serve every method).
+    static tangential_solver& tangential(contact& c);
+};
+
+inline tangential_solver& tangential_of(contact& c) { return contact_internals::tangential(c); }
+
+}  // namespace roughroll
