@@ -95,6 +95,10 @@ public:
     virtual bool shareable() const { return false; }
     // The ladder's store (level_store) where this model's levels are asked for first; none by default.
     void share_levels_in(std::weak_ptr<level_store> store) { store_ = std::move(store); }
+    // Drops the levels this model holds (made again on the next ask, the same numbers where shareable()): the
+    // store's shared models hold each other (level n holds 2n, whose level n/2 is n), a cycle of owners that
+    // the store breaks when it ends (LeakSanitizer found it).
+    virtual void forget_levels() {}
 
 protected:
     template <class M>
@@ -153,6 +157,14 @@ private:
     }
     std::vector<std::pair<key, std::shared_ptr<point_model>>> shared_;
     std::map<int, int> made_;
+
+public:
+    level_store() = default;
+    level_store(const level_store&) = delete;
+    level_store& operator=(const level_store&) = delete;
+    ~level_store() {
+        for (const auto& entry : shared_) entry.second->forget_levels();
+    }
 };
 
 // 'extrapolated' on rough surfaces: Richardson's rule on the level n/2 (a smooth scene is exact at one level).
@@ -201,6 +213,9 @@ public:
         for (int m : ms) levels.push_back(&at(m));
         return levels;
     }
+
+    // Every level dropped (point_model::forget_levels).
+    void clear() { made_.clear(); }
 
 private:
     const point_model& holder_;
