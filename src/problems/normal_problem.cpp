@@ -19,6 +19,16 @@ double normal_solution::pressure(double r) const {
     return kinks ? smooth + (*kinks)(r) : smooth;  // docs/formulation.md 8(l) step 0
 }
 
+std::vector<double> normal_solution::pressure(const std::vector<double>& r) const {
+    std::vector<double> p(r.size());
+    u_series(b, r.data(), p.data(), r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        const double smooth = std::fabs(r[i]) >= 1.0 ? 0.0 : p[i] * std::sqrt(1.0 - r[i] * r[i]);
+        p[i] = kinks && std::fabs(r[i]) < 1.0 ? smooth + (*kinks)(r[i]) : smooth;
+    }
+    return p;
+}
+
 pressure_peak peak_of(const normal_solution& s) {
     // The least value of -p; -p is 0 at both edges, so no edge is the answer.
     const auto minus_p = [&s](double r) { return -s.pressure(r); };

@@ -95,18 +95,8 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
     const std::vector<double> g = G(r);
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
     if (forcing != 0.0) {  // Dundurs' term of (D2), docs/formulation.md 8(e): xi + sigma beta_D p + f G
-        // p = normal_solution::pressure at the n + 1 points, bit for bit, its U-series summed for all at once (the
-        // batched Clenshaw of quadrature.hpp): at full coupling every zone solve of Newton's steps takes it.
-        std::vector<double> phi(r.size());
-        u_series(normal_.b, r.data(), phi.data(), r.size());
-        for (int m = 0; m <= n_; ++m) {
-            double p = 0.0;  // (4.1), + p_q^0 with the kinks (8(l) step 0)
-            if (std::fabs(r[m]) < 1.0) {
-                p = phi[m] * std::sqrt(1.0 - r[m] * r[m]);
-                if (normal_.kinks) p += (*normal_.kinks)(r[m]);
-            }
-            gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + forcing * p);
-        }
+        const std::vector<double> p = normal_.pressure(r);  // at full coupling every zone solve of Newton's steps
+        for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + forcing * p[m]);
     }
     if (extra)
         for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, gsl_vector_get(rhs, m) + (*extra)[m]);
@@ -380,15 +370,13 @@ traction_checks tangential_solver::check(const tangential_solution& s) {
         // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
         // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
         const std::size_t count = r.size();
-        std::vector<double> t(count), phi(count), psi(count, 0.0), gap(count);
+        std::vector<double> t(count), psi(count, 0.0), gap(count);
         const double rho = s.rho();
         for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
-        u_series(normal_.b, r.data(), phi.data(), count);
+        const std::vector<double> p = normal_.pressure(r);
         if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
         for (std::size_t i = 0; i < count; ++i) {
-            // p of (4.1), with the explicit kinks p_q^0 at full coupling (docs/formulation.md 8(l) step 0).
-            const double p = std::fabs(r[i]) >= 1.0 ? 0.0 : phi[i] * std::sqrt(1.0 - r[i] * r[i]);
-            const double fp = f_ * (normal_.kinks ? p + (*normal_.kinks)(r[i]) : p);
+            const double fp = f_ * p[i];
             const bool inside = !(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty());
             const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
             gap[i] = fp - std::fabs(fp + q);  // |p1| = |sign (f p + q0)|, (3.15)

@@ -39,6 +39,9 @@ struct normal_solution {
     std::shared_ptr<const pressure_kinks> kinks;
 
     double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2) (4.1), + p_q^0(r) with `kinks`
+    // The same at each r[i], bit for bit, the U-series summed for all points at once (the batched Clenshaw of
+    // quadrature.hpp): the zone solves and checks take p at a zone's points.
+    std::vector<double> pressure(const std::vector<double>& r) const;
 };
 
 // The peak of the pressure p(r) of (4.1) on (-1, 1): its value (in units of P2/a) and position r.
