@@ -20,7 +20,8 @@ for f in bin/roughroll include/roughroll/roughroll.hpp include/roughroll/problem
     [ -e "$prefix/$f" ] || { echo "install_consumer: $f not installed" >&2; exit 1; }
 done
 # Only the public headers (CMakeLists.txt, ROUGHROLL_PUBLIC_HEADERS): the solvers' and numerics' stay here.
-for f in include/roughroll/problems/point_model.hpp include/roughroll/problems/tangential_problem.hpp \
+for f in include/roughroll/problems/point_model.hpp include/roughroll/problems/level_store.hpp \
+         include/roughroll/problems/tangential_problem.hpp \
          include/roughroll/problems/contact_internals.hpp include/roughroll/numerics/collocation.hpp \
          include/roughroll/numerics/quadrature.hpp; do
     [ ! -e "$prefix/$f" ] || { echo "install_consumer: $f installed, a header of the library's own" >&2; exit 1; }

@@ -13,6 +13,7 @@
 //  - Every row of Fig. 2's curves (data/fig2*.toml) meets the default tolerance at the default n
 //    of the default method and of the files' own method: no cost there.
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -26,6 +27,7 @@
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 
 using namespace roughroll;
@@ -90,36 +92,60 @@ TEST(LevelLadder, ExplicitNIsTodaysPoint) {
     }
 }
 
-// The rungs share their levels (issue 24, 4; level_store in point_model.hpp): the near-sliding climb solves
-// rung 128 (levels 32, 64, 128 and 256, the one-parameter limit's confirmation) and rung 256 (64, 128, 256,
-// 512). Each n is made once (on the store-less ladder 64, 128 and 256 were made twice), and the answer is
-// the one rung 256 gives alone, byte for byte: the shared levels are the limit's, which no start moves.
+// The rungs share their levels (issue 24, 4; level_store.hpp): the near-sliding climb solves rung 128 (levels
+// 32, 64, 128 and 256, the one-parameter limit's confirmation) and rung 256 (64, 128, 256, 512). Each n is made
+// once (on the store-less ladder 64, 128 and 256 were made twice), and the answer is the one rung 256 gives alone,
+// byte for byte: the shared levels are the limit's, which no start moves. A shared level calls the hook of the rung
+// that asks for it (levels 64 and 128, made by rung 128, solved again at the point by rung 256, call rung 256's
+// only), and the rung released from the ladder answers after the ladder has ended (its store kept by it).
 TEST(LevelLadder, RungsShareTheirLevels) {
     const scene s = parse_scene(near_sliding, "ladder.toml");
-    level_ladder ladder(s.solver, s.surfaces, [&s](int n, const std::shared_ptr<level_store>& levels) {
-        solver_options at = s.solver;
-        if (n != at.nodes()) at.n = n;
-        return std::make_unique<contact>(s.surfaces, s.friction, at, s.materials, nullptr, levels);
-    });
-    const level_ladder::answer a = ladder.point(0.29997);
-    EXPECT_EQ(a.n, 256);
-    for (int n : {32, 64, 128, 256, 512}) EXPECT_EQ(ladder.levels().made(n), 1) << "n = " << n;
-    EXPECT_EQ(ladder.levels().made(1000), 0);
+    std::map<int, int> hooks;      // each rung's hook calls
+    int rung_128_before_256 = -1;  // rung 128's when rung 256 is built (rung 128's work done)
+    std::optional<level_ladder::answer> a;
+    std::unique_ptr<contact> released;
+    {
+        level_ladder ladder(s.solver, s.surfaces, [&](int n, const std::shared_ptr<level_store>& levels) {
+            solver_options at = s.solver;
+            if (n != at.nodes()) at.n = n;
+            if (n == 256) rung_128_before_256 = hooks[128];
+            auto c = std::make_unique<contact>(
+                contact_internals::with_levels(s.surfaces, s.friction, at, s.materials, nullptr, levels));
+            c->set_checkpoint([&hooks, n] { ++hooks[n]; });
+            return c;
+        });
+        a = ladder.point(0.29997);
+        EXPECT_EQ(a->n, 256);
+        for (int n : {32, 64, 128, 256, 512}) EXPECT_EQ(ladder.levels().made(n), 1) << "n = " << n;
+        EXPECT_EQ(ladder.levels().made(1000), 0);
+        released = ladder.release(256);
+    }
+    EXPECT_GT(rung_128_before_256, 0);
+    EXPECT_EQ(hooks[128], rung_128_before_256);
+    EXPECT_GT(hooks[256], 0);
     // Rung 256 alone, a contact with no store: every level its own.
     solver_options alone = s.solver;
     alone.n = 256;
     contact c(s.surfaces, s.friction, alone, s.materials);
     const tangential_solution p = c.point(0.29997);
     const std::optional<error_estimate> e = c.estimate(p);
-    ASSERT_TRUE(e && a.estimate);
-    EXPECT_EQ(a.solution.xi, p.xi);
-    EXPECT_EQ(a.solution.c0(), p.c0());
-    EXPECT_EQ(a.solution.start(), p.start());
-    EXPECT_EQ(ladder.at(256).normal().lambda, c.normal().lambda);
-    EXPECT_EQ(a.estimate->lambda, e->lambda);
-    EXPECT_EQ(a.estimate->c0, e->c0);
-    EXPECT_EQ(a.estimate->xi, e->xi);
-    EXPECT_EQ(a.estimate->against, e->against);
+    ASSERT_TRUE(e && a->estimate);
+    EXPECT_EQ(a->solution.xi, p.xi);
+    EXPECT_EQ(a->solution.c0(), p.c0());
+    EXPECT_EQ(a->solution.start(), p.start());
+    EXPECT_EQ(a->estimate->lambda, e->lambda);
+    EXPECT_EQ(a->estimate->c0, e->c0);
+    EXPECT_EQ(a->estimate->xi, e->xi);
+    EXPECT_EQ(a->estimate->against, e->against);
+    // The released rung after the ladder: its point and estimate again, its levels (the store's) still there.
+    EXPECT_EQ(released->normal().lambda, c.normal().lambda);
+    const int before = hooks[256];
+    const tangential_solution q = released->point(0.29997);
+    const std::optional<error_estimate> eq = released->estimate(q);
+    ASSERT_TRUE(eq);
+    EXPECT_EQ(q.xi, p.xi);
+    EXPECT_EQ(eq->xi, e->xi);
+    EXPECT_GT(hooks[256], before);
     // and the program's answer, through scene_rungs, is the explicit n = 256 point's JSON (but for the seconds)
     const nlohmann::json climbed = without_seconds(to_json(solve_point(s, std::nullopt).report()));
     const nlohmann::json fixed =

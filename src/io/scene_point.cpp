@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "roughroll/problems/load_ratio.hpp"
 #include "roughroll/problems/level_ladder.hpp"
@@ -102,7 +103,7 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
         // Full coupling of a smooth pair: the dimensionless contact does not depend on the width
         // (no layer; find_width takes a = a_H sqrt(lambda) from one coupled point), so the contact
         // whose point gives lambda is the contact at the width found, its coupled point at Q kept.
-        contact c(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
+        contact c = contact_internals::with_levels(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
         c.set_checkpoint(checkpoint);
         width = find_width(
             *s.physical,
@@ -115,7 +116,7 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
         return c;
     }
     width = settle_width(s, &cache, Q, checkpoint);
-    contact c(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
+    contact c = contact_internals::with_levels(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
     c.set_checkpoint(checkpoint);
     return c;
 }
@@ -140,7 +141,8 @@ struct scene_rungs {
             c = std::make_unique<contact>(settled_contact(at, width, *Q, checkpoint, levels));
         } else {
             width = settle_width(at);
-            c = std::make_unique<contact>(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels);
+            c = std::make_unique<contact>(
+                contact_internals::with_levels(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels));
             c->set_checkpoint(checkpoint);
         }
         settled.insert_or_assign(n, std::make_pair(std::move(at), width));

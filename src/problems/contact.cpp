@@ -16,15 +16,21 @@
 namespace roughroll {
 
 contact::impl::impl(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                    normal_cache* cache, const std::shared_ptr<level_store>& levels)
-    : surfaces_(surfaces), options_(options), f_(f), materials_(materials) {
+                    normal_cache* cache, std::shared_ptr<level_store> levels)
+    : surfaces_(surfaces), options_(options), f_(f), materials_(materials), store_(std::move(levels)) {
     if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     check_dissimilar(materials, options);
     // Richardson's rule holds only where the error already falls like n^-4.
     if (extrapolates(surfaces, options)) check_extrapolation_range(widest_kernel(), options.nodes(), "these kernels");
     const auto make = [&] { return make_point_model(surfaces, f, options, materials, cache); };
-    model_ = levels ? levels->model({surfaces, f, materials, options}, make) : make();
-    if (levels) model_->share_levels_in(levels);
+    if (store_) {  // the store's model (an aliasing pointer that keeps the store), or else this contact's own
+        std::unique_ptr<point_model> own;
+        point_model& m = store_->model({surfaces, f, materials, options}, make, own);
+        model_ = own ? std::shared_ptr<point_model>(std::move(own)) : std::shared_ptr<point_model>(store_, &m);
+        model_->share_levels_in(store_.get());
+    } else {
+        model_ = make();
+    }
     if (extrapolates(surfaces, options)) {
         companion_ = &model_->level(options.nodes() / 2);
         reported_ = std::make_unique<normal_solution>(model_->normal());
@@ -33,8 +39,16 @@ contact::impl::impl(const roughness& surfaces, double f, const solver_options& o
 }
 
 contact::contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                 normal_cache* cache, const std::shared_ptr<level_store>& levels)
-    : impl_(std::make_unique<impl>(surfaces, f, options, materials, cache, levels)) {}
+                 normal_cache* cache)
+    : contact(std::make_unique<impl>(surfaces, f, options, materials, cache, nullptr)) {}
+
+contact::contact(std::unique_ptr<impl> state) : impl_(std::move(state)) {}
+
+contact contact_internals::with_levels(const roughness& surfaces, double f, const solver_options& options,
+                                       const dissimilar& materials, normal_cache* cache,
+                                       std::shared_ptr<level_store> levels) {
+    return contact(std::make_unique<contact::impl>(surfaces, f, options, materials, cache, std::move(levels)));
+}
 
 contact::contact(contact&&) noexcept = default;
 contact& contact::operator=(contact&&) noexcept = default;
@@ -44,7 +58,10 @@ double contact::friction() const { return impl_->f_; }
 
 const dissimilar& contact::materials() const { return impl_->materials_; }
 
-void contact::set_checkpoint(std::function<void()> hook) { impl_->model_->set_checkpoint(std::move(hook)); }
+void contact::set_checkpoint(std::function<void()> hook) {
+    impl_->hook_ = hook;  // a model of the store calls the hook at work (level_store.hpp)
+    if (!impl_->store_ || !impl_->model_->shareable()) impl_->model_->set_checkpoint(std::move(hook));
+}
 
 const normal_solution& contact::normal() const { return impl_->normal(); }
 
@@ -70,10 +87,12 @@ std::vector<int> contact::impl::below() {
 }
 
 tangential_solution contact::point(double Q) {
+    const auto working = impl_->working();
     return impl_->model_->point(Q, [this] { return impl_->below(); });
 }
 
 tangential_solution contact::continued_point(double Q, const tangential_solution& previous) {
+    const auto working = impl_->working();
     return impl_->model_->continued(Q, previous, [this] { return impl_->below(); });
 }
 
@@ -82,11 +101,20 @@ kernel contact::impl::widest_kernel() const {
     return kernel(std::vector<exponential_term>{{1.0, rate}});
 }
 
-tangential_solution contact::distribution(const tangential_solution& s) { return impl_->distribution(s); }
+tangential_solution contact::distribution(const tangential_solution& s) {
+    const auto working = impl_->working();
+    return impl_->distribution(s);
+}
 
-std::optional<error_estimate> contact::estimate(const tangential_solution& s) { return impl_->estimate(s); }
+std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    const auto working = impl_->working();
+    return impl_->estimate(s);
+}
 
-contact::swept_point contact::at_stick_end(double c0) { return impl_->at_stick_end(c0); }
+contact::swept_point contact::at_stick_end(double c0) {
+    const auto working = impl_->working();
+    return impl_->at_stick_end(c0);
+}
 
 std::optional<std::string> contact::beyond_every_n(double Q, int top, double tolerance) const {
     return impl_->model_->beyond_every_n(Q, top, tolerance);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,7 +20,7 @@ namespace roughroll {
 
 struct contact::impl {
     impl(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-         normal_cache* cache, const std::shared_ptr<level_store>& levels);
+         normal_cache* cache, std::shared_ptr<level_store> levels);
 
     const normal_solution& normal() const;  // contact::normal
     tangential_solution distribution(const tangential_solution& s) { return model_->distribution(s); }
@@ -47,7 +48,12 @@ struct contact::impl {
     solver_options options_;
     double f_;
     dissimilar materials_;
-    std::shared_ptr<point_model> model_;         // the points' model, chosen once (point_model.hpp)
+    // The hook of contact::set_checkpoint, at work in the store while a call of this contact may solve.
+    level_store::at_work working() { return {store_.get(), hook_}; }
+
+    std::shared_ptr<level_store> store_;         // a ladder's (level_store.hpp), or none
+    std::function<void()> hook_;                 // contact::set_checkpoint's
+    std::shared_ptr<point_model> model_;         // the points' model, chosen once; the store's keeps the store
     point_model* companion_ = nullptr;           // method::extrapolated: the coarse level n/2 (product)
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
     std::array<point_model*, 3> levels_{};       // the estimate's levels, coarsest first; nullptr: this one

@@ -12,6 +12,7 @@
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/point_model.hpp"
 
 namespace roughroll {
 
@@ -61,6 +62,20 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
         }
     }
     return worst;
+}
+
+level_store::~level_store() = default;
+
+point_model& level_store::model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
+                                std::unique_ptr<point_model>& own) {
+    for (const auto& [at, m] : shared_)
+        if (at == k) return *m;
+    own = make();
+    ++made_[k.options.nodes()];
+    if (!own->shareable()) return *own;
+    own->share_levels_in(this);
+    own->set_checkpoint([this] { checkpoint(); });
+    return *shared_.emplace_back(k, std::move(own)).second;
 }
 
 level_ladder::level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make)
@@ -151,7 +166,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     };
     std::optional<best_reached> best;
     std::string last_reason, skipped, beyond_all;
-    bool advised_last = false;  // the last rung tried refused the point with a line that says what to change
+    bool advised_last = false;    // the last rung tried refused the point with a line that says what to change
     bool rounding_limit = false;  // the last rung tried met the ends' rounding limit, which grows with n: no rung above
     int last_n = rungs_.back();   // the last rung tried
     std::vector<bool> skip(rungs_.size(), false);
@@ -225,8 +240,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + std::to_string(last_n) +
-               ": " + last_reason +
-               skipped + ")" + (advised_last ? "" : "; give n to see that point, or try another method or zone search");
+               ": " + last_reason + skipped + ")" +
+               (advised_last ? "" : "; give n to see that point, or try another method or zone search");
     }
     throw resolution_error(msg);
 }

@@ -240,7 +240,6 @@ public:
     // No level starts another's search (point ignores `below`, like() searches afresh) and single()'s cache
     // holds what a solve gives: a ladder's rungs share these levels (level_store).
     bool shareable() const override { return true; }
-    void forget_levels() override { levels_.clear(); }
     const normal_solution& normal() const override { return limit_.normal(); }
     tangential_solver* tangential() override { return nullptr; }
     double traction(const tangential_solution& d, double r) override { return limit_.traction(d, r); }

@@ -47,7 +47,6 @@
 namespace roughroll {
 
 class normal_cache;  // problems/normal_problem.hpp (a cache the caller may pass; nullptr: none)
-class level_store;   // problems/point_model.hpp (a ladder's store of levels; nullptr: none)
 
 class contact {
 public:
@@ -55,11 +54,10 @@ public:
     // section 8); the default beta_D = 0 is the paper's problem, solved by exactly the same calls.
     // `cache`: the normal problems of the scene solved before (the width search's, whose last
     // trial is the width found: normal_problem.hpp), for this level and its companion; the
-    // contact keeps copies, not the cache. `levels`: the store of a ladder's rungs (level_ladder.hpp), where
-    // the model and its levels are taken from when another rung made them and their numbers are the same
-    // (point_model.hpp); none: every level made here.
+    // contact keeps copies, not the cache. (A ladder's rungs, which share their levels, are built by
+    // contact_internals::with_levels.)
     contact(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials = {},
-            normal_cache* cache = nullptr, const std::shared_ptr<level_store>& levels = nullptr);
+            normal_cache* cache = nullptr);
     contact(contact&&) noexcept;
     contact& operator=(contact&&) noexcept;
     ~contact();
@@ -139,6 +137,7 @@ private:
     // The library's own access to the solvers behind a contact (problems/contact_internals.hpp, not installed).
     friend struct contact_internals;
     struct impl;  // src/problems/contact_impl.hpp
+    explicit contact(std::unique_ptr<impl> state);
     std::unique_ptr<impl> impl_;
 };
 

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The library's own access to the solvers behind a contact (contact.hpp): its tests reach the
-// two-parameter tangential solver of a level through it. Not installed: the public contact's
-// traction(), slip_velocity() and distributions() serve every method, and the solver's header
-// (tangential_problem.hpp) brings the numerics with it.
+// two-parameter tangential solver of a level through it, and a ladder builds its rungs by it (with_levels).
+// Not installed: the public contact's traction(), slip_velocity() and distributions() serve every method,
+// and the solver's header (tangential_problem.hpp) brings the numerics with it.
 #pragma once
 
+#include <memory>
+
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/level_store.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
@@ -14,6 +17,10 @@ struct contact_internals {
     // The two-parameter tangential solver of c's level; for method::one_parameter there is none:
     // throws input_error (contact::traction and contact::slip_velocity serve every method).
     static tangential_solver& tangential(contact& c);
+    // The contact's constructor with a ladder's store (level_ladder.hpp, level_store.hpp): its model and levels
+    // are the store's where another rung made them and their numbers are the same; nullptr: every level made here.
+    static contact with_levels(const roughness& surfaces, double f, const solver_options& options,
+                               const dissimilar& materials, normal_cache* cache, std::shared_ptr<level_store> levels);
 };
 
 inline tangential_solver& tangential_of(contact& c) { return contact_internals::tangential(c); }

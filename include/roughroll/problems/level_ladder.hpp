@@ -12,7 +12,7 @@
 // curve. At the first rung the point is exactly contact::point and contact::estimate at the
 // method's default n, so a point that meets the tolerance there is today's point, digit for digit.
 //
-// The rungs share their levels through the ladder's level_store (issue 24, 4; point_model.hpp): rung n
+// The rungs share their levels through the ladder's level_store (issue 24, 4; level_store.hpp): rung n
 // solves n/4, n/2, n (and 2n where its estimate asks), rung 2n n/2, n, 2n (and 4n), so a level whose
 // numbers do not depend on which rung asked first (point_model::shareable, the one-parameter limit) is
 // solved once per climb and given to every rung after. Other models' levels start from the level below
@@ -30,7 +30,7 @@
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/creep_curve.hpp"
-#include "roughroll/problems/point_model.hpp"
+#include "roughroll/problems/level_store.hpp"
 
 namespace roughroll {
 
@@ -62,7 +62,7 @@ public:
     // search: with zone_search::single (the paper's zone, its checks reported and never acted on) a
     // point whose checks fail is answered, flagged, at the rung where it fails, as at a given n: no n
     // makes a wrong zone structure right.
-    // With `levels`, the ladder's store, for the contact's constructor: the rungs share their levels. A
+    // With `levels`, the ladder's store, for contact_internals::with_levels: the rungs share their levels. A
     // factory of n alone builds rungs that share none (each solves its levels as its own).
     using rung_factory = std::function<std::unique_ptr<contact>(int n, const std::shared_ptr<level_store>& levels)>;
     level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make);
@@ -113,7 +113,7 @@ private:
     double strength_;     // the kernels' sum |T| (kernel::strength)
     bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
     rung_factory make_;
-    std::shared_ptr<level_store> levels_;  // held by the rungs' models too (a released contact outlives the ladder)
+    std::shared_ptr<level_store> levels_;  // held by the rungs' contacts too (a released contact outlives the ladder)
     std::map<int, std::unique_ptr<contact>> built_;
 };
 

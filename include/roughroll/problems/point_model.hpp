@@ -12,7 +12,6 @@
 #pragma once
 
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,13 +22,12 @@
 #include "roughroll/model/roughness.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/full_coupling.hpp"
+#include "roughroll/problems/level_store.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
-
-class level_store;
 
 class point_model {
 public:
@@ -93,12 +91,8 @@ public:
     // level"; the paper's root from n/4's, Johnson's zones from the coarser level's), so sharing it would move
     // the next rung's numbers.
     virtual bool shareable() const { return false; }
-    // The ladder's store (level_store) where this model's levels are asked for first; none by default.
-    void share_levels_in(std::weak_ptr<level_store> store) { store_ = std::move(store); }
-    // Drops the levels this model holds (made again on the next ask, the same numbers where shareable()): the
-    // store's shared models hold each other (level n holds 2n, whose level n/2 is n), a cycle of owners that
-    // the store breaks when it ends (LeakSanitizer found it).
-    virtual void forget_levels() {}
+    // The ladder's store where this model's levels are asked for first (level_store.hpp: it outlives this model).
+    void share_levels_in(level_store* store) { store_ = store; }
 
 protected:
     template <class M>
@@ -111,60 +105,7 @@ protected:
     solver_options options_;
     dissimilar materials_;
     std::function<void()> checkpoint_;
-    std::weak_ptr<level_store> store_;  // the ladder's, where it has one (it may end before this model)
-};
-
-// The levels solved by the rungs of one ladder (issue 24, 4; level_ladder.hpp): a point_model made once per
-// key (the scene's roughness and friction, the materials, n, the method, the zone search and the tolerance,
-// everything a level's numbers depend on) is given again to the next rung that asks for the same key, where
-// the model is shareable() (its numbers the same bit for bit, whoever asked first). Counts the models made at
-// each n, shared or not: a level solved twice in a climb shows as 2.
-class level_store {
-public:
-    struct key {
-        roughness surfaces;
-        double f;
-        dissimilar materials;
-        solver_options options;
-    };
-    // The model at k: the shared one made before, else make()'s, kept where it is shareable().
-    std::shared_ptr<point_model> model(const key& k, const std::function<std::unique_ptr<point_model>()>& make) {
-        for (const auto& [at, m] : shared_)
-            if (same(at, k)) return m;
-        std::shared_ptr<point_model> m = make();
-        ++made_[k.options.nodes()];
-        if (m->shareable()) shared_.emplace_back(k, m);
-        return m;
-    }
-    // How many models at n were made: a level solved by two rungs on models of their own counts 2.
-    int made(int n) const {
-        const auto it = made_.find(n);
-        return it == made_.end() ? 0 : it->second;
-    }
-
-private:
-    static bool same(const key& a, const key& b) {
-        const auto term = [](const roughness_term& x, const roughness_term& y) { return x.T == y.T && x.A == y.A; };
-        const auto cylinder = [&term](const cylinder_roughness& x, const cylinder_roughness& y) {
-            return term(x.tangential, y.tangential) && term(x.normal, y.normal);
-        };
-        const solver_options &x = a.options, &y = b.options;
-        return cylinder(a.surfaces.cylinder1, b.surfaces.cylinder1) &&
-               cylinder(a.surfaces.cylinder2, b.surfaces.cylinder2) && a.f == b.f &&
-               a.materials.beta_d == b.materials.beta_d && a.materials.coupling == b.materials.coupling &&
-               x.nodes() == y.nodes() && x.how == y.how && x.zones == y.zones &&
-               x.tolerance.value_or(default_tolerance) == y.tolerance.value_or(default_tolerance);
-    }
-    std::vector<std::pair<key, std::shared_ptr<point_model>>> shared_;
-    std::map<int, int> made_;
-
-public:
-    level_store() = default;
-    level_store(const level_store&) = delete;
-    level_store& operator=(const level_store&) = delete;
-    ~level_store() {
-        for (const auto& entry : shared_) entry.second->forget_levels();
-    }
+    level_store* store_ = nullptr;  // the ladder's, where it has one
 };
 
 // 'extrapolated' on rough surfaces: Richardson's rule on the level n/2 (a smooth scene is exact at one level).
@@ -174,9 +115,10 @@ inline bool extrapolates(const roughness& surfaces, const solver_options& option
 }
 
 // The levels of a model of final type M (point_model::level): its holder's scene at m nodes by the level
-// method, each made once and kept, with the holder's checkpoint. A model reaches its levels as M, so the
-// type says which levels it may use. Under 'extrapolated' the level n/2 is made first, its normal problem
-// from `cache` (normal_problem.hpp).
+// method, each made once and kept. A model reaches its levels as M, so the type says which levels it may use.
+// In a ladder a shareable level is its store's, referred to here (level_store.hpp); any other is the holder's own,
+// with the holder's checkpoint. Under 'extrapolated' the level n/2 is made first, its normal problem from `cache`
+// (normal_problem.hpp).
 template <class M>
 class model_levels {
 public:
@@ -184,27 +126,23 @@ public:
         if (extrapolates(holder.surfaces_, holder.options_)) at(holder.nodes() / 2, cache);
     }
     M& at(int m, normal_cache* cache = nullptr) {
-        for (const std::shared_ptr<M>& level : made_)
+        for (M* level : levels_)
             if (level->nodes() == m) return *level;
         const solver_options options{m, level_of(holder_.options_.how), holder_.options_.zones};
         const auto make = [&] {
             return std::make_unique<M>(holder_.surfaces_, holder_.f_, options, holder_.materials_, cache);
         };
-        // In a ladder, its store's level where another rung made it (a shareable model); counted there either way.
-        const std::shared_ptr<level_store> store = holder_.store_.lock();
-        std::shared_ptr<M> level;
-        if (store)
-            level = std::dynamic_pointer_cast<M>(
-                store->model({holder_.surfaces_, holder_.f_, holder_.materials_, options}, make));
-        if (!level) level = make();
-        if (store && level->shareable()) {
-            level->share_levels_in(store);
-            level->set_checkpoint(holder_.checkpoint_);  // a copy: the rung that made it may end first
-        } else {
-            level->set_checkpoint([&holder = holder_] { holder.checkpoint(); });
+        std::unique_ptr<point_model> own;
+        M& level = dynamic_cast<M&>(
+            holder_.store_
+                ? holder_.store_->model({holder_.surfaces_, holder_.f_, holder_.materials_, options}, make, own)
+                : *(own = make()));
+        if (own) {
+            level.set_checkpoint([&holder = holder_] { holder.checkpoint(); });
+            own_.push_back(std::move(own));
         }
-        made_.push_back(std::move(level));
-        return *made_.back();
+        levels_.push_back(&level);
+        return level;
     }
     // The levels at each n of `ms`, as B (M or a base of it).
     template <class B = M>
@@ -214,12 +152,10 @@ public:
         return levels;
     }
 
-    // Every level dropped (point_model::forget_levels).
-    void clear() { made_.clear(); }
-
 private:
     const point_model& holder_;
-    std::vector<std::shared_ptr<M>> made_;
+    std::vector<M*> levels_;                         // every level made or asked for, own or the store's
+    std::vector<std::unique_ptr<point_model>> own_;  // the levels this model owns (none of the store's)
 };
 
 // The model of `materials` and `options` at n = options.nodes() (its normal problem from `cache` where

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The levels solved by the rungs of one ladder (issue 24, 4; level_ladder.hpp): a point_model made once per key
+// (everything a level's numbers depend on) is given again to the next rung that asks for the same key, where the
+// model is shareable() (its numbers the same bit for bit, whoever asked first: the one-parameter limit). Counts the
+// models made at each n, shared or not: a level solved twice in a climb shows as 2. Not installed; its members are
+// defined in level_ladder.cpp.
+//
+// Who owns what (no model owns another model of the store, so no cycle of owners can form):
+//   - the store owns every shared model, and nothing else;
+//   - a shared model refers to its levels (shared models of the same store, model_levels) and to the store without
+//     owning them: all of them end with the store;
+//   - a model that is not shareable is owned by its holder (a contact, or the model whose level it is), its levels
+//     with it; as a contact's model it refers to the store (to count its levels), which that contact keeps;
+//   - the store is owned by its ladder and by every contact built with it (contact_internals::with_levels, whose
+//     model is an aliasing pointer to the store where the store owns it): a released contact (level_ladder::release,
+//     the program's answer) keeps its model and that model's levels after the ladder ends.
+// A shared model's checkpoint is the store's: the hook of the contact at work (at_work, set by each of contact's
+// calls that may solve), so a level made by one rung and asked for by another calls the asking rung's hook.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "roughroll/model/dissimilar.hpp"
+#include "roughroll/model/roughness.hpp"
+#include "roughroll/numerics/method.hpp"
+
+namespace roughroll {
+
+class point_model;
+
+class level_store {
+public:
+    struct key {
+        roughness surfaces;
+        double f;
+        dissimilar materials;
+        solver_options options;
+        // Equal in every field (n as nodes(), an empty tolerance as default_tolerance); fields() takes the key and each
+        // value in it apart by a structured binding, so that a field added to any of them stops the build there.
+        auto fields() const {
+            const auto term = [](const roughness_term& t) {
+                const auto& [T, A] = t;
+                return std::make_tuple(T, A);
+            };
+            const auto cylinder = [&term](const cylinder_roughness& c) {
+                const auto& [tangential, normal] = c;
+                return std::tuple_cat(term(tangential), term(normal));
+            };
+            const auto& [scene_surfaces, friction, scene_materials, scene_options] = *this;
+            const auto& [cylinder1, cylinder2] = scene_surfaces;
+            const auto& [beta_d, coupling] = scene_materials;
+            [[maybe_unused]] const auto& [n, how, zones, tolerance] = scene_options;
+            return std::tuple_cat(cylinder(cylinder1), cylinder(cylinder2),
+                                  std::make_tuple(friction, beta_d, coupling, scene_options.nodes(), how, zones,
+                                                  tolerance.value_or(default_tolerance)));
+        }
+        bool operator==(const key& other) const { return fields() == other.fields(); }
+    };
+    level_store() = default;
+    level_store(const level_store&) = delete;
+    level_store& operator=(const level_store&) = delete;
+    ~level_store();
+
+    // The model at k: the store's where it is shareable() (made before by any rung, or now by make() and kept), else
+    // make()'s, handed over in `own` to the caller, who owns it. Counted at k's n when made.
+    point_model& model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
+                       std::unique_ptr<point_model>& own);
+    // How many models at n were made: a level solved by two rungs on models of their own counts 2.
+    int made(int n) const {
+        const auto it = made_.find(n);
+        return it == made_.end() ? 0 : it->second;
+    }
+
+    // While one lives, `hook` (a contact's checkpoint) is the one every shared model's solve calls.
+    class at_work {
+    public:
+        at_work(level_store* store, const std::function<void()>& hook)
+            : store_(store), before_(store ? std::exchange(store->hook_, &hook) : nullptr) {}
+        at_work(const at_work&) = delete;
+        at_work& operator=(const at_work&) = delete;
+        ~at_work() {
+            if (store_) store_->hook_ = before_;
+        }
+
+    private:
+        level_store* store_;
+        const std::function<void()>* before_;
+    };
+
+private:
+    void checkpoint() const {
+        if (hook_ && *hook_) (*hook_)();
+    }
+    std::vector<std::pair<key, std::unique_ptr<point_model>>> shared_;
+    std::map<int, int> made_;
+    const std::function<void()>* hook_ = nullptr;  // the contact at work's (at_work)
+};
+
+}  // namespace roughroll
