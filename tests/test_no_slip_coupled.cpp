@@ -6,6 +6,8 @@
 // bases for p and p1, no oscillation carried, least squares, Richardson on n = 256, 512, 1024); and the order of
 // convergence in n.
 #include <cmath>
+#include <complex>
+#include <utility>
 #include <vector>
 
 #include <gsl/gsl_errno.h>
@@ -158,6 +160,32 @@ TEST(NoSlipCoupled, RoughLayersAgainstTheLowOrderRoute) {
     // The layers raise lambda (2(c): roughness adds compliance) and keep the creep's sign.
     EXPECT_GT(levels[2].load_ratio, 1.0);
     EXPECT_LT(levels[2].xi, 0.0);
+}
+
+// The crossing where |p1| = f p (8(t), item 1): smooth rollers against 8(p)'s 2/(1 + exp(arctan(f)/|eps|)), from f = 0.05
+// (t_c = 0.2) to 1e6 (t_c at t_inf = 3.2e-15 for the pair, past the rounding of r); rough layers: |p1| = f p at the point
+// returned (r = -1 + t_c, f = 0.2) and, for thin layers (f = 10, t_c = 6e-15), 2 exp(-(arctan f + |theta|)/|eps|) with theta
+// the phase of phi(-1) (measured: equal to 1e-8; 1.0004 at f = 0.5, t_c = 1.8e-5, where the layers are not thin).
+TEST(NoSlipCoupled, CrossingWhereTheTractionReachesFrictionTimesPressure) {
+    const kernel none;
+    for (const double beta : {beta_pair, 0.5}) {
+        const no_slip_coupled_solution s = no_slip_coupled(beta, none, none, 0);
+        const double eps = std::fabs(std::log((1.0 - beta) / (1.0 + beta)) / (2.0 * M_PI));
+        for (const double f : {0.05, 0.2, 1.0, 10.0, 1e6}) {
+            const double expected = 2.0 / (1.0 + std::exp(std::atan(f) / eps));
+            EXPECT_NEAR(s.crossing(f) / expected, 1.0, 1e-12) << beta << " " << f;
+        }
+    }
+    const roughness layer = rough_pair();
+    const no_slip_coupled_solution s = no_slip_coupled(beta_pair, kernel::tangential(layer), kernel::normal(layer), 96);
+    const double t = s.crossing(0.2);
+    EXPECT_GT(t, 1e-3);
+    EXPECT_NEAR(std::fabs(s.traction(-1.0 + t)) / s.pressure(-1.0 + t), 0.2, 1e-9);
+    std::complex<double> edge = 0.0;  // phi(-1) = sum (-1)^j phi_j
+    for (std::size_t j = 0; j < s.phi.size(); ++j) edge += (j % 2 == 0 ? 1.0 : -1.0) * s.phi[j];
+    const double eps = std::fabs(s.epsilon);
+    EXPECT_NEAR(s.crossing(10.0) / (2.0 * std::exp(-(std::atan(10.0) + std::fabs(std::arg(edge))) / eps)), 1.0, 1e-6);
+    EXPECT_THROW(s.crossing(0.0), input_error);
 }
 
 // Exchanging the rollers (beta_D -> -beta_D with the same layers) changes the signs of p1 and xi and keeps p and lambda

@@ -3,6 +3,7 @@
 // identity of the fundamental function and the collocation with layers). Equations in the header.
 #include "roughroll/problems/no_slip_coupled.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <string>
 
@@ -116,17 +117,50 @@ void layer_images(double epsilon, double r, int n, const kernel& k1, const kerne
 
 double bufler_epsilon(double beta_d) { return std::log((1.0 - beta_d) / (1.0 + beta_d)) / (2.0 * M_PI); }
 
-cplx no_slip_coupled_solution::F(double r) const {
-    if (!(std::fabs(r) < 1.0) || phi.empty()) return 0.0;
-    // Clenshaw's sum of phi_j T_j(r).
+namespace {
+// Clenshaw's sum of phi_j T_j(r).
+cplx chebyshev_sum(const std::vector<cplx>& phi, double r) {
     cplx b1 = 0.0, b2 = 0.0;
     for (std::size_t j = phi.size(); j-- > 1;) {
         const cplx b0 = 2.0 * r * b1 - b2 + phi[j];
         b2 = b1;
         b1 = b0;
     }
-    const cplx sum = r * b1 - b2 + phi[0];
-    return fundamental_w(epsilon, 1.0 + r, 1.0 - r) * sum;
+    return phi.empty() ? cplx(0.0) : r * b1 - b2 + phi[0];
+}
+}  // namespace
+
+cplx no_slip_coupled_solution::F(double r) const {
+    if (!(std::fabs(r) < 1.0)) return 0.0;
+    return fundamental_w(epsilon, 1.0 + r, 1.0 - r) * chebyshev_sum(phi, r);
+}
+
+cplx no_slip_coupled_solution::F_near_leading_edge(double x) const {
+    return fundamental_w(epsilon, x, 2.0 - x) * chebyshev_sum(phi, -1.0 + x);
+}
+
+double no_slip_coupled_solution::crossing(double f) const {
+    if (!(f > 0.0 && std::isfinite(f))) throw input_error("the crossing of the no-slip limit needs a friction f > 0");
+    // g = |p1| - f p at r = -1 + x, in u = log x: negative at the centre (p1 = 0), positive once |p1|/p passes f, and
+    // then through the zone where p < 0 (8(p), "The edges"), whose length in u is pi/|eps|: a scan from the centre in
+    // steps of 1/4 cannot pass it; bisection in u to rounding.
+    const auto g = [this, f](double u) {
+        const cplx v = F_near_leading_edge(std::exp(u));
+        return std::fabs(v.imag()) - f * v.real();
+    };
+    const double u_min = std::log(1e-300);
+    double inside = 0.0, outside = inside;
+    for (;;) {
+        outside = inside - 0.25;
+        if (outside < u_min) return 0.0;
+        if (g(outside) >= 0.0) break;
+        inside = outside;
+    }
+    for (int i = 0; i < 200 && inside - outside > 4.0 * DBL_EPSILON * std::fabs(outside); ++i) {
+        const double mid = 0.5 * (inside + outside);
+        (g(mid) >= 0.0 ? outside : inside) = mid;
+    }
+    return std::exp(0.5 * (inside + outside));
 }
 
 no_slip_coupled_solution no_slip_coupled(double beta_d, const kernel& tangential, const kernel& normal, int n) {

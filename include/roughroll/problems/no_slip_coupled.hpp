@@ -47,6 +47,14 @@ struct no_slip_coupled_solution {
     std::complex<double> F(double r) const;  // 0 outside (-1, 1)
     double pressure(double r) const { return F(r).real(); }
     double traction(double r) const { return -F(r).imag(); }
+    // The crossing t_c at friction f > 0 (8(t), "Where the limit is an approximation", item 1): the distance from either
+    // edge (the same at both, p even and p1 odd) where |p1| = f p, nearest the centre: inside it the model slips. Smooth
+    // rollers: 2/(1 + exp(arctan(f)/|eps|)) of 8(p); rough: near 2 exp(-(arctan f + |arg phi(-1)|)/|eps|) for thin layers.
+    // Found on the solution itself, the distance carried without r's rounding; 0 where it is below 1e-300.
+    double crossing(double f) const;
+
+private:
+    std::complex<double> F_near_leading_edge(double x) const;  // F at r = -1 + x, x > 0 exactly
 };
 
 // The complete-stick solution at full coupling with layer kernels K1* (tangential) and K2* (normal) of 2(b); both empty:
