@@ -11,6 +11,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/model/dissimilar.hpp"
+#include "roughroll/numerics/chebyshev_projection.hpp"
 #include "roughroll/numerics/linear_system.hpp"
 
 namespace roughroll {
@@ -118,25 +119,24 @@ void layer_images(double epsilon, double r, int n, const kernel& k1, const kerne
 double bufler_epsilon(double beta_d) { return std::log((1.0 - beta_d) / (1.0 + beta_d)) / (2.0 * M_PI); }
 
 namespace {
-// Clenshaw's sum of phi_j T_j(r).
-cplx chebyshev_sum(const std::vector<cplx>& phi, double r) {
-    cplx b1 = 0.0, b2 = 0.0;
-    for (std::size_t j = phi.size(); j-- > 1;) {
-        const cplx b0 = 2.0 * r * b1 - b2 + phi[j];
-        b2 = b1;
-        b1 = b0;
+// sum phi_j T_j(r) by numerics/chebyshev_projection's Clenshaw sum, on the real and imaginary parts.
+cplx complex_chebyshev_sum(const std::vector<cplx>& phi, double r) {
+    std::vector<double> re(phi.size()), im(phi.size());
+    for (std::size_t j = 0; j < phi.size(); ++j) {
+        re[j] = phi[j].real();
+        im[j] = phi[j].imag();
     }
-    return phi.empty() ? cplx(0.0) : r * b1 - b2 + phi[0];
+    return {chebyshev_sum(re, r), chebyshev_sum(im, r)};
 }
 }  // namespace
 
 cplx no_slip_coupled_solution::F(double r) const {
     if (!(std::fabs(r) < 1.0)) return 0.0;
-    return fundamental_w(epsilon, 1.0 + r, 1.0 - r) * chebyshev_sum(phi, r);
+    return fundamental_w(epsilon, 1.0 + r, 1.0 - r) * complex_chebyshev_sum(phi, r);
 }
 
 cplx no_slip_coupled_solution::F_near_leading_edge(double x) const {
-    return fundamental_w(epsilon, x, 2.0 - x) * chebyshev_sum(phi, -1.0 + x);
+    return fundamental_w(epsilon, x, 2.0 - x) * complex_chebyshev_sum(phi, -1.0 + x);
 }
 
 double no_slip_coupled_solution::crossing(double f) const {
