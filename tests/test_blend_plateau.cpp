@@ -4,6 +4,7 @@
 // plateau itself, Theta_3 against the quadrature of its derivative (16/(5 pi)) (1 - t^2)^(5/2), and the moments
 // against QAGS; on zones as thin as five zones' at f = 1e-6 (1.8e-5) and as wide as at f = 0.05.
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gsl/gsl_errno.h>
@@ -11,6 +12,7 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/numerics/blend_plateau.hpp"
 
 namespace {
@@ -134,4 +136,21 @@ TEST(BlendPlateau, HilbertTransformAgainstPrincipalValueQuadrature) {
             EXPECT_NEAR(b.moment(k), total, 1e-14) << k;
         }
     }
+}
+
+// Only the moments k = 0, 1, 2 are derived (8(p)); any other k is a typed error, not a NaN carried into p_q^0's load
+// (it was NaN before: review S8 of session 14).
+TEST(BlendPlateau, MomentBeyondTheSecondIsATypedError) {
+    const blend_plateau b(-0.4, -0.2, 0.3, 0.5);
+    for (const int k : {-1, 3, 7}) {
+        SCOPED_TRACE(k);
+        try {
+            (void)b.moment(k);
+            ADD_FAILURE() << "no error";
+        } catch (const roughroll::numerical_error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("k = " + std::to_string(k)), std::string::npos) << what;
+        }
+    }
+    EXPECT_TRUE(std::isfinite(b.moment(2)));
 }

@@ -2,6 +2,7 @@
 #include "roughroll/numerics/blend_plateau.hpp"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -41,7 +42,13 @@ blend_plateau::blend_plateau(double s1, double c1, double s2, double c2)
     for (int k = 0; k < 3; ++k)
         moments_[k] = zone(k, m1_, rho1_, 1.0) + (std::pow(s2_, k + 1) - std::pow(c1_, k + 1)) / (k + 1) +
                       zone(k, m2_, rho2_, -1.0);
-    moments_[3] = std::nan("");
+}
+
+double blend_plateau::moment(int k) const {
+    if (k < 0 || k > 2)
+        throw numerical_error("blend_plateau: the moment int B eta^k is derived for k = 0, 1, 2 only (docs/formulation.md "
+                              "8(p)), not k = " + std::to_string(k));
+    return moments_[k];
 }
 
 double blend_plateau::theta3(double t) {

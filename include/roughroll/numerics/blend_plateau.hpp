@@ -25,8 +25,9 @@ public:
     double operator()(double r) const;  // B(r)
     double hilbert(double r) const;     // H[B](r), any r not at a zone end of a one-sided acosh (finite there too)
     // int B eta^k d eta, k = 0, 1, 2 (closed form: int Theta_3 = 1, int t Theta_3 = 7/16, int t^2 Theta_3 = 1/3 on
-    // [-1, 1], the odd parts of Theta_3 - 1/2 integrating to 0 against even powers).
-    double moment(int k) const { return moments_[k < 0 || k > 2 ? 3 : k]; }
+    // [-1, 1], the odd parts of Theta_3 - 1/2 integrating to 0 against even powers). Any other k is a
+    // numerical_error (no moment beyond the second is derived).
+    double moment(int k) const;
 
     double start1() const { return s1_; }
     double end1() const { return c1_; }
@@ -38,7 +39,7 @@ public:
 private:
     double s1_, c1_, s2_, c2_, m1_, rho1_, m2_, rho2_;
     double log_ratio_;           // log(rho2/rho1)/pi
-    double moments_[4];          // int B eta^k, k = 0, 1, 2; NaN beyond
+    double moments_[3];          // int B eta^k, k = 0, 1, 2
 };
 
 }  // namespace roughroll
