@@ -12,6 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/gauss_chebyshev.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
@@ -99,6 +100,16 @@ resolution_error failed_checks(const tangential_solution& t, double Q, double f)
 // The zone ends of a point (the second zone's are 2 outside five zones).
 std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s.c0(), s.start2(), s.end2()}; }
 
+// A stick zone [start, end] thinner than the node spacing pi sqrt(1 - m^2)/(n + 1) at its midpoint m for n = max_nodes, so
+// for every n: every level's U-series sees the blend's step 2 beta_D f p across it as a jump, whose log peak grows by
+// (J/pi) ln 2 per doubling of n at every rung (8(p), "Complete slip at full coupling"), and only the plateau carried in
+// closed form lets a level converge. A zone some n resolves keeps the series' route, whose ends converge at (r)'s order
+// there (8(p), "Where the plateau is carried": free rolling at f = 0.05 keeps its numbers).
+bool thinner_than_every_n(double start, double end) {
+    const double m = 0.5 * (start + end);
+    return end - start < M_PI * std::sqrt((1.0 - m) * (1.0 + m)) / (max_nodes + 1);
+}
+
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
 // p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from a stick zone's part q of p1 = sign (f p S + q), q =
 // sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), one pressure_kinks zone per stick zone:
@@ -131,6 +142,18 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
                     blend_of(v.zone1.start(), v.zone1.c0(), 1.0));
         k->add_zone(rule, beta_d, v.sign, v.zone2.start(), v.zone2.c0(), v.zone2.psi_b,
                     blend_of(v.zone2.start(), v.zone2.c0(), -1.0));
+        // The step 2 f p of the blend across each zone, with the plateau between them, carried in closed form (8(p),
+        // "The step carried across thin stick zones"): pbar through p/sqrt(1 - r^2) at the zones' midpoints; only
+        // where a stick zone is thinner than every n's node spacing (8(p), "Where the plateau is carried").
+        if (v.zone1.c0() <= v.zone2.start() && (thinner_than_every_n(v.zone1.start(), v.zone1.c0()) ||
+                                                thinner_than_every_n(v.zone2.start(), v.zone2.c0()))) {
+            const auto h = [&source_normal](double r) {
+                return source_normal.pressure(r) / std::sqrt((1.0 - r) * (1.0 + r));
+            };
+            k->add_plateau(beta_d, v.sign, f,
+                           blend_plateau(v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()),
+                           h(0.5 * (v.zone1.start() + v.zone1.c0())), h(0.5 * (v.zone2.start() + v.zone2.c0())));
+        }
         return k;
     }
     if (s.layout.stick_zones() != 1 || !inside(s)) return nullptr;

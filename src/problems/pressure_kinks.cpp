@@ -8,6 +8,7 @@
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/base/gsl_handles.hpp"
 
 namespace roughroll {
 
@@ -16,6 +17,26 @@ namespace {
 // W_q's error is at most |beta_D| times their sum. At n = 1000 they are g's rounding plateau (the collocation's
 // psi's own noise): measured 4e-10 to 1.2e-8 of all, 8e-12 to 2.2e-10 absolute, over its last 33 terms.
 constexpr double blend_tail = 1e-7;
+// The plateau's adaptive quadrature (kinks_blend::plateau_part): GSL's 21-point rule per piece in the cos map of
+// dissimilar_zones::integrate_piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
+constexpr std::size_t plateau_intervals = 400;
+constexpr double plateau_absolute = 1e-14, plateau_relative = 1e-12, plateau_accepted = 1e-13;
+
+// Graded cuts about the zones of `b` (every 16 zone half-lengths outwards, up to 2): p_q^0's plateau part varies like
+// log|r - m| on the scale of a thin zone (8(p)); each piece then meets it within a sixteenth of its length of an end,
+// where the cos map of the rules below clusters its points.
+void add_graded_cuts(std::vector<double>& cuts, const kinks_plateau& b) {
+    const double zones[2][2] = {{b.shape.start1(), b.shape.end1()}, {b.shape.start2(), b.shape.end2()}};
+    for (const auto& z : zones) {
+        cuts.push_back(z[0]);
+        cuts.push_back(z[1]);
+        const double rho = 0.5 * (z[1] - z[0]);
+        for (double d = 16.0 * rho; d < 2.0; d *= 16.0) {
+            cuts.push_back(z[0] - d);
+            cuts.push_back(z[1] + d);
+        }
+    }
+}
 }  // namespace
 
 void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
@@ -48,9 +69,28 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
     zones_.push_back(std::move(z));
 }
 
+void pressure_kinks::add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1,
+                                 double h2) {
+    // pbar/sqrt(1 - r^2) = alpha + slope r through h1, h2 at the midpoints m1, m2 (docs/formulation.md 8(p)).
+    const double m1 = 0.5 * (plateau.start1() + plateau.end1()), m2 = 0.5 * (plateau.start2() + plateau.end2());
+    const double slope = (h2 - h1) / (m2 - m1), alpha = h1 - slope * m1;
+    const double amplitude = 2.0 * f * beta_d * sign;
+    plateaus_.push_back({plateau, amplitude, alpha, slope});
+    // int p_q^0 = beta_D int q r/sqrt(1 - r^2) and C = (beta_D/pi) int q/sqrt(1 - r^2), q/sqrt(1 - r^2) =
+    // sign 2 f (alpha + slope eta) B: the plateau's moments.
+    load_ += amplitude * (alpha * plateau.moment(1) + slope * plateau.moment(2));
+    constant_ += amplitude * (alpha * plateau.moment(0) + slope * plateau.moment(1)) * M_1_PI;
+    if (legendre_nodes_.empty()) {
+        const gauss_legendre legendre(64);
+        legendre_nodes_ = legendre.nodes;
+        legendre_weights_ = legendre.weights;
+    }
+}
+
 double pressure_kinks::factor(double r) const {
     double h = 0.0;  // H[q/sqrt(1 - r^2)]: the zone variable's Cauchy integral (d eta/(eta - r) = d tau/(tau - t))
     for (const zone& z : zones_) h += z.amplitude * (*z.cauchy)((r - z.start) / z.rho - 1.0);
+    for (const kinks_plateau& b : plateaus_) h += b.amplitude * b.value(r);  // 8(p): the plateau's closed form
     return h;
 }
 
@@ -63,7 +103,10 @@ double pressure_kinks::integral(double lo, double hi) const {
     // On each piece p_q^0 is sqrt(1 - r^2) times a polynomial of the zone variable (inside a zone) or
     // an algebraic function with square roots at the zone's ends (outside): smooth in u after the map.
     std::vector<double> cuts{std::clamp(lo, -1.0, 1.0), std::clamp(hi, -1.0, 1.0)};
-    for (const double e : ends())
+    std::vector<double> inner = ends();
+    // The plateau's p_q^0 varies like log|r - m| on the scale of a thin zone (8(p)): graded cuts.
+    for (const kinks_plateau& b : plateaus_) add_graded_cuts(inner, b);
+    for (const double e : inner)
         if (e > cuts[0] && e < cuts[1]) cuts.push_back(e);
     std::sort(cuts.begin(), cuts.end());
     double sum = 0.0;
@@ -84,6 +127,10 @@ double pressure_kinks::removed(double r) const {
         const double t = (r - z.start) / z.rho - 1.0;
         if (!(std::fabs(t) < 1.0)) continue;
         sum += z.amplitude * std::sqrt((1.0 - r * r) * (1.0 - t * t)) * u_series(z.b, t);
+    }
+    for (const kinks_plateau& b : plateaus_) {
+        const double shape = b.shape(r);
+        if (shape != 0.0) sum += b.amplitude * std::sqrt((1.0 - r) * (1.0 + r)) * (b.alpha + b.slope * r) * shape;
     }
     return sum;
 }
@@ -131,7 +178,57 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         }
         k.parts_.push_back({z.start, z.rho, z.amplitude, z.b, u_coefficients(rule, values), z.cauchy});
     }
+    if (!plateaus_.empty()) {
+        k.plateaus_ = plateaus_;
+        k.workspace_ = std::shared_ptr<gsl_integration_workspace>(make_integration_workspace(plateau_intervals));
+    }
     return k;
+}
+
+std::optional<double> kinks_blend::plateau_part(double r) const {
+    const double s = unit_.start(), c = unit_.end(), rho = 0.5 * (c - s);
+    const auto blend = [s, c, rho](double eta) {  // H of the zone [s, c] (8(g))
+        if (eta <= s) return 0.0;
+        if (eta >= c) return 1.0;
+        const double t = std::clamp((eta - s) / rho - 1.0, -1.0, 1.0);
+        return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt((1.0 - t) * (1.0 + t)));
+    };
+    const auto part = [&](double eta) {  // p_b(eta) H(eta)
+        if (!(eta > s && eta < 1.0)) return 0.0;
+        double sum = 0.0;
+        for (const kinks_plateau& b : plateaus_) sum += b.amplitude * b.value(eta);
+        return sum * std::sqrt((1.0 - eta) * (1.0 + eta)) * blend(eta);
+    };
+    const bool inside = r > s && r < 1.0;
+    if (inside && !(1.0 - r > 1e-9)) return std::nullopt;
+    std::vector<double> cuts{s, c, 1.0};
+    for (const kinks_plateau& b : plateaus_) add_graded_cuts(cuts, b);
+    if (inside) cuts.push_back(r);
+    std::sort(cuts.begin(), cuts.end());
+    const double pr = inside ? part(r) : 0.0;
+    double total = 0.0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const double a = std::max(cuts[i], s), e = std::min(cuts[i + 1], 1.0);
+        if (!(e - a > 1e-15 * (1.0 + std::fabs(a)))) continue;
+        const double half = 0.5 * (e - a);
+        const auto integrand = [&](double phi) {
+            const double sh = std::sin(0.5 * phi), ch = std::cos(0.5 * phi);
+            const double eta = phi < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch;
+            if (eta == r) return 0.0;
+            return (part(eta) - pr) / (eta - r) * half * 2.0 * sh * ch;
+        };
+        const std::function<double(double)> f = integrand;
+        gsl_function fn;
+        fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
+        fn.params = const_cast<std::function<double(double)>*>(&f);
+        double value = 0.0, error = 0.0;
+        const int status = gsl_integration_qag(&fn, 0.0, M_PI, plateau_absolute, plateau_relative, plateau_intervals,
+                                               GSL_INTEG_GAUSS21, workspace_.get(), &value, &error);
+        if (!(status == GSL_SUCCESS || error < plateau_accepted) || !std::isfinite(value)) return std::nullopt;
+        total += value;
+    }
+    if (inside && pr != 0.0) total += pr * std::log((1.0 - r) / (r - s));
+    return M_1_PI * total;
 }
 
 std::optional<double> kinks_blend::operator()(double r, double blend) const {
@@ -144,6 +241,11 @@ std::optional<double> kinks_blend::operator()(double r, double blend) const {
         const double inside =
             std::fabs(t) < 1.0 && blend != 0.0 ? root * blend * std::sqrt((1.0 - t) * (1.0 + t)) * u_series(z.g, t) : 0.0;
         sum += z.amplitude * (*w1 * (*z.cauchy)(t) - inside - cauchy_u_series(z.gw, t));
+    }
+    if (!plateaus_.empty()) {
+        const auto b = plateau_part(r);
+        if (!b) return std::nullopt;
+        sum += *b;
     }
     return sum;
 }
@@ -177,7 +279,13 @@ void kinks_blend::operator()(const double* r, const double* blend, std::optional
         for (std::size_t i = 0; i < count; ++i)
             if (w1[i]) sum[i] += z.amplitude * (*w1[i] * (*z.cauchy)(t[i]) - inside[i] - series[i]);
     }
-    for (std::size_t i = 0; i < count; ++i) out[i] = w1[i] ? std::optional<double>(sum[i]) : std::nullopt;
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = w1[i] ? std::optional<double>(sum[i]) : std::nullopt;
+        if (out[i] && !plateaus_.empty()) {
+            const auto b = plateau_part(r[i]);
+            out[i] = b ? std::optional<double>(*out[i] + *b) : std::nullopt;
+        }
+    }
 }
 
 double blend_kinks(double t) { return -2.0 / (15.0 * M_PI) * t * (1.0 - t * t) * (9.0 - 4.0 * t * t); }

@@ -12,7 +12,8 @@
 // acosh+(x) = acosh(x) for x > 1 and 0 inside the zone, C(t) = cauchy_u_series of P (the sqrt(1 - t^2) P part),
 // from H[arcsin] = (1/2) log|1 - t^2| - L(t)/pi, L(t) = int log|tau - t|/sqrt(1 - tau^2) = pi (acosh+(|t|) - log 2),
 // the logarithms at the zone ends cancelling between the ramps and the plateau. Checked against GSL's QAWC
-// (tests/test_blend_plateau.cpp); not yet used by full_coupling (its use is measured in 8(p), "What is left").
+// (tests/test_blend_plateau.cpp); carried by full_coupling where a stick zone is thinner than every n's node spacing
+// (pressure_kinks::add_plateau; 8(p), "Where the plateau is carried").
 #pragma once
 
 namespace roughroll {

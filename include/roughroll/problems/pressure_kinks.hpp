@@ -14,6 +14,9 @@
 // (u_coefficients); its Cauchy integral is cauchy_u_series (-sum b_j T_{j+1} on the zone, -sum b_j z^(j+1) off
 // it), which holds (r - c)_+^(1/2) exactly. The q carried is the one of that expansion,
 // sqrt(1 - r^2) sqrt(1 - t^2) g_n(t), so that (D1) holds for the p represented (removed() below).
+// Five zones carry besides the plateau between their two blended stick zones (add_plateau, 8(p) "The step carried
+// across thin stick zones"), whose H is closed form (blend_plateau): the step 2 f p of beta_D p1 across a zone
+// thinner than the node spacing, which the series saw as a jump.
 // Smooth rollers only: with a layer term, int p_q^0 K2* would join the right side and int p_q^0 (K2* - K1*)
 // the tangential G (not built; full_coupling keeps the old right side there).
 #pragma once
@@ -23,6 +26,10 @@
 #include <optional>
 #include <vector>
 
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/cauchy_u_table.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -31,6 +38,15 @@ namespace roughroll {
 
 class kinks_blend;
 
+// A plateau part of q carried by pressure_kinks (add_plateau, docs/formulation.md 8(p)): q/sqrt(1 - r^2) gains
+// (amplitude/beta_D) (alpha + slope r) B(r), so p_q^0 gains sqrt(1 - r^2) amplitude value(r).
+struct kinks_plateau {
+    blend_plateau shape;
+    double amplitude, alpha, slope;  // amplitude = 2 f beta_D sign; alpha + slope r = pbar/sqrt(1 - r^2)
+    // H[(alpha + slope eta) B](r) = (alpha + slope r) H[B](r) + slope int B/pi
+    double value(double r) const { return (alpha + slope * r) * shape.hilbert(r) + slope * shape.moment(0) * M_1_PI; }
+};
+
 class pressure_kinks {
 public:
     // Adds the stick zone [start, c0] whose q(r) = sign sqrt(1 - t^2) psi(t), psi = sum psi_b U_j + blend(t), its
@@ -38,7 +54,15 @@ public:
     // closed zone: the blended zone's 2 f p (Theta - Theta_3)/sqrt(1 - t^2) (blend_kinks). Needs -1 < start < c0 < 1.
     void add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
                   const std::vector<double>& psi_b, const std::function<double(double)>& blend = {});
-    bool empty() const { return zones_.empty(); }
+    // Adds the plateau of five zones' two blended stick zones (docs/formulation.md 8(p), "The step carried across
+    // thin stick zones"): q's further part sign 2 f pbar B, pbar = sqrt(1 - r^2) (alpha + slope r) the linear
+    // interpolant of p/sqrt(1 - r^2) through `h1`, `h2` at the zones' midpoints, B the plateau (blend_plateau).
+    // Its H is closed form, so p_q^0 carries the step 2 f p of beta_D p1 across each zone, which the series saw
+    // as a jump where a zone is thinner than the node spacing; the right side keeps 2 f (p - pbar) B, whose step
+    // across a zone is O(zone length p').
+    void add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1, double h2);
+    bool empty() const { return zones_.empty() && plateaus_.empty(); }
+    std::size_t plateaus() const { return plateaus_.size(); }  // add_plateau's count (0 or 1: five zones only)
 
     double operator()(double r) const;  // p_q^0(r), 0 outside (-1, 1)
     // p_q^0(r)/sqrt(1 - r^2), a bounded function with one-sided square roots at the zone ends: the factor
@@ -65,6 +89,7 @@ private:
         std::shared_ptr<const cauchy_u_table> cauchy;
     };
     std::vector<zone> zones_;
+    std::vector<kinks_plateau> plateaus_;
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
 };
@@ -90,6 +115,12 @@ public:
 private:
     friend class pressure_kinks;
     explicit kinks_blend(blended_cauchy unit) : unit_(std::move(unit)) {}
+    // H[p_b H](r) of the plateaus' part p_b of p_q^0 (docs/formulation.md 8(p)): no expansion on one zone holds B, so
+    // by adaptive quadrature of that part alone (closed form per point, smooth between the zones' ends and the cuts
+    // graded about thin zones), with p_b(r) H(r) subtracted at r. Empty within 1e-9 of the edge r = 1.
+    std::optional<double> plateau_part(double r) const;
+    std::vector<kinks_plateau> plateaus_;
+    std::shared_ptr<gsl_integration_workspace> workspace_;
     struct part {
         double start, rho, amplitude;
         std::vector<double> g, gw;                   // U coefficients of g and of g W_1 on the kink zone
