@@ -63,13 +63,12 @@ double layer_change_lower_bound(double x) {
 // (uncoupled_model) and the start of full coupling's alternation (coupled_model).
 class johnson_model : public point_model {
 public:
-    johnson_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                  normal_cache* cache)
-        : point_model(surfaces, f, options, materials),
-          normal_(level_normal(surfaces, options, cache)),
-          tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f),
-          zones_(tangential_, kernel::tangential(surfaces), materials.beta_d),
-          layers_(layers_relative_bound(materials, surfaces, f)) {}
+    explicit johnson_model(const model_input& in)
+        : point_model(in),
+          normal_(level_normal(in)),
+          tangential_(normal_, kernel::tangential(in.surfaces), kernel::normal(in.surfaces), in.f),
+          zones_(tangential_, kernel::tangential(in.surfaces), in.materials.beta_d),
+          layers_(layers_relative_bound(in.materials, in.surfaces, in.f)) {}
 
     const normal_solution& normal() const override { return normal_; }
     tangential_solver* tangential() override { return &tangential_; }
@@ -355,9 +354,7 @@ std::optional<tangential_solution> johnson_model::five_point(double Q, const std
 // Johnson's level (8(g)-8(n)); its levels are Johnson's levels.
 class uncoupled_model final : public johnson_model {
 public:
-    uncoupled_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                    normal_cache* cache)
-        : johnson_model(surfaces, f, options, materials, cache), levels_(*this, cache) {}
+    explicit uncoupled_model(const model_input& in) : johnson_model(in), levels_(*this, in.cache) {}
     point_model& level(int m) override { return levels_.at(m); }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
         return solved(Q, below, nullptr);
@@ -388,13 +385,13 @@ private:
 // its levels are full coupling's, each from its own Johnson's point.
 class coupled_model final : public johnson_model {
 public:
-    coupled_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                  normal_cache* cache)
-        : johnson_model(surfaces, f, options, materials, cache),
-          johnson_layers_(layers_relative_bound(dissimilar{materials.beta_d, coupling_level::johnson}, surfaces, f)),
-          levels_(*this, cache),
-          coupling_(kernel::tangential(surfaces), kernel::normal(surfaces), options.nodes(), level_of(options.how), f,
-                    materials.beta_d) {}
+    explicit coupled_model(const model_input& in)
+        : johnson_model(in),
+          johnson_layers_(
+              layers_relative_bound(dissimilar{in.materials.beta_d, coupling_level::johnson}, in.surfaces, in.f)),
+          levels_(*this, in.cache),
+          coupling_(kernel::tangential(in.surfaces), kernel::normal(in.surfaces), in.options.nodes(),
+                    level_of(in.options.how), in.f, in.materials.beta_d) {}
 
     // After a point the coupled pressure of that point (not extrapolated); before, Johnson's.
     const normal_solution& normal() const override { return load_ ? coupling_.normal() : normal_; }
@@ -484,11 +481,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<point_model> make_dissimilar_model(const roughness& surfaces, double f, const solver_options& options,
-                                                   const dissimilar& materials, normal_cache* cache) {
-    if (materials.coupling == coupling_level::full)
-        return std::make_unique<coupled_model>(surfaces, f, options, materials, cache);
-    return std::make_unique<uncoupled_model>(surfaces, f, options, materials, cache);
+std::unique_ptr<point_model> make_dissimilar_model(const model_input& in) {
+    if (in.materials.coupling == coupling_level::full) return std::make_unique<coupled_model>(in);
+    return std::make_unique<uncoupled_model>(in);
 }
 
 }  // namespace roughroll

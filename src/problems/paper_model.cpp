@@ -20,9 +20,10 @@
 
 namespace roughroll {
 
-normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache) {
-    normal_solution normal = solve_normal(kernel::normal(surfaces), options.nodes(), level_of(options.how), cache);
-    normal.how = options.how;  // a smooth scene under 'extrapolated' is exact at one level
+normal_solution level_normal(const model_input& in) {
+    normal_solution normal =
+        solve_normal(kernel::normal(in.surfaces), in.options.nodes(), level_of(in.options.how), in.cache);
+    normal.how = in.options.how;  // a smooth scene under 'extrapolated' is exact at one level
     return normal;
 }
 
@@ -35,8 +36,7 @@ namespace {
 // The paper's zone and the general search on one solver.
 class zone_model : public point_model {
 public:
-    zone_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
-        : point_model(surfaces, f, options, materials) {}
+    using point_model::point_model;
     estimate_structure structure() const override { return estimate_structure::paper; }
 
     // The single zone at Q of this level, cached: the levels of an estimate and the coarse level of an
@@ -122,13 +122,12 @@ private:
 // level n/2 (product integration): P_H/P2 by contact, c0 and xi here.
 class collocation_model final : public zone_model {
 public:
-    collocation_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                      normal_cache* cache)
-        : zone_model(surfaces, f, options, materials),
-          levels_(*this, cache),
-          companion_(extrapolates(surfaces, options) ? &levels_.at(options.nodes() / 2) : nullptr),
-          normal_(level_normal(surfaces, options, cache)),
-          tangential_(normal_, kernel::tangential(surfaces), kernel::normal(surfaces), f) {
+    explicit collocation_model(const model_input& in)
+        : zone_model(in),
+          levels_(*this, in.cache),
+          companion_(extrapolates(in.surfaces, in.options) ? &levels_.at(in.options.nodes() / 2) : nullptr),
+          normal_(level_normal(in)),
+          tangential_(normal_, kernel::tangential(in.surfaces), kernel::normal(in.surfaces), in.f) {
         zones_ = std::make_unique<zone_solver>(tangential_.zone_operator());
     }
     point_model& level(int m) override { return levels_.at(m); }
@@ -226,13 +225,10 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
 // sgn(Q) beta_D, and a point whose checks fail refused: its structure (slip against Q at an edge) is not built.
 class limit_model final : public zone_model {
 public:
-    limit_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials,
-                normal_cache* cache)
-        : zone_model(surfaces, f, options, materials),
-          levels_(*this, cache),
-          limit_(surfaces, f, options.nodes(), materials.beta_d) {
+    explicit limit_model(const model_input& in)
+        : zone_model(in), levels_(*this, in.cache), limit_(in.surfaces, in.f, in.options.nodes(), in.materials.beta_d) {
         zones_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(1.0)));
-        if (materials.beta_d != 0.0)
+        if (in.materials.beta_d != 0.0)
             braked_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(-1.0)));
         checks_always_ = true;
     }
@@ -322,10 +318,11 @@ private:
 
 std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double f, const solver_options& options,
                                               const dissimilar& materials, normal_cache* cache) {
+    const model_input in{surfaces, f, options, materials, cache};
     if (options.how == method::one_parameter)  // Johnson's level for dissimilar rollers (8(s))
-        return std::make_unique<limit_model>(surfaces, f, options, materials, cache);
-    if (materials.beta_d != 0.0) return make_dissimilar_model(surfaces, f, options, materials, cache);
-    return std::make_unique<collocation_model>(surfaces, f, options, materials, cache);
+        return std::make_unique<limit_model>(in);
+    if (materials.beta_d != 0.0) return make_dissimilar_model(in);
+    return std::make_unique<collocation_model>(in);
 }
 
 }  // namespace roughroll

@@ -29,10 +29,20 @@
 
 namespace roughroll {
 
+// What the model of one level is made of (make_point_model, model_levels): the scene, its friction, the options at
+// the level's n, the materials, and the normal problems solved before (normal_problem.hpp; may be null).
+struct model_input {
+    roughness surfaces;
+    double f;
+    solver_options options;
+    dissimilar materials;
+    normal_cache* cache;
+};
+
 class point_model {
 public:
-    point_model(const roughness& surfaces, double f, const solver_options& options, const dissimilar& materials)
-        : surfaces_(surfaces), f_(f), options_(options), materials_(materials) {}
+    explicit point_model(const model_input& in)
+        : surfaces_(in.surfaces), f_(in.f), options_(in.options), materials_(in.materials) {}
     point_model(const point_model&) = delete;  // its solvers refer to its normal solution
     point_model& operator=(const point_model&) = delete;
     virtual ~point_model() = default;
@@ -130,7 +140,7 @@ public:
             if (level->nodes() == m) return *level;
         const solver_options options{m, level_of(holder_.options_.how), holder_.options_.zones};
         const auto make = [&] {
-            return std::make_unique<M>(holder_.surfaces_, holder_.f_, options, holder_.materials_, cache);
+            return std::make_unique<M>(model_input{holder_.surfaces_, holder_.f_, options, holder_.materials_, cache});
         };
         std::unique_ptr<point_model> own;
         M& level = dynamic_cast<M&>(
@@ -164,10 +174,9 @@ std::unique_ptr<point_model> make_point_model(const roughness& surfaces, double 
                                               const dissimilar& materials, normal_cache* cache);
 
 // The normal problem of a model at n = options.nodes() by the level method (normal_problem.hpp).
-normal_solution level_normal(const roughness& surfaces, const solver_options& options, normal_cache* cache);
+normal_solution level_normal(const model_input& in);
 
 // The models of dissimilar rollers (dissimilar_model.cpp), for make_point_model.
-std::unique_ptr<point_model> make_dissimilar_model(const roughness& surfaces, double f, const solver_options& options,
-                                                   const dissimilar& materials, normal_cache* cache);
+std::unique_ptr<point_model> make_dissimilar_model(const model_input& in);
 
 }  // namespace roughroll
