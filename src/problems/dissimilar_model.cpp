@@ -370,12 +370,9 @@ private:
         if (layers_negligible(Q)) return zones_.layers_neglected_point();
         // Free rolling of smooth rollers whose layers are too thin for n but too thick for the tolerance
         // (docs/formulation.md 8(n)): any refusal names the tolerance at which they would be neglected.
-        return advised(Q, [&] {
-            // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
-            check_edge_zones_resolvable(materials_.beta_d, f_, Q, nodes(),
-                                        options_.tolerance.value_or(default_tolerance));
-            return johnson_point(Q, levels_.at<johnson_model>(below()), previous);
-        });
+        // Edge zones far below what the search finds (|beta_D| small against f): refused before any solve.
+        check_edge_zones(Q, nodes());
+        return advised(Q, [&] { return johnson_point(Q, levels_.at<johnson_model>(below()), previous); });
     }
 
     model_levels<uncoupled_model> levels_;

@@ -203,20 +203,17 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
                                       zone_guess{coarse.start(), coarse.c0()});
     // Both levels on the same path: the coarse level's zones by the general search too.
     last_fine_ = s;
-    if (s.layout.general()) {
-        // The general path is not extrapolated: its zone ends do not yet converge at a clean
-        // n^-4 at the default n (docs/formulation.md 7(e)). Level n, estimated against n/2.
-        coarse = companion_->general(Q, zone_guess{s.start(), s.c0()});
-        // Refused where the fast path's extrapolation is: a creep at the edge of the double range.
-        if (!std::isfinite(richardson(s.xi, coarse.xi)))
-            throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
-        return s;
-    }
-    s.layout = one_stick_zone(s.start(), richardson(s.c0(), coarse.c0()), s.layout.route,
-                              s.sign < 0.0 ? -1 : 1);  // the paper's zone, extrapolated
-    s.xi = richardson(s.xi, coarse.xi);
-    if (!(std::isfinite(s.c0()) && std::isfinite(s.xi)))
+    // The general path is not extrapolated: its zone ends do not yet converge at a clean n^-4 at the default n
+    // (docs/formulation.md 7(e)). Level n, estimated against n/2, refused where the fast path's extrapolation is:
+    // a creep at the edge of the double range.
+    const bool general = s.layout.general();
+    if (general) coarse = companion_->general(Q, zone_guess{s.start(), s.c0()});
+    const double c0 = general ? s.c0() : richardson(s.c0(), coarse.c0()), xi = richardson(s.xi, coarse.xi);
+    if (!(std::isfinite(c0) && std::isfinite(xi)))
         throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
+    if (general) return s;
+    s.layout = one_stick_zone(s.start(), c0, s.layout.route, s.sign < 0.0 ? -1 : 1);  // the paper's zone, extrapolated
+    s.xi = xi;
     return s;
 }
 
