@@ -19,6 +19,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/one_parameter.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 #include "test_zones_low_order.hpp"
 
 using namespace roughroll;
@@ -178,6 +179,26 @@ TEST(OneParameterDissimilar, ChecksHoldOnSceneA) {
         EXPECT_GT(s.xi, last) << ratio;
         last = s.xi;
     }
+}
+
+// At |Q| = f the stick zone shrinks to the point r* where b p + f G is least (8(s), 7(d)); where r* lies inside the
+// contact (braked: scene A r* = -0.99999, scene B -0.453) the point has slip on both sides, the general search's
+// structure, and zone_path says "general" as at every braked load of scene B below f (it said "single", the paper's
+// zone shrunk onto r = -1). The edge form (scene A driven, r* = -1) stays "single".
+TEST(OneParameterDissimilar, GrossSlidingInsideTheContactIsTheGeneralStructure) {
+    for (const double f : {f_a, f_b}) {
+        SCOPED_TRACE("f = " + std::to_string(f));
+        contact c = limit(f, 128);
+        const tangential_solution s = c.point(-f);
+        EXPECT_TRUE(s.checks.hold());
+        EXPECT_GT(s.start(), -1.0);
+        EXPECT_EQ(s.start(), s.c0());
+        EXPECT_EQ(std::string(to_string(s.layout.route)), "general");
+    }
+    contact a = limit(f_a, 128);
+    const tangential_solution edge = a.point(f_a);
+    EXPECT_EQ(edge.start(), -1.0);
+    EXPECT_EQ(std::string(to_string(edge.layout.route)), "single");
 }
 
 // What is not built is refused in one line that says what to change: slip against Q (scene B driven, free

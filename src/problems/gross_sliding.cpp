@@ -6,8 +6,12 @@
 namespace roughroll {
 
 tangential_solution gross_sliding_at(double f, double point, double xi) {
-    // The stick equation shrinks to the point r*, where v = xi + scale w = 0 (docs/formulation.md 7(d)).
-    return zone_solution(f, point, point, xi, f);
+    // The stick equation shrinks to the point r*, where v = xi + scale w = 0 (docs/formulation.md 7(d)). A point
+    // inside the contact has slip on both sides of it: the general search's structure (7(d)), not the paper's zone
+    // shrunk onto r = -1 (2(g)), and the outputs' zone_path says so as it does for every load below f.
+    tangential_solution s = zone_solution(f, point, point, xi, f);
+    if (point > -1.0) s.layout.route = zone_route::general;
+    return s;
 }
 
 tangential_solution gross_sliding(const normal_solution& normal, double f, double forcing,

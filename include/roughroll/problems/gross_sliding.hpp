@@ -21,7 +21,7 @@
 namespace roughroll {
 
 // The |Q| solution at gross sliding with the stick zone shrunk to `point` and the creep `xi`
-// (Q = f, no stick traction, rcond 1: no system is solved).
+// (Q = f, no stick traction, rcond 1: no system is solved). Route general where `point` > -1 (slip on both sides).
 tangential_solution gross_sliding_at(double f, double point, double xi);
 
 // The least point r* of w on [-1, 1] and the solution there with its forcing b: w = G (scale f) for b = 0,
