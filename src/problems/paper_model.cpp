@@ -51,69 +51,98 @@ public:
         }
         return *last_;
     }
-    // zone_solver's general search at Q (section 7), from `guess` (the coarse level's zone) when given.
-    virtual tangential_solution general(double Q, std::optional<zone_guess> guess) {
-        checkpoint();
-        return zones_->solve(Q, true, guess);
+    // Why the general search runs, for the line of its numerical fault (general_search_fault): zones = "general"
+    // asks for it; the paper's zone fails its checks (zones = "auto"); the paper's zone failed numerically; or the
+    // point's zones are the search's (a level of its estimate, the coarse level of its extrapolation).
+    struct search_cause {
+        enum { asked, checks_failed, paper_faulted, zones_searched } kind;
+        const traction_checks* checks = nullptr;  // checks_failed: the paper's zone's
+    };
+    // zone_solver's general search at Q (section 7), from `guess` (the coarse level's zone) when given. A numerical
+    // fault on the way (a GSL status, a singular system, a root search without convergence) is a numerical_error in
+    // the user's terms (general_search_fault, `why`), the search's own line nested in it: every caller's.
+    tangential_solution general(double Q, std::optional<zone_guess> guess, search_cause why) {
+        return worded(Q, why, [&] { return general_search(Q, guess); });
     }
-    // The same search, empty where no zone of its structure carries Q (zone_solver::find); a numerical fault on the
-    // way stays a numerical_error.
-    virtual std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess> guess) {
-        checkpoint();
-        return zones_->find(Q, true, guess);
+    // The same search, empty where no zone of its structure carries Q (zone_solver::find).
+    std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess> guess, search_cause why) {
+        return worded(Q, why, [&] { return general_find(Q, guess); });
     }
     tangential_solution like(const tangential_solution& s, method, int) override {
-        return s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}) : single(s.Q, false);
+        return s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched})
+                                  : single(s.Q, false);
     }
 
 protected:
     virtual tangential_solution solve(double Q, std::optional<double> guess, bool checked,
                                       std::optional<double> slope) = 0;
+    // The search itself, its faults in the search's own words (general, find_general word them).
+    virtual tangential_solution general_search(double Q, std::optional<zone_guess> guess) {
+        checkpoint();
+        return zones_->solve(Q, true, guess);
+    }
+    virtual std::optional<tangential_solution> general_find(double Q, std::optional<zone_guess> guess) {
+        checkpoint();
+        return zones_->find(Q, true, guess);
+    }
     // The paper's single zone s where it holds (or options.zones says "single"); else the general
     // search's answer where it holds its checks (or options.zones says "general"); else s, its checks
     // failed. `guess`: the coarse level's zone.
     tangential_solution zones_for(double Q, tangential_solution s, std::optional<zone_guess> guess) {
-        if (options_.zones == zone_search::general) {
-            try {
-                return general(Q, guess);
-            } catch (const numerical_error&) {
-                std::throw_with_nested(numerical_error(general_search_fault(Q, nullptr)));
-            }
-        }
+        if (options_.zones == zone_search::general) return general(Q, guess, {search_cause::asked});
         if (options_.zones == zone_search::single || s.checks.hold()) return s;
         // A structure the general search does not cover (no zone of it carries Q: an empty find, or a load the
         // search refuses; or its answer fails the checks too): the single zone, its checks failed. A numerical fault
-        // of the search (a GSL status, a singular system) is not that statement: a numerical_error in the user's
-        // terms, the search's own line nested in it.
+        // of the search is not that statement: general's numerical_error.
         std::optional<tangential_solution> g;
         try {
-            g = find_general(Q, guess);
+            g = find_general(Q, guess, {search_cause::checks_failed, &s.checks});
         } catch (const resolution_error&) {
-        } catch (const numerical_error&) {
-            std::throw_with_nested(numerical_error(general_search_fault(Q, &s.checks)));
         }
         return g && g->checks.hold() ? *g : s;
-    }
-    // The line of a numerical fault of the general search (a zone system singular at a trial start, a root search of
-    // a zone end without convergence): what failed in the scene's terms and what the user can change. `single`: the
-    // paper's zone's checks, which failed and made zones = "auto" search (null under zones = "general").
-    std::string general_search_fault(double Q, const traction_checks* single) const {
-        std::string line = "at Q/f = " + shortest(Q / f_) + " ";
-        if (single)
-            line += "the paper's stick zone from the leading edge fails the checks (3.3)-(3.4) (margins: " +
-                    margins_text(*single) + "), and the search for a stick zone between two slip zones ";
-        else
-            line += "the search for a stick zone between two slip zones (zones = \"general\") ";
-        return line + "failed numerically at n = " + std::to_string(nodes()) +
-               " (a zone's system or the root search of its ends, docs/formulation.md 7(e)); another n may get "
-               "through, and zones = \"single\" (solver.zones, --zones) reports the paper's zone" +
-               (single ? " with its failed checks" : "");
     }
 
     std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
     bool checks_always_ = false;          // the solver checks every point it solves
 
 private:
+    // `search`'s numerical_error as general_search_fault's line, the search's own nested in it.
+    template <class F>
+    auto worded(double Q, search_cause why, F search) -> decltype(search()) {
+        try {
+            return search();
+        } catch (const numerical_error&) {
+            std::throw_with_nested(numerical_error(general_search_fault(Q, why)));
+        }
+    }
+    // The line of a numerical fault of the general search (a zone system singular at a trial start, a root search of
+    // a zone end without convergence): what failed in the scene's terms and what the user can change.
+    std::string general_search_fault(double Q, search_cause why) const {
+        std::string line = "at Q/f = " + shortest(Q / f_) + " ";
+        switch (why.kind) {
+            case search_cause::asked:
+                line += "the search for a stick zone between two slip zones (zones = \"general\") ";
+                break;
+            case search_cause::checks_failed:
+                line += "the paper's stick zone from the leading edge fails the checks (3.3)-(3.4) (margins: " +
+                        margins_text(*why.checks) + "), and the search for a stick zone between two slip zones ";
+                break;
+            case search_cause::paper_faulted:
+                line += "the paper's stick zone from the leading edge and the search for a stick zone between two slip "
+                        "zones both ";
+                break;
+            case search_cause::zones_searched:
+                line += "the search for a stick zone between two slip zones ";
+                break;
+        }
+        line += "failed numerically at n = " + std::to_string(nodes()) +
+                " (a zone's system or the root search of its ends, docs/formulation.md 7(e)); another n may get "
+                "through";
+        if (why.kind == search_cause::paper_faulted) return line;  // zones = "single" would meet the paper's fault
+        return line + ", and zones = \"single\" (solver.zones, --zones) reports the paper's zone" +
+               (why.kind == search_cause::checks_failed ? " with its failed checks" : "");
+    }
+
     std::optional<tangential_solution> last_;  // single's cache
     bool last_checked_ = false;
 };
@@ -148,7 +177,9 @@ public:
         // error estimate of the extrapolated ones).
         if (!companion_) return s;
         if (!last_fine_ || last_fine_->Q != s.Q)
-            last_fine_ = s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}) : tangential_.solve(s.Q);
+            last_fine_ = s.layout.general()
+                             ? general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched})
+                             : tangential_.solve(s.Q);
         return *last_fine_;
     }
 
@@ -207,7 +238,7 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
     // (docs/formulation.md 7(e)). Level n, estimated against n/2, refused where the fast path's extrapolation is:
     // a creep at the edge of the double range.
     const bool general = s.layout.general();
-    if (general) coarse = companion_->general(Q, zone_guess{s.start(), s.c0()});
+    if (general) coarse = companion_->general(Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched});
     const double c0 = general ? s.c0() : richardson(s.c0(), coarse.c0()), xi = richardson(s.xi, coarse.xi);
     if (!(std::isfinite(c0) && std::isfinite(xi)))
         throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
@@ -242,14 +273,6 @@ public:
         checkpoint();
         return limit_.at_stick_end(c0, checked);
     }
-    tangential_solution general(double Q, std::optional<zone_guess>) override {
-        checkpoint();
-        return search(Q).solve(Q, true);
-    }
-    std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess>) override {
-        checkpoint();
-        return search(Q).find(Q, true);
-    }
     tangential_solution point(double Q, const std::function<std::vector<int>()>&) override {
         tangential_solution s = limit_point(Q);
         if (limit_.beta_d() == 0.0 || s.checks.hold()) return s;
@@ -259,25 +282,33 @@ public:
             searched = s;
         } else if (options_.zones != zone_search::single) {
             // Empty where no zone of the structure carries Q: its refusal is the one below. A numerical fault of
-            // the search is not that statement and keeps its own line (numerical_error).
-            searched = find_general(Q, std::nullopt);
+            // the search is not that statement: find_general's numerical_error.
+            searched = find_general(Q, std::nullopt, {search_cause::checks_failed, &s.checks});
         }
         refuse_dissimilar(searched.value_or(s));
     }
 
 private:
     zone_solver& search(double Q) { return *(Q < 0.0 && braked_ ? braked_ : zones_); }  // Q's forcing sgn(Q) beta_D
+    tangential_solution general_search(double Q, std::optional<zone_guess>) override {
+        checkpoint();
+        return search(Q).solve(Q, true);
+    }
+    std::optional<tangential_solution> general_find(double Q, std::optional<zone_guess>) override {
+        checkpoint();
+        return search(Q).find(Q, true);
+    }
     tangential_solution limit_point(double Q) {
         // Its search is cheap: no starts from the levels below.
         if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);
         // The one-parameter paper's zone can be singular where the general zone is not (its
         // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)). A fault of the general
-        // search is zones_for's, worded for the user (the same search again would meet it again).
+        // search is worded for the user, by general here and by zones_for (the same search again would meet it again).
         std::optional<tangential_solution> paper;
         try {
             paper = single(Q, true);
         } catch (const numerical_error&) {
-            return general(Q, std::nullopt);
+            return general(Q, std::nullopt, {search_cause::paper_faulted});
         }
         return zones_for(Q, *std::move(paper), std::nullopt);
     }
