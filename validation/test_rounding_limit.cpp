@@ -131,6 +131,34 @@ TEST(RoundingLimit, RefusedWithTheLimitOnlyWhereEveryRouteFails) {
     EXPECT_FALSE(none.met());
 }
 
+// The scan to the first bracket where Newton in the bracket stops at the limit and Brent on the start then faults (a
+// zone system singular near the answer, made up: the entry throws within 0.005 of s*, where no trial start lies): the
+// limit is "no root from here" to Brent's route too, and the refusal keeps the limit's line (review S1: the fault was
+// re-raised, the limit's advice lost). Without the limit (rcond 1e-3: Newton merely fails) the fault stays a fault.
+TEST(RoundingLimit, BrentsFaultAfterTheLimitKeepsTheLimitsLine) {
+    const auto faulting = [](double rcond) {
+        stick_zone_operator op = made_up(rcond, answer_start, 32, false);
+        op.entry = [](const tangential_solution& t) {
+            if (std::fabs(t.start() - answer_start) < 0.005) throw numerical_error("made-up singular zone system");
+            return t.psi_b[0];
+        };
+        return op;
+    };
+    try {
+        zone_solver(faulting(1e-9)).solve(Q);
+        ADD_FAILURE() << "answered";
+    } catch (const rounding_limit_error& e) {
+        EXPECT_NE(std::string(e.what()).find("give a smaller n"), std::string::npos) << e.what();
+    } catch (const error& e) {
+        ADD_FAILURE() << "not the limit's line: " << e.what();
+    }
+    // As a route of a larger search: empty, the limit noted.
+    rounding_limits met;
+    EXPECT_FALSE(zone_solver(faulting(1e-9)).find(Q, false, std::nullopt, met));
+    EXPECT_TRUE(met.met());
+    EXPECT_THROW(zone_solver(faulting(1e-3)).solve(Q), numerical_error);
+}
+
 // What the limit's refusal advises (review S5): the rounding eps/rcond grows with n and the zone ends' tolerance is
 // fixed, so the line names a smaller n, given or the ladder's, and not the user's tolerance, which does not change it.
 // Only where a lower rung of the ladder answered with an estimate above the tolerance does a larger tolerance help

@@ -84,6 +84,10 @@ void rounding_limits::note(const newton_result& stop, double tolerance) {
     tolerance_ = tolerance;
 }
 
+void rounding_limits::note(const rounding_limits& other) {
+    if (other.met_ && !(met_ && other.rounding_ <= rounding_)) *this = other;
+}
+
 std::string rounding_limits::refusal() const {
     // The rounding is eps/rcond of the zone systems (ends_newton), which grows with n (1.5e-10, 8.6e-10, 4.0e-9 at
     // n = 250, 500, 1000 on free rolling of the pair, docs/formulation.md 8(q)): a smaller n lowers it, whether n was

@@ -139,13 +139,20 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_family&
     const bool every = op.method.every_bracket;
     for (std::size_t k = 1; k < trials.size(); ++k) {
         if (!brackets_entry(trials[k - 1], trials[k])) continue;
+        rounding_limits here;  // where this bracket's Newton stopped at the rounding limit
         std::optional<tangential_solution> s;
         try {
-            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton_at(op, magnitude, met));
+            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton_at(op, magnitude, here));
         } catch (const numerical_error&) {
-            if (!every) throw;
-            continue;  // a bracket that fails to solve: the next one may answer
+            met.note(here);
+            // A bracket that fails to solve: the next one may answer. The scan to the first bracket has no next one:
+            // its fault is the search's, except where Newton stopped here at the rounding limit (8(q)), which is "no
+            // root from here" to every route: Brent's fault after it is that rounding's, and the search ends on the
+            // limit (find refuses with its line, what lowers it) where no other route answers.
+            if (!every && !here.met()) throw;
+            continue;
         }
+        met.note(here);
         // The scan to the first bracket ends on it: its zone answers, checked by the caller.
         if (!every) return found{*s, false, false};
         s->checks = op.check(*s);

@@ -40,6 +40,8 @@ class rounding_limits {
 public:
     // Notes damped_newton's stop where it is the rounding limit (Newton's tolerance `tolerance`); else nothing.
     void note(const newton_result& stop, double tolerance);
+    // Notes what `other` met (the largest rounding of both kept).
+    void note(const rounding_limits& other);
     bool met() const { return met_; }
     // The refusal's line: what limits the ends (the largest rounding met), and what lowers it.
     std::string refusal() const;
