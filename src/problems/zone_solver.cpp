@@ -230,7 +230,22 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     }
     std::vector<zone_trial> opening;
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
-    const std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
+    std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
+    if (method.every_bracket && method.clustered && trials.empty() && !(op.empty_load(starts.front()) > magnitude)) {
+        // No start carries |Q| because the first one's empty zone carries less: with the leading slip against Q (8(g))
+        // the empty zone at s carries f (1 - 2 int_-1^s p), below |Q| from 1 + s ~ (1 - |Q|/f)^(2/3) on, and near gross
+        // sliding every start is beyond that (the first, 1 - cos(pi/32) = 4.8e-3 from the edge, from Q/f = 0.99960 on
+        // Hertz's pressure; docs/robustness.md). The starts that carry it lie between the edge and the first start:
+        // the same scan on that interval, again on the next one down while none carries it. Only where the scan found
+        // nothing, so that no other answer changes.
+        for (double top = starts.front(); trials.empty() && top + 1.0 > 1e-12;) {
+            std::vector<double> inner;
+            for (int k = 1; k < method.scan; ++k)
+                inner.push_back(-1.0 + (top + 1.0) * 0.5 * (1.0 - std::cos(M_PI * k / method.scan)));
+            trials = scan_starts(zones, {}, inner, false);
+            top = inner.front();
+        }
+    }
     std::optional<tangential_solution> first;
     if (auto s = bracketed(op, zones, trials, magnitude, first, met)) return *s;
     if (method.every_bracket && !first && !trials.empty()) {
