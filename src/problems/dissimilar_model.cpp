@@ -285,12 +285,9 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
                                "; no five zones (slip, stick, reversed slip, stick, slip) are found at n = " +
                                std::to_string(nodes()) +
                                " either (their search starts from the coarser levels' zones): " +
-                               (nodes() < max_nodes ? "a larger n (at most " + std::to_string(max_nodes) +
-                                                          ") may find them, "
-                                                    : std::string("n is at its largest, ")) +
-                               "but not on the driven side near gross sliding, where no n finds the zones yet "
-                               "(aluminium on steel at f = 0.05: from Q/f = 0.9996): a load further from f, "
-                               "or Q = f (gross sliding, in closed form), is answered (docs/robustness.md)");
+                               (nodes() < max_nodes
+                                    ? "a larger n (at most " + std::to_string(max_nodes) + ") may find them"
+                                    : std::string("n is at its largest, so the load is beyond the method's reach")));
     } catch (const numerical_error&) {
         if (std::optional<tangential_solution> s = five_point(Q, below, met)) return *s;
         throw;
