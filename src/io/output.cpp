@@ -121,6 +121,10 @@ nlohmann::json to_json(const point_report& r) {
                     {"xi", r.estimate->xi},
                     {"against", r.estimate->against}};
     if (r.estimate && r.estimate->start != 0.0) estimate["stick_start"] = r.estimate->start;  // dissimilar rollers
+    if (r.estimate && r.estimate->peak) {
+        estimate["pressure_peak_r"] = r.estimate->peak->r;
+        estimate["pressure_peak_p"] = r.estimate->peak->p;
+    }
     nlohmann::json si = nullptr;
     if (r.si)
         si = {{"a_m", r.si->a},
@@ -164,7 +168,7 @@ nlohmann::json to_json(const point_report& r) {
         {"beta_d", s.sign * s.forcing},
         {"xi", s.xi},
         {"hertz_load_ratio", r.normal.lambda},
-        {"pressure_peak", {{"r", peak.r}, {"p", peak.p}}},
+        {"pressure_peak", {{"r", peak.r}, {"p", peak.p}, {"r_resolution", peak.r_resolution}}},
         {"gamma", r.normal.gamma},
         {"n", r.normal.rule.n},
         {"method", to_string(r.normal.how)},
@@ -227,7 +231,10 @@ void write_summary(std::ostream& out, const point_report& r) {
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
             << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string()) << ", xi "
-            << shortest(r.estimate->xi) << "   (difference from " << r.estimate->against << ")\n";
+            << shortest(r.estimate->xi)
+            << (r.estimate->peak ? ", peak p " + shortest(r.estimate->peak->p) + ", peak r " + shortest(r.estimate->peak->r)
+                                 : std::string())
+            << "   (difference from " << r.estimate->against << ")\n";
     else
         out << "  error estimate      " << no_estimate_reason(r) << "\n";
     out << "  checks (3.3) (3.4)  " << (s.checks.hold() ? "hold" : "VIOLATED") << "   (margins: p "

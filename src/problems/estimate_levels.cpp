@@ -53,6 +53,7 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
                            0.0,
                            "n/2 (general zone search: level n, not extrapolated)",
                            false};
+        e->peak = peak_from_difference(peak_of_level(*model_), peak_of_level(*companion_), nodes());
     } else if (build_levels()) {
         // Three levels of the level method on the structure of s (for dissimilar rollers the reported
         // values are level n's; for the paper's problem those of its distributions).
@@ -63,6 +64,15 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
     }
     if (!s.checks.hold()) return std::nullopt;
     return e;
+}
+
+pressure_peak contact::impl::peak_of_level(const point_model& level) {
+    // Full coupling's pressure is the level's last point's (8(e)): found each time. Every other level's pressure is
+    // fixed by the surfaces and n (level n's as reported: Richardson's P_H/P2 leaves its b, so its peak).
+    if (level.structure() == estimate_structure::full_coupling) return peak_of(level.normal());
+    const auto known = peaks_.find(level.nodes());
+    if (known != peaks_.end()) return known->second;
+    return peaks_.emplace(level.nodes(), peak_of(level.normal())).first->second;
 }
 
 bool contact::impl::build_levels() {
@@ -168,7 +178,16 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         swept ? "c0" : "Q", swept ? s.c0() : s.Q};
     // 8(q) "The three-level rule at full coupling"
     point.kinks_carried = structure == estimate_structure::full_coupling && normal().kinks != nullptr;
-    return estimate_from_levels(table, levels, finer, point);
+    error_estimate e = estimate_from_levels(table, levels, finer, point);
+    // The peak pressure from the same levels' pressures (no solve; a curve swept in c0 prints no peak). Level n's is
+    // the reported pressure's: at full coupling model_'s at s, else its pressure, whose position Richardson's
+    // extrapolation of P_H/P2 does not move (contact::normal).
+    if (!swept) {
+        std::array<pressure_peak, 3> peaks;
+        for (int i = 0; i < 3; ++i) peaks[i] = peak_of_level(levels_[i] ? *levels_[i] : *model_);
+        e.peak = peak_from_levels(peaks, point);
+    }
+    return e;
 }
 
 }  // namespace roughroll

@@ -23,6 +23,13 @@ struct coupled_changes {
     double next_factor = 2.0;
 };
 
+// The peak pressure's estimates (pressure_peak of normal_solution.hpp, at level n): its position r and its value p in
+// units of P2/a, from the normal solutions of the levels the point's estimate already solved (point_estimate.hpp,
+// peak_from_levels; docs/performance.md "The peak pressure's estimate").
+struct peak_error {
+    double r, p;
+};
+
 // The error estimate of a point, per quantity. Every estimate comes from three levels of the same
 // plain discretisation (the method itself; product integration for method::extrapolated): n/4,
 // n/2, n where n/2 is in the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n,
@@ -42,6 +49,9 @@ struct error_estimate {
     // Full coupling on levels n/4, n/2, n: the changes behind the estimate, which bound the next rungs'
     // estimates (level_ladder, docs/formulation.md 8(q)); empty for every other rule.
     std::optional<coupled_changes> changes = std::nullopt;
+    // The peak pressure's position and value; empty where the point's estimate has no levels (the edge layers
+    // neglected). Not among the quantities the ladder's tolerance asks for (level_ladder.hpp), nor ever a refusal.
+    std::optional<peak_error> peak = std::nullopt;
 };
 
 }  // namespace roughroll

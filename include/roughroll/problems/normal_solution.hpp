@@ -45,10 +45,14 @@ struct normal_solution {
 };
 
 // The peak of the pressure p(r) of (4.1) on (-1, 1): its value (in units of P2/a) and position r.
-// Sampled at 2001 points and refined by golden section (least_value.hpp): the value to rounding,
-// r to about 1e-8 (a flat maximum); Hertz's peak is 2/pi at r = 0.
+// Sampled at 2001 points and refined by golden section (least_value.hpp): the value to rounding, r
+// only to `r_resolution` (a flat maximum: points within it of the peak have pressures within the
+// rounding of p, 16 eps p, so no comparison of values tells them apart; about 1e-7 for Hertz's
+// peak, 2/pi at r = 0). Both are this discretisation's: their error estimates come from the levels
+// (error_estimate::peak, point_estimate.hpp), and the reports print r and p to them (io/output.cpp).
 struct pressure_peak {
     double r, p;
+    double r_resolution;
 };
 pressure_peak peak_of(const normal_solution& s);
 

@@ -16,6 +16,7 @@
 
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/error_estimate.hpp"
+#include "roughroll/problems/normal_solution.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
@@ -118,6 +119,18 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
                                     const std::array<estimate_level, 3>& levels,
                                     const std::function<std::optional<estimate_level>()>& finer,
                                     const estimate_point& point);
+
+// The peak pressure's estimate at level n (pressure_peak, normal_solution.hpp) from the peaks `peaks` of the pressures
+// of the three levels (coarsest first) whose normal solutions the point's estimate solved: no solve of its own. The
+// rule of the point's other quantities on the same levels (error_bound's; at full coupling twice the larger change
+// with its geometric tail, 8(e), not 8(q)'s three-level rule), with floors: for r twice the largest resolution of a level's position (the golden section's band, pressure_peak),
+// for p the pressure's rounding at the finest level. The peak is never a refusal and never asks for level 2n: where
+// the levels show no order, twice the larger of the two changes, plus the changes from level n up to the finest
+// (docs/performance.md "The peak pressure's estimate").
+peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point);
+// The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
+// the peak's difference from `coarse`'s, with the floors above at n nodes.
+peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
 
 // The first words of every refusal of an estimate: "no honest error estimate for method 'M' at
 // n = N (the structure): ".
