@@ -232,3 +232,25 @@ TEST(DissimilarNearSliding, DrivenPairAnsweredBeyondTheScansFirstStart) {
         EXPECT_LT(std::fabs(predicted / (sliding - t.xi) - 1.0), within);
     }
 }
+
+// The creep's floor takes the load's rounding (docs/formulation.md 8(m), "The creep's floor near gross sliding"): the
+// three-zone load is the absolute residual of an O(f) sum, its rounding eps S_Q moves xi by eps S_Q/(pi rho), far
+// above n eps (|xi| + f K) where the stick zone is short. At 1 - Q/f = 1e-6 .. 1e-10 on the driven pair every explicit
+// n = 128, 256 is answered and its xi lies within its estimate and n = 512's of n = 512's (without the term: 1e-6
+// refused at both, 1e-8 at n = 128 5.0e-13 from n = 512 against an estimate 1.9e-14, 1e-10 4.4e-11 against 2e-14).
+TEST(DissimilarNearSliding, CreepFloorTakesTheLoadsRounding) {
+    constexpr double f = 0.05;
+    for (const double gap : {1e-6, 1e-8, 1e-10}) {
+        SCOPED_TRACE("1 - Q/f = " + std::to_string(gap));
+        const double Q = (1.0 - gap) * f;
+        const auto fine = at(512, Q);
+        ASSERT_TRUE(fine);
+        for (const int n : {128, 256}) {
+            SCOPED_TRACE("n = " + std::to_string(n));
+            const auto point = at(n, Q);
+            ASSERT_TRUE(point);
+            EXPECT_TRUE(point->solution.checks.hold());
+            EXPECT_LE(std::fabs(point->solution.xi - fine->solution.xi), point->estimate.xi + fine->estimate.xi);
+        }
+    }
+}

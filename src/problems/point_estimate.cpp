@@ -51,6 +51,14 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
         const double system = stick_system_floor(n, std::fabs(own.xi) + f * size);
         xi_floor = std::max(xi_floor, system);
         c0_floor = std::max(c0_floor, own.rho() * system / std::fabs(own.psi_b[0]));
+        if (own.forcing != 0.0) {
+            // Dissimilar rollers' zones solve the load as the absolute residual Q' - |Q| of an O(f) sum (8(g):
+            // f + rho int q, and where the zone is blended 2 f int_H p - 2 f beside it), not in the gap form: Q'
+            // rounds to eps S_Q, S_Q = 5 f blended (layout.opposite()), f else, and xi moves with the load as
+            // d xi/dQ = 1/(pi rho) as on the paper's zone above (docs/formulation.md 8(m), "The creep's floor near
+            // gross sliding").
+            xi_floor += DBL_EPSILON * (own.layout.opposite() ? 5.0 : 1.0) * f / (M_PI * own.rho());
+        }
     }
     return {rounding_floor(n, lambda), c0_floor, xi_floor, f * n_eps};
 }
