@@ -184,8 +184,12 @@ TEST(BlendedCauchy, BatchedEqualsPointByPoint) {
         const auto a1 = (*series_part)(r[i]), b1 = (*kinks_part)(r[i], blend[i]);
         ASSERT_EQ(a[i].has_value(), a1.has_value()) << "r = " << r[i];
         ASSERT_EQ(b[i].has_value(), b1.has_value()) << "r = " << r[i];
-        if (a1) EXPECT_EQ(*a[i], *a1) << "r = " << r[i];
-        if (b1) EXPECT_EQ(*b[i], *b1) << "r = " << r[i];
+        if (a1) {
+            EXPECT_EQ(*a[i], *a1) << "r = " << r[i];
+        }
+        if (b1) {
+            EXPECT_EQ(*b[i], *b1) << "r = " << r[i];
+        }
         compared += a1.has_value() && b1.has_value();
     }
     EXPECT_GT(compared, 170);
