@@ -39,12 +39,7 @@ std::string scene_with(const std::string& coupling) {
     const std::size_t at = s.find(key);
     if (at == std::string::npos) return {};
     s.replace(at, key.size(), "coupling = \"" + coupling + "\"");
-    char name[] = "/tmp/roughroll-full-every-f-XXXXXX";
-    const int fd = mkstemp(name);
-    if (fd < 0) return {};
-    close(fd);
-    std::ofstream(name) << s;
-    return name;
+    return temporary_file("roughroll-full-every-f", s);
 }
 
 struct answered {

@@ -58,20 +58,29 @@ const char* zone_path(const tangential_solution& s) { return to_string(s.layout.
 // The closed form that gave the point's traction and creep, where no zone search did; the method and n
 // are then the pressure's. Null for every other point. (Carter's closed form of smooth equal rollers is
 // not told apart here: the solution does not carry the kernels.)
-const char* closed_form(const tangential_solution& s) {
-    if (s.layout.layers_neglected()) return "no slip with the edge layers neglected (docs/formulation.md 8(n))";
+const char* closed_form(const tangential_solution& s, bool full) {
+    if (s.layout.layers_neglected())
+        return full ? "no slip at full coupling with the edge layers neglected (docs/formulation.md 8(t))"
+                    : "no slip with the edge layers neglected (docs/formulation.md 8(n))";
     if (std::fabs(s.Q) == s.f) return "gross sliding (docs/formulation.md 2(g), 8(g))";
     if (s.Q == 0.0 && s.forcing == 0.0) return "full stick (c0 = 1, xi = 0)";
     return nullptr;
 }
 
 // The neglected edge layers of a free-rolling point at large friction (8(n)): null for every other point.
-nlohmann::json layers_json(const tangential_solution& s) {
+// Full coupling's (8(t)) where `full`.
+neglected_layers layers_of(const tangential_solution& s, bool full) {
+    return full ? coupled_no_slip_layers(s.forcing, s.f) : no_slip_layers(s.forcing, s.f);
+}
+
+nlohmann::json layers_json(const tangential_solution& s, bool full) {
     if (!s.layout.layers_neglected()) return nullptr;
-    const neglected_layers l = no_slip_layers(s.forcing, s.f);
-    return {{"neglected", true},           {"thickness_bound", l.thickness}, {"crossing", l.crossing},
-            {"xi_shift", l.xi_shift},      {"xi_bound", l.xi_bound},         {"leading", l.leading},
-            {"trailing", l.trailing}};
+    const neglected_layers l = layers_of(s, full);
+    nlohmann::json layers = {{"neglected", true},      {"thickness_bound", l.thickness}, {"crossing", l.crossing},
+                             {"xi_shift", l.xi_shift}, {"xi_bound", l.xi_bound},         {"leading", l.leading},
+                             {"trailing", l.trailing}};
+    if (full) layers["hertz_load_ratio_bound"] = l.lambda_bound;  // 8(t): the pressure moves with the layers
+    return layers;
 }
 
 std::string term_text(const roughness_term& t) {
@@ -183,7 +192,7 @@ nlohmann::json to_json(const point_report& r) {
         {"reference", paper_reference},
         {"version", version()},
     };
-    if (s.layout.layers_neglected()) point["edge_layers"] = layers_json(s);  // only there: other points' keys unchanged
+    if (s.layout.layers_neglected()) point["edge_layers"] = layers_json(s, r.coupling.has_value());  // only there: other points' keys unchanged
     return point;
 }
 
@@ -201,24 +210,34 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  zones (r = x1/a)    " << zones_text(s) << "   (" << zone_path(s) << " zone search)\n"
         << "  xi (creep)          " << shortest(s.xi) << "   (Carter " << shortest(smooth.xi) << ")\n"
         << "  method, n           ";
-    if (const char* form = closed_form(s))
+    if (const char* form = closed_form(s, r.coupling.has_value()))
         out << "closed form: " << form << "; pressure " << to_string(r.normal.how) << ", n = " << r.normal.rule.n
             << "\n";
     else
         out << to_string(r.normal.how) << ", " << r.normal.rule.n << "\n";
     if (s.forcing != 0.0 && !r.coupling)
         out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing) << "   (Johnson's level: pressure uncoupled)\n";
-    if (s.forcing != 0.0 && r.coupling)
-        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing)
-            << "   (full coupling: " << r.coupling->iterations << " normal solves after "
-            << (r.coupling->start_level > 0 ? "level " + std::to_string(r.coupling->start_level) + "'s coupling"
-                                            : std::string("Johnson's"))
-            << ", contraction "
-            << shortest(r.coupling->contraction) << ")\n"
-            << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
+    if (s.forcing != 0.0 && r.coupling) {
+        out << "  beta_d (Dundurs)    " << shortest(s.sign * s.forcing);
+        if (s.layout.layers_neglected())  // docs/formulation.md 8(t): no alternation
+            out << "   (full coupling: the no-slip limit in closed form)\n";
+        else
+            out << "   (full coupling: " << r.coupling->iterations << " normal solves after "
+                << (r.coupling->start_level > 0 ? "level " + std::to_string(r.coupling->start_level) + "'s coupling"
+                                                : std::string("Johnson's"))
+                << ", contraction " << shortest(r.coupling->contraction) << ")\n";
+        out << "  offset e = x_c/a    " << shortest(r.coupling->offset) << "   (P_H/P2 at Johnson's level "
             << shortest(r.coupling->lambda_johnson) << "; peak pressure at the same P2 changed by "
             << shortest(100.0 * r.coupling->peak_pressure_change) << " %)\n";
-    if (s.layout.layers_neglected()) {
+    }
+    if (s.layout.layers_neglected() && r.coupling) {
+        const neglected_layers l = layers_of(s, true);
+        out << "  edge layers         neglected: each thinner than " << shortest(l.thickness)
+            << " (twice the crossing where |p1| of the no-slip limit exceeds f p); xi and P_H/P2 the limit's, within "
+            << shortest(l.xi_bound) << " and " << shortest(l.lambda_bound)
+            << " of the model's (a bound on two measured premises); the layers' slip not resolved: stick reported on "
+               "[-1, 1] (docs/formulation.md 8(t))\n";
+    } else if (s.layout.layers_neglected()) {
         const neglected_layers l = no_slip_layers(s.forcing, s.f);
         const double exponent = M_PI * s.f / std::fabs(s.forcing);  // t = 4/(1 + exp(pi f/|beta_d|))
         out << "  edge layers         neglected: each thinner than " << shortest(l.thickness) << " (about 4 exp(-"

@@ -10,10 +10,13 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/problems/coupling_summary.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/full_coupling.hpp"
+#include "roughroll/problems/no_slip_coupled.hpp"
 #include "roughroll/problems/point_model.hpp"
+#include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
@@ -36,10 +39,15 @@ std::optional<double> layers_relative_bound(const dissimilar& materials, const r
 // The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
 // would be neglected, and which of the route's estimates sets it; empty where the bound is no use
 // (half of xi or more).
+// `relative` rounded up to two significant digits: the tolerance a refusal names.
+std::string tolerance_up(double relative) {
+    const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
+    return significant(std::ceil(relative / unit) * unit, 2);
+}
+
 std::string layers_tolerance_advice(double relative, double beta_d, double f) {
     if (!(relative < 0.5)) return {};
-    const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
-    const std::string up = significant(std::ceil(relative / unit) * unit, 2);
+    const std::string up = tolerance_up(relative);
     const neglected_layers layers = no_slip_layers(beta_d, f);
     const bool ends =
         std::max(layers.leading_bound, layers.trailing_bound) * std::fabs(no_slip_creep(beta_d)) > layers.xi_bound;
@@ -385,11 +393,25 @@ public:
               layers_relative_bound(dissimilar{in.materials.beta_d, coupling_level::johnson}, in.surfaces, in.f)),
           levels_(*this, in.cache),
           coupling_(kernel::tangential(in.surfaces), kernel::normal(in.surfaces), in.options.nodes(),
-                    level_of(in.options.how), in.f, in.materials.beta_d) {}
+                    level_of(in.options.how), in.f, in.materials.beta_d) {
+        // Smooth rollers (johnson_layers_ is empty for rough ones): the no-slip limit's route and its bound (8(t)).
+        if (johnson_layers_) {
+            const neglected_layers l = coupled_no_slip_layers(in.materials.beta_d, in.f);
+            const no_slip_coupled_solution limit = no_slip_coupled(in.materials.beta_d, kernel{}, kernel{}, 0);
+            no_slip_relative_ = std::max({l.xi_bound / std::fabs(limit.xi), l.leading_bound, l.trailing_bound,
+                                          l.lambda_bound / limit.load_ratio});
+        }
+    }
 
     // After a point the coupled pressure of that point (not extrapolated); before, Johnson's.
-    const normal_solution& normal() const override { return load_ ? coupling_.normal() : normal_; }
-    const coupling_summary* coupling() const override { return load_ ? &coupling_.summary() : nullptr; }
+    const normal_solution& normal() const override {
+        if (no_slip_) return no_slip_->normal;
+        return load_ ? coupling_.normal() : normal_;
+    }
+    const coupling_summary* coupling() const override {
+        if (no_slip_) return &no_slip_->summary;
+        return load_ ? &coupling_.summary() : nullptr;
+    }
     estimate_structure structure() const override { return estimate_structure::full_coupling; }
     void set_checkpoint(std::function<void()> hook) override {
         coupling_.set_checkpoint(hook);
@@ -398,6 +420,8 @@ public:
 
     point_model& level(int m) override { return levels_.at(m); }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
+        no_slip_.reset();
+        if (no_slip_negligible(Q)) return no_slip_point();
         check_edge_zones(Q, nodes());
         const std::vector<int> ms = below();
         const tangential_solution johnson = johnson_point(Q, levels_.at<johnson_model>(ms));
@@ -417,7 +441,16 @@ public:
         }
         return coupled(Q, johnson, true, start);
     }
+    std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
+        if (no_slip_negligible(Q)) return std::nullopt;  // answered by the no-slip limit, no rung solved
+        return johnson_model::beyond_every_n(Q, top, tolerance);
+    }
+    double traction(const tangential_solution& d, double r) override {
+        if (no_slip_ && d.layout.layers_neglected()) return coupled_no_slip_traction(no_slip_->limit, f_, r);
+        return johnson_model::traction(d, r);
+    }
     tangential_solution like(const tangential_solution& s, method how, int n) override {
+        no_slip_.reset();
         // The level's own alternation from its own Johnson's point (a Johnson's point against a coupled n
         // would measure the coupling, not the discretisation). A level that cannot be coupled leaves no
         // honest estimate (the point itself was).
@@ -437,10 +470,15 @@ protected:
         if (!(Q == 0.0 && johnson_layers_)) return std::nullopt;
         return coupled_layers_crossing(materials_.beta_d, f_);
     }
-    // Free rolling of smooth rollers: Johnson's level answers it with the edge layers neglected (8(n)),
-    // at the tolerance it names where the default does not neglect them. Full coupling has no such route.
+    // Free rolling of smooth rollers: the no-slip limit at the tolerance its bound meets (8(t)), or Johnson's level
+    // with its edge layers neglected (8(n)), at the tolerance it names where the default does not neglect them.
     std::string edge_zones_advice(double Q) const override {
         if (!(Q == 0.0 && johnson_layers_)) return {};
+        if (no_slip_relative_ && *no_slip_relative_ < 0.5)
+            return "a tolerance of " + tolerance_up(*no_slip_relative_) +
+                   " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge "
+                   "layers neglected (the no-slip limit at full coupling, docs/formulation.md 8(t)); coupling = "
+                   "\"johnson\" answers it with the pressure uncoupled (8(n))";
         if (*johnson_layers_ <= options_.tolerance.value_or(default_tolerance))
             return "coupling = \"johnson\" answers this free rolling with its edge layers neglected and the pressure "
                    "uncoupled (docs/formulation.md 8(n))";
@@ -452,6 +490,28 @@ protected:
     tangential_solver& solver_of_point() override { return load_ ? coupling_.tangential() : tangential_; }
 
 private:
+    // Free rolling of smooth rollers whose edge layers the tolerance neglects at full coupling (8(t)): every
+    // relative bound of the no-slip limit's route within it.
+    bool no_slip_negligible(double Q) const {
+        return Q == 0.0 && no_slip_relative_ && *no_slip_relative_ <= options_.tolerance.value_or(default_tolerance);
+    }
+    // That route's point: the closed form of 8(p) (no_slip_coupled at n = 0, exact for smooth rollers), its pressure at
+    // this level's nodes, reported as stick on [-1, 1] with the layers neglected.
+    tangential_solution no_slip_point() {
+        checkpoint();
+        no_slip_coupled_solution limit = no_slip_coupled(materials_.beta_d, kernel{}, kernel{}, 0);
+        normal_solution normal = no_slip_normal(limit, nodes(), options_.how);
+        coupling_summary summary;
+        summary.offset = limit.offset;
+        summary.lambda_johnson = normal_.lambda;
+        // 8(p), "The width and the peak": the peak at the centre, (2/pi) lambda cosh(pi eps), against Hertz's 2/pi,
+        // at the same P2: (p_max/p_max,J) sqrt(lambda_J/lambda) - 1 (coupling_summary.hpp).
+        summary.peak_pressure_change = std::sqrt(limit.load_ratio / normal_.lambda) * std::cosh(M_PI * limit.epsilon) - 1.0;
+        tangential_solution s = coupled_no_slip_point(limit, f_, normal, tangential_.rounding(0.0));
+        no_slip_ = no_slip_route{std::move(limit), std::move(normal), std::move(summary)};
+        return s;
+    }
+
     // The coupled point at Q from Johnson's point `johnson` of this level; `checked` as
     // full_coupling::solve (the cache keeps a checked point for an unchecked call).
     const tangential_solution& coupled(double Q, const tangential_solution& johnson, bool checked,
@@ -466,6 +526,13 @@ private:
     }
 
     std::optional<double> johnson_layers_;  // layers_relative_bound at Johnson's level, for the advice
+    std::optional<double> no_slip_relative_;  // the no-slip limit's largest relative bound (smooth rollers), 8(t)
+    struct no_slip_route {
+        no_slip_coupled_solution limit;
+        normal_solution normal;
+        coupling_summary summary;
+    };
+    std::optional<no_slip_route> no_slip_;  // the last point's, where that route answered it
     model_levels<coupled_model> levels_;
     full_coupling coupling_;
     std::optional<double> load_;  // the load of the last coupled point; empty: none solved

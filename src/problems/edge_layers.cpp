@@ -11,6 +11,9 @@
 #include <gsl/gsl_math.h>
 
 #include "roughroll/problems/dissimilar_zones.hpp"
+#include "roughroll/problems/full_coupling.hpp"
+#include "roughroll/problems/no_slip_coupled.hpp"
+#include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
@@ -117,6 +120,48 @@ neglected_layers no_slip_layers(double beta_d, double f) {
             leading_bound,
             trailing,
             trailing_bound};
+}
+
+neglected_layers coupled_layers_bound(double epsilon, double crossing) {
+    const double e = std::fabs(epsilon), t = 2.0 * crossing;
+    if (!(t < 0.5)) return {crossing, t, 0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, 0.0, HUGE_VAL, 0.0, HUGE_VAL, HUGE_VAL};
+    // 8(t), "The layers' bound at full coupling": with the weights omega = (r - a)^(-1/2 - i eps) (b - r)^(-1/2 + i eps)
+    // and omega (r - m + 2 i eps h) on the main stick zone (a, b), h = (b - a)/2 >= 1 - t,
+    //   pi |Delta xi| <= J0 + 4 |eps| h |Delta lambda|,   |Delta lambda| <= (h + t) J0/(h^2 sqrt(1 + 4 eps^2)),
+    // J0 = int_out |dF|/sqrt(|eta - a||eta - b|) <= pi (1 + kappa) c t/sqrt(1 - t) (both layers: int_0^t_a
+    // sqrt(x)/sqrt(t_a - x) = pi t_a/2, sqrt((2 - x)/(2 - t_b - x)) <= 1/sqrt(1 - t)).
+    const double lambda = 1.0 / (1.0 + 4.0 * epsilon * epsilon);
+    const double c = M_2_PI * lambda * std::cosh(M_PI * epsilon);
+    const double j0_over_pi = (1.0 + kappa_layers) * c * t / std::sqrt(1.0 - t);
+    const double xi_bound = j0_over_pi * (1.0 + 4.0 * e / (1.0 - t));
+    const double lambda_bound =
+        M_PI * j0_over_pi * (1.0 + t) / ((1.0 - t) * (1.0 - t) * std::sqrt(1.0 + 4.0 * epsilon * epsilon));
+    // The main stick zone's ends within t of the edges; reported at the edges (stick on [-1, 1]).
+    return {crossing, t, 0.0, xi_bound, xi_bound, xi_bound, 0.0, t, 0.0, t, lambda_bound};
+}
+
+neglected_layers coupled_no_slip_layers(double beta_d, double f) {
+    return coupled_layers_bound(bufler_epsilon(beta_d), coupled_layers_crossing(beta_d, f));  // 8(p), "The edges"
+}
+
+tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit, double f, const normal_solution& pressure,
+                                          double rounding) {
+    const neglected_layers layers = coupled_no_slip_layers(limit.beta_d, f);
+    tangential_solution s = zone_solution(f, -1.0, 1.0, limit.xi, 0.0);
+    s.forcing = limit.beta_d;
+    s.layout = layers_neglected_layout();
+    const double t = std::min(layers.thickness, 0.5);
+    const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};
+    s.checks = check_zones(
+        checked, {f, least_pressure(pressure), rounding, false, nullptr, nullptr},
+        [&](double r) { return limit.pressure(r); }, [&](double r) { return limit.traction(r); },
+        [](double) { return 0.0; });
+    return s;
+}
+
+double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double r) {
+    const double bound = f * limit.pressure(r);
+    return std::max(-bound, std::min(bound, limit.traction(r)));
 }
 
 double no_slip_traction(double beta_d, double r) {

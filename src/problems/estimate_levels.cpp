@@ -23,16 +23,20 @@ double contact::impl::kernel_strength() const {
 }
 
 std::optional<error_estimate> contact::impl::estimate(const tangential_solution& s) {
-    // The edge layers neglected (8(n)): no levels, the layers' bound (the closed form has no n).
+    // The edge layers neglected (8(n); at full coupling 8(t)): no levels, the layers' bound (the closed form has no n).
     if (s.layout.layers_neglected()) {
-        const neglected_layers layers = no_slip_layers(materials_.beta_d, f_);
+        const bool full = materials_.coupling == coupling_level::full;
+        const neglected_layers layers =
+            full ? coupled_no_slip_layers(materials_.beta_d, f_) : no_slip_layers(materials_.beta_d, f_);
         const double lambda = normal().lambda;
-        return error_estimate{rounding_floor(nodes(), lambda),
+        return error_estimate{rounding_floor(nodes(), lambda) + layers.lambda_bound,
                               layers.trailing_bound,
                               layers.xi_bound + 4.0 * DBL_EPSILON * std::fabs(s.xi),
                               0.0,
-                              "the model with its edge layers: their bound (no levels; the no-slip solution in closed "
-                              "form, formulation 8(n))",
+                              full ? "the model with its edge layers: their bound (no levels; the no-slip limit at full "
+                                     "coupling in closed form, formulation 8(t))"
+                                   : "the model with its edge layers: their bound (no levels; the no-slip solution in "
+                                     "closed form, formulation 8(n))",
                               false,
                               layers.leading_bound};
     }

@@ -13,6 +13,7 @@
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/chebyshev_projection.hpp"
 #include "roughroll/numerics/linear_system.hpp"
+#include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
 
@@ -225,6 +226,22 @@ no_slip_coupled_solution no_slip_coupled(double beta_d, const kernel& tangential
     s.xi = gsl_vector_get(x, static_cast<std::size_t>(2 * c_count + 1)) / p_load;
     s.tangential_load = -load.imag() / p_load;
     return s;
+}
+
+normal_solution no_slip_normal(const no_slip_coupled_solution& limit, int n, method how) {
+    gauss_chebyshev rule(n);
+    std::vector<double> phi(static_cast<std::size_t>(n));
+    // (4.1): p = phi sqrt(1 - r^2), sqrt(1 - r^2) from (1 - r)(1 + r) (no cancellation near the edges).
+    for (int k = 0; k < n; ++k) {
+        const double r = rule.nodes[static_cast<std::size_t>(k)];
+        phi[static_cast<std::size_t>(k)] = limit.pressure(r) / std::sqrt((1.0 - r) * (1.0 + r));
+    }
+    std::vector<double> b = u_coefficients(rule, phi);
+    const double lambda = limit.load_ratio, e = limit.offset;
+    // (D1)'s traction term beta_D p1 of this pressure (normal_solution::tangential_term); the limit copied, not referred to.
+    std::function<double(double)> term = [limit](double r) { return limit.beta_d * limit.traction(r); };
+    return {std::move(rule), how,     std::move(phi), std::move(b), lambda, M_2_PI * lambda * e, 1.0, nullptr,
+            std::move(term), e,       nullptr};
 }
 
 }  // namespace roughroll

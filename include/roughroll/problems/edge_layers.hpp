@@ -24,6 +24,8 @@
 // (not moved by the tangential traction).
 #pragma once
 
+#include "roughroll/problems/no_slip_coupled.hpp"
+#include "roughroll/problems/tangential_solution.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
@@ -39,10 +41,37 @@ struct neglected_layers {
     double leading_bound;   // the bound of |1 + s1_model - leading|
     double trailing;        // 1 - c1 reported: 0.889 t_c
     double trailing_bound;  // the bound of |1 - c1_model - trailing|
+    double lambda_bound = 0.0;  // the bound of |P_H/P2 model - reported|: 0 at Johnson's level (Hertz's pressure)
 };
 
 // The layers of the no-slip solution at Dundurs' beta_d != 0 and friction f > 0.
 neglected_layers no_slip_layers(double beta_d, double f);
+
+// Free rolling of smooth rollers at full coupling with the edge layers neglected (docs/formulation.md 8(t), "The
+// layers' bound at full coupling"): the no-slip limit of 8(p) (no_slip_coupled.hpp), reported as stick on [-1, 1].
+// crossing t_c = 2/(1 + exp(atan(f)/|eps|)) (8(p), "The edges"), t = 2 t_c, xi_shift 0 (no first-order shift is
+// derived at this level), leading = trailing = 0 within t, and from the two weighted identities of 8(t) on the main
+// stick zone (exact) with |F_model - F_ns| <= (1 + kappa) c sqrt(1 - r^2) in the layers,
+//   |xi_model - xi_ns| <= (1 + kappa) c t/sqrt(1 - t) (1 + 4 |eps|/(1 - t)),
+//   |lambda_model - lambda_ns| <= pi (1 + kappa) c t (1 + t)/((1 - t)^(5/2) sqrt(1 + 4 eps^2)),
+// c = (2/pi) lambda_ns cosh(pi eps) (|F_ns| = c sqrt(1 - r^2) exactly). Two premises are measured, not proved: each
+// layer thinner than t, and |F_model| <= kappa c sqrt(1 - r^2) in the layers with kappa = 2 (kappa_layers; the five
+// zones at f = 0.1 .. 0.19 give at most 1.0x, 8(t)). Only for t < 1/2; beyond, every bound is infinite.
+constexpr double kappa_layers = 2.0;
+neglected_layers coupled_no_slip_layers(double beta_d, double f);
+// The same bounds at Bufler's eps and the crossing t_c (coupled_no_slip_layers: the pair's eps and the full level's
+// t_c). At eps = 0 the formula at Johnson's level (Hertz's pressure, c = 2/pi): 8(t) compares it there with the five
+// zones' distance from 8(f)'s no-slip creep, a check of its size on a second level (not a proof there: |F_ns| exceeds
+// c sqrt(1 - r^2) in the layers by 8(f)'s logarithm).
+neglected_layers coupled_layers_bound(double epsilon, double crossing);
+
+// The point of that route at friction f: stick on [-1, 1] (the layers' route, "no-slip"), xi the limit's, Q = 0, its
+// checks (3.3)-(3.4) on [-1 + t, 1 - t] with the limit's p and p1 (|p1| < f p there by construction), the pressure
+// margin that of `pressure` (the reported normal solution), `rounding` the margins' floor.
+tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit, double f, const normal_solution& pressure,
+                                          double rounding);
+// Its traction at r: the limit's p1 held to [-f p, f p] (it exceeds f p only within t_c of the edges, the layers).
+double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double r);
 
 // The no-slip solution of 8(f) at Q = 0: its traction p1(r) on [-1, 1] and its creep xi.
 double no_slip_traction(double beta_d, double r);

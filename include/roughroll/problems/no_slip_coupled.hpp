@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "roughroll/model/kernel.hpp"
+#include "roughroll/problems/normal_solution.hpp"
 
 namespace roughroll {
 
@@ -60,5 +61,10 @@ private:
 // The complete-stick solution at full coupling with layer kernels K1* (tangential) and K2* (normal) of 2(b); both empty:
 // smooth rollers (exact for every n >= 0). beta_D as check_beta_d accepts, beta_D != 0; 0 <= n <= 1000.
 no_slip_coupled_solution no_slip_coupled(double beta_d, const kernel& tangential, const kernel& normal, int n);
+
+// The limit's pressure as a normal solution of n nodes (the point's report, 8(t) "What the wiring needs"): phi at the
+// nodes p(eta_k)/sqrt(1 - eta_k^2) of the limit itself (exact there), its U interpolant between them, lambda, e and the
+// tangential term beta_D p1 the limit's.
+normal_solution no_slip_normal(const no_slip_coupled_solution& limit, int n, method how);
 
 }  // namespace roughroll
