@@ -105,13 +105,10 @@ normal_solution one_parameter_normal(double eps2, int n) {
 }
 
 one_parameter_solver::one_parameter_solver(const compliances& eps, double f, int n, double beta_d)
-    : eps_(eps),
-      f_(f),
-      n_(n),
-      beta_d_(beta_d),
+    : tangential_problem(f, n, beta_d, false, "one-parameter tangential problem", "one-parameter Brent search for c0"),
+      eps_(eps),
       tangential_system_((check_node_count(n), static_cast<std::size_t>(n) + 1)),
       normal_(one_parameter_normal(eps.normal, n)) {
-    if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     if (!(std::isfinite(eps.tangential) && eps.tangential >= 0.0))
         throw input_error("the tangential compliance eps1 must be finite and >= 0");
     check_beta_d(beta_d);
@@ -188,94 +185,51 @@ tangential_solution one_parameter_solver::full_stick(double forcing) {
     // q = -f p, xi = 0 (H[p] + eps1 p' = -G on the whole contact), as for tangential_solver. With
     // Dundurs' forcing the stick traction is p1 = f p + q, odd (8(s): H + eps1 d/dr maps odd onto even
     // functions and b p is even), so Q = 0 again, from the system on the whole contact.
-    if (forcing == 0.0) return full_stick_solution(f_, normal_.b);
+    if (forcing == 0.0) return tangential_problem::full_stick(forcing);
     tangential_solution s = solve_on_zone(-1.0, 1.0, forcing);
     s.Q = 0.0;  // int p1 = 0 by parity; the sum f + (pi/2) c_0 is that to rounding
     return s;
 }
 
-tangential_solution one_parameter_solver::gross_sliding(double forcing) const {
-    // 2(g); with Dundurs' forcing the stick point is where w = b p + f G is least (8(s), as 8(g)). G(-1) first: with
-    // eps2 = 0 < eps1 it is -infinity for either form, which the least point's samples would call a numerical fault.
-    const double edge = G(-1.0);
-    if (!std::isfinite(edge))
+tangential_solution one_parameter_solver::gross_sliding(double forcing) {
+    // G(-1) first: with eps2 = 0 < eps1 it is -infinity for either form of gross sliding, which the least point's
+    // samples would call a numerical fault.
+    if (!std::isfinite(G(-1.0)))
         throw input_error(
             "one-parameter model with eps2 = 0 < eps1: the creep at the onset of gross sliding "
             "(|Q| = f) is unbounded (Hertz's pressure slope is infinite at r = -1); a load |Q| < f has a finite one");
-    return forcing == 0.0 ? gross_sliding_at(f_, -1.0, -f_ * edge)
-                          : roughroll::gross_sliding(normal_, f_, forcing, [this](const auto& r) { return G(r); });
+    return tangential_problem::gross_sliding(forcing);
 }
 
-std::vector<double> one_parameter_solver::G(const std::vector<double>& r) const {
+std::vector<double> one_parameter_solver::G(const std::vector<double>& r) {
     std::vector<double> g(r.size());
     for (std::size_t i = 0; i < r.size(); ++i) g[i] = G(r[i]);
     return g;
 }
 
-tangential_solution one_parameter_solver::at_stick_end(double c0, bool checked) {
-    if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
-    const double forcing = forcing_at(1.0);  // the Q >= 0 branch
-    tangential_solution s = c0 == 1.0    ? full_stick(forcing)
-                            : c0 == -1.0 ? gross_sliding(forcing)
-                                         : solve_on_zone(-1.0, c0, forcing);
-    if (checked) s.checks = check(s);
-    return s;
-}
-
-double one_parameter_solver::load(double c0, std::optional<double> forcing) {
-    if (c0 <= -1.0) return f_;
-    if (c0 >= 1.0) return 0.0;  // full stick: p1 odd (8(s))
-    return solve_on_zone(-1.0, c0, forcing).Q;
-}
-
-tangential_solution one_parameter_solver::solve(double Q, std::optional<double> guess) {
-    const double forcing = forcing_at(Q);  // the |Q| problem's (8(s))
-    const auto search = [&](double target) {
-        check_load_resolvable(target, f_);
-        // Q(-1) = f > |Q| and, at c0 = 1, full stick gives Q = 0 < |Q| (root_search.hpp, 8(s)).
-        const root c0 = stick_end_for_load([&](double c) { return load(c, forcing); }, target, guess,
-                                           "one-parameter Brent search for c0");
-        tangential_solution s = solve_on_zone(-1.0, c0.x, forcing);
-        s.iterations = c0.iterations;
-        return s;
-    };
-    tangential_solution s = at_load(
-        Q, f_, [&] { return full_stick(forcing); }, [&] { return gross_sliding(forcing); }, search,
-        "one-parameter tangential problem");
-    s.checks = check(s);
-    return s;
-}
-
-double one_parameter_solver::traction(const tangential_solution& s, double r) const {
-    return s.sign * (f_ * normal_.pressure(r) + stick_traction(s, r));  // (3.15)
-}
-
-double one_parameter_solver::slip_velocity_magnitude(const tangential_solution& s, double r) const {
+std::vector<double> one_parameter_solver::slip_velocity_magnitude(const tangential_solution& s,
+                                                                  const std::vector<double>& r) {
     // (3.6) in the limit: v = xi - (H[p1] + eps1 p1') with p1 = f p + q. On the slip zone p1 = f p, and
     // H[p] + eps1 p' = -G by the normal equation, so v = xi + f G(r) - H[q](r), H[q] outside the stick
     // interval (|t| > 1: cauchy_u_series, no principal value; t < -1 on a slip zone [-1, start)); plus
     // Dundurs' b p of (D2) (8(s)).
     const double rho = s.rho();
-    const double hq = s.psi_b.empty() || rho == 0.0 ? 0.0 : cauchy_u_series(s.psi_b, (r - s.start()) / rho - 1.0);
-    return s.sign * s.xi + sliding_velocity(s.forcing, r) - hq;
+    std::vector<double> v(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        const double hq =
+            s.psi_b.empty() || rho == 0.0 ? 0.0 : cauchy_u_series(s.psi_b, (r[i] - s.start()) / rho - 1.0);
+        v[i] = s.sign * s.xi + sliding_velocity(s.forcing, r[i]) - hq;
+    }
+    return v;
 }
 
-double one_parameter_solver::slip_velocity(const tangential_solution& s, double r) const {
-    if (r <= s.c0() && r >= s.start()) return 0.0;  // the stick zone (3.2)
-    return s.sign * slip_velocity_magnitude(s, std::max(-1.0, std::min(r, 1.0)));
-}
-
-traction_checks one_parameter_solver::check(const tangential_solution& s) const {
+double one_parameter_solver::check_rounding(const tangential_solution& s) {
     // (3.3) to the rounding of the collocation solution, as tangential_solver::rounding: the terms of
     // the right-hand side xi + f G, of size |xi| + f max(1, P_H/P2), cancel to q; (3.4) likewise.
     // Dundurs' b p adds |b| max p to that size (8(s); p is even and largest at r = 0).
     const double size =
         std::fabs(s.xi) + f_ * std::max(1.0, std::fabs(normal_.lambda)) + std::fabs(s.forcing) * normal_.pressure(0.0);
-    const double rounding = stick_system_floor(n_, size) / f_;
-    return check_zones(
-        s.layout.zones, {f_, least_pressure(normal_), rounding, true, nullptr, nullptr},
-        [this](double r) { return normal_.pressure(r); }, [&](double r) { return traction(s, r); },
-        [&](double r) { return s.sign * slip_velocity_magnitude(s, r); });
+    return stick_system_floor(n_, size) / f_;
 }
 
 }  // namespace roughroll

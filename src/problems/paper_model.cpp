@@ -72,10 +72,21 @@ public:
         return s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched})
                                   : single(s.Q, false);
     }
+    double traction(const tangential_solution& d, double r) override { return problem().traction(d, r); }
+    double slip_velocity(const tangential_solution& d, double r) override { return problem().slip_velocity(d, r); }
+    std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r) override {
+        return problem().slip_velocity(d, r);
+    }
+    tangential_solution at_stick_end(double c0, bool checked, bool near) override {
+        checkpoint();  // as every level's solve (contact::set_checkpoint)
+        return problem().at_stick_end(c0, checked, near);
+    }
 
 protected:
-    virtual tangential_solution solve(double Q, std::optional<double> guess, bool checked,
-                                      std::optional<double> slope) = 0;
+    virtual tangential_problem& problem() = 0;  // the derived model's solver
+    tangential_solution solve(double Q, std::optional<double> guess, bool checked, std::optional<double> slope) {
+        return problem().solve(Q, guess, checked || checks_always_, slope);
+    }
     // The search itself, its faults in the search's own words (general, find_general word them).
     virtual tangential_solution general_search(double Q, std::optional<zone_guess> guess) {
         checkpoint();
@@ -162,15 +173,6 @@ public:
     point_model& level(int m) override { return levels_.at(m); }
     const normal_solution& normal() const override { return normal_; }
     tangential_solver* tangential() override { return &tangential_; }
-    double traction(const tangential_solution& d, double r) override { return tangential_.traction(d, r); }
-    double slip_velocity(const tangential_solution& d, double r) override { return tangential_.slip_velocity(d, r); }
-    std::vector<double> slip_velocity(const tangential_solution& d, const std::vector<double>& r) override {
-        return tangential_.slip_velocity(d, r);
-    }
-    tangential_solution at_stick_end(double c0, bool checked, bool near) override {
-        checkpoint();  // as every level's solve (contact::set_checkpoint)
-        return tangential_.at_stick_end(c0, checked, near);
-    }
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override;
     tangential_solution distribution(const tangential_solution& s) override {
         // For 'extrapolated' the level-n solution at the same Q, whose c0 and xi are level n's (within the
@@ -184,10 +186,7 @@ public:
     }
 
 private:
-    tangential_solution solve(double Q, std::optional<double> guess, bool checked,
-                              std::optional<double> slope) override {
-        return tangential_.solve(Q, guess, checked, slope);
-    }
+    tangential_problem& problem() override { return tangential_; }
 
     model_levels<collocation_model> levels_;
     collocation_model* companion_;  // 'extrapolated': level n/2
@@ -266,13 +265,6 @@ public:
     bool shareable() const override { return true; }
     const normal_solution& normal() const override { return limit_.normal(); }
     tangential_solver* tangential() override { return nullptr; }
-    double traction(const tangential_solution& d, double r) override { return limit_.traction(d, r); }
-    using point_model::slip_velocity;
-    double slip_velocity(const tangential_solution& d, double r) override { return limit_.slip_velocity(d, r); }
-    tangential_solution at_stick_end(double c0, bool checked, bool) override {
-        checkpoint();
-        return limit_.at_stick_end(c0, checked);
-    }
     tangential_solution point(double Q, const std::function<std::vector<int>()>&) override {
         tangential_solution s = limit_point(Q);
         if (limit_.beta_d() == 0.0 || s.checks.hold()) return s;
@@ -333,9 +325,7 @@ private:
         if (!discretisation) throw beyond_method_error(msg.str());
         throw resolution_error(msg.str());
     }
-    tangential_solution solve(double Q, std::optional<double> guess, bool, std::optional<double>) override {
-        return limit_.solve(Q, guess);
-    }
+    tangential_problem& problem() override { return limit_; }
 
     model_levels<limit_model> levels_;
     one_parameter_solver limit_;

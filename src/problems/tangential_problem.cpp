@@ -30,20 +30,230 @@ const kernel& resolved(const kernel& k, const normal_solution& normal) {
 }
 }  // namespace
 
+double load_magnitude(double Q, double f) {
+    if (!std::isfinite(Q)) throw input_error("Q must be finite");
+    const double magnitude = std::fabs(Q);
+    if (magnitude > f) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "|Q| = " << magnitude << " exceeds the friction coefficient f = " << f
+            << ": the cylinders slide (no rolling solution)";
+        throw input_error(msg.str());
+    }
+    return magnitude;
+}
+
+void check_load_resolvable(double magnitude, double f) {
+    if (magnitude >= min_load_ratio * f) return;
+    std::ostringstream msg;
+    msg << "|Q|/f = " << magnitude / f << " is below " << min_load_ratio
+        << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
+           "cannot be resolved at any n; give |Q|/f >= "
+        << min_load_ratio << ", or Q = 0 (solved exactly)";
+    throw beyond_method_error(msg.str());
+}
+
+void apply_load_sign(tangential_solution& s, double Q, const char* what) {
+    if (!(std::isfinite(s.xi) && std::isfinite(s.c0())))
+        throw numerical_error(std::string(what) + ": the creep is not finite (roughness parameters too large?)");
+    s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
+    if (Q < 0.0) {
+        s.sign = -1.0;
+        s.xi = -s.xi;
+        s.layout = mirrored(std::move(s.layout));
+    }
+}
+
+tangential_solution zone_solution(double f, double start, double c0, double xi, double Q, std::vector<double> psi_b,
+                                  double rcond) {
+    tangential_solution s{};
+    s.f = f;
+    s.xi = xi;
+    s.Q = Q;  // (4.5)
+    s.sign = 1.0;
+    s.layout = one_stick_zone(start, c0);
+    s.psi_b = std::move(psi_b);
+    s.rcond = rcond;
+    return s;
+}
+
+tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b) {
+    // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
+    std::vector<double> psi_b = pressure_b;
+    for (double& bj : psi_b) bj *= -f;
+    return zone_solution(f, -1.0, 1.0, 0.0, 0.0, std::move(psi_b));
+}
+
+double stick_traction(const tangential_solution& s, double r) {
+    const double rho = s.rho();
+    if (r <= s.start() || r >= s.c0() || s.psi_b.empty()) return 0.0;
+    const double t = (r - s.start()) / rho - 1.0;
+    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
+}
+
+tangential_problem::tangential_problem(double f, int n, double beta_d, bool closed_form, const char* what,
+                                       const char* root_what)
+    : f_(f), beta_d_(beta_d), carter_(closed_form), n_(n), what_(what), root_what_(root_what) {
+    if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
+}
+
+tangential_solution tangential_problem::solve(double Q, std::optional<double> guess, bool checked,
+                                              std::optional<double> slope) {
+    const double forcing = forcing_at(Q);  // the |Q| problem's (8(s))
+    const auto search = [&](double target) {
+        if (carter_) return carter_at(target);
+        check_load_resolvable(target, f_);
+        // Q(-1) = f > |Q|, and Q(1) = 0 < |Q|: exactly (exact_full_stick_load), or up to the discretisation error,
+        // which is checked.
+        const auto full_stick_below = [this, target] {
+            if (exact_full_stick_load()) return;
+            // Q(1) is 0 up to the discretisation error and the rounding of (4.5), an O(f)
+            // sum cancelling to Q whose terms grow with P_H/P2 (G of (3.25)): n eps f max(1, P_H/P2).
+            const double at_full_stick = load(1.0);
+            const double rounding = rounding_floor(n_, f_ * std::max(1.0, std::fabs(normal().lambda)));
+            if (!(at_full_stick + rounding < target)) {
+                std::ostringstream msg;
+                msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
+                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " plus its rounding " << rounding
+                    << " is not below |Q|; " << (n_ < max_nodes ? "increase n" : "n is at its largest: a larger load");
+                throw resolution_error(msg.str());
+            }
+        };
+        const root c0 = stick_end_for_load([&](double c) { return load(c, forcing); }, target, guess, root_what_,
+                                           full_stick_below, search_start(target), slope);
+        const bool kept = last_system_ && last_system_->c0() == c0.x && last_system_->forcing == forcing;
+        tangential_solution s = kept ? *last_system_ : on_zone(-1.0, c0.x, forcing, false);
+        s.iterations = c0.iterations;
+        s.load_slope = c0.slope;
+        return s;
+    };
+    const double magnitude = load_magnitude(Q, f_);
+    tangential_solution s = magnitude == 0.0  ? full_stick(forcing)
+                            : magnitude == f_ ? gross_sliding(forcing)
+                                              : search(magnitude);
+    apply_load_sign(s, Q, what_);
+    if (checked) s.checks = check(s);
+    return s;
+}
+
+tangential_solution tangential_problem::at_stick_end(double c0, bool checked, bool near) {
+    if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
+    const double forcing = forcing_at(1.0);  // the Q >= 0 branch
+    tangential_solution s;
+    if (c0 == 1.0) {
+        s = full_stick(forcing);
+    } else if (c0 == -1.0) {
+        s = gross_sliding(forcing);
+    } else if (carter_) {
+        const carter_stick_end smooth = carter_at_stick_end(c0, f_);  // Smooth: Carter's closed form
+        s = carter_solution(smooth.Q, c0, smooth.xi);
+    } else {
+        s = on_zone(-1.0, c0, forcing, near);
+    }
+    if (checked) s.checks = check(s);
+    return s;
+}
+
+tangential_solution tangential_problem::full_stick(double) { return full_stick_solution(f_, normal().b); }
+
+tangential_solution tangential_problem::gross_sliding(double forcing) {
+    if (carter_) return carter_at(f_);
+    if (forcing != 0.0)
+        return roughroll::gross_sliding(normal(), f_, forcing, [this](const std::vector<double>& r) { return G(r); });
+    return gross_sliding_at(f_, -1.0, -f_ * G(std::vector<double>{-1.0}).front());
+}
+
+double tangential_problem::load(double c0, std::optional<double> forcing) {
+    if (c0 <= -1.0) return f_;
+    if (c0 >= 1.0 && exact_full_stick_load()) return *exact_full_stick_load();
+    // Kept: the root search ends on a c0 it evaluated.
+    last_system_ = on_zone(-1.0, c0, forcing.value_or(forcing_at(1.0)), false);
+    return last_system_->Q;
+}
+
+tangential_solution tangential_problem::carter_solution(double Q, double c0, double xi) const {
+    // Smooth cylinders: q0 = -(2 f/pi) rho sqrt(1 - t^2), psi constant, no kernel, no solve.
+    tangential_solution s = zone_solution(f_, -1.0, c0, xi, Q);
+    if (s.rho() > 0.0) s.psi_b = {-M_2_PI * f_ * s.rho()};  // no stick zone at |Q| = f
+    return s;
+}
+
+tangential_solution tangential_problem::carter_at(double magnitude) const {
+    const carter_point cp = carter(magnitude, f_);
+    return carter_solution(magnitude, cp.c0, cp.xi);
+}
+
+double tangential_problem::traction(const tangential_solution& s, double r) const {
+    return s.sign * (f_ * normal().pressure(r) + stick_traction(s, r));  // (3.15)
+}
+
+double tangential_problem::slip_velocity(const tangential_solution& s, double r) {
+    return slip_velocity(s, std::vector<double>{r}).front();
+}
+
+std::vector<double> tangential_problem::slip_velocity(const tangential_solution& s, const std::vector<double>& r) {
+    // The sweep wants points in descending order: sort a copy, keep the way back.
+    std::vector<std::size_t> order(r.size());
+    for (std::size_t i = 0; i < r.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&r](std::size_t a, std::size_t b) { return r[a] > r[b]; });
+    std::vector<double> slip;
+    std::vector<std::size_t> where;
+    for (std::size_t i : order)
+        if (r[i] > s.c0() || r[i] < s.start()) {
+            slip.push_back(std::max(-1.0, std::min(r[i], 1.0)));
+            where.push_back(i);
+        }
+    const std::vector<double> v = slip_velocity_magnitude(s, slip);
+    std::vector<double> out(r.size(), 0.0);  // 0 on the stick zone (3.2)
+    for (std::size_t k = 0; k < slip.size(); ++k) out[where[k]] = s.sign * v[k];
+    return out;
+}
+
+double tangential_problem::pressure_margin() {
+    if (!pressure_margin_) pressure_margin_ = least_pressure(normal());  // p does not depend on the zones
+    return *pressure_margin_;
+}
+
+traction_checks tangential_problem::check(const tangential_solution& s) {
+    zone_check_terms terms{f_, pressure_margin(), check_rounding(s), true, nullptr, nullptr};
+    terms.stick_gap = [&](const std::vector<double>& r) {
+        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
+        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
+        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
+        const std::size_t count = r.size();
+        std::vector<double> t(count), psi(count, 0.0), gap(count);
+        const double rho = s.rho();
+        for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
+        const std::vector<double> p = normal().pressure(r);
+        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const double fp = f_ * p[i];
+            const bool inside = !(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty());
+            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
+            gap[i] = fp - std::fabs(fp + q);  // |p1| = |sign (f p + q0)|, (3.15)
+        }
+        return gap;
+    };
+    terms.slip_velocity = [&](const std::vector<double>& r) {
+        std::vector<double> v = slip_velocity_magnitude(s, r);
+        for (double& x : v) x *= s.sign;
+        return v;
+    };
+    return check_zones(s.layout.zones, terms);
+}
+
 tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
                                      bool closed_form)
-    : normal_(normal),
+    : tangential_problem(f, normal.rule.n, 0.0, closed_form && k1.empty() && k2.empty(), "tangential problem",
+                         "root search for c0"),
+      normal_(normal),
       k1_(resolved(k1, normal)),
       dk_(k2.minus(k1)),
-      f_(f),
-      n_(normal.rule.n),
-      carter_(closed_form && k1.empty() && k2.empty()),
       cauchy_(make_matrix(static_cast<std::size_t>(n_) + 1, static_cast<std::size_t>(n_) + 1)),
       system_(static_cast<std::size_t>(n_) + 1),
       k1_operator_(normal.kernel_term && k1.max_rate() <= normal.kernel_term->max_rate()
                        ? normal.kernel_term
                        : std::make_shared<const kernel_operator>(normal.rule, normal.how, k1.max_rate())) {
-    if (!(std::isfinite(f) && f > 0.0)) throw input_error("friction coefficient f must be positive and finite");
     gsl_matrix_set_zero(cauchy_.get());
     add_cauchy_term(cauchy_.get(), normal_.rule);
     // Column n: -xi moves to the left of (4.4).
@@ -122,151 +332,7 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
     return s;
 }
 
-tangential_solution zone_solution(double f, double start, double c0, double xi, double Q, std::vector<double> psi_b,
-                                  double rcond) {
-    tangential_solution s{};
-    s.f = f;
-    s.xi = xi;
-    s.Q = Q;  // (4.5)
-    s.sign = 1.0;
-    s.layout = one_stick_zone(start, c0);
-    s.psi_b = std::move(psi_b);
-    s.rcond = rcond;
-    return s;
-}
-
-tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b) {
-    // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
-    std::vector<double> psi_b = pressure_b;
-    for (double& bj : psi_b) bj *= -f;
-    return zone_solution(f, -1.0, 1.0, 0.0, 0.0, std::move(psi_b));
-}
-
-tangential_solution tangential_solver::full_stick() { return full_stick_solution(f_, normal_.b); }
-
-tangential_solution tangential_solver::gross_sliding() {
-    return gross_sliding_at(f_, -1.0, -f_ * G(-1.0));  // the paper's zone shrunk onto r = -1 (2(g))
-}
-
-tangential_solution tangential_solver::at_stick_end(double c0, bool checked, bool near) {
-    if (!(c0 >= -1.0 && c0 <= 1.0)) throw input_error("c0 must lie in [-1, 1]");
-    tangential_solution s;
-    if (c0 == 1.0) {
-        s = full_stick();
-    } else if (carter_) {
-        const carter_stick_end smooth = carter_at_stick_end(c0, f_);  // Smooth: Carter's closed form
-        s = carter_solution(smooth.Q, c0, smooth.xi);
-    } else {
-        s = c0 == -1.0 ? gross_sliding() : solve_on_zone(-1.0, c0, 0.0, nullptr, near);
-    }
-    if (checked) s.checks = check(s);
-    return s;
-}
-
-tangential_solution tangential_solver::carter_solution(double Q, double c0, double xi) {
-    // Smooth cylinders: q0 = -(2 f/pi) rho sqrt(1 - t^2), psi constant, no kernel, no solve.
-    tangential_solution s = zone_solution(f_, -1.0, c0, xi, Q);
-    if (s.rho() > 0.0) s.psi_b = {-M_2_PI * f_ * s.rho()};  // no stick zone at |Q| = f
-    return s;
-}
-
-double tangential_solver::load(double c0) {
-    if (c0 <= -1.0) return f_;
-    last_system_ = solve_on_zone(-1.0, c0);  // kept: the root search ends on a c0 it evaluated
-    return last_system_->Q;
-}
-
-double load_magnitude(double Q, double f) {
-    if (!std::isfinite(Q)) throw input_error("Q must be finite");
-    const double magnitude = std::fabs(Q);
-    if (magnitude > f) {
-        std::ostringstream msg;
-        msg.precision(17);
-        msg << "|Q| = " << magnitude << " exceeds the friction coefficient f = " << f
-            << ": the cylinders slide (no rolling solution)";
-        throw input_error(msg.str());
-    }
-    return magnitude;
-}
-
-void check_load_resolvable(double magnitude, double f) {
-    if (magnitude >= min_load_ratio * f) return;
-    std::ostringstream msg;
-    msg << "|Q|/f = " << magnitude / f << " is below " << min_load_ratio
-        << ", the relative precision of the load equation (4.5) in double precision: c0 and xi "
-           "cannot be resolved at any n; give |Q|/f >= "
-        << min_load_ratio << ", or Q = 0 (solved exactly)";
-    throw beyond_method_error(msg.str());
-}
-
-tangential_solution at_load(double Q, double f, const std::function<tangential_solution()>& full_stick,
-                            const std::function<tangential_solution()>& gross_sliding,
-                            const std::function<tangential_solution(double magnitude)>& search, const char* what) {
-    const double magnitude = load_magnitude(Q, f);
-    tangential_solution s = magnitude == 0.0 ? full_stick() : magnitude == f ? gross_sliding() : search(magnitude);
-    apply_load_sign(s, Q, what);
-    return s;
-}
-
-void apply_load_sign(tangential_solution& s, double Q, const char* what) {
-    if (!(std::isfinite(s.xi) && std::isfinite(s.c0())))
-        throw numerical_error(std::string(what) + ": the creep is not finite (roughness parameters too large?)");
-    s.Q = Q;  // the requested load; the solved one agrees to the root tolerance
-    if (Q < 0.0) {
-        s.sign = -1.0;
-        s.xi = -s.xi;
-        s.layout = mirrored(std::move(s.layout));
-    }
-}
-
-tangential_solution tangential_solver::solve(double Q, std::optional<double> guess, bool checked,
-                                             std::optional<double> slope) {
-    // Smooth cylinders: Carter's closed form at every load but Q = 0.
-    const auto carter_at = [this](double target) {
-        const carter_point cp = carter(target, f_);
-        return carter_solution(target, cp.c0, cp.xi);
-    };
-    const auto search = [&](double target) {
-        if (carter_) return carter_at(target);
-        check_load_resolvable(target, f_);
-        // Q(-1) = f > |Q|, and Q(1) = 0 < |Q| up to the discretisation error, which is checked.
-        const auto full_stick_below = [this, target] {
-            // Q(1) is 0 up to the discretisation error and the rounding of (4.5), an O(f)
-            // sum cancelling to Q whose terms grow with P_H/P2 (G of (3.25)): n eps f max(1, P_H/P2).
-            const double at_full_stick = load(1.0);
-            const double rounding = rounding_floor(n_, f_ * std::max(1.0, std::fabs(normal_.lambda)));
-            if (!(at_full_stick + rounding < target)) {
-                std::ostringstream msg;
-                msg << "|Q|/f = " << target / f_ << " is below the resolution of this discretisation: "
-                    << "its full-stick load Q(c0 = 1) = " << at_full_stick << " plus its rounding " << rounding
-                    << " is not below |Q|; " << (n_ < max_nodes ? "increase n" : "n is at its largest: a larger load");
-                throw resolution_error(msg.str());
-            }
-        };
-        const root c0 = stick_end_for_load([this](double c) { return load(c); }, target, guess, "root search for c0",
-                                           full_stick_below, carter(target, f_).c0, slope);
-        tangential_solution s = last_system_ && last_system_->c0() == c0.x ? *last_system_ : solve_on_zone(-1.0, c0.x);
-        s.iterations = c0.iterations;
-        s.load_slope = c0.slope;
-        return s;
-    };
-    tangential_solution s = at_load(
-        Q, f_, [this] { return full_stick(); }, [&] { return carter_ ? carter_at(f_) : gross_sliding(); }, search,
-        "tangential problem");
-    if (checked) s.checks = check(s);
-    return s;
-}
-
-double stick_traction(const tangential_solution& s, double r) {
-    const double rho = s.rho();
-    if (r <= s.start() || r >= s.c0() || s.psi_b.empty()) return 0.0;
-    const double t = (r - s.start()) / rho - 1.0;
-    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
-}
-
-double tangential_solver::traction(const tangential_solution& s, double r) {
-    return s.sign * (f_ * normal_.pressure(r) + stick_traction(s, r));  // (3.15)
-}
+std::optional<double> tangential_solver::search_start(double magnitude) const { return carter(magnitude, f_).c0; }
 
 namespace {
 // L1[q0] at a point of a slip zone, in the stick variable |t| > 1: the Cauchy transform of
@@ -322,28 +388,6 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     return v;
 }
 
-double tangential_solver::slip_velocity(const tangential_solution& s, double r) {
-    return slip_velocity(s, std::vector<double>{r}).front();
-}
-
-std::vector<double> tangential_solver::slip_velocity(const tangential_solution& s, const std::vector<double>& r) {
-    // The sweep wants points in descending order: sort a copy, keep the way back.
-    std::vector<std::size_t> order(r.size());
-    for (std::size_t i = 0; i < r.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&r](std::size_t a, std::size_t b) { return r[a] > r[b]; });
-    std::vector<double> slip;
-    std::vector<std::size_t> where;
-    for (std::size_t i : order)
-        if (r[i] > s.c0() || r[i] < s.start()) {
-            slip.push_back(std::max(-1.0, std::min(r[i], 1.0)));
-            where.push_back(i);
-        }
-    const std::vector<double> v = slip_velocity_magnitude(s, slip);
-    std::vector<double> out(r.size(), 0.0);  // 0 on the stick zone (3.2)
-    for (std::size_t k = 0; k < slip.size(); ++k) out[where[k]] = s.sign * v[k];
-    return out;
-}
-
 double tangential_solver::rounding(double xi) const {
     // (3.3) to rounding (docs/formulation.md 7(d)): q solves (4.4), whose right-hand side
     // xi + f G is made of terms of size |xi| + f K (K = max(1, P_H/P2, sum |T|), the terms of G of
@@ -356,39 +400,6 @@ double tangential_solver::rounding(double xi) const {
     return stick_system_floor(
                n_, std::fabs(xi) + f_ * std::max({1.0, std::fabs(normal_.lambda), k1_.strength(), dk_.strength()})) /
            f_;
-}
-
-double tangential_solver::pressure_margin() {
-    if (!pressure_margin_) pressure_margin_ = least_pressure(normal_);  // p does not depend on the zones
-    return *pressure_margin_;
-}
-
-traction_checks tangential_solver::check(const tangential_solution& s) {
-    zone_check_terms terms{f_, pressure_margin(), rounding(s.xi), true, nullptr, nullptr};
-    terms.stick_gap = [&](const std::vector<double>& r) {
-        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
-        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
-        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
-        const std::size_t count = r.size();
-        std::vector<double> t(count), psi(count, 0.0), gap(count);
-        const double rho = s.rho();
-        for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
-        const std::vector<double> p = normal_.pressure(r);
-        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
-        for (std::size_t i = 0; i < count; ++i) {
-            const double fp = f_ * p[i];
-            const bool inside = !(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty());
-            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
-            gap[i] = fp - std::fabs(fp + q);  // |p1| = |sign (f p + q0)|, (3.15)
-        }
-        return gap;
-    };
-    terms.slip_velocity = [&](const std::vector<double>& r) {
-        std::vector<double> v = slip_velocity_magnitude(s, r);
-        for (double& x : v) x *= s.sign;
-        return v;
-    };
-    return check_zones(s.layout.zones, terms);
 }
 
 }  // namespace roughroll

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The two stick-zone operators of the one zone search (stick_zone_operator.hpp, zone_solver.hpp): the
-// collocation of (4.4) and the Glauert system of the one-parameter limit, each with its entry
-// condition and its zone near gross sliding to leading order (docs/formulation.md 7(e), 7(g)).
+// collocation of (4.4) and the Glauert system of the one-parameter limit, the parts they share (the zone's
+// system, the load's excess, gross sliding, the checks: tangential_problem::zone_operator_of), and each one's entry
+// condition and zone near gross sliding to leading order (docs/formulation.md 7(e), 7(g)).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -120,32 +121,37 @@ std::optional<std::pair<double, double>> brush_zone(const one_parameter_solver& 
 }
 }  // namespace
 
-stick_zone_operator tangential_solver::zone_operator() {
+stick_zone_operator tangential_problem::zone_operator_of(double forcing) {
     stick_zone_operator op;
     op.f = f_;
-    op.paper_zone = [this](double Q, bool searching) -> std::optional<tangential_solution> {
-        if (searching) return std::nullopt;
-        return solve(Q);
-    };
-    op.solve = [this](double start, double end) { return solve_on_zone(start, end); };
+    op.solve = [this, forcing](double start, double end) { return on_zone(start, end, forcing, false); };
     // Q(s, c) - |Q| = rho int q + (f - |Q|) (3.22), without the O(f) sum that cancels (7(d)): f - |Q| is exact
     // (Sterbenz, |Q| >= f/2 where it matters) and rho int q keeps its relative digits, where f + rho int q
     // rounds to ulp(f) (at |Q|/f = 1 - 1e-15 six ulps: the ends found from Q itself were noise, 7(e)).
-    // int psi sqrt(1 - t^2) = (pi/2) b_0.
+    // int psi sqrt(1 - t^2) = (pi/2) b_0 (the Glauert system's c_0 likewise, 7(g)).
     op.excess = [f = f_](const tangential_solution& t, double magnitude) {
         return t.rho() * (t.psi_b.empty() ? 0.0 : M_PI_2 * t.psi_b[0]) + (f - magnitude);
     };
     op.empty_load = [f = f_](double) { return f; };
+    // w = b p + f G (7(d), 8(s)): its least point in place of the paper's edge form.
+    op.gross_sliding = [this, forcing] {
+        return roughroll::gross_sliding(normal(), f_, forcing, [this](const auto& r) { return G(r); });
+    };
+    op.check = [this](const tangential_solution& t) { return check(t); };
+    return op;
+}
+
+stick_zone_operator tangential_solver::zone_operator() {
+    stick_zone_operator op = zone_operator_of(0.0);
+    op.paper_zone = [this](double Q, bool searching) -> std::optional<tangential_solution> {
+        if (searching) return std::nullopt;
+        return solve(Q);
+    };
     op.entry = zone_solver::entry_coefficient;
     // psi(-1)/|b_0|: relative, so that it keeps its digits as the zone collapses at gross sliding (7(e)).
     op.newton_entry = [](const tangential_solution& t) {
         return zone_solver::entry_coefficient(t) / std::fabs(t.psi_b[0]);
     };
-    // w = G (7(d)).
-    op.gross_sliding = [this] {
-        return roughroll::gross_sliding(normal_, f_, 0.0, [this](const auto& r) { return G(r); });
-    };
-    op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this](double magnitude, double point, const zone_newton_from&) {
         return continuation(*this, magnitude, point);
     };
@@ -165,8 +171,7 @@ double one_parameter_solver::entry_velocity(const tangential_solution& s) const 
 }
 
 stick_zone_operator one_parameter_solver::zone_operator(double forcing) {
-    stick_zone_operator op;
-    op.f = f_;
+    stick_zone_operator op = zone_operator_of(forcing);
     op.paper_zone = [this](double Q, bool) -> std::optional<tangential_solution> {
         try {
             return solve(Q);
@@ -178,18 +183,8 @@ stick_zone_operator one_parameter_solver::zone_operator(double forcing) {
             return std::nullopt;
         }
     };
-    op.solve = [this, forcing](double start, double end) { return solve_on_zone(start, end, forcing); };
-    op.excess = [f = f_](const tangential_solution& t, double magnitude) {
-        return t.rho() * M_PI_2 * t.psi_b[0] + (f - magnitude);  // as the collocation's (7(g))
-    };
-    op.empty_load = [f = f_](double) { return f; };
     // E needs no scale: Newton's step does not depend on the residuals' units.
     op.entry = op.newton_entry = [this](const tangential_solution& t) { return entry_velocity(t); };
-    // w = G, or b p + f G (8(s)): its least point in place of the paper's edge form.
-    op.gross_sliding = [this, forcing] {
-        return roughroll::gross_sliding(normal_, f_, forcing, [this](const auto& r) { return G(r); });
-    };
-    op.check = [this](const tangential_solution& t) { return check(t); };
     op.near_sliding = [this, forcing](double magnitude, double point,
                                       const zone_newton_from& newton) -> std::optional<tangential_solution> {
         if (const auto zone = brush_zone(*this, forcing, magnitude, point)) return newton(zone->first, zone->second);

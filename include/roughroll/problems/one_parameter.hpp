@@ -16,7 +16,7 @@
 // Collocation (Glauert type): each equation multiplied by sin theta at the n + 1 points of
 // (4.7), theta_m = (m - 1/2) pi/(n + 1), for n coefficients and one more unknown: gamma_0n
 // (normal, the regularising unknown of (4.2), zero by symmetry) and xi (tangential, fixed by
-// the solvability condition). c0 for a given Q by Brent, as in tangential_solver.
+// the solvability condition). c0 for a given Q by Brent (tangential_problem, Q(1) = 0 exactly).
 //
 // Dissimilar rollers at Johnson's level (docs/formulation.md 8(s)): the stick equation gains Dundurs'
 // forcing b p on its right side, b = sgn(Q) beta_D in the |Q| frame (the mirror of 8(h)), and the
@@ -52,41 +52,28 @@ compliances one_parameter_compliances(const roughness& r);
 normal_solution one_parameter_normal(double eps2, int n);
 
 // Explicit workspace for one (eps1, eps2, f, n): the normal problem is solved on
-// construction and shared by every point of a creep curve.
-class one_parameter_solver {
+// construction and shared by every point of a creep curve. The tangential problem's members
+// (solve, at_stick_end, load, traction, slip_velocity, check: tangential_problem.hpp) on the Glauert system.
+class one_parameter_solver final : public tangential_problem {
 public:
     // beta_d: Dundurs' beta_D of 8(a) at Johnson's level (0: the paper's problem, exactly).
     one_parameter_solver(const compliances& eps, double f, int n, double beta_d = 0.0);
     one_parameter_solver(const roughness& r, double f, int n, double beta_d = 0.0)
         : one_parameter_solver(one_parameter_compliances(r), f, n, beta_d) {}
 
-    const normal_solution& normal() const { return normal_; }
+    const normal_solution& normal() const override { return normal_; }
     const compliances& eps() const { return eps_; }
-    double friction() const { return f_; }
     double beta_d() const { return beta_d_; }
-    // Dundurs' forcing b of the |Q| problem at the load Q: sgn(Q) beta_D (Q = 0: beta_D), 8(s).
-    double forcing_at(double Q) const { return Q < 0.0 ? -beta_d_ : beta_d_; }
 
-    // Conventions of tangential_solver::solve: Q < 0 mirror (c0 unchanged, xi and the
-    // tractions change sign), Q = 0 full stick and |Q| = f gross sliding without a solve,
-    // |Q| > f or non-finite Q an input_error. `guess`: a c0 near the root, tried first.
-    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt);
-    // The point whose stick zone ends at c0 in [-1, 1]: Q = Q(c0), no root search (Q >= 0 branch).
-    tangential_solution at_stick_end(double c0, bool checked = true);
-    // Q(c0) = f + rho (pi/2) psi_b[0], the |Q| branch; `forcing` b, default forcing_at(Q >= 0) = beta_D.
-    double load(double c0, std::optional<double> forcing = std::nullopt);
     // The stick equation on the zone [start, c0] with slip on both sides in the direction of Q
     // (docs/formulation.md 7(g), 8(s)): r = start + rho (t + 1), rho = (c0 - start)/2; the |Q| branch
     // with Dundurs' forcing b (`forcing`, default forcing_at(Q >= 0) = beta_D), unchecked,
     // Q = f + rho (pi/2) psi_b[0]. solve() is start = -1.
     tangential_solution solve_on_zone(double start, double c0, std::optional<double> forcing = std::nullopt);
 
-    double pressure_slope(double r) const;                               // p'(r) on [-1, 1]
-    double G(double r) const;                                            // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
-    std::vector<double> G(const std::vector<double>& r) const;           // at points of [-1, 1], in any order
-    double traction(const tangential_solution& s, double r) const;       // p1(r), (3.15)
-    double slip_velocity(const tangential_solution& s, double r) const;  // v(r), 0 on the stick zone
-    traction_checks check(const tangential_solution& s) const;           // p >= 0, (3.3), (3.4)
+    double pressure_slope(double r) const;                         // p'(r) on [-1, 1]
+    double G(double r) const;                                      // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
+    std::vector<double> G(const std::vector<double>& r) override;  // at points of [-1, 1], in any order
     // E = eps1 q'(start+) of a stick-zone solution: xi + b p(start) + f G(start) - H[q](-1), H[q](-1) =
     // sum_j (-1)^j c_j (7(g), 8(s)). The entry condition is E = 0; at start = -1, E <= 0 is (3.3).
     double entry_velocity(const tangential_solution& s) const;
@@ -97,14 +84,16 @@ public:
     double sliding_velocity(double forcing, double r) const;
 
 private:
-    tangential_solution full_stick(double forcing);
-    tangential_solution gross_sliding(double forcing) const;
-    double slip_velocity_magnitude(const tangential_solution& s, double r) const;
+    tangential_solution on_zone(double start, double c0, double forcing, bool) override {
+        return solve_on_zone(start, c0, forcing);
+    }
+    tangential_solution full_stick(double forcing) override;     // with Dundurs' forcing: p1 odd (8(s))
+    tangential_solution gross_sliding(double forcing) override;  // refused where G(-1) is infinite
+    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r) override;
+    double check_rounding(const tangential_solution& s) override;
+    std::optional<double> exact_full_stick_load() const override { return 0.0; }  // p1 odd at full stick (8(s))
 
     compliances eps_;
-    double f_;
-    int n_;
-    double beta_d_;
     std::vector<double> sin_;  // sin theta_m, m = 0..n
     std::vector<double> cos_;  // cos((j+1) theta_m), row-major (n+1) x n
     dense_system tangential_system_;

@@ -13,6 +13,10 @@
 // Q < 0 is the mirror case: p1, q0 and xi change sign, c0 does not. Q = 0 is full stick
 // (c0 = 1, xi = 0, q0 = -f p) and |Q| = f the onset of gross sliding (c0 = -1,
 // xi = -f G(-1)); neither needs a solve.
+//
+// The root search, the special loads, the mirror, the tractions and the checks are the same for every
+// stick-zone system: one driver (tangential_problem) over the collocation (tangential_solver) and the
+// Glauert system of the one-parameter limit (one_parameter.hpp).
 #pragma once
 
 #include <functional>
@@ -44,13 +48,6 @@ void check_load_resolvable(double magnitude, double f);
 // change sign, c0 does not). Refuses a non-finite c0 or xi (numerical_error naming `what`).
 void apply_load_sign(tangential_solution& s, double Q, const char* what);
 
-// The solution at the load Q of either tangential solver: |Q| <= f (load_magnitude), Q = 0 and |Q| = f
-// by `full_stick` and `gross_sliding` without a system (2(g)), any other |Q| by `search`; then the
-// mirror for Q < 0 (apply_load_sign, `what` naming the problem).
-tangential_solution at_load(double Q, double f, const std::function<tangential_solution()>& full_stick,
-                            const std::function<tangential_solution()>& gross_sliding,
-                            const std::function<tangential_solution(double magnitude)>& search, const char* what);
-
 // A solution of the |Q| problem (sign +1) with the stick zone [start, c0]: creep xi, load Q, the U
 // coefficients of psi (none without a stick zone) and the system's rcond (1 without a solve).
 tangential_solution zone_solution(double f, double start, double c0, double xi, double Q,
@@ -64,7 +61,90 @@ double stick_traction(const tangential_solution& s, double r);
 // `pressure_b`). |Q| = f is gross sliding (gross_sliding.hpp).
 tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b);
 
-class tangential_solver {
+// The tangential problem for any stick-zone system (tangential_problem.cpp): the paper's zone [-1, c0] whose load
+// (3.22) is Q, by a root search in c0; Q = 0 (full stick) and |Q| = f (gross sliding) without one (2(g)); the
+// mirror Q < 0 (apply_load_sign); the traction (3.15), the slip velocity (3.6) and the checks (3.3)-(3.4) of a
+// solution. A system supplies its equation on a stick zone [start, c0] (`on_zone`), the two special loads, the slip
+// velocity off the zone and the checks' rounding: the collocation of (4.4) (tangential_solver below) and the
+// Glauert system of the one-parameter limit (one_parameter_solver, one_parameter.hpp).
+class tangential_problem {
+public:
+    virtual ~tangential_problem() = default;
+
+    virtual const normal_solution& normal() const = 0;
+    double friction() const { return f_; }
+    // Dundurs' forcing b of the |Q| problem at the load Q: sgn(Q) beta_D (Q = 0: beta_D), 8(s); 0 but for the
+    // one-parameter limit of dissimilar rollers (the collocation's dissimilar rollers pass theirs to solve_on_zone).
+    double forcing_at(double Q) const { return Q < 0.0 ? -beta_d_ : beta_d_; }
+
+    // Throws input_error for |Q| > f or non-finite Q. `guess`: a c0 close to the root (the
+    // coarse level's, when extrapolating), the start of a secant iteration (root_search.hpp);
+    // without it the secant starts from `search_start` (Carter's c0 for the collocation), else Brent on [-1, 1].
+    // `checked` = false skips the checks (3.3)-(3.4), as in at_stick_end.
+    // `slope`: dQ/dc0 near `guess` (the level below's load_slope), for a first Newton step.
+    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt, bool checked = true,
+                              std::optional<double> slope = std::nullopt);
+    // The solution for a trial c0 in [-1, 1], Q = Q(c0) (the Q >= 0 branch): a creep curve swept
+    // in c0 needs no root search.
+    // `checked` = false skips the checks (3.3)-(3.4) (their fields are then zero): for the
+    // coarse level of an extrapolation, whose distributions are not reported.
+    // `near` = true: a point of a sweep in c0, whose system is solved by refinement on the
+    // last factorisation when that converges (dense_system::solve_near), the same to rounding.
+    tangential_solution at_stick_end(double c0, bool checked = true, bool near = false);
+    // Q(c0) alone, the |Q| branch with Dundurs' forcing b (`forcing`, default forcing_at(Q >= 0)).
+    double load(double c0, std::optional<double> forcing = std::nullopt);
+
+    double traction(const tangential_solution& s, double r) const;  // p1(r), (3.15)
+    double slip_velocity(const tangential_solution& s, double r);   // v(r), (3.6), 0 on the stick zone
+    // v at many points (any order), in one sweep.
+    std::vector<double> slip_velocity(const tangential_solution& s, const std::vector<double>& r);
+    // p >= 0, (3.3) on the stick zone [start, c0], (3.4) on the slip zones (zone_checks.hpp).
+    traction_checks check(const tangential_solution& s);
+    double pressure_margin();  // min p on the check grid, once per solver
+
+protected:
+    // n coefficients; `closed_form`: smooth in both directions, Carter's c0 and xi at every load but Q = 0. `what`:
+    // the problem in messages; `root_what`: its root search for c0. Throws input_error for f not positive and finite.
+    tangential_problem(double f, int n, double beta_d, bool closed_form, const char* what, const char* root_what);
+
+    // The stick equation on the zone [start, c0] (r = start + rho (t + 1), rho = (c0 - start)/2), slip on both
+    // sides in the direction of Q, with Dundurs' forcing b; the |Q| branch, unchecked. `near`: as at_stick_end's.
+    virtual tangential_solution on_zone(double start, double c0, double forcing, bool near) = 0;
+    // Q = 0: c0 = 1, q0 = -f p, xi = 0 (full_stick_solution, 2(g)).
+    virtual tangential_solution full_stick(double forcing);
+    // |Q| = f (2(g)): the paper's zone shrunk onto r = -1, Carter's where smooth; with Dundurs' forcing the stick
+    // point r*, where w = b p + f G is least (8(s), as 8(g); gross_sliding.hpp).
+    virtual tangential_solution gross_sliding(double forcing);
+    // v of the |Q| problem (3.6) at points of the slip zones, in descending order (the caller applies s.sign).
+    virtual std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r) = 0;
+    virtual double check_rounding(const tangential_solution& s) = 0;  // the margins' rounding floor (7(d))
+    // Q(1) where it is known exactly (then the root search does not ask the system there, nor refuses a load below
+    // it); empty: the system's, the discretisation's error, which solve refuses where it reaches |Q|.
+    virtual std::optional<double> exact_full_stick_load() const { return std::nullopt; }
+    // Where the root search in c0 starts without a guess; empty: Brent on [-1, 1].
+    virtual std::optional<double> search_start(double) const { return std::nullopt; }
+    // Smooth cylinders: Carter's solution with the stick zone [-1, c0], and at the load |Q| (carter.hpp), no solve.
+    tangential_solution carter_solution(double Q, double c0, double xi) const;
+    tangential_solution carter_at(double magnitude) const;
+    // The one zone search's operator parts every system shares (zone_operators.cpp), for the |Q| problem with
+    // Dundurs' forcing b: the zone's system, the load's excess, the empty zone's load, gross sliding, the checks.
+    stick_zone_operator zone_operator_of(double forcing);
+    virtual std::vector<double> G(const std::vector<double>& r) = 0;  // (3.25) or its limit, at points of [-1, 1]
+
+    double f_;
+    double beta_d_;
+    bool carter_;  // smooth in both directions, closed form allowed
+    int n_;
+
+private:
+    const char* what_;
+    const char* root_what_;
+    std::optional<tangential_solution> last_system_;  // of the last load(c0)
+    std::optional<double> pressure_margin_;           // min p on the check grid of (-1, 1), c0-independent
+};
+
+// The collocation of (4.4) on the Gauss-Chebyshev rule of the normal solution.
+class tangential_solver final : public tangential_problem {
 public:
     // The normal solution is shared by every point of a creep curve. When both kernels
     // are empty, solve() takes Carter's closed form unless `closed_form` is false (the
@@ -74,22 +154,6 @@ public:
     // The solver keeps a reference to the normal solution: a temporary would dangle.
     tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
 
-    // Throws input_error for |Q| > f or non-finite Q. `guess`: a c0 close to the root (the
-    // coarse level's, when extrapolating), the start of a secant iteration (root_search.hpp);
-    // without it the secant starts from Carter's c0, and Brent on [-1, 1] is the fallback.
-    // `checked` = false skips the checks (3.3)-(3.4), as in at_stick_end.
-    // `slope`: dQ/dc0 near `guess` (the level below's load_slope), for a first Newton step.
-    tangential_solution solve(double Q, std::optional<double> guess = std::nullopt, bool checked = true,
-                              std::optional<double> slope = std::nullopt);
-
-    // The solution for a trial c0 in [-1, 1], Q = Q(c0) of (4.5): a creep curve swept
-    // in c0 needs no root search.
-    // `checked` = false skips the checks (3.3)-(3.4) (their fields are then zero): for the
-    // coarse level of an extrapolation, whose distributions are not reported.
-    // `near` = true: a point of a sweep in c0, whose system is solved by refinement on the
-    // last factorisation when that converges (dense_system::solve_near), the same to rounding.
-    tangential_solution at_stick_end(double c0, bool checked = true, bool near = false);
-    double load(double c0);  // Q(c0) alone, Q >= 0 branch
     // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
     // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
     // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is the paper's zone.
@@ -103,37 +167,26 @@ public:
                                       const std::vector<double>* extra = nullptr, bool near = false);
 
     double G(double r);                                            // (3.25)
-    std::vector<double> G(const std::vector<double>& r);           // at points of [-1, 1], in any order
-    double traction(const tangential_solution& s, double r);       // p1(r), (3.15)
-    double slip_velocity(const tangential_solution& s, double r);  // v(r), (3.6)
-    // v at many points of the slip zone (any order), in one sweep.
-    std::vector<double> slip_velocity(const tangential_solution& s, const std::vector<double>& r);
+    std::vector<double> G(const std::vector<double>& r) override;  // at points of [-1, 1], in any order
 
-    const normal_solution& normal() const { return normal_; }
-    double friction() const { return f_; }
-    // p >= 0, (3.3) on the stick zone [start, c0], (3.4) on the slip zones (zone_checks.hpp).
-    traction_checks check(const tangential_solution& s);
-    double pressure_margin();          // min p on the check grid, once per solver
+    const normal_solution& normal() const override { return normal_; }
     double rounding(double xi) const;  // the margins' rounding floor at the creep xi (7(d))
     // The collocation of (4.4) as the one zone search's operator (zone_operators.cpp); refers to this solver.
     stick_zone_operator zone_operator();
 
 private:
-    tangential_solution full_stick();
-    tangential_solution gross_sliding();
-    tangential_solution carter_solution(double Q, double c0, double xi);  // no solve
-    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r);
+    tangential_solution on_zone(double start, double c0, double forcing, bool near) override {
+        return solve_on_zone(start, c0, forcing, nullptr, near);
+    }
+    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r) override;
+    double check_rounding(const tangential_solution& s) override { return rounding(s.xi); }
+    std::optional<double> search_start(double magnitude) const override;
 
     const normal_solution& normal_;
-    kernel k1_, dk_;  // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
-    double f_;
-    int n_;
-    bool carter_;        // smooth in both directions, closed form allowed
+    kernel k1_, dk_;     // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
     matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
     dense_system system_;
     std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
-    std::optional<tangential_solution> last_system_;      // of the last load(c0)
-    std::optional<double> pressure_margin_;               // min p on the check grid of (-1, 1), c0-independent
     std::optional<convolution_table> g_table_;            // the kernel part of G (3.25), once per solver
 };
 
