@@ -147,13 +147,13 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_family&
             met.note(here);
             // A bracket that fails to solve: the next one may answer. The scan to the first bracket has no next one:
             // its fault is the search's, except where Newton stopped here at the rounding limit (8(q)), which is "no
-            // root from here" to every route: Brent's fault after it is that rounding's, and the search ends on the
-            // limit (find refuses with its line, what lowers it) where no other route answers.
+            // root from here" to every route: Brent's fault after it is that rounding's, so the bracket gives no zone
+            // (the limit noted in `met`), and where no other route answers, find refuses with the limit's line.
             if (!every && !here.met()) throw;
             continue;
         }
         met.note(here);
-        // The scan to the first bracket ends on it: its zone answers, checked by the caller.
+        // The scan to the first bracket has this one only: its zone answers, checked by the caller.
         if (!every) return found{*s, false, false};
         s->checks = op.check(*s);
         if (s->checks.hold()) return found{*s, true, false};
@@ -231,33 +231,28 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     std::vector<zone_trial> opening;
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
     std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
-    if (method.every_bracket && method.clustered && trials.empty() && !(op.empty_load(starts.front()) > magnitude)) {
-        // No start carries |Q| because the first one's empty zone carries less: with the leading slip against Q (8(g))
-        // the empty zone at s carries f (1 - 2 int_-1^s p), below |Q| from 1 + s ~ (1 - |Q|/f)^(2/3) on, and near gross
-        // sliding every start is beyond that (the first, 1 - cos(pi/32) = 4.8e-3 from the edge, from Q/f = 0.99960 on
-        // Hertz's pressure; docs/robustness.md). The starts that carry it lie between the edge and the first start:
-        // the same scan on that interval, again on the next one down while none carries it. Only where the scan found
-        // nothing, so that no other answer changes.
-        for (double top = starts.front(); trials.empty() && top + 1.0 > 1e-12;) {
-            std::vector<double> inner;
-            for (int k = 1; k < method.scan; ++k)
-                inner.push_back(-1.0 + (top + 1.0) * 0.5 * (1.0 - std::cos(M_PI * k / method.scan)));
-            trials = scan_starts(zones, {}, inner, false);
-            top = inner.front();
-        }
-    }
     std::optional<tangential_solution> first;
     if (auto s = bracketed(op, zones, trials, magnitude, first, met)) return *s;
-    if (method.every_bracket && !first && !trials.empty()) {
-        // Near gross sliding the leading slip zone of dissimilar rollers thins below the clustered scan's
-        // first start, 1 - cos(pi/32) = 4.8e-3 from the edge (the stick zone closes on the leading edge as
-        // 7(d)'s does, its start 1 + s ~ (1 - |Q|/f)^(2/3)): starts geometrically closer to the edge, down to
-        // 1e-12, before the first trial. Only where the scan found nothing, so that no other answer changes.
-        std::vector<double> near_edge;
-        for (double gap = 1e-12; gap < 1.0 + trials.front().start; gap *= 10.0) near_edge.push_back(-1.0 + gap);
-        std::vector<zone_trial> edge = scan_starts(zones, {}, near_edge, false);
-        edge.push_back(trials.front());
-        if (auto s = bracketed(op, zones, edge, magnitude, first, met)) return *s;
+    if (method.every_bracket && !first && (!trials.empty() || !(op.empty_load(starts.front()) > magnitude))) {
+        // The stick zone of dissimilar rollers can start closer to the leading edge than the scan's first start,
+        // 1 - cos(pi/32) = 4.8e-3 off it: near gross sliding it closes on the edge as 7(d)'s does, 1 + s ~
+        // (1 - |Q|/f)^(2/3), and a leading slip zone can be thin (8(j) item 11). Where no bracket answered: starts
+        // halving their distance to the edge, down to 1e-12, below `top`, the scan's first trial (the last trial of
+        // these brackets) or, where no start carries |Q| because its empty zone carries less, its first start; each
+        // bracket solved as it is found, from the top down. With the leading slip against Q (8(g)) the empty zone at
+        // s carries f (1 - 2 int_-1^s p), below |Q| from 1 + s ~ (1 - |Q|/f)^(2/3) on, so that near gross sliding no
+        // start of the scan carries |Q| (from Q/f = 0.99960 on Hertz's pressure; docs/robustness.md); the answer's
+        // 1 + s is about a third of that bound (Hertz's pressure), and halving steps skip no such interval. Only
+        // where nothing answered, so that no other answer changes.
+        std::optional<zone_trial> above;
+        if (!trials.empty()) above = trials.front();
+        for (double gap = 0.5 * (1.0 + (above ? above->start : starts.front())); gap > 1e-12; gap *= 0.5) {
+            const std::vector<zone_trial> at = scan_starts(zones, {}, {-1.0 + gap}, false);
+            if (at.empty()) continue;
+            if (above)
+                if (auto s = bracketed(op, zones, {at.front(), *above}, magnitude, first, met)) return *s;
+            above = at.front();
+        }
     }
     if (first) return found{*first, true, false};  // the caller refuses it: its checks fail
     // Where the scan ends on no bracket, no zone of this structure carries the load (not a numerical
