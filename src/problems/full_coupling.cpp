@@ -100,14 +100,20 @@ resolution_error failed_checks(const tangential_solution& t, double Q, double f)
 // The zone ends of a point (the second zone's are 2 outside five zones).
 std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s.c0(), s.start2(), s.end2()}; }
 
-// A stick zone [start, end] thinner than the node spacing pi sqrt(1 - m^2)/(n + 1) at its midpoint m for n = max_nodes, so
-// for every n: every level's U-series sees the blend's step 2 beta_D f p across it as a jump, whose log peak grows by
-// (J/pi) ln 2 per doubling of n at every rung (8(p), "Complete slip at full coupling"), and only the plateau carried in
-// closed form lets a level converge. A zone some n resolves keeps the series' route, whose ends converge at (r)'s order
-// there (8(p), "Where the plateau is carried": free rolling at f = 0.05 keeps its numbers).
-bool thinner_than_every_n(double start, double end) {
-    const double m = 0.5 * (start + end);
-    return end - start < M_PI * std::sqrt((1.0 - m) * (1.0 + m)) / (max_nodes + 1);
+// Whether five zones carry the plateau between their stick zones in closed form (8(p), "Where the plateau is carried"):
+// where a stick zone is shorter than plateau_spacings node spacings pi sqrt(1 - m^2)/(n + 1) (m its midpoint) of the
+// coarsest level n = max_nodes/4 of the top rung. A zone the series resolves with that many spacings at every level of
+// the rung that reaches it keeps the series' route, converged at (r)'s order; a shorter one is a jump, or a ramp of a
+// few spacings, for the coarser levels of every rung, whose log peak grows by (J/pi) ln 2 per doubling (8(p), "Complete
+// slip at full coupling"), and only the plateau lets those levels converge. Decided on the zones of Johnson's point
+// (which the plateau does not move), once for every step of the alternation and every level of an estimate.
+constexpr double plateau_spacings = 8.0;
+bool carries_plateau(const tangential_solution& s) {
+    const auto short_zone = [](double start, double end) {
+        const double m = 0.5 * (start + end);
+        return end - start < plateau_spacings * M_PI * std::sqrt((1.0 - m) * (1.0 + m)) / (max_nodes / 4 + 1);
+    };
+    return s.layout.stick_zones() == 2 && (short_zone(s.start(), s.c0()) || short_zone(s.start2(), s.end2()));
 }
 
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
@@ -122,7 +128,8 @@ bool thinner_than_every_n(double start, double end) {
 // stays: gross sliding (q = 0, nothing to carry) and rough rollers (the layer terms int p_q^0 K2* in (D1) and
 // int p_q^0 (K2* - K1*) in G, derived in 8(o), not built).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
-                                               bool smooth, const normal_solution& source_normal, double f) {
+                                               bool smooth, const normal_solution& source_normal, double f,
+                                               bool plateau) {
     if (!smooth) return nullptr;
     // The blend's kinks of the stick zone [start, c0], with the sign of its rise (8(r)).
     const auto blend_of = [&source_normal, f](double start, double c0, double rise) {
@@ -144,9 +151,8 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
                     blend_of(v.zone2.start(), v.zone2.c0(), -1.0));
         // The step 2 f p of the blend across each zone, with the plateau between them, carried in closed form (8(p),
         // "The step carried across thin stick zones"): pbar through p/sqrt(1 - r^2) at the zones' midpoints; only
-        // where a stick zone is thinner than every n's node spacing (8(p), "Where the plateau is carried").
-        if (v.zone1.c0() <= v.zone2.start() && (thinner_than_every_n(v.zone1.start(), v.zone1.c0()) ||
-                                                thinner_than_every_n(v.zone2.start(), v.zone2.c0()))) {
+        // where `plateau` (carries_plateau) says so.
+        if (plateau && v.zone1.c0() <= v.zone2.start()) {
             const auto h = [&source_normal](double r) {
                 return source_normal.pressure(r) / std::sqrt((1.0 - r) * (1.0 + r));
             };
@@ -186,6 +192,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     tangential_solution source = start ? start->s : johnson_point;
     double lambda = start ? start->normal.lambda : johnson.lambda, offset = start ? start->normal.offset : 0.0;
     if (start) summary_.start_level = start->normal.rule.n;
+    // The plateau's rule on Johnson's five zones where it has them (carries_plateau), else on each step's source.
+    const std::optional<bool> plateau =
+        johnson_point.layout.stick_zones() == 2 ? std::optional<bool>(carries_plateau(johnson_point)) : std::nullopt;
     double previous_change = 0.0;
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     for (int k = 1; k <= coupling_max_iterations; ++k) {
@@ -207,7 +216,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         std::unique_ptr<iterate> next;
         try {
             next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty(),
-                                       current_ ? current_->normal : start ? start->normal : johnson, f_));
+                                       current_ ? current_->normal : start ? start->normal : johnson, f_,
+                                       plateau.value_or(carries_plateau(source))));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;
