@@ -394,12 +394,18 @@ double dissimilar_zones::integrate_piece(const std::function<double(double)>& in
 
 double dissimilar_zones::integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
                                           const char* what) {
-    // The U-series of degree n - 1 runs through (n - 1)/2 periods over the angle pi; a piece of angle 32 pi/n holds
-    // about 16 of them, which GSL's 21-point rule bisects to 1e-12 without meeting the sum's rounding (8(p)).
-    if (!(b > a)) return 0.0;
+    // Where the whole piece fails (both of integrate_piece's routes at their rounding: the whole first five-zone stick
+    // zone at n = 512 for int p Theta, n = 1000 for W; GSL_EROUND), the same in pieces equal in the angle arccos(eta):
+    // the U-series of degree n - 1 runs through about n/2 periods over the angle pi, so a piece of angle 32 pi/n holds
+    // about 16, which GSL's 21-point rule bisects to 1e-12 without meeting the sum's rounding (8(p), "Free rolling at
+    // f = 0.2"). First as one piece, so that every integral that succeeded so keeps its value bit for bit.
     const double from = std::acos(std::clamp(a, -1.0, 1.0)), to = std::acos(std::clamp(b, -1.0, 1.0));
-    const int n = solver_.normal().rule.n;
-    const int pieces = std::max(1, static_cast<int>(std::ceil((from - to) * n / (32.0 * M_PI))));
+    const int pieces = static_cast<int>(std::ceil((from - to) * solver_.normal().rule.n / (32.0 * M_PI)));
+    if (!(b > a) || pieces <= 1) return integrate_piece(integrand, a, b, what);
+    try {
+        return integrate_piece(integrand, a, b, what);
+    } catch (const numerical_error&) {
+    }
     double total = 0.0, left = a;
     for (int k = 1; k <= pieces; ++k) {
         const double right = k == pieces ? b : std::cos(from + (to - from) * k / pieces);

@@ -219,9 +219,9 @@ private:
     const kinks_blend* kinks_blend_of(double start, double c0);  // that of p_q^0 (8(o)), null: adaptive
     // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
     double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
-    // The same over [a, b] cut into pieces equal in the series' angle arccos(eta), as many as the pressure's U-series
-    // has oscillations there over 16 (one for a short zone): the whole first five-zone stick zone in one GSL call
-    // meets its rounding (GSL_EROUND) at n = 512 (int p Theta) and 1000 (W) (docs/formulation.md 8(p)).
+    // The same over [a, b], where one piece fails cut into pieces equal in the series' angle arccos(eta), as many as
+    // the pressure's U-series has periods there over 16: the whole first five-zone stick zone in one GSL call meets
+    // its rounding (GSL_EROUND) at n = 512 (int p Theta) and 1000 (W) (docs/formulation.md 8(p)).
     double integrate_pieces(const std::function<double(double)>& integrand, double a, double b, const char* what);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
     const u_series_table* table() const;  // pressure_table_, built at the first call; null: the series
