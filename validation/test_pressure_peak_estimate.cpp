@@ -90,6 +90,27 @@ TEST(PressurePeakEstimate, FullCouplingBoundsTheMovingPeak) {
     EXPECT_LT(at.estimate->r, 1e-3);  // r's first digit stays resolved
 }
 
+// The peak's 2001 samples take the batched pressure, its golden section the scalar one: both end in one finishing step
+// (normal_problem.cpp), bit for bit, with the kinks (full coupling, the driven pair's point at n = 32) and without
+// (the rough layer), at every r: inside, at the edges +-1 and outside (0).
+TEST(PressurePeakEstimate, BatchedPressureIsTheScalarBitForBit) {
+    contact coupled(roughness{}, f_pair, solver_options{32, method::product}, {beta_al_st, coupling_level::full});
+    coupled.point(-0.75 * f_pair);
+    ASSERT_NE(coupled.normal().kinks, nullptr);
+    const scene s = read_scene(data + "/fig2a-T1.toml");
+    const contact rough(s.surfaces, s.friction, solver_options{32, method::product});
+    std::vector<double> r;
+    for (int i = 0; i <= 2400; ++i) r.push_back(-1.2 + 1e-3 * i);
+    r.insert(r.end(), {-1.0, 1.0, std::nextafter(1.0, 0.0), std::nextafter(-1.0, 0.0), 0.0});
+    for (const normal_solution* p : {&coupled.normal(), &rough.normal()}) {
+        const std::vector<double> batched = p->pressure(r);
+        ASSERT_EQ(batched.size(), r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) EXPECT_EQ(batched[i], p->pressure(r[i])) << "r = " << r[i];
+    }
+    EXPECT_EQ(coupled.normal().pressure(1.0), 0.0);
+    EXPECT_EQ(rough.normal().pressure(std::vector<double>{-1.5}).front(), 0.0);
+}
+
 // Q/f = -0.375 of the same pair.
 TEST(PressurePeakEstimate, FullCouplingAtAnotherLoad) {
     const dissimilar full{beta_al_st, coupling_level::full};

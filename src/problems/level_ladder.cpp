@@ -12,7 +12,6 @@
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
-#include "roughroll/problems/point_model.hpp"
 
 namespace roughroll {
 
@@ -62,20 +61,6 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
         }
     }
     return worst;
-}
-
-level_store::~level_store() = default;
-
-point_model& level_store::model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
-                                std::unique_ptr<point_model>& own) {
-    for (const auto& [at, m] : shared_)
-        if (at == k) return *m;
-    own = make();
-    ++made_[k.options.nodes()];
-    if (!own->shareable()) return *own;
-    own->share_levels_in(this);
-    own->set_checkpoint([this] { checkpoint(); });
-    return *shared_.emplace_back(k, std::move(own)).second;
 }
 
 level_ladder::level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make)

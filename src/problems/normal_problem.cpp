@@ -14,19 +14,23 @@
 
 namespace roughroll {
 
-double normal_solution::pressure(double r) const {
+namespace {
+// p(r) of (4.1) from the U-series' value `series` at r (Clenshaw's, defined at any r): phi(r) sqrt(1 - r^2), + p_q^0(r)
+// with the kinks (docs/formulation.md 8(l) step 0); 0 outside the contact. The scalar and the batched pressure's one
+// finishing step, so that they agree bit for bit.
+double finished_pressure(const normal_solution& s, double series, double r) {
     if (std::fabs(r) >= 1.0) return 0.0;
-    const double smooth = u_series(b, r) * std::sqrt(1.0 - r * r);
-    return kinks ? smooth + (*kinks)(r) : smooth;  // docs/formulation.md 8(l) step 0
+    const double smooth = series * std::sqrt(1.0 - r * r);
+    return s.kinks ? smooth + (*s.kinks)(r) : smooth;
 }
+}  // namespace
+
+double normal_solution::pressure(double r) const { return finished_pressure(*this, u_series(b, r), r); }
 
 std::vector<double> normal_solution::pressure(const std::vector<double>& r) const {
     std::vector<double> p(r.size());
     u_series(b, r.data(), p.data(), r.size());
-    for (std::size_t i = 0; i < r.size(); ++i) {
-        const double smooth = std::fabs(r[i]) >= 1.0 ? 0.0 : p[i] * std::sqrt(1.0 - r[i] * r[i]);
-        p[i] = kinks && std::fabs(r[i]) < 1.0 ? smooth + (*kinks)(r[i]) : smooth;
-    }
+    for (std::size_t i = 0; i < r.size(); ++i) p[i] = finished_pressure(*this, p[i], r[i]);
     return p;
 }
 

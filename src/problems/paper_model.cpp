@@ -207,8 +207,7 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
     // secant from it converges to the same root either way (stick_end_for_load).
     const auto predicted = [&](double half) -> std::optional<double> {
         if (!quarter_c0 || !(half > -1.0 && half < 1.0)) return half;
-        const int order = level_of(options_.how) == method::product ? 4 : 2;
-        const double c0 = half + (half - *quarter_c0) / std::ldexp(1.0, order);
+        const double c0 = half + (half - *quarter_c0) / std::ldexp(1.0, order_of(options_.how));
         return c0 > -1.0 && c0 < 1.0 ? c0 : half;
     };
     const std::vector<collocation_model*> levels = levels_.at(below());

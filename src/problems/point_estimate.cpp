@@ -102,6 +102,8 @@ std::string no_honest_estimate(method how, int n, estimate_structure structure) 
            named[static_cast<int>(structure)] + ": ";
 }
 
+int order_of(method how) { return level_of(how) == method::product ? 4 : 2; }
+
 namespace {
 
 // The three-level rule at full coupling (8(q)): the estimate's multiple of the last change where the changes contract.
@@ -153,16 +155,14 @@ error_bound coupled_bound(const three_levels& v, double floor, bool three_level,
     const bool contracts = three_level && (ratio >= 2.0 || ratio <= -4.0);
     const bool one_sign = ratio > 0.0 && std::fabs(d2) > floor;
     const bool stalls = one_sign && ratio > 1.0 / least_fall && ratio < least_fall;
-    const double tail = one_sign && ratio >= least_fall ? std::fabs(d2) / (ratio - 1.0) : 0.0;  // |d2| r/(1 - r), r = 1/ratio
+    const double tail =
+        one_sign && ratio >= least_fall ? std::fabs(d2) / (ratio - 1.0) : 0.0;  // |d2| r/(1 - r), r = 1/ratio
     const double value =
         contracts ? coupled_contracting_share * std::max(std::fabs(d2), std::ldexp(std::fabs(d1), -order)) + floor
                   : 2.0 * std::max({std::fabs(d1), std::fabs(d2), tail}) + floor;
     const bool resolved = std::isfinite(value) && !stalls;
     return {resolved ? value : 0.0, ratio, false, resolved};
 }
-
-// The method's order p of the levels' discretisation (product integration 4, the others 2).
-int order_of(const estimate_point& p) { return level_of(p.how) == method::product ? 4 : 2; }
 
 // 8(q) "The three-level rule at full coupling": the kinks carried, and every zone two nodes wide at level n/4.
 constexpr double resolved_zone = 2.0;
@@ -171,9 +171,6 @@ bool takes_three_level(const std::array<estimate_level, 3>& levels, const estima
            fewest_zone_nodes(levels[p.self].solution, p.n >> p.self) >= resolved_zone;
 }
 
-}  // namespace
-
-namespace {
 // The floors of the peak's estimate from levels whose finest has `finest_n` nodes: each level's position lies within
 // its resolution of its pressure's maximum (the golden section cannot choose among pressures equal to rounding,
 // pressure_peak), so a difference of two levels carries twice the largest; the value is the pressure at the position,
@@ -189,7 +186,7 @@ peak_error peak_floors(std::initializer_list<pressure_peak> peaks, int finest_n)
 }  // namespace
 
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& p) {
-    const int order = order_of(p);
+    const int order = order_of(p.how);
     const bool coupled = p.structure == estimate_structure::full_coupling;
     const peak_error floor = peak_floors({peaks[0], peaks[1], peaks[2]}, p.n << (2 - p.self));
     const auto bound = [&](double pressure_peak::*x, double floor) {
@@ -219,7 +216,7 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
                                     const std::array<estimate_level, 3>& levels,
                                     const std::function<std::optional<estimate_level>()>& finer,
                                     const estimate_point& p) {
-    const int order = order_of(p);
+    const int order = order_of(p.how);
     const int coarsest_n = p.n >> p.self;
     const bool coupled = p.structure == estimate_structure::full_coupling;
     const bool three_level = takes_three_level(levels, p);

@@ -3,7 +3,7 @@
 // (everything a level's numbers depend on) is given again to the next rung that asks for the same key, where the
 // model is shareable() (its numbers the same bit for bit, whoever asked first: the one-parameter limit). Counts the
 // models made at each n, shared or not: a level solved twice in a climb shows as 2. Not installed; its members are
-// defined in level_ladder.cpp.
+// defined in level_store.cpp.
 //
 // Who owns what (no model owns another model of the store, so no cycle of owners can form):
 //   - the store owns every shared model, and nothing else;
@@ -61,7 +61,7 @@ public:
         }
         bool operator==(const key& other) const { return fields() == other.fields(); }
     };
-    level_store() = default;
+    level_store();  // out of line, as the destructor: point_model is complete only in level_store.cpp
     level_store(const level_store&) = delete;
     level_store& operator=(const level_store&) = delete;
     ~level_store();

@@ -102,6 +102,11 @@ struct estimate_point {
     bool kinks_carried = false;
 };
 
+// The order p of the levels' error, ~ C n^-p, for method `how` (error_bound's rule, and each level's start from the
+// two below it, collocation_model::point): 4 where the levels are product integration's ('product', 'extrapolated'),
+// 2 for the paper's node sum and the one-parameter limit.
+int order_of(method how);
+
 // The fewest nodes of the m-point Gauss-Chebyshev rule (cos(k pi/(m + 1))) inside one zone of s (from -1 through
 // the zone ends to 1): below two the zone's ends fall between the same nodes and their changes with n are not
 // convergence (8(q) "The three-level rule at full coupling").
