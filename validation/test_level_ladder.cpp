@@ -13,6 +13,7 @@
 //  - Every row of Fig. 2's curves (data/fig2*.toml) meets the default tolerance at the default n
 //    of the default method and of the files' own method: no cost there.
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -151,6 +152,45 @@ TEST(LevelLadder, RungsShareTheirLevels) {
     const nlohmann::json fixed =
         without_seconds(to_json(solve_point(with_solver(near_sliding, "n = 256\n"), std::nullopt).report()));
     EXPECT_EQ(climbed.dump(), fixed.dump());
+}
+
+// Every call of a rung that may solve reaches its model and levels with that rung's hook (level_store::asked), also where
+// they are the store's, made by another rung: of two rungs of the one-parameter limit on one store, rung 256's model is
+// the level 2n that rung 128's estimate made, and its levels 64 and 128 are rung 128's. Rung 256's point, estimate,
+// continued_point and at_stick_end call its hook and never rung 128's; rung 128 after them calls its own again, also in
+// its level 256 (rung 256's model). A store model reached without its asker's hook calls none: each case fails.
+TEST(LevelLadder, EveryCallOfARungCallsItsHookOnSharedLevels) {
+    const scene s = parse_scene(
+        "friction = 0.3\n[cylinder1.tangential]\nT = 0.05\nA = 1\n[cylinder1.normal]\nT = 0.15\nA = 1\n"
+        "[solver]\nmethod = \"one-parameter\"\n",
+        "ladder.toml");
+    const auto store = std::make_shared<level_store>();
+    const auto rung = [&](int n) {
+        solver_options at = s.solver;
+        at.n = n;
+        return contact_internals::with_levels(s.surfaces, s.friction, at, s.materials, nullptr, store);
+    };
+    std::map<int, int> hooks;
+    contact low = rung(128);
+    low.set_checkpoint([&hooks] { ++hooks[128]; });
+    ASSERT_TRUE(low.estimate(low.point(0.15)));  // levels 32, 64, and 256 (the limit's confirmation)
+    EXPECT_EQ(store->made(256), 1);
+    contact high = rung(256);
+    EXPECT_EQ(store->made(256), 1);  // the store's: rung 128's level
+    high.set_checkpoint([&hooks] { ++hooks[256]; });
+    const auto calls_own_hook = [&hooks](const char* what, int own, int other, const std::function<void()>& call) {
+        SCOPED_TRACE(what);
+        std::map<int, int> before = hooks;
+        call();
+        EXPECT_GT(hooks[own], before[own]);
+        EXPECT_EQ(hooks[other], before[other]);
+    };
+    tangential_solution q;
+    calls_own_hook("point", 256, 128, [&] { q = high.point(0.12); });
+    calls_own_hook("estimate", 256, 128, [&] { EXPECT_TRUE(high.estimate(q)); });  // levels 64, 128 and 512
+    calls_own_hook("continued_point", 256, 128, [&] { high.continued_point(0.13, q); });
+    calls_own_hook("at_stick_end", 256, 128, [&] { high.at_stick_end(0.2); });
+    calls_own_hook("rung 128 again", 128, 256, [&] { EXPECT_TRUE(low.estimate(low.point(0.1))); });
 }
 
 // zones = "single": the paper's zone, its checks reported and never acted on. Near gross sliding it

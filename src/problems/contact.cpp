@@ -26,13 +26,14 @@ contact::impl::impl(const roughness& surfaces, double f, const solver_options& o
     if (store_) {  // the store's model (an aliasing pointer that keeps the store), or else this contact's own
         std::unique_ptr<point_model> own;
         point_model& m = store_->model({surfaces, f, materials, options}, make, own);
-        model_ = own ? std::shared_ptr<point_model>(std::move(own)) : std::shared_ptr<point_model>(store_, &m);
-        model_->share_levels_in(store_.get());
+        owner_ = own ? std::shared_ptr<point_model>(std::move(own)) : std::shared_ptr<point_model>(store_, &m);
+        owner_->share_levels_in(store_.get());
     } else {
-        model_ = make();
+        owner_ = make();
     }
+    model_ = hold(*owner_);
     if (extrapolates(surfaces, options)) {
-        companion_ = &model_->level(options.nodes() / 2);
+        companion_ = level(options.nodes() / 2);
         reported_ = std::make_unique<normal_solution>(model_->normal());
         reported_->lambda = richardson(reported_->lambda, companion_->normal().lambda);
     }
@@ -82,17 +83,15 @@ tangential_solver& contact_internals::tangential(contact& c) {
 std::vector<int> contact::impl::below() {
     std::vector<int> ns;
     if (build_levels())
-        for (int i = 0; levels_[i] != nullptr; ++i) ns.push_back(levels_[i]->nodes());  // nullptr: this one
+        for (int i = 0; levels_[i]; ++i) ns.push_back((*levels_[i]).nodes());  // empty: this one
     return ns;
 }
 
 tangential_solution contact::point(double Q) {
-    const auto working = impl_->working();
     return impl_->model_->point(Q, [this] { return impl_->below(); });
 }
 
 tangential_solution contact::continued_point(double Q, const tangential_solution& previous) {
-    const auto working = impl_->working();
     return impl_->model_->continued(Q, previous, [this] { return impl_->below(); });
 }
 
@@ -101,20 +100,11 @@ kernel contact::impl::widest_kernel() const {
     return kernel(std::vector<exponential_term>{{1.0, rate}});
 }
 
-tangential_solution contact::distribution(const tangential_solution& s) {
-    const auto working = impl_->working();
-    return impl_->distribution(s);
-}
+tangential_solution contact::distribution(const tangential_solution& s) { return impl_->distribution(s); }
 
-std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
-    const auto working = impl_->working();
-    return impl_->estimate(s);
-}
+std::optional<error_estimate> contact::estimate(const tangential_solution& s) { return impl_->estimate(s); }
 
-contact::swept_point contact::at_stick_end(double c0) {
-    const auto working = impl_->working();
-    return impl_->at_stick_end(c0);
-}
+contact::swept_point contact::at_stick_end(double c0) { return impl_->at_stick_end(c0); }
 
 std::optional<std::string> contact::beyond_every_n(double Q, int top, double tolerance) const {
     return impl_->model_->beyond_every_n(Q, top, tolerance);

@@ -50,15 +50,19 @@ struct contact::impl {
     solver_options options_;
     double f_;
     dissimilar materials_;
-    // The hook of contact::set_checkpoint, at work in the store while a call of this contact may solve.
-    level_store::at_work working() { return {store_.get(), hook_}; }
+    // A model as this contact holds it (level_store::asked): every call through it, whatever the call of the contact,
+    // runs with this contact's hook (contact::set_checkpoint), also where the model is the store's and another rung's.
+    using held = level_store::asked<point_model>;
+    held hold(point_model& m) { return {m, store_.get(), hook_}; }
+    held level(int m) { return hold(model_->level(m)); }  // the model's level at m (model_levels), so held
 
     std::shared_ptr<level_store> store_;         // a ladder's (level_store.hpp), or none
     std::function<void()> hook_;                 // contact::set_checkpoint's
-    std::shared_ptr<point_model> model_;         // the points' model, chosen once; the store's keeps the store
-    point_model* companion_ = nullptr;           // method::extrapolated: the coarse level n/2 (product)
+    std::shared_ptr<point_model> owner_;         // keeps the points' model, chosen once (the store's keeps the store)
+    held model_;                                 // that model, called through here alone
+    held companion_;                             // method::extrapolated: the coarse level n/2 (product)
     std::unique_ptr<normal_solution> reported_;  // extrapolated lambda, or empty
-    std::array<point_model*, 3> levels_{};       // the estimate's levels, coarsest first; nullptr: this one
+    std::array<held, 3> levels_{};               // the estimate's levels, coarsest first; empty: this one
     bool levels_built_ = false;
     bool sweeping_near_ = true;  // false: at_stick_end's second, fresh-LU route for a refused point
     // The peaks of the levels' pressures by n where they do not depend on the load (every structure but full coupling):

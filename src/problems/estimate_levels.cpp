@@ -80,7 +80,7 @@ pressure_peak contact::impl::peak_of_level(const point_model& level) {
 }
 
 bool contact::impl::build_levels() {
-    if (levels_built_) return levels_[0] != nullptr || levels_[1] != nullptr;
+    if (levels_built_) return levels_[0] || levels_[1];
     levels_built_ = true;
     const method how = level_of(options_.how);
     const int n = nodes();
@@ -96,12 +96,12 @@ bool contact::impl::build_levels() {
             if (m < min_nodes || (n << i) > max_nodes) continue;
             if (require_range && how != method::one_parameter && !in_asymptotic_range(widest_kernel(), m, how))
                 continue;
-            std::array<point_model*, 3> at{};
+            std::array<held, 3> at{};
             bool ok = true;
             for (int k = 0; k < 3 && ok; ++k) {
                 if (k == 2 - i) continue;  // this contact's own level
                 try {
-                    at[k] = &model_->level(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
+                    at[k] = level(k < 2 - i ? n >> (2 - i - k) : n << (k - 2 + i));
                 } catch (const resolution_error&) {  // the kernels beyond its resolution
                     ok = false;
                 }
@@ -118,11 +118,11 @@ bool contact::impl::build_levels() {
 error_estimate contact::impl::estimate_from(const tangential_solution& s, const tangential_solution& own,
                                             const std::array<tangential_solution, 3>& at, bool swept) {
     int self = 0;
-    while (levels_[self] != nullptr) ++self;
+    while (levels_[self]) ++self;
     const estimate_structure structure = model_->structure();
     const bool paper = structure == estimate_structure::paper;
     const double lambda = normal().lambda, strength = kernel_strength();
-    const int finest_n = levels_[2] ? levels_[2]->nodes() : nodes();
+    const int finest_n = levels_[2] ? (*levels_[2]).nodes() : nodes();
     const rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
     // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
     // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
@@ -154,19 +154,19 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         }
     }
     std::array<estimate_level, 3> levels;
-    for (int i = 0; i < 3; ++i) levels[i] = {at[i], (levels_[i] ? levels_[i] : model_.get())->normal().lambda};
+    for (int i = 0; i < 3; ++i) levels[i] = {at[i], (levels_[i] ? *levels_[i] : *model_).normal().lambda};
     // Level 2n on the structure of s, where n is the finest level. A search that finds no zone
     // there leaves no fourth level; for the paper's single zone a numerical fault is one.
     const auto finer = [&]() -> std::optional<estimate_level> {
         const int m = 2 * nodes();
-        if (levels_[2] != nullptr || m > max_nodes) return std::nullopt;
+        if (levels_[2] || m > max_nodes) return std::nullopt;
         try {
             // At own's c0 on a curve swept in c0, else on the structure of s (its point first: at full
             // coupling it sets the pressure).
-            point_model& level = model_->level(m);
-            return estimate_level{
-                swept ? level.at_stick_end(own.c0(), false, sweeping_near_) : level.like(s, options_.how, nodes()),
-                level.normal().lambda};
+            const held finer_level = level(m);
+            return estimate_level{swept ? finer_level->at_stick_end(own.c0(), false, sweeping_near_)
+                                        : finer_level->like(s, options_.how, nodes()),
+                                  (*finer_level).normal().lambda};
         } catch (const resolution_error&) {
             return std::nullopt;
         } catch (const numerical_error&) {

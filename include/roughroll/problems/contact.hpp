@@ -81,9 +81,13 @@ public:
     const dissimilar& materials() const;
 
     // A caller's hook, called before each level's solve (and each step of full coupling's
-    // alternation) of point(), estimate() and at_stick_end(): what it throws ends the solve there
-    // (the Python module raises KeyboardInterrupt on Ctrl-C). The contact's caches are then as
-    // after any failed solve: a later point solves again.
+    // alternation) of point(), continued_point(), estimate() and at_stick_end(), and before the
+    // general zone search of distribution() (method::extrapolated, level n again): what it throws
+    // ends the solve there (the Python module raises KeyboardInterrupt on Ctrl-C). The contact's
+    // caches are then as after any failed solve: a later point solves again. Every call reaches the
+    // model and its levels with this hook, also a level another rung of a ladder made
+    // (level_store.hpp); normal(), coupling(), beyond_every_n(), traction(), slip_velocity() and
+    // distributions() solve nothing and call no hook.
     void set_checkpoint(std::function<void()> hook);
 
     // The solution whose distributions (tractions, slip velocity) belong with s: s itself,

@@ -14,8 +14,10 @@
 //   - the store is owned by its ladder and by every contact built with it (contact_internals::with_levels, whose
 //     model is an aliasing pointer to the store where the store owns it): a released contact (level_ladder::release,
 //     the program's answer) keeps its model and that model's levels after the ladder ends.
-// A shared model's checkpoint is the store's: the hook of the contact at work (at_work, set by each of contact's
-// calls that may solve), so a level made by one rung and asked for by another calls the asking rung's hook.
+// A shared model's checkpoint is the store's: the hook of the asker whose call it serves. An asker (a contact) holds each
+// model it asks for, its own model and its estimate's levels, as asked<>: every call through it runs with the asker's
+// hook at work in the store, so a level made by one rung and asked for by another calls the asking rung's hook, and no
+// call of the asker can reach a model without its hook.
 #pragma once
 
 #include <functional>
@@ -76,7 +78,8 @@ public:
         return it == made_.end() ? 0 : it->second;
     }
 
-    // While one lives, `hook` (a contact's checkpoint) is the one every shared model's solve calls.
+private:
+    // While one lives, `hook` (an asker's checkpoint) is the one every shared model's solve calls; then the one before.
     class at_work {
     public:
         at_work(level_store* store, const std::function<void()>& hook)
@@ -92,13 +95,49 @@ public:
         const std::function<void()>* before_;
     };
 
+public:
+    // A model as one asker holds it (a contact's model and levels): `->` calls it with the asker's hook at work in
+    // `store` for that call alone (at_work, the hook before it restored after the call, also where it throws). Without
+    // a store it is the model itself, whose checkpoint is its holder's (point_model::set_checkpoint). `*` gives the
+    // model read-only: its const members solve nothing, so call no checkpoint.
+    template <class M>
+    class asked {
+    public:
+        asked() = default;
+        asked(M& model, level_store* store, const std::function<void()>& hook)
+            : model_(&model), store_(store), hook_(&hook) {}
+
+        class call {  // lives to the end of the full expression that called through ->
+        public:
+            call(const call&) = delete;
+            call& operator=(const call&) = delete;
+            M* operator->() const { return model_; }
+
+        private:
+            friend class asked;
+            call(level_store* store, const std::function<void()>& hook, M* model)
+                : working_(store, hook), model_(model) {}
+            at_work working_;
+            M* model_;
+        };
+        call operator->() const { return call(store_, *hook_, model_); }
+        const M& operator*() const { return *model_; }
+        explicit operator bool() const { return model_ != nullptr; }
+        bool operator==(const asked& other) const { return model_ == other.model_; }
+
+    private:
+        M* model_ = nullptr;
+        level_store* store_ = nullptr;
+        const std::function<void()>* hook_ = nullptr;
+    };
+
 private:
     void checkpoint() const {
         if (hook_ && *hook_) (*hook_)();
     }
     std::vector<std::pair<key, std::unique_ptr<point_model>>> shared_;
     std::map<int, int> made_;
-    const std::function<void()>* hook_ = nullptr;  // the contact at work's (at_work)
+    const std::function<void()>* hook_ = nullptr;  // the asker at work's (at_work, asked)
 };
 
 }  // namespace roughroll

@@ -126,9 +126,9 @@ inline bool extrapolates(const roughness& surfaces, const solver_options& option
 
 // The levels of a model of final type M (point_model::level): its holder's scene at m nodes by the level
 // method, each made once and kept. A model reaches its levels as M, so the type says which levels it may use.
-// In a ladder a shareable level is its store's, referred to here (level_store.hpp); any other is the holder's own,
-// with the holder's checkpoint. Under 'extrapolated' the level n/2 is made first, its normal problem from `cache`
-// (normal_problem.hpp).
+// In a ladder a shareable level is its store's, referred to here (level_store.hpp), whose checkpoint is the hook of the
+// asker at work (level_store::asked, a contact's); any other is the holder's own, with the holder's checkpoint. Under
+// 'extrapolated' the level n/2 is made first, its normal problem from `cache` (normal_problem.hpp).
 template <class M>
 class model_levels {
 public:
