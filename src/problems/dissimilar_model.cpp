@@ -36,15 +36,15 @@ std::optional<double> layers_relative_bound(const dissimilar& materials, const r
                      layers.trailing_bound});
 }
 
-// The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
-// would be neglected, and which of the route's estimates sets it; empty where the bound is no use
-// (half of xi or more).
 // `relative` rounded up to two significant digits: the tolerance a refusal names.
 std::string tolerance_up(double relative) {
     const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
     return significant(std::ceil(relative / unit) * unit, 2);
 }
 
+// The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
+// would be neglected, and which of the route's estimates sets it; empty where the bound is no use
+// (half of xi or more).
 std::string layers_tolerance_advice(double relative, double beta_d, double f) {
     if (!(relative < 0.5)) return {};
     const std::string up = tolerance_up(relative);
@@ -476,7 +476,7 @@ protected:
         if (!(Q == 0.0 && johnson_layers_)) return {};
         if (no_slip_relative_ && *no_slip_relative_ < 0.5)
             return "a tolerance of " + tolerance_up(*no_slip_relative_) +
-                   " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge "
+                   " or more (solver.tolerance, --tolerance) answers this free rolling with its edge "
                    "layers neglected (the no-slip limit at full coupling, docs/formulation.md 8(t)); coupling = "
                    "\"johnson\" answers it with the pressure uncoupled (8(n))";
         if (*johnson_layers_ <= options_.tolerance.value_or(default_tolerance))
