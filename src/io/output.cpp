@@ -67,15 +67,11 @@ const char* closed_form(const tangential_solution& s, bool full) {
     return nullptr;
 }
 
-// The neglected edge layers of a free-rolling point at large friction (8(n)): null for every other point.
-// Full coupling's (8(t)) where `full`.
-neglected_layers layers_of(const tangential_solution& s, bool full) {
-    return full ? coupled_no_slip_layers(s.forcing, s.f) : no_slip_layers(s.forcing, s.f);
-}
-
+// The neglected edge layers of a free-rolling point at large friction (8(n); full coupling's, 8(t), where `full`):
+// null for every other point.
 nlohmann::json layers_json(const tangential_solution& s, bool full) {
     if (!s.layout.layers_neglected()) return nullptr;
-    const neglected_layers l = layers_of(s, full);
+    const neglected_layers l = neglected_layers_at(s.forcing, s.f, full);
     nlohmann::json layers = {{"neglected", true},      {"thickness_bound", l.thickness}, {"crossing", l.crossing},
                              {"xi_shift", l.xi_shift}, {"xi_bound", l.xi_bound},         {"leading", l.leading},
                              {"trailing", l.trailing}};
@@ -231,7 +227,7 @@ void write_summary(std::ostream& out, const point_report& r) {
             << shortest(100.0 * r.coupling->peak_pressure_change) << " %)\n";
     }
     if (s.layout.layers_neglected() && r.coupling) {
-        const neglected_layers l = layers_of(s, true);
+        const neglected_layers l = coupled_no_slip_layers(s.forcing, s.f);
         out << "  edge layers         neglected: each thinner than " << shortest(l.thickness)
             << " (twice the crossing where |p1| of the no-slip limit exceeds f p); xi and P_H/P2 the limit's, within "
             << shortest(l.xi_bound) << " and " << shortest(l.lambda_bound)

@@ -144,6 +144,10 @@ neglected_layers coupled_no_slip_layers(double beta_d, double f) {
     return coupled_layers_bound(bufler_epsilon(beta_d), coupled_layers_crossing(beta_d, f));  // 8(p), "The edges"
 }
 
+neglected_layers neglected_layers_at(double beta_d, double f, bool full) {
+    return full ? coupled_no_slip_layers(beta_d, f) : no_slip_layers(beta_d, f);
+}
+
 tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit, double f, const normal_solution& pressure,
                                           double rounding) {
     const neglected_layers layers = coupled_no_slip_layers(limit.beta_d, f);

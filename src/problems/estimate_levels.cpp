@@ -26,8 +26,7 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
     // The edge layers neglected (8(n); at full coupling 8(t)): no levels, the layers' bound (the closed form has no n).
     if (s.layout.layers_neglected()) {
         const bool full = materials_.coupling == coupling_level::full;
-        const neglected_layers layers =
-            full ? coupled_no_slip_layers(materials_.beta_d, f_) : no_slip_layers(materials_.beta_d, f_);
+        const neglected_layers layers = neglected_layers_at(materials_.beta_d, f_, full);
         const double lambda = normal().lambda;
         return error_estimate{rounding_floor(nodes(), lambda) + layers.lambda_bound,
                               layers.trailing_bound,

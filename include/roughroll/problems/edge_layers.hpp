@@ -59,6 +59,8 @@ neglected_layers no_slip_layers(double beta_d, double f);
 // zones at f = 0.1 .. 0.19 give at most 1.0x, 8(t)). Only for t < 1/2; beyond, every bound is infinite.
 constexpr double kappa_layers = 2.0;
 neglected_layers coupled_no_slip_layers(double beta_d, double f);
+// The bounds of the point's own level: full coupling's (8(t)) where `full`, else Johnson's (8(n)).
+neglected_layers neglected_layers_at(double beta_d, double f, bool full);
 // The same bounds at Bufler's eps and the crossing t_c (coupled_no_slip_layers: the pair's eps and the full level's
 // t_c). At eps = 0 the formula at Johnson's level (Hertz's pressure, c = 2/pi): 8(t) compares it there with the five
 // zones' distance from 8(f)'s no-slip creep, a check of its size on a second level (not a proof there: |F_ns| exceeds
