@@ -22,7 +22,7 @@
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "tolerance.hpp"
 

@@ -23,7 +23,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "aluminium_on_steel.hpp"
 
 using namespace roughroll;

@@ -29,7 +29,7 @@
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/numerics/quadrature.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "../tests/tolerance.hpp"
 
 using namespace roughroll;

@@ -39,7 +39,7 @@
 #include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "aluminium_on_steel.hpp"
 #include "chebyshev_by_qagp.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "../tests/tolerance.hpp"
 
 using namespace roughroll;

@@ -16,6 +16,7 @@
 #include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/stick_zone_operator.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {

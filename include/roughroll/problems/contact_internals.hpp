@@ -9,7 +9,7 @@
 
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/level_store.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 
 namespace roughroll {
 

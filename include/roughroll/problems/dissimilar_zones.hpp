@@ -47,7 +47,7 @@
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/zone_solver.hpp"

@@ -30,7 +30,7 @@
 #include "roughroll/problems/coupling_summary.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/normal_problem.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 
 namespace roughroll {
 

@@ -25,7 +25,7 @@
 #include "roughroll/problems/level_store.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/point_estimate.hpp"
-#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 
 namespace roughroll {
 

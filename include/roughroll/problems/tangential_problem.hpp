@@ -5,29 +5,24 @@
 //   (1/pi) int q(tau)/(tau - t) d tau + int q(tau) rho K1*(rho (tau - t)) d tau = xi + f G(r(t))  (E5, E6)
 //   rho int q(tau) d tau = Q - f                                                           (3.22)
 //   G(r) = (2/pi) lambda r + int_{-1}^{1} p(eta) [K2* - K1*](eta - r) d eta                (3.25), E8
-// q = psi sqrt(1 - tau^2) (4.1). For a trial c0 the n + 1 collocation equations (4.4)
-// give psi(eta_k) and xi; Q(c0) then follows from (4.5), and c0 for a given Q is the
-// root of Q(c0) - Q found by a secant iteration (from the coarse level's root, or Carter's
-// c0), with gsl_root_fsolver_brent on [-1, 1] as the fallback (root_search.hpp).
+// q = psi sqrt(1 - tau^2) (4.1). For a trial c0 a stick-zone system gives q and xi (the
+// collocation of (4.4), tangential_solver.hpp; the Glauert system, one_parameter.hpp); Q(c0)
+// then follows from (4.5), and c0 for a given Q is the root of Q(c0) - Q found by a secant
+// iteration (from the coarse level's root, or Carter's c0), with gsl_root_fsolver_brent on
+// [-1, 1] as the fallback (root_search.hpp).
 //
 // Q < 0 is the mirror case: p1, q0 and xi change sign, c0 does not. Q = 0 is full stick
 // (c0 = 1, xi = 0, q0 = -f p) and |Q| = f the onset of gross sliding (c0 = -1,
 // xi = -f G(-1)); neither needs a solve.
 //
 // The root search, the special loads, the mirror, the tractions and the checks are the same for every
-// stick-zone system: one driver (tangential_problem) over the collocation (tangential_solver) and the
+// stick-zone system: one driver (tangential_problem) over the collocation (tangential_solver.hpp) and the
 // Glauert system of the one-parameter limit (one_parameter.hpp).
 #pragma once
 
-#include <functional>
-#include <memory>
 #include <optional>
 #include <vector>
 
-#include "roughroll/numerics/collocation.hpp"
-#include "roughroll/numerics/convolution_table.hpp"
-#include "roughroll/numerics/kernel_moments.hpp"
-#include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_solution.hpp"
 #include "roughroll/problems/zone_layout.hpp"
@@ -65,7 +60,7 @@ tangential_solution full_stick_solution(double f, const std::vector<double>& pre
 // (3.22) is Q, by a root search in c0; Q = 0 (full stick) and |Q| = f (gross sliding) without one (2(g)); the
 // mirror Q < 0 (apply_load_sign); the traction (3.15), the slip velocity (3.6) and the checks (3.3)-(3.4) of a
 // solution. A system supplies its equation on a stick zone [start, c0] (`on_zone`), the two special loads, the slip
-// velocity off the zone and the checks' rounding: the collocation of (4.4) (tangential_solver below) and the
+// velocity off the zone and the checks' rounding: the collocation of (4.4) (tangential_solver.hpp) and the
 // Glauert system of the one-parameter limit (one_parameter_solver, one_parameter.hpp).
 class tangential_problem {
 public:
@@ -141,53 +136,6 @@ private:
     const char* root_what_;
     std::optional<tangential_solution> last_system_;  // of the last load(c0)
     std::optional<double> pressure_margin_;           // min p on the check grid of (-1, 1), c0-independent
-};
-
-// The collocation of (4.4) on the Gauss-Chebyshev rule of the normal solution.
-class tangential_solver final : public tangential_problem {
-public:
-    // The normal solution is shared by every point of a creep curve. When both kernels
-    // are empty, solve() takes Carter's closed form unless `closed_form` is false (the
-    // validation of the scheme itself).
-    tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
-                      bool closed_form = true);
-    // The solver keeps a reference to the normal solution: a temporary would dangle.
-    tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
-
-    // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
-    // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
-    // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is the paper's zone.
-    // `forcing`: Dundurs' sigma beta_D of docs/formulation.md 8(e), added as forcing * p(r) to
-    // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`:
-    // values added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1)
-    // (the blended stick zone of 8(g)); s.Q is then f + rho int q still, for the caller to correct.
-    // `near` = true: a sweep's next system, solved by refinement on the last factorisation where that
-    // converges (dense_system::solve_near; at_stick_end's route), false: a fresh LU.
-    tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
-                                      const std::vector<double>* extra = nullptr, bool near = false);
-
-    double G(double r);                                            // (3.25)
-    std::vector<double> G(const std::vector<double>& r) override;  // at points of [-1, 1], in any order
-
-    const normal_solution& normal() const override { return normal_; }
-    double rounding(double xi) const;  // the margins' rounding floor at the creep xi (7(d))
-    // The collocation of (4.4) as the one zone search's operator (zone_operators.cpp); refers to this solver.
-    stick_zone_operator zone_operator();
-
-private:
-    tangential_solution on_zone(double start, double c0, double forcing, bool near) override {
-        return solve_on_zone(start, c0, forcing, nullptr, near);
-    }
-    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r) override;
-    double check_rounding(const tangential_solution& s) override { return rounding(s.xi); }
-    std::optional<double> search_start(double magnitude) const override;
-
-    const normal_solution& normal_;
-    kernel k1_, dk_;     // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
-    matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
-    dense_system system_;
-    std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
-    std::optional<convolution_table> g_table_;            // the kernel part of G (3.25), once per solver
 };
 
 }  // namespace roughroll

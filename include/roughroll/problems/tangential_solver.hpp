@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The collocation of (4.4)-(4.5): the stick equation of the tangential problem (tangential_problem.hpp) on a
+// stick zone [start, c0], r = start + rho (t + 1), rho = (c0 - start)/2 (E4; the paper's zone start = -1),
+// q = psi(t) sqrt(1 - t^2) (4.1), discretised on the Gauss-Chebyshev rule of the normal solution, nodes
+// eta_k, weights w_k, collocation points s_m (4.6)-(4.7):
+//   sum_k [(1/pi) w_k/(eta_k - s_m) + kappa^rho_mk] psi_k - xi = f G(r(s_m)) + b p(r(s_m)),  m = 1..n+1  (4.4), E5, E6
+//   Q(c0) = f + rho sum_k w_k psi_k                                                             (4.5)
+//   G(r) = (2/pi) lambda r + int_{-1}^{1} p(eta) [K2* - K1*](eta - r) d eta                     (3.25), E8
+// for the n + 1 unknowns psi_k, xi; kappa^rho the kernel term of rho K1*(rho z) (E6; docs/formulation.md 3,
+// paper or product method), b Dundurs' forcing (0 but for dissimilar rollers, 8(e)). The Cauchy part is
+// c0-independent (kept once per solver), and so is G (tabulated once). Off the stick zone the slip velocity
+// (3.6) is xi + f G - L1[q0], L1 evaluated outside its interval in closed form.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/convolution_table.hpp"
+#include "roughroll/numerics/kernel_moments.hpp"
+#include "roughroll/numerics/linear_system.hpp"
+#include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+
+namespace roughroll {
+
+// The collocation of (4.4)-(4.5) on the Gauss-Chebyshev rule of the normal solution; the driver (root search in c0,
+// special loads, mirror, traction, checks) is tangential_problem's.
+class tangential_solver final : public tangential_problem {
+public:
+    // The normal solution is shared by every point of a creep curve. When both kernels
+    // are empty, solve() takes Carter's closed form unless `closed_form` is false (the
+    // validation of the scheme itself).
+    tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
+                      bool closed_form = true);
+    // The solver keeps a reference to the normal solution: a temporary would dangle.
+    tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
+
+    // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q)
+    // on both sides: r = start + rho (t + 1), rho = (c0 - start)/2. Unchecked; for the zone
+    // solver (zone_solver.hpp), whose solutions carry the start. start = -1 is the paper's zone.
+    // `forcing`: Dundurs' sigma beta_D of docs/formulation.md 8(e), added as forcing * p(r) to
+    // the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`:
+    // values added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1)
+    // (the blended stick zone of 8(g)); s.Q is then f + rho int q still, for the caller to correct.
+    // `near` = true: a sweep's next system, solved by refinement on the last factorisation where that
+    // converges (dense_system::solve_near; at_stick_end's route), false: a fresh LU.
+    tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
+                                      const std::vector<double>* extra = nullptr, bool near = false);
+
+    double G(double r);                                            // (3.25)
+    std::vector<double> G(const std::vector<double>& r) override;  // at points of [-1, 1], in any order
+
+    const normal_solution& normal() const override { return normal_; }
+    double rounding(double xi) const;  // the margins' rounding floor at the creep xi (7(d))
+    // The collocation of (4.4) as the one zone search's operator (zone_operators.cpp); refers to this solver.
+    stick_zone_operator zone_operator();
+
+private:
+    tangential_solution on_zone(double start, double c0, double forcing, bool near) override {
+        return solve_on_zone(start, c0, forcing, nullptr, near);
+    }
+    std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r) override;
+    double check_rounding(const tangential_solution& s) override { return rounding(s.xi); }
+    std::optional<double> search_start(double magnitude) const override;
+
+    const normal_solution& normal_;
+    kernel k1_, dk_;     // K1*, and K2* - K1* (empty when equal: then G = (2/pi) lambda r)
+    matrix_ptr cauchy_;  // the c0-independent Cauchy part of (4.4)
+    dense_system system_;
+    std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
+    std::optional<convolution_table> g_table_;            // the kernel part of G (3.25), once per solver
+};
+
+}  // namespace roughroll
