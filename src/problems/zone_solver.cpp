@@ -233,7 +233,11 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
     std::optional<tangential_solution> first;
     if (auto s = bracketed(op, zones, trials, magnitude, first, met)) return *s;
-    if (method.every_bracket && !first && (!trials.empty() || !(op.empty_load(starts.front()) > magnitude))) {
+    // No start carrying |Q| opens the pass for the clustered scan alone (its first start 4.8e-3 off the edge, the
+    // blended zones' 8(g)), as before e51a784: a scan up to r* = -1 has no first start to read.
+    const bool none_carries =
+        method.clustered && !starts.empty() && trials.empty() && !(op.empty_load(starts.front()) > magnitude);
+    if (method.every_bracket && !first && (!trials.empty() || none_carries)) {
         // The stick zone of dissimilar rollers can start closer to the leading edge than the scan's first start,
         // 1 - cos(pi/32) = 4.8e-3 off it: near gross sliding it closes on the edge as 7(d)'s does, 1 + s ~
         // (1 - |Q|/f)^(2/3), and a leading slip zone can be thin (8(j) item 11). Where no bracket answered: starts

@@ -45,7 +45,8 @@ struct zone_search_method {
     // How the scan answers (zone_solver.cpp): false: the starts up to the first sign change of the entry
     // condition, its bracket's zone; true: every start, each bracket in order, the first zone whose checks
     // (3.3)-(3.4) hold, else the first solved; where no bracket gives a zone, starts halving their distance to the
-    // leading edge below the first trial, down to 1e-12 (a thin leading slip zone, near gross sliding, 8(g)).
+    // leading edge below the first trial, down to 1e-12 (a thin leading slip zone, near gross sliding, 8(g)); with
+    // `clustered`, where no start carries |Q|, below the first start.
     bool every_bracket = false;
     bool chained_ends = false;  // each zone's end searched first near the last one found (stick_zone_end)
     edge_zone edge = edge_zone::needed;

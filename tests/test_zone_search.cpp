@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The zone search's near-edge pass (zone_solver.cpp, general_search): where no bracket of a scan of every bracket
+// answers, starts halving their distance to the leading edge. It opens below the scan's first trial, or, where no
+// start carries |Q| because the first start's empty zone carries less (the blended zones of 8(g): the clustered scan
+// of dissimilar rollers), below that first start. The latter entry reads the scan's first start: before, it did so
+// for a scan without `clustered` too, where the start list can be empty (starts from -1 up to r*, and r* = -1), and
+// read past an empty vector. Checked on a made-up stick-zone operator, in closed form, with no start at all.
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/problems/stick_zone_operator.hpp"
+#include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_solver.hpp"
+
+namespace roughroll {
+namespace {
+constexpr double f = 0.3, Q = 0.2;
+
+// Zones [s, c] carrying f (1 - (c - s)), entry condition E = s + 0.5; the least point r* = -1, so that the scan up to
+// r* has no start inside (-1, 1); the empty zone carries |Q|, not more (the empty-scan entry's condition).
+stick_zone_operator without_starts() {
+    stick_zone_operator op;
+    op.f = f;
+    op.paper_zone = [](double, bool) { return std::nullopt; };
+    op.solve = [](double s, double c) { return zone_solution(f, s, c, 0.0, f * (1.0 - (c - s)), {s + 0.5}); };
+    op.excess = [](const tangential_solution& t, double magnitude) { return t.Q - magnitude; };
+    op.empty_load = [](double) { return Q; };
+    op.entry = op.newton_entry = [](const tangential_solution& t) { return t.psi_b[0]; };
+    op.gross_sliding = [] { return zone_solution(f, -1.0, -1.0, 0.0, f); };
+    op.check = [](const tangential_solution&) { return traction_checks{1.0, 1.0, 1.0, 0.0, 0.0, true, true, true}; };
+    op.method.name = "the made-up zone search";
+    op.method.refusal = "no made-up zone carries the load";
+    op.method.scan_to_least_point = true;
+    op.method.every_bracket = true;
+    op.method.edge = edge_zone::absent;
+    op.method.relative_load = false;
+    op.method.newton_tolerance = 1e-11;
+    return op;
+}
+
+TEST(ZoneSearch, NoStartsIsNoZoneOfTheStructure) {
+    // No start, no trial, no bracket: "no zone of the structure" (empty; solve refuses with the operator's line).
+    // Before, the empty-scan entry of the near-edge pass read the first of no starts (a crash in the Release build).
+    EXPECT_FALSE(zone_solver(without_starts()).find(Q));
+    try {
+        zone_solver(without_starts()).solve(Q);
+        ADD_FAILURE() << "no refusal";
+    } catch (const resolution_error& e) {
+        EXPECT_EQ(std::string(e.what()), "no made-up zone carries the load");
+    }
+}
+
+}  // namespace
+}  // namespace roughroll
