@@ -31,12 +31,8 @@ constexpr int brent_iterations = 200;
 // falling as the zone grows, by Brent to 1e-15 in r. Along the family the entry condition E(s) of the zone
 // [s, c(s)] (psi(-1) = 0 of 7(b), v(s-) = 0 of 7(g)) vanishes at the answer: trial starts are scanned for its
 // sign changes, and a bracket is solved by Newton from the zone interpolated between its trials (ends_newton),
-// else by Brent on s (each start with its own end: nested Brent).
-struct zone_family {
-    std::function<std::optional<double>(double start)> end;  // empty where no end carries |Q|
-    std::function<tangential_solution(double start, double end)> solve;
-    std::function<double(const tangential_solution&)> entry;
-};
+// else by Brent on s (each start with its own end: nested Brent). The family is the operator's zones with c(s):
+using zone_end = std::function<std::optional<double>(double start)>;  // empty where no end carries |Q|
 
 struct zone_trial {
     double start, end, entry;
@@ -62,11 +58,12 @@ bool brackets_entry(const zone_trial& lo, const zone_trial& hi) { return !(lo.en
 // The trials at `starts`, in order, after `trials`. `to_first_bracket`: stop after the first trial whose entry
 // changes sign against the one before (brackets_entry), and at a start without a zone; else every start is tried,
 // one without a zone skipped. A zone that fails to solve (numerical_error) is a fault either way, not "no zone".
-std::vector<zone_trial> scan_starts(const zone_family& family, std::vector<zone_trial> trials,
-                                    const std::vector<double>& starts, bool to_first_bracket) {
+std::vector<zone_trial> scan_starts(const stick_zone_operator& op, const zone_end& end_of,
+                                    std::vector<zone_trial> trials, const std::vector<double>& starts,
+                                    bool to_first_bracket) {
     for (const double start : starts) {
         std::optional<zone_trial> t;
-        if (const auto end = family.end(start)) t = zone_trial{start, *end, family.entry(family.solve(start, *end))};
+        if (const auto end = end_of(start)) t = zone_trial{start, *end, op.entry(op.solve(start, *end))};
         if (!t) {
             if (to_first_bracket) break;
             continue;
@@ -79,21 +76,21 @@ std::vector<zone_trial> scan_starts(const zone_family& family, std::vector<zone_
 
 // The zone of a bracket [lo, hi] of E: `newton` from the interpolated zone (from hi's where lo's entry is
 // unknown), else Brent on the start; numerical_error where Brent fails or a start has no zone.
-tangential_solution zone_in_bracket(const zone_family& family, const zone_trial& lo, const zone_trial& hi,
-                                    const zone_newton_from& newton) {
+tangential_solution zone_in_bracket(const stick_zone_operator& op, const zone_end& end_of, const zone_trial& lo,
+                                    const zone_trial& hi, const zone_newton_from& newton) {
     const double w = std::isnan(lo.entry) ? 1.0 : lo.entry / (lo.entry - hi.entry);
     if (auto s = newton(lo.start + w * (hi.start - lo.start), lo.end + w * (hi.end - lo.end))) return *s;
     const auto end = [&](double start) {
-        const auto c = family.end(start);
+        const auto c = end_of(start);
         if (!c)
             throw numerical_error(
                 "zone search: no stick zone carries the load inside a bracket of its entry condition");
         return *c;
     };
     const root r =
-        brent_root([&](double start) { return family.entry(family.solve(start, end(start))); }, lo.start, hi.start,
+        brent_root([&](double start) { return op.entry(op.solve(start, end(start))); }, lo.start, hi.start,
                    end_tolerance, 0.0, brent_iterations, "Brent search for the stick zone's start");
-    tangential_solution s = family.solve(r.x, end(r.x));
+    tangential_solution s = op.solve(r.x, end(r.x));
     s.iterations = r.iterations;
     return s;
 }
@@ -133,7 +130,7 @@ struct found {
 
 // The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket); `first`: the
 // first zone solved whose checks fail.
-std::optional<found> bracketed(const stick_zone_operator& op, const zone_family& zones,
+std::optional<found> bracketed(const stick_zone_operator& op, const zone_end& end_of,
                                const std::vector<zone_trial>& trials, double magnitude,
                                std::optional<tangential_solution>& first, rounding_limits& met) {
     const bool every = op.method.every_bracket;
@@ -142,7 +139,7 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_family&
         rounding_limits here;  // where this bracket's Newton stopped at the rounding limit
         std::optional<tangential_solution> s;
         try {
-            s = zone_in_bracket(zones, trials[k - 1], trials[k], newton_at(op, magnitude, here));
+            s = zone_in_bracket(op, end_of, trials[k - 1], trials[k], newton_at(op, magnitude, here));
         } catch (const numerical_error&) {
             met.note(here);
             // A bracket that fails to solve: the next one may answer. The scan to the first bracket has no next one:
@@ -172,21 +169,20 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     // Q(start, c0) - |Q| falls from the empty zone's load (c0 = start) as the zone grows (7(c)), in the
     // operator's form (its excess).
     std::optional<double> last_end = single_end;
-    const zone_family zones{[&](double start) {
-                                const auto c = stick_zone_end(
-                                    [&](double c0) {
-                                        if (c0 <= start) return op.empty_load(start) - magnitude;
-                                        return op.excess(op.solve(start, c0), magnitude);
-                                    },
-                                    start, method.chained_ends ? last_end : std::nullopt);
-                                if (c) last_end = c;
-                                return c;
-                            },
-                            op.solve, op.entry};
+    const zone_end end_of = [&](double start) {
+        const auto c = stick_zone_end(
+            [&](double c0) {
+                if (c0 <= start) return op.empty_load(start) - magnitude;
+                return op.excess(op.solve(start, c0), magnitude);
+            },
+            start, method.chained_ends ? last_end : std::nullopt);
+        if (c) last_end = c;
+        return c;
+    };
     // The paper's zone first: if E <= 0 at start = -1 it is the answer (7(b), 7(g)).
     std::optional<double> edge_end = single_end;
     if (!edge_end && method.edge == edge_zone::needed) {
-        edge_end = zones.end(-1.0);
+        edge_end = end_of(-1.0);
         if (!edge_end) {
             std::ostringstream msg;
             msg.precision(17);
@@ -215,7 +211,7 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     if (guess && guess->start > -1.0)
         if (auto s = newton_at(op, magnitude, met)(guess->start, guess->c0)) return found{*s, false, true};
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
-    // (7(e), zone_family above), the zone from the leading edge (where the structure has one) first.
+    // (7(e), zone_end above), the zone from the leading edge (where the structure has one) first.
     std::vector<double> starts;
     if (method.clustered) {
         for (int k = 1; k < method.scan; ++k) starts.push_back(-std::cos(M_PI * k / method.scan));
@@ -230,9 +226,9 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     }
     std::vector<zone_trial> opening;
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
-    std::vector<zone_trial> trials = scan_starts(zones, opening, starts, !method.every_bracket);
+    std::vector<zone_trial> trials = scan_starts(op, end_of, opening, starts, !method.every_bracket);
     std::optional<tangential_solution> first;
-    if (auto s = bracketed(op, zones, trials, magnitude, first, met)) return *s;
+    if (auto s = bracketed(op, end_of, trials, magnitude, first, met)) return *s;
     // No start carrying |Q| opens the pass for the clustered scan alone (its first start 4.8e-3 off the edge, the
     // blended zones' 8(g)), as before e51a784: a scan up to r* = -1 has no first start to read.
     const bool none_carries =
@@ -251,10 +247,10 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
         std::optional<zone_trial> above;
         if (!trials.empty()) above = trials.front();
         for (double gap = 0.5 * (1.0 + (above ? above->start : starts.front())); gap > 1e-12; gap *= 0.5) {
-            const std::vector<zone_trial> at = scan_starts(zones, {}, {-1.0 + gap}, false);
+            const std::vector<zone_trial> at = scan_starts(op, end_of, {}, {-1.0 + gap}, false);
             if (at.empty()) continue;
             if (above)
-                if (auto s = bracketed(op, zones, {at.front(), *above}, magnitude, first, met)) return *s;
+                if (auto s = bracketed(op, end_of, {at.front(), *above}, magnitude, first, met)) return *s;
             above = at.front();
         }
     }
