@@ -1,25 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/problems/one_parameter.hpp"
-#include "roughroll/numerics/root_search.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <limits>
 #include <sstream>
 
-#include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
-#include "roughroll/problems/gross_sliding.hpp"
-#include "roughroll/problems/zone_checks.hpp"
-#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 

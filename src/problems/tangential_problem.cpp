@@ -2,15 +2,13 @@
 #include "roughroll/problems/tangential_problem.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 #include <gsl/gsl_math.h>
 
 #include "roughroll/model/carter.hpp"
-#include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/root_search.hpp"
