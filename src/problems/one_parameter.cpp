@@ -142,8 +142,7 @@ double one_parameter_solver::sliding_velocity(double forcing, double r) const {
     return forcing == 0.0 ? f_ * G(r) : forcing * normal_.pressure(r) + f_ * G(r);  // 8(s), as 8(g)
 }
 
-tangential_solution one_parameter_solver::solve_on_zone(double start, double c0, std::optional<double> given) {
-    const double forcing = given.value_or(forcing_at(1.0));
+tangential_solution one_parameter_solver::solve_on_zone(double start, double c0, double forcing) {
     // "The one-parameter limit", stick equation: H[q] + (eps1/rho) q'(t) = xi + b p(r(t)) + f G(r(t)) with
     // q = sum_j c_j sin((j+1) phi), t = cos phi, multiplied by -sin phi at the points of (4.7):
     //   sum_j c_j cos((j+1) phi_m) [sin phi_m + (eps1/rho)(j+1)] + xi sin phi_m = -(b p(r_m) + f G(r_m)) sin phi_m,

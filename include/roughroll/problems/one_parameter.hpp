@@ -67,9 +67,8 @@ public:
 
     // The stick equation on the zone [start, c0] with slip on both sides in the direction of Q
     // (docs/formulation.md 7(g), 8(s)): r = start + rho (t + 1), rho = (c0 - start)/2; the |Q| branch
-    // with Dundurs' forcing b (`forcing`, default forcing_at(Q >= 0) = beta_D), unchecked,
-    // Q = f + rho (pi/2) psi_b[0]. solve() is start = -1.
-    tangential_solution solve_on_zone(double start, double c0, std::optional<double> forcing = std::nullopt);
+    // with Dundurs' forcing b (forcing_at(Q)), unchecked, Q = f + rho (pi/2) psi_b[0]. solve() is start = -1.
+    tangential_solution solve_on_zone(double start, double c0, double forcing);
 
     double pressure_slope(double r) const;                         // p'(r) on [-1, 1]
     double G(double r) const;                                      // G(r) = (2/pi) lambda r + (eps2 - eps1) p'(r)
