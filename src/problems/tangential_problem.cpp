@@ -76,12 +76,20 @@ tangential_solution full_stick_solution(double f, const std::vector<double>& pre
     return zone_solution(f, -1.0, 1.0, 0.0, 0.0, std::move(psi_b));
 }
 
-double stick_traction(const tangential_solution& s, double r) {
+std::vector<double> stick_traction(const tangential_solution& s, const std::vector<double>& r) {
+    // The U-series summed for all points at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar).
+    const std::size_t count = r.size();
+    std::vector<double> t(count), psi(count, 0.0), q(count, 0.0);
     const double rho = s.rho();
-    if (r <= s.start() || r >= s.c0() || s.psi_b.empty()) return 0.0;
-    const double t = (r - s.start()) / rho - 1.0;
-    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
+    for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
+    if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
+    for (std::size_t i = 0; i < count; ++i)
+        if (!(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty()))
+            q[i] = psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i]));
+    return q;
 }
+
+double stick_traction(const tangential_solution& s, double r) { return stick_traction(s, std::vector<double>{r}).front(); }
 
 tangential_problem::tangential_problem(double f, int n, double beta_d, bool closed_form, const char* what,
                                        const char* root_what)
@@ -209,20 +217,11 @@ double tangential_problem::pressure_margin() {
 traction_checks tangential_problem::check(const tangential_solution& s) {
     zone_check_terms terms{f_, pressure_margin(), check_rounding(s), true, nullptr, nullptr};
     terms.stick_gap = [&](const std::vector<double>& r) {
-        // p(r) of (4.1) and q0(r) of (3.15) on the stick grid, their U-series summed for the
-        // whole grid at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar
-        // normal_solution::pressure and q0: the same r, the same t = (r - start)/rho - 1).
-        const std::size_t count = r.size();
-        std::vector<double> t(count), psi(count, 0.0), gap(count);
-        const double rho = s.rho();
-        for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
-        const std::vector<double> p = normal().pressure(r);
-        if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
-        for (std::size_t i = 0; i < count; ++i) {
+        const std::vector<double> p = normal().pressure(r), q = stick_traction(s, r);
+        std::vector<double> gap(r.size());
+        for (std::size_t i = 0; i < r.size(); ++i) {
             const double fp = f_ * p[i];
-            const bool inside = !(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty());
-            const double q = inside ? psi[i] * std::sqrt(std::max(0.0, 1.0 - t[i] * t[i])) : 0.0;
-            gap[i] = fp - std::fabs(fp + q);  // |p1| = |sign (f p + q0)|, (3.15)
+            gap[i] = fp - std::fabs(fp + q[i]);  // |p1| = |sign (f p + q0)|, (3.15)
         }
         return gap;
     };

@@ -48,8 +48,9 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what);
 tangential_solution zone_solution(double f, double start, double c0, double xi, double Q,
                                   std::vector<double> psi_b = {}, double rcond = 1.0);
 
-// q0(r) of (3.15) on the stick zone [start, c0] of s, q = psi(t) sqrt(1 - t^2) (4.1), 0 off it.
+// q0(r) of (3.15) on the stick zone [start, c0] of s, q = psi(t) sqrt(1 - t^2) (4.1), 0 off it; at many points.
 double stick_traction(const tangential_solution& s, double r);
+std::vector<double> stick_traction(const tangential_solution& s, const std::vector<double>& r);
 
 // Full stick, the special load Q = 0 solved without a system (docs/formulation.md 2(g)), for any
 // tangential solver: c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the pressure's,
