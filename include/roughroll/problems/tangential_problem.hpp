@@ -14,10 +14,6 @@
 // Q < 0 is the mirror case: p1, q0 and xi change sign, c0 does not. Q = 0 is full stick
 // (c0 = 1, xi = 0, q0 = -f p) and |Q| = f the onset of gross sliding (c0 = -1,
 // xi = -f G(-1)); neither needs a solve.
-//
-// The root search, the special loads, the mirror, the tractions and the checks are the same for every
-// stick-zone system: one driver (tangential_problem) over the collocation (tangential_solver.hpp) and the
-// Glauert system of the one-parameter limit (one_parameter.hpp).
 #pragma once
 
 #include <optional>
@@ -57,12 +53,11 @@ std::vector<double> stick_traction(const tangential_solution& s, const std::vect
 // `pressure_b`). |Q| = f is gross sliding (gross_sliding.hpp).
 tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b);
 
-// The tangential problem for any stick-zone system (tangential_problem.cpp): the paper's zone [-1, c0] whose load
-// (3.22) is Q, by a root search in c0; Q = 0 (full stick) and |Q| = f (gross sliding) without one (2(g)); the
-// mirror Q < 0 (apply_load_sign); the traction (3.15), the slip velocity (3.6) and the checks (3.3)-(3.4) of a
-// solution. A system supplies its equation on a stick zone [start, c0] (`on_zone`), the two special loads, the slip
-// velocity off the zone and the checks' rounding: the collocation of (4.4) (tangential_solver.hpp) and the
-// Glauert system of the one-parameter limit (one_parameter_solver, one_parameter.hpp).
+// One driver for every stick-zone system, since the root search in c0, the special loads (2(g)), the mirror
+// (apply_load_sign), the traction (3.15), the slip velocity (3.6) and the checks (3.3)-(3.4) are the same for all.
+// A system supplies its equation on a stick zone [start, c0] (`on_zone`), the two special loads, the slip velocity
+// off the zone and the checks' rounding: the collocation of (4.4) (tangential_solver.hpp) and the Glauert system of
+// the one-parameter limit (one_parameter.hpp).
 class tangential_problem {
 public:
     virtual ~tangential_problem() = default;
