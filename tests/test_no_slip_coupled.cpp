@@ -17,6 +17,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/model/kernel.hpp"
+#include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/no_slip_coupled.hpp"
 
 using namespace roughroll;
@@ -203,4 +204,35 @@ TEST(NoSlipCoupled, ExchangedRollersAndRefusals) {
     EXPECT_THROW(no_slip_coupled(0.0, k1, k2, 8), input_error);
     EXPECT_THROW(no_slip_coupled(0.75, k1, k2, 8), input_error);
     EXPECT_THROW(no_slip_coupled(0.1, k1, k2, -1), input_error);
+}
+
+// The route's traction (edge_layers.hpp, coupled_no_slip_traction; session 16 review N5): the limit's p1 held to
+// [-f p, f p] with the pressure reported beside it. Where that pressure is negative (the limit's tension within
+// t_inf = 2/(1 + exp(pi/(2 |eps|))) of an edge: 2.5e-4 at beta_D = 0.498) the old clamp returned -f p = f |p|, positive
+// whatever p1's sign, and |p1| > f p in the row; now 0. And with the reported pressure (the interpolant of
+// no_slip_normal, n = 32, which differs from the closed form between the nodes) every row keeps |p1| <= f p.
+TEST(NoSlipCoupled, RouteTractionHeldByTheReportedPressure) {
+    const double beta = 0.498, f = 10.0;
+    const roughroll::no_slip_coupled_solution limit = roughroll::no_slip_coupled(beta, {}, {}, 0);
+    const double t_inf = 2.0 / (1.0 + std::exp(M_PI / (2.0 * std::fabs(limit.epsilon))));
+    ASSERT_GT(t_inf, 1e-4);
+    for (const double r : {-1.0 + 1e-6, -1.0 + 1e-5, 1.0 - 1e-5}) {
+        SCOPED_TRACE(r);
+        const double p = limit.pressure(r);
+        ASSERT_LT(p, 0.0);  // inside t_inf: tension
+        EXPECT_EQ(roughroll::coupled_no_slip_traction(limit, f, p, r), 0.0);
+    }
+    const roughroll::normal_solution reported = roughroll::no_slip_normal(limit, 32, roughroll::method::product);
+    int clamped = 0;
+    for (int i = 0; i <= 20000; ++i) {  // at f = 1: t_c = 0.022
+        const double r = -1.0 + 2.0 * i / 20000.0, p = reported.pressure(r);
+        const double p1 = roughroll::coupled_no_slip_traction(limit, 1.0, p, r);
+        EXPECT_LE(std::fabs(p1), std::max(0.0, p)) << r;
+        if (std::fabs(p1) < std::fabs(limit.traction(r))) {
+            ++clamped;
+        } else {
+            EXPECT_EQ(p1, limit.traction(r)) << r;
+        }
+    }
+    EXPECT_GT(clamped, 100);  // rows within t_c of the edges
 }

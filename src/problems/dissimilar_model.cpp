@@ -32,8 +32,9 @@ std::optional<double> layers_relative_bound(const dissimilar& materials, const r
         !kernel::tangential(surfaces).empty())
         return std::nullopt;
     const neglected_layers layers = no_slip_layers(materials.beta_d, f);
-    return std::max({layers.xi_bound / std::fabs(no_slip_creep(materials.beta_d)), layers.leading_bound,
-                     layers.trailing_bound});
+    // The estimate the route reports (its xi the no-slip creep with the layers' shift; P_H/P2 Hertz's 1), as the
+    // ladder compares it (edge_layers.hpp).
+    return neglected_layers_relative(layers, no_slip_creep(materials.beta_d) + layers.xi_shift, 1.0);
 }
 
 // `relative` rounded up to two significant digits: the tolerance a refusal names.
@@ -398,8 +399,7 @@ public:
         if (johnson_layers_) {
             const neglected_layers l = coupled_no_slip_layers(in.materials.beta_d, in.f);
             const no_slip_coupled_solution limit = no_slip_coupled(in.materials.beta_d, kernel{}, kernel{}, 0);
-            no_slip_relative_ = std::max({l.xi_bound / std::fabs(limit.xi), l.leading_bound, l.trailing_bound,
-                                          l.lambda_bound / limit.load_ratio});
+            no_slip_relative_ = neglected_layers_relative(l, limit.xi, limit.load_ratio);  // as the ladder sees it
         }
     }
 
@@ -446,7 +446,8 @@ public:
         return johnson_model::beyond_every_n(Q, top, tolerance);
     }
     double traction(const tangential_solution& d, double r) override {
-        if (no_slip_ && d.layout.layers_neglected()) return coupled_no_slip_traction(no_slip_->limit, f_, r);
+        if (no_slip_ && d.layout.layers_neglected())
+            return coupled_no_slip_traction(no_slip_->limit, f_, no_slip_->normal.pressure(r), r);
         return johnson_model::traction(d, r);
     }
     tangential_solution like(const tangential_solution& s, method how, int n) override {

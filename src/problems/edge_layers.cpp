@@ -10,6 +10,8 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/numerics/error_bound.hpp"
+#include "roughroll/numerics/gauss_chebyshev.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/no_slip_coupled.hpp"
@@ -122,9 +124,46 @@ neglected_layers no_slip_layers(double beta_d, double f) {
             trailing_bound};
 }
 
+// 8(t), "The peak pressure": where the model's peak pressure lies and how far its value is from the limit's, the
+// limit's peak being p_ns(0) = c at r = 0 (p_ns = c sqrt(1 - r^2) cos(eps log((1 + r)/(1 - r))), even, c its largest
+// value). On the main stick zone (a, b) the difference dF = F - F_ns is, exactly (Plemelj on Omega Y, Omega the
+// Cauchy integral of dF, Y of the two identities above),
+//   dF(r) = cosh(pi eps) W(r) [(2/pi) Delta lambda + I(r)],   I(r) = (1/pi) int_out Y(eta) dF(eta)/(eta - r) d eta,
+// W = (r - a)^(1/2 + i eps) (b - r)^(1/2 - i eps), |W| <= sqrt(1 - r^2), |Y| = 1/sqrt(|eta - a||eta - b|). With
+// upper bounds t of the layers' thickness, j of J0/pi, Lambda of |Delta lambda| and S of the layers' |dF|
+// (coupled_layers_bound: the premises' t = 2 t_c, j, Lambda and S = (1 + kappa) c sqrt(2 t); a test: the five zones'
+// measured ones):
+//   |dF(r)| <= D(r) = cosh(pi eps) [(2/pi) Lambda + j/(1 - t - |r|)]           (|r| < 1 - t; Lambda the P_H/P2 bound),
+//   |dF| <= U = cosh(pi eps) [(2/pi) Lambda + 2 S]     (everywhere: each layer's part of
+//            W I is at most its largest |dF|, since sqrt(r - a)/pi int_0^inf du/(sqrt(u) (u + r - a)) = 1),
+//   |dF'(r)| <= G = cosh(pi eps) [2 sqrt(1/4 + eps^2)/sqrt((1 - t)^2 - rho^2) ((2/pi) Lambda + j/delta) + j/delta^2]
+//            (|r| <= rho, delta = 1 - t - rho; |W'| = |W| |(1/2 + i eps)/(r - a) - (1/2 - i eps)/(b - r)|).
+// If c sqrt(1 - rho^2) + U < c - D(0), the model's peak lies in |r| <= rho (nowhere else can p reach p(0)); there
+// |p_ns'(r)| >= k |r|, k = c cos(|eps| log((1 + rho)/(1 - rho))) (p_ns' = -c [r cos(eps L) + 2 eps sin(eps L)]
+// /sqrt(1 - r^2), both terms of one sign), and p' = 0 at the peak puts it within r_b = min(rho, G/k) of 0, its value
+// within D(r_b) of c (p(0) >= c - D(0); p(r*) <= c + |dF(r*)|). Else: anywhere (1), within U.
+layers_peak coupled_peak_bound(double epsilon, double c, double t, double j, double lambda_bound, double layer_sup) {
+    constexpr double rho = 0.5;
+    const double e = std::fabs(epsilon);
+    if (!(t < 0.5)) return {HUGE_VAL, HUGE_VAL};
+    const double ch = std::cosh(M_PI * e), load = M_2_PI * lambda_bound;
+    const double D0 = ch * (load + j / (1.0 - t));
+    const double U = ch * (load + 2.0 * layer_sup);
+    const double turn = e * std::log((1.0 + rho) / (1.0 - rho));
+    if (!(c * std::sqrt(1.0 - rho * rho) + U < c - D0 && turn < M_PI_2)) return {1.0, U};
+    const double delta = 1.0 - t - rho;
+    const double G =
+        ch * (2.0 * std::sqrt(0.25 + e * e) / std::sqrt((1.0 - t) * (1.0 - t) - rho * rho) * (load + j / delta) +
+              j / (delta * delta));
+    const double r = std::min(rho, G / (c * std::cos(turn)));
+    return {r, ch * (load + j / (1.0 - t - r))};
+}
+
 neglected_layers coupled_layers_bound(double epsilon, double crossing) {
     const double e = std::fabs(epsilon), t = 2.0 * crossing;
-    if (!(t < 0.5)) return {crossing, t, 0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, 0.0, HUGE_VAL, 0.0, HUGE_VAL, HUGE_VAL};
+    if (!(t < 0.5))
+        return {crossing, t,   0.0,      HUGE_VAL, HUGE_VAL, HUGE_VAL, 0.0,
+                HUGE_VAL, 0.0, HUGE_VAL, HUGE_VAL, HUGE_VAL, HUGE_VAL};
     // 8(t), "The layers' bound at full coupling": with the weights omega = (r - a)^(-1/2 - i eps) (b - r)^(-1/2 + i eps)
     // and omega (r - m + 2 i eps h) on the main stick zone (a, b), h = (b - a)/2 >= 1 - t,
     //   pi |Delta xi| <= J0 + 4 |eps| h |Delta lambda|,   |Delta lambda| <= (h + t) J0/(h^2 sqrt(1 + 4 eps^2)),
@@ -136,8 +175,11 @@ neglected_layers coupled_layers_bound(double epsilon, double crossing) {
     const double xi_bound = j0_over_pi * (1.0 + 4.0 * e / (1.0 - t));
     const double lambda_bound =
         M_PI * j0_over_pi * (1.0 + t) / ((1.0 - t) * (1.0 - t) * std::sqrt(1.0 + 4.0 * epsilon * epsilon));
+    // In the layers |dF| <= (1 + kappa) c sqrt(x (2 - x)) <= (1 + kappa) c sqrt(2 t) (premise (ii)).
+    const layers_peak peak =
+        coupled_peak_bound(epsilon, c, t, j0_over_pi, lambda_bound, (1.0 + kappa_layers) * c * std::sqrt(2.0 * t));
     // The main stick zone's ends within t of the edges; reported at the edges (stick on [-1, 1]).
-    return {crossing, t, 0.0, xi_bound, xi_bound, xi_bound, 0.0, t, 0.0, t, lambda_bound};
+    return {crossing, t, 0.0, xi_bound, xi_bound, xi_bound, 0.0, t, 0.0, t, lambda_bound, peak.r, peak.p};
 }
 
 neglected_layers coupled_no_slip_layers(double beta_d, double f) {
@@ -146,6 +188,18 @@ neglected_layers coupled_no_slip_layers(double beta_d, double f) {
 
 neglected_layers neglected_layers_at(double beta_d, double f, bool full) {
     return full ? coupled_no_slip_layers(beta_d, f) : no_slip_layers(beta_d, f);
+}
+
+layers_estimate neglected_layers_estimate(const neglected_layers& layers, double xi, double lambda, int n) {
+    return {rounding_floor(n, lambda) + layers.lambda_bound, layers.trailing_bound,
+            layers.xi_bound + 4.0 * DBL_EPSILON * std::fabs(xi), layers.leading_bound};
+}
+
+double neglected_layers_relative(const neglected_layers& layers, double xi, double lambda) {
+    // rounding_floor grows with n, so the estimate at max_nodes is the largest of any rung's; the ladder allows each
+    // quantity at least tol times the scale below (check_estimate), so relative <= tol passes its check at every rung.
+    const layers_estimate e = neglected_layers_estimate(layers, xi, lambda, max_nodes);
+    return std::max({e.xi / std::fabs(xi), e.lambda / std::fabs(lambda), e.c0, e.start});
 }
 
 tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit, double f, const normal_solution& pressure,
@@ -163,8 +217,11 @@ tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit,
     return s;
 }
 
-double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double r) {
-    const double bound = f * limit.pressure(r);
+double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double pressure, double r) {
+    // The bound from the pressure reported beside the traction (not the closed form's: they differ between the nodes,
+    // by up to 2.8e-5 within 1e-3 of an edge at n = 128, 8(t) "Wired"), and never negative: with p < 0 the bound f p
+    // would be negative and the clamp would return -f p = f |p|, of a sign unrelated to p1's (review N5).
+    const double bound = f * std::max(0.0, pressure);
     return std::max(-bound, std::min(bound, limit.traction(r)));
 }
 

@@ -28,16 +28,31 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
         const bool full = materials_.coupling == coupling_level::full;
         const neglected_layers layers = neglected_layers_at(materials_.beta_d, f_, full);
         const double lambda = normal().lambda;
-        return error_estimate{rounding_floor(nodes(), lambda) + layers.lambda_bound,
-                              layers.trailing_bound,
-                              layers.xi_bound + 4.0 * DBL_EPSILON * std::fabs(s.xi),
-                              0.0,
-                              full ? "the model with its edge layers: their bound (no levels; the no-slip limit at full "
-                                     "coupling in closed form, formulation 8(t))"
-                                   : "the model with its edge layers: their bound (no levels; the no-slip solution in "
-                                     "closed form, formulation 8(n))",
-                              false,
-                              layers.leading_bound};
+        const layers_estimate bound = neglected_layers_estimate(layers, s.xi, lambda, nodes());
+        error_estimate e{bound.lambda,
+                         bound.c0,
+                         bound.xi,
+                         0.0,
+                         full ? "the model with its edge layers: their bound (no levels; the no-slip limit at full "
+                                "coupling in closed form, formulation 8(t))"
+                              : "the model with its edge layers: their bound (no levels; the no-slip solution in "
+                                "closed form, formulation 8(n))",
+                         false,
+                         bound.start};
+        // The peak (8(t), "The peak pressure"; 8(n): Hertz's): the closed form's is at r = 0 with p = (2/pi)
+        // lambda cosh(pi eps) (eps = 0 at Johnson's level), lambda the reported P_H/P2. The reported peak is
+        // that of the reported pressure (the closed form at the nodes, its U interpolant between them:
+        // no_slip_normal; Hertz's at Johnson's level), so its distance from the closed form's is known, not
+        // estimated; the model's peak lies within the layers' peak bounds of the closed form's (0 at
+        // Johnson's level: the pressure is Hertz's). Floors: the reported pressure's rounding, a sum of n
+        // U-terms and the golden section's 16 eps p (pressure_peak), and the closed form's few eps.
+        const pressure_peak reported = peak_of(normal());
+        const double eps = full ? bufler_epsilon(materials_.beta_d) : 0.0;
+        const double exact = M_2_PI * lambda * std::cosh(M_PI * eps);
+        e.peak = peak_error{std::fabs(reported.r) + layers.peak_r_bound,
+                            std::fabs(reported.p - exact) + layers.peak_p_bound + rounding_floor(nodes(), exact) +
+                                32.0 * DBL_EPSILON * exact};
+        return e;
     }
     // The levels' differences measure how a solution of the discrete equations moves with n; where
     // (3.3)-(3.4) fail, the answer is not the model's solution at any n, and they bound nothing.

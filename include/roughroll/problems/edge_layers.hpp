@@ -42,6 +42,10 @@ struct neglected_layers {
     double trailing;        // 1 - c1 reported: 0.889 t_c
     double trailing_bound;  // the bound of |1 - c1_model - trailing|
     double lambda_bound = 0.0;  // the bound of |P_H/P2 model - reported|: 0 at Johnson's level (Hertz's pressure)
+    // The bounds of the model's peak pressure (position r, value p in units of P2/a) from the closed form's, r = 0 and
+    // p = (2/pi) lambda_ns cosh(pi eps) (8(t), "The peak pressure"): 0 at Johnson's level, whose pressure is Hertz's.
+    double peak_r_bound = 0.0;
+    double peak_p_bound = 0.0;
 };
 
 // The layers of the no-slip solution at Dundurs' beta_d != 0 and friction f > 0.
@@ -54,26 +58,53 @@ neglected_layers no_slip_layers(double beta_d, double f);
 // stick zone (exact) with |F_model - F_ns| <= (1 + kappa) c sqrt(1 - r^2) in the layers,
 //   |xi_model - xi_ns| <= (1 + kappa) c t/sqrt(1 - t) (1 + 4 |eps|/(1 - t)),
 //   |lambda_model - lambda_ns| <= pi (1 + kappa) c t (1 + t)/((1 - t)^(5/2) sqrt(1 + 4 eps^2)),
-// c = (2/pi) lambda_ns cosh(pi eps) (|F_ns| = c sqrt(1 - r^2) exactly). Two premises are measured, not proved: each
-// layer thinner than t, and |F_model| <= kappa c sqrt(1 - r^2) in the layers with kappa = 2 (kappa_layers; the five
-// zones at f = 0.1 .. 0.19 give at most 1.0x, 8(t)). Only for t < 1/2; beyond, every bound is infinite.
+// c = (2/pi) lambda_ns cosh(pi eps) (|F_ns| = c sqrt(1 - r^2) exactly), and the peak pressure's (8(t), "The peak
+// pressure": the pointwise inverse on the main stick zone, dF = cosh(pi eps) W [(2/pi) Delta lambda + (1/pi) int_out
+// Y dF/(eta - r)], near r = 0 within D(r) = cosh(pi eps) [(2/pi) lambda_bound + j/(1 - t - |r|)], j = (1 + kappa) c
+// t/sqrt(1 - t); its derivative puts the model's peak within G/k of r = 0). Two premises are measured, not proved:
+// each layer thinner than t, and |F_model| <= kappa c sqrt(1 - r^2) in the layers with kappa = 2 (kappa_layers; the
+// five zones at f = 0.1 .. 0.19 give at most 1.0x, 8(t)). Only for t < 1/2; beyond, every bound is infinite.
 constexpr double kappa_layers = 2.0;
 neglected_layers coupled_no_slip_layers(double beta_d, double f);
 // The bounds of the point's own level: full coupling's (8(t)) where `full`, else Johnson's (8(n)).
 neglected_layers neglected_layers_at(double beta_d, double f, bool full);
+
+// The route's error estimate at n nodes (contact's estimate; 8(n) "Where it answers", 8(t) "Wired"): P_H/P2 the layers'
+// bound plus the reported pressure's rounding, the ends their bounds, xi its bound plus 4 eps |xi|; xi and lambda the
+// reported creep and P_H/P2 (Johnson's level: no_slip_creep + xi_shift and Hertz's 1; full coupling: the limit's).
+struct layers_estimate {
+    double lambda, c0, xi, start;
+};
+layers_estimate neglected_layers_estimate(const neglected_layers& layers, double xi, double lambda, int n);
+// The largest relative part of that estimate at the largest n (max_nodes), each over the scale the ladder's tolerance
+// check divides it by (check_estimate: |xi|, P_H/P2, the half-width for the ends): the one sum both the route's choice
+// (dissimilar_model.cpp) and the ladder's check see, so that a route chosen at a tolerance meets it at every rung.
+double neglected_layers_relative(const neglected_layers& layers, double xi, double lambda);
 // The same bounds at Bufler's eps and the crossing t_c (coupled_no_slip_layers: the pair's eps and the full level's
 // t_c). At eps = 0 the formula at Johnson's level (Hertz's pressure, c = 2/pi): 8(t) compares it there with the five
 // zones' distance from 8(f)'s no-slip creep, a check of its size on a second level (not a proof there: |F_ns| exceeds
 // c sqrt(1 - r^2) in the layers by 8(f)'s logarithm).
 neglected_layers coupled_layers_bound(double epsilon, double crossing);
+// The peak's bounds of 8(t), "The peak pressure", from upper bounds of their inputs: Bufler's eps, c = (2/pi)
+// lambda_ns cosh(pi eps) (the limit's peak), t each layer's thickness, j = J0/pi, lambda_bound |Delta lambda|,
+// layer_sup the layers' largest |F - F_ns|. Returns the bounds of |r_peak| and |p_peak - c| of the model; {1, U}
+// where the peak is not localised near r = 0 (anywhere in the contact, within the bound U of |p - p_ns|); infinite
+// for t >= 1/2.
+struct layers_peak {
+    double r, p;
+};
+layers_peak coupled_peak_bound(double epsilon, double c, double t, double j, double lambda_bound, double layer_sup);
 
 // The point of that route at friction f: stick on [-1, 1] (the layers' route, "no-slip"), xi the limit's, Q = 0, its
 // checks (3.3)-(3.4) on [-1 + t, 1 - t] with the limit's p and p1 (|p1| < f p there by construction), the pressure
 // margin that of `pressure` (the reported normal solution), `rounding` the margins' floor.
 tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit, double f, const normal_solution& pressure,
                                           double rounding);
-// Its traction at r: the limit's p1 held to [-f p, f p] (it exceeds f p only within t_c of the edges, the layers).
-double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double r);
+// Its traction at r: the limit's p1 held to [-f p, f p], p = `pressure` the reported pressure at r (the limit's at the
+// nodes, its interpolant between them: no_slip_normal), so that every reported row keeps (3.3); |p1| exceeds f p only
+// within t_c of the edges (the layers). Where the reported p < 0 (the limit's tension within t_inf of an edge, 8(t)
+// "Where the limit is an approximation", item 2, inside the layers) p1 is 0.
+double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double pressure, double r);
 
 // The no-slip solution of 8(f) at Q = 0: its traction p1(r) on [-1, 1] and its creep xi.
 double no_slip_traction(double beta_d, double r);
