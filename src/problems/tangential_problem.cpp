@@ -89,7 +89,13 @@ std::vector<double> stick_traction(const tangential_solution& s, const std::vect
     return q;
 }
 
-double stick_traction(const tangential_solution& s, double r) { return stick_traction(s, std::vector<double>{r}).front(); }
+double stick_traction(const tangential_solution& s, double r) {
+    // One point: no series outside the zone, no vectors (the traction's sweeps and full coupling's right side call it at
+    // every node of every step); the same bits as the batch (its Clenshaw is the scalar's, quadrature.hpp).
+    if (r <= s.start() || r >= s.c0() || s.psi_b.empty()) return 0.0;
+    const double t = (r - s.start()) / s.rho() - 1.0;
+    return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
+}
 
 tangential_problem::tangential_problem(double f, int n, double beta_d, bool closed_form, const char* what,
                                        const char* root_what)
