@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/numerics/damped_newton.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <gsl/gsl_linalg.h>
 
@@ -39,57 +41,133 @@ std::optional<std::vector<double>> newton_step(const std::vector<std::vector<dou
     }
     return dx;
 }
+
+// |F|'s Euclidean norm, for the test of a kept Jacobian's step.
+double norm_of(const std::vector<double>& F) {
+    double sum = 0.0;
+    for (const double v : F) sum += v * v;
+    return std::sqrt(sum);
+}
 }  // namespace
 
-newton_result damped_newton(const newton_problem& problem, std::vector<double> x, const newton_options& options) {
+newton_result damped_newton(const newton_problem& problem, std::vector<double> x, const newton_options& options,
+                            newton_jacobian* kept) {
     const newton_result none{newton_stop::no_root, std::nullopt};
     const auto inside = [&](const std::vector<double>& y) { return !problem.inside || problem.inside(y); };
-    if (!inside(x)) return none;
-    auto F = problem.residual(x);
-    if (!F) return none;
+    const auto residual = [&](const std::vector<double>& y) {
+        if (kept) ++kept->residuals;
+        return problem.residual(y);
+    };
+    // No root: a kept Jacobian is not handed on (the next solve differences afresh).
+    const auto fail = [&]() {
+        if (kept) kept->J.clear();
+        return none;
+    };
+    if (!inside(x)) return fail();
+    auto F = residual(x);
+    if (!F) return fail();
     const std::size_t k = x.size();
-    double last_full = -1.0;  // the size of the last step if it was a full one within F's rounding, else -1
-    for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
-        // The Jacobian column by column, by forward differences.
+    // The Jacobian at x, column by column, by forward differences; empty where F is undefined at a difference point.
+    const auto differences = [&]() -> std::optional<std::vector<std::vector<double>>> {
         std::vector<std::vector<double>> J(F->size(), std::vector<double>(k));
         for (std::size_t j = 0; j < k; ++j) {
             const double h = problem.difference_step(x, j);
             std::vector<double> y = x;
             y[j] += h;
-            const auto Fy = problem.residual(y);
-            if (!Fy) return none;
+            const auto Fy = residual(y);
+            if (!Fy) return std::nullopt;
             for (std::size_t i = 0; i < F->size(); ++i) J[i][j] = ((*Fy)[i] - (*F)[i]) / h;
         }
-        const auto dx = newton_step(J, *F);
-        if (!dx) return none;
-        // Damping: halve the step until it lands inside and F is defined there.
+        if (kept) ++kept->differenced;
+        return J;
+    };
+    std::vector<std::vector<double>> J;
+    // Whether J is a kept or updated one (Broyden's), not differenced at x: its step is only tried.
+    bool updated = kept && kept->J.size() == F->size() && kept->J.front().size() == k;
+    if (updated) J = kept->J;
+    double last_full = -1.0;  // the size of the last step if it was a full one within F's rounding, else -1
+    double last_size = -1.0;  // the size of the last full step (a kept Jacobian's contraction test), else -1
+    for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+        std::optional<std::vector<double>> dx;
         double step = 1.0;
         std::vector<double> next(k);
         std::optional<std::vector<double>> F_next;
-        for (;;) {
-            for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + step * (*dx)[j];
-            if (inside(next) && (F_next = problem.residual(next))) break;
-            step *= 0.5;
-            if (step < options.min_step) return none;
+        bool taken = false;
+        if (updated) {
+            // The kept Jacobian's step, whole or not at all: it must land inside, with F defined there, and contract
+            // (|F| halved, or a step at most half the last full one), or be one below the tolerance or F's rounding
+            // (which the stops below judge as any full step: a Jacobian differenced there would measure that rounding).
+            dx = newton_step(J, *F);
+            if (dx) {
+                for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + (*dx)[j];
+                if (inside(next) && (F_next = residual(next))) {
+                    const double size = problem.step_size(next, *dx);
+                    const double floor = problem.rounding ? std::max(options.tolerance, problem.rounding(next))
+                                                          : options.tolerance;
+                    taken = size <= floor || norm_of(*F_next) <= 0.5 * norm_of(*F) ||
+                            (last_size > 0.0 && size <= 0.5 * last_size);
+                }
+            }
+            updated = taken;
+        }
+        if (!taken) {
+            auto differenced = differences();
+            if (!differenced) return fail();
+            J = std::move(*differenced);
+            dx = newton_step(J, *F);
+            if (!dx) return fail();
+            // Damping: halve the step until it lands inside and F is defined there.
+            for (;;) {
+                for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + step * (*dx)[j];
+                if (inside(next) && (F_next = residual(next))) break;
+                step *= 0.5;
+                if (step < options.min_step) return fail();
+            }
+        }
+        if (kept) {
+            // Broyden's update along the step taken, J += (dF - J s) s^T / (s^T s), where the step is no shorter than
+            // every difference step: a shorter one measures F's rounding, not its slope, and would spoil J.
+            std::vector<double> s(k);
+            double ss = 0.0, longest = 0.0, shortest_h = std::numeric_limits<double>::infinity();
+            for (std::size_t j = 0; j < k; ++j) {
+                s[j] = step * (*dx)[j];
+                ss += s[j] * s[j];
+                longest = std::max(longest, std::fabs(s[j]));
+                shortest_h = std::min(shortest_h, std::fabs(problem.difference_step(next, j)));
+            }
+            if (ss > 0.0 && longest >= shortest_h) {
+                for (std::size_t i = 0; i < F->size(); ++i) {
+                    double r = (*F_next)[i] - (*F)[i];
+                    for (std::size_t j = 0; j < k; ++j) r -= J[i][j] * s[j];
+                    for (std::size_t j = 0; j < k; ++j) J[i][j] += r * s[j] / ss;
+                }
+            }
+            updated = true;
         }
         x = next;
         F = F_next;
         const double size = step == 1.0 ? problem.step_size(x, *dx) : -1.0;
-        if (step == 1.0 && size <= options.tolerance)
+        last_size = size;
+        if (step == 1.0 && size <= options.tolerance) {
+            if (kept) kept->J = J;
             return {newton_stop::root, newton_root{x, iteration, options.tolerance}};
+        }
         // At the rounding floor: two full steps within F's rounding at x, the second not contracting. Within the cap
         // a root to that rounding; beyond it the stop is the limit F's rounding sets, reported as such (the steps
         // that follow are that rounding's: one below the tolerance would be chance).
         const double rounding = step == 1.0 && problem.rounding ? problem.rounding(x) : -1.0;
         const bool rounded = step == 1.0 && size <= rounding;
         if (rounded && last_full >= 0.0 && size >= last_full) {
-            if (rounding <= options.rounding_cap * options.tolerance)
+            if (rounding <= options.rounding_cap * options.tolerance) {
+                if (kept) kept->J = J;
                 return {newton_stop::root, newton_root{x, iteration, rounding}};
+            }
+            if (kept) kept->J.clear();
             return {newton_stop::rounding_limit, std::nullopt, rounding};
         }
         last_full = rounded ? size : -1.0;
     }
-    return none;
+    return fail();
 }
 
 }  // namespace roughroll

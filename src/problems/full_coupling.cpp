@@ -55,11 +55,13 @@ namespace {
 // which tries the previous kind first), with the checks (3.3)-(3.4) of the answer made; full_coupling::solve
 // acts on them (a point reported; a level of an estimate need not hold them, as at Johnson's level).
 // A structure the alternation cannot follow is a resolution_error (a curve's refused row), not a fault.
-tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f) {
+// `kept`: the five zones' Newton Jacobian from the last step (damped_newton.hpp).
+tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f,
+                         newton_jacobian& kept) {
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
         rounding_limits met;
-        const auto v = z.five_zones(Q, previous.layout.stick_ends(), std::nullopt, &met);
+        const auto v = z.five_zones(Q, previous.layout.stick_ends(), std::nullopt, &met, &kept);
         if (!v && met.met()) throw rounding_limit_error(coupling_at_load(Q, f) + met.refusal());
         if (!v)
             throw resolution_error(coupling_at_load(Q, f) +
@@ -106,7 +108,8 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s
 // the rung that reaches it keeps the series' route, converged at (r)'s order; a shorter one is a jump, or a ramp of a
 // few spacings, for the coarser levels of every rung, whose log peak grows by (J/pi) ln 2 per doubling (8(p), "Complete
 // slip at full coupling"), and only the plateau lets those levels converge. Decided on the zones of Johnson's point
-// (which the plateau does not move), once for every step of the alternation and every level of an estimate.
+// (which the plateau does not move), once for every step of the alternation and every level of an estimate; where
+// Johnson's point has not five zones, on the alternation's first source, once for its steps (full_coupling::solve).
 constexpr double plateau_spacings = 8.0;
 bool carries_plateau(const tangential_solution& s) {
     const auto short_zone = [](double start, double end) {
@@ -192,9 +195,15 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     tangential_solution source = start ? start->s : johnson_point;
     double lambda = start ? start->normal.lambda : johnson.lambda, offset = start ? start->normal.offset : 0.0;
     if (start) summary_.start_level = start->normal.rule.n;
-    // The plateau's rule on Johnson's five zones where it has them (carries_plateau), else on each step's source.
-    const std::optional<bool> plateau =
-        johnson_point.layout.stick_zones() == 2 ? std::optional<bool>(carries_plateau(johnson_point)) : std::nullopt;
+    // Newton's Jacobian in the zone ends: the coarser level's last one where it starts this alternation (the same
+    // load, the same four unknowns, its ends this level's first step's start), else differenced afresh.
+    jacobian_ = newton_jacobian{};
+    if (start) jacobian_.J = coarser->jacobian_.J;
+    // The plateau's rule (carries_plateau), once for the whole alternation: on Johnson's five zones where it has them,
+    // else on the first step's source (the coarser level's five zones; three zones carry none). Every step keeps its
+    // source's structure (`step`), so one decision covers them all; asked of each step's source, a stick zone near
+    // the threshold could switch the plateau on and off between steps, and the fixed point would be of neither rule.
+    const bool plateau = carries_plateau(johnson_point.layout.stick_zones() == 2 ? johnson_point : source);
     double previous_change = 0.0;
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     for (int k = 1; k <= coupling_max_iterations; ++k) {
@@ -210,14 +219,13 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             it->normal.how = johnson.how;
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
-            it->s = step(*it->zones, source, Q, f_);
+            it->s = step(*it->zones, source, Q, f_, jacobian_);
             return it;
         };
         std::unique_ptr<iterate> next;
         try {
             next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty(),
-                                       current_ ? current_->normal : start ? start->normal : johnson, f_,
-                                       plateau.value_or(carries_plateau(source))));
+                                       current_ ? current_->normal : start ? start->normal : johnson, f_, plateau));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;
@@ -249,6 +257,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             throw numerical_error(coupling_at_load(Q, f_) + "the alternation gives a non-finite value at step " +
                                   std::to_string(k));
         summary_.changes.push_back(value_change);
+        summary_.newton_residuals = jacobian_.residuals;
+        summary_.newton_jacobians = jacobian_.differenced;
         if (k > 2 && previous_change > 0.0)
             summary_.contraction = std::max(summary_.contraction, value_change / previous_change);
 

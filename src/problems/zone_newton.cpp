@@ -48,7 +48,7 @@ bool inside(const std::vector<double>& x, bool log_length) {
 newton_result zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
     const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
-    const std::function<double()>& rounding) {
+    const std::function<double()>& rounding, newton_jacobian* kept) {
     newton_problem problem;
     problem.residual = [&](const std::vector<double>& x) { return residual(spans_of(x, log_length)); };
     problem.inside = [log_length](const std::vector<double>& x) { return inside(x, log_length); };
@@ -74,7 +74,7 @@ newton_result zone_newton(
         x0.push_back(0.5 * (z.start + z.end));
         x0.push_back(log_length ? std::log(half) : half);
     }
-    return damped_newton(problem, x0, {max_iterations, tolerance, 1e-6});
+    return damped_newton(problem, x0, {max_iterations, tolerance, 1e-6}, kept);
 }
 
 void rounding_limits::note(const newton_result& stop, double tolerance) {

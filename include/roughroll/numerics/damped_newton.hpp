@@ -69,6 +69,23 @@ struct newton_result {
     double rounding = 0.0;            // at rounding_limit: F's rounding there (step_size's unit)
 };
 
-newton_result damped_newton(const newton_problem& problem, std::vector<double> x0, const newton_options& options);
+// A Jacobian kept from one solve to the next of a sequence whose roots and residuals move little (full coupling's
+// alternation: the zone ends from step to step, docs/formulation.md 8(e), "The Jacobian kept between steps"). Where
+// damped_newton is given one, it starts from `J` (when its size fits) and updates it by Broyden's rule after each
+// accepted step, J += (dF - J dx) dx^T / (dx^T dx), instead of differencing at every iteration; a step of such a
+// Jacobian is accepted only whole, inside, with F defined and contracting (|F| halved, or the step at most half the
+// last one), or below the tolerance or F's rounding; else J is differenced afresh at x and the iteration goes on as
+// without it (Broyden's update skipped for a step shorter than the difference steps: it would measure F's rounding).
+// The stops are unchanged; with J of relative error delta the root lies within delta/(1 - delta) of the last step.
+// On return `J` is the last one (empty where no root was found). The counters add up what was spent.
+struct newton_jacobian {
+    std::vector<std::vector<double>> J;  // empty: none kept
+    int residuals = 0;                   // evaluations of F (differences included)
+    int differenced = 0;                 // Jacobians by differences
+};
+
+// `kept`: a Jacobian carried between solves (above); null: every iteration's Jacobian by differences.
+newton_result damped_newton(const newton_problem& problem, std::vector<double> x0, const newton_options& options,
+                            newton_jacobian* kept = nullptr);
 
 }  // namespace roughroll

@@ -44,6 +44,7 @@
 
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/blended_cauchy.hpp"
+#include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -172,10 +173,10 @@ public:
     // with the forcing `beta` in place of |beta_D| where given (a step of the continuation in beta_D/f); empty
     // when Newton does not converge, and where it stops at the ends' rounding limit, noted in `met` where given
     // (zone_newton.hpp: the caller refuses with it where none of its routes answers). The checks are made, not
-    // acted on.
+    // acted on. `kept`: Newton's Jacobian carried from the last call (full coupling's alternation, damped_newton.hpp).
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends,
                                                  std::optional<double> beta = std::nullopt,
-                                                 rounding_limits* met = nullptr);
+                                                 rounding_limits* met = nullptr, newton_jacobian* kept = nullptr);
     // Five zones at load Q, |Q| < f, from the starts `first` (the coarser level's ends, a curve's previous row),
     // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q is the answer; empty where
     // none does, where the continuation ends on the braked side (the three zones of a braked roller 1 answer), and

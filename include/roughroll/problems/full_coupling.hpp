@@ -26,6 +26,7 @@
 
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/collocation.hpp"
+#include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/coupling_summary.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
@@ -84,6 +85,9 @@ private:
     normal_solver normal_solver_;
     sweep_cache sweeps_;  // the product-integration workspaces of every normal solve (collocation.hpp)
     std::unique_ptr<iterate> current_, previous_;
+    // The five zones' Newton Jacobian, kept from step to step of the alternation (the ends move little between
+    // them: docs/formulation.md 8(e), "The Jacobian kept between steps"), and from the coarser level's last step.
+    newton_jacobian jacobian_;
     coupling_summary summary_;
     std::function<void()> checkpoint_;
 };

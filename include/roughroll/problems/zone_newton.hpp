@@ -59,11 +59,11 @@ struct stick_span {
 // The Newton iterations from the zones `from` to a root of `residual` (empty where the zones leave the family
 // the residuals describe), in (m, log rho) with `log_length`, else (m, rho); `rounding`: the ends' rounding at
 // the last residual's zones (damped_newton's), empty: below `tolerance`; damped_newton's result (why it stopped).
-// The last call of `residual` is at the root.
+// The last call of `residual` is at the root. `kept`: a Jacobian carried between solves (damped_newton.hpp).
 newton_result zone_newton(
     const std::function<std::optional<std::vector<double>>(const std::vector<stick_span>&)>& residual,
     const std::vector<stick_span>& from, bool log_length, int max_iterations, double tolerance,
-    const std::function<double()>& rounding);
+    const std::function<double()>& rounding, newton_jacobian* kept = nullptr);
 
 // The stick zones' systems of a solution, in order from r = -1: one here, two for the five zones
 // (dissimilar_zones.hpp).
@@ -80,11 +80,12 @@ inline std::vector<const tangential_solution*> stick_systems(const tangential_so
 //     onto a point); k = 1 the three zones of dissimilar rollers, k = 2 the five zones.
 // Empty where Newton does not converge (the caller falls back or searches on), and where it stops at the ends'
 // rounding beyond its cap, which it notes in `met` (the search refuses with it where no route answers).
+// `kept`: a Jacobian carried from the last solve of a sequence (full coupling's alternation), damped_newton.hpp.
 template <class Solution>
 std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(const std::vector<stick_span>&)>& solve,
                                     const std::function<double(const tangential_solution&)>& entry, double Q, double f,
                                     const std::vector<stick_span>& from, bool relative, int max_iterations,
-                                    double tolerance, rounding_limits& met) {
+                                    double tolerance, rounding_limits& met, newton_jacobian* kept = nullptr) {
     if (relative && !(f - Q > 0.0)) return std::nullopt;
     std::optional<Solution> last;  // the solve at the last zones, which are the root's
     const auto residual = [&](const std::vector<stick_span>& z) -> std::optional<std::vector<double>> {
@@ -114,7 +115,7 @@ std::optional<Solution> ends_newton(const std::function<std::optional<Solution>(
         return std::numeric_limits<double>::epsilon() / rcond;
     };
     const newton_result result = zone_newton(residual, from, relative, max_iterations, tolerance,
-                                             relative ? std::function<double()>{} : rounding);
+                                             relative ? std::function<double()>{} : rounding, kept);
     met.note(result, tolerance);
     const std::optional<newton_root>& root = result.root;
     if (!root || !last) return std::nullopt;
