@@ -23,6 +23,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -100,6 +101,10 @@ public:
     // `store` for that call alone (at_work, the hook before it restored after the call, also where it throws). Without
     // a store it is the model itself, whose checkpoint is its holder's (point_model::set_checkpoint). `*` gives the
     // model read-only: its const members solve nothing, so call no checkpoint.
+    // Default-built it is empty: a slot that holds no model (contact's companion where nothing is extrapolated, its
+    // estimate's own level among the three), told by `bool`. Every caller tests it first; `->` or `*` on an empty one
+    // would follow a null model and hook, so both throw std::logic_error instead (a programming error: the program's
+    // "internal error", exit 70), never undefined behaviour.
     template <class M>
     class asked {
     public:
@@ -120,12 +125,18 @@ public:
             at_work working_;
             M* model_;
         };
-        call operator->() const { return call(store_, *hook_, model_); }
-        const M& operator*() const { return *model_; }
+        call operator->() const { return call(store_, *held().hook_, model_); }
+        const M& operator*() const { return *held().model_; }
         explicit operator bool() const { return model_ != nullptr; }
         bool operator==(const asked& other) const { return model_ == other.model_; }
 
     private:
+        const asked& held() const {
+            if (!model_ || !hook_)
+                throw std::logic_error("level_store::asked: a model asked for through an empty hold (no model was "
+                                       "given to this slot)");
+            return *this;
+        }
         M* model_ = nullptr;
         level_store* store_ = nullptr;
         const std::function<void()>* hook_ = nullptr;
