@@ -41,25 +41,29 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     };
     const quantity quantities[] = {
         {"P_H/P2", e.lambda, std::fabs(lambda), rounding_floor(max_nodes, lambda)},
-        {"c0", e.c0, std::max(1.0 - s.c0(), end_scale), zone_end_floor},  // the slip zone [c0, 1] (issue 23, 1)
-        {"stick start", e.start, std::max(1.0 + s.start(), end_scale), zone_end_floor},  // the slip zone [-1, start]
+        // the slip zone [c0, 1] (issue 23, 1), and [-1, start]; the second zone's ends on the same scales
+        {e.c0_second_zone ? "the second stick zone's end" : "c0", e.c0, std::max(1.0 - s.c0(), end_scale),
+         zone_end_floor},
+        {e.start_second_zone ? "the second stick zone's start" : "stick start", e.start,
+         std::max(1.0 + s.start(), end_scale), zone_end_floor},
         {"xi", e.xi, std::fabs(s.xi), rounding_floor(max_nodes, std::fabs(s.xi) + s.f * size)},
         {"Q", e.Q, std::fabs(s.Q), rounding_floor(max_nodes, s.f * K)},
     };
     // A zero estimate (the quantity given, not computed) is within any tolerance; a NaN one is not.
     const double inf = std::numeric_limits<double>::infinity();
     tolerance_check worst{0.0, "P_H/P2", e.lambda, 0.0};
+    double answering = 0.0;
     for (const quantity& q : quantities) {
         const double allowed = std::max(tol * std::fabs(q.scale), q.floor);
         const double ratio = q.estimate == 0.0     ? 0.0
                              : !(q.estimate > 0.0) ? inf
                              : allowed > 0.0       ? q.estimate / allowed
                                                    : inf;
-        if (ratio > worst.ratio) {
-            const double relative = q.scale != 0.0 ? q.estimate / std::fabs(q.scale) : inf;
-            worst = {ratio, q.name, q.estimate, relative};
-        }
+        const double relative = q.scale != 0.0 ? q.estimate / std::fabs(q.scale) : inf;
+        if (ratio > worst.ratio) worst = {ratio, q.name, q.estimate, relative};
+        if (!(q.estimate <= q.floor)) answering = std::max(answering, q.estimate > 0.0 ? relative : inf);
     }
+    worst.answering = answering;
     return worst;
 }
 
@@ -102,8 +106,18 @@ std::unique_ptr<contact> level_ladder::release(int n) {
 
 namespace {
 
+// The tolerance a refusal advises for an estimate whose least accepting tolerance is x (tolerance_check::answering): x
+// rounded up to two significant digits, at least a relative 1e-12 above x so that the rounding of tol s cannot refuse.
+std::string accepting_tolerance(double x) {
+    const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
+    return significant(std::ceil(x * (1.0 + 1e-12) / unit) * unit, 2);
+}
+
 error_estimate scaled_changes(const level_changes& c, double factor) {
-    return error_estimate{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
+    error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
+    e.c0_second_zone = c.c0_second_zone;
+    e.start_second_zone = c.start_second_zone;
+    return e;
 }
 
 }  // namespace
@@ -215,14 +229,18 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     std::string msg = "no n up to " + top + " meets the tolerance " + shortest(tolerance_) + " (relative)";
     if (best) {
         const double relative = best->check.relative;
+        // The least tolerance that accepts the best rung's answer (check_estimate), where one in (0, 1) does.
+        const double accepted = best->check.answering;
         msg +=
             ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
             (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
             " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped : ", and " + beyond_all) +
             (rounding_limit ? ", and at n = " + std::to_string(last_n) + " " + last_reason : std::string()) +
-            "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate, or try "
-            "another method" +
-            (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
+            "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate (n = " +
+            std::to_string(best->n) + " answers with it: solver.n or --n " + std::to_string(best->n) +
+            (accepted > 0.0 && accepted < 1.0 ? ", or a tolerance of " + accepting_tolerance(accepted)
+                                              : std::string()) +
+            "), or try another method" + (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + std::to_string(last_n) +
                ": " + last_reason + skipped + ")" +

@@ -109,6 +109,16 @@ namespace {
 // The three-level rule at full coupling (8(q)): the estimate's multiple of the last change where the changes contract.
 constexpr double coupled_contracting_share = 3.0;
 
+// Folds quantity q's `value` into its member of e (the larger of the quantities folded into one member, as std::max: a
+// NaN already there stays) and, where it is the larger, records whose zone end the member's value is.
+void fold_estimate(error_estimate& e, const estimated_quantity& q, double value) {
+    const double before = e.*q.out;
+    e.*q.out = std::max(before, value);
+    if (!(before < value)) return;
+    if (q.out == &error_estimate::c0) e.c0_second_zone = of_second_zone(q);
+    if (q.out == &error_estimate::start) e.start_second_zone = of_second_zone(q);
+}
+
 // The refusal of quantity `name` whose levels `used`, from coarsest_n nodes, gave no estimate.
 [[noreturn]] void refuse(const estimate_point& p, const char* name, const three_levels& used, int coarsest_n) {
     std::ostringstream msg;
@@ -304,7 +314,7 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
     // 4, 8, 16).
     for (std::size_t i = 0; i < table.size(); ++i) {
         if (above && !on_finer[i]) bounds[i] = confirm_on_finer(table[i], *above, bounds[i]);
-        e.*table[i].out = std::max(e.*table[i].out, bounds[i].value);
+        fold_estimate(e, table[i], bounds[i].value);
         e.bounded = e.bounded || !bounds[i].asymptotic;
     }
     static const char* const names[] = {"n/4", "n/2", "n", "2n", "4n"};
@@ -322,10 +332,12 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
             const double d1 = std::fabs(value(q, levels[1]) - value(q, levels[0]));
             const double d2 = std::fabs(value(q, levels[2]) - value(q, levels[1]));
             const double noise = floor_over(q, q.floor, levels[0], levels[1], levels[2]) + 4.0 * coupling_end_tolerance;
-            last.*q.out = std::max(last.*q.out, std::max(d2 - noise, 0.0));
-            order_one.*q.out = std::max(order_one.*q.out, std::max(std::min(d2, 0.5 * d1) - noise, 0.0));
+            fold_estimate(last, q, std::max(d2 - noise, 0.0));
+            fold_estimate(order_one, q, std::max(std::min(d2, 0.5 * d1) - noise, 0.0));
         }
-        const auto changes_of = [](const error_estimate& x) { return level_changes{x.lambda, x.c0, x.xi, x.start}; };
+        const auto changes_of = [](const error_estimate& x) {
+            return level_changes{x.lambda, x.c0, x.xi, x.start, x.c0_second_zone, x.start_second_zone};
+        };
         // Rung 2n's coarsest level is n/2: where it may take the three-level rule (its zones from level n's ends, with
         // a tenth to spare, so that a doubt gives the smaller share), only 3/2^p of |x_n - x_{n/2}| is certain.
         const bool next_three_level =

@@ -13,6 +13,7 @@ namespace roughroll {
 // largest over the zone ends folded into it, as the estimate folds them).
 struct level_changes {
     double lambda = 0.0, c0 = 0.0, xi = 0.0, start = 0.0;
+    bool c0_second_zone = false, start_second_zone = false;  // as error_estimate's: whose end the largest is
 };
 struct coupled_changes {
     level_changes last;  // |x_n - x_{n/2}| less both levels' noise: `next_factor` times it is in the estimate at 2n
@@ -52,6 +53,11 @@ struct error_estimate {
     // The peak pressure's position and value; empty where the point's estimate has no levels (the edge layers
     // neglected). Not among the quantities the ladder's tolerance asks for (level_ladder.hpp), nor ever a refusal.
     std::optional<peak_error> peak = std::nullopt;
+    // Five zones (two stick zones): c0's estimate is the larger of the main zone's end and the second zone's end, the
+    // start's of the two zones' starts (formulation 7 "What c0 means"); true where the second zone's is the larger, so
+    // that a refusal names the zone end a user sees (level_ladder's check_estimate), not the member it is folded into.
+    bool c0_second_zone = false;
+    bool start_second_zone = false;
 };
 
 }  // namespace roughroll

@@ -44,11 +44,16 @@ std::vector<int> ladder_rungs(method how);
 // no rung can do better; `strength`: the kernels' sum |T|, which enters xi's), with s = |P_H/P2| for P_H/P2, |xi| for xi, the slip zone's length 1 - c0 for c0 and
 // 1 + start for the stick zone's start (the quantities that converge near full stick, issue 23),
 // |Q| for Q(c0) of a swept point.
+// Five zones name the second stick zone's ends where its estimate is the larger one folded into c0's or the start's
+// (error_estimate::c0_second_zone, start_second_zone), with the same scale.
 struct tolerance_check {
     double ratio;          // the largest e / max(tol s, r) over the quantities: within when <= 1
-    std::string quantity;  // the quantity of that ratio ("xi", "c0", ...)
+    std::string quantity;  // the quantity of that ratio ("xi", "c0", "the second stick zone's start", ...)
     double estimate;       // its estimate e
     double relative;       // e / s (infinite where s = 0)
+    // The least tolerance within which every quantity is (e <= max(tol s, r) for each): the largest e/s of those above
+    // their floor r; 0 where all are, infinite where one above its floor has s = 0 (or a NaN estimate).
+    double answering = 0.0;
 };
 tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
                                double strength = 0.0);

@@ -133,8 +133,9 @@ public:
     private:
         const asked& held() const {
             if (!model_ || !hook_)
-                throw std::logic_error("level_store::asked: a model asked for through an empty hold (no model was "
-                                       "given to this slot)");
+                throw std::logic_error(
+                    "level_store::asked: a model asked for through an empty hold (no model was "
+                    "given to this slot)");
             return *this;
         }
         M* model_ = nullptr;

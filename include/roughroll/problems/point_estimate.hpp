@@ -81,6 +81,10 @@ struct estimated_quantity {
     bool newton_end = false;
 };
 
+// Whether q is an end of the second stick zone (five zones), read off by the layout's accessors start2, end2: folded into
+// c0's or the start's member, it is named there as its own (error_estimate::c0_second_zone, start_second_zone).
+inline bool of_second_zone(const estimated_quantity& q) { return q.value == value_start2 || q.value == value_end2; }
+
 // A level's solution on the structure of the point, and the level's P_H/P2.
 struct estimate_level {
     tangential_solution solution;
