@@ -5,7 +5,6 @@
 // at fewer residuals; a kept Jacobian that is wrong (its steps do not contract) is differenced afresh and the root is
 // still found; a solve without a root hands no Jacobian on.
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -62,7 +61,6 @@ TEST(KeptJacobian, SameRootsAsDifferencedNewtonAtFewerResiduals) {
     }
     EXPECT_EQ(kept.residuals, with_kept);
     EXPECT_LT(3 * with_kept, 2 * without) << "kept " << with_kept << " against " << without;
-    std::printf("residuals: %d kept, %d differenced at every iteration\n", with_kept, without);
     // Only the first solve differenced (its start has no Jacobian); every later one began from the kept one.
     EXPECT_LE(kept.differenced, 2);
 }
@@ -91,4 +89,23 @@ TEST(KeptJacobian, NoRootHandsNoJacobianOn) {
     kept.J = {{1.0, 0.0}, {0.0, 1.0}};
     EXPECT_FALSE(damped_newton(none, {0.5, 0.5}, {40, tolerance, 1e-6}, &kept).root);
     EXPECT_TRUE(kept.J.empty());
+}
+
+TEST(KeptJacobian, AnOverscaledOneIsNotARoot) {
+    // A kept Jacobian s times the true one (s = 1e9, 1e12): its step is s times too short, below the tolerance from the
+    // first iteration, while |F| stays as it was. The start is no root: the Jacobian is differenced and the root found.
+    for (const double scale : {1e9, 1e12}) {
+        int calls = 0;
+        newton_problem linear = moving(0.0, calls);
+        linear.residual = [](const std::vector<double>& x) -> std::optional<std::vector<double>> {
+            return std::vector<double>{x[0] - 1.0, x[1] - 2.0};
+        };
+        newton_jacobian kept;
+        kept.J = {{scale, 0.0}, {0.0, scale}};
+        const auto root = damped_newton(linear, {1.001, 2.001}, {40, tolerance, 1e-6}, &kept).root;
+        ASSERT_TRUE(root) << "scale " << scale;
+        EXPECT_NEAR(root->x[0], 1.0, tolerance) << "scale " << scale;
+        EXPECT_NEAR(root->x[1], 2.0, tolerance) << "scale " << scale;
+        EXPECT_GE(kept.differenced, 1) << "scale " << scale;
+    }
 }

@@ -156,7 +156,9 @@ nlohmann::json to_json(const point_report& r) {
                          {"peak_pressure_change", r.coupling->peak_pressure_change},
                          {"iterations", r.coupling->iterations},
                          {"start_level", r.coupling->start_level},
-                         {"contraction", r.coupling->contraction}});
+                         {"contraction", r.coupling->contraction},
+                         {"newton_residuals", r.coupling->newton_residuals},
+                         {"newton_jacobians", r.coupling->newton_jacobians}});
     nlohmann::json point = {
         {"label", r.label},
         {"coupling", coupling},

@@ -96,7 +96,10 @@ newton_result damped_newton(const newton_problem& problem, std::vector<double> x
         if (updated) {
             // The kept Jacobian's step, whole or not at all: it must land inside, with F defined there, and contract
             // (|F| halved, or a step at most half the last full one), or be one below the tolerance or F's rounding
-            // (which the stops below judge as any full step: a Jacobian differenced there would measure that rounding).
+            // after a full step of this solve (the stops below judge it as any full step: a Jacobian differenced there
+            // would measure that rounding). A first step below the tolerance proves nothing: a kept J too large by a
+            // factor s makes every step s times too short, and the stop would call the start a root (session 17
+            // review F1); it is differenced at x instead, k residuals once per solve.
             dx = newton_step(J, *F);
             if (dx) {
                 for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + (*dx)[j];
@@ -104,7 +107,7 @@ newton_result damped_newton(const newton_problem& problem, std::vector<double> x
                     const double size = problem.step_size(next, *dx);
                     const double floor = problem.rounding ? std::max(options.tolerance, problem.rounding(next))
                                                           : options.tolerance;
-                    taken = size <= floor || norm_of(*F_next) <= 0.5 * norm_of(*F) ||
+                    taken = (size <= floor && last_size > 0.0) || norm_of(*F_next) <= 0.5 * norm_of(*F) ||
                             (last_size > 0.0 && size <= 0.5 * last_size);
                 }
             }
@@ -125,8 +128,9 @@ newton_result damped_newton(const newton_problem& problem, std::vector<double> x
             }
         }
         if (kept) {
-            // Broyden's update along the step taken, J += (dF - J s) s^T / (s^T s), where the step is no shorter than
-            // every difference step: a shorter one measures F's rounding, not its slope, and would spoil J.
+            // Broyden's update along the step taken, J += (dF - J s) s^T / (s^T s), where the step's longest component
+            // reaches the shortest difference step: a step shorter than every difference step measures F's rounding,
+            // not its slope, and would spoil J.
             std::vector<double> s(k);
             double ss = 0.0, longest = 0.0, shortest_h = std::numeric_limits<double>::infinity();
             for (std::size_t j = 0; j < k; ++j) {

@@ -37,10 +37,12 @@ public:
     // The solver keeps a reference to the normal solution: a temporary would dangle.
     tangential_solver(normal_solution&&, const kernel&, const kernel&, double, bool = true) = delete;
 
-    // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q) on both sides; unchecked,
-    // for the zone solver (zone_solver.hpp), whose solutions carry the start. `forcing`: b of (4.4) (8(e),
-    // dissimilar_zones.hpp). `extra`: values added to the right side at the n + 1 collocation points
-    // r_m = start + rho (s_m + 1) (the blended stick zone of 8(g)); s.Q is then f + rho int q still, for the caller.
+    // (4.4)-(4.5) on a stick zone [start, c0] inside (-1, 1], slip (in the direction of Q) on both sides:
+    // r = start + rho (t + 1), rho = (c0 - start)/2 (E4); start = -1 is the paper's zone. Unchecked, for the zone
+    // solver (zone_solver.hpp), whose solutions carry the start. `forcing`: Dundurs' sigma beta_D of 8(e), added as
+    // forcing * p(r) to the right side xi + f G (dissimilar_zones.hpp); 0 leaves the system as it was. `extra`: values
+    // added to the right side at the n + 1 collocation points r_m = start + rho (s_m + 1) (the blended stick zone of
+    // 8(g)); s.Q is then f + rho int q still, for the caller to correct.
     // `near` = true: a sweep's next system, solved by refinement on the last factorisation where that
     // converges (dense_system::solve_near; at_stick_end's route), false: a fresh LU.
     tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
