@@ -33,7 +33,8 @@ constexpr const char* w_context =
     "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))";
 // W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
 // integrands' 3/2-power ends and the sqrt at r = 1 analytic): tolerances, and the error GSL's own
-// estimate may keep when it cannot reach them.
+// estimate may keep when it cannot reach them, a limit on each whole integral (W's Cauchy part, each
+// of K1*'s terms, int p Theta), not on each of the pieces it is summed from (within_accepted).
 constexpr std::size_t quadrature_intervals = 400;
 constexpr double quadrature_absolute = 1e-14;
 constexpr double quadrature_relative = 1e-12;
@@ -273,14 +274,14 @@ double dissimilar_zones::completed_W(double r, const std::optional<double>& cauc
     const auto g = [&](double eta) { return pressure(eta) * H(eta, start, c0); };
     const std::vector<double> points = breakpoints(r, start, c0);
     for (const auto& term : k1_.terms()) {
-        double total = 0.0;
-        for (std::size_t k = 0; k + 1 < points.size(); ++k)
-            total += integrate_piece(
-                [&](double eta) {
-                    const double z = eta - r;
-                    return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
-                },
-                points[k], points[k + 1], w_context);
+        const std::function<double(double)> integrand = [&](double eta) {
+            const double z = eta - r;
+            return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
+        };
+        const double total =
+            within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t k, double accepted) {
+                return integrate_piece(integrand, points[k], points[k + 1], w_context, accepted);
+            }).value;
         w += term.T * total;
     }
     return w;
@@ -307,10 +308,11 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     const double gr = inside ? g(r) : 0.0;
     const std::vector<double> points = breakpoints(r, start, c0);
     const auto integrate = [&](const std::function<double(double)>& integrand) {
-        double total = 0.0;
-        for (std::size_t i = 0; i + 1 < points.size(); ++i)
-            total += integrate_pieces(integrand, points[i], points[i + 1], w_context);
-        return total;
+        return within_accepted(points.size() - 1, quadrature_accepted,
+                               [&](std::size_t i, double accepted) {
+                                   return integrate_pieces(integrand, points[i], points[i + 1], w_context, accepted);
+                               })
+            .value;
     };
     // r within `breakpoint_apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
     // constant g(r) leaves (g(eta) - g(r))/(eta - r) ~ -1/(sqrt(1 - eta) + sqrt(1 - r)), a spike of
@@ -335,17 +337,16 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
         const double kr = pressure_kinks_ ? pressure_kinks_->factor(r) : 0.0;  // p_q^0/sqrt(1 - r^2) (8(o))
         const double hr = (u_series(pressure_b_, r) + kr) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r)
         const double d = std::sqrt(1.0 - r), U = std::sqrt(1.0 - a);
-        double w = 0.0;
-        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-            const bool last = i + 2 == points.size();
-            w += integrate_piece(
-                [&](double eta) {
-                    if (eta == r) return 0.0;  // a bounded integrand's single point
-                    const double ge = edge_pressure(eta) * H(eta, start, c0);
-                    return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
-                },
-                points[i], points[i + 1], w_context);
-        }
+        const double w = within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t i, double accepted) {
+                             const bool last = i + 2 == points.size();
+                             return integrate_piece(
+                                 [&](double eta) {
+                                     if (eta == r) return 0.0;  // a bounded integrand's single point
+                                     const double ge = edge_pressure(eta) * H(eta, start, c0);
+                                     return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
+                                 },
+                                 points[i], points[i + 1], w_context, accepted);
+                         }).value;
         return M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
     }
     double w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
@@ -353,8 +354,8 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     return w;
 }
 
-double dissimilar_zones::integrate_piece(const std::function<double(double)>& integrand, double a, double b,
-                                         const char* what) {
+quadrature_value dissimilar_zones::integrate_piece(const std::function<double(double)>& integrand, double a, double b,
+                                                   const char* what, double accepted) {
     // int_a^b in eta = (a + b)/2 - (b - a)/2 cos phi, d eta = (b - a)/2 sin phi d phi: between
     // neighbouring breakpoints the integrands of W and of int p Theta have at most square-root
     // (p at r = 1) and 3/2-power (H at s and c0) ends, which this substitution makes analytic in
@@ -365,7 +366,9 @@ double dissimilar_zones::integrate_piece(const std::function<double(double)>& in
     // cancellation. Where GSL still fails (a Cauchy point r next to an end, within the 1e-9 for which
     // W does not cut there, or eta rounding onto the end), the piece is integrated as before, in eta
     // by qags, whose extrapolation serves end singularities; only that route's failure is an error.
-    if (!(b > a)) return 0.0;
+    // GSL's "cannot reach the tolerance" is accepted where its own estimate of the error is below `accepted` (the
+    // piece's share of its integral's limit, within_accepted).
+    if (!(b > a)) return {0.0, 0.0};
     const double half = 0.5 * (b - a);
     const std::function<double(double)> in_phi = [&](double phi) {
         const double s = std::sin(0.5 * phi), c = std::cos(0.5 * phi);
@@ -376,43 +379,43 @@ double dissimilar_zones::integrate_piece(const std::function<double(double)>& in
         gsl_function fn;
         fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
         fn.params = const_cast<std::function<double(double)>*>(&f);
-        double result = 0.0, error = 0.0;
+        quadrature_value v{0.0, 0.0};
+        double& result = v.value;
+        double& error = v.error;
         const int status =
             in_eta ? gsl_integration_qags(&fn, a, b, quadrature_absolute, quadrature_relative, quadrature_intervals,
                                           workspace_.get(), &result, &error)
                    : gsl_integration_qag(&fn, 0.0, M_PI, quadrature_absolute, quadrature_relative, quadrature_intervals,
                                          GSL_INTEG_GAUSS21, workspace_.get(), &result, &error);
-        // Accept GSL's "cannot reach the tolerance" when its own error estimate is still small.
-        return std::make_pair(status == GSL_SUCCESS || error < quadrature_accepted ? GSL_SUCCESS : status, result);
+        return std::make_pair(status == GSL_SUCCESS || error < accepted ? GSL_SUCCESS : status, v);
     };
     const auto [status, result] = integrate(in_phi, false);
-    if (status == GSL_SUCCESS && std::isfinite(result)) return result;
+    if (status == GSL_SUCCESS && std::isfinite(result.value)) return result;
     const auto [eta_status, eta_result] = integrate(integrand, true);
     gsl_check(eta_status, what);
     return eta_result;
 }
 
-double dissimilar_zones::integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
-                                          const char* what) {
+quadrature_value dissimilar_zones::integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
+                                                    const char* what, double accepted) {
     // Where the whole piece fails (both of integrate_piece's routes at their rounding: the whole first five-zone stick
     // zone at n = 512 for int p Theta, n = 1000 for W; GSL_EROUND), the same in pieces equal in the angle arccos(eta):
     // the U-series of degree n - 1 runs through about n/2 periods over the angle pi, so a piece of angle 32 pi/n holds
     // about 16, which GSL's 21-point rule bisects to 1e-12 without meeting the sum's rounding (8(p), "Free rolling at
-    // f = 0.2"). First as one piece, so that every integral that succeeded so keeps its value bit for bit.
+    // f = 0.2"). First as one piece, so that every integral that succeeded so keeps its value bit for bit. The pieces'
+    // errors add, and their sum is held to the whole's `accepted` (within_accepted).
     const double from = std::acos(std::clamp(a, -1.0, 1.0)), to = std::acos(std::clamp(b, -1.0, 1.0));
     const int pieces = static_cast<int>(std::ceil((from - to) * solver_.normal().rule.n / (32.0 * M_PI)));
-    if (!(b > a) || pieces <= 1) return integrate_piece(integrand, a, b, what);
+    if (!(b > a) || pieces <= 1) return integrate_piece(integrand, a, b, what, accepted);
     try {
-        return integrate_piece(integrand, a, b, what);
+        return integrate_piece(integrand, a, b, what, accepted);
     } catch (const numerical_error&) {
     }
-    double total = 0.0, left = a;
-    for (int k = 1; k <= pieces; ++k) {
-        const double right = k == pieces ? b : std::cos(from + (to - from) * k / pieces);
-        total += integrate_piece(integrand, left, right, what);
-        left = right;
-    }
-    return total;
+    const auto end = [&](int k) { return k == 0 ? a : k == pieces ? b : std::cos(from + (to - from) * k / pieces); };
+    return within_accepted(static_cast<std::size_t>(pieces), accepted, [&](std::size_t k, double share) {
+        const int i = static_cast<int>(k);
+        return integrate_piece(integrand, end(i), end(i + 1), what, share);
+    });
 }
 
 double dissimilar_zones::load_under_H(double start, double c0) {
@@ -421,10 +424,12 @@ double dissimilar_zones::load_under_H(double start, double c0) {
     std::vector<double> points{start, c0};
     if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, 1e-9);  // p's one-sided roots (8(o))
     std::sort(points.begin(), points.end());
-    double inner = 0.0;
-    for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        inner += integrate_pieces(pressure_theta, points[i], points[i + 1],
-                                  "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))");
+    const double inner =
+        within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t i, double accepted) {
+            return integrate_pieces(pressure_theta, points[i], points[i + 1],
+                                    "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))",
+                                    accepted);
+        }).value;
     return inner + load_between(solver_.normal(), c0, 1.0);
 }
 

@@ -114,6 +114,38 @@ struct five_zone_solution {
     int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
 };
 
+// A quadrature's value and GSL's estimate of its error (dissimilar_zones' integrals of the blended zone).
+struct quadrature_value {
+    double value;
+    double error;
+};
+
+// The sum of `count` pieces of one integral, piece(i, accepted) -> quadrature_value, whose errors add (W's
+// breakpoints, integrate_pieces' cuts; docs/formulation.md 8(p)): each piece first at the whole limit `accepted` (the
+// values of before, bit for bit, where their errors' sum is within it), then, where the sum is not, each piece above
+// its share accepted/count again at that share (dissimilar_zones::integrate_piece takes its other route or throws), so
+// that the sum's error stays within `accepted`.
+template <class Piece>
+quadrature_value within_accepted(std::size_t count, double accepted, const Piece& piece) {
+    std::vector<quadrature_value> v(count);
+    double error = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        v[i] = piece(i, accepted);
+        error += v[i].error;
+    }
+    if (error > accepted) {
+        const double share = accepted / static_cast<double>(count);
+        for (std::size_t i = 0; i < count; ++i)
+            if (v[i].error > share) v[i] = piece(i, share);
+    }
+    quadrature_value total{0.0, 0.0};
+    for (const quadrature_value& x : v) {
+        total.value += x.value;
+        total.error += x.error;
+    }
+    return total;
+}
+
 using five_zone_start = zone_start<five_zone_solution>;  // a start of their search (zone_start.hpp)
 
 // Their stick zones' systems, for the zone search's Newton (ends_newton, zone_newton.hpp).
@@ -218,14 +250,19 @@ private:
     std::vector<double> breakpoints(double r, double start, double c0) const;  // W's pieces
     const blended_cauchy* blend_of(double start, double c0);  // W's Cauchy part on the zone, null: adaptive
     const kinks_blend* kinks_blend_of(double start, double c0);  // that of p_q^0 (8(o)), null: adaptive
-    // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta).
-    double integrate_piece(const std::function<double(double)>& integrand, double a, double b, const char* what);
+    // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta), with GSL's estimate of
+    // its error: GSL meets its tolerances, or that estimate is below `accepted` (the piece's share of its integral's
+    // limit), or the call throws numerical_error.
+    quadrature_value integrate_piece(const std::function<double(double)>& integrand, double a, double b,
+                                     const char* what, double accepted);
     // The same over [a, b], where one piece fails cut into pieces equal in the series' angle arccos(eta), as many as
     // the pressure's U-series has periods there over 16: the whole first five-zone stick zone in one GSL call meets
     // its rounding (GSL_EROUND) at n = 512 (int p Theta) and 1000 (W) (docs/formulation.md 8(p)).
-    double integrate_pieces(const std::function<double(double)>& integrand, double a, double b, const char* what);
+    // The pieces' errors add: their sum is held to `accepted`.
+    quadrature_value integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
+                                      const char* what, double accepted);
     double H(double r, double start, double c0) const;  // 0, Theta, 1
-    const u_series_table* table() const;  // pressure_table_, built at the first call; null: the series
+    const u_series_table* table() const;                // pressure_table_, built at the first call; null: the series
     double pressure(double r) const;  // p of (4.1), from pressure_b_ or its table, + p_q^0 (8(l) step 0)
 
     tangential_solver& solver_;
