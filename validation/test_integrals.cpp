@@ -2,7 +2,7 @@
 // The integrals of dissimilar rollers' blended zones and what their errors reach (session 17, review items F3, F4, T2
 // of session 16): the accepted quadrature error held on a sum of pieces, not on each piece (within_accepted,
 // docs/formulation.md 8(p) "Free rolling at f = 0.2"); full coupling's driven point answered by the ladder at n = 256,
-// its estimates against n = 512.
+// its estimates against n = 512; the pressure outside the contact.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -62,6 +62,24 @@ TEST(Integrals, PiecesShareTheAcceptedErrorOfTheirSum) {
                                      return {1.0, 0.5 * limit};
                                  }),
                  numerical_error);
+}
+
+// The pressure (4.1) is 0 outside the contact, exactly, on a rough pair whose U-series has all n terms (they fall
+// algebraically) and whose sum overflows there (review T2 of session 16: the scalar pressure sums the series before
+// it discards it): no caller gets a number from the series outside [-1, 1]; the batched pressure likewise.
+TEST(Integrals, PressureIsZeroOutsideTheContact) {
+    const roughness rough{{{1.08, 1.19}, {3.9, 4.5}}, {}};  // data/aluminium-on-steel-rough.toml's (T, A)
+    contact c(rough, 0.05, solver_options{512, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+    const normal_solution& normal = c.normal();
+    ASSERT_GT(significant_terms(normal.b), 500u);
+    EXPECT_FALSE(std::isfinite(u_series(normal.b, 1e10)));  // the series outside: no number
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<double> outside{-inf, -1e10, -1.5, -std::nextafter(1.0, 2.0), -1.0, 1.0, std::nextafter(1.0, 2.0),
+                                      1.5,  1e10,  inf};
+    for (const double r : outside) EXPECT_EQ(normal.pressure(r), 0.0) << r;
+    const std::vector<double> batched = normal.pressure(outside);
+    for (std::size_t i = 0; i < outside.size(); ++i) EXPECT_EQ(batched[i], 0.0) << outside[i];
+    EXPECT_GT(normal.pressure(std::nextafter(1.0, 0.0)), 0.0);  // inside, the series' value
 }
 
 namespace {
