@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -225,6 +226,31 @@ TEST(LevelLadder, RefusedWhenNoRungMeetsTheTolerance) {
         EXPECT_NE(what.find("raise the tolerance"), std::string::npos) << what;
         EXPECT_EQ(what.find('\n'), std::string::npos);
     }
+}
+
+TEST(LevelLadder, TheRefusalsAdviceAnswers) {
+    // The refusal names the n of its best estimate and the least tolerance that accepts it (two digits, rounded up:
+    // level_ladder.cpp, base/text.hpp rounded_up); each, given, answers the point (session 17 review L3).
+    const std::string text = "friction = 0.3\nQ = 0.15\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
+                             "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\n";
+    std::string what;
+    try {
+        solve_point(with_solver(text, "tolerance = 1e-9\n"), std::nullopt);
+        FAIL() << "answered";
+    } catch (const resolution_error& e) {
+        what = e.what();
+    }
+    const std::regex advice("n = ([0-9]+) answers with it: solver\\.n or --n \\1, or a tolerance of ([0-9.e+-]+)\\)");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(what, m, advice)) << what;
+    const std::string n = m[1], tolerance = m[2];
+    const scene_point at_tolerance = solve_point(with_solver(text, "tolerance = " + tolerance + "\n"), std::nullopt);
+    EXPECT_TRUE(at_tolerance.solution.checks.hold());
+    EXPECT_TRUE(at_tolerance.estimate.has_value());
+    EXPECT_LE(at_tolerance.solved.normal().rule.n, std::stoi(n));
+    const scene_point at_n = solve_point(with_solver(text, "n = " + n + "\n"), std::nullopt);
+    EXPECT_TRUE(at_n.solution.checks.hold());
+    EXPECT_EQ(at_n.solved.normal().rule.n, std::stoi(n));
 }
 
 TEST(LevelLadder, BadToleranceIsRefused) {

@@ -23,6 +23,11 @@ std::string significant(double x, int digits) {
     return text;
 }
 
+double rounded_up(double x, int digits) {
+    const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
+    return std::ceil(x * (1.0 + 1e-12) / unit) * unit;
+}
+
 namespace {
 
 // The length of the well-formed UTF-8 sequence at the start of `s` (RFC 3629: no overlong

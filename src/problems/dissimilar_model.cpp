@@ -38,10 +38,7 @@ std::optional<double> layers_relative_bound(const dissimilar& materials, const r
 }
 
 // `relative` rounded up to two significant digits: the tolerance a refusal names.
-std::string tolerance_up(double relative) {
-    const double unit = std::pow(10.0, std::floor(std::log10(relative)) - 1.0);
-    return significant(std::ceil(relative / unit) * unit, 2);
-}
+std::string tolerance_up(double relative) { return significant(rounded_up(relative, 2), 2); }
 
 // The advice of a refusal of such a point: the tolerance (two digits, rounded up) at which its layers
 // would be neglected, and which of the route's estimates sets it; empty where the bound is no use

@@ -106,13 +106,6 @@ std::unique_ptr<contact> level_ladder::release(int n) {
 
 namespace {
 
-// The tolerance a refusal advises for an estimate whose least accepting tolerance is x (tolerance_check::answering): x
-// rounded up to two significant digits, at least a relative 1e-12 above x so that the rounding of tol s cannot refuse.
-std::string accepting_tolerance(double x) {
-    const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
-    return significant(std::ceil(x * (1.0 + 1e-12) / unit) * unit, 2);
-}
-
 error_estimate scaled_changes(const level_changes& c, double factor) {
     error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
     e.c0_second_zone = c.c0_second_zone;
@@ -230,7 +223,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     if (best) {
         const double relative = best->check.relative;
         // The least tolerance that accepts the best rung's answer (check_estimate), where one in (0, 1) does.
-        const double accepted = best->check.answering;
+        // Rounded up before it is compared with 1: 0.995 would be advised as 1, which no tolerance may be.
+        const double accepted = best->check.answering > 0.0 ? rounded_up(best->check.answering, 2) : 0.0;
         msg +=
             ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
             (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
@@ -238,7 +232,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             (rounding_limit ? ", and at n = " + std::to_string(last_n) + " " + last_reason : std::string()) +
             "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate (n = " +
             std::to_string(best->n) + " answers with it: solver.n or --n " + std::to_string(best->n) +
-            (accepted > 0.0 && accepted < 1.0 ? ", or a tolerance of " + accepting_tolerance(accepted)
+            (accepted > 0.0 && accepted < 1.0 ? ", or a tolerance of " + significant(accepted, 2)
                                               : std::string()) +
             "), or try another method" + (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
     } else {

@@ -109,12 +109,13 @@ namespace {
 // The three-level rule at full coupling (8(q)): the estimate's multiple of the last change where the changes contract.
 constexpr double coupled_contracting_share = 3.0;
 
-// Folds quantity q's `value` into its member of e (the larger of the quantities folded into one member, as std::max: a
-// NaN already there stays) and, where it is the larger, records whose zone end the member's value is.
+// Folds quantity q's `value` into its member of e (the larger of the quantities folded into one member; a NaN, folded
+// or already there, stays: std::max(0, NaN) is 0, an estimate every tolerance accepts, session 17 review L1) and, where
+// it is the larger, records whose zone end the member's value is.
 void fold_estimate(error_estimate& e, const estimated_quantity& q, double value) {
     const double before = e.*q.out;
-    e.*q.out = std::max(before, value);
-    if (!(before < value)) return;
+    if (!(before < value || (std::isnan(value) && !std::isnan(before)))) return;
+    e.*q.out = value;
     if (q.out == &error_estimate::c0) e.c0_second_zone = of_second_zone(q);
     if (q.out == &error_estimate::start) e.start_second_zone = of_second_zone(q);
 }

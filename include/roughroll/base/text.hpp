@@ -18,6 +18,11 @@ std::string shortest(double x);
 // "-inf"): a bound's size or a plot's label, where the digits beyond those asked for would be noise.
 std::string significant(double x, int digits);
 
+// x > 0 rounded up to `digits` significant digits and at least a relative 1e-12 above x: the tolerance a refusal
+// advises for an estimate x relative (an x already of two digits would otherwise be advised as itself, and the
+// rounding of tol * scale against the estimate could refuse it again). Written with significant(., digits).
+double rounded_up(double x, int digits);
+
 // Messages are one line of valid UTF-8 (the CLI prints them as such, JSON needs UTF-8), but
 // a quoted TOML key, a string value or a path may hold a newline, another control character
 // or bytes that are not UTF-8 (a file name is any bytes): those are shown as \xNN instead.
