@@ -5,8 +5,11 @@
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <stdlib.h>
 #include <unistd.h>
@@ -33,4 +36,20 @@ inline std::string temporary_file(const std::string& stem, const std::string& te
     close(fd);
     std::ofstream(name) << text;
     return name;
+}
+
+// The scene file `path` with each `from` replaced by its `to` (the first occurrence of each, in order), in a new
+// temporary file (temporary_file with `stem`): its name, empty where a `from` is missing or no file could be made.
+inline std::string changed_scene(const std::string& path, const std::vector<std::pair<std::string, std::string>>& changes,
+                                 const std::string& stem) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    for (const auto& [from, to] : changes) {
+        const std::size_t at = s.find(from);
+        if (at == std::string::npos) return {};
+        s.replace(at, from.size(), to);
+    }
+    return temporary_file(stem, s);
 }

@@ -8,8 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,15 +30,8 @@
 namespace {
 // The pair's scene with `coupling` in place of Johnson's level, written once to a temporary file.
 std::string scene_with(const std::string& coupling) {
-    std::ifstream in(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    const std::string key = "coupling = \"johnson\"";
-    const std::size_t at = s.find(key);
-    if (at == std::string::npos) return {};
-    s.replace(at, key.size(), "coupling = \"" + coupling + "\"");
-    return temporary_file("roughroll-full-every-f", s);
+    return changed_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml",
+                         {{"coupling = \"johnson\"", "coupling = \"" + coupling + "\""}}, "roughroll-full-every-f");
 }
 
 struct answered {

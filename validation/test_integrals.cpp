@@ -5,9 +5,7 @@
 // its estimates against n = 512; the pressure outside the contact.
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -84,15 +82,8 @@ TEST(Integrals, PressureIsZeroOutsideTheContact) {
 namespace {
 // Bentall and Johnson's pair at full coupling (data/aluminium-on-steel.toml, coupling = "full"), in a temporary file.
 std::string full_scene() {
-    std::ifstream in(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    const std::string key = "coupling = \"johnson\"";
-    const std::size_t at = s.find(key);
-    if (at == std::string::npos) return {};
-    s.replace(at, key.size(), "coupling = \"full\"");
-    return temporary_file("roughroll-integrals", s);
+    return changed_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml",
+                         {{"coupling = \"johnson\"", "coupling = \"full\""}}, "roughroll-integrals");
 }
 
 nlohmann::json point_of(const std::string& scene, const std::string& options) {

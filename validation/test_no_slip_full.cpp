@@ -30,16 +30,7 @@
 namespace {
 // The pair's scene with each key = value of `changes` replaced (the key's whole line), written to a temporary file.
 std::string scene_with(const std::vector<std::pair<std::string, std::string>>& changes) {
-    std::ifstream in(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    for (const auto& [from, to] : changes) {
-        const std::size_t at = s.find(from);
-        if (at == std::string::npos) return {};
-        s.replace(at, from.size(), to);
-    }
-    return temporary_file("roughroll-no-slip-full", s);
+    return changed_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml", changes, "roughroll-no-slip-full");
 }
 
 struct answered {
