@@ -447,6 +447,27 @@ TEST(RefusedRows, RoughPairRowWithoutItsZonesIsRefusedNotAborted) {
     EXPECT_TRUE(margins_as_computed(curve.rows[1].refused)) << curve.rows[1].refused;
 }
 
+// A point at a given n whose refusal names nothing to change (unadvised_refusal, base/error.hpp: no three zones at this
+// n or a level of its estimate) says what to change, as the ladder does where it climbs: the rough pair braked at
+// f = 0.5, Q/f = -0.75, n = 128 (session 17: the bare "no three zones ... carry Q"; the ladder answers the load).
+TEST(RefusedRows, AGivenNsUnadvisedRefusalSaysWhatToChange) {
+    scene s = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel-rough.toml");
+    s.friction = 0.5;
+    override_solver(s, 128, std::nullopt);
+    try {
+        solve_point(s, -0.375);
+        ADD_FAILURE() << "answered";
+    } catch (const unadvised_refusal& e) {
+        ADD_FAILURE() << "no advice: " << e.what();
+    } catch (const resolution_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("no three zones"), std::string::npos) << what;
+        EXPECT_NE(what.find("at the given n = 128: a larger n"), std::string::npos) << what;
+        EXPECT_NE(what.find("leave n out"), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+}
+
 // Every refusal of failed checks shows the margins as margins_text writes them (issue 24, review): three significant
 // digits of a computed value (before, the five zones' and full coupling's refusals printed all 17, "stick
 // 7.619638045519572e-09"). Aluminium on steel at n = 32 (data/aluminium-on-steel.toml): free rolling at f = 0.3, whose

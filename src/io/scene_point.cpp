@@ -5,6 +5,8 @@
 #include <map>
 #include <utility>
 
+#include "roughroll/base/error.hpp"
+#include "roughroll/numerics/gauss_chebyshev.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/creep_curve.hpp"
@@ -179,10 +181,19 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
     }
     std::optional<contact_width> width;
     contact c = settled_contact(s, width, Q, checkpoint);
-    const tangential_solution solution = c.point(Q);
-    const double seconds = since_start();
-    std::optional<error_estimate> estimate = c.estimate(solution);
-    return {std::move(s), width, std::move(c), solution, seconds, estimate};
+    try {
+        const tangential_solution solution = c.point(Q);
+        const double seconds = since_start();
+        std::optional<error_estimate> estimate = c.estimate(solution);
+        return {std::move(s), width, std::move(c), solution, seconds, estimate};
+    } catch (const unadvised_refusal& e) {
+        // Its line names no change (base/error.hpp); with n given, what the user can change is n, as the ladder
+        // advises where it climbs (no three zones of dissimilar rollers at this n or a level of its estimate, 8(g)).
+        throw resolution_error(std::string(e.what()) + "; at the given n = " + std::to_string(s.solver.n) +
+                               ": a larger n (solver.n, --n; at most " + std::to_string(max_nodes) +
+                               ") may find its zones, or leave n out and the ladder of levels tries n up to " +
+                               std::to_string(max_nodes) + "; or try another method or zone search");
+    }
 }
 
 scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep,
