@@ -53,5 +53,35 @@ TEST(ZoneSearch, NoStartsIsNoZoneOfTheStructure) {
     }
 }
 
+TEST(ZoneSearch, AScanWithoutClusteredStartsDoesNotEnterThePassWhereNoStartCarries) {
+    // Starts up to r* = 0.5 and every empty zone carrying less than |Q| (no zone end exists): the scan has starts and
+    // no trial. The empty-scan entry of the near-edge pass is the clustered scan's alone (the blended zones of 8(g));
+    // without `clustered` the search ends at the scan: no start nearer the edge than both scans' first starts
+    // (-1 + 1.5/32 plain, -cos(pi/32) = -0.99518 clustered) is asked for. Between e51a784 and ad359a5 the entry
+    // dropped `clustered` and this scan went on towards the edge.
+    int near_edge = 0;
+    const auto count = [&near_edge](double s) {
+        if (s < -0.996) ++near_edge;
+    };
+    stick_zone_operator op = without_starts();
+    op.gross_sliding = [] { return zone_solution(f, 0.5, 0.5, 0.0, f); };
+    op.empty_load = [count](double s) {
+        count(s);
+        return 0.5 * Q;
+    };
+    op.solve = [count](double s, double c) {
+        count(s);
+        return zone_solution(f, s, c, 0.0, 0.5 * f * (1.0 - (c - s)), {s + 0.5});
+    };
+    EXPECT_FALSE(zone_solver(op).find(Q));
+    EXPECT_EQ(near_edge, 0);
+    // The clustered scan does enter it: starts below its first are asked for.
+    op.method.clustered = true;
+    op.method.scan_to_least_point = false;
+    near_edge = 0;
+    EXPECT_FALSE(zone_solver(op).find(Q));
+    EXPECT_GT(near_edge, 0);
+}
+
 }  // namespace
 }  // namespace roughroll
