@@ -278,11 +278,7 @@ double dissimilar_zones::completed_W(double r, const std::optional<double>& cauc
             const double z = eta - r;
             return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
         };
-        const double total =
-            within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t k, double accepted) {
-                return integrate_piece(integrand, points[k], points[k + 1], w_context, accepted);
-            }).value;
-        w += term.T * total;
+        w += term.T * integrate_over(points, w_context, false, integrand);
     }
     return w;
 }
@@ -307,13 +303,6 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     const bool inside = r > start && r < 1.0;
     const double gr = inside ? g(r) : 0.0;
     const std::vector<double> points = breakpoints(r, start, c0);
-    const auto integrate = [&](const std::function<double(double)>& integrand) {
-        return within_accepted(points.size() - 1, quadrature_accepted,
-                               [&](std::size_t i, double accepted) {
-                                   return integrate_pieces(integrand, points[i], points[i + 1], w_context, accepted);
-                               })
-            .value;
-    };
     // r within `breakpoint_apart` of the trailing edge (not cut there; up to nextafter(1, 0)): subtracting the
     // constant g(r) leaves (g(eta) - g(r))/(eta - r) ~ -1/(sqrt(1 - eta) + sqrt(1 - r)), a spike of
     // height 1/sqrt(1 - r) and width 1 - r at eta = 1 that no quadrature resolves (GSL: round-off).
@@ -337,19 +326,17 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
         const double kr = pressure_kinks_ ? pressure_kinks_->factor(r) : 0.0;  // p_q^0/sqrt(1 - r^2) (8(o))
         const double hr = (u_series(pressure_b_, r) + kr) * std::sqrt(1.0 + r) * H(r, start, c0);  // h(r)
         const double d = std::sqrt(1.0 - r), U = std::sqrt(1.0 - a);
-        const double w = within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t i, double accepted) {
-                             const bool last = i + 2 == points.size();
-                             return integrate_piece(
-                                 [&](double eta) {
-                                     if (eta == r) return 0.0;  // a bounded integrand's single point
-                                     const double ge = edge_pressure(eta) * H(eta, start, c0);
-                                     return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
-                                 },
-                                 points[i], points[i + 1], w_context, accepted);
-                         }).value;
+        const auto subtracted = [&](bool last) -> std::function<double(double)> {
+            return [&, last](double eta) {
+                if (eta == r) return 0.0;  // a bounded integrand's single point
+                const double ge = edge_pressure(eta) * H(eta, start, c0);
+                return (last ? ge - std::sqrt(1.0 - eta) * hr : ge) / (eta - r);
+            };
+        };
+        const double w = integrate_over(points, w_context, false, subtracted(false), subtracted(true));
         return M_1_PI * (w + hr * (-2.0 * U + d * std::log((U + d) / (U - d))));
     }
-    double w = M_1_PI * integrate([&](double eta) { return (g(eta) - gr) / (eta - r); });
+    double w = M_1_PI * integrate_over(points, w_context, true, [&](double eta) { return (g(eta) - gr) / (eta - r); });
     if (gr != 0.0) w += M_1_PI * gr * std::log((1.0 - r) / (r - start));
     return w;
 }
@@ -418,19 +405,25 @@ quadrature_value dissimilar_zones::integrate_pieces(const std::function<double(d
     });
 }
 
+double dissimilar_zones::integrate_over(const std::vector<double>& points, const char* what, bool cut,
+                                        const std::function<double(double)>& integrand,
+                                        const std::function<double(double)>& last) {
+    return within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t i, double accepted) {
+               const std::function<double(double)>& piece = last && i + 2 == points.size() ? last : integrand;
+               return cut ? integrate_pieces(piece, points[i], points[i + 1], what, accepted)
+                          : integrate_piece(piece, points[i], points[i + 1], what, accepted);
+           }).value;
+}
+
 double dissimilar_zones::load_under_H(double start, double c0) {
     // int p H = int_s^c p Theta (integrate_piece) + int_c^1 p (closed form, load_between).
     const std::function<double(double)> pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
     std::vector<double> points{start, c0};
     if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, 1e-9);  // p's one-sided roots (8(o))
     std::sort(points.begin(), points.end());
-    const double inner =
-        within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t i, double accepted) {
-            return integrate_pieces(pressure_theta, points[i], points[i + 1],
-                                    "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))",
-                                    accepted);
-        }).value;
-    return inner + load_between(solver_.normal(), c0, 1.0);
+    return integrate_over(points, "dissimilar rollers: the load of the blended stick zone (docs/formulation.md 8(g))",
+                          true, pressure_theta) +
+           load_between(solver_.normal(), c0, 1.0);
 }
 
 tangential_solution dissimilar_zones::blended(double start, double c0, double b) {

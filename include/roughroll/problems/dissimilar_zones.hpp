@@ -263,6 +263,11 @@ private:
     // The pieces' errors add: their sum is held to `accepted`.
     quadrature_value integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
                                       const char* what, double accepted);
+    // The sum over the pieces between `points` (sorted) of integrate_pieces (`cut`) or integrate_piece, their errors
+    // held to quadrature_accepted (within_accepted); `last` (where given) in place of `integrand` on the last piece.
+    double integrate_over(const std::vector<double>& points, const char* what, bool cut,
+                          const std::function<double(double)>& integrand,
+                          const std::function<double(double)>& last = {});
     double H(double r, double start, double c0) const;  // 0, Theta, 1
     const u_series_table* table() const;                // pressure_table_, built at the first call; null: the series
     double pressure(double r) const;  // p of (4.1), from pressure_b_ or its table, + p_q^0 (8(l) step 0)
