@@ -429,10 +429,7 @@ double dissimilar_zones::load_under_H(double start, double c0) {
 tangential_solution dissimilar_zones::blended(double start, double c0, double b) {
     // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f G - 2 f W on the
     // stick zone, i.e. the right side of solve_on_zone (xi' + f G + b p) plus -2 f (G + W).
-    const double rho = 0.5 * (c0 - start);
-    const gauss_chebyshev& rule = solver_.normal().rule;
-    std::vector<double> r(rule.collocation.size());
-    for (std::size_t m = 0; m < r.size(); ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;
+    const std::vector<double> r = solver_.collocation_points(start, c0);
     const std::vector<double> g = solver_.G(r), w = W(r, start, c0);
     std::vector<double> extra(r.size());
     for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + w[m]);

@@ -38,13 +38,8 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     // Solved in the frame beta_D > 0 with the forcing beta (|beta_D| but on a continuation in
     // beta_D/f); for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v with the opposite
     // sign and the same ends.
-    const gauss_chebyshev& rule = solver_.normal().rule;
-    const std::size_t m_count = rule.collocation.size();
-    std::vector<double> r1(m_count), r2(m_count);
-    for (std::size_t m = 0; m < m_count; ++m) {
-        r1[m] = 0.5 * (c1 - s1) * (rule.collocation[m] + 1.0) + s1;
-        r2[m] = 0.5 * (c2 - s2) * (rule.collocation[m] + 1.0) + s2;
-    }
+    const std::vector<double> r1 = solver_.collocation_points(s1, c1), r2 = solver_.collocation_points(s2, c2);
+    const std::size_t m_count = r1.size();
     // solve_on_zone's right side is xi + b p + f G; the blend's is xi + b p - f G - 2 f W1 + 2 f W2.
     const auto base = [&](const std::vector<double>& r) {
         const std::vector<double> g = solver_.G(r), w1 = W(r, s1, c1), w2 = W(r, s2, c2);

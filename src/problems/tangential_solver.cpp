@@ -65,6 +65,13 @@ std::vector<double> tangential_solver::G(const std::vector<double>& r) {
 
 double tangential_solver::G(double r) { return G(std::vector<double>{r}).front(); }
 
+std::vector<double> tangential_solver::collocation_points(double start, double c0) const {
+    const double rho = 0.5 * (c0 - start);
+    std::vector<double> r(normal_.rule.collocation.size());
+    for (std::size_t m = 0; m < r.size(); ++m) r[m] = rho * (normal_.rule.collocation[m] + 1.0) + start;  // E4
+    return r;
+}
+
 tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
                                                      const std::vector<double>* extra, bool near) {
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
@@ -81,8 +88,7 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
         k1_operator_->add_to(a, k1_.stretched(rho));  // E6
     }
     gsl_vector* rhs = system_.rhs();
-    std::vector<double> r(n_ + 1);
-    for (int m = 0; m <= n_; ++m) r[m] = rho * (rule.collocation[m] + 1.0) + start;  // E4
+    const std::vector<double> r = collocation_points(start, c0);
     const std::vector<double> g = G(r);
     for (int m = 0; m <= n_; ++m) gsl_vector_set(rhs, m, f_ * g[m]);  // E5
     if (forcing != 0.0) {  // Dundurs' term of (D2), docs/formulation.md 8(e): xi + sigma beta_D p + f G

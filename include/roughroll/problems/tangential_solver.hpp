@@ -48,6 +48,8 @@ public:
     tangential_solution solve_on_zone(double start, double c0, double forcing = 0.0,
                                       const std::vector<double>* extra = nullptr, bool near = false);
 
+    // The n + 1 collocation points r_m = start + rho (s_m + 1) of the zone [start, c0] (E4).
+    std::vector<double> collocation_points(double start, double c0) const;
     double G(double r);                                            // (3.25)
     std::vector<double> G(const std::vector<double>& r) override;  // at points of [-1, 1], in any order
 
