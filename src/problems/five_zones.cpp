@@ -9,8 +9,6 @@
 #include <cmath>
 #include <limits>
 
-#include <gsl/gsl_math.h>
-
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/zone_layout.hpp"
