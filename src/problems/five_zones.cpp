@@ -37,7 +37,6 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     // beta_D/f); for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v with the opposite
     // sign and the same ends.
     const std::vector<double> r1 = solver_.collocation_points(s1, c1), r2 = solver_.collocation_points(s2, c2);
-    const std::size_t m_count = r1.size();
     // solve_on_zone's right side is xi + b p + f G; the blend's is xi + b p - f G - 2 f W1 + 2 f W2.
     const auto base = [&](const std::vector<double>& r) {
         const std::vector<double> g = solver_.G(r), w1 = W(r, s1, c1), w2 = W(r, s2, c2);
@@ -46,14 +45,15 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
         return e;
     };
     const std::vector<double> base1 = base(r1), base2 = base(r2);
-    // -L1[q_k] at points outside zone k: v_k - (xi_k + f G), v_k the zone's own slip velocity without its forcing
-    // b p (which v_k would add and this take away again: at full coupling a series of n terms at every point).
-    const auto minus_operator = [&](tangential_solution t, const std::vector<double>& r) {
+    // The other zone's system's right side: its base plus -L1[q_k] at its points, -L1[q_k] = v_k - (xi_k + f G) with
+    // v_k zone k's own slip velocity without its forcing b p (which v_k would add and this take away again: at full
+    // coupling a series of n terms at every point).
+    const auto coupled = [&](tangential_solution t, const std::vector<double>& r, const std::vector<double>& base) {
         t.forcing = 0.0;
         const std::vector<double> v = solver_.slip_velocity(t, r);
         const std::vector<double> g = solver_.G(r);
         std::vector<double> out(r.size());
-        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + f_ * g[m]);
+        for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + f_ * g[m]) + base[m];
         return out;
     };
     five_zone_solution s{};
@@ -64,11 +64,9 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     s.zone2 = solver_.solve_on_zone(s2, c2, beta, &base2);
     double previous = s.zone1.xi + s.zone2.xi;
     for (s.sweeps = 1;; ++s.sweeps) {
-        std::vector<double> e1 = minus_operator(s.zone2, r1);
-        for (std::size_t m = 0; m < m_count; ++m) e1[m] += base1[m];
+        const std::vector<double> e1 = coupled(s.zone2, r1, base1);
         s.zone1 = solver_.solve_on_zone(s1, c1, beta, &e1);
-        std::vector<double> e2 = minus_operator(s.zone1, r2);
-        for (std::size_t m = 0; m < m_count; ++m) e2[m] += base2[m];
+        const std::vector<double> e2 = coupled(s.zone1, r2, base2);
         s.zone2 = solver_.solve_on_zone(s2, c2, beta, &e2);
         const double now = s.zone1.xi + s.zone2.xi;
         if (std::fabs(now - previous) <= sweep_tolerance * f_ + sweep_rounding * std::fabs(now)) break;
