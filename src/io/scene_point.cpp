@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/numerics/gauss_chebyshev.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/contact_internals.hpp"
 #include "roughroll/problems/creep_curve.hpp"
@@ -186,13 +185,8 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
         const double seconds = since_start();
         std::optional<error_estimate> estimate = c.estimate(solution);
         return {std::move(s), width, std::move(c), solution, seconds, estimate};
-    } catch (const unadvised_refusal& e) {
-        // Its line names no change (base/error.hpp); with n given, what the user can change is n, as the ladder
-        // advises where it climbs (no three zones of dissimilar rollers at this n or a level of its estimate, 8(g)).
-        throw resolution_error(std::string(e.what()) + "; at the given n = " + std::to_string(s.solver.n) +
-                               ": a larger n (solver.n, --n; at most " + std::to_string(max_nodes) +
-                               ") may find its zones, or leave n out and the ladder of levels tries n up to " +
-                               std::to_string(max_nodes) + "; or try another method or zone search");
+    } catch (const unadvised_refusal& e) {  // its line names no change (base/error.hpp): with n given, n
+        throw advised_at_given_n(e, s.solver.n);
     }
 }
 
@@ -218,7 +212,8 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
             const std::optional<contact_width> width = settle_width(s);
             contact c(s.surfaces, s.friction, s.solver, s.materials);
             c.set_checkpoint(checkpoint);
-            rows = sweep ? swept_curve(c, points, before_row) : creep_curve(c, Qs, before_row);
+            rows = sweep ? swept_curve(c, points, before_row, {}, s.solver.n)
+                         : creep_curve(c, Qs, before_row, {}, s.solver.n);
             if (width) widths.assign(rows.size(), *width);
             for (const curve_point& row : rows) nodes.push_back(row.is_refused() ? 0 : s.solver.nodes());
         }
@@ -252,13 +247,17 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
             const contact_width w = *settle_width(at, &cache, Q, checkpoint);
             contact c(at.surfaces, at.friction, at.solver, at.materials, &cache);
             c.set_checkpoint(checkpoint);
-            std::vector<curve_point> row = creep_curve(c, {Q});
+            std::vector<curve_point> row = creep_curve(c, {Q}, {}, {}, at.solver.n);
             out.nodes.push_back(row.front().is_refused() ? 0 : at.solver.nodes());
             out.rows.push_back(std::move(row.front()));
             out.widths.push_back(w);
             out.settled = std::move(at);
         } catch (const resolution_error& e) {
-            out.rows.push_back(refused_load(Q, s.friction, e));
+            // The width's search at a given n may meet the same refusal as the row (no three zones at this n): advised
+            // as solve_point's (the ladder's rows reach here advised).
+            const unadvised_refusal* unadvised = climbs ? nullptr : dynamic_cast<const unadvised_refusal*>(&e);
+            out.rows.push_back(unadvised ? refused_load(Q, s.friction, advised_at_given_n(*unadvised, s.solver.n))
+                                         : refused_load(Q, s.friction, e));
             out.widths.push_back(johnson_width);
             out.nodes.push_back(0);
         }

@@ -2,8 +2,10 @@
 #include "roughroll/problems/creep_curve.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/gauss_chebyshev.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
@@ -25,6 +27,15 @@ curve_point refused_row(double Q, double c0, double f, const std::string& at, co
     return {std::move(s), smooth, std::nullopt, "curve point at " + at + ": " + one_line(why.what())};
 }
 }  // namespace
+
+resolution_error advised_at_given_n(const unadvised_refusal& refusal, int n) {
+    // With n given, what the user can change is n, as the ladder advises where it climbs (no three zones of dissimilar
+    // rollers at this n or a level of its estimate, docs/formulation.md 8(g), 8(j)).
+    return resolution_error(std::string(refusal.what()) + "; at the given n = " + std::to_string(n) +
+                            ": a larger n (solver.n, --n; at most " + std::to_string(max_nodes) +
+                            ") may find its zones, or leave n out and the ladder of levels tries n up to " +
+                            std::to_string(max_nodes) + "; or try another method or zone search");
+}
 
 curve_point refused_load(double Q, double f, const resolution_error& why) {
     return refused_row(Q, std::nan(""), f, "Q = " + shortest(Q) + " (Q/f = " + shortest(Q / f) + ")", why);
@@ -56,7 +67,8 @@ std::vector<double> curve_loads(int points, double f, double beta_d) {
 namespace {
 // The rows of creep_curve; `continued`: each row after an answered one started from it (contact::continued_point).
 std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, bool continued,
-                                 const std::function<void()>& before_row, const refusal_before_solve& refused_at_once) {
+                                 const std::function<void()>& before_row, const refusal_before_solve& refused_at_once,
+                                 int given_n) {
     std::vector<curve_point> rows;
     rows.reserve(loads.size());
     const tangential_solution* previous = nullptr;
@@ -71,7 +83,11 @@ std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, b
             tangential_solution s = continued && previous ? c.continued_point(Q, *previous) : c.point(Q);
             const auto e = c.estimate(s);
             rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
-            previous = &rows.back().solution;  // rows reserved: the address stays
+            previous = &rows.back().solution;   // rows reserved: the address stays
+        } catch (const unadvised_refusal& e) {  // its line names no change: at a given n, what to change is n
+            rows.push_back(given_n > 0 ? refused_load(Q, c.friction(), advised_at_given_n(e, given_n))
+                                       : refused_load(Q, c.friction(), e));
+            previous = nullptr;
         } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
             rows.push_back(refused_load(Q, c.friction(), e));
             previous = nullptr;  // the next row searches alone
@@ -82,14 +98,14 @@ std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, b
 }  // namespace
 
 std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row,
-                                     const refusal_before_solve& refused_at_once) {
+                                     const refusal_before_solve& refused_at_once, int given_n) {
     check_curve_points(points);
     check_sweepable(c.materials());
     // Dissimilar rollers have no single stick end to sweep (8(g), 8(j)): their rows at curve_loads, each started
     // from the previous row's zones (a continuation in the load, 8(j) 10).
     if (c.materials().beta_d != 0.0)
-        return continued_curve(c, curve_loads(points, c.friction(), c.materials().beta_d), before_row,
-                               refused_at_once);
+        return continued_curve(c, curve_loads(points, c.friction(), c.materials().beta_d), before_row, refused_at_once,
+                               given_n);
     std::vector<curve_point> rows;
     rows.reserve(points);
     for (int i = 0; i < points; ++i) {
@@ -110,14 +126,14 @@ std::vector<curve_point> swept_curve(contact& c, int points, const std::function
 
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
                                      const std::function<void()>& before_row,
-                                     const refusal_before_solve& refused_at_once) {
-    return rows_at(c, loads, false, before_row, refused_at_once);
+                                     const refusal_before_solve& refused_at_once, int given_n) {
+    return rows_at(c, loads, false, before_row, refused_at_once, given_n);
 }
 
 std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
                                          const std::function<void()>& before_row,
-                                         const refusal_before_solve& refused_at_once) {
-    return rows_at(c, loads, true, before_row, refused_at_once);
+                                         const refusal_before_solve& refused_at_once, int given_n) {
+    return rows_at(c, loads, true, before_row, refused_at_once, given_n);
 }
 
 }  // namespace roughroll

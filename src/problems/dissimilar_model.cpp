@@ -474,7 +474,7 @@ protected:
         if (!(Q == 0.0 && johnson_layers_)) return {};
         if (no_slip_relative_ && *no_slip_relative_ < 0.5)
             return "a tolerance of " + tolerance_up(*no_slip_relative_) +
-                   " or more (solver.tolerance, --tolerance) answers this free rolling with its edge "
+                   " or more (solver.tolerance, --tolerance; n not given) answers this free rolling with its edge "
                    "layers neglected (the no-slip limit at full coupling, docs/formulation.md 8(t)); coupling = "
                    "\"johnson\" answers it with the pressure uncoupled (8(n))";
         if (*johnson_layers_ <= options_.tolerance.value_or(default_tolerance))

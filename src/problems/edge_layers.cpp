@@ -208,10 +208,17 @@ tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit,
     tangential_solution s = zone_solution(f, -1.0, 1.0, limit.xi, 0.0);
     s.forcing = limit.beta_d;
     s.layout = layers_neglected_layout();
+    // Every check where the route models the contact, [-1 + t, 1 - t] (8(t), "Where the route checks"): (3.3) holds
+    // there by construction (|p1| < f p inside the crossing t_c < t), and so does p >= 0 for the limit (its tension
+    // lies within t_inf < t_c of the edges, atan f < pi/2). Inside the layers the model slips and the limit is not its
+    // solution: the limit's tension there is part of dF = F - F_ns, |dF| <= (1 + kappa) c sqrt(2 t), which the
+    // estimates of xi, P_H/P2 and the peak bound through J0 and S (8(t), "The layers' bound at full coupling"). Checked
+    // over (-1, 1), p >= 0 refused a route its own advice had named (beta_D = 0.498, f = 10: t_inf = 2.4e-4 on the
+    // check grid's outer points).
     const double t = std::min(layers.thickness, 0.5);
     const std::vector<zone> checked{{-1.0 + t, 1.0 - t, true, 0}};
     s.checks = check_zones(
-        checked, {f, least_pressure(pressure), rounding, false, nullptr, nullptr},
+        checked, {f, least_pressure(pressure, -1.0 + t, 1.0 - t), rounding, false, nullptr, nullptr},
         [&](double r) { return limit.pressure(r); }, [&](double r) { return limit.traction(r); },
         [](double) { return 0.0; });
     return s;

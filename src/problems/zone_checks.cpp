@@ -32,9 +32,11 @@ void lower(double& margin, double v) {
 }
 }  // namespace
 
-double least_pressure(const normal_solution& normal) {
+double least_pressure(const normal_solution& normal) { return least_pressure(normal, -1.0, 1.0); }
+
+double least_pressure(const normal_solution& normal, double from, double to) {
     double margin = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < check_points; ++i) lower(margin, normal.pressure(grid_point(-1.0, 1.0, i)));
+    for (int i = 0; i < check_points; ++i) lower(margin, normal.pressure(grid_point(from, to, i)));
     return margin;
 }
 

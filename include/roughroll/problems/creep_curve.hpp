@@ -45,17 +45,24 @@ std::vector<double> curve_loads(int points, double f, double beta_d);
 // rung, problems/level_ladder.hpp): one line; empty where the row is to be solved.
 using refusal_before_solve = std::function<std::optional<std::string>(double Q)>;
 
+// A refusal whose line names no change (unadvised_refusal, base/error.hpp: no three zones at this n) at an n the user
+// gave: its line with what the user can change there (a larger n, n left out for the ladder, another method or zone
+// search), as the ladder of levels advises where it climbs. One text for a point (io/scene_point) and a curve's rows.
+resolution_error advised_at_given_n(const unadvised_refusal& refusal, int n);
+
 // `before_row`, when set, is called before each row: a caller's hook between rows (the Python
 // module checks for Ctrl-C there); what it throws ends the curve. `refused_at_once`, when set, is
 // asked after `before_row`: a row it gives a line for is refused with that line, no level solved.
+// `given_n`: the n the user gave the contact, whose rows refused by an unadvised_refusal get advised_at_given_n's
+// line; 0 for a ladder's rung (the ladder solves such a row again and advises where no rung answers it).
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
                                      const std::function<void()>& before_row = {},
-                                     const refusal_before_solve& refused_at_once = {});
+                                     const refusal_before_solve& refused_at_once = {}, int given_n = 0);
 // creep_curve with each row after an answered one started from that row's zones (contact::continued_point,
 // a continuation in the load: dissimilar rollers' swept curve); the same points to Newton's resolution.
 std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
                                          const std::function<void()>& before_row = {},
-                                         const refusal_before_solve& refused_at_once = {});
+                                         const refusal_before_solve& refused_at_once = {}, int given_n = 0);
 // The row of creep_curve for a load Q refused by `why`.
 curve_point refused_load(double Q, double f, const resolution_error& why);
 
@@ -64,8 +71,9 @@ curve_point refused_load(double Q, double f, const resolution_error& why);
 // rollers (beta_D != 0, Johnson's level; check_sweepable refuses coupling "full") no c0 parametrises
 // the zones (8(g)): the rows of creep_curve at curve_loads(points, f, beta_D), each continued from the
 // previous answered row (contact::continued_point), the same points to Newton's resolution.
-// `refused_at_once`: as creep_curve's, for the rows of dissimilar rollers (a load each; never asked of a row swept in c0).
+// `refused_at_once`, `given_n`: as creep_curve's, for the rows of dissimilar rollers (a load each; never asked of a row
+// swept in c0).
 std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {},
-                                     const refusal_before_solve& refused_at_once = {});
+                                     const refusal_before_solve& refused_at_once = {}, int given_n = 0);
 
 }  // namespace roughroll

@@ -97,7 +97,9 @@ layers_peak coupled_peak_bound(double epsilon, double c, double t, double j, dou
 
 // The point of that route at friction f: stick on [-1, 1] (the layers' route, "no-slip"), xi the limit's, Q = 0, its
 // checks (3.3)-(3.4) on [-1 + t, 1 - t] with the limit's p and p1 (|p1| < f p there by construction), the pressure
-// margin that of `pressure` (the reported normal solution), `rounding` the margins' floor.
+// margin that of `pressure` (the reported normal solution) on the same [-1 + t, 1 - t] (the limit's tension within
+// t_inf of an edge lies in the neglected layers, covered by the estimates: 8(t), "Where the route checks"), `rounding`
+// the margins' floor.
 tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit, double f, const normal_solution& pressure,
                                           double rounding);
 // Its traction at r: the limit's p1 held to [-f p, f p], p = `pressure` the reported pressure at r (the limit's at the

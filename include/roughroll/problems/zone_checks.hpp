@@ -23,7 +23,8 @@ namespace roughroll {
 // What a solver supplies to check its zones.
 struct zone_check_terms {
     double f;
-    double pressure_margin;  // min p on (-1, 1) (least_pressure: independent of the zones)
+    // min p on (-1, 1) (least_pressure: independent of the zones); the no-slip route's on [-1 + t, 1 - t]
+    double pressure_margin;
     double rounding;         // the margins' rounding floor, reported with them
     bool within_rounding;    // the floor applies (else the margins are held to 0)
     // f p - |p1| at points of one stick zone.
@@ -40,6 +41,9 @@ traction_checks check_zones(const std::vector<zone>& zones, zone_check_terms ter
 
 // min p of (4.1) on the check grid of (-1, 1).
 double least_pressure(const normal_solution& normal);
+// The same on the check grid of (from, to): a route that models the pressure only there (the no-slip limit at full
+// coupling, its edge layers neglected: docs/formulation.md 8(t), "Where the route checks").
+double least_pressure(const normal_solution& normal, double from, double to);
 
 // The margins (3.3)-(3.4) as a refusal shows them, "stick -0.00255, slip 0.331" (computed values: three significant
 // digits). A margin over no zone of its kind (+infinity: the minimum over an empty set) reads "no slip zone", one
