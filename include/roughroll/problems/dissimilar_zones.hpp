@@ -28,9 +28,9 @@
 //   - five zones (8(j)): five_zone_solution below, by five_zones (five_zones.cpp), not through solve().
 // The two three-zone structures are values of the one zone search's operator (zone_operator below,
 // stick_zone_operator.hpp), found by zone_solver; solve tries them in turn (the coarser level's first).
-// Not built in solve() (refused with resolution_error naming what is missing, never a number): free
-// rolling Q = 0 and every load whose answer is not one of the three-zone structures above (five
-// zones), and coupling "full".
+// Not solve()'s (refused with resolution_error naming what is missing, never a number): free rolling Q = 0 and
+// every load whose answer is not one of the three-zone structures above (five zones: five_zones), and coupling
+// "full" (full_coupling.hpp).
 #pragma once
 
 #include <functional>
@@ -56,10 +56,9 @@
 
 namespace roughroll {
 
-// What a contact with these materials and options can solve: beta_D finite with |beta_D| < 3/4;
-// for beta_D != 0, not method 'one-parameter' (its edge behaviour, 8(g), is not derived), not
-// zones 'single' (the paper's zone is never the answer, 8(g)), and not coupling 'full' (not
-// built). Each refusal is one input_error line.
+// What a contact with these materials and options can solve: beta_D finite with |beta_D| < 3/4; for beta_D != 0,
+// not method 'one-parameter' at coupling 'full' (the limit is derived at Johnson's level only, 8(s)), and not zones
+// 'single' with the other methods (the paper's zone is never their answer, 8(g)). Each refusal is one input_error line.
 void check_dissimilar(const dissimilar& materials, const solver_options& options);
 
 // The complete-slip limit f -> 0 at fixed Q/f (docs/formulation.md 8(f)): v = xi + beta_D p, the
