@@ -15,21 +15,10 @@
 #include "roughroll/numerics/damped_newton.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 #include "roughroll/problems/zone_newton.hpp"
+#include "newton_steps.hpp"
 #include "rounding_jitter.hpp"
 
 using namespace roughroll;
-
-namespace {
-newton_problem with_steps(newton_problem p) {
-    p.difference_step = [](const std::vector<double>&, std::size_t) { return -1e-7; };
-    p.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
-        double sum = 0.0;
-        for (double d : dx) sum += std::fabs(d);
-        return sum;
-    };
-    return p;
-}
-}  // namespace
 
 TEST(DampedNewton, ThreeUnknownsAgainstTheClosedForm) {
     // x^2 + y + z = 3, x + y^2 - z = 1, exp(z - 1) - x y = 0 has the root (1, 1, 1).

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/numerics/damped_newton.hpp"
+#include "newton_steps.hpp"
 
 using namespace roughroll;
 
@@ -26,13 +27,7 @@ newton_problem moving(double t, int& calls) {
                                    a + b * b - c - 1.0 + 0.2 * t * (b - 1.0) * c,
                                    std::exp(c - 1.0) - a * b - 0.1 * t * (c - 1.0)};
     };
-    p.difference_step = [](const std::vector<double>&, std::size_t) { return -1e-7; };
-    p.step_size = [](const std::vector<double>&, const std::vector<double>& dx) {
-        double sum = 0.0;
-        for (double d : dx) sum += std::fabs(d);
-        return sum;
-    };
-    return p;
+    return with_steps(p);
 }
 
 constexpr double tolerance = 1e-11;

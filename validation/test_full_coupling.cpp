@@ -16,6 +16,8 @@
 //   - the alternation started from the coarser level's converged coupling reaches the fixed point that the
 //     one from Johnson's point reaches, to within the stopping rule, in fewer steps (8(e), "The start from
 //     the coarser level");
+//   - the alternation's stop from the contraction reaches the plain rule's fixed point in fewer steps, and the
+//     plateau's rule is decided once per alternation (8(e), session 18);
 //   - free rolling at f = 0.5 .. 0.8, whose edge layers (the full level's crossing t_c) are too thin for n = 1000, is
 //     refused by the ladder before any level is solved (it climbed every rung for minutes before), naming
 //     coupling = "johnson"; f = 0.3 still climbs (8(n) "Beyond every n").
@@ -37,6 +39,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/full_coupling.hpp"
+#include "roughroll/problems/pressure_kinks.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_solver.hpp"
@@ -549,4 +552,73 @@ TEST(FullCouplingPhysical, CurveRowsHaveTheirOwnWidths) {
         EXPECT_EQ(c.widths[i].a, settle_width(s, nullptr, loads[i])->a) << i;
     }
     EXPECT_GT(std::fabs(c.widths[0].a / c.widths[1].a - 1.0), 1e-6);
+}
+
+// The stop from the contraction (docs/formulation.md 8(e), session 18): the alternation stops once the bound
+// kappa/(1 - kappa) times its last change, kappa the ratio of its last two changes, is within the tolerance (1e-12 in
+// lambda, e, xi; 1e-10 in the ends), where the plain rule waited for the change itself: at n = 64 from Johnson's point,
+// braked and driven three zones and free rolling's five zones, a step fewer each, and the same fixed point as the
+// plain rule's to within those tolerances (the plain rule's own distance from it is kappa/(1 - kappa) of them).
+TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps) {
+    int plain_steps = 0, bound_steps = 0;
+    for (const double q : {-0.75, 0.9, 0.0}) {
+        SCOPED_TRACE(q);
+        const double Q = q * f;
+        // Johnson's level at n = 64: three zones by its search, free rolling's five zones by theirs.
+        const normal_solution hertz = hertz_solution(64, method::product);
+        tangential_solver solver(hertz, kernel{}, kernel{}, f);
+        dissimilar_zones zones(solver, kernel{}, beta_al_st);
+        tangential_solution johnson;
+        if (q == 0.0) {
+            const auto v = zones.five_zones(0.0);
+            ASSERT_TRUE(v);
+            johnson = five_zone_point(*v);
+            johnson.Q = 0.0;
+        } else {
+            johnson = zones.solve(Q);
+        }
+        full_coupling plain(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
+        full_coupling bound(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
+        plain.set_stop(coupling_stop::plain);
+        const tangential_solution a = plain.solve(hertz, zones, johnson, true);
+        const tangential_solution b = bound.solve(hertz, zones, johnson, true);
+        EXPECT_LT(bound.summary().iterations, plain.summary().iterations);
+        plain_steps += plain.summary().iterations;
+        bound_steps += bound.summary().iterations;
+        EXPECT_NEAR(b.xi, a.xi, 2.0 * coupling_value_tolerance);
+        EXPECT_NEAR(bound.normal().lambda, plain.normal().lambda, 2.0 * coupling_value_tolerance);
+        EXPECT_NEAR(bound.normal().offset, plain.normal().offset, 2.0 * coupling_value_tolerance);
+        EXPECT_EQ(a.layout.stick_zones(), b.layout.stick_zones());
+        EXPECT_NEAR(b.start(), a.start(), 2.0 * coupling_end_tolerance);
+        EXPECT_NEAR(b.c0(), a.c0(), 2.0 * coupling_end_tolerance);
+        EXPECT_NEAR(b.start2(), a.start2(), 2.0 * coupling_end_tolerance);
+        EXPECT_NEAR(b.end2(), a.end2(), 2.0 * coupling_end_tolerance);
+        std::printf("Q/f = %g: %d steps by the plain rule, %d by the bound; xi %.3g, c0 %.3g, start %.3g apart\n", q,
+                    plain.summary().iterations, bound.summary().iterations, b.xi - a.xi, b.c0() - a.c0(),
+                    b.start() - a.start());
+    }
+    std::printf("steps: %d plain, %d with the bound\n", plain_steps, bound_steps);
+}
+// The plateau's rule decided once per alternation (8(e), "The Jacobian kept between steps"; carries_plateau, 8(p)): at
+// Q/f = 0.275 and n = 64 Johnson's five zones keep their second stick zone just longer than the rule's 8 spacings of
+// n = 250 (no plateau), and the coupling shortens it (by about 3e-4) to just below them, so that the converged zones
+// alone would carry it. Every step keeps Johnson's decision: the converged pressure's kinks have no plateau. A rule
+// asked of each step's source would carry it from the second step on.
+TEST(FullCoupling, ThePlateauIsDecidedOnceForTheAlternation) {
+    const double Q = 0.275 * f;
+    const normal_solution hertz = hertz_solution(64, method::product);
+    tangential_solver solver(hertz, kernel{}, kernel{}, f);
+    dissimilar_zones zones(solver, kernel{}, beta_al_st);
+    const auto v = zones.five_zones(Q);
+    ASSERT_TRUE(v);
+    tangential_solution johnson = five_zone_point(*v);
+    johnson.Q = Q;
+    full_coupling coupled(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
+    const tangential_solution s = coupled.solve(hertz, zones, johnson, false);
+    // The load straddles the rule's threshold: Johnson's zones say no plateau, the converged ones say plateau.
+    ASSERT_FALSE(carries_plateau(johnson));
+    ASSERT_TRUE(carries_plateau(s));
+    ASSERT_TRUE(coupled.normal().kinks);
+    EXPECT_EQ(coupled.normal().kinks->plateaus(), 0u);
+    EXPECT_GE(coupled.summary().iterations, 2);
 }

@@ -101,6 +101,22 @@ newton_result damped_newton(const newton_problem& problem, std::vector<double> x
             // factor s makes every step s times too short, and the stop would call the start a root (session 17
             // review F1); it is differenced at x instead, k residuals once per solve.
             dx = newton_step(J, *F);
+            // The root before the step (docs/formulation.md 8(e), "The root before the last step"): after a full step
+            // of this solve, a step of this Jacobian shorter than half the last one contracts by rho = size/last_size
+            // <= 1/2, and the steps left sum to at most size/(1 - rho): within the tolerance, or within F's rounding
+            // at x where that is at most rounding_cap tolerances (the rounding stop's root below, without its two
+            // steps of rounding), x is the root to that resolution and the residual at x + dx (a five-zone system) is
+            // not needed. The last residual was at x, so the caller's solution is x's and F's rounding is asked there.
+            if (dx && last_size > 0.0) {
+                const double size = problem.step_size(x, *dx);
+                const double rho = size / last_size;
+                const double floor =
+                    problem.rounding ? std::max(options.tolerance, problem.rounding(x)) : options.tolerance;
+                if (rho <= 0.5 && size / (1.0 - rho) <= floor && floor <= options.rounding_cap * options.tolerance) {
+                    kept->J = J;
+                    return {newton_stop::root, newton_root{x, iteration - 1, floor}};
+                }
+            }
             if (dx) {
                 for (std::size_t j = 0; j < k; ++j) next[j] = x[j] + (*dx)[j];
                 if (inside(next) && (F_next = residual(next))) {

@@ -76,7 +76,11 @@ struct newton_result {
 // Jacobian is accepted only whole, inside, with F defined and contracting (|F| halved, or the step at most half the
 // last one), or below the tolerance or F's rounding; else J is differenced afresh at x and the iteration goes on as
 // without it (Broyden's update skipped for a step shorter than the difference steps: it would measure F's rounding).
-// The stops are unchanged; with J of relative error delta the root lies within delta/(1 - delta) of the last step.
+// With J of relative error delta the root lies within delta/(1 - delta) of the last step. One stop more, with a kept
+// Jacobian only: after a full step, a next step contracting by rho = its size/the last one's <= 1/2 whose bound
+// size/(1 - rho) on the steps left is within the tolerance, or within F's rounding at x up to rounding_cap tolerances,
+// makes x the root to that resolution without the residual at x + dx (docs/formulation.md 8(e), "The root before the
+// last step").
 // On return `J` is the last one (empty where no root was found). The counters add up what was spent.
 struct newton_jacobian {
     std::vector<std::vector<double>> J;  // empty: none kept

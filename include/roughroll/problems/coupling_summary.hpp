@@ -20,6 +20,7 @@ struct coupling_summary {
     double peak_pressure_change = 0.0;
     double contraction = 0.0;     // the largest ratio of successive changes after the first two steps
     std::vector<double> changes;  // the largest change of lambda, e, xi per step (the ends' apart)
+    std::vector<double> end_changes;  // the largest change of the zone ends per step (0 at gross sliding)
     // The cost of the five zones' Newton over the steps (damped_newton.hpp, newton_jacobian): systems solved
     // (the zone ends' residuals, differences included) and Jacobians by differences; 0 for three zones.
     int newton_residuals = 0;

@@ -43,10 +43,34 @@ constexpr double coupling_value_tolerance = 1e-12;
 constexpr double coupling_end_tolerance = 10.0 * zone_end_resolution;
 constexpr int coupling_max_iterations = 40;
 
+// The alternation's stop for one group of its numbers (lambda, e, xi; or the zone ends), docs/formulation.md 8(e),
+// "The stop from the contraction": `changes` the group's largest change per step, from the first step; `own_from` the
+// index of the first change that is the level's own map's (1 from a coarser level's start, whose first change is the
+// levels' difference; else 0). Settled where the last change is within `tolerance` (the plain rule), or where the
+// last two of its own changes fall by kappa = changes[k]/changes[k - 1] <= 1/2 and kappa/(1 - kappa) changes[k],
+// the a posteriori bound of a contraction with that constant on the distance to the fixed point, is within it.
+// Ratios above 1/2 leave the plain rule (a map that contracts slowly, or not yet).
+bool coupling_settled(const std::vector<double>& changes, std::size_t own_from, double tolerance);
+
+// Which stop the alternation takes: the contraction's (above, the program's), or the plain rule alone (each last
+// change within its tolerance: the reference that tests compare it with).
+enum class coupling_stop { contraction, plain };
+
 // Free rolling of smooth rollers at full coupling: the distance t_c from either edge where |p1| of the fully coupled
 // no-slip solution reaches f p, 2/(1 + exp(arctan(f)/|epsilon|)) with tanh(pi epsilon) = -beta_D (docs/formulation.md
 // 8(p), "The edges"); the edge layers of the five zones scale with it.
 double coupled_layers_crossing(double beta_d, double f);
+
+// Whether five zones carry the plateau between their stick zones in closed form (8(p), "Where the plateau is carried"):
+// where a stick zone is shorter than plateau_spacings node spacings pi sqrt(1 - m^2)/(n + 1) (m its midpoint) of the
+// coarsest level n = max_nodes/4 of the top rung. A zone the series resolves with that many spacings at every level of
+// the rung that reaches it keeps the series' route, converged at (r)'s order; a shorter one is a jump, or a ramp of a
+// few spacings, for the coarser levels of every rung, whose log peak grows by (J/pi) ln 2 per doubling (8(p), "Complete
+// slip at full coupling"), and only the plateau lets those levels converge. Decided on the zones of Johnson's point
+// (which the plateau does not move), once for every step of the alternation and every level of an estimate; where
+// Johnson's point has not five zones, on the alternation's first source, once for its steps (full_coupling::solve).
+constexpr double plateau_spacings = 8.0;
+bool carries_plateau(const tangential_solution& s);
 
 class full_coupling {
 public:
@@ -58,6 +82,7 @@ public:
 
     // Called before each step of the alternation (contact::set_checkpoint): what it throws ends it.
     void set_checkpoint(std::function<void()> hook) { checkpoint_ = std::move(hook); }
+    void set_stop(coupling_stop rule) { stop_ = rule; }
 
     // The fully coupled point at Johnson's load `johnson_point.Q`, from Johnson's level: its pressure
     // `johnson`, its zones workspace (on `johnson`) and its point (k = 0 of the alternation).
@@ -90,6 +115,7 @@ private:
     newton_jacobian jacobian_;
     coupling_summary summary_;
     std::function<void()> checkpoint_;
+    coupling_stop stop_ = coupling_stop::contraction;
 };
 
 }  // namespace roughroll
