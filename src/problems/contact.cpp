@@ -91,6 +91,10 @@ tangential_solution contact::point(double Q) {
     return impl_->model_->point(Q, [this] { return impl_->below(); });
 }
 
+std::vector<estimate_level> contact_internals::levels_before(contact& c, double Q) {
+    return c.impl_->model_->levels_before(Q, [&c] { return c.impl_->below(); });
+}
+
 tangential_solution contact::continued_point(double Q, const tangential_solution& previous) {
     return impl_->model_->continued(Q, previous, [this] { return impl_->below(); });
 }

@@ -419,24 +419,25 @@ public:
     tangential_solution point(double Q, const std::function<std::vector<int>()>& below) override {
         no_slip_.reset();
         if (no_slip_negligible(Q)) return no_slip_point();
-        check_edge_zones(Q, nodes());
-        const std::vector<int> ms = below();
-        const tangential_solution johnson = johnson_point(Q, levels_.at<johnson_model>(ms));
-        // The estimate's levels first, coarsest first, each alternation from the one below (8(e), "The start
-        // from the coarser level"); a level that fails leaves the next to Johnson's point (and its refusal
-        // to the estimate, which asks it again).
-        const full_coupling* start = nullptr;
-        for (coupled_model* level : levels_.at(ms)) {
-            try {
-                level->coupled(Q, level->johnson_model::like(johnson, options_.how, nodes()), false, start);
-                start = &level->coupling_;
-            } catch (const numerical_error&) {
-                start = nullptr;
-            } catch (const resolution_error&) {
-                start = nullptr;
-            }
+        // The levels levels_before solved at this Q are used once (the ladder's rule (a'), 8(q)): the same work,
+        // in the same order, as solving them here.
+        std::optional<levels_solved> solved;
+        if (before_ && before_->Q == Q) solved = std::move(before_);
+        before_.reset();
+        if (!solved) solved = solve_levels(Q, below);
+        return coupled(Q, solved->johnson, true, solved->start);
+    }
+    std::vector<estimate_level> levels_before(double Q, const std::function<std::vector<int>()>& below) override {
+        no_slip_.reset();
+        before_.reset();
+        if (no_slip_negligible(Q)) return {};
+        before_ = solve_levels(Q, below);
+        std::vector<estimate_level> levels;
+        for (coupled_model* level : levels_.at(below())) {
+            if (!(level->load_ && *level->load_ == Q)) return {};  // failed: the estimate asks it again
+            levels.push_back({level->point_, level->normal().lambda});
         }
-        return coupled(Q, johnson, true, start);
+        return levels;
     }
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
         if (no_slip_negligible(Q)) return std::nullopt;  // answered by the no-slip limit, no rung solved
@@ -488,6 +489,32 @@ protected:
     tangential_solver& solver_of_point() override { return load_ ? coupling_.tangential() : tangential_; }
 
 private:
+    // Johnson's point of this level at Q and the estimate's levels below it, coarsest first, each alternation from the
+    // one below (8(e), "The start from the coarser level"); a level that fails leaves the next to Johnson's point (and
+    // its refusal to the estimate, which asks it again). `start`: the finest level's alternation, this level's start.
+    struct levels_solved {
+        double Q;
+        tangential_solution johnson;
+        const full_coupling* start;
+    };
+    levels_solved solve_levels(double Q, const std::function<std::vector<int>()>& below) {
+        check_edge_zones(Q, nodes());
+        const std::vector<int> ms = below();
+        tangential_solution johnson = johnson_point(Q, levels_.at<johnson_model>(ms));
+        const full_coupling* start = nullptr;
+        for (coupled_model* level : levels_.at(ms)) {
+            try {
+                level->coupled(Q, level->johnson_model::like(johnson, options_.how, nodes()), false, start);
+                start = &level->coupling_;
+            } catch (const numerical_error&) {
+                start = nullptr;
+            } catch (const resolution_error&) {
+                start = nullptr;
+            }
+        }
+        return {Q, std::move(johnson), start};
+    }
+
     // Free rolling of smooth rollers whose edge layers the tolerance neglects at full coupling (8(t)): every
     // relative bound of the no-slip limit's route within it.
     bool no_slip_negligible(double Q) const {
@@ -531,6 +558,7 @@ private:
         coupling_summary summary;
     };
     std::optional<no_slip_route> no_slip_;  // the last point's, where that route answered it
+    std::optional<levels_solved> before_;   // levels_before's, for the next point at its Q
     model_levels<coupled_model> levels_;
     full_coupling coupling_;
     std::optional<double> load_;  // the load of the last coupled point; empty: none solved

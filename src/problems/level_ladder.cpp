@@ -12,6 +12,8 @@
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
+#include "roughroll/problems/contact_internals.hpp"
+#include "roughroll/problems/point_estimate.hpp"
 
 namespace roughroll {
 
@@ -71,6 +73,8 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
     : rungs_(ladder_rungs(options.how)),
       tolerance_(options.tolerance.value_or(default_tolerance)),
       strength_(std::max(kernel::tangential(surfaces).strength(), kernel::normal(surfaces).strength())),
+      smooth_(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty()),
+      order_(order_of(options.how)),
       flagged_final_(options.zones == zone_search::single),
       make_(std::move(make)),
       levels_(std::make_shared<level_store>()) {
@@ -105,6 +109,15 @@ std::unique_ptr<contact> level_ladder::release(int n) {
 }
 
 namespace {
+
+// A relative size the ladder says a rung's estimate reaches "at least" (rules (a), (a'), (b) of 8(q)), in three
+// digits rounded down: rounded to the nearest it could claim more than is certain (rung 1000's certain 1.0494e-5
+// read 1.05e-5, above its estimate 1.04945e-5).
+std::string at_least(double x) {
+    if (!(x > 0.0) || !std::isfinite(x)) return significant(x, 3);
+    const double unit = std::pow(10.0, std::floor(std::log10(x)) - 2.0);
+    return significant(std::floor(x * (1.0 - 1e-12) / unit) * unit, 3);
+}
 
 error_estimate scaled_changes(const level_changes& c, double factor) {
     error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
@@ -151,13 +164,46 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
     return o;
 }
 
-level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t from) {
+std::optional<tolerance_check> level_ladder::before_point(contact& c, double Q, std::size_t i) {
+    // 8(q) rule (a'). Rung m's estimate reads its levels m/4, m/2 as solved here (their points kept: the same levels,
+    // not solved again), and every branch of the rule gives each quantity E >= k |x_{m/2} - x_{m/4}| (coupled_bound:
+    // three times at least a 2^p-th of it where the changes contract under the three-level rule, else twice the
+    // larger change; a stall, no estimate). Rung m answers only where E <= max(tol s_m, r), and its scale s_m is
+    // within |x_m - x_{m/2}| <= E/2 of level m/2's s: so E (1 - tol/2) <= max(tol s, r), which fails where
+    // k |x_{m/2} - x_{m/4}| (1 - tol/2) > max(tol s, r), with 1 % more, as (a). k = 2 unless rung m may take the
+    // three-level rule; that needs the kinks (smooth rollers) and every zone of its point two nodes of level m/4
+    // wide, and a point that answers has each end within E/2 <= max(tol s, r)/(2 - tol) of level m/2's: its zones
+    // lie inside level m/2's widened by that, so where those hold fewer nodes no answering point takes the rule.
+    const int m = rungs_[i];
+    const std::vector<estimate_level> levels = contact_internals::levels_before(c, Q);
+    if (levels.size() != 2) return std::nullopt;  // levels m/4, m/2 (no finer level fits: climb's test), or none
+    const estimate_level& half = levels[1];
+    const level_changes changes = changes_before_point(levels[0], half, m, c.friction(), strength_);
+    const auto certain_part = [&](double k) {
+        return check_estimate(half.solution, half.lambda, scaled_changes(changes, k), tolerance_, strength_);
+    };
+    // The largest allowed move of a zone end (c0's and the start's members: e / ratio of a unit estimate).
+    error_estimate unit{0.0, 1.0, 0.0, 0.0, "", false, 1.0};
+    unit.start = 0.0;
+    const double allowed_c0 = 1.0 / check_estimate(half.solution, half.lambda, unit, tolerance_, strength_).ratio;
+    unit.c0 = 0.0;
+    unit.start = 1.0;
+    const double allowed_start = 1.0 / check_estimate(half.solution, half.lambda, unit, tolerance_, strength_).ratio;
+    const double delta = 1.01 * std::max(allowed_c0, allowed_start) / (2.0 - tolerance_);
+    const bool three_level = may_take_three_level(half.solution, m, delta, smooth_);
+    const tolerance_check t = certain_part(three_level ? std::ldexp(3.0, -order_) : 2.0);
+    if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) return t;
+    return std::nullopt;
+}
+
+level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t from, std::optional<double> Q) {
     struct best_reached {
         tolerance_check check;
         int n;
     };
     std::optional<best_reached> best;
     std::string last_reason, skipped, beyond_all;
+    std::string not_solved;       // rule (a') refused a rung before its point (said after the best estimate reached)
     bool advised_last = false;    // the last rung tried refused the point with a line that says what to change
     bool rounding_limit = false;  // the last rung tried met the ends' rounding limit, which grows with n: no rung above
     int last_n = rungs_.back();   // the last rung tried
@@ -169,6 +215,22 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         last_n = n;
         try {
             contact& c = at(n);
+            // Full coupling's rule (a') for a rung no rung below predicts (it does not double the one before):
+            // its levels first, its point not solved where their change alone fails the tolerance (8(q)).
+            // At such a rung (the top: no level above it fits, so its levels are n/4, n/2), flagged answers aside.
+            if (Q && !flagged_final_ && i > 0 && n != 2 * rungs_[i - 1] && 2 * n > max_nodes) {
+                if (const std::optional<tolerance_check> t = before_point(c, *Q, i)) {
+                    const std::string least = at_least(t->relative);
+                    const std::string why = "its estimate of " + t->quantity + " is at least " + least +
+                                            " relative (full coupling, from its levels n = " + std::to_string(n / 4) +
+                                            ", " + std::to_string(n / 2) + ", docs/formulation.md 8(q))";
+                    not_solved += "; n = " + std::to_string(n) + " was not solved: " + why;
+                    last_reason = "not solved: " + why + "; a tolerance above " + least +
+                                  " (solver.tolerance, --tolerance) may answer it, or coupling = \"johnson\"";
+                    advised_last = true;
+                    continue;
+                }
+            }
             answer a = solve(c, n);
             if (!a.solution.checks.hold() && flagged_final_) return a;
             if (!a.solution.checks.hold()) {
@@ -194,13 +256,13 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                     "no larger n can meet it (full coupling's estimate holds at least a share of the last level "
                     "change, and where the pressure's kinks are not carried its zone ends converge at order 1: at n "
                     "= " +
-                    std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " + significant(next.relative, 3) +
+                    std::to_string(rungs_[i + 1]) + " " + next.quantity + " at least " + at_least(next.relative) +
                     " relative; docs/formulation.md 8(q))";
             } else if (o.fails.front() && (i + 2 == rungs_.size() || rungs_[i + 2] != 2 * rungs_[i + 1])) {
                 skip[i + 1] = true;
                 const tolerance_check& next = o.at_least.front();
                 skipped = "; n = " + std::to_string(rungs_[i + 1]) + " was not solved: its estimate of " +
-                          next.quantity + " is at least " + significant(next.relative, 3) +
+                          next.quantity + " is at least " + at_least(next.relative) +
                           " relative (full coupling, from the levels up to n = " + std::to_string(n) +
                           ", docs/formulation.md 8(q))";
             }
@@ -228,13 +290,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         msg +=
             ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
             (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
-            " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped : ", and " + beyond_all) +
+            " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped + not_solved : ", and " + beyond_all) +
             (rounding_limit ? ", and at n = " + std::to_string(last_n) + " " + last_reason : std::string()) +
             "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate (n = " +
             std::to_string(best->n) + " answers with it: solver.n or --n " + std::to_string(best->n) +
             (accepted > 0.0 && accepted < 1.0 ? ", or a tolerance of " + significant(accepted, 2)
                                               : std::string()) +
-            "), or try another method" + (skipped.empty() && beyond_all.empty() ? "" : " or coupling = \"johnson\"");
+            "), or try another method" +
+            (skipped.empty() && beyond_all.empty() && not_solved.empty() ? "" : " or coupling = \"johnson\"");
     } else {
         msg += ": no n gave an answer whose checks hold with an error estimate (at n = " + std::to_string(last_n) +
                ": " + last_reason + skipped + ")" +
@@ -262,7 +325,7 @@ level_ladder::answer level_ladder::point(double Q, std::size_t from) {
             std::optional<error_estimate> e = c.estimate(s);
             return answer{std::move(s), std::move(e), n};
         },
-        from);
+        from, Q);
 }
 
 level_ladder::answer level_ladder::at_stick_end(double c0, std::size_t from) {

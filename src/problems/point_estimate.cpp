@@ -137,8 +137,9 @@ void fold_estimate(error_estimate& e, const estimated_quantity& q, double value)
     if (paper)
         msg << (p.n < max_nodes ? "; increase n, or the scene is beyond the method's reach"
                                 : "; the scene is beyond the method's reach at the largest n");
-    else if (p.n < max_nodes)
-        msg << "; a larger n (at most " << max_nodes << ") may converge";
+    else if (p.n < max_nodes)  // the ladder may answer below n too (the rough pair braked at Q/f = -(1 - 1e-5): n = 128)
+        msg << "; another n may converge: a larger n (solver.n, --n; at most " << max_nodes
+            << "), or leave n out and the ladder of levels tries n up to " << max_nodes;
     else
         msg << "; n is at its largest, so the load is beyond the method's reach";
     throw resolution_error(msg.str());
@@ -221,6 +222,53 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n) {
     const peak_error floor = peak_floors({level, coarse}, n);
     return {std::fabs(level.r - coarse.r) + floor.r, std::fabs(level.p - coarse.p) + floor.p};
+}
+
+level_changes changes_before_point(const estimate_level& quarter, const estimate_level& half, int m, double f,
+                                   double strength) {
+    // The table of contact's estimate (estimate_levels.cpp) at full coupling, with its floors at level m taken at
+    // level m/2's solution (only a margin here: subtracting more leaves less certain).
+    const tangential_solution& s = half.solution;
+    const rounding_floors floor = floors_at(m, s, s, half.lambda, f, strength);
+    const double ends = zone_ends_floor(m, floor.c0, s, half.lambda, f, strength);
+    using est = error_estimate;
+    std::vector<estimated_quantity> table = {
+        {"P_H/P2", nullptr, floor.lambda, floor.lambda, false, false, &est::lambda},
+        {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
+        {"c0", value_c0, ends, ends, false, true, &est::c0, true},
+        {"the stick zone's start", value_start, ends, ends, false, true, &est::start, true}};
+    if (quarter.solution.layout.stick_zones() == 2 && s.layout.stick_zones() == 2) {
+        table.push_back({"the second stick zone's end", value_end2, ends, ends, false, true, &est::c0, true});
+        table.push_back({"the second stick zone's start", value_start2, ends, ends, false, true, &est::start, true});
+    }
+    error_estimate last{0.0, 0.0, 0.0, 0.0, "", false};
+    for (const estimated_quantity& q : table) {
+        const double a = q.value ? q.value(quarter.solution) : quarter.lambda;
+        const double b = q.value ? q.value(s) : half.lambda;
+        const double noise = q.floor + (q.newton_end ? newton_floor_excess({&quarter.solution, &s}) : 0.0) +
+                             4.0 * coupling_end_tolerance;
+        // A NaN change stays NaN (fold_estimate keeps it): the check then finds no tolerance it meets, as the
+        // estimate, which refuses a level that is not finite.
+        const double d = std::fabs(b - a);
+        fold_estimate(last, q, std::isnan(d) ? d : std::max(d - noise, 0.0));
+    }
+    return level_changes{last.lambda, last.c0, last.xi, last.start, last.c0_second_zone, last.start_second_zone};
+}
+
+bool may_take_three_level(const tangential_solution& half, int m, double delta, bool smooth) {
+    if (!smooth) return false;  // kinks_of carries no kinks on rough rollers: no three-level rule
+    // Nodes cos(k pi/(m + 1)) inside each zone widened by delta (fewest_zone_nodes): a zone of the point lies inside
+    // the widened zone of level m/2, so it holds no more nodes.
+    std::vector<double> ends = half.layout.stick_ends();
+    ends.insert(ends.begin(), -1.0);
+    ends.push_back(1.0);
+    double fewest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+        const double a = i == 0 ? -1.0 : std::clamp(ends[i] - delta, -1.0, 1.0);
+        const double b = i + 2 == ends.size() ? 1.0 : std::clamp(ends[i + 1] + delta, -1.0, 1.0);
+        fewest = std::min(fewest, (std::acos(a) - std::acos(b)) * (m / 4 + 1) / M_PI);
+    }
+    return !(fewest < resolved_zone);
 }
 
 error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table,

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/level_store.hpp"
+#include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/problems/tangential_solver.hpp"
 
 namespace roughroll {
@@ -21,6 +23,9 @@ struct contact_internals {
     // are the store's where another rung made them and their numbers are the same; nullptr: every level made here.
     static contact with_levels(const roughness& surfaces, double f, const solver_options& options,
                                const dissimilar& materials, normal_cache* cache, std::shared_ptr<level_store> levels);
+    // The levels of c's estimate at Q solved before c's point, kept for c.point(Q) (point_model::levels_before; the
+    // ladder's rule (a'), docs/formulation.md 8(q)); empty where c's model solves none first.
+    static std::vector<estimate_level> levels_before(contact& c, double Q);
 };
 
 inline tangential_solver& tangential_of(contact& c) { return contact_internals::tangential(c); }

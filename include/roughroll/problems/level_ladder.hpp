@@ -103,7 +103,8 @@ public:
 
 private:
     using solve_rung = std::function<answer(contact&, int n)>;
-    answer climb(const solve_rung& solve, std::size_t from);
+    // `Q`: the load of a point (rule (a') asks the levels before a rung's point); empty for a swept point.
+    answer climb(const solve_rung& solve, std::size_t from, std::optional<double> Q = std::nullopt);
     // Full coupling (docs/formulation.md 8(q)): for each rung above rung i, whether the point `a` of
     // rung i (contact c, refused by the tolerance) shows that its estimate cannot meet the tolerance,
     // and that estimate's certain part (twice rung i's last level changes).
@@ -112,10 +113,16 @@ private:
         std::vector<tolerance_check> at_least;
     };
     outlook beyond(const answer& a, const contact& c, std::size_t i) const;
+    // Full coupling, rule (a') of 8(q): rung i, which no rung below predicts by (a) (it does not double the rung
+    // before: 1000 after 512 or 768), has its levels n/4 and n/2 solved first (kept for its point); where the certain
+    // part of its estimate in their change fails the tolerance, that part, and its point is not solved.
+    std::optional<tolerance_check> before_point(contact& c, double Q, std::size_t i);
 
     std::vector<int> rungs_;
     double tolerance_;
     double strength_;     // the kernels' sum |T| (kernel::strength)
+    bool smooth_;         // no roughness: the only scenes whose coupled pressure carries the kinks (8(q) rule (a'))
+    int order_;           // the levels' order p (order_of)
     bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
     rung_factory make_;
     std::shared_ptr<level_store> levels_;  // held by the rungs' contacts too (a released contact outlives the ladder)

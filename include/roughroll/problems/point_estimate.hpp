@@ -116,6 +116,21 @@ int order_of(method how);
 // convergence (8(q) "The three-level rule at full coupling").
 double fewest_zone_nodes(const tangential_solution& s, int m);
 
+// 8(q) rule (a'): what the full-coupling estimate of rung m (levels m/4, m/2, m) holds for certain from its levels m/4
+// (`quarter`) and m/2 (`half`), solved before its point (point_model::levels_before) and read again by its estimate:
+// every branch of the rule (coupled_bound) gives each quantity at least k |x_{m/2} - x_{m/4}|, k = 3/2^p where rung m
+// may take the three-level rule, else 2 (a stall or a non-finite level gives no estimate at all). Those changes, less
+// rule (a)'s noise (the floor at m and 4 times the alternation's tolerance; here a margin only, the levels being the
+// rung's own), each the largest of the quantities folded into one member as the estimate folds them. The second stick
+// zone's ends where both levels have five zones (the rung's point then has them too: its levels are solved on the
+// structure of its Johnson's point, which its alternation keeps).
+level_changes changes_before_point(const estimate_level& quarter, const estimate_level& half, int m, double f,
+                                   double strength);
+// Whether rung m's point, each of its zone ends within `delta` of `half`'s (level m/2's), can have every zone two nodes
+// of level m/4 wide (the three-level rule's test, takes_three_level): the zones of `half` widened by delta at each end
+// inside (-1, 1). Never without the pressure's kinks, which only smooth rollers carry (`smooth`).
+bool may_take_three_level(const tangential_solution& half, int m, double delta, bool smooth);
+
 // The estimate from the three levels (coarsest first). Per quantity: error_bound's rule; where the
 // three levels show no estimate, a second chance on n/2, n, 2n (only for a point whose checks hold,
 // and only where those show at least order p - 1, since three pre-asymptotic levels of a very stiff

@@ -77,6 +77,16 @@ public:
     // checks made but not acted on: a level of s's estimate. resolution_error where the level has no such
     // solution, naming the estimate of method `how` at n (no_honest_estimate) as refused.
     virtual tangential_solution like(const tangential_solution& s, method how, int n) = 0;
+    // The estimate's levels below this one at Q (coarsest first, each with its P_H/P2), solved as point(Q, below) solves
+    // them before its own point and kept, so that point(Q, below) next reuses them and their cached points are the
+    // levels its estimate reads (full coupling: the ladder's rule (a') for a rung no rung below predicts,
+    // docs/formulation.md 8(q)). Throws what point(Q, below) would throw before its own solve. Empty where the model
+    // solves no levels before its point (every model but full coupling's, and its no-slip route), or one of them failed.
+    virtual std::vector<estimate_level> levels_before(double Q, const std::function<std::vector<int>()>& below) {
+        static_cast<void>(Q);
+        static_cast<void>(below);
+        return {};
+    }
     // The solution whose distributions belong with the reported s (contact::distribution).
     virtual tangential_solution distribution(const tangential_solution& s) { return s; }
     // The paper's zone ending at c0 (a curve swept in c0; check_sweepable refuses the other models first).

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The ladder's rule (a') for its top rung (docs/formulation.md 8(q), session 18): rule (a) predicts only a rung that
+// doubles the one before, so rung 1000 (levels 250, 500, 1000) was always solved, its point at n = 1000 the most
+// expensive of the climb. Its levels 250 and 500 are now solved first (and kept for its point and estimate), and the
+// point is refused, unsolved, where k |x_500 - x_250| alone fails the tolerance (k = 3/2^p where rung 1000 may take
+// the three-level rule, else 2). Smooth aluminium on steel, f = 0.05, full coupling, dimensionless.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "aluminium_on_steel.hpp"
+#include "roughroll/base/error.hpp"
+#include "roughroll/io/output.hpp"
+#include "roughroll/io/scene.hpp"
+#include "roughroll/io/scene_point.hpp"
+#include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/level_ladder.hpp"
+#include "roughroll/problems/point_estimate.hpp"
+#include "roughroll/problems/zone_layout.hpp"
+
+using namespace roughroll;
+
+namespace {
+constexpr double f = 0.05;
+const dissimilar full_pair{beta_al_st, coupling_level::full};
+
+struct full_run {
+    std::optional<level_ladder::answer> answer;
+    std::string refusal;
+    std::vector<int> solved;  // the rungs whose levels were started, in order
+};
+
+// The ladder at Q/f and tolerance `tol` (default method: rungs 128, 256, 512, 1000).
+full_run run_full(double Q_over_f, double tol) {
+    full_run r;
+    solver_options options;
+    options.tolerance = tol;
+    level_ladder ladder(options, roughness{}, [&](int n) {
+        auto c = std::make_unique<contact>(roughness{}, f, solver_options{n, options.how, options.zones, tol},
+                                           full_pair);
+        c->set_checkpoint([&r, n] {  // (copied to the rung's levels)
+            if (r.solved.empty() || r.solved.back() != n) r.solved.push_back(n);
+        });
+        return c;
+    });
+    try {
+        r.answer = ladder.point(Q_over_f * f);
+    } catch (const resolution_error& e) {
+        r.refusal = e.what();
+    }
+    return r;
+}
+
+// The number after `label` in `line` (NaN where absent).
+double number_after(const std::string& line, const std::string& label) {
+    const std::size_t at = line.find(label);
+    if (at == std::string::npos) return std::nan("");
+    return std::strtod(line.c_str() + at + label.size(), nullptr);
+}
+}  // namespace
+
+// Driven, Q/f = +0.75 (five zones), tolerance 1e-6: rung 128 and 256 solved, 512 skipped by (a) (at least 4.08e-5 of
+// s), and rung 1000 refused from its levels 250, 500 before its point: the line names what it would reach at least.
+// Its trailing stick zone holds less than two nodes of level 250 (8(q) finding 2), widened by the ends' largest move
+// an answering point could have: no three-level rule, so k = 2, which the number checks against an independent route,
+// the change |x_500 - x_250| that an explicit n = 500 point's estimate carries (its levels 125, 250, 500: rule (a)'s
+// changes, the levels solved on their own chain, equal to the alternation's tolerance). The old program solved rung
+// 1000's point and refused with the best estimate alone ("n = 1000 was not solved" absent).
+TEST(LadderTopRung, RefusedFromItsLevelsBeforeItsPoint) {
+    const full_run r = run_full(0.75, 1e-6);
+    ASSERT_FALSE(r.answer.has_value());
+    EXPECT_EQ(r.solved, (std::vector<int>{128, 256, 1000}));
+    const std::string said = "n = 1000 was not solved: its estimate of stick start is at least ";
+    ASSERT_NE(r.refusal.find(said), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("from its levels n = 250, 500"), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("or coupling = \"johnson\""), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.refusal.find("roughroll::"), std::string::npos) << r.refusal;  // names no function
+    const double at_least = number_after(r.refusal, said);
+
+    contact half(roughness{}, f, solver_options{500, method::product}, full_pair);
+    const tangential_solution s = half.point(0.75 * f);
+    const std::optional<error_estimate> e = half.estimate(s);
+    ASSERT_TRUE(e && e->changes);
+    ASSERT_EQ(s.layout.stick_zones(), 2u);
+    // 2 |x_500 - x_250| (less the noise, 4e-10 and the floors) relative to 1 + s_1, to the line's three digits.
+    EXPECT_NEAR(at_least, 2.0 * e->changes->last.start / (1.0 + s.start()), 1e-2 * at_least);
+    EXPECT_GT(at_least * (1.0 - 0.5e-6), 1.01e-6);
+}
+
+// The three-level test of an answering point (may_take_three_level): zones of level m/2 widened by the ends' largest
+// move. A zone of 1.9 nodes of level m/4 cannot hold two unless widened; rough rollers carry no kinks, so never.
+TEST(LadderTopRung, ThreeLevelRuleOnlyWhereAWidenedZoneHoldsTwoNodes) {
+    tangential_solution s;
+    const int m = 1000;
+    // One stick zone [a, b] with (acos a - acos b) 251/pi = 1.9 nodes of level 250, in the middle.
+    const double width = 1.9 * M_PI / 251.0;
+    s.layout = one_stick_zone(-0.5 * width, 0.5 * width);
+    EXPECT_FALSE(may_take_three_level(s, m, 0.0, true));
+    EXPECT_TRUE(may_take_three_level(s, m, 0.2 * width, true));
+    EXPECT_FALSE(may_take_three_level(s, m, 0.2 * width, false));
+    // A wide zone: the rule may be taken (smooth), whatever delta.
+    s.layout = one_stick_zone(-0.5, 0.5);
+    EXPECT_TRUE(may_take_three_level(s, m, 0.0, true));
+}
+
+// At a given n, a point whose levels do not converge visibly is refused with what to change: the ladder (n left out)
+// may answer below that n. The rough pair braked at Q/f = -(1 - 1e-5), n = 256: its c0 over the levels 128, 256, 512
+// does not converge visibly, and the ladder answers the point at n = 128. Before, the line advised only "a larger n
+// (at most 1000)", which is no answer here.
+TEST(LadderTopRung, AGivenNsUnconvergedLevelsAdviseLeavingNOut) {
+    scene given = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel-rough.toml");
+    const double Q = -(1.0 - 1e-5) * given.friction;
+    scene ladder = given;
+    override_solver(given, 256, std::nullopt);
+    try {
+        solve_point(given, Q);
+        ADD_FAILURE() << "answered at n = 256";
+    } catch (const resolution_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("does not converge visibly"), std::string::npos) << what;
+        EXPECT_NE(what.find("leave n out and the ladder of levels tries n up to 1000"), std::string::npos) << what;
+        EXPECT_NE(what.find("a larger n (solver.n, --n; at most 1000)"), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    const scene_point answered = solve_point(ladder, Q);  // the advice holds: the ladder answers
+    EXPECT_LT(to_json(answered.report())["n"].get<int>(), 256);
+}
