@@ -555,10 +555,11 @@ TEST(FullCouplingPhysical, CurveRowsHaveTheirOwnWidths) {
 }
 
 // The stop from the contraction (docs/formulation.md 8(e), session 18): the alternation stops once the bound
-// kappa/(1 - kappa) times its last change, kappa the ratio of its last two changes, is within the tolerance (1e-12 in
-// lambda, e, xi; 1e-10 in the ends), where the plain rule waited for the change itself: at n = 64 from Johnson's point,
-// braked and driven three zones and free rolling's five zones, a step fewer each, and the same fixed point as the
-// plain rule's to within those tolerances (the plain rule's own distance from it is kappa/(1 - kappa) of them).
+// kappa/(1 - kappa) times its last change, kappa the largest ratio of its own changes, is within a quarter of the
+// tolerance (1e-12 in lambda, e, xi; 1e-10 in the ends), where the plain rule waited for the change itself: at n = 64
+// from Johnson's point, braked and driven three zones and free rolling's five zones, never a step more, free rolling a
+// step fewer, and the same fixed point as the plain rule's to within those tolerances (the plain rule's own distance
+// from it is kappa/(1 - kappa) of them).
 TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps) {
     int plain_steps = 0, bound_steps = 0;
     for (const double q : {-0.75, 0.9, 0.0}) {
@@ -582,7 +583,8 @@ TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps
         plain.set_stop(coupling_stop::plain);
         const tangential_solution a = plain.solve(hertz, zones, johnson, true);
         const tangential_solution b = bound.solve(hertz, zones, johnson, true);
-        EXPECT_LT(bound.summary().iterations, plain.summary().iterations);
+        EXPECT_LE(bound.summary().iterations, plain.summary().iterations);
+        if (q == 0.0) EXPECT_LT(bound.summary().iterations, plain.summary().iterations);
         plain_steps += plain.summary().iterations;
         bound_steps += bound.summary().iterations;
         EXPECT_NEAR(b.xi, a.xi, 2.0 * coupling_value_tolerance);

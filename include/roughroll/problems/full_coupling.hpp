@@ -46,10 +46,10 @@ constexpr int coupling_max_iterations = 40;
 // The alternation's stop for one group of its numbers (lambda, e, xi; or the zone ends), docs/formulation.md 8(e),
 // "The stop from the contraction": `changes` the group's largest change per step, from the first step; `own_from` the
 // index of the first change that is the level's own map's (1 from a coarser level's start, whose first change is the
-// levels' difference; else 0). Settled where the last change is within `tolerance` (the plain rule), or where the
-// last two of its own changes fall by kappa = changes[k]/changes[k - 1] <= 1/2 and kappa/(1 - kappa) changes[k],
-// the a posteriori bound of a contraction with that constant on the distance to the fixed point, is within it.
-// Ratios above 1/2 leave the plain rule (a map that contracts slowly, or not yet).
+// levels' difference; else 0). Settled where the last change is within `tolerance` (the plain rule), or where
+// kappa, the largest ratio changes[j]/changes[j - 1] of its own changes, is at most 1/2 and kappa/(1 - kappa)
+// changes[k], the a posteriori bound of a contraction with that constant on the distance to the fixed point, is
+// within a quarter of it. Ratios above 1/2 leave the plain rule (a map that contracts slowly, or not yet).
 bool coupling_settled(const std::vector<double>& changes, std::size_t own_from, double tolerance);
 
 // Which stop the alternation takes: the contraction's (above, the program's), or the plain rule alone (each last
