@@ -20,8 +20,16 @@ void check_node_count(int n) {
     }
 }
 
-gauss_chebyshev::gauss_chebyshev(int n_) : n(n_) {
-    check_node_count(n);
+gauss_chebyshev::gauss_chebyshev(int n_) : gauss_chebyshev((check_node_count(n_), n_), unchecked{}) {}
+
+gauss_chebyshev gauss_chebyshev::transform(int n) {
+    if (n < min_nodes || n > max_transform_nodes)
+        throw numerical_error("a transform's Gauss-Chebyshev rule of " + std::to_string(n) + " nodes is outside [" +
+                              std::to_string(min_nodes) + ", " + std::to_string(max_transform_nodes) + "]");
+    return gauss_chebyshev(n, unchecked{});
+}
+
+gauss_chebyshev::gauss_chebyshev(int n_, unchecked) : n(n_) {
     nodes.resize(n);
     weights.resize(n);
     collocation.resize(n + 1);

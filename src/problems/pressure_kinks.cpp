@@ -13,10 +13,6 @@
 namespace roughroll {
 
 namespace {
-// g's terms that kinks_blend's rule cannot carry (only where n + 37/log(ellipse) exceeds max_nodes), relative to all:
-// W_q's error is at most |beta_D| times their sum. At n = 1000 they are g's rounding plateau (the collocation's
-// psi's own noise): measured 4e-10 to 1.2e-8 of all, 8e-12 to 2.2e-10 absolute, over its last 33 terms.
-constexpr double blend_tail = 1e-7;
 // The plateau's adaptive quadrature (kinks_blend::plateau_part): GSL's 21-point rule per piece in the cos map of
 // dissimilar_zones::integrate_piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
 constexpr std::size_t plateau_intervals = 400;
@@ -152,23 +148,25 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
     if (!unit) return std::nullopt;
     kinks_blend k(std::move(*unit));
     for (const zone& z : zones_) {
-        // g W_1 on the zone: g times W_1, analytic inside the Bernstein ellipse through the images of r = +-1
-        // (blended_cauchy.hpp), so m >= terms + 37/log(ellipse) nodes, `terms` g's above its rounding (a smooth
-        // psi's fall geometrically to it), bring W_1's part to 1e-16. At most max_nodes: g's terms beyond
-        // m - 37/log(ellipse) (at large n its rounding plateau, about 1e-14 each) then bound the error relative to g.
+        // g W_1 on the zone (docs/formulation.md 8(o), "W with the kinks"): g, a polynomial of degree terms - 1
+        // (`terms` its coefficients above eps of their sum; those below change g by at most n eps of it), times W_1,
+        // analytic inside the Bernstein ellipse through the images of r = +-1 (blended_cauchy.hpp), whose U
+        // coefficients fall below e^-37 (1e-16) of W_1's size beyond degree 37/log(ellipse): m = terms + extra nodes
+        // interpolate the product without aliasing any term above that, so H[g_Z W_1] is exact to about 1e-16 times
+        // sum |b| max|W_1| plus the sums' rounding (m eps). No term of g is dropped: the rule is a transform's, not
+        // the collocation's, so m may exceed max_nodes (at n = 1000 g has up to 1000 terms, none of them a rounding
+        // plateau in general: 2e-6 of sum |b| beyond 789 at f = 0.2). m stays below max_transform_nodes where
+        // blended_cauchy takes [s, c] (its rule asks log(ellipse) > 18.5/1023, so extra <= 2046, with n <= 1000);
+        // a kink zone nearer an edge than that is declined (the adaptive route).
         const double lo = (1.0 + z.start) / z.rho + 1.0, hi = (1.0 - z.start) / z.rho - 1.0;
         const auto ellipse = [](double tau) { return tau + std::sqrt((tau - 1.0) * (tau + 1.0)); };
         const double extra = std::ceil(37.0 / std::log(std::min(ellipse(lo), ellipse(hi))));
-        if (!(extra > 0.0 && extra < 0.5 * max_nodes)) return std::nullopt;
         double size = 0.0;
         for (const double b : z.b) size += std::fabs(b);
         std::size_t terms = z.b.size();
         while (terms > 1 && std::fabs(z.b[terms - 1]) <= DBL_EPSILON * size) --terms;
-        const int m = std::min(max_nodes, static_cast<int>(terms) + static_cast<int>(extra));
-        double tail = 0.0;
-        for (std::size_t j = static_cast<std::size_t>(m - static_cast<int>(extra)); j < terms; ++j) tail += std::fabs(z.b[j]);
-        if (tail > blend_tail * size) return std::nullopt;
-        const gauss_chebyshev rule(std::max(min_nodes, m));
+        if (!(extra > 0.0 && extra + static_cast<double>(terms) <= max_transform_nodes)) return std::nullopt;
+        const gauss_chebyshev rule = gauss_chebyshev::transform(std::max(min_nodes, static_cast<int>(terms + extra)));
         std::vector<double> values(static_cast<std::size_t>(rule.n));
         u_series(z.b, rule.nodes.data(), values.data(), values.size());  // g at the nodes, side by side (bit for bit)
         for (int i = 0; i < rule.n; ++i) {
