@@ -17,6 +17,8 @@ namespace {
 // dissimilar_zones::integrate_piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
 constexpr std::size_t plateau_intervals = 400;
 constexpr double plateau_absolute = 1e-14, plateau_relative = 1e-12, plateau_accepted = 1e-13;
+// kinks_blend's memo of plateau_part's points per piece stops growing here (memory: 40 bytes and the map's node each).
+constexpr std::size_t plateau_memo_points = 1 << 14;
 
 // Graded cuts about the zones of `b` (every 16 zone half-lengths outwards, up to 2): p_q^0's plateau part varies like
 // log|r - m| on the scale of a thin zone (8(p)); each piece then meets it within a sixteenth of its length of an end,
@@ -179,6 +181,7 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
     if (!plateaus_.empty()) {
         k.plateaus_ = plateaus_;
         k.workspace_ = std::shared_ptr<gsl_integration_workspace>(make_integration_workspace(plateau_intervals));
+        k.plateau_memo_ = std::make_shared<std::vector<kinks_blend::plateau_piece>>();
     }
     return k;
 }
@@ -209,11 +212,34 @@ std::optional<double> kinks_blend::plateau_part(double r) const {
         const double a = std::max(cuts[i], s), e = std::min(cuts[i + 1], 1.0);
         if (!(e - a > 1e-15 * (1.0 + std::fabs(a)))) continue;
         const double half = 0.5 * (e - a);
-        const auto integrand = [&](double phi) {
+        // A piece ending at r is asked at points of its own: not kept.
+        std::unordered_map<double, plateau_point, angle_hash>* memo = nullptr;
+        if (!(inside && (a == r || e == r))) {
+            auto& pieces = *plateau_memo_;
+            auto it = std::find_if(pieces.begin(), pieces.end(), [&](const plateau_piece& x) { return x.a == a && x.e == e; });
+            if (it == pieces.end()) it = pieces.insert(pieces.end(), plateau_piece{a, e, {}});
+            memo = &it->points;
+        }
+        const auto point = [&](double phi) {
             const double sh = std::sin(0.5 * phi), ch = std::cos(0.5 * phi);
             const double eta = phi < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch;
-            if (eta == r) return 0.0;
-            return (part(eta) - pr) / (eta - r) * half * 2.0 * sh * ch;
+            return plateau_point{eta, part(eta), sh, ch};
+        };
+        const auto integrand = [&](double phi) {
+            plateau_point x;
+            if (memo) {
+                const auto found = memo->find(phi);
+                if (found != memo->end()) {
+                    x = found->second;
+                } else {
+                    x = point(phi);
+                    if (memo->size() < plateau_memo_points) memo->emplace(phi, x);
+                }
+            } else {
+                x = point(phi);
+            }
+            if (x.eta == r) return 0.0;
+            return (x.part - pr) / (x.eta - r) * half * 2.0 * x.sh * x.ch;
         };
         const std::function<double(double)> f = integrand;
         gsl_function fn;
