@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/problems/zone_layout.hpp"
@@ -82,6 +83,31 @@ TEST(SecondZoneRefusal, NoToleranceAcceptsAnEstimateOfAZeroValueAboveItsFloor) {
     s.xi = 0.0;
     const error_estimate e{0.0, 0.0, 1e-3, 0.0, "", false, 0.0};
     EXPECT_TRUE(std::isinf(check_estimate(s, 1.0, e, 1e-4).answering));
+}
+
+// A level change that stalls (the second zone's start moves 1.49e-7 then 1.43e-7: free rolling's rung 256 at f = 0.2) is
+// refused. With n given, the line advises another n or leaving n out (the ladder may answer below n too); on a ladder's
+// rung it advises only the larger n the ladder goes on to: "leave n out" would advise what the user did (session 18
+// review).
+TEST(SecondZoneRefusal, AStalledLevelAdvisesLeavingNOutOnlyWhereNWasGiven) {
+    const std::array<estimate_level, 3> levels{five(0.0, 0.0), five(0.0, 1.49e-7), five(0.0, 1.49e-7 + 1.43e-7)};
+    const auto refusal = [&](bool n_given) {
+        estimate_point p{method::extrapolated, 256, 2, estimate_structure::full_coupling, false, true, "Q", 0.0};
+        p.n_given = n_given;
+        try {
+            estimate_from_levels(
+                table, levels, [] { return std::optional<estimate_level>(); }, p);
+        } catch (const resolution_error& e) {
+            return std::string(e.what());
+        }
+        return std::string("answered");
+    };
+    const std::string given = refusal(true), rung = refusal(false);
+    EXPECT_NE(given.find("does not converge visibly"), std::string::npos) << given;
+    EXPECT_NE(given.find("leave n out"), std::string::npos) << given;
+    EXPECT_NE(rung.find("does not converge visibly"), std::string::npos) << rung;
+    EXPECT_EQ(rung.find("leave n out"), std::string::npos) << rung;
+    EXPECT_NE(rung.find("a larger n (at most 1000) may converge"), std::string::npos) << rung;
 }
 
 }  // namespace

@@ -196,6 +196,7 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         swept ? "c0" : "Q", swept ? s.c0() : s.Q};
     // 8(q) "The three-level rule at full coupling"
     point.kinks_carried = structure == estimate_structure::full_coupling && normal().kinks != nullptr;
+    point.n_given = store_ == nullptr;  // a ladder's rungs share its level_store (level_ladder.hpp)
     error_estimate e = estimate_from_levels(table, levels, finer, point);
     // The peak pressure from the same levels' pressures (no solve; a curve swept in c0 prints no peak). Level n's is
     // the reported pressure's: at full coupling model_'s at s, else its pressure, whose position Richardson's

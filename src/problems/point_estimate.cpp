@@ -137,6 +137,8 @@ void fold_estimate(error_estimate& e, const estimated_quantity& q, double value)
     if (paper)
         msg << (p.n < max_nodes ? "; increase n, or the scene is beyond the method's reach"
                                 : "; the scene is beyond the method's reach at the largest n");
+    else if (p.n < max_nodes && !p.n_given)  // a ladder's rung: the ladder goes on to the larger n itself
+        msg << "; a larger n (at most " << max_nodes << ") may converge";
     else if (p.n < max_nodes)  // the ladder may answer below n too (the rough pair braked at Q/f = -(1 - 1e-5): n = 128)
         msg << "; another n may converge: a larger n (solver.n, --n; at most " << max_nodes
             << "), or leave n out and the ladder of levels tries n up to " << max_nodes;
