@@ -86,13 +86,13 @@ TEST(SecondZoneRefusal, NoToleranceAcceptsAnEstimateOfAZeroValueAboveItsFloor) {
 }
 
 // A level change that stalls (the second zone's start moves 1.49e-7 then 1.43e-7: free rolling's rung 256 at f = 0.2) is
-// refused. With n given, the line advises another n or leaving n out (the ladder may answer below n too); on a ladder's
-// rung it advises only the larger n the ladder goes on to: "leave n out" would advise what the user did (session 18
-// review).
+// refused. With n given, the line advises another n or leaving n out (the ladder may answer below n too, also below
+// n = 1000); on a ladder's rung it advises only the larger n the ladder goes on to: "leave n out" would advise what the
+// user did (session 18 review).
 TEST(SecondZoneRefusal, AStalledLevelAdvisesLeavingNOutOnlyWhereNWasGiven) {
     const std::array<estimate_level, 3> levels{five(0.0, 0.0), five(0.0, 1.49e-7), five(0.0, 1.49e-7 + 1.43e-7)};
-    const auto refusal = [&](bool n_given) {
-        estimate_point p{method::extrapolated, 256, 2, estimate_structure::full_coupling, false, true, "Q", 0.0};
+    const auto refusal = [&](bool n_given, int n = 256) {
+        estimate_point p{method::extrapolated, n, 2, estimate_structure::full_coupling, false, true, "Q", 0.0};
         p.n_given = n_given;
         try {
             estimate_from_levels(
@@ -108,6 +108,12 @@ TEST(SecondZoneRefusal, AStalledLevelAdvisesLeavingNOutOnlyWhereNWasGiven) {
     EXPECT_NE(rung.find("does not converge visibly"), std::string::npos) << rung;
     EXPECT_EQ(rung.find("leave n out"), std::string::npos) << rung;
     EXPECT_NE(rung.find("a larger n (at most 1000) may converge"), std::string::npos) << rung;
+    // At n = 1000 given, a smaller n may converge (the levels 250, 500, 1000 wobble where 128, 256, 512 need not): the
+    // ladder; on the ladder's top rung, nothing is left to try.
+    const std::string largest = refusal(true, 1000), top = refusal(false, 1000);
+    EXPECT_NE(largest.find("a smaller n may converge (leave n out"), std::string::npos) << largest;
+    EXPECT_EQ(largest.find("beyond the method's reach"), std::string::npos) << largest;
+    EXPECT_NE(top.find("n is at its largest, so the load is beyond the method's reach"), std::string::npos) << top;
 }
 
 }  // namespace

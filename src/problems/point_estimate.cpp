@@ -142,6 +142,9 @@ void fold_estimate(error_estimate& e, const estimated_quantity& q, double value)
     else if (p.n < max_nodes)  // the ladder may answer below n too (the rough pair braked at Q/f = -(1 - 1e-5): n = 128)
         msg << "; another n may converge: a larger n (solver.n, --n; at most " << max_nodes
             << "), or leave n out and the ladder of levels tries n up to " << max_nodes;
+    else if (p.n_given)  // levels 250, 500, 1000 may wobble where a smaller n's converge (8(q)): the ladder tries them
+        msg << "; n is at its largest: a smaller n may converge (leave n out and the ladder of levels tries n up to "
+            << max_nodes << ")";
     else
         msg << "; n is at its largest, so the load is beyond the method's reach";
     throw resolution_error(msg.str());
