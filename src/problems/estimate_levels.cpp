@@ -154,18 +154,9 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
         // Level n is reported, not extrapolated; P_H/P2 as reported (Richardson's for 'extrapolated',
         // level n's at full coupling: contact::normal), with no second chance.
-        table = {{"P_H/P2", nullptr, floor.lambda, floor.lambda,
-                  reported_ != nullptr && structure != estimate_structure::full_coupling, false, &est::lambda},
-                 {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
-                 {"c0", value_c0, ends, finer_ends, false, true, &est::c0, true},
-                 {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start, true}};
-        // Five zones: the second stick zone's ends, their bounds folded into c0's and the start's
-        // (each reported bound the larger of the two zones', formulation 7 "What c0 means").
-        if (s.layout.stick_zones() == 2) {
-            table.push_back({"the second stick zone's end", value_end2, ends, finer_ends, false, true, &est::c0, true});
-            table.push_back(
-                {"the second stick zone's start", value_start2, ends, finer_ends, false, true, &est::start, true});
-        }
+        table = zone_ends_table(floor, ends, finer_ends,
+                                reported_ != nullptr && structure != estimate_structure::full_coupling,
+                                s.layout.stick_zones() == 2);
     }
     std::array<estimate_level, 3> levels;
     for (int i = 0; i < 3; ++i) levels[i] = {at[i], (levels_[i] ? *levels_[i] : *model_).normal().lambda};

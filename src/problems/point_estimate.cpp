@@ -83,17 +83,33 @@ double newton_floor_excess(std::initializer_list<const tangential_solution*> lev
     return 2.0 * (resolution - zone_end_resolution);
 }
 
-double fewest_zone_nodes(const tangential_solution& s, int m) {
+double fewest_zone_nodes(const tangential_solution& s, int m, double widen) {
     // Nodes cos(k pi/(m + 1)) inside [a, b]: (acos a - acos b)(m + 1)/pi.
     std::vector<double> ends = s.layout.stick_ends();
     ends.insert(ends.begin(), -1.0);
     ends.push_back(1.0);
     double fewest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
-        const double a = std::clamp(ends[i], -1.0, 1.0), b = std::clamp(ends[i + 1], -1.0, 1.0);
+        const double a = std::clamp(ends[i] - widen, -1.0, 1.0), b = std::clamp(ends[i + 1] + widen, -1.0, 1.0);
         fewest = std::min(fewest, (std::acos(a) - std::acos(b)) * (m + 1) / M_PI);
     }
     return fewest;
+}
+
+std::vector<estimated_quantity> zone_ends_table(const rounding_floors& floor, double ends, double finer_ends,
+                                                bool lambda_extrapolated, bool two_zones) {
+    using est = error_estimate;
+    std::vector<estimated_quantity> table = {
+        {"P_H/P2", nullptr, floor.lambda, floor.lambda, lambda_extrapolated, false, &est::lambda},
+        {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
+        {"c0", value_c0, ends, finer_ends, false, true, &est::c0, true},
+        {"the stick zone's start", value_start, ends, finer_ends, false, true, &est::start, true}};
+    if (two_zones) {
+        table.push_back({"the second stick zone's end", value_end2, ends, finer_ends, false, true, &est::c0, true});
+        table.push_back(
+            {"the second stick zone's start", value_start2, ends, finer_ends, false, true, &est::start, true});
+    }
+    return table;
 }
 
 std::string no_honest_estimate(method how, int n, estimate_structure structure) {
@@ -139,7 +155,7 @@ void fold_estimate(error_estimate& e, const estimated_quantity& q, double value)
                                 : "; the scene is beyond the method's reach at the largest n");
     else if (p.n < max_nodes && !p.n_given)  // a ladder's rung: the ladder goes on to the larger n itself
         msg << "; a larger n (at most " << max_nodes << ") may converge";
-    else if (p.n < max_nodes)  // the ladder may answer below n too (the rough pair braked at Q/f = -(1 - 1e-5): n = 128)
+    else if (p.n < max_nodes)  // the ladder may answer below n too (rough pair braked, Q/f = -(1 - 1e-5): n = 128)
         msg << "; another n may converge: a larger n (solver.n, --n; at most " << max_nodes
             << "), or leave n out and the ladder of levels tries n up to " << max_nodes;
     else if (p.n_given)  // levels 250, 500, 1000 may wobble where a smaller n's converge (8(q)): the ladder tries them
@@ -236,16 +252,8 @@ level_changes changes_before_point(const estimate_level& quarter, const estimate
     const tangential_solution& s = half.solution;
     const rounding_floors floor = floors_at(m, s, s, half.lambda, f, strength);
     const double ends = zone_ends_floor(m, floor.c0, s, half.lambda, f, strength);
-    using est = error_estimate;
-    std::vector<estimated_quantity> table = {
-        {"P_H/P2", nullptr, floor.lambda, floor.lambda, false, false, &est::lambda},
-        {"xi", value_xi, floor.xi, floor.xi, false, true, &est::xi},
-        {"c0", value_c0, ends, ends, false, true, &est::c0, true},
-        {"the stick zone's start", value_start, ends, ends, false, true, &est::start, true}};
-    if (quarter.solution.layout.stick_zones() == 2 && s.layout.stick_zones() == 2) {
-        table.push_back({"the second stick zone's end", value_end2, ends, ends, false, true, &est::c0, true});
-        table.push_back({"the second stick zone's start", value_start2, ends, ends, false, true, &est::start, true});
-    }
+    const std::vector<estimated_quantity> table = zone_ends_table(
+        floor, ends, ends, false, quarter.solution.layout.stick_zones() == 2 && s.layout.stick_zones() == 2);
     error_estimate last{0.0, 0.0, 0.0, 0.0, "", false};
     for (const estimated_quantity& q : table) {
         const double a = q.value ? q.value(quarter.solution) : quarter.lambda;
@@ -262,18 +270,8 @@ level_changes changes_before_point(const estimate_level& quarter, const estimate
 
 bool may_take_three_level(const tangential_solution& half, int m, double delta, bool smooth) {
     if (!smooth) return false;  // kinks_of carries no kinks on rough rollers: no three-level rule
-    // Nodes cos(k pi/(m + 1)) inside each zone widened by delta (fewest_zone_nodes): a zone of the point lies inside
-    // the widened zone of level m/2, so it holds no more nodes.
-    std::vector<double> ends = half.layout.stick_ends();
-    ends.insert(ends.begin(), -1.0);
-    ends.push_back(1.0);
-    double fewest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
-        const double a = i == 0 ? -1.0 : std::clamp(ends[i] - delta, -1.0, 1.0);
-        const double b = i + 2 == ends.size() ? 1.0 : std::clamp(ends[i + 1] + delta, -1.0, 1.0);
-        fewest = std::min(fewest, (std::acos(a) - std::acos(b)) * (m / 4 + 1) / M_PI);
-    }
-    return !(fewest < resolved_zone);
+    // A zone of the point lies inside the zone of level m/2 widened by delta, so it holds no more nodes of level m/4.
+    return !(fewest_zone_nodes(half, m / 4, delta) < resolved_zone);
 }
 
 error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table,

@@ -117,7 +117,16 @@ int order_of(method how);
 // The fewest nodes of the m-point Gauss-Chebyshev rule (cos(k pi/(m + 1))) inside one zone of s (from -1 through
 // the zone ends to 1): below two the zone's ends fall between the same nodes and their changes with n are not
 // convergence (8(q) "The three-level rule at full coupling").
-double fewest_zone_nodes(const tangential_solution& s, int m);
+// With `widen`, each zone widened by it at both ends (inside [-1, 1]): a bound for every s' whose ends lie within widen
+// of s's, whose zones lie inside those (may_take_three_level).
+double fewest_zone_nodes(const tangential_solution& s, int m, double widen = 0.0);
+
+// The table of dissimilar rollers' estimate (contact's, estimate_levels.cpp; rule (a')'s, changes_before_point):
+// P_H/P2 (its levels Richardson's where `lambda_extrapolated`), xi, the stick zone's ends with floor `ends` (`finer_ends`
+// one level finer), and with `two_zones` the second stick zone's ends, their bounds folded into c0's and the start's
+// (each reported bound the larger of the two zones', formulation 7 "What c0 means").
+std::vector<estimated_quantity> zone_ends_table(const rounding_floors& floor, double ends, double finer_ends,
+                                                bool lambda_extrapolated, bool two_zones);
 
 // 8(q) rule (a'): what the full-coupling estimate of rung m (levels m/4, m/2, m) holds for certain from its levels m/4
 // (`quarter`) and m/2 (`half`), solved before its point (point_model::levels_before) and read again by its estimate:
