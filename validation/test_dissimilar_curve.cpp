@@ -107,10 +107,10 @@ TEST(DissimilarCurve, ContinuousThroughTheBrakedTransition) {
 }
 
 namespace {
-// Each row of a curve continued in the load (swept_curve, continued_curve) against the point solved alone
-// (a fresh contact: no previous row, the zone search from its own starts): the same structure, and the creep and
-// the zone ends within the point's own error estimate (in fact to Newton's resolution, printed). Returns the
-// largest |xi_row - xi_alone| over the rows.
+// Each row of a curve continued in the load (swept_curve, creep_curve with curve_rows::continued) against the point
+// solved alone (a fresh contact: no previous row, the zone search from its own starts): the same structure, and the
+// creep and the zone ends within the point's own error estimate (in fact to Newton's resolution, printed). Returns
+// the largest |xi_row - xi_alone| over the rows.
 double expect_rows_are_points(const std::vector<double>& loads, const std::vector<curve_point>& rows) {
     EXPECT_EQ(rows.size(), loads.size());
     double largest = 0.0;
@@ -171,7 +171,7 @@ TEST(DissimilarCurve, ContinuedThroughStructureChanges) {
         for (int way = 0; way < 2; ++way) {
             if (way == 1) std::reverse(loads.begin(), loads.end());
             contact c = scene(beta_al_st);
-            const std::vector<curve_point> rows = continued_curve(c, loads);
+            const std::vector<curve_point> rows = creep_curve(c, loads, {}, {}, 0, curve_rows::continued);
             int changes = 0;
             for (std::size_t i = 1; i < rows.size(); ++i)
                 if (rows[i].solution.layout.zones.size() != rows[i - 1].solution.layout.zones.size()) ++changes;

@@ -64,11 +64,9 @@ std::vector<double> curve_loads(int points, double f, double beta_d) {
     return loads;
 }
 
-namespace {
-// The rows of creep_curve; `continued`: each row after an answered one started from it (contact::continued_point).
-std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, bool continued,
-                                 const std::function<void()>& before_row, const refusal_before_solve& refused_at_once,
-                                 int given_n) {
+std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
+                                     const std::function<void()>& before_row,
+                                     const refusal_before_solve& refused_at_once, int given_n, curve_rows start) {
     std::vector<curve_point> rows;
     rows.reserve(loads.size());
     const tangential_solution* previous = nullptr;
@@ -80,7 +78,8 @@ std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, b
             continue;
         }
         try {
-            tangential_solution s = continued && previous ? c.continued_point(Q, *previous) : c.point(Q);
+            tangential_solution s =
+                start == curve_rows::continued && previous ? c.continued_point(Q, *previous) : c.point(Q);
             const auto e = c.estimate(s);
             rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
             previous = &rows.back().solution;   // rows reserved: the address stays
@@ -95,7 +94,6 @@ std::vector<curve_point> rows_at(contact& c, const std::vector<double>& loads, b
     }
     return rows;
 }
-}  // namespace
 
 std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row,
                                      const refusal_before_solve& refused_at_once, int given_n) {
@@ -104,8 +102,8 @@ std::vector<curve_point> swept_curve(contact& c, int points, const std::function
     // Dissimilar rollers have no single stick end to sweep (8(g), 8(j)): their rows at curve_loads, each started
     // from the previous row's zones (a continuation in the load, 8(j) 10).
     if (c.materials().beta_d != 0.0)
-        return continued_curve(c, curve_loads(points, c.friction(), c.materials().beta_d), before_row, refused_at_once,
-                               given_n);
+        return creep_curve(c, curve_loads(points, c.friction(), c.materials().beta_d), before_row, refused_at_once,
+                           given_n, curve_rows::continued);
     std::vector<curve_point> rows;
     rows.reserve(points);
     for (int i = 0; i < points; ++i) {
@@ -122,18 +120,6 @@ std::vector<curve_point> swept_curve(contact& c, int points, const std::function
         }
     }
     return rows;
-}
-
-std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
-                                     const std::function<void()>& before_row,
-                                     const refusal_before_solve& refused_at_once, int given_n) {
-    return rows_at(c, loads, false, before_row, refused_at_once, given_n);
-}
-
-std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
-                                         const std::function<void()>& before_row,
-                                         const refusal_before_solve& refused_at_once, int given_n) {
-    return rows_at(c, loads, true, before_row, refused_at_once, given_n);
 }
 
 }  // namespace roughroll

@@ -55,14 +55,14 @@ resolution_error advised_at_given_n(const unadvised_refusal& refusal, int n);
 // asked after `before_row`: a row it gives a line for is refused with that line, no level solved.
 // `given_n`: the n the user gave the contact, whose rows refused by an unadvised_refusal get advised_at_given_n's
 // line; 0 for a ladder's rung (the ladder solves such a row again and advises where no rung answers it).
+// `start`: alone, each row searched from its own starts; continued, each row after an answered one started from that
+// row's zones (contact::continued_point, a continuation in the load: dissimilar rollers' swept curve), the same points
+// to Newton's resolution.
+enum class curve_rows { alone, continued };
 std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& loads,
                                      const std::function<void()>& before_row = {},
-                                     const refusal_before_solve& refused_at_once = {}, int given_n = 0);
-// creep_curve with each row after an answered one started from that row's zones (contact::continued_point,
-// a continuation in the load: dissimilar rollers' swept curve); the same points to Newton's resolution.
-std::vector<curve_point> continued_curve(contact& c, const std::vector<double>& loads,
-                                         const std::function<void()>& before_row = {},
-                                         const refusal_before_solve& refused_at_once = {}, int given_n = 0);
+                                     const refusal_before_solve& refused_at_once = {}, int given_n = 0,
+                                     curve_rows start = curve_rows::alone);
 // The row of creep_curve for a load Q refused by `why`.
 curve_point refused_load(double Q, double f, const resolution_error& why);
 
@@ -70,7 +70,7 @@ curve_point refused_load(double Q, double f, const resolution_error& why);
 // point, no root search; the loads are Q(c0), dense near f as in curve_loads. For dissimilar
 // rollers (beta_D != 0, Johnson's level; check_sweepable refuses coupling "full") no c0 parametrises
 // the zones (8(g)): the rows of creep_curve at curve_loads(points, f, beta_D), each continued from the
-// previous answered row (contact::continued_point), the same points to Newton's resolution.
+// previous answered row (curve_rows::continued), the same points to Newton's resolution.
 // `refused_at_once`, `given_n`: as creep_curve's, for the rows of dissimilar rollers (a load each; never asked of a row
 // swept in c0).
 std::vector<curve_point> swept_curve(contact& c, int points, const std::function<void()>& before_row = {},
