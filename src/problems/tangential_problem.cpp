@@ -69,13 +69,6 @@ tangential_solution zone_solution(double f, double start, double c0, double xi, 
     return s;
 }
 
-tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b) {
-    // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G.
-    std::vector<double> psi_b = pressure_b;
-    for (double& bj : psi_b) bj *= -f;
-    return zone_solution(f, -1.0, 1.0, 0.0, 0.0, std::move(psi_b));
-}
-
 std::vector<double> stick_traction(const tangential_solution& s, const std::vector<double>& r) {
     // The U-series summed for all points at once (the batched Clenshaw of quadrature.hpp, bit for bit the scalar).
     const std::size_t count = r.size();
@@ -160,7 +153,12 @@ tangential_solution tangential_problem::at_stick_end(double c0, bool checked, bo
     return s;
 }
 
-tangential_solution tangential_problem::full_stick(double) { return full_stick_solution(f_, normal().b); }
+tangential_solution tangential_problem::full_stick(double) {
+    // c0 = 1: q0 = -f p solves the stick equation with xi = 0, since L1[p] = -G (2(g)).
+    std::vector<double> psi_b = normal().b;
+    for (double& bj : psi_b) bj *= -f_;
+    return zone_solution(f_, -1.0, 1.0, 0.0, 0.0, std::move(psi_b));
+}
 
 tangential_solution tangential_problem::gross_sliding(double forcing) {
     if (carter_) return carter_at(f_);

@@ -48,11 +48,6 @@ tangential_solution zone_solution(double f, double start, double c0, double xi, 
 double stick_traction(const tangential_solution& s, double r);
 std::vector<double> stick_traction(const tangential_solution& s, const std::vector<double>& r);
 
-// Full stick, the special load Q = 0 solved without a system (docs/formulation.md 2(g)), for any
-// tangential solver: c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the pressure's,
-// `pressure_b`). |Q| = f is gross sliding (gross_sliding.hpp).
-tangential_solution full_stick_solution(double f, const std::vector<double>& pressure_b);
-
 // One driver for every stick-zone system, since the root search in c0, the special loads (2(g)), the mirror
 // (apply_load_sign), the traction (3.15), the slip velocity (3.6) and the checks (3.3)-(3.4) are the same for all.
 // A system supplies its equation on a stick zone [start, c0] (`on_zone`), the two special loads, the slip velocity
@@ -101,7 +96,7 @@ protected:
     // The stick equation on the zone [start, c0] (r = start + rho (t + 1), rho = (c0 - start)/2), slip on both
     // sides in the direction of Q, with Dundurs' forcing b; the |Q| branch, unchecked. `near`: as at_stick_end's.
     virtual tangential_solution on_zone(double start, double c0, double forcing, bool near) = 0;
-    // Q = 0: c0 = 1, q0 = -f p, xi = 0 (full_stick_solution, 2(g)).
+    // Q = 0, solved without a system (2(g)): c0 = 1, xi = 0, q0 = -f p (psi's coefficients -f times the pressure's).
     virtual tangential_solution full_stick(double forcing);
     // |Q| = f (2(g)): the paper's zone shrunk onto r = -1, Carter's where smooth; with Dundurs' forcing the stick
     // point r*, where w = b p + f G is least (8(s), as 8(g); gross_sliding.hpp).
