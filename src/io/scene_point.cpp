@@ -96,6 +96,19 @@ std::optional<std::string> beyond_every_n(const scene& s, double Q) {
 }
 
 namespace {
+// Full coupling of a smooth pair (settled_contact): the dimensionless contact does not depend on the width, which
+// follows from the point's lambda alone (a = a_H sqrt(lambda), docs/formulation.md 8(e) "The width of a physical
+// scene"; contact_width.cpp).
+bool width_from_point(const scene& s) { return width_follows_tangential_load(s) && smooth(*s.physical); }
+
+// That width from c's last point (its coupled pressure's lambda: c.point(Q) solved, nothing solved here); the scene's
+// surfaces at it, as settled_contact sets them.
+contact_width width_of_point(scene& s, const contact& c) {
+    const contact_width w = find_width(*s.physical, [&c](const roughness&) { return c.normal().lambda; }, {}, true);
+    s.surfaces = roughness_at(*s.physical, w.a);
+    return w;
+}
+
 // The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
 contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
                         const std::function<void()>& checkpoint, const std::shared_ptr<level_store>& levels = nullptr) {
@@ -127,18 +140,31 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
 // that its point is today's. `Q`: the load of a point, or of a row whose width follows the load
 // (settled_contact, as without the ladder); none for the rows of a curve whose width does not
 // (settle_width alone, as curve_of without the ladder). `checkpoint`: as solve_point's.
+// `after_point`: a smooth pair's width at full coupling is left to the rung that answers (answered), so that building
+// a rung solves nothing: the ladder's rule (a') of docs/formulation.md 8(q) then reads the top rung's levels before its
+// point (settled_contact would solve that point to find the width first), and a rung whose point fails is not solved
+// twice (once to build it for level_ladder::point's beyond_every_n, once again in the climb). The numbers are the
+// same: the width is the answer's lambda's, as settled_contact finds it from the same point.
 struct scene_rungs {
     scene given;
     std::optional<double> Q;
     std::function<void()> checkpoint;
     std::map<int, std::pair<scene, std::optional<contact_width>>> settled;
+    bool after_point = false;
 
     std::unique_ptr<contact> operator()(int n, const std::shared_ptr<level_store>& levels) {
         scene at = given;
         if (n != at.solver.nodes()) at.solver.n = n;
         std::optional<contact_width> width;
         std::unique_ptr<contact> c;
-        if (Q) {
+        if (Q && after_point && width_from_point(at)) {
+            // Hertz's width checked against the radius before any solve, as find_width checks it first (lambda = 1:
+            // a = a_H); the answer's own width is checked again by answered().
+            find_width(*at.physical, [](const roughness&) { return 1.0; }, {}, true);
+            c = std::make_unique<contact>(
+                contact_internals::with_levels(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels));
+            c->set_checkpoint(checkpoint);
+        } else if (Q) {
             c = std::make_unique<contact>(settled_contact(at, width, *Q, checkpoint, levels));
         } else {
             width = settle_width(at);
@@ -148,6 +174,13 @@ struct scene_rungs {
         }
         settled.insert_or_assign(n, std::make_pair(std::move(at), width));
         return c;
+    }
+
+    // Rung n's scene and width, c its contact after its point answered (where the width was left to it, from c's point).
+    std::pair<scene, std::optional<contact_width>>& answered(int n, const contact& c) {
+        auto& rung = settled.at(n);
+        if (!rung.second && Q && after_point && width_from_point(rung.first)) rung.second = width_of_point(rung.first, c);
+        return rung;
     }
 };
 
@@ -169,13 +202,13 @@ scene_point solve_point(scene s, const std::optional<load_given>& load, const st
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     if (s.solver.n == 0) {  // the ladder chooses n (problems/level_ladder.hpp)
-        scene_rungs rungs{s, Q, checkpoint, {}};
+        scene_rungs rungs{s, Q, checkpoint, {}, true};
         level_ladder ladder = ladder_of(s, rungs);
         refuse_beyond_every_n(s, Q);
         level_ladder::answer a = ladder.point(Q);
-        const double seconds = since_start();
         std::unique_ptr<contact> c = ladder.release(a.n);
-        auto& [settled, width] = rungs.settled.at(a.n);
+        auto& [settled, width] = rungs.answered(a.n, *c);
+        const double seconds = since_start();
         return {std::move(settled), width, std::move(*c), std::move(a.solution), seconds, std::move(a.estimate)};
     }
     std::optional<contact_width> width;

@@ -61,7 +61,7 @@ const dissimilar& contact::materials() const { return impl_->materials_; }
 
 void contact::set_checkpoint(std::function<void()> hook) {
     impl_->hook_ = hook;  // a model of the store calls the hook at work (level_store.hpp)
-    if (!impl_->store_ || !impl_->model_->shareable()) impl_->model_->set_checkpoint(std::move(hook));
+    if (!impl_->store_ || !impl_->model_->shared_by_rungs()) impl_->model_->set_checkpoint(std::move(hook));
 }
 
 const normal_solution& contact::normal() const { return impl_->normal(); }

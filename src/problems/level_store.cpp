@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "roughroll/model/kernel.hpp"
 #include "roughroll/problems/point_model.hpp"
 
 namespace roughroll {
@@ -10,13 +11,18 @@ namespace roughroll {
 level_store::level_store() = default;
 level_store::~level_store() = default;
 
+method level_store::computed_by(const roughness& surfaces, method how) {
+    const bool smooth = kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty();
+    return how == method::extrapolated && smooth ? level_of(how) : how;
+}
+
 point_model& level_store::model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
                                 std::unique_ptr<point_model>& own) {
     for (const auto& [at, m] : shared_)
         if (at == k) return *m;
     own = make();
     ++made_[k.options.nodes()];
-    if (!own->shareable()) return *own;
+    if (!own->shared_by_rungs()) return *own;
     own->share_levels_in(this);
     own->set_checkpoint([this] { checkpoint(); });
     return *shared_.emplace_back(k, std::move(own)).second;

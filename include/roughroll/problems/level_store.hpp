@@ -43,8 +43,9 @@ public:
         double f;
         dissimilar materials;
         solver_options options;
-        // Equal in every field (n as nodes(), an empty tolerance as default_tolerance); fields() takes the key and each
-        // value in it apart by a structured binding, so that a field added to any of them stops the build there.
+        // Equal in every field (n as nodes(), an empty tolerance as default_tolerance, 'extrapolated' on smooth rollers as
+        // 'product': computed_by); fields() takes the key and each value in it apart by a structured binding, so that a
+        // field added to any of them stops the build there.
         auto fields() const {
             const auto term = [](const roughness_term& t) {
                 const auto& [T, A] = t;
@@ -59,11 +60,18 @@ public:
             const auto& [beta_d, coupling] = scene_materials;
             [[maybe_unused]] const auto& [n, how, zones, tolerance] = scene_options;
             return std::tuple_cat(cylinder(cylinder1), cylinder(cylinder2),
-                                  std::make_tuple(friction, beta_d, coupling, scene_options.nodes(), how, zones,
+                                  std::make_tuple(friction, beta_d, coupling, scene_options.nodes(),
+                                                  computed_by(scene_surfaces, how), zones,
                                                   tolerance.value_or(default_tolerance)));
         }
         bool operator==(const key& other) const { return fields() == other.fields(); }
     };
+    // The method a model's numbers are computed by: 'extrapolated' on smooth rollers is its level method 'product' (one
+    // level is exact: point_model.hpp's extrapolates), so that a rung's own model (the scene's default method) is the
+    // level of the same n the next rung asks for (issue 24, cost; full coupling's one chain, point_model::shared_by_rungs).
+    // The model made first keeps its own method for what it reports (JSON "method"): a ladder makes rung n's model
+    // before any rung asks for a level n.
+    static method computed_by(const roughness& surfaces, method how);
     level_store();  // out of line, as the destructor: point_model is complete only in level_store.cpp
     level_store(const level_store&) = delete;
     level_store& operator=(const level_store&) = delete;

@@ -111,6 +111,16 @@ public:
     // level"; the paper's root from n/4's, Johnson's zones from the coarser level's), so sharing it would move
     // the next rung's numbers.
     virtual bool shareable() const { return false; }
+    // Whether a ladder's rungs share this model as a level (level_store): shareable() models, and full coupling's
+    // (issue 24, cost; docs/formulation.md 8(q) "One chain of levels"). A full-coupling level's point starts its
+    // alternation from the level below (8(e) "The start from the coarser level"), so its numbers depend on the chain
+    // that reached it; a ladder climbs its rungs in order (128, 256, ...), so rung 2n's levels n/2, n are rung n's
+    // own, as solved there, and rung 2n's level 2n starts from rung n's point: the levels of one chain n/4 .. 2n, each
+    // solved once. The numbers differ from an explicit n's (whose chain starts at n/4 from Johnson's point) by the
+    // alternation's and Newton's stopping rules (measured within 1e-10 of the ends, inside every estimate), and are
+    // the same whatever else the ladder asked, as rung 2n is only ever reached through rung n. Rule (a) of 8(q)
+    // becomes exact: rung 2n's levels n/2, n are rung n's, not solved again.
+    bool shared_by_rungs() const { return shareable() || structure() == estimate_structure::full_coupling; }
     // The ladder's store where this model's levels are asked for first (level_store.hpp: it outlives this model).
     void share_levels_in(level_store* store) { store_ = store; }
 
