@@ -135,13 +135,20 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s
 // (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series' closed form, 8(o)). On a
 // blended zone the blend's own (1 +- t)^(3/2) kinks join q too (8(r)): its part 2 f p (Theta - Theta_3), rising on
 // the first five-zone stick zone (and the driven one), falling on the second, leaves the smoother Theta_3 on the
-// right side; without it the entry converged at order 1 (8(r)). Null elsewhere, where the old right side beta_D p1
-// stays: gross sliding (q = 0, nothing to carry) and rough rollers (the layer terms int p_q^0 K2* in (D1) and
-// int p_q^0 (K2* - K1*) in G, derived in 8(o), not built).
+// right side; without it the entry converged at order 1 (8(r)). Rough rollers carry them on three zones (braked and
+// driven) with the layer terms K2[p_q^0] on the normal right side and (K2 - K1)[p_q^0] in G (8(o), "Rough rollers";
+// pressure_kinks::add_layers). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
+// to carry) and rough rollers' five zones (measured in 8(o): free rolling of the rough pair cost 2.6 to 3.3 times the
+// CPU with the kinks, and its levels' changes at n = 64, 128 were larger, not smaller).
 std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
-                                               bool smooth, const normal_solution& source_normal, double f,
-                                               bool plateau) {
-    if (!smooth) return nullptr;
+                                               const kernel& k1, const kernel& k2,
+                                               const normal_solution& source_normal, double f, bool plateau) {
+    const bool smooth = k1.empty() && k2.empty();
+    if (!smooth && s.layout.stick_zones() == 2) return nullptr;
+    const auto layered = [&](std::shared_ptr<pressure_kinks> k) {
+        if (!smooth) k->add_layers(k2, k1);
+        return k;
+    };
     // The blend's kinks of the stick zone [start, c0], with the sign of its rise (8(r)).
     const auto blend_of = [&source_normal, f](double start, double c0, double rise) {
         const double rho = 0.5 * (c0 - start);
@@ -180,7 +187,7 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
     // 2 f p (Theta - Theta_3) joins q here, leaving the smoother blend Theta_3 on the right side (8(r)).
     k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b,
                 s.layout.opposite() ? blend_of(s.start(), s.c0(), 1.0) : std::function<double(double)>{});
-    return k;
+    return layered(std::move(k));
 }
 }  // namespace
 
@@ -223,8 +230,15 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // 8(l) step 0: the kinks of p^(k) from q of p1^(k-1), the same iterate as beta_D p1^(k-1).
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
             auto it = std::make_unique<iterate>(iterate{
-                normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, std::move(kinks)), nullptr, nullptr, {}});
+                normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, kinks), nullptr, nullptr, {}});
             it->normal.how = johnson.how;
+            // Rough rollers (8(o)): G = -L1[p] = (2/pi) lambda (r + e) + beta_D p1 + (K2 - K1)[p], whose part of
+            // phi's series the tangential solver tabulates itself (convolution_table) and whose part of p_q^0 is the
+            // kinks' own table.
+            if (kinks && kinks->layered())
+                it->normal.tangential_term = [coupled, kinks](double r) {
+                    return coupled(r) + kinks->layer_difference(r);
+                };
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
             it->s = step(*it->zones, source, Q, f_, jacobian_);
@@ -232,7 +246,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         };
         std::unique_ptr<iterate> next;
         try {
-            next = solve_step(kinks_of(source, johnson.rule, beta, k1_.empty() && k2_.empty(),
+            next = solve_step(kinks_of(source, johnson.rule, beta, k1_, k2_,
                                        current_ ? current_->normal : start ? start->normal : johnson, f_, plateau));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused

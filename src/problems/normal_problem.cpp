@@ -70,10 +70,6 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
 normal_solution normal_solver::solve(const kernel& k2, const std::function<double(double)>& coupled,
                                      const std::vector<double>& kinks, sweep_cache* cache,
                                      std::shared_ptr<const pressure_kinks> explicit_kinks) {
-    if (explicit_kinks && !k2.empty())
-        throw numerical_error(
-            "full coupling: the pressure's explicit kinks (docs/formulation.md 8(l)) are built for "
-            "smooth rollers only");
     check_resolution(k2, rule_, how_, "K2* (normal kernel)");
     const int n = rule_.n;
     auto kernel_term = std::make_shared<const kernel_operator>(rule_, how_, k2.max_rate(), cache);

@@ -130,8 +130,35 @@ double pressure_kinks::removed(double r) const {
         const double shape = b.shape(r);
         if (shape != 0.0) sum += b.amplitude * std::sqrt((1.0 - r) * (1.0 + r)) * (b.alpha + b.slope * r) * shape;
     }
-    return sum;
+    return normal_layer_ ? sum - (*normal_layer_)(r) : sum;  // 8(o): the right side gains K2[p_q^0]
 }
+
+void pressure_kinks::add_layers(const kernel& k2, const kernel& k1) {
+    if (!plateaus_.empty())
+        throw numerical_error("full coupling: the layer terms of the pressure's kinks are not built for the plateau "
+                              "of five zones (docs/formulation.md 8(o))");
+    if (zones_.empty()) return;
+    // p_q^0 on the pieces between the zone ends (and the edges) is sqrt(1 - r^2) times a polynomial of the zone variable
+    // (inside a zone) or an algebraic function with square roots at the zone's ends (outside): analytic in the cut
+    // map's u (cut_convolution); its degree there is that of the zone's U-series plus one, next to the shortest zone.
+    double narrowest = HUGE_VAL;
+    std::size_t terms = 0;
+    for (const zone& z : zones_) {
+        narrowest = std::min(narrowest, z.rho);
+        terms = std::max(terms, z.b.size());
+    }
+    const cut_convolution::values g = [this](const double* r, double* out, std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i) out[i] = (*this)(r[i]);
+    };
+    const int oscillation = static_cast<int>(terms) + 1;
+    if (!k2.empty()) normal_layer_ = std::make_shared<const cut_convolution>(k2, g, ends(), oscillation, narrowest);
+    const kernel difference = k2.minus(k1);
+    if (!difference.empty())
+        difference_layer_ = std::make_shared<const cut_convolution>(difference, g, ends(), oscillation, narrowest);
+}
+
+double pressure_kinks::layer_difference(double r) const { return difference_layer_ ? (*difference_layer_)(r) : 0.0; }
+double pressure_kinks::layer_normal(double r) const { return normal_layer_ ? (*normal_layer_)(r) : 0.0; }
 
 double pressure_kinks::load() const { return load_; }
 double pressure_kinks::constant() const { return constant_; }

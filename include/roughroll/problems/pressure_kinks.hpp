@@ -17,8 +17,10 @@
 // Five zones carry besides the plateau between their two blended stick zones (add_plateau, 8(p) "The step carried
 // across thin stick zones"), whose H is closed form (blend_plateau): the step 2 f p of beta_D p1 across a zone
 // thinner than the node spacing, which the series saw as a jump.
-// Smooth rollers only: with a layer term, int p_q^0 K2* would join the right side and int p_q^0 (K2* - K1*)
-// the tangential G (not built; full_coupling keeps the old right side there).
+// Rough rollers (docs/formulation.md 8(o), "Rough rollers"; add_layers): with the layer terms L_i = H + K_i the
+// normal solve's right side gains K2[p_q^0] (it goes in through removed(), which the solve takes from beta_D p1)
+// and the tangential G = -L1[p] gains (K2 - K1)[p_q^0] (layer_difference), each tabulated once per kinks
+// (cut_convolution, the zone ends as cuts).
 #pragma once
 
 #include <cstdint>
@@ -35,6 +37,7 @@
 #include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/cauchy_u_table.hpp"
+#include "roughroll/numerics/convolution_table.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
@@ -75,7 +78,15 @@ public:
     // between lo, hi and the zone ends, each mapped by r = (a + b)/2 - (b - a)/2 cos u so that the square
     // roots at its ends (the one-sided terms, sqrt(1 - r^2) at the edges) become smooth in u.
     double integral(double lo, double hi) const;
-    double removed(double r) const;     // beta_D q(r) as carried by p_q^0 (its expansion)
+    // What the normal solve takes from beta_D p1 on its right side: beta_D q(r) as carried by p_q^0 (its expansion),
+    // less the layer term K2[p_q^0](r) with add_layers (8(o): (D1) for phi has -beta_D (p1 - q) - K2[p_q^0] there).
+    double removed(double r) const;
+    // Rough rollers (8(o)): tabulates K2[p_q^0] and (K2 - K1)[p_q^0] for the zones added so far (call it after them;
+    // plateaus are not taken: full_coupling carries rough rollers' kinks on three zones only).
+    void add_layers(const kernel& k2, const kernel& k1);
+    bool layered() const { return normal_layer_ || difference_layer_; }
+    double layer_difference(double r) const;  // (K2 - K1)[p_q^0](r), G's part (0 without add_layers)
+    double layer_normal(double r) const;      // K2[p_q^0](r) (0 without add_layers)
     double load() const;                // int p_q^0 = beta_D int q r/sqrt(1 - r^2)
     double constant() const;            // C of H[p_q^0] = -beta_D q + C
     std::vector<double> ends() const;   // the zone ends (the kinks)
@@ -95,6 +106,7 @@ private:
     std::vector<kinks_plateau> plateaus_;
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
+    std::shared_ptr<const cut_convolution> normal_layer_, difference_layer_;  // add_layers' tables
 };
 
 // W's Cauchy part of p_q^0 times the blend H of a stick zone [s, c] (docs/formulation.md 8(o), "W with the kinks"):
