@@ -143,3 +143,27 @@ TEST(CostS19, PhysicalTopRungRefusedBeforeItsPoint) {
     EXPECT_GT(twin_calls, 0);
     EXPECT_EQ(physical_calls, twin_calls);
 }
+
+// The store's key takes 'extrapolated' on smooth rollers as 'product' (level_store::computed_by), but a model keeps the
+// method it was made with, which its normal reports (JSON "method"): a rung's contact under 'extrapolated' is never
+// given a full-coupling level made first as 'product' (the review of a00e696: a level 2n asked before rung 2n); a
+// level asking for 'product' takes the rung's model. Nothing is solved here (the models' normal problems only).
+TEST(CostS19, ExtrapolatedRungNeverGivenAProductLevel) {
+    const dissimilar pair{beta_al_st, coupling_level::full};
+    const auto store = std::make_shared<level_store>();
+    const contact level = contact_internals::with_levels(roughroll::roughness{}, 0.05,
+                                                         solver_options{64, method::product}, pair, nullptr, store);
+    const contact rung = contact_internals::with_levels(roughroll::roughness{}, 0.05,
+                                                        solver_options{64, method::extrapolated}, pair, nullptr, store);
+    EXPECT_EQ(level.normal().how, method::product);
+    EXPECT_EQ(rung.normal().how, method::extrapolated);
+    EXPECT_EQ(store->made(64), 2);
+    // The other way round the level is the rung's model: made once.
+    const auto other = std::make_shared<level_store>();
+    const contact rung2 = contact_internals::with_levels(roughroll::roughness{}, 0.05,
+                                                         solver_options{64, method::extrapolated}, pair, nullptr, other);
+    const contact level2 = contact_internals::with_levels(roughroll::roughness{}, 0.05,
+                                                          solver_options{64, method::product}, pair, nullptr, other);
+    EXPECT_EQ(other->made(64), 1);
+    EXPECT_EQ(&rung2.normal(), &level2.normal());
+}

@@ -109,6 +109,12 @@ contact_width width_of_point(scene& s, const contact& c) {
     return w;
 }
 
+// Hertz's width a_H checked against the radius, as find_width checks it before any solve (lambda = 1: a = a_H), where
+// the width itself is left to the answer (scene_rungs::after_point); its input_error if a_H > R/10.
+void check_hertz_width(const scene& s) {
+    static_cast<void>(find_width(*s.physical, [](const roughness&) { return 1.0; }, {}, true));
+}
+
 // The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
 contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
                         const std::function<void()>& checkpoint, const std::shared_ptr<level_store>& levels = nullptr) {
@@ -158,9 +164,7 @@ struct scene_rungs {
         std::optional<contact_width> width;
         std::unique_ptr<contact> c;
         if (Q && after_point && width_from_point(at)) {
-            // Hertz's width checked against the radius before any solve, as find_width checks it first (lambda = 1:
-            // a = a_H); the answer's own width is checked again by answered().
-            find_width(*at.physical, [](const roughness&) { return 1.0; }, {}, true);
+            check_hertz_width(at);  // before any solve; the answer's own width is checked by answered()
             c = std::make_unique<contact>(
                 contact_internals::with_levels(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels));
             c->set_checkpoint(checkpoint);

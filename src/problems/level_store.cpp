@@ -18,8 +18,9 @@ method level_store::computed_by(const roughness& surfaces, method how) {
 
 point_model& level_store::model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
                                 std::unique_ptr<point_model>& own) {
+    // An 'extrapolated' asker reports its model's method: never given a 'product' model of the same numbers (computed_by).
     for (const auto& [at, m] : shared_)
-        if (at == k) return *m;
+        if (at == k && (k.options.how != method::extrapolated || m->how() == method::extrapolated)) return *m;
     own = make();
     ++made_[k.options.nodes()];
     if (!own->shared_by_rungs()) return *own;

@@ -69,15 +69,17 @@ public:
     // The method a model's numbers are computed by: 'extrapolated' on smooth rollers is its level method 'product' (one
     // level is exact: point_model.hpp's extrapolates), so that a rung's own model (the scene's default method) is the
     // level of the same n the next rung asks for (issue 24, cost; full coupling's one chain, point_model::shared_by_rungs).
-    // The model made first keeps its own method for what it reports (JSON "method"): a ladder makes rung n's model
-    // before any rung asks for a level n.
+    // The model made first keeps its own method for what it reports (JSON "method"), so an asker under 'extrapolated' (a
+    // rung's contact) is given only a model made under 'extrapolated' (model(): never a level made first as 'product',
+    // e.g. a level 2n asked by rung n's estimate before rung 2n, which no estimate of full coupling asks today); a
+    // 'product' asker (a level) takes either.
     static method computed_by(const roughness& surfaces, method how);
     level_store();  // out of line, as the destructor: point_model is complete only in level_store.cpp
     level_store(const level_store&) = delete;
     level_store& operator=(const level_store&) = delete;
     ~level_store();
 
-    // The model at k: the store's where it is shareable() (made before by any rung, or now by make() and kept), else
+    // The model at k: the store's where it is shared_by_rungs() (made before by any rung, or now by make() and kept), else
     // make()'s, handed over in `own` to the caller, who owns it. Counted at k's n when made.
     point_model& model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
                        std::unique_ptr<point_model>& own);

@@ -48,6 +48,7 @@ public:
     virtual ~point_model() = default;
 
     int nodes() const { return options_.nodes(); }
+    method how() const { return options_.how; }  // the method it was made with (what its normal reports)
     // This level's own normal solution (lambda not extrapolated); at full coupling, after a point,
     // that point's coupled pressure.
     virtual const normal_solution& normal() const = 0;
@@ -117,9 +118,12 @@ public:
     // that reached it; a ladder climbs its rungs in order (128, 256, ...), so rung 2n's levels n/2, n are rung n's
     // own, as solved there, and rung 2n's level 2n starts from rung n's point: the levels of one chain n/4 .. 2n, each
     // solved once. The numbers differ from an explicit n's (whose chain starts at n/4 from Johnson's point) by the
-    // alternation's and Newton's stopping rules (measured within 1e-10 of the ends, inside every estimate), and are
-    // the same whatever else the ladder asked, as rung 2n is only ever reached through rung n. Rule (a) of 8(q)
-    // becomes exact: rung 2n's levels n/2, n are rung n's, not solved again.
+    // alternation's and Newton's stopping rules (measured within 1e-10 of the ends, inside every estimate). For one load
+    // (a point: its own ladder and store) rung 2n is only ever reached through rung n, so the answer does not depend on
+    // what else was asked. A curve's rows share one ladder (ladder_curve): its levels, as each rung's own levels did
+    // before they were shared, keep the previous row's zones (Johnson's five zones continued, zone_start.hpp) and may
+    // start a later row's search from them, so a row may differ from the point at its load by Newton's tolerance.
+    // Rule (a) of 8(q) becomes exact: rung 2n's levels n/2, n are rung n's, not solved again.
     bool shared_by_rungs() const { return shareable() || structure() == estimate_structure::full_coupling; }
     // The ladder's store where this model's levels are asked for first (level_store.hpp: it outlives this model).
     void share_levels_in(level_store* store) { store_ = store; }
