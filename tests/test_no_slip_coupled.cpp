@@ -20,20 +20,13 @@
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/no_slip_coupled.hpp"
 
+#include "rough_pair.hpp"
+
 using namespace roughroll;
+using roughroll_test::beta_pair;
+using roughroll_test::rough_pair;
 
 namespace {
-
-constexpr double beta_pair = 0.143834;  // aluminium on steel (8(a))
-
-// data/aluminium-on-steel-rough.toml's layer at a = a_H (its header): roller 1, (T, A) = (1.08, 1.19) tangential,
-// (3.9, 4.5) normal; roller 2 smooth.
-roughness rough_pair() {
-    roughness r;
-    r.cylinder1.tangential = {1.08, 1.19};
-    r.cylinder1.normal = {3.9, 4.5};
-    return r;
-}
 
 // 8(p)'s closed form, written from its own formulas: F = (2/pi) lambda cosh(pi eps) sqrt(1 - r^2) exp(i eps Lambda).
 double closed_pressure(double eps, double r) {

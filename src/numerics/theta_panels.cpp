@@ -25,6 +25,30 @@ std::vector<double> theta_panels::values_to_coefficients() {
     return c;
 }
 
+// Values at the points -> int_{-1}^{s_i} of their interpolant: the coefficients of the
+// antiderivative, int T_k = T_{k+1}/(2(k+1)) - T_{k-1}/(2(k-1)) (k >= 2), int T_1 = T_2/4,
+// int T_0 = T_1, made zero at s = -1, evaluated at the points.
+std::vector<double> theta_panels::integration_matrix() {
+    const std::vector<double> to_coefficients = values_to_coefficients();
+    const int size = degree + 1;
+    std::vector<double> q(size * size);
+    for (int col = 0; col < size; ++col) {
+        std::vector<double> c(degree + 3, 0.0), big(degree + 2, 0.0);
+        for (int k = 0; k <= degree; ++k) c[k] = to_coefficients[k * size + col];
+        big[1] = c[0] - 0.5 * c[2];
+        for (int k = 2; k <= degree + 1; ++k) big[k] = (c[k - 1] - c[k + 1]) / (2.0 * k);
+        double at_minus_one = 0.0;
+        for (int k = 1; k <= degree + 1; ++k) at_minus_one += (k % 2 == 0 ? 1.0 : -1.0) * big[k];
+        big[0] = -at_minus_one;
+        for (int i = 0; i < size; ++i) {
+            double sum = 0.0;
+            for (int k = 0; k <= degree + 1; ++k) sum += big[k] * std::cos(M_PI * k * (degree - i) / degree);
+            q[i * size + col] = sum;
+        }
+    }
+    return q;
+}
+
 double theta_panels::ellipse_bound(double half_length, const std::function<double(double y, double x)>& modulus) {
     // min over a grid of rho of 4 M rho^-N/(rho - 1), M the bound on the ellipse of half-axes
     // y = h (rho - 1/rho)/2 (imaginary) and x = h (rho + 1/rho)/2 (real) around the panel.

@@ -23,6 +23,9 @@ public:
     static double lobatto(int i);
     // Values at the N + 1 points -> coefficients c_k of sum_k c_k T_k; row-major (N+1) x (N+1).
     static std::vector<double> values_to_coefficients();
+    // Values at the N + 1 points -> int_{-1}^{s_i} of their interpolant at every point i; row-major (N+1) x (N+1)
+    // (the spectral integration of convolution_table's L and R on a panel).
+    static std::vector<double> integration_matrix();
     // The theorem's bound minimised over rho, for panels of half-length h: min_rho 4 M rho^-N/(rho - 1),
     // M = modulus(y, x) bounding f on the ellipse of half-axes y = h (rho - 1/rho)/2 (imaginary) and
     // x = h (rho + 1/rho)/2 (real).

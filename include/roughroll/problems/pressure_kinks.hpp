@@ -37,7 +37,7 @@
 #include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/cauchy_u_table.hpp"
-#include "roughroll/numerics/convolution_table.hpp"
+#include "roughroll/numerics/cut_convolution.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
