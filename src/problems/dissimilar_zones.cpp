@@ -426,11 +426,27 @@ double dissimilar_zones::load_under_H(double start, double c0) {
            load_between(solver_.normal(), c0, 1.0);
 }
 
+std::vector<double> dissimilar_zones::blended_G(const std::vector<double>& r, const std::function<double(double)>& phi) {
+    std::vector<double> g = solver_.G(r);
+    const normal_solution& normal = solver_.normal();
+    if (normal.projected.empty() || !k1_.empty()) return g;
+    for (std::size_t m = 0; m < r.size(); ++m) {
+        const double weight = phi(r[m]);
+        if (weight != 0.0) g[m] += weight * (normal.projected_minus_hilbert(r[m]) - g[m]);
+    }
+    return g;
+}
+
 tangential_solution dissimilar_zones::blended(double start, double c0, double b) {
-    // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f G - 2 f W on the
-    // stick zone, i.e. the right side of solve_on_zone (xi' + f G + b p) plus -2 f (G + W).
+    // 8(g) in the |Q| frame, leading slip -1, trailing +1: L1[q] = xi' + b p - f L1[p S] on the stick zone, S = 2 H - 1.
+    // L1[p S] = L1[p_d S] + L1[(p - p_d) S] with L1[p_d S] = G_d + 2 W from the discrete p_d, and the second term as
+    // S(r) L1[p - p_d] = -S (G - G_d) (8(u)): at each end the slip side beyond it (S = +1 beyond the exit, -1 before
+    // the entry) is then read through G's formula, which carries the pressure's kinks exactly, and p_d's residual
+    // there drops out. So L1[p S] = G + 2 W - 2 H (G - G_d) = 2 G_H + 2 W - G, G_H = (1 - H) G + H G_d, and the
+    // right side is that of solve_on_zone (xi' + f G + b p) plus -2 f (G_H + W). (With G_H = G the projection's residual
+    // of the kink beyond the exit reached c: order 1, 8(u).)
     const std::vector<double> r = solver_.collocation_points(start, c0);
-    const std::vector<double> g = solver_.G(r), w = W(r, start, c0);
+    const std::vector<double> g = blended_G(r, [&](double x) { return H(x, start, c0); }), w = W(r, start, c0);
     std::vector<double> extra(r.size());
     for (std::size_t m = 0; m < r.size(); ++m) extra[m] = -2.0 * f_ * (g[m] + w[m]);
     tangential_solution s = solver_.solve_on_zone(start, c0, b, &extra);
@@ -517,8 +533,10 @@ double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
     if (s.layout.layers_neglected()) return layers_neglected_slip_velocity(s.layout, beta_d_, r);  // 8(n)
     const double v = solver_.slip_velocity(s, r);
     if (!s.layout.opposite() || s.sticks(r)) return v;
+    // L1[p S] as on the stick zone (blended): G_H = G on the leading slip zone (H = 0), G_d on the trailing one (8(u)).
     const double x = std::clamp(r, -1.0, 1.0);
-    return v - s.sign * 2.0 * f_ * (solver_.G(x) + W(x, s.start(), s.c0()));
+    const double g = blended_G({x}, [&](double y) { return H(y, s.start(), s.c0()); }).front();
+    return v - s.sign * 2.0 * f_ * (g + W(x, s.start(), s.c0()));
 }
 
 traction_checks dissimilar_zones::check(const tangential_solution& s) {

@@ -37,14 +37,20 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
     // beta_D/f); for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v with the opposite
     // sign and the same ends.
     const std::vector<double> r1 = solver_.collocation_points(s1, c1), r2 = solver_.collocation_points(s2, c2);
-    // solve_on_zone's right side is xi + b p + f G; the blend's is xi + b p - f G - 2 f W1 + 2 f W2.
-    const auto base = [&](const std::vector<double>& r) {
-        const std::vector<double> g = solver_.G(r), w1 = W(r, s1, c1), w2 = W(r, s2, c2);
+    // solve_on_zone's right side is xi + b p + f G; the blend's is xi + b p - f G - 2 f W1 + 2 f W2, at full coupling
+    // with G_H = (1 - phi) G + phi G_d in the second G (8(u)): each zone's exit reads the slip side beyond it, which
+    // holds the pressure's kink, through G's formula. Zone 1 as the driven zone, phi = H1 (G_d at its exit, slip+
+    // beyond; G at its entry); zone 2 phi = 0 (G: slip- beyond its exit), on the whole zone: its entry's side, the
+    // slip+ zone, holds no kink near it, and phi = 1 - H2 there read the exit's kink one zone width away through p_d
+    // (s2 moved by up to 2e-6, 8(u)).
+    const auto base = [&](const std::vector<double>& r, bool first) {
+        const std::vector<double> g = first ? blended_G(r, [&](double x) { return H(x, s1, c1); }) : solver_.G(r),
+                                  w1 = W(r, s1, c1), w2 = W(r, s2, c2);
         std::vector<double> e(r.size());
         for (std::size_t m = 0; m < r.size(); ++m) e[m] = -2.0 * f_ * (g[m] + w1[m] - w2[m]);
         return e;
     };
-    const std::vector<double> base1 = base(r1), base2 = base(r2);
+    const std::vector<double> base1 = base(r1, true), base2 = base(r2, false);
     // The other zone's system's right side: its base plus -L1[q_k] at its points, -L1[q_k] = v_k - (xi_k + f G) with
     // v_k zone k's own slip velocity without its forcing b p (which v_k would add and this take away again: at full
     // coupling a series of n terms at every point).
@@ -114,11 +120,23 @@ double dissimilar_zones::traction(const five_zone_solution& s, double r) {
 }
 
 double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
-    // v = xi + b p - f G - 2 f W1 + 2 f W2 - L1[q1] - L1[q2], with -L1[q_k] = v_k - (xi_k + b p + f G).
+    // v = xi + b p + f G - 2 f (G_H + W1 - W2) - L1[q1] - L1[q2], with -L1[q_k] = v_k - (xi_k + b p + f G). Next to each
+    // stick zone G_H is that zone's (five_zone_system), the form its discrete q solves, with which v vanishes like
+    // (r - c)^(1/2) beyond an exit and (s - r)^(3/2) before an entry: G on the leading slip- zone (zone 1's entry) and
+    // the trailing one (zone 2's exit). The slip+ zone follows zone 1's exit (G_d) and precedes zone 2's entry (G):
+    // G_H = G + X (G_d - G), X = 1 - 35 u^4 + 84 u^5 - 70 u^6 + 20 u^7, u = (r - c1)/(s2 - c1), 1 - X = O(u^4) at c1 and
+    // X = O((1 - u)^4) at s2, below v's own orders there (8(u)). One form on the whole slip+ zone would leave
+    // 2 f (G - G_d) at one of its ends: zone 1's on all of r < s2 failed the slip check at n = 256 (8(u)).
     if ((r >= s.s1 && r <= s.c1) || (r >= s.s2 && r <= s.c2)) return 0.0;
     const double x = std::clamp(r, -1.0, 1.0);
     const double g = solver_.G(x), bp = s.forcing * pressure(x);  // in the frame beta_D > 0
     double v = s.sign * s.xi + bp - f_ * g - 2.0 * f_ * (W(x, s.s1, s.c1) - W(x, s.s2, s.c2));
+    if (r > s.c1 && r < s.s2) {  // G_H - G added apart, so that G_H = G (Johnson's level) leaves v bit for bit
+        const double u = (r - s.c1) / (s.s2 - s.c1);
+        const double X = 1.0 - u * u * u * u * (35.0 + u * (-84.0 + u * (70.0 - 20.0 * u)));
+        const double g_h = blended_G({x}, [X](double) { return X; }).front();
+        if (g_h != g) v -= 2.0 * f_ * (g_h - g);
+    }
     for (const tangential_solution* t : {&s.zone1, &s.zone2}) v += solver_.slip_velocity(*t, x) - (t->xi + bp + f_ * g);
     return s.sign * v;
 }

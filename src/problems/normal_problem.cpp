@@ -27,6 +27,14 @@ double finished_pressure(const normal_solution& s, double series, double r) {
 
 double normal_solution::pressure(double r) const { return finished_pressure(*this, u_series(b, r), r); }
 
+double normal_solution::projected_minus_hilbert(double r) const {
+    // The collocation (4.2) without K2*: -H[phi sqrt(1 - r^2)] = -sum b_j T_{j+1} is a polynomial of degree n, equal to
+    // gamma_0n + (2/pi) lambda r + P_n[...] at n + 1 points, so everywhere; H[p_q^0] = -removed + C (8(l) step 0), and
+    // gamma_0n - C = (2/pi) lambda e (solve() below).
+    const double term = chebyshev_sum(projected, r) + (kinks ? kinks->removed(r) : 0.0);
+    return M_2_PI * lambda * (r + offset) + term;
+}
+
 std::vector<double> normal_solution::pressure(const std::vector<double>& r) const {
     std::vector<double> p(r.size());
     u_series(b, r.data(), p.data(), r.size());
@@ -96,13 +104,14 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
     gsl_vector_set(rhs, n + 1, explicit_kinks ? 1.0 - explicit_kinks->load() : 1.0);
     // (D1): the known beta_D p1 on the right side (docs/formulation.md 8(e) item 3), as its
     // Chebyshev projection of degree n at s_m, not its values there (chebyshev_projection.hpp).
+    std::vector<double> c;  // the projection's coefficients, kept in the solution for -H[p] (8(u))
     if (coupled) {
         // 8(l) step 0: beta_D (p1 - q), the q that p_q^0 carries taken out (its kinks are p_q^0's).
         const pressure_kinks* pk = explicit_kinks.get();
         const std::function<double(double)> right =
             pk ? std::function<double(double)>([&coupled, pk](double r) { return coupled(r) - pk->removed(r); })
                : coupled;
-        const std::vector<double> c = chebyshev_projection(right, kinks, n);
+        c = chebyshev_projection(right, kinks, n);
         for (int m = 0; m <= n; ++m) gsl_vector_set(rhs, m, -chebyshev_sum(c, rule_.collocation[m]));
     }
 
@@ -124,6 +133,8 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
     s.b = u_coefficients(rule_, s.phi);
     if (coupled) {
         s.tangential_term = coupled;
+        // Without K2* the collocation is a polynomial identity (projected_minus_hilbert); with it, at the points only.
+        if (k2.empty()) s.projected = std::move(c);
         // gamma_0n = (2/pi) lambda e (8(c)), + C of H[p_q^0] = -beta_D q + C with p_q^0 (8(l) step 0): C is
         // taken out, so that gamma keeps its meaning (2/pi) lambda e for the whole p, as printed before.
         if (explicit_kinks) s.gamma -= explicit_kinks->constant();

@@ -20,6 +20,8 @@
 //     the ends, so the collocation keeps its order). With H = 0, Theta, 1 on the three zones,
 //     p S = -p + 2 p H, L1[p S] = G + 2 W, W = L1[p H], and
 //       L1[q] = xi' + b p - f G - 2 f W  (stick),  v = xi' + b p - f G - 2 f W - L1[q]  (slip),
+//     at full coupling of smooth rollers with G_H = (1 - H) G + H G_d in place of G, G_d = -L1[p_d] of the discrete
+//     pressure: the kinks of p beyond each end from G's formula alone (8(u));
 //       Q' = f (2 int p H - 1) + rho int q;
 //     W by adaptive quadrature (GSL qagp, the Cauchy part with its singularity subtracted);
 //   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
@@ -98,6 +100,7 @@ void require_checks(const tangential_solution& s);
 // stick [s2, c2], slip -1 (c2, 1], in the frame beta_D > 0 (the exchange of rollers of 8(h) gives
 // beta_D < 0: Q, xi, p1, v and the slip directions change sign, the ends do not). p1 = f p S + q1 + q2 with S = -1 + 2 H1 - 2 H2, H_k rising as Theta over zone k, and
 //   L1[q1 + q2] = xi + beta_D p - f G - 2 f W1 + 2 f W2  on both stick zones,  W_k = L1[p H_k],
+// (at full coupling zone 1 with G_H = (1 - H1) G + H1 G_d in place of G, 8(u)),
 //   Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2.
 // Each zone's system carries its own constant xi_k (the regularising constant of 8(g)'s counting);
 // the four ends solve Q(ends) = Q, psi1(-1) = 0, psi2(-1) = 0, xi1 = xi2.
@@ -243,6 +246,11 @@ private:
     tangential_solution gross_sliding(double b);
     traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
+    // G_H = (1 - phi) G + phi G_d at each r[i] (docs/formulation.md 8(u)), phi = (1 + S)/2 of the blend S: G_d = -L1[p]
+    // of the discrete p (normal_solution::projected_minus_hilbert) where the normal solution keeps its projection and
+    // K1* is empty (smooth rollers at full coupling); G elsewhere, where the two agree (Johnson's level) or G_d is not
+    // known in closed form (rough rollers).
+    std::vector<double> blended_G(const std::vector<double>& r, const std::function<double(double)>& phi);
     double W(double r, double start, double c0);          // L1[p H] of the blended zone
     std::vector<double> W(const std::vector<double>& r, double start, double c0);  // the same at each r[i]
     // W at r from its closed-form Cauchy part (empty: declined): that part by quadrature where empty, + K1*'s terms.

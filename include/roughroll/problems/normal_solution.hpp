@@ -37,11 +37,20 @@ struct normal_solution {
     // Full coupling, docs/formulation.md 8(l) step 0: the explicit term p_q^0 carrying the pressure's
     // one-sided kinks at the zone ends (pressure_kinks.hpp), p = phi sqrt(1 - r^2) + p_q^0. Null otherwise.
     std::shared_ptr<const pressure_kinks> kinks;
+    // Full coupling of smooth rollers: the Chebyshev coefficients c_0..c_n of the projection P_n[beta_D p1 - removed]
+    // the solve put on (D1)'s right side (chebyshev_projection.hpp; `removed` the q that `kinks` carries, 8(l)).
+    // With them -H[p] of this discrete p is known at any r (projected_minus_hilbert). Empty otherwise (K2* present:
+    // the collocation holds (D1) at its points only).
+    std::vector<double> projected = {};
 
     double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2) (4.1), + p_q^0(r) with `kinks`
     // The same at each r[i], bit for bit, the U-series summed for all points at once (the batched Clenshaw of
     // quadrature.hpp): the zone solves and checks take p at a zone's points.
     std::vector<double> pressure(const std::vector<double>& r) const;
+    // -H[p](r) of this discrete p, exactly (up to rounding) where `projected` is set: (2/pi) lambda (r + e)
+    // + P_n[beta_D p1 - removed](r) + removed(r) (docs/formulation.md 8(u)). Beside G's formula, which takes beta_D p1
+    // itself, kinks and all, the two differ by the projection's residual. Only where `projected` is not empty.
+    double projected_minus_hilbert(double r) const;
 };
 
 // The peak of the pressure p(r) of (4.1) on (-1, 1): its value (in units of P2/a) and position r.
