@@ -109,8 +109,9 @@ TEST(DriftS19, DrivenExitHasNoOrderOneDrift) {
     ASSERT_TRUE(pt.solution.checks.hold());
     ASSERT_TRUE(pt.estimate.has_value());
     std::printf("physical n = 512: c0 %.13f, estimate %.3g\n", pt.solution.c0(), pt.estimate->c0);
-    // The physical width moves c0 by less than 1e-8 from the dimensionless scene's (lambda within 2e-3 of 1 here).
-    EXPECT_LE(std::fabs(pt.solution.c0() - c0[1]), pt.estimate->c0 + 1e-8);
+    // A smooth pair's dimensionless problem does not depend on the width (8(e)), so the dimensionless n = 1000 point is
+    // the reference of the physical one (measured distance 0.7e-9).
+    EXPECT_LE(std::fabs(pt.solution.c0() - c0[1]), pt.estimate->c0);
 }
 
 // Free rolling's five zones: zone 1's exit (slip+ beyond it) takes G_d, zone 2's (slip- beyond it) G's formula.

@@ -135,7 +135,7 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
         const double u = (r - s.c1) / (s.s2 - s.c1);
         const double X = 1.0 - u * u * u * u * (35.0 + u * (-84.0 + u * (70.0 - 20.0 * u)));
         const double g_h = blended_G({x}, [X](double) { return X; }).front();
-        if (g_h != g) v -= 2.0 * f_ * (g_h - g);
+        v -= 2.0 * f_ * (g_h - g);
     }
     for (const tangential_solution* t : {&s.zone1, &s.zone2}) v += solver_.slip_velocity(*t, x) - (t->xi + bp + f_ * g);
     return s.sign * v;
