@@ -77,31 +77,49 @@ struct johnson_level {
 // (their blended stick zone, W and the blend's kinks). The two reach one fixed point of level 64's map, each
 // stopping once a step changes lambda, e, xi by 1e-12 and the ends by 1e-10 at most, with successive changes
 // falling by the contraction (0.02-0.07): so they agree to a few times those. The coarser level itself differs
-// by the discretisation (1e-7 and more): a start that leaked into the answer would show.
+// by the discretisation (1e-7 and more): a start that leaked into the answer would show. The braked three zones
+// (Q/f = -0.75) are spectral since 8(w) (the pressure on its weight, the stick zone on its Jacobi weight): level 32
+// is level 64's fixed point to rounding (1e-13) and level 8 within 1e-10 in c0, inside the stop's bounds, where no
+// leak could show: level 4 differs visibly (c0 2.3e-6, xi 1.2e-7) but, beyond the Jacobi switch's 1e-6 (8(v)), takes
+// as many steps as Johnson's point (8); level 8 takes fewer (6). The driven three zones (Q/f = 0.9) keep the
+// square-root weights and level 32 shows both.
 TEST(FullCoupling, StartFromTheCoarserLevelReachesTheSameFixedPoint) {
-    for (const double q : {-0.75, 0.9}) {
-        SCOPED_TRACE(q);
+    struct start_case {
+        double q;
+        int coarse_n;
+        bool differs, fewer;  // the levels differ beyond the bounds; the start takes fewer steps
+    };
+    for (const start_case& t : {start_case{-0.75, 4, true, false}, start_case{-0.75, 8, false, true},
+                                start_case{0.9, 32, true, true}}) {
+        const double q = t.q;
+        const int coarse_n = t.coarse_n;
+        SCOPED_TRACE(std::to_string(q) + ", n = " + std::to_string(coarse_n));
         const double Q = q * f;
-        johnson_level cj(32, Q), fj(64, Q);
-        full_coupling coarse(kernel{}, kernel{}, 32, method::product, f, beta_al_st);
+        johnson_level cj(coarse_n, Q), fj(64, Q);
+        full_coupling coarse(kernel{}, kernel{}, coarse_n, method::product, f, beta_al_st);
         full_coupling from_johnson(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
         full_coupling from_coarse(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
         const tangential_solution c = coarse.solve(cj.hertz, cj.zones, cj.point, false);
         const tangential_solution a = from_johnson.solve(fj.hertz, fj.zones, fj.point, false);
         const tangential_solution b = from_coarse.solve(fj.hertz, fj.zones, fj.point, false, &coarse);
         EXPECT_EQ(from_johnson.summary().start_level, 0);
-        EXPECT_EQ(from_coarse.summary().start_level, 32);
-        EXPECT_LT(from_coarse.summary().iterations, from_johnson.summary().iterations);
+        EXPECT_EQ(from_coarse.summary().start_level, coarse_n);
+        if (t.fewer)
+            EXPECT_LT(from_coarse.summary().iterations, from_johnson.summary().iterations);
+        else
+            EXPECT_LE(from_coarse.summary().iterations, from_johnson.summary().iterations);
         EXPECT_NEAR(b.xi, a.xi, 1e-11);
         EXPECT_NEAR(from_coarse.normal().lambda, from_johnson.normal().lambda, 1e-11);
         EXPECT_NEAR(from_coarse.normal().offset, from_johnson.normal().offset, 1e-11);
         EXPECT_NEAR(b.start(), a.start(), 1e-9);
         EXPECT_NEAR(b.c0(), a.c0(), 1e-9);
         // The levels differ far beyond those bounds.
-        EXPECT_GT(std::fabs(c.xi - a.xi), 1e-9);
-        EXPECT_GT(std::fabs(c.c0() - a.c0()), 1e-7);
-        std::printf("Q/f = %g: steps %d from Johnson's point, %d from level 32; xi %.3g, c0 %.3g apart (levels: %.3g, %.3g)\n",
-                    q, from_johnson.summary().iterations, from_coarse.summary().iterations, b.xi - a.xi,
+        if (t.differs) {
+            EXPECT_GT(std::fabs(c.xi - a.xi), 1e-9);
+            EXPECT_GT(std::fabs(c.c0() - a.c0()), 1e-7);
+        }
+        std::printf("Q/f = %g: steps %d from Johnson's point, %d from level %d; xi %.3g, c0 %.3g apart (levels: %.3g, %.3g)\n",
+                    q, from_johnson.summary().iterations, from_coarse.summary().iterations, coarse_n, b.xi - a.xi,
                     b.c0() - a.c0(), c.xi - a.xi, c.c0() - a.c0());
     }
 }
@@ -160,15 +178,17 @@ TEST(FullCoupling, FreeRollingBeyondEveryNRefusedBeforeAnySolve) {
     EXPECT_FALSE(driven.beyond_every_n(0.3, 1000, default_tolerance).has_value());
 }
 
+// The five zones (Q/f = 0.75) keep the U-series of p (8(l) step 0): phi solves the projection of (D1), checked
+// coefficient by coefficient. The braked three zones (Q/f = -0.75) carry the whole pressure on the weight w_N
+// (8(w): the U-series is zero): ConvergedBrakedPairSolvesTheNormalProblem below checks (D1) itself.
 TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
-    for (const double Q : {-0.75 * f, 0.75 * f}) {
+    for (const double Q : {0.75 * f}) {
         contact c = full(32);
         const tangential_solution s = c.point(Q);
         ASSERT_NE(c.coupling(), nullptr);
         EXPECT_TRUE(c.distribution(s).checks.hold());
         const normal_solution& p = c.normal();
-        // With the pressure's kinks carried by p_q^0 (8(l) step 0: three zones of one direction at Q < 0, the five
-        // zones at Q > 0 with their blends', 8(r)) phi solves the projection of beta_D (p1 - q), q the part p_q^0
+        // With the pressure's kinks carried by p_q^0 (8(l) step 0: the five zones with their blends', 8(r)) phi solves the projection of beta_D (p1 - q), q the part p_q^0
         // carries, and gamma_0n = (2/pi) lambda e + C (the solution's gamma is gamma_0n - C = (2/pi) lambda e).
         ASSERT_NE(p.kinks, nullptr) << Q;
         const std::function<double(double)> coupled = [&](double r) {
@@ -189,6 +209,58 @@ TEST(FullCoupling, ConvergedPairSolvesTheProjectedNormalProblem) {
         // The coupling matters at this size: the pressure is not Johnson's.
         EXPECT_GT(std::fabs(p.offset), 1e-3);
     }
+}
+
+namespace {
+// H[p](x) = (1/pi) PV int_{-1}^{1} p(eta)/(eta - x) d eta by GSL's QAGP: p(x) ln((1 - x)/(1 + x))/pi plus the regular
+// (p(eta) - p(x))/(eta - x), in eta = cos t (p's edge roots become smooth), break points at x and the kinks.
+double hilbert_by_qagp(const std::function<double(double)>& p, double x, const std::vector<double>& kinks) {
+    struct data {
+        const std::function<double(double)>* p;
+        double x, px;
+    } d{&p, x, p(x)};
+    gsl_function F{[](double t, void* v) {
+                       const auto* d = static_cast<const data*>(v);
+                       const double eta = std::cos(t);
+                       return eta == d->x ? 0.0 : ((*d->p)(eta) - d->px) / (eta - d->x) * std::sin(t);
+                   },
+                   &d};
+    std::vector<double> pts{0.0, M_PI, std::acos(x)};
+    for (double r : kinks)
+        if (r > -1.0 && r < 1.0) pts.push_back(std::acos(r));
+    std::sort(pts.begin(), pts.end());
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
+    double result = 0.0, error = 0.0;
+    const int status = gsl_integration_qagp(&F, pts.data(), pts.size(), 1e-13, 0.0, 4000, w, &result, &error);
+    gsl_integration_workspace_free(w);
+    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && error < 1e-12)) << x << ": " << error;
+    return (result + d.px * std::log((1.0 - x) / (1.0 + x))) / M_PI;
+}
+}  // namespace
+
+// The braked three zones at full coupling (8(w): p = w_N phi + p_q, the stick zone on its Jacobi weight, 8(v)): the
+// converged pair solves (D1) itself, H[p](x) + (2/pi) lambda (x + e) + beta_D p1(x) = 0 (8(c)), at points between the
+// collocation points, with H[p] by QUADPACK (hilbert_by_qagp) and p1 the point's own traction. The alternation's stop
+// (1e-12 in lambda, e, xi) and the levels' agreement to rounding from n = 24 (8(w)) leave a residual far below the
+// 1e-9 asserted; the square-root weights' discretisation (n = 32: c0 5e-7 from n = 1000) would show above it.
+TEST(FullCoupling, ConvergedBrakedPairSolvesTheNormalProblem) {
+    const double Q = -0.75 * f;
+    contact c = full(32);
+    const tangential_solution s = c.point(Q);
+    ASSERT_NE(c.coupling(), nullptr);
+    EXPECT_TRUE(c.distribution(s).checks.hold());
+    const normal_solution& p = c.normal();
+    ASSERT_TRUE(p.kinks && p.kinks->weighted());
+    const std::vector<double> ends{s.start(), s.c0()};
+    double largest = 0.0;
+    for (const double x : {-0.93, -0.61, -0.27, 0.013, 0.34, 0.52, 0.71, 0.88, 0.97}) {
+        const double residual = hilbert_by_qagp([&p](double r) { return p.pressure(r); }, x, ends) +
+                                M_2_PI * p.lambda * (x + p.offset) + beta_al_st * c.traction(s, x);
+        EXPECT_LT(std::fabs(residual), 1e-9) << "x = " << x;
+        largest = std::max(largest, std::fabs(residual));
+    }
+    std::printf("braked pair, n = 32: largest residual of (D1) %.3g (zone %.6f .. %.6f)\n", largest, s.start(), s.c0());
+    EXPECT_GT(std::fabs(p.offset), 1e-3);  // the coupling matters at this size
 }
 
 // Q/f = -0.75 (three zones): lambda and e to 1e-7 already at n = 32, xi to 1e-6; with the point
@@ -322,7 +394,9 @@ TEST(FullCoupling, EstimatesBoundTheError) {
 // p_q^0 the changes of c0 from n = 64 to 128 and from 128 to 256 fall faster than order 1.5 and the second is below
 // 1e-6 (20 times below the old program's); the points at n = 128 and 256 agree with the reference extrapolated from
 // n = 256 and 512 at that order (c_512 + (c_512 - c_256)/(2^1.5 - 1), uncertain by |c_512 - c_256|) within their
-// estimates, and so do the stick zone's start, xi and P_H/P2.
+// estimates, and so do the stick zone's start, xi and P_H/P2. Since 8(w) (the pressure on its weight, the stick zone on
+// its Jacobi weight) the braked zones are spectral: both changes of c0 are rounding (4.6e-13, 4.3e-13 measured), and
+// the estimates carry the weighted solve's rounding (estimate_levels.cpp).
 TEST(FullCoupling, ZoneEndsConvergeWithTheKinksCarried) {
     const double Q = -0.75 * f;
     std::vector<tangential_solution> s;
@@ -336,8 +410,8 @@ TEST(FullCoupling, ZoneEndsConvergeWithTheKinksCarried) {
                     lambda.back());
     }
     const double d1 = s[1].c0() - s[0].c0(), d2 = s[2].c0() - s[1].c0();
-    EXPECT_GT(std::fabs(d1) / std::fabs(d2), std::pow(2.0, 1.5)) << d1 << " " << d2;
-    EXPECT_LT(std::fabs(d2), 1e-6);
+    EXPECT_LT(std::fabs(d1), 1e-11) << d1;
+    EXPECT_LT(std::fabs(d2), 1e-11) << d2;
     const double richardson = 1.0 / (std::pow(2.0, 1.5) - 1.0);
     const auto reference = [&](double fine, double coarse) { return fine + (fine - coarse) * richardson; };
     const double c0 = reference(s[3].c0(), s[2].c0()), start = reference(s[3].start(), s[2].start());

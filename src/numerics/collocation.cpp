@@ -25,6 +25,17 @@ void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule) {
     }
 }
 
+void add_cauchy_term(gsl_matrix* a, const jacobi_collocation& rule) {
+    const int n = rule.rule.n;
+    const double* w = rule.rule.weights.data();
+    const double* t = rule.rule.nodes.data();
+    for (int m = 0; m <= n; ++m) {
+        double* row = gsl_matrix_ptr(a, m, 0);
+        const double x = rule.collocation[m];
+        for (int k = 0; k < n; ++k) row[k] += M_1_PI * w[k] / (t[k] - x);
+    }
+}
+
 namespace {
 // The sweep of product integration at the collocation points of `rule`, the Lagrange basis of its
 // nodes integrated against kernels of rates up to max_rate (kernel_sweep.hpp).

@@ -558,7 +558,7 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
         "dissimilar rollers at gross sliding");
 }
 
-tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite) {
+tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite, bool only_this_kind) {
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
         throw unadvised_refusal(no_three_zones(Q, f_,
@@ -576,6 +576,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     std::optional<numerical_error> fault;
     rounding_limits met;
     for (const bool blend : {opposite, !opposite}) {
+        if (only_this_kind && blend != opposite) break;
         try {
             std::optional<tangential_solution> t =
                 zone_solver(zone_operator(blend, b, magnitude)).find(magnitude, false, guess, met);

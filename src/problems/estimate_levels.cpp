@@ -13,6 +13,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/point_estimate.hpp"
+#include "roughroll/problems/pressure_kinks.hpp"
 
 #include "contact_impl.hpp"
 
@@ -137,7 +138,16 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     const bool paper = structure == estimate_structure::paper;
     const double lambda = normal().lambda, strength = kernel_strength();
     const int finest_n = levels_[2] ? (*levels_[2]).nodes() : nodes();
-    const rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
+    rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
+    // Full coupling's weighted pressure (docs/formulation.md 8(w)) is spectral: its levels agree to the dense solve's
+    // rounding, eps |lambda| / rcond (rcond of the factor U, about 1/kappa; the peak's p_rounding, normal_solution.hpp),
+    // which the difference of two levels carries twice (the pair at Q/f = -0.75: P_H/P2's levels 64..512 within 1e-13,
+    // n eps lambda 2.8e-14 at 128 below them; this floor 7e-11).
+    for (int i = 0; i < 3; ++i) {
+        const normal_solution& p = (levels_[i] ? *levels_[i] : *model_).normal();
+        if (p.kinks && p.kinks->weighted() && p.rcond > 0.0)
+            floor.lambda = std::max(floor.lambda, 2.0 * DBL_EPSILON * std::fabs(p.lambda) / p.rcond);
+    }
     // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
     // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
     using q = estimated_quantity;

@@ -13,11 +13,16 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/numerics/gauss_chebyshev.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 
 namespace {
+// 8(v), "The cost": the Jacobi operator from the step whose source is this level's and whose ends moved by at most this
+// (earlier steps, whose ends lag the source's by 1e-5, dip below the checks on that weight and send the zone search to
+// the blended structure).
+constexpr double settled_for_jacobi = 1e-6;
 std::string coupling_at_load(double Q, double f) { return "full coupling at Q/f = " + shortest(Q / f) + ": "; }
 }  // namespace
 
@@ -82,7 +87,7 @@ namespace {
 // A structure the alternation cannot follow is a resolution_error (a curve's refused row), not a fault.
 // `kept`: the five zones' Newton Jacobian from the last step (damped_newton.hpp).
 tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f,
-                         newton_jacobian& kept) {
+                         newton_jacobian& kept, bool one_kind) {
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
         rounding_limits met;
@@ -96,7 +101,12 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
         t = five_zone_point(*v);
         t.Q = Q;
     } else {
-        t = z.solve(Q, zone_guess{previous.start(), previous.c0()}, previous.layout.opposite());
+        // With the weighted pressure (8(w)) the braked three zones' steps keep their own structure: the step that
+        // switches the zone to its Jacobi weight lags by the square-root weight's error and fails the checks by
+        // 1e-8..1e-6, which the search took as a reason to try every bracket and the blended zone (18-58 s of the
+        // strong point at n = 64..256, 8(w) "Cost"); the checks are acted on at the converged iterate (solve).
+        t = z.solve(Q, zone_guess{previous.start(), previous.c0()}, previous.layout.opposite(),
+                    one_kind && !previous.layout.opposite());
     }
     return t;
 }
@@ -189,6 +199,27 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
                 s.layout.opposite() ? blend_of(s.start(), s.c0(), 1.0) : std::function<double(double)>{});
     return layered(std::move(k));
 }
+// Plan C (docs/formulation.md 8(w)): the braked three zones of smooth rollers (one slip direction sigma at both edges,
+// a + b = 1) take k_E = sigma beta_D f into the normal operator on the weight w_N, and carry p_q, the exact
+// (H + k_E)^-1 of -beta_D q, from the source's stick zone (on its own weight: Jacobi from 8(v), else the square root).
+// Null elsewhere (the old path of kinks_of).
+std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, int n, double beta_d, bool smooth,
+                                                  double f) {
+    if (!smooth || s.layout.stick_zones() != 1 || s.layout.opposite() || s.layout.layers_neglected()) return nullptr;
+    if (!(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0 && !s.psi_b.empty())) return nullptr;
+    auto k = std::make_shared<pressure_kinks>();
+    k->set_weight(s.sign * beta_d * f);
+    if (s.weight_a > 0.0) {
+        const std::vector<double> c = s.psi_b;
+        const double a = s.weight_a, b = s.weight_b;
+        k->add_weighted_zone(n, beta_d, s.sign, s.start(), s.c0(), a,
+                             [c, a, b](double t) { return jacobi_series(c, a, b, t); });
+    } else {
+        const std::vector<double> c = s.psi_b;
+        k->add_weighted_zone(n, beta_d, s.sign, s.start(), s.c0(), 0.5, [c](double t) { return u_series(c, t); });
+    }
+    return k;
+}
 }  // namespace
 
 const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
@@ -221,6 +252,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     const bool plateau = carries_plateau(johnson_point.layout.stick_zones() == 2 ? johnson_point : source);
     double previous_change = 0.0;
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
+    bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
+    int switched_at = 0;                      // the step that switched it on (0: none)
     for (int k = 1; k <= coupling_max_iterations; ++k) {
         if (checkpoint_) checkpoint_();
         const double beta = beta_d_;
@@ -228,9 +261,16 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             return beta * source_zones->traction(source, r);
         };
         // 8(l) step 0: the kinks of p^(k) from q of p1^(k-1), the same iterate as beta_D p1^(k-1).
+        const normal_solution& source_normal = current_ ? current_->normal : start ? start->normal : johnson;
+        std::shared_ptr<pressure_kinks> weighted =
+            weighted_kinks_of(source, johnson.rule.n, beta, k1_.empty() && k2_.empty(), f_);
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
             auto it = std::make_unique<iterate>(iterate{
-                normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, kinks), nullptr, nullptr, {}});
+                weighted ? normal_solver_.solve_weighted(
+                               coupled, [&source_normal](double r) { return source_normal.pressure(r); },
+                               ends_of(source), weighted)
+                         : normal_solver_.solve(k2_, coupled, ends_of(source), &sweeps_, kinks),
+                nullptr, nullptr, {}});
             it->normal.how = johnson.how;
             // Rough rollers (8(o)): G = -L1[p] = (2/pi) lambda (r + e) + beta_D p1 + (K2 - K1)[p], whose part of
             // phi's series the tangential solver tabulates itself (convolution_table) and whose part of p_q^0 is the
@@ -240,14 +280,25 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
                     return coupled(r) + kinks->layer_difference(r);
                 };
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
+            // 8(v), adopted with 8(w): the braked three zones of smooth rollers (the weighted pressure's case) take the
+            // local -k q into the operator on the Jacobi weight; G's k q of the source comes off their right side.
+            // From the step whose source is this level's and whose ends moved by at most settled_for_jacobi, then kept.
+            if (weighted && !jacobi_on && current_ && !summary_.end_changes.empty() &&
+                summary_.end_changes.back() <= settled_for_jacobi) {
+                jacobi_on = true;
+                switched_at = k;
+            }
+            if (weighted && jacobi_on)
+                it->tangential->couple_locally([source](double r) { return stick_traction(source, r); }, source.start(),
+                                               source.c0());
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
-            it->s = step(*it->zones, source, Q, f_, jacobian_);
+            it->s = step(*it->zones, source, Q, f_, jacobian_, weighted != nullptr);
             return it;
         };
         std::unique_ptr<iterate> next;
         try {
-            next = solve_step(kinks_of(source, johnson.rule, beta, k1_, k2_,
-                                       current_ ? current_->normal : start ? start->normal : johnson, f_, plateau));
+            next = solve_step(weighted ? nullptr
+                                       : kinks_of(source, johnson.rule, beta, k1_, k2_, source_normal, f_, plateau));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;
@@ -282,7 +333,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         summary_.end_changes.push_back(end_change);
         summary_.newton_residuals = jacobian_.residuals;
         summary_.newton_jacobians = jacobian_.differenced;
-        if (k > 2 && previous_change > 0.0)
+        // The switching step's change is the two operators' difference, not a step of either map (8(e), "The stop
+        // from the contraction"): no ratio is read across it.
+        if (k > 2 && previous_change > 0.0 && (switched_at == 0 || k >= switched_at + 2))
             summary_.contraction = std::max(summary_.contraction, value_change / previous_change);
 
         // The iterate before the current one is no longer a source: cut its reference (its G is
@@ -302,7 +355,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // The stop (8(e), "The stop from the contraction"): each group within its tolerance, by its last change or
         // by the contraction's bound on its distance to the fixed point; from a coarser start the first change is the
         // levels' difference, not a step of this level's map, so no ratio is read from it.
-        const std::size_t own_from = start ? 1 : 0;
+        // Likewise from the step that switches the stick zone onto its Jacobi weight (8(v)): the changes before and
+        // at it are of the square-root map, whose fixed point is not this one's, so the history restarts after it.
+        const std::size_t own_from = switched_at > 0 ? static_cast<std::size_t>(switched_at) : start ? 1 : 0;
         // A reported point stopped by the bound whose checks fail goes on: with p_q^0 its kinks lag its ends by the
         // last change (up to (1 - kappa)/kappa tolerances), and the plain rule's smaller lag is what the checks were
         // measured at (8(o)); so the bound never refuses where the plain rule would answer.
@@ -314,7 +369,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
                       !(checked && !current_->s.checks.hold()));
         // From a coarser level, the first change is the two levels' difference, not the alternation's: at
         // least two steps, so that the point's G never refers to the coarser level's iterate.
-        if (settled && !(start && k == 1)) {
+        // Nor does a braked zone still on the square-root weight stop: its fixed point is not the Jacobi weight's, and
+        // the next step switches (its ends moved by less than settled_for_jacobi).
+        if (settled && !(start && k == 1) && !(weighted && !jacobi_on)) {
             if (checked && !current_->s.checks.hold()) throw failed_checks(current_->s, Q, f_);
             summary_.offset = offset;
             summary_.peak_pressure_change =
@@ -324,7 +381,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         }
         // Growing changes after the first steps: the alternation does not contract here (changes
         // below the tolerance are rounding, which need not fall; only the ends are then unsettled).
-        if (k > 3 && value_change > coupling_value_tolerance && value_change > previous_change &&
+        if (k > 3 && (switched_at == 0 || k > switched_at + 2) && value_change > coupling_value_tolerance &&
+            value_change > previous_change &&
             previous_change > summary_.changes[k - 3]) {
             if (lagging) throw *lagging;
             std::ostringstream msg;

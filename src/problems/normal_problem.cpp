@@ -63,7 +63,9 @@ pressure_peak peak_of(const normal_solution& s) {
     constexpr double h = 1e-4;
     const double fall = std::min(p - s.pressure(r - h), p - s.pressure(r + h));
     const double rounding = 16.0 * GSL_DBL_EPSILON * p;
-    return {r, p, fall > 0.0 ? h * std::sqrt(rounding / fall) : h};
+    const bool weighted = s.kinks && s.kinks->weighted() && s.rcond > 0.0;
+    return {r, p, fall > 0.0 ? h * std::sqrt(rounding / fall) : h,
+            weighted ? GSL_DBL_EPSILON * std::fabs(p) / s.rcond : 0.0};
 }
 
 normal_solver::normal_solver(int n, method how) : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}
@@ -141,6 +143,67 @@ normal_solution normal_solver::solve(const kernel& k2, const std::function<doubl
         s.offset = M_PI * s.gamma / (2.0 * s.lambda);
         s.kinks = std::move(explicit_kinks);
     }
+    return s;
+}
+
+struct normal_solver::weighted_system {
+    weighted_system(int n, double a_) : a(a_), colloc(n, a_), system(static_cast<std::size_t>(n) + 2) {}
+    double a;
+    jacobi_collocation colloc;
+    dense_system system;
+};
+
+normal_solution normal_solver::solve_weighted(const std::function<double(double)>& coupled,
+                                              const std::function<double(double)>& source_pressure,
+                                              const std::vector<double>& kinks, std::shared_ptr<pressure_kinks> weighted) {
+    if (!weighted || !weighted->weighted())
+        throw numerical_error("full coupling: the weighted normal solve (docs/formulation.md 8(w)) without its weight");
+    const int n = rule_.n;
+    const double a = weighted->weight_a(), k_e = weighted->weight_k();
+    if (!weighted_ || weighted_->a != a) weighted_ = std::make_shared<weighted_system>(n, a);
+    weighted_system& w = *weighted_;
+    // The matrix is the same at every step (a_N fixed by the scene): factorised once.
+    if (!w.system.holds_factors()) {
+        gsl_matrix* m = w.system.matrix();
+        gsl_matrix_set_zero(m);
+        // Rows 0..n: (H + k_E)[w_N phi](x_m) + gamma' + (2/pi) lambda x_m = -(right side)(x_m), exact for phi of
+        // degree n - 1 (8(v)); columns 0..n-1 phi at the rule's nodes, n gamma' = gamma_0n + C, n+1 lambda.
+        add_cauchy_term(m, w.colloc);
+        for (int i = 0; i <= n; ++i) {
+            gsl_matrix_set(m, i, n, 1.0);
+            gsl_matrix_set(m, i, n + 1, M_2_PI * w.colloc.collocation[i]);
+        }
+        // Row n+1: int w_N phi = sum W_k phi_k (exact) = 1 - int p_q.
+        for (int k = 0; k < n; ++k) gsl_matrix_set(m, n + 1, k, w.colloc.rule.weights[k]);
+    }
+    gsl_vector* rhs = w.system.rhs();
+    gsl_vector_set_zero(rhs);
+    gsl_vector_set(rhs, n + 1, 1.0 - weighted->load());
+    if (coupled) {
+        const pressure_kinks* pk = weighted.get();
+        const std::function<double(double)> right = [&coupled, &source_pressure, pk, k_e](double r) {
+            return coupled(r) - pk->removed(r) - (source_pressure ? k_e * source_pressure(r) : 0.0);
+        };
+        const std::vector<double> c = chebyshev_projection(right, kinks, n);
+        for (int i = 0; i <= n; ++i) gsl_vector_set(rhs, i, -chebyshev_sum(c, w.colloc.collocation[i]));
+    }
+    const gsl_vector* x = w.system.holds_factors() ? w.system.solve_factorised("normal problem on the weight w_N (8(w))")
+                                                   : w.system.solve("normal problem on the weight w_N (8(w))");
+    std::vector<double> phi(n);
+    for (int k = 0; k < n; ++k) phi[k] = gsl_vector_get(x, k);
+    weighted->set_series(jacobi_coefficients(w.colloc.rule, phi));
+    normal_solution s{rule_,
+                      how_,
+                      phi,
+                      std::vector<double>(n, 0.0),
+                      gsl_vector_get(x, n + 1),
+                      gsl_vector_get(x, n) - weighted->constant(),
+                      w.system.rcond(),
+                      std::make_shared<const kernel_operator>(rule_, how_, 0.0, nullptr),
+                      coupled,
+                      0.0,
+                      std::move(weighted)};
+    s.offset = M_PI * s.gamma / (2.0 * s.lambda);
     return s;
 }
 

@@ -209,12 +209,13 @@ bool takes_three_level(const std::array<estimate_level, 3>& levels, const estima
 // pressure_peak), so a difference of two levels carries twice the largest; the value is the pressure at the position,
 // a sum of n U-terms (n eps p), and the golden section's 16 eps p (pressure_peak) on each of two levels.
 peak_error peak_floors(std::initializer_list<pressure_peak> peaks, int finest_n) {
-    double resolution = 0.0, scale = 0.0;
+    double resolution = 0.0, scale = 0.0, solve = 0.0;
     for (const pressure_peak& k : peaks) {
         resolution = std::max(resolution, k.r_resolution);
         scale = std::max(scale, std::fabs(k.p));
+        solve = std::max(solve, k.p_rounding);  // the weighted pressure's solve (normal_solution.hpp, 8(w))
     }
-    return {2.0 * resolution, rounding_floor(finest_n, scale) + 32.0 * DBL_EPSILON * scale};
+    return {2.0 * resolution, rounding_floor(finest_n, scale) + 32.0 * DBL_EPSILON * scale + 2.0 * solve};
 }
 }  // namespace
 

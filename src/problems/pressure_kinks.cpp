@@ -85,7 +85,107 @@ void pressure_kinks::add_plateau(double beta_d, double sign, double f, const ble
     }
 }
 
+void pressure_kinks::set_weight(double k_e) {
+    if (!zones_.empty() || !plateaus_.empty())
+        throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(w)) takes no U-series kinks");
+    weighted_ = true;
+    k_e_ = k_e;
+    a_n_ = 0.5 + std::atan(k_e) * M_1_PI;  // cot(pi a_N) = -k_E: (H + k_E) is the identity's H - cot(pi a_N) (8(v))
+}
+
+void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
+                                       const std::function<double(double)>& psi) {
+    if (!weighted_) throw numerical_error("full coupling: a weighted kink zone before the pressure's weight (8(w))");
+    if (!(start > -1.0 && start < c0 && c0 < 1.0))
+        throw numerical_error(
+            "full coupling: a stick zone of the pressure's kinks is not inside the contact (docs/formulation.md 8(w))");
+    weighted_zone z{start, 0.5 * (c0 - start), beta_d * sign, a_z,
+                    std::make_shared<const gauss_jacobi>(n, a_z, 1.0 - a_z),
+                    std::make_shared<const gauss_jacobi>(4 * n, a_z, 1.0 - a_z), {}, {}, {}, nullptr, nullptr};
+    if (legendre_nodes_.empty()) {
+        const gauss_legendre legendre(2 * n + 32);
+        legendre_nodes_ = legendre.nodes;
+        legendre_weights_ = legendre.weights;
+    }
+    // G(t) = psi(t)/w_N(r(t)), analytic on the zone (inside the contact): its degree n - 1 interpolant on the zone's
+    // Gauss-Jacobi nodes; the q carried is sign w_Z w_N G_n (removed()), so that (D1) holds for the p represented.
+    const gauss_jacobi& rule = *z.rule;
+    z.at_nodes.resize(static_cast<std::size_t>(n));
+    const double sin_n = std::sin(M_PI * a_n_);
+    double zeroth = 0.0, first = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double r = start + z.rho * (rule.nodes[i] + 1.0);
+        z.at_nodes[i] = psi(rule.nodes[i]) / jacobi_weight(a_n_, 1.0 - a_n_, r);
+        // int (q/w_N) (1, P_1^(-a_N, a_N - 1)(r)) dr = rho sum W_k G_k (1, P_1(r_k)): exact for G_n (degree n - 1, n).
+        double p1[2];
+        jacobi_values(-a_n_, a_n_ - 1.0, r, 2, p1);
+        zeroth += rule.weights[i] * z.at_nodes[i];
+        first += rule.weights[i] * z.at_nodes[i] * p1[1];
+    }
+    z.c = jacobi_coefficients(rule, z.at_nodes);
+    z.own = std::make_shared<const jacobi_recurrence>(a_z, 1.0 - a_z, n);
+    z.shifted = std::make_shared<const jacobi_recurrence>(-a_z, a_z - 1.0, n + 1);
+    z.at_far.resize(z.far->nodes.size());
+    for (std::size_t i = 0; i < z.at_far.size(); ++i) z.at_far[i] = jacobi_series(z.c, a_z, 1.0 - a_z, z.far->nodes[i]);
+    load_ += 2.0 * sin_n * z.amplitude * z.rho * first;
+    constant_ += sin_n * M_1_PI * z.amplitude * z.rho * zeroth;
+    wzones_.push_back(std::move(z));
+}
+
+void pressure_kinks::set_series(std::vector<double> phi_c) {
+    series_ = std::move(phi_c);
+    series_rec_ = std::make_shared<const jacobi_recurrence>(a_n_, 1.0 - a_n_, static_cast<int>(series_.size()));
+}
+
+double pressure_kinks::series_part(double r) const {
+    if (!(std::fabs(r) < 1.0) || series_.empty()) return 0.0;
+    return jacobi_weight(a_n_, 1.0 - a_n_, r) * series_rec_->series(series_, r);
+}
+
+double pressure_kinks::cauchy_outside(const weighted_zone& z, double x) const {
+    // jacobi_cauchy_outside (8(v), "Off the zone") with the series summed by the tabulated recurrence.
+    const gauss_jacobi& rule = *z.rule;
+    const gauss_jacobi& far = *z.far;
+    const double ax = std::fabs(x);
+    const double rho = ax + std::sqrt((ax - 1.0) * (ax + 1.0));
+    if (2.0 * far.n * std::log(rho) > 39.0) {
+        double sum = 0.0;
+        for (int k = 0; k < far.n; ++k) sum += far.weights[k] * z.at_far[k] / (far.nodes[k] - x);
+        return M_1_PI * sum;
+    }
+    const double a = rule.a, b = rule.b;
+    const double psi_x = z.own->series(z.c, x);
+    double sum = 0.0;
+    for (int k = 0; k < rule.n; ++k) sum += rule.weights[k] * (z.at_nodes[k] - psi_x) / (rule.nodes[k] - x);
+    const double X = std::copysign(std::pow(std::fabs(x - 1.0), a) * std::pow(std::fabs(x + 1.0), b), x);
+    const double c0 = (X - x - 1.0 + 2.0 * a) / std::sin(M_PI * a);
+    return M_1_PI * sum + psi_x * c0;
+}
+
+double pressure_kinks::kink_part(double r) const {
+    if (!(std::fabs(r) < 1.0)) return 0.0;
+    const double w_n = jacobi_weight(a_n_, 1.0 - a_n_, r), scale = 1.0 / (1.0 + k_e_ * k_e_);
+    double sum = 0.0;
+    for (const weighted_zone& z : wzones_) {
+        const double t = (r - z.start) / z.rho - 1.0, b = 1.0 - z.a;
+        if (std::fabs(t) < 1.0) {
+            // On the zone, by the identity of 8(v): H[w_Z G_n] = cot(pi a_Z) w_Z G_n - (2/sin(pi a_Z)) sum G_j P_{j+1}^(-a_Z,-b_Z),
+            // so k q - w_N H[q/w_N] = (k_E - cot(pi a_Z)) q + sign w_N (2/sin(pi a_Z)) sum G_j P_{j+1}^(-a_Z,-b_Z).
+            const double tail = z.shifted->series_shifted(z.c, t);
+            const double g = z.own->series(z.c, t);
+            const double k_z = 1.0 / std::tan(M_PI * z.a);
+            const double bracket = (k_e_ - k_z) * jacobi_weight(z.a, b, t) * w_n * g + w_n * 2.0 / std::sin(M_PI * z.a) * tail;
+            sum -= scale * z.amplitude * bracket;
+        } else {
+            // Off the zone q = 0: p_q = (beta_D/(1 + k_E^2)) w_N H[q/w_N].
+            sum += scale * z.amplitude * w_n * cauchy_outside(z, t);
+        }
+    }
+    return sum;
+}
+
 double pressure_kinks::factor(double r) const {
+    if (weighted_) return (*this)(r) / std::sqrt((1.0 - r) * (1.0 + r));
     double h = 0.0;  // H[q/sqrt(1 - r^2)]: the zone variable's Cauchy integral (d eta/(eta - r) = d tau/(tau - t))
     for (const zone& z : zones_) h += z.amplitude * (*z.cauchy)((r - z.start) / z.rho - 1.0);
     for (const kinks_plateau& b : plateaus_) h += b.amplitude * b.value(r);  // 8(p): the plateau's closed form
@@ -94,6 +194,7 @@ double pressure_kinks::factor(double r) const {
 
 double pressure_kinks::operator()(double r) const {
     if (!(std::fabs(r) < 1.0)) return 0.0;
+    if (weighted_) return series_part(r) + kink_part(r);
     return std::sqrt(1.0 - r * r) * factor(r);
 }
 
@@ -121,6 +222,11 @@ double pressure_kinks::integral(double lo, double hi) const {
 
 double pressure_kinks::removed(double r) const {
     double sum = 0.0;
+    for (const weighted_zone& z : wzones_) {
+        const double t = (r - z.start) / z.rho - 1.0;
+        if (!(std::fabs(t) < 1.0)) continue;
+        sum += z.amplitude * jacobi_weight(z.a, 1.0 - z.a, t) * jacobi_weight(a_n_, 1.0 - a_n_, r) * z.own->series(z.c, t);
+    }
     for (const zone& z : zones_) {
         const double t = (r - z.start) / z.rho - 1.0;
         if (!(std::fabs(t) < 1.0)) continue;
@@ -169,10 +275,15 @@ std::vector<double> pressure_kinks::ends() const {
         e.push_back(z.start);
         e.push_back(z.start + 2.0 * z.rho);
     }
+    for (const weighted_zone& z : wzones_) {
+        e.push_back(z.start);
+        e.push_back(z.start + 2.0 * z.rho);
+    }
     return e;
 }
 
 std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
+    if (weighted_) return std::nullopt;  // 8(w) is built for the braked three zones only (no blend)
     auto unit = blended_cauchy::make({1.0}, s, c);
     if (!unit) return std::nullopt;
     kinks_blend k(std::move(*unit));

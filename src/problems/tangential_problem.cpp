@@ -8,6 +8,7 @@
 #include <gsl/gsl_math.h>
 
 #include "roughroll/model/carter.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/base/error.hpp"
@@ -75,6 +76,10 @@ std::vector<double> stick_traction(const tangential_solution& s, const std::vect
     std::vector<double> t(count), psi(count, 0.0), q(count, 0.0);
     const double rho = s.rho();
     for (std::size_t i = 0; i < count; ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
+    if (s.weight_a > 0.0) {  // the Jacobi weight of 8(v)
+        for (std::size_t i = 0; i < count; ++i) q[i] = stick_traction(s, r[i]);
+        return q;
+    }
     if (!s.psi_b.empty()) u_series(s.psi_b, t.data(), psi.data(), count);
     for (std::size_t i = 0; i < count; ++i)
         if (!(r[i] <= s.start() || r[i] >= s.c0() || s.psi_b.empty()))
@@ -87,6 +92,8 @@ double stick_traction(const tangential_solution& s, double r) {
     // every node of every step); the same bits as the batch (its Clenshaw is the scalar's, quadrature.hpp).
     if (r <= s.start() || r >= s.c0() || s.psi_b.empty()) return 0.0;
     const double t = (r - s.start()) / s.rho() - 1.0;
+    if (s.weight_a > 0.0)  // q = (1 - t)^a (1 + t)^b sum_j c_j P_j^(a,b)(t), docs/formulation.md 8(v)
+        return jacobi_weight(s.weight_a, s.weight_b, t) * jacobi_series(s.psi_b, s.weight_a, s.weight_b, t);
     return u_series(s.psi_b, t) * std::sqrt(std::max(0.0, 1.0 - t * t));
 }
 

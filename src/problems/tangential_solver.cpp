@@ -11,6 +11,7 @@
 #include "roughroll/model/carter.hpp"
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/error_bound.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
@@ -72,8 +73,75 @@ std::vector<double> tangential_solver::collocation_points(double start, double c
     return r;
 }
 
+// The braked zone's Jacobi collocation (docs/formulation.md 8(v)) for one exponent a: its rule, the rule of 4 n nodes
+// for the Cauchy transform off the zone, and its system, whose matrix (H - k on the weight, the -xi column) is the
+// same for every zone and every step of the alternation: factorised once.
+struct tangential_solver::jacobi_zone {
+    jacobi_zone(int n, double a_) : a(a_), colloc(n, a_), far(4 * n, a_, 1.0 - a_), system(static_cast<std::size_t>(n) + 1) {}
+    double a;
+    jacobi_collocation colloc;
+    gauss_jacobi far;
+    dense_system system;
+};
+
+void tangential_solver::couple_locally(std::function<double(double)> source_q, double source_start, double source_end) {
+    source_q_ = std::move(source_q);
+    source_start_ = source_start;
+    source_end_ = source_end;
+}
+
+tangential_solver::jacobi_zone& tangential_solver::jacobi_for(double a) {
+    if (!jacobi_ || jacobi_->a != a) jacobi_ = std::make_shared<jacobi_zone>(n_, a);
+    return *jacobi_;
+}
+
+tangential_solution tangential_solver::solve_on_jacobi(double start, double c0, double forcing) {
+    // 8(v): (H - k)[w psi] - xi = f G + b p - k q_source at the n + 1 zeros x_m of P_{n+1}^(-a,-b), k = b f the local
+    // coefficient of q in f G's beta_D p1 (8(e): p1 = sigma (f p + q), b = sigma beta_D), cot(pi a) = k.
+    const double k = forcing * f_, a = 0.5 - std::atan(k) / M_PI;
+    const double rho = 0.5 * (c0 - start);
+    jacobi_zone& z = jacobi_for(a);
+    const int n = n_;
+    if (!z.system.holds_factors()) {
+        gsl_matrix* m = z.system.matrix();
+        gsl_matrix_set_zero(m);
+        add_cauchy_term(m, z.colloc);
+        for (int i = 0; i <= n; ++i) gsl_matrix_set(m, i, n, -1.0);
+    }
+    std::vector<double> r(static_cast<std::size_t>(n) + 1);
+    for (int i = 0; i <= n; ++i) r[i] = start + rho * (z.colloc.collocation[i] + 1.0);  // E4
+    const std::vector<double> g = G(r), p = normal_.pressure(r);
+    gsl_vector* rhs = z.system.rhs();
+    // k q_source is taken at the same t on the source's zone: at the fixed point the same zone, and while the ends lag
+    // the part of G's k q_source left on the right side, k (q_source(r) - q_source(r_source(t))), keeps the source's
+    // one-sided terms at the source's ends where the pressure's kinks of step 0 sit (8(v), "The lag").
+    const double source_rho = 0.5 * (source_end_ - source_start_);
+    for (int i = 0; i <= n; ++i) {
+        const double at_t = source_start_ + source_rho * (z.colloc.collocation[i] + 1.0);
+        gsl_vector_set(rhs, i, f_ * g[i] + forcing * p[i] - k * source_q_(at_t));
+    }
+    std::ostringstream context;
+    context.precision(17);
+    context << "tangential problem (4.4) on the Jacobi weight (docs/formulation.md 8(v)) at c0 = " << c0
+            << ", stick zone from " << start;
+    const gsl_vector* x = z.system.holds_factors() ? z.system.solve_factorised(context.str()) : z.system.solve(context.str());
+    std::vector<double> psi(n);
+    double load = 0.0;
+    for (int i = 0; i < n; ++i) {
+        psi[i] = gsl_vector_get(x, i);
+        load += z.colloc.rule.weights[i] * psi[i];
+    }
+    tangential_solution s = zone_solution(f_, start, c0, gsl_vector_get(x, n), f_ + rho * load,
+                                          jacobi_coefficients(z.colloc.rule, psi), z.system.rcond());
+    s.weight_a = a;
+    s.weight_b = 1.0 - a;
+    s.forcing = forcing;
+    return s;
+}
+
 tangential_solution tangential_solver::solve_on_zone(double start, double c0, double forcing,
                                                      const std::vector<double>* extra, bool near) {
+    if (source_q_ && !extra && forcing != 0.0 && k1_.empty()) return solve_on_jacobi(start, c0, forcing);
     // The stick zone [start, c0]: r = start + rho (t + 1), rho = (c0 - start)/2 (E4 with the
     // zone's own start; docs/formulation.md 7(b)). The paper's zone has start = -1.
     const double rho = 0.5 * (c0 - start);
@@ -163,7 +231,28 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
     std::vector<double> v = G(r);
     const double rho = s.rho();
     std::vector<double> l(r.size(), 0.0);
-    if (!(s.psi_b.empty() || rho == 0.0)) {
+    if (s.weight_a > 0.0 && !s.psi_b.empty() && rho > 0.0) {
+        // 8(v), "Off the zone": H[w psi] outside the zone (K1* is empty on this route).
+        const jacobi_zone& z = jacobi_for(s.weight_a);
+        const gauss_jacobi& rule = z.colloc.rule;
+        if (outside_.a != s.weight_a || outside_.c != s.psi_b) {
+            outside_.a = s.weight_a;
+            outside_.c = s.psi_b;
+            outside_.at_nodes.resize(rule.n);
+            outside_.at_far.resize(z.far.n);
+            for (int i = 0; i < rule.n; ++i)
+                outside_.at_nodes[i] = jacobi_series(s.psi_b, s.weight_a, s.weight_b, rule.nodes[i]);
+            for (int i = 0; i < z.far.n; ++i)
+                outside_.at_far[i] = jacobi_series(s.psi_b, s.weight_a, s.weight_b, z.far.nodes[i]);
+        }
+        const std::vector<double>&at_nodes = outside_.at_nodes, &at_far = outside_.at_far;
+        // G stays whole here, k q_source included: off the zone q = 0, and at the alternation's fixed point q_source = q,
+        // so the slip velocity is the stick equation's; while the ends lag it reads as the old route's did.
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            const double t = (r[i] - s.start()) / rho - 1.0;
+            l[i] = std::fabs(t) >= 1.0 ? jacobi_cauchy_outside(s.psi_b, rule, at_nodes, z.far, at_far, t) : 0.0;
+        }
+    } else if (!(s.psi_b.empty() || rho == 0.0)) {
         std::vector<double> t(r.size());
         for (std::size_t i = 0; i < r.size(); ++i) t[i] = (r[i] - s.start()) / rho - 1.0;
         stick_operator_outside(k1_.stretched(rho), s.psi_b)(t.data(), l.data(), t.size());

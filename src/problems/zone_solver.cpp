@@ -13,6 +13,7 @@
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/zone_newton.hpp"
@@ -266,6 +267,7 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
 zone_solver::zone_solver(stick_zone_operator op) : op_(std::move(op)) {}
 
 double zone_solver::entry_coefficient(const tangential_solution& s) {
+    if (s.weight_a > 0.0) return jacobi_series(s.psi_b, s.weight_a, s.weight_b, -1.0);  // 8(v): sum_j c_j P_j^(a,b)(-1)
     return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
 }
 

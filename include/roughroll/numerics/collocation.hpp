@@ -14,6 +14,7 @@
 #include <gsl/gsl_matrix.h>
 
 #include "roughroll/model/kernel.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/kernel_sweep.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -22,6 +23,9 @@ namespace roughroll {
 
 // Adds the Cauchy term into a(m, k), m <= n, k < n.
 void add_cauchy_term(gsl_matrix* a, const gauss_chebyshev& rule);
+// The same on the Gauss-Jacobi collocation of a weight with a + b = 1 (docs/formulation.md 8(v)):
+// (1/pi) W_k/(t_k - x_m), which is (H - cot(pi a)) on w psi at x_m, exactly for deg psi <= n - 1.
+void add_cauchy_term(gsl_matrix* a, const jacobi_collocation& rule);
 
 // The kernel term for one rule and method. For product integration it keeps the sweep
 // workspace, so the stretched kernels of successive trial c0 (rates up to max_rate) reuse

@@ -203,7 +203,9 @@ public:
     // numerical fault of the searches: a GSL status, a singular system). `guess`: a zone near the one sought (the coarser
     // level's), the start of Newton's method; without it the starts of the stick zone are scanned.
     // `opposite`: try the leading slip against Q first (the coarser level's structure).
-    tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false);
+    // only_this_kind: the structure `opposite` names, not the other one after it (full coupling's weighted steps, 8(w)).
+    tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false,
+                              bool only_this_kind = false);
 
     // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1, s2, c2) (damped_newton),
     // with the forcing `beta` in place of |beta_D| where given (a step of the continuation in beta_D/f); empty

@@ -43,7 +43,19 @@ public:
                           const std::vector<double>& kinks, sweep_cache* cache,
                           std::shared_ptr<const pressure_kinks> explicit_kinks);
 
+    // Plan C of docs/formulation.md 8(w) (smooth rollers, one slip direction at both edges: the braked three zones,
+    // gross sliding): k_E = sigma beta_D f p moved into the operator, (H + k_E)[w_N phi] on the Jacobi collocation of
+    // a_N = 1/2 + atan(k_E)/pi (8(v)'s identity), p = w_N phi + p_q. `weighted` holds the weight and the zones' p_q
+    // (pressure_kinks::set_weight, add_weighted_zone); `source_pressure` is the pressure beta_D p1 was taken with: the
+    // right side is beta_D p1 - k_E p_source - beta_D q (zero at the fixed point of the braked three zones but for q's
+    // interpolation). The solution's U-series is zero and `kinks` carries the whole pressure (its series set here).
+    normal_solution solve_weighted(const std::function<double(double)>& coupled,
+                                   const std::function<double(double)>& source_pressure,
+                                   const std::vector<double>& kinks, std::shared_ptr<pressure_kinks> weighted);
+
 private:
+    struct weighted_system;
+    std::shared_ptr<weighted_system> weighted_;
     gauss_chebyshev rule_;
     method how_;
     dense_system system_;

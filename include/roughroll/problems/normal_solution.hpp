@@ -59,9 +59,14 @@ struct normal_solution {
 // rounding of p, 16 eps p, so no comparison of values tells them apart; about 1e-7 for Hertz's
 // peak, 2/pi at r = 0). Both are this discretisation's: their error estimates come from the levels
 // (error_estimate::peak, point_estimate.hpp), and the reports print r and p to them (io/output.cpp).
+// `p_rounding`: on the weighted pressure of 8(w), whose levels agree to rounding (spectral), the dense solve's forward
+// error eps |p| / rcond (rcond of the factor U, about 1/kappa): the levels' own rounding, which grows with kappa
+// (measured on the pair at Q/f = -0.75: p's changes 64..512 within 1e-13, 512 -> 1000 5.6e-13 as rcond falls
+// 3.5e-5 .. 3.5e-8; the bound is 2.3e-11 at 128, 4e-9 at 1000). 0 elsewhere, where the levels' changes carry it.
 struct pressure_peak {
     double r, p;
     double r_resolution;
+    double p_rounding = 0.0;
 };
 pressure_peak peak_of(const normal_solution& s);
 

@@ -38,6 +38,7 @@
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/cauchy_u_table.hpp"
 #include "roughroll/numerics/cut_convolution.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
 namespace roughroll {
@@ -67,7 +68,23 @@ public:
     // as a jump where a zone is thinner than the node spacing; the right side keeps 2 f (p - pbar) B, whose step
     // across a zone is O(zone length p').
     void add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1, double h2);
-    bool empty() const { return zones_.empty() && plateaus_.empty(); }
+    // The weighted pressure of docs/formulation.md 8(w) (plan C; braked three zones of smooth rollers, a + b = 1):
+    //   p = w_N phi + p_q,  w_N = (1 - r)^a_N (1 + r)^(1 - a_N),  a_N = 1/2 + atan(k_E)/pi,  k_E = sigma beta_D f,
+    //   p_q = -(beta_D/(1 + k_E^2)) sum_Z (k_E q_Z - w_N H[q_Z/w_N]),   (H + k_E)[p_q] = -beta_D q + C,
+    //   C = (beta_D sin(pi a_N)/pi) int q/w_N,   int p_q = 2 beta_D sin(pi a_N) int (q/w_N) P_1^(-a_N, a_N - 1).
+    // The object then carries the whole pressure (the normal solution's U-series is zero): set_weight first, then
+    // add_weighted_zone per stick zone (q = sign w_Z(t) psi(t), w_Z = (1 - t)^a_Z (1 + t)^(1 - a_Z)), then, after the
+    // normal solve, set_series with phi's Jacobi coefficients on w_N. Not combined with add_zone or add_plateau.
+    void set_weight(double k_e);
+    void add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
+                           const std::function<double(double)>& psi);
+    void set_series(std::vector<double> phi_c);
+    bool weighted() const { return weighted_; }
+    double weight_a() const { return a_n_; }
+    double weight_k() const { return k_e_; }
+    double series_part(double r) const;  // w_N(r) sum phi_j P_j^(a_N, 1 - a_N)(r), 0 outside (-1, 1)
+    double kink_part(double r) const;    // p_q(r) of the weighted zones
+    bool empty() const { return zones_.empty() && plateaus_.empty() && !weighted_; }
     std::size_t plateaus() const { return plateaus_.size(); }  // add_plateau's count (0 or 1: five zones only)
 
     double operator()(double r) const;  // p_q^0(r), 0 outside (-1, 1)
@@ -104,6 +121,18 @@ private:
     };
     std::vector<zone> zones_;
     std::vector<kinks_plateau> plateaus_;
+    struct weighted_zone {
+        double start, rho, amplitude, a;  // amplitude = beta_D sign; q's weight exponent a_Z at t = 1
+        std::shared_ptr<const gauss_jacobi> rule, far;
+        std::vector<double> c, at_nodes, at_far;  // G = psi/w_N: Jacobi coefficients, values at both rules' nodes
+        std::shared_ptr<const jacobi_recurrence> own, shifted;  // P^(a_Z, b_Z) and P^(-a_Z, -b_Z)
+    };
+    std::shared_ptr<const jacobi_recurrence> series_rec_;  // P^(a_N, 1 - a_N)
+    double cauchy_outside(const weighted_zone& z, double x) const;
+    bool weighted_ = false;
+    double k_e_ = 0.0, a_n_ = 0.5;
+    std::vector<double> series_;
+    std::vector<weighted_zone> wzones_;
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
     std::shared_ptr<const cut_convolution> normal_layer_, difference_layer_;  // add_layers' tables

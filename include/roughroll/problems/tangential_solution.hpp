@@ -34,6 +34,9 @@ struct tangential_solution {
     double xi;                  // dimensionless creep
     double sign;                // +1, or -1 for the mirror case Q < 0
     std::vector<double> psi_b;  // U coefficients of psi(tau) for |Q| (multiply by sign)
+    // Full coupling's braked stick zone (docs/formulation.md 8(v)): where weight_a > 0, psi_b are the coefficients
+    // of psi in P_j^(a,b), a = weight_a, b = weight_b, and q = (1 - t)^a (1 + t)^b psi; 0: the U-series above.
+    double weight_a = 0.0, weight_b = 0.0;
     int iterations;             // root-search iterations (secant or Brent; 0 without a search)
     double rcond;               // of the last tangential system (1 without a solve)
     double load_slope = 0.0;    // dQ/dc0 at c0 from the root search's last secant (0: unknown)

@@ -12,6 +12,7 @@
 // (3.6) is xi + f G - L1[q0], L1 evaluated outside its interval in closed form.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -58,6 +59,15 @@ public:
     // The collocation of (4.4) as the one zone search's operator (zone_operators.cpp); refers to this solver.
     stick_zone_operator zone_operator();
 
+    // Full coupling's local term (docs/formulation.md 8(v)): G holds beta_D p1 of the alternation's source, whose part
+    // k q_source (k = sigma beta_D f, `source_q` its stick traction in the |Q| frame) is the local -k q of the stick
+    // equation (H - k)[q] = ... (8(l)). Given it, a zone solved with Dundurs' forcing and no `extra` (the braked three
+    // zones) takes -k q into the operator on the Jacobi weight (1 - t)^a (1 + t)^(1 - a), cot(pi a) = k, and
+    // -k q_source off the right side; its solution holds Jacobi coefficients (tangential_solution::weight_a). Smooth
+    // tangential compliance only (K1* empty): the layer term on that weight is not built.
+    // The source's zone [source_start, source_end]: its q is read at the same t of the zone solved (below).
+    void couple_locally(std::function<double(double)> source_q, double source_start, double source_end);
+
 private:
     tangential_solution on_zone(double start, double c0, double forcing, bool near) override {
         return solve_on_zone(start, c0, forcing, nullptr, near);
@@ -72,6 +82,20 @@ private:
     dense_system system_;
     std::shared_ptr<const kernel_operator> k1_operator_;  // rho K1*(rho z) for every trial c0, rho <= 1
     std::optional<convolution_table> g_table_;            // the kernel part of G (3.25), once per solver
+
+    // 8(v): the braked zone on the Jacobi weight.
+    struct jacobi_zone;
+    tangential_solution solve_on_jacobi(double start, double c0, double forcing);
+    jacobi_zone& jacobi_for(double a);
+    std::function<double(double)> source_q_;
+    double source_start_ = 0.0, source_end_ = 0.0;
+    std::shared_ptr<jacobi_zone> jacobi_;
+    // psi of the last solution asked off its zone, at the rule's nodes and the far rule's (the checks ask the slip
+    // velocity one point at a time).
+    struct jacobi_values_cache {
+        std::vector<double> c, at_nodes, at_far;
+        double a = 0.0;
+    } outside_;
 };
 
 }  // namespace roughroll

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughroll/numerics/gauss_jacobi.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+
+namespace roughroll {
+
+gauss_jacobi::gauss_jacobi(int n_, double a_, double b_) : n(n_), a(a_), b(b_) {
+    gsl_guard();
+    if (n < 1 || !(a > -1.0) || !(b > -1.0))
+        throw numerical_error("cannot build a Gauss-Jacobi rule of " + std::to_string(n) + " nodes with exponents " +
+                              std::to_string(a) + ", " + std::to_string(b));
+    // GSL's Jacobi type has the weight (b - x)^alpha (x - a)^beta on [a, b]: alpha is the exponent at +1.
+    const std::unique_ptr<gsl_integration_fixed_workspace, decltype(&gsl_integration_fixed_free)> w(
+        gsl_integration_fixed_alloc(gsl_integration_fixed_jacobi, static_cast<std::size_t>(n), -1.0, 1.0, a, b),
+        gsl_integration_fixed_free);
+    if (!w) throw numerical_error("Gauss-Jacobi rule of " + std::to_string(n) + " nodes: GSL could not build it");
+    const double* x = gsl_integration_fixed_nodes(w.get());
+    const double* wt = gsl_integration_fixed_weights(w.get());
+    nodes.assign(x, x + n);
+    weights.assign(wt, wt + n);
+    for (int k = 0; k < n; ++k)
+        if (!(std::isfinite(nodes[k]) && std::isfinite(weights[k]) && weights[k] > 0.0 && std::fabs(nodes[k]) < 1.0))
+            throw numerical_error("Gauss-Jacobi rule of " + std::to_string(n) + " nodes: a node or weight is not valid");
+}
+
+jacobi_collocation::jacobi_collocation(int n, double a) : rule(n, a, 1.0 - a) {
+    // 8(v): the points are the zeros of P_{n+1}^(-a, -b), the nodes of the rule of that weight (-a, -b > -1).
+    collocation = gauss_jacobi(n + 1, -a, a - 1.0).nodes;
+}
+
+double jacobi_weight(double a, double b, double t) {
+    return std::pow(std::max(0.0, 1.0 - t), a) * std::pow(std::max(0.0, 1.0 + t), b);
+}
+
+void jacobi_values(double a, double b, double x, int count, double* out) {
+    if (count <= 0) return;
+    out[0] = 1.0;
+    if (count == 1) return;
+    // DLMF 18.9.1-18.9.2: P_1 = (a + 1) + (a + b + 2)(x - 1)/2 and, for j >= 1,
+    // 2 (j+1)(j+a+b+1)(2j+a+b) P_{j+1} = (2j+a+b+1) [(2j+a+b+2)(2j+a+b) x + a^2 - b^2] P_j
+    //                                    - 2 (j+a)(j+b)(2j+a+b+2) P_{j-1}.
+    out[1] = (a + 1.0) + 0.5 * (a + b + 2.0) * (x - 1.0);
+    for (int j = 1; j + 1 < count; ++j) {
+        const double s = 2.0 * j + a + b;
+        const double d = 2.0 * (j + 1.0) * (j + a + b + 1.0) * s;
+        out[j + 1] = ((s + 1.0) * ((s + 2.0) * s * x + a * a - b * b) * out[j] -
+                      2.0 * (j + a) * (j + b) * (s + 2.0) * out[j - 1]) /
+                     d;
+    }
+}
+
+double jacobi_series(const std::vector<double>& c, double a, double b, double x) {
+    std::vector<double> p(c.size());
+    jacobi_values(a, b, x, static_cast<int>(c.size()), p.data());
+    double sum = 0.0;
+    for (std::size_t j = 0; j < c.size(); ++j) sum += c[j] * p[j];
+    return sum;
+}
+
+jacobi_recurrence::jacobi_recurrence(double a_, double b_, int count) : a(a_), b(b_) {
+    const int m = std::max(count, 1);
+    A.resize(m);
+    B.resize(m);
+    C.resize(m);
+    A[0] = 0.5 * (a + b + 2.0);
+    B[0] = 0.5 * (a - b);
+    C[0] = 0.0;
+    for (int j = 1; j < m; ++j) {  // DLMF 18.9.1-18.9.2, as jacobi_values
+        const double s = 2.0 * j + a + b;
+        const double d = 2.0 * (j + 1.0) * (j + a + b + 1.0) * s;
+        A[j] = (s + 1.0) * (s + 2.0) * s / d;
+        B[j] = (s + 1.0) * (a * a - b * b) / d;
+        C[j] = 2.0 * (j + a) * (j + b) * (s + 2.0) / d;
+    }
+}
+
+double jacobi_recurrence::series(const std::vector<double>& c, double x) const {
+    if (c.empty()) return 0.0;
+    double prev = 1.0, cur = A[0] * x + B[0], sum = c[0];
+    if (c.size() > 1) sum += c[1] * cur;
+    for (std::size_t j = 1; j + 1 < c.size(); ++j) {
+        const double next = (A[j] * x + B[j]) * cur - C[j] * prev;
+        prev = cur;
+        cur = next;
+        sum += c[j + 1] * cur;
+    }
+    return sum;
+}
+
+double jacobi_recurrence::series_shifted(const std::vector<double>& c, double x) const {
+    if (c.empty()) return 0.0;
+    double prev = 1.0, cur = A[0] * x + B[0], sum = c[0] * cur;
+    for (std::size_t j = 1; j < c.size(); ++j) {
+        const double next = (A[j] * x + B[j]) * cur - C[j] * prev;
+        prev = cur;
+        cur = next;
+        sum += c[j] * cur;
+    }
+    return sum;
+}
+
+std::vector<double> jacobi_coefficients(const gauss_jacobi& rule, const std::vector<double>& values) {
+    const int n = rule.n;
+    std::vector<double> c(n, 0.0), h(n, 0.0), p(n);
+    for (int k = 0; k < n; ++k) {
+        jacobi_values(rule.a, rule.b, rule.nodes[k], n, p.data());
+        const double wv = rule.weights[k] * values[k];
+        for (int j = 0; j < n; ++j) {
+            c[j] += wv * p[j];
+            h[j] += rule.weights[k] * p[j] * p[j];
+        }
+    }
+    for (int j = 0; j < n; ++j) c[j] /= h[j];
+    return c;
+}
+
+double jacobi_cauchy_outside(const std::vector<double>& c, const gauss_jacobi& rule,
+                             const std::vector<double>& psi_nodes, const gauss_jacobi& far,
+                             const std::vector<double>& psi_far, double x) {
+    // 8(v), "Off the zone". rho = |x| + sqrt(x^2 - 1) is the parameter of the Bernstein ellipse through x: the
+    // M-point rule integrates psi/(tau - x) with an error of order rho^(-2M), below rounding where rho^(2M) > 1e17.
+    const double ax = std::fabs(x);
+    const double rho = ax + std::sqrt((ax - 1.0) * (ax + 1.0));
+    if (2.0 * far.n * std::log(rho) > 39.0) {
+        double sum = 0.0;
+        for (int k = 0; k < far.n; ++k) sum += far.weights[k] * psi_far[k] / (far.nodes[k] - x);
+        return M_1_PI * sum;
+    }
+    // Nearer: psi(tau) = psi(x) + (tau - x) r(tau) with r of degree n - 2, which the rule integrates exactly, and
+    // (1/pi) int w/(tau - x) = C_0(x) = (X(x) - x - 1 + 2a)/sin(pi a), X = (x - 1)^a (x + 1)^b continued from
+    // above the cut (X ~ x at infinity: -|x - 1|^a |x + 1|^b for x < -1), for a + b = 1 (8(v)). Here rho < e^(39/(2M)),
+    // so |x| stays below about 1.2 and psi(x) below rho^n |c| (no cancellation worth the name in either part).
+    const double a = rule.a, b = rule.b;
+    const double psi_x = jacobi_series(c, a, b, x);
+    double sum = 0.0;
+    for (int k = 0; k < rule.n; ++k) sum += rule.weights[k] * (psi_nodes[k] - psi_x) / (rule.nodes[k] - x);
+    const double X = std::copysign(std::pow(std::fabs(x - 1.0), a) * std::pow(std::fabs(x + 1.0), b), x);
+    const double c0 = (X - x - 1.0 + 2.0 * a) / std::sin(M_PI * a);
+    return M_1_PI * sum + psi_x * c0;
+}
+
+}  // namespace roughroll
