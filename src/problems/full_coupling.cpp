@@ -202,9 +202,9 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
 // Plan C (docs/formulation.md 8(w)): the braked three zones of smooth rollers (one slip direction sigma at both edges,
 // a + b = 1) take k_E = sigma beta_D f into the normal operator on the weight w_N, and carry p_q, the exact
 // (H + k_E)^-1 of -beta_D q, from the source's stick zone (on its own weight: Jacobi from 8(v), else the square root).
-// Null elsewhere (the old path of kinks_of).
+// Null elsewhere (the old path of kinks_of). `rules_of`: the previous step's kinks, whose zone rules are reused.
 std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, int n, double beta_d, bool smooth,
-                                                  double f) {
+                                                  double f, const pressure_kinks* rules_of) {
     if (!smooth || s.layout.stick_zones() != 1 || s.layout.opposite() || s.layout.layers_neglected()) return nullptr;
     if (!(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0 && !s.psi_b.empty())) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
@@ -212,11 +212,12 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
     if (s.weight_a > 0.0) {
         const std::vector<double> c = s.psi_b;
         const double a = s.weight_a, b = s.weight_b;
-        k->add_weighted_zone(n, beta_d, s.sign, s.start(), s.c0(), a,
-                             [c, a, b](double t) { return jacobi_series(c, a, b, t); });
+        k->add_weighted_zone(
+            n, beta_d, s.sign, s.start(), s.c0(), a, [c, a, b](double t) { return jacobi_series(c, a, b, t); }, rules_of);
     } else {
         const std::vector<double> c = s.psi_b;
-        k->add_weighted_zone(n, beta_d, s.sign, s.start(), s.c0(), 0.5, [c](double t) { return u_series(c, t); });
+        k->add_weighted_zone(
+            n, beta_d, s.sign, s.start(), s.c0(), 0.5, [c](double t) { return u_series(c, t); }, rules_of);
     }
     return k;
 }
@@ -263,7 +264,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // 8(l) step 0: the kinks of p^(k) from q of p1^(k-1), the same iterate as beta_D p1^(k-1).
         const normal_solution& source_normal = current_ ? current_->normal : start ? start->normal : johnson;
         std::shared_ptr<pressure_kinks> weighted =
-            weighted_kinks_of(source, johnson.rule.n, beta, k1_.empty() && k2_.empty(), f_);
+            weighted_kinks_of(source, johnson.rule.n, beta, k1_.empty() && k2_.empty(), f_,
+                              current_ ? current_->normal.kinks.get() : nullptr);
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
             auto it = std::make_unique<iterate>(iterate{
                 weighted ? normal_solver_.solve_weighted(
@@ -280,6 +282,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
                     return coupled(r) + kinks->layer_difference(r);
                 };
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
+            if (current_ && current_->tangential) it->tangential->share_jacobi(*current_->tangential);
             // 8(v), adopted with 8(w): the braked three zones of smooth rollers (the weighted pressure's case) take the
             // local -k q into the operator on the Jacobi weight; G's k q of the source comes off their right side.
             // From the step whose source is this level's and whose ends moved by at most settled_for_jacobi, then kept.

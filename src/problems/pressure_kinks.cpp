@@ -94,14 +94,26 @@ void pressure_kinks::set_weight(double k_e) {
 }
 
 void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
-                                       const std::function<double(double)>& psi) {
+                                       const std::function<double(double)>& psi, const pressure_kinks* rules_of) {
     if (!weighted_) throw numerical_error("full coupling: a weighted kink zone before the pressure's weight (8(w))");
     if (!(start > -1.0 && start < c0 && c0 < 1.0))
         throw numerical_error(
             "full coupling: a stick zone of the pressure's kinks is not inside the contact (docs/formulation.md 8(w))");
-    weighted_zone z{start, 0.5 * (c0 - start), beta_d * sign, a_z,
-                    std::make_shared<const gauss_jacobi>(n, a_z, 1.0 - a_z),
-                    std::make_shared<const gauss_jacobi>(4 * n, a_z, 1.0 - a_z), {}, {}, {}, nullptr, nullptr};
+    const weighted_zone* same = nullptr;  // an earlier step's zone of the same rules (the alternation's source)
+    if (rules_of)
+        for (const weighted_zone& w : rules_of->wzones_)
+            if (w.rule->n == n && w.a == a_z) same = &w;
+    weighted_zone z{start,
+                    0.5 * (c0 - start),
+                    beta_d * sign,
+                    a_z,
+                    same ? same->rule : std::make_shared<const gauss_jacobi>(n, a_z, 1.0 - a_z),
+                    same ? same->far : std::make_shared<const gauss_jacobi>(4 * n, a_z, 1.0 - a_z),
+                    {},
+                    {},
+                    {},
+                    nullptr,
+                    nullptr};
     if (legendre_nodes_.empty()) {
         const gauss_legendre legendre(2 * n + 32);
         legendre_nodes_ = legendre.nodes;
@@ -123,8 +135,8 @@ void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double
         first += rule.weights[i] * z.at_nodes[i] * p1[1];
     }
     z.c = jacobi_coefficients(rule, z.at_nodes);
-    z.own = std::make_shared<const jacobi_recurrence>(a_z, 1.0 - a_z, n);
-    z.shifted = std::make_shared<const jacobi_recurrence>(-a_z, a_z - 1.0, n + 1);
+    z.own = same ? same->own : std::make_shared<const jacobi_recurrence>(a_z, 1.0 - a_z, n);
+    z.shifted = same ? same->shifted : std::make_shared<const jacobi_recurrence>(-a_z, a_z - 1.0, n + 1);
     z.at_far.resize(z.far->nodes.size());
     for (std::size_t i = 0; i < z.at_far.size(); ++i) z.at_far[i] = jacobi_series(z.c, a_z, 1.0 - a_z, z.far->nodes[i]);
     load_ += 2.0 * sin_n * z.amplitude * z.rho * first;

@@ -91,7 +91,7 @@ void tangential_solver::couple_locally(std::function<double(double)> source_q, d
 }
 
 tangential_solver::jacobi_zone& tangential_solver::jacobi_for(double a) {
-    if (!jacobi_ || jacobi_->a != a) jacobi_ = std::make_shared<jacobi_zone>(n_, a);
+    if (!jacobi_ || jacobi_->a != a || jacobi_->colloc.rule.n != n_) jacobi_ = std::make_shared<jacobi_zone>(n_, a);
     return *jacobi_;
 }
 

@@ -76,8 +76,9 @@ public:
     // add_weighted_zone per stick zone (q = sign w_Z(t) psi(t), w_Z = (1 - t)^a_Z (1 + t)^(1 - a_Z)), then, after the
     // normal solve, set_series with phi's Jacobi coefficients on w_N. Not combined with add_zone or add_plateau.
     void set_weight(double k_e);
+    // `rules_of`: kinks of an earlier step whose zone rules (n, a_z) are taken instead of built again (the same rules).
     void add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
-                           const std::function<double(double)>& psi);
+                           const std::function<double(double)>& psi, const pressure_kinks* rules_of = nullptr);
     void set_series(std::vector<double> phi_c);
     bool weighted() const { return weighted_; }
     double weight_a() const { return a_n_; }

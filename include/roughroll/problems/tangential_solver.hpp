@@ -67,6 +67,9 @@ public:
     // tangential compliance only (K1* empty): the layer term on that weight is not built.
     // The source's zone [source_start, source_end]: its q is read at the same t of the zone solved (below).
     void couple_locally(std::function<double(double)> source_q, double source_start, double source_end);
+    // The Jacobi zone's rules and factors of another solver of the same n (the alternation's previous step): they
+    // depend on n and the exponent only, so the steps share them instead of rebuilding them (bit for bit the same).
+    void share_jacobi(const tangential_solver& other) { jacobi_ = other.jacobi_; }
 
 private:
     tangential_solution on_zone(double start, double c0, double forcing, bool near) override {
