@@ -215,26 +215,14 @@ namespace {
 // H[p](x) = (1/pi) PV int_{-1}^{1} p(eta)/(eta - x) d eta by GSL's QAGP: p(x) ln((1 - x)/(1 + x))/pi plus the regular
 // (p(eta) - p(x))/(eta - x), in eta = cos t (p's edge roots become smooth), break points at x and the kinks.
 double hilbert_by_qagp(const std::function<double(double)>& p, double x, const std::vector<double>& kinks) {
-    struct data {
-        const std::function<double(double)>* p;
-        double x, px;
-    } d{&p, x, p(x)};
-    gsl_function F{[](double t, void* v) {
-                       const auto* d = static_cast<const data*>(v);
-                       const double eta = std::cos(t);
-                       return eta == d->x ? 0.0 : ((*d->p)(eta) - d->px) / (eta - d->x) * std::sin(t);
-                   },
-                   &d};
-    std::vector<double> pts{0.0, M_PI, std::acos(x)};
-    for (double r : kinks)
-        if (r > -1.0 && r < 1.0) pts.push_back(std::acos(r));
-    std::sort(pts.begin(), pts.end());
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
-    double result = 0.0, error = 0.0;
-    const int status = gsl_integration_qagp(&F, pts.data(), pts.size(), 1e-13, 0.0, 4000, w, &result, &error);
-    gsl_integration_workspace_free(w);
-    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && error < 1e-12)) << x << ": " << error;
-    return (result + d.px * std::log((1.0 - x) / (1.0 + x))) / M_PI;
+    const double px = p(x);
+    const double result = integral_in_theta_by_qagp(
+        [&](double t) {
+            const double eta = std::cos(t);
+            return eta == x ? 0.0 : (p(eta) - px) / (eta - x) * std::sin(t);
+        },
+        kinks, {std::acos(x)}, 1e-12);
+    return (result + px * std::log((1.0 - x) / (1.0 + x))) / M_PI;
 }
 }  // namespace
 
