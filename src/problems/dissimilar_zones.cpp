@@ -10,7 +10,6 @@
 #include <utility>
 #include <vector>
 
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
@@ -31,13 +30,10 @@ constexpr std::size_t traction_memo_size = 1 << 16;  // points of traction's mem
 // The context of a fault in the blended zone's integrals (W and its Cauchy part), as the user reads it.
 constexpr const char* w_context =
     "dissimilar rollers: the integral W of the blended stick zone (docs/formulation.md 8(g))";
-// W of the blended zone and int p Theta (integrate_piece: qag in the variable that makes the
-// integrands' 3/2-power ends and the sqrt at r = 1 analytic): tolerances, and the error GSL's own
-// estimate may keep when it cannot reach them, a limit on each whole integral (W's Cauchy part, each
-// of K1*'s terms, int p Theta), not on each of the pieces it is summed from (within_accepted).
-constexpr std::size_t quadrature_intervals = 400;
-constexpr double quadrature_absolute = 1e-14;
-constexpr double quadrature_relative = 1e-12;
+// W of the blended zone and int p Theta (end_quadrature: qag in the variable that makes the integrands' 3/2-power
+// ends and the sqrt at r = 1 analytic): the error GSL's own estimate may keep when it cannot reach its tolerances, a
+// limit on each whole integral (W's Cauchy part, each of K1*'s terms, int p Theta), not on each of the pieces it is
+// summed from (within_accepted).
 constexpr double quadrature_accepted = 1e-10;
 // Breakpoints of W's quadrature closer than this are not cut (r next to an end, the kinks' ends at the zone's).
 constexpr double breakpoint_apart = 1e-9;
@@ -184,8 +180,7 @@ dissimilar_zones::dissimilar_zones(tangential_solver& solver, const kernel& k1, 
       beta_d_(beta_d),
       f_(solver.friction()),
       pressure_b_(solver.normal().b),
-      pressure_kinks_(solver.normal().kinks),
-      workspace_(make_integration_workspace(quadrature_intervals)) {
+      pressure_kinks_(solver.normal().kinks) {
     check_beta_d(beta_d);
     // The pressure's U-series without its exact trailing zeros (Hertz: one term): the same values
     // (u_series skips them too, bit for bit), trimmed once here so that the many values W's
@@ -308,7 +303,7 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     // height 1/sqrt(1 - r) and width 1 - r at eta = 1 that no quadrature resolves (GSL: round-off).
     // There g = sqrt(1 - eta) h(eta) on the last piece [a, 1], h = phi(eta) sqrt(1 + eta) H smooth
     // ((4.1)), and sqrt(1 - eta) h(r) is subtracted instead: the rest, sqrt(1 - eta) (h(eta) - h(r))/
-    // (eta - r), is smooth times the square root that integrate_piece makes analytic, and with
+    // (eta - r), is smooth times the square root that end_quadrature makes analytic, and with
     // u = sqrt(1 - eta), d = sqrt(1 - r), U = sqrt(1 - a) (docs/formulation.md 8(j) item 3)
     //   PV int_a^1 sqrt(1 - eta)/(eta - r) d eta = int_0^U 2 u^2/(d^2 - u^2) du = -2 U + d log((U + d)/(U - d)).
     // The pieces below a (r outside them) carry no subtraction. p at eta near 1 from sqrt((1 - eta)(1 + eta)),
@@ -341,82 +336,18 @@ double dissimilar_zones::cauchy_by_quadrature(double r, double start, double c0)
     return w;
 }
 
-quadrature_value dissimilar_zones::integrate_piece(const std::function<double(double)>& integrand, double a, double b,
-                                                   const char* what, double accepted) {
-    // int_a^b in eta = (a + b)/2 - (b - a)/2 cos phi, d eta = (b - a)/2 sin phi d phi: between
-    // neighbouring breakpoints the integrands of W and of int p Theta have at most square-root
-    // (p at r = 1) and 3/2-power (H at s and c0) ends, which this substitution makes analytic in
-    // phi, so that GSL's adaptive Gauss-Kronrod rule meets the tolerance in a few bisections
-    // instead of the hundreds that the ends cost in eta (measured: docs/performance.md).
-    // eta is taken from the nearer end, a + 2 half sin^2(phi/2) or b - 2 half cos^2(phi/2), so that
-    // its distance to that end (the Cauchy integrand's eta - r when r is the end) carries no
-    // cancellation. Where GSL still fails (a Cauchy point r next to an end, within the 1e-9 for which
-    // W does not cut there, or eta rounding onto the end), the piece is integrated as before, in eta
-    // by qags, whose extrapolation serves end singularities; only that route's failure is an error.
-    // GSL's "cannot reach the tolerance" is accepted where its own estimate of the error is below `accepted` (the
-    // piece's share of its integral's limit, within_accepted).
-    if (!(b > a)) return {0.0, 0.0};
-    const double half = 0.5 * (b - a);
-    const std::function<double(double)> in_phi = [&](double phi) {
-        const double s = std::sin(0.5 * phi), c = std::cos(0.5 * phi);
-        const double eta = phi < M_PI_2 ? a + 2.0 * half * s * s : b - 2.0 * half * c * c;
-        return integrand(eta) * half * std::sin(phi);
-    };
-    const auto integrate = [&](const std::function<double(double)>& f, bool in_eta) {
-        gsl_function fn;
-        fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
-        fn.params = const_cast<std::function<double(double)>*>(&f);
-        quadrature_value v{0.0, 0.0};
-        double& result = v.value;
-        double& error = v.error;
-        const int status =
-            in_eta ? gsl_integration_qags(&fn, a, b, quadrature_absolute, quadrature_relative, quadrature_intervals,
-                                          workspace_.get(), &result, &error)
-                   : gsl_integration_qag(&fn, 0.0, M_PI, quadrature_absolute, quadrature_relative, quadrature_intervals,
-                                         GSL_INTEG_GAUSS21, workspace_.get(), &result, &error);
-        return std::make_pair(status == GSL_SUCCESS || error < accepted ? GSL_SUCCESS : status, v);
-    };
-    const auto [status, result] = integrate(in_phi, false);
-    if (status == GSL_SUCCESS && std::isfinite(result.value)) return result;
-    const auto [eta_status, eta_result] = integrate(integrand, true);
-    gsl_check(eta_status, what);
-    return eta_result;
-}
-
-quadrature_value dissimilar_zones::integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
-                                                    const char* what, double accepted) {
-    // Where the whole piece fails (both of integrate_piece's routes at their rounding: the whole first five-zone stick
-    // zone at n = 512 for int p Theta, n = 1000 for W; GSL_EROUND), the same in pieces equal in the angle arccos(eta):
-    // the U-series of degree n - 1 runs through about n/2 periods over the angle pi, so a piece of angle 32 pi/n holds
-    // about 16, which GSL's 21-point rule bisects to 1e-12 without meeting the sum's rounding (8(p), "Free rolling at
-    // f = 0.2"). First as one piece, so that every integral that succeeded so keeps its value bit for bit. The pieces'
-    // errors add, and their sum is held to the whole's `accepted` (within_accepted).
-    const double from = std::acos(std::clamp(a, -1.0, 1.0)), to = std::acos(std::clamp(b, -1.0, 1.0));
-    const int pieces = static_cast<int>(std::ceil((from - to) * solver_.normal().rule.n / (32.0 * M_PI)));
-    if (!(b > a) || pieces <= 1) return integrate_piece(integrand, a, b, what, accepted);
-    try {
-        return integrate_piece(integrand, a, b, what, accepted);
-    } catch (const numerical_error&) {
-    }
-    const auto end = [&](int k) { return k == 0 ? a : k == pieces ? b : std::cos(from + (to - from) * k / pieces); };
-    return within_accepted(static_cast<std::size_t>(pieces), accepted, [&](std::size_t k, double share) {
-        const int i = static_cast<int>(k);
-        return integrate_piece(integrand, end(i), end(i + 1), what, share);
-    });
-}
-
 double dissimilar_zones::integrate_over(const std::vector<double>& points, const char* what, bool cut,
                                         const std::function<double(double)>& integrand,
                                         const std::function<double(double)>& last) {
     return within_accepted(points.size() - 1, quadrature_accepted, [&](std::size_t i, double accepted) {
                const std::function<double(double)>& piece = last && i + 2 == points.size() ? last : integrand;
-               return cut ? integrate_pieces(piece, points[i], points[i + 1], what, accepted)
-                          : integrate_piece(piece, points[i], points[i + 1], what, accepted);
+               return cut ? quadrature_.pieces(piece, points[i], points[i + 1], solver_.normal().rule.n, what, accepted)
+                          : quadrature_.piece(piece, points[i], points[i + 1], what, accepted);
            }).value;
 }
 
 double dissimilar_zones::load_under_H(double start, double c0) {
-    // int p H = int_s^c p Theta (integrate_piece) + int_c^1 p (closed form, load_between).
+    // int p H = int_s^c p Theta (end_quadrature) + int_c^1 p (closed form, load_between).
     const std::function<double(double)> pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
     std::vector<double> points{start, c0};
     if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, 1e-9);  // p's one-sided roots (8(o))

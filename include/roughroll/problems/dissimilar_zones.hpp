@@ -41,12 +41,12 @@
 #include <unordered_map>
 #include <vector>
 
-#include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/model/kernel.hpp"
 
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
+#include "roughroll/numerics/end_quadrature.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/numerics/u_series_table.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -115,40 +115,6 @@ struct five_zone_solution {
     double ends_resolution = 0.0;      // Newton's (newton_root::resolution)
     int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
 };
-
-// A quadrature's value and GSL's estimate of its error (dissimilar_zones' integrals of the blended zone).
-struct quadrature_value {
-    double value;
-    double error;
-};
-
-// The sum of `count` pieces of one integral, piece(i, accepted) -> quadrature_value, whose errors add (W's
-// breakpoints, integrate_pieces' cuts; docs/formulation.md 8(p)): each piece first at the whole limit `accepted` (the
-// values of before, bit for bit, where their errors' sum is within it), then, where the sum is not, each piece above
-// its share accepted/count again at that share (dissimilar_zones::integrate_piece takes its other route or throws).
-// A piece that meets GSL's own tolerances (1e-14 absolute or 1e-12 relative: GSL_SUCCESS) is kept at any error below
-// them, so the sum's error is within `accepted` plus 1e-12 of the sum of |piece| (session 17 review I2): for W and
-// int p Theta, of order 1 on at most 28 pieces, a few 1e-11 more.
-template <class Piece>
-quadrature_value within_accepted(std::size_t count, double accepted, const Piece& piece) {
-    std::vector<quadrature_value> v(count);
-    double error = 0.0;
-    for (std::size_t i = 0; i < count; ++i) {
-        v[i] = piece(i, accepted);
-        error += v[i].error;
-    }
-    if (error > accepted) {
-        const double share = accepted / static_cast<double>(count);
-        for (std::size_t i = 0; i < count; ++i)
-            if (v[i].error > share) v[i] = piece(i, share);
-    }
-    quadrature_value total{0.0, 0.0};
-    for (const quadrature_value& x : v) {
-        total.value += x.value;
-        total.error += x.error;
-    }
-    return total;
-}
 
 using five_zone_start = zone_start<five_zone_solution>;  // a start of their search (zone_start.hpp)
 
@@ -261,19 +227,8 @@ private:
     std::vector<double> breakpoints(double r, double start, double c0) const;  // W's pieces
     const blended_cauchy* blend_of(double start, double c0);  // W's Cauchy part on the zone, null: adaptive
     const kinks_blend* kinks_blend_of(double start, double c0);  // that of p_q^0 (8(o)), null: adaptive
-    // int_a^b of an integrand with square-root or 3/2-power ends at a and b (W, int p Theta), with GSL's estimate of
-    // its error: GSL meets its tolerances, or that estimate is below `accepted` (the piece's share of its integral's
-    // limit), or the call throws numerical_error.
-    quadrature_value integrate_piece(const std::function<double(double)>& integrand, double a, double b,
-                                     const char* what, double accepted);
-    // The same over [a, b], where one piece fails cut into pieces equal in the series' angle arccos(eta), as many as
-    // the pressure's U-series has periods there over 16: the whole first five-zone stick zone in one GSL call meets
-    // its rounding (GSL_EROUND) at n = 512 (int p Theta) and 1000 (W) (docs/formulation.md 8(p)).
-    // The pieces' errors add: their sum is held to `accepted`.
-    quadrature_value integrate_pieces(const std::function<double(double)>& integrand, double a, double b,
-                                      const char* what, double accepted);
-    // The sum over the pieces between `points` (sorted) of integrate_pieces (`cut`) or integrate_piece, their errors
-    // held to quadrature_accepted (within_accepted); `last` (where given) in place of `integrand` on the last piece.
+    // The sum over the pieces between `points` (sorted) of end_quadrature's pieces (`cut`) or piece, their errors held
+    // to quadrature_accepted (within_accepted); `last` (where given) in place of `integrand` on the last piece.
     double integrate_over(const std::vector<double>& points, const char* what, bool cut,
                           const std::function<double(double)>& integrand,
                           const std::function<double(double)>& last = {});
@@ -289,7 +244,7 @@ private:
     // The pressure tabulated (u_series_table.hpp) where its series has more than 50 terms, at its first use.
     mutable std::optional<u_series_table> pressure_table_;
     std::shared_ptr<const pressure_kinks> pressure_kinks_;  // the normal solution's (null but at full coupling)
-    integration_workspace_ptr workspace_;
+    end_quadrature quadrature_;  // W's and int p Theta's
     zone_memo<blended_cauchy> blends_;    // blend_of's
     zone_memo<kinks_blend> kinks_blends_;  // kinks_blend_of's
     std::shared_ptr<const five_zone_solution> tractions_of_;  // traction's memo of a five-zone solution's p1
