@@ -111,7 +111,7 @@ TEST(DissimilarFiveZones, DrivenAtThreeQuarters) {
 // Cauchy point r at the end of its last piece (r = 1) or within 1e-9 of it (where W does not cut
 // there) gives finite values that approach v(1) as sqrt(1 - r) does, the change shrinking about ten
 // times per hundredfold step. (W in the analytic variable alone returned NaN at r = 1 here, eta
-// rounding onto the end; the route in eta before it threw at 1 - r = 1e-12: integrate_piece now
+// rounding onto the end; the route in eta before it threw at 1 - r = 1e-12: end_quadrature::piece now
 // falls back from one to the other.)
 TEST(DissimilarFiveZones, SlipVelocityUpToTheTrailingEdge) {
     const double f = 0.05, Q = 0.75 * f;

@@ -52,7 +52,7 @@ TEST(Integrals, PiecesShareTheAcceptedErrorOfTheirSum) {
               0.0 + 0.1 + 0.2 + 0.30000000000000004 + 0.4 + 0.5 + 0.6000000000000001 + 0.7000000000000001);
     for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(asked[i], 1) << i;
 
-    // A piece that cannot meet its share throws, as integrate_piece does: the sum is never reported above the limit.
+    // A piece that cannot meet its share throws, as end_quadrature::piece does: the sum is never reported above the limit.
     EXPECT_THROW(within_accepted(count, limit,
                                  [&](std::size_t, double accepted) -> quadrature_value {
                                      if (accepted < limit) throw numerical_error("the piece's share not met");

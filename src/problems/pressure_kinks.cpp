@@ -14,7 +14,7 @@ namespace roughroll {
 
 namespace {
 // The plateau's adaptive quadrature (kinks_blend::plateau_part): GSL's 21-point rule per piece in the cos map of
-// dissimilar_zones::integrate_piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
+// end_quadrature::piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
 constexpr std::size_t plateau_intervals = 400;
 constexpr double plateau_absolute = 1e-14, plateau_relative = 1e-12, plateau_accepted = 1e-13;
 // kinks_blend's memo of plateau_part's points per piece stops growing here (memory: 40 bytes and the map's node each).

@@ -202,7 +202,7 @@ double blend_kinks(double t);
 
 // Adds to `points` (breakpoints of a quadrature over [points' least, points' greatest]) the zone ends of
 // `kinks` that lie strictly inside that range and more than `apart` from every point: an adaptive rule
-// that maps each piece's ends to smooth ones (dissimilar_zones::integrate_piece) then meets p's one-sided
+// that maps each piece's ends to smooth ones (end_quadrature::piece) then meets p's one-sided
 // square roots at piece ends (docs/formulation.md 8(o)).
 void add_kink_points(std::vector<double>& points, const pressure_kinks& kinks, double apart);
 
