@@ -204,16 +204,15 @@ TEST(LadderRefusals, FullCouplingSkipsARungCertainToFail) {
     EXPECT_EQ(r.stopped_at, 1000);
 }
 
-// Braked, Q/f = -0.75 (three zones of one direction, the pressure's kinks carried, 8(l)): no order-1 law.
-// Rung 128's changes contract (the start's 2.5e-5, 1.0e-5 from n = 32: ratio 2.4) on zones of at least ten nodes of
-// level 32, so the three-level rule of 8(q) takes three times the last change, 3.1e-5 of s (0.44 long), within the
-// default tolerance: answered at rung 128 (the old program's twice the larger change, 4.9e-5, needed rung 256), every
-// estimate above its distance from n = 512.
+// Braked, Q/f = -0.75 (three zones of one direction): since the stick zone and the pressure are on their Jacobi weights
+// (8(v), 8(w)) the levels are spectral and the point answers below the first rung, at n = 32 (8(q), "Rungs below the
+// first"), every estimate above its distance from n = 512; no rung from 128 on is solved. The driven Q/f = +0.9 (three
+// zones of opposite directions, the kinks carried: 8(q)'s rules from rung 128) still answers at the first rung alone.
 TEST(LadderRefusals, FullCouplingStillAnswersWhereARungMeetsTheTolerance) {
-    const full_run r = run_full(-0.75, std::nullopt, {256, 512, 1000});
+    const full_run r = run_full(-0.75, std::nullopt, {128, 256, 512, 1000});
     ASSERT_TRUE(r.answer.has_value()) << r.refusal;
-    EXPECT_EQ(r.answer->n, 128);
-    EXPECT_EQ(r.solved, (std::vector<int>{128}));
+    EXPECT_EQ(r.answer->n, 32);
+    EXPECT_EQ(r.solved, (std::vector<int>{32}));
     const tangential_solution& s = r.answer->solution;
     const error_estimate& e = *r.answer->estimate;
     contact fine(roughness{}, 0.05, solver_options{512, method::product}, dissimilar{beta_al_st, coupling_level::full});
@@ -221,6 +220,10 @@ TEST(LadderRefusals, FullCouplingStillAnswersWhereARungMeetsTheTolerance) {
     EXPECT_GE(e.start, std::fabs(s.start() - f.start()));
     EXPECT_GE(e.c0, std::fabs(s.c0() - f.c0()));
     EXPECT_GE(e.xi, std::fabs(s.xi - f.xi));
+    const full_run driven = run_full(0.9, std::nullopt, {256, 512, 1000});
+    ASSERT_TRUE(driven.answer.has_value()) << driven.refusal;
+    EXPECT_EQ(driven.answer->n, 128);
+    EXPECT_EQ(driven.solved, (std::vector<int>{128}));
 }
 
 // The changes behind a full-coupling estimate are the levels' own: level n/4, n/2, n solved apart.

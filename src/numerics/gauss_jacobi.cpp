@@ -13,7 +13,7 @@
 
 namespace roughroll {
 
-gauss_jacobi::gauss_jacobi(int n_, double a_, double b_) : n(n_), a(a_), b(b_) {
+gauss_jacobi::gauss_jacobi(int n_, double a_, double b_) : n(n_), a(a_), b(b_), recurrence(a_, b_, std::max(n_, 1)) {
     gsl_guard();
     if (n < 1 || !(a > -1.0) || !(b > -1.0))
         throw numerical_error("cannot build a Gauss-Jacobi rule of " + std::to_string(n) + " nodes with exponents " +
@@ -41,46 +41,72 @@ double jacobi_weight(double a, double b, double t) {
     return std::pow(std::max(0.0, 1.0 - t), a) * std::pow(std::max(0.0, 1.0 + t), b);
 }
 
-void jacobi_values(double a, double b, double x, int count, double* out) {
-    if (count <= 0) return;
-    out[0] = 1.0;
-    if (count == 1) return;
-    // DLMF 18.9.1-18.9.2: P_1 = (a + 1) + (a + b + 2)(x - 1)/2 and, for j >= 1,
-    // 2 (j+1)(j+a+b+1)(2j+a+b) P_{j+1} = (2j+a+b+1) [(2j+a+b+2)(2j+a+b) x + a^2 - b^2] P_j
-    //                                    - 2 (j+a)(j+b)(2j+a+b+2) P_{j-1}.
-    out[1] = (a + 1.0) + 0.5 * (a + b + 2.0) * (x - 1.0);
-    for (int j = 1; j + 1 < count; ++j) {
-        const double s = 2.0 * j + a + b;
-        const double d = 2.0 * (j + 1.0) * (j + a + b + 1.0) * s;
-        out[j + 1] = ((s + 1.0) * ((s + 2.0) * s * x + a * a - b * b) * out[j] -
-                      2.0 * (j + a) * (j + b) * (s + 2.0) * out[j - 1]) /
-                     d;
-    }
+namespace {
+
+// DLMF 18.9.1-18.9.2: P_1 = (a + 1) + (a + b + 2)(x - 1)/2 = A_0 x + B_0 and, for j >= 1,
+// 2 (j+1)(j+a+b+1)(2j+a+b) P_{j+1} = (2j+a+b+1) [(2j+a+b+2)(2j+a+b) x + a^2 - b^2] P_j
+//                                    - 2 (j+a)(j+b)(2j+a+b+2) P_{j-1},
+// P_{j+1} = (A_j x + B_j) P_j - C_j P_{j-1}. The one place the coefficients are computed: the tables of
+// jacobi_recurrence and the sums of jacobi_values and jacobi_series give the same bits.
+struct recurrence_step {
+    double A, B, C;
+};
+inline recurrence_step recurrence_at(double a, double b, int j) {
+    if (j == 0) return {0.5 * (a + b + 2.0), 0.5 * (a - b), 0.0};
+    const double s = 2.0 * j + a + b;
+    const double inv = 1.0 / (2.0 * (j + 1.0) * (j + a + b + 1.0) * s);
+    return {(s + 1.0) * (s + 2.0) * s * inv, (s + 1.0) * (a * a - b * b) * inv, 2.0 * (j + a) * (j + b) * (s + 2.0) * inv};
 }
 
-double jacobi_series(const std::vector<double>& c, double a, double b, double x) {
-    std::vector<double> p(c.size());
-    jacobi_values(a, b, x, static_cast<int>(c.size()), p.data());
-    double sum = 0.0;
-    for (std::size_t j = 0; j < c.size(); ++j) sum += c[j] * p[j];
-    return sum;
-}
+}  // namespace
 
 jacobi_recurrence::jacobi_recurrence(double a_, double b_, int count) : a(a_), b(b_) {
     const int m = std::max(count, 1);
     A.resize(m);
     B.resize(m);
     C.resize(m);
-    A[0] = 0.5 * (a + b + 2.0);
-    B[0] = 0.5 * (a - b);
-    C[0] = 0.0;
-    for (int j = 1; j < m; ++j) {  // DLMF 18.9.1-18.9.2, as jacobi_values
-        const double s = 2.0 * j + a + b;
-        const double d = 2.0 * (j + 1.0) * (j + a + b + 1.0) * s;
-        A[j] = (s + 1.0) * (s + 2.0) * s / d;
-        B[j] = (s + 1.0) * (a * a - b * b) / d;
-        C[j] = 2.0 * (j + a) * (j + b) * (s + 2.0) / d;
+    for (int j = 0; j < m; ++j) {
+        const recurrence_step r = recurrence_at(a, b, j);
+        A[j] = r.A;
+        B[j] = r.B;
+        C[j] = r.C;
     }
+}
+
+void jacobi_recurrence::values(double x, int count, double* out) const {
+    if (count <= 0) return;
+    out[0] = 1.0;
+    if (count == 1) return;
+    out[1] = A[0] * x + B[0];
+    for (int j = 1; j + 1 < count; ++j) out[j + 1] = (A[j] * x + B[j]) * out[j] - C[j] * out[j - 1];
+}
+
+void jacobi_values(double a, double b, double x, int count, double* out) {
+    if (count <= 0) return;
+    out[0] = 1.0;
+    if (count == 1) return;
+    const recurrence_step first = recurrence_at(a, b, 0);
+    out[1] = first.A * x + first.B;
+    for (int j = 1; j + 1 < count; ++j) {
+        const recurrence_step r = recurrence_at(a, b, j);
+        out[j + 1] = (r.A * x + r.B) * out[j] - r.C * out[j - 1];
+    }
+}
+
+double jacobi_series(const std::vector<double>& c, double a, double b, double x) {
+    // jacobi_recurrence::series without the table: the same steps, in the same order (no allocation).
+    if (c.empty()) return 0.0;
+    const recurrence_step first = recurrence_at(a, b, 0);
+    double prev = 1.0, cur = first.A * x + first.B, sum = c[0];
+    if (c.size() > 1) sum += c[1] * cur;
+    for (std::size_t j = 1; j + 1 < c.size(); ++j) {
+        const recurrence_step r = recurrence_at(a, b, static_cast<int>(j));
+        const double next = (r.A * x + r.B) * cur - r.C * prev;
+        prev = cur;
+        cur = next;
+        sum += c[j + 1] * cur;
+    }
+    return sum;
 }
 
 double jacobi_recurrence::series(const std::vector<double>& c, double x) const {
@@ -109,10 +135,11 @@ double jacobi_recurrence::series_shifted(const std::vector<double>& c, double x)
 }
 
 std::vector<double> jacobi_coefficients(const gauss_jacobi& rule, const std::vector<double>& values) {
+    // O(n) per node by the rule's own table (no division per term).
     const int n = rule.n;
     std::vector<double> c(n, 0.0), h(n, 0.0), p(n);
     for (int k = 0; k < n; ++k) {
-        jacobi_values(rule.a, rule.b, rule.nodes[k], n, p.data());
+        rule.recurrence.values(rule.nodes[k], n, p.data());
         const double wv = rule.weights[k] * values[k];
         for (int j = 0; j < n; ++j) {
             c[j] += wv * p[j];

@@ -24,6 +24,8 @@ std::vector<int> ladder_rungs(method how) {
     return rungs;
 }
 
+std::vector<int> spectral_rungs(method how) { return {default_nodes(how) / 4, default_nodes(how) / 2}; }
+
 tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
                                double strength) {
     // The rounding floors at the largest n (docs/performance.md "How the error estimates are made",
@@ -75,9 +77,11 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
       strength_(std::max(kernel::tangential(surfaces).strength(), kernel::normal(surfaces).strength())),
       smooth_(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty()),
       order_(order_of(options.how)),
+      how_(options.how),
       flagged_final_(options.zones == zone_search::single),
       make_(std::move(make)),
-      levels_(std::make_shared<level_store>()) {
+      levels_(std::make_shared<level_store>()),
+      spectral_levels_(std::make_shared<level_store>()) {
     check_tolerance(tolerance_, "the tolerance");
 }
 
@@ -306,6 +310,41 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     throw resolution_error(msg);
 }
 
+std::optional<level_ladder::answer> level_ladder::below_first(double Q) {
+    // docs/formulation.md 8(q), "Rungs below the first". The braked three zones of smooth rollers at full coupling
+    // (one slip direction at both edges: Q beta_D < 0, 8(g), (h)) are solved with the stick zone and the pressure on
+    // their Jacobi weights (8(v), 8(w)), where every level change from n = 16 on is at rounding or far above the
+    // distance from n = 1000 (the estimates bound it by factors 3 to 10^7: the braked pair Q/f = -0.75 and the strong
+    // scene beta_D = 0.3, f = 0.2, Q/f = -0.75 at n = 16 .. 128, 8(q)'s table): such a point may answer at a rung below
+    // the first. The rung's own estimate decides, as at any rung; a point whose stick zone is not on its Jacobi weight
+    // (five zones near free rolling, a zone at an edge, gross sliding) is left to the rungs from the first, untouched
+    // (these rungs' levels are their own: spectral_levels_).
+    if (flagged_final_ || !smooth_) return std::nullopt;
+    const contact& first = at(rungs_.front());
+    const dissimilar& m = first.materials();
+    if (m.coupling != coupling_level::full || !(Q * m.beta_d < 0.0) || !(std::fabs(Q) < first.friction()))
+        return std::nullopt;
+    for (const int n : spectral_rungs(how_)) {
+        try {
+            std::unique_ptr<contact>& c = built_[n];
+            if (!c) c = make_(n, spectral_levels_);
+            tangential_solution s = c->point(Q);
+            if (!(s.weight_a > 0.0) || !s.checks.hold()) break;  // not the spectral structure: the climb decides
+            std::optional<error_estimate> e = c->estimate(s);
+            if (e && check(*c, s, *e).ratio <= 1.0) return answer{std::move(s), std::move(e), n};
+        } catch (const beyond_method_error&) {
+            throw;
+        } catch (const resolution_error&) {
+            // Safe to drop: nothing of these rungs reaches the climb (their own store and contacts), which solves its
+            // rungs as without them and refuses, where it does, with its own line.
+            break;
+        } catch (const numerical_error&) {
+            break;
+        }
+    }
+    return std::nullopt;
+}
+
 level_ladder::answer level_ladder::point(double Q, std::size_t from) {
     // A point that no rung can answer, as the first rung's contact that can be built tells before any
     // solve: refused at once. (A rung that cannot be built is refused by the climb as before.)
@@ -319,6 +358,8 @@ level_ladder::answer level_ladder::point(double Q, std::size_t from) {
         if (why) throw resolution_error(*why);
         break;
     }
+    if (from == 0)
+        if (std::optional<answer> a = below_first(Q)) return std::move(*a);
     return climb(
         [Q](contact& c, int n) {
             tangential_solution s = c.point(Q);

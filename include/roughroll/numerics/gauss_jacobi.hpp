@@ -14,13 +14,28 @@
 
 namespace roughroll {
 
+// The three-term recurrence of P_j^(a,b) (DLMF 18.9.1-18.9.2) with its coefficients tabulated once,
+// P_{j+1} = (A_j x + B_j) P_j - C_j P_{j-1} (P_0 = 1, P_1 = A_0 x + B_0): no division per term. Its coefficients are
+// computed in one place (gauss_jacobi.cpp), which jacobi_values and jacobi_series use too: a series summed by either
+// route gives the same bits. Up to `count` terms (P_0 .. P_count).
+struct jacobi_recurrence {
+    jacobi_recurrence(double a, double b, int count);
+    double a, b;
+    std::vector<double> A, B, C;
+    void values(double x, int count, double* out) const;                  // P_0(x) .. P_{count-1}(x), count <= A.size() + 1
+    double series(const std::vector<double>& c, double x) const;          // sum_j c_j P_j(x)
+    double series_shifted(const std::vector<double>& c, double x) const;  // sum_j c_j P_{j+1}(x)
+};
+
 // Nodes and weights of sum_k W_k g(t_k) = int_{-1}^{1} (1 - t)^a (1 + t)^b g(t) dt, exact for deg g <= 2n - 1,
-// by gsl_integration_fixed_jacobi (Golub-Welsch); nodes ascending. a, b > -1.
+// by gsl_integration_fixed_jacobi (Golub-Welsch); nodes ascending. a, b > -1. With the recurrence of its P_j^(a,b)
+// up to P_n (O(n), for jacobi_coefficients).
 struct gauss_jacobi {
     gauss_jacobi(int n, double a, double b);
 
     int n;
     double a, b;
+    jacobi_recurrence recurrence;
     std::vector<double> nodes;
     std::vector<double> weights;
 };
@@ -37,25 +52,16 @@ struct jacobi_collocation {
 // (1 - t)^a (1 + t)^b on [-1, 1].
 double jacobi_weight(double a, double b, double t);
 
-// P_0^(a,b)(x) .. P_{count-1}^(a,b)(x) into out, by the three-term recurrence (DLMF 18.9.1-18.9.2); any real x.
+// P_0^(a,b)(x) .. P_{count-1}^(a,b)(x) into out, by the recurrence of jacobi_recurrence, its coefficients computed
+// term by term (no table, no allocation); any real x.
 void jacobi_values(double a, double b, double x, int count, double* out);
 
-// sum_j c_j P_j^(a,b)(x).
+// sum_j c_j P_j^(a,b)(x), as jacobi_recurrence::series (no allocation).
 double jacobi_series(const std::vector<double>& c, double a, double b, double x);
 
-// The recurrence of jacobi_values with its coefficients tabulated once, P_{j+1} = (A_j x + B_j) P_j - C_j P_{j-1}
-// (P_1 = A_0 x + B_0): series summed without a division per term (full coupling's weighted pressure, 8(w), is
-// summed at every point a quadrature asks). Up to `count` terms.
-struct jacobi_recurrence {
-    jacobi_recurrence(double a, double b, int count);
-    double a, b;
-    std::vector<double> A, B, C;
-    double series(const std::vector<double>& c, double x) const;          // sum_j c_j P_j(x)
-    double series_shifted(const std::vector<double>& c, double x) const;  // sum_j c_j P_{j+1}(x)
-};
-
 // The coefficients c_0..c_{n-1} of the degree n - 1 interpolant of `values` given at the rule's nodes:
-// c_j = sum_k W_k v_k P_j(t_k) / h_j, h_j = sum_k W_k P_j(t_k)^2 (both exact: degree <= 2n - 2).
+// c_j = sum_k W_k v_k P_j(t_k) / h_j, h_j = sum_k W_k P_j(t_k)^2 (both exact: degree <= 2n - 2); P_j(t_k) by the
+// rule's recurrence table, O(n) per node.
 std::vector<double> jacobi_coefficients(const gauss_jacobi& rule, const std::vector<double>& values);
 
 // (1/pi) int_{-1}^{1} w(tau) psi(tau)/(tau - x) d tau for |x| > 1, psi the series c on the rule's weight with

@@ -37,6 +37,9 @@ namespace roughroll {
 // The n the ladder tries for a method, in order: default_nodes(how) doubled while below
 // max_nodes, then max_nodes.
 std::vector<int> ladder_rungs(method how);
+// The rungs below the first that a point of the braked three zones at full coupling on smooth rollers may answer at
+// (level_ladder::point; docs/formulation.md 8(q), "Rungs below the first"): default_nodes(how)/4, /2, in order.
+std::vector<int> spectral_rungs(method how);
 
 // How an estimate compares with the tolerance tol, quantity by quantity (docs/performance.md "The
 // ladder chooses n"): a quantity v with estimate e and scale s is within it when
@@ -83,6 +86,10 @@ public:
     // The point at Q: the first rung from `from` (an index into rungs()) whose point holds its checks
     // and whose estimate is within the tolerance. Throws resolution_error (one line: the best
     // estimate reached and its n, or why no rung gave one; what to change) when none does.
+    // From the first rung (from = 0) a braked point at full coupling on smooth rollers first tries spectral_rungs(),
+    // each answering only where its point's stick zone is on its Jacobi weight (8(v), 8(w): levels spectral), its
+    // checks hold and its estimate is within the tolerance; those rungs share their levels with each other only, so
+    // that where none answers the climb from the first rung is the one without them, digit for digit.
     answer point(double Q, std::size_t from = 0);
     // The same for the point whose stick zone ends at c0 (contact::at_stick_end, a swept curve).
     answer at_stick_end(double c0, std::size_t from = 0);
@@ -117,15 +124,19 @@ private:
     // before: 1000 after 512 or 768), has its levels n/4 and n/2 solved first (kept for its point); where the certain
     // part of its estimate in their change fails the tolerance, that part, and its point is not solved.
     std::optional<tolerance_check> before_point(contact& c, double Q, std::size_t i);
+    // The point at Q from spectral_rungs(), where one answers it (point's comment); else nothing.
+    std::optional<answer> below_first(double Q);
 
     std::vector<int> rungs_;
     double tolerance_;
     double strength_;     // the kernels' sum |T| (kernel::strength)
     bool smooth_;         // no roughness: the only scenes whose coupled pressure carries the kinks (8(q) rule (a'))
     int order_;           // the levels' order p (order_of)
+    method how_;          // the method (spectral_rungs)
     bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
     rung_factory make_;
     std::shared_ptr<level_store> levels_;  // held by the rungs' contacts too (a released contact outlives the ladder)
+    std::shared_ptr<level_store> spectral_levels_;  // spectral_rungs()' own (below_first)
     std::map<int, std::unique_ptr<contact>> built_;
 };
 
