@@ -12,6 +12,9 @@ namespace roughroll {
 namespace {
 // Cuts closer than this to each other or to an edge are one: a piece shorter than it holds nothing to integrate.
 constexpr double cut_apart = 1e-12;
+// The a-posteriori check of the degree (cut_convolution.hpp, docs/formulation.md 8(o) "The degree, checked"): a
+// piece's summed tail of g dr/du at most this fraction of pi max |g dr/du|.
+constexpr double tail_tolerance = 1e-13;
 }  // namespace
 
 cut_convolution::cut_convolution(const kernel& k, const values& g, const std::vector<double>& cuts, int oscillation,
@@ -30,21 +33,20 @@ cut_convolution::cut_convolution(const kernel& k, const values& g, const std::ve
     constexpr int degree = theta_panels::degree;
     const int size = degree + 1;
     const double rate = k.max_rate();
+    // Beyond this degree (about 2.6 10^4 panels per piece, 6.6 10^5 values of g) the piece is refused.
+    constexpr int max_degree = 1 << 16;
 
     // Per piece: its panels (convolution_table's rule for the degree and rate the piece sees in u), the local
     // x = cos u at every node, and g dr/du = g h sin u there (dr = -h sin u du; L and R run in u as in theta).
     std::vector<std::vector<double>> x(count), w(count), d(count);
-    for (std::size_t p = 0; p < count; ++p) {
+    std::vector<double> r;
+    const auto fill = [&](std::size_t p, int panels) {
         const double m = 0.5 * (cuts_[p] + cuts_[p + 1]), h = 0.5 * (cuts_[p + 1] - cuts_[p]);
-        const int n = static_cast<int>(std::ceil(oscillation * std::max(1.0, std::sqrt(h / narrowest))));
-        const double piece_rate = rate * h;
-        const int panels = convolution_table::panels_for(n, piece_rate);
-        pieces_.emplace_back(panels);
+        pieces_[p] = theta_panels(panels);
         const std::size_t nodes = static_cast<std::size_t>(panels) * size;
         x[p].resize(nodes);
         w[p].resize(nodes);
-        d[p].assign(nodes, 0.0);
-        std::vector<double> r(nodes);
+        r.resize(nodes);
         for (int j = 0; j < panels; ++j)
             for (int i = 0; i < size; ++i) {
                 const std::size_t q = static_cast<std::size_t>(j) * size + i;
@@ -53,8 +55,54 @@ cut_convolution::cut_convolution(const kernel& k, const values& g, const std::ve
             }
         g(r.data(), w[p].data(), nodes);
         for (std::size_t q = 0; q < nodes; ++q) w[p][q] *= h * std::sqrt((1.0 - x[p][q]) * (1.0 + x[p][q]));
+    };
+    // The a-posteriori check of the degree (the class comment): over the panels of piece p, the largest of the last
+    // three Chebyshev coefficients of g dr/du's interpolant times the panel's half-length in u, summed (L and R
+    // accumulate each panel's integral once, with factors <= 1).
+    const std::vector<double> to_coefficients = theta_panels::values_to_coefficients();
+    const auto tail_of = [&](std::size_t p) {
+        double sum = 0.0;
+        for (int j = 0; j < pieces_[p].panels(); ++j) {
+            const double* wj = &w[p][static_cast<std::size_t>(j) * size];
+            double tail = 0.0;
+            for (int k = degree - 2; k <= degree; ++k) {
+                double c = 0.0;
+                for (int i = 0; i < size; ++i) c += to_coefficients[k * size + i] * wj[i];
+                tail = std::max(tail, std::fabs(c));
+            }
+            sum += 0.5 * pieces_[p].length() * tail;
+        }
+        return sum;
+    };
+    pieces_.resize(count);
+    std::vector<int> degrees(count);
+    double scale = 0.0;
+    for (std::size_t p = 0; p < count; ++p) {
+        const double h = 0.5 * (cuts_[p + 1] - cuts_[p]);
+        degrees[p] = static_cast<int>(std::ceil(oscillation * std::max(1.0, std::sqrt(h / narrowest))));
+        fill(p, convolution_table::panels_for(degrees[p], rate * h));
+        for (const double v : w[p]) scale = std::max(scale, std::fabs(v));
+    }
+    // A piece whose sum is above tail_tolerance pi max |g dr/du| (the largest over all pieces at their first panels:
+    // the size the integrals, and so D, are measured against) takes twice the degree (and panel_bound's panels for
+    // it) until it is below; refused beyond max_degree. Where no piece is raised the table is the one of the degree
+    // estimate alone, bit for bit.
+    for (std::size_t p = 0; p < count; ++p) {
+        const double h = 0.5 * (cuts_[p + 1] - cuts_[p]);
+        double tail = tail_of(p);
+        while (!(tail <= tail_tolerance * M_PI * scale)) {
+            if (2 * degrees[p] > max_degree)
+                throw numerical_error(
+                    "full coupling: the layer terms of the pressure's kinks (rough rollers) are not resolved by a "
+                    "table of any size (docs/formulation.md 8(o)); try another n");
+            degrees[p] *= 2;
+            fill(p, convolution_table::panels_for(degrees[p], rate * h));
+            tail = tail_of(p);
+        }
+        worst_tail_ = std::max(worst_tail_, scale > 0.0 ? tail / (M_PI * scale) : 0.0);
     }
 
+    for (std::size_t p = 0; p < count; ++p) d[p].assign(w[p].size(), 0.0);
     const std::vector<double> integrate = theta_panels::integration_matrix();
     std::vector<double> v(size), grow(size), integral(size);
     const auto integrate_panel = [&](double half) {

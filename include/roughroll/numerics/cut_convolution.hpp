@@ -29,9 +29,18 @@ public:
     // taken as oscillation max(1, sqrt(h/narrowest)): next to a zone of half-length rho its terms z^(j+1) =
     // exp(-(j + 1) acosh t), t - 1 = (r - c)/rho, vary in u like exp(-2 (j + 1) sqrt(h/rho) cos(u/2)). Each piece's
     // panels are then convolution_table's for that degree and the piece's rate A h, refined until its bound is below
-    // eps (convolution_table::panel_bound). The degree next to a zone is an estimate, not a bound: the representation
-    // is checked (tests/test_rough_step0_s19.cpp against QAGS of the definition, to 2.4e-14), not bounded as
-    // convolution_table's is; it has no error_bound().
+    // eps (convolution_table::panel_bound). That degree is an estimate (it ignores, e.g., sqrt(1 - r^2) of a zone next
+    // to an edge), so it is checked a posteriori, not bounded: on every panel the interpolant of g dr/du (the
+    // integrand of L and R before the kernel's factor, which panel_bound covers) has Chebyshev coefficients c_k,
+    // k <= 24; the check sums over a piece's panels max(|c_22|, |c_23|, |c_24|) times the panel's half-length in u
+    // (an estimate of the spectral integration's error on that piece, as Chebfun's tail test: it presumes the
+    // coefficients fall geometrically beyond 24, which an analytic g gives) and asks it to be at most 1e-13 of
+    // pi max |g dr/du| (the size the integrals are measured against, all pieces). A piece above it takes twice the
+    // degree (and panel_bound's panels for it) until it is below; beyond degree 2^16 it is refused (numerical_error).
+    // What is NOT bounded: a g whose coefficients stall above 24 and fall later (the check reads only the last three),
+    // and g's own evaluation error. Tests: tests/test_rough_step0_s19.cpp (braked) and tests/test_rough_blend_s20.cpp
+    // (driven, with the blend's kinks; a degree given too low; a jump off the cuts refused) against GSL's quadrature of
+    // the definition, to 2.4e-14. It has no error_bound().
     cut_convolution(const kernel& k, const values& g, const std::vector<double>& cuts, int oscillation,
                     double narrowest);
 
@@ -39,10 +48,13 @@ public:
     void operator()(const double* r, double* out, std::size_t count) const;  // D(r[i]) into out[i]
     const std::vector<double>& cuts() const { return cuts_; }
     int panels() const;  // all pieces' panels
+    // The check's largest sum (class comment) over the pieces, relative to pi max |g dr/du|, after any raise.
+    double tail() const { return worst_tail_; }
 
 private:
     std::vector<double> cuts_;          // -1 = cuts_[0] < ... < cuts_.back() = 1
-    std::vector<theta_panels> pieces_;  // piece i on [cuts_[i], cuts_[i + 1]], in x = (r - m)/h = cos u
+    std::vector<theta_panels> pieces_;
+    double worst_tail_ = 0.0;  // piece i on [cuts_[i], cuts_[i + 1]], in x = (r - m)/h = cos u
     std::size_t piece_of(double r) const;
 };
 
