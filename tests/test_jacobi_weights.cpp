@@ -23,55 +23,13 @@
 #include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 
+#include "jacobi_quadpack.hpp"
+
 using namespace roughroll;
 
 
 namespace {
-using integrand = std::function<double(double)>;
-
-double call(double x, void* p) { return (*static_cast<const integrand*>(p))(x); }
-
-struct workspace {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
-    gsl_integration_qaws_table* t = gsl_integration_qaws_table_alloc(0.0, 0.0, 0, 0);
-    ~workspace() {
-        gsl_integration_workspace_free(w);
-        gsl_integration_qaws_table_free(t);
-    }
-};
-
-// QUADPACK's status: a round-off stop is accepted where its own error estimate is at rounding (below 1e-15 of
-// the value, or absolute 1e-16), anything else throws.
-void accept(int status, double value, double error, const char* what) {
-    if (status == GSL_EROUND && error <= std::max(1e-16, 1e-15 * std::fabs(value))) return;
-    gsl_check(status, what);
-}
-
-// int_lo^hi (x - lo)^alpha (hi - x)^beta g(x) dx by QAWS.
-double qaws(const integrand& g, double lo, double hi, double alpha, double beta) {
-    gsl_guard();
-    workspace ws;
-    gsl_check(gsl_integration_qaws_table_set(ws.t, alpha, beta, 0, 0), "qaws table");
-    gsl_function F{&call, const_cast<integrand*>(&g)};
-    double r = 0.0, e = 0.0;
-    accept(gsl_integration_qaws(&F, lo, hi, ws.t, 0.0, 1.2e-14, 2000, ws.w, &r, &e), r, e, "qaws");
-    return r;
-}
-
-// (1/pi) PV int_{-1}^{1} w(tau) chi(tau)/(tau - x) d tau, |x| < 1: QAWS on [-1, l] and [u, 1] (the end powers as
-// QAWS's weight), QAWC on [l, u] around x, l = (x - 1)/2, u = (x + 1)/2.
-double hilbert(const integrand& chi, double a, double b, double x) {
-    gsl_guard();
-    const double l = 0.5 * (x - 1.0), u = 0.5 * (x + 1.0);
-    const double left = qaws([&](double t) { return std::pow(1.0 - t, a) * chi(t) / (t - x); }, -1.0, l, b, 0.0);
-    const double right = qaws([&](double t) { return std::pow(1.0 + t, b) * chi(t) / (t - x); }, u, 1.0, 0.0, a);
-    workspace ws;
-    const integrand g = [&](double t) { return jacobi_weight(a, b, t) * chi(t); };
-    gsl_function F{&call, const_cast<integrand*>(&g)};
-    double mid = 0.0, e = 0.0;
-    accept(gsl_integration_qawc(&F, l, u, x, 0.0, 1.2e-14, 2000, ws.w, &mid, &e), mid, e, "qawc");
-    return M_1_PI * (left + mid + right);
-}
+using namespace jacobi_quadpack;
 
 double chi(double t) { return (1.0 + t) * (0.7 - 0.3 * t + 0.2 * t * t); }
 
@@ -85,30 +43,24 @@ errors jacobi_errors(int n, double k) {
     const jacobi_collocation rule(n, a);
     gsl_matrix* A = gsl_matrix_calloc(n + 1, n + 1);
     gsl_vector* F = gsl_vector_alloc(n + 1);
-    gsl_vector* x = gsl_vector_alloc(n + 1);
-    gsl_permutation* perm = gsl_permutation_alloc(n + 1);
     add_cauchy_term(A, rule);
     for (int m = 0; m <= n; ++m) {
         gsl_matrix_set(A, m, n, -1.0);
         const double xm = rule.collocation[m];
         gsl_vector_set(F, m, hilbert(chi, a, b, xm) - k * jacobi_weight(a, b, xm) * chi(xm));
     }
-    int sign = 0;
-    gsl_check(gsl_linalg_LU_decomp(A, perm, &sign), "LU");
-    gsl_check(gsl_linalg_LU_solve(A, perm, F, x), "LU solve");
+    const std::vector<double> x = lu_solved(A, F);
     errors e;
     std::vector<double> psi(n);
     double load = 0.0;
     for (int j = 0; j < n; ++j) {
-        psi[j] = gsl_vector_get(x, j);
+        psi[j] = x[j];
         e.psi = std::max(e.psi, std::fabs(psi[j] - chi(rule.rule.nodes[j])));
         load += rule.rule.weights[j] * psi[j];
     }
-    e.xi = std::fabs(gsl_vector_get(x, n));
+    e.xi = std::fabs(x[n]);
     e.entry = std::fabs(jacobi_series(jacobi_coefficients(rule.rule, psi), a, b, -1.0));  // chi(-1) = 0
     e.load = std::fabs(load - qaws(chi, -1.0, 1.0, b, a));
-    gsl_permutation_free(perm);
-    gsl_vector_free(x);
     gsl_vector_free(F);
     gsl_matrix_free(A);
     return e;
@@ -121,8 +73,6 @@ double square_root_load_error(int n, double k) {
     const gauss_chebyshev rule(n);
     gsl_matrix* A = gsl_matrix_calloc(n + 1, n + 1);
     gsl_vector* F = gsl_vector_alloc(n + 1);
-    gsl_vector* x = gsl_vector_alloc(n + 1);
-    gsl_permutation* perm = gsl_permutation_alloc(n + 1);
     for (int m = 0; m <= n; ++m) {
         const double s = rule.collocation[m], th = std::acos(s);
         for (int j = 0; j < n; ++j)
@@ -130,12 +80,8 @@ double square_root_load_error(int n, double k) {
         gsl_matrix_set(A, m, n, -1.0);
         gsl_vector_set(F, m, hilbert(chi, a, b, s) - k * jacobi_weight(a, b, s) * chi(s));
     }
-    int sign = 0;
-    gsl_check(gsl_linalg_LU_decomp(A, perm, &sign), "LU");
-    gsl_check(gsl_linalg_LU_solve(A, perm, F, x), "LU solve");
-    const double err = std::fabs(M_PI_2 * gsl_vector_get(x, 0) - qaws(chi, -1.0, 1.0, b, a));
-    gsl_permutation_free(perm);
-    gsl_vector_free(x);
+    const std::vector<double> x = lu_solved(A, F);
+    const double err = std::fabs(M_PI_2 * x[0] - qaws(chi, -1.0, 1.0, b, a));
     gsl_vector_free(F);
     gsl_matrix_free(A);
     return err;

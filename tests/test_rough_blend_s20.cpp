@@ -22,10 +22,12 @@
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/pressure_kinks.hpp"
 
+#include "convolution_by_qags.hpp"
 #include "rough_pair.hpp"
 
 using namespace roughroll;
 using roughroll_test::beta_pair;
+using roughroll_test::convolution_by_qags;
 using roughroll_test::rough_pair;
 
 namespace {
@@ -33,38 +35,6 @@ namespace {
 using fn = std::function<double(double)>;
 double call(double x, void* p) { return (*static_cast<const fn*>(p))(x); }
 
-// int_{-1}^{1} g(eta) K(eta - r) d eta by GSL on each piece between -1, the cuts, r and 1, as test_rough_step0_s19's
-// reference: QAGS in eta, then QAGS and QAG (61 points) in eta = mid - half cos u, the first that succeeds.
-double convolution_by_qags(const fn& g, const kernel& k, double r, std::vector<double> cuts) {
-    cuts.push_back(-1.0);
-    cuts.push_back(1.0);
-    cuts.push_back(r);
-    std::sort(cuts.begin(), cuts.end());
-    double mid = 0.0, half = 0.0;
-    const fn in_eta = [&](double eta) { return eta == r ? 0.0 : g(eta) * k(eta - r); };
-    const fn in_u = [&](double u) { return in_eta(mid - half * std::cos(u)) * half * std::sin(u); };
-    gsl_function E{call, const_cast<fn*>(&in_eta)};
-    gsl_function U{call, const_cast<fn*>(&in_u)};
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
-    double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        if (!(cuts[i + 1] > cuts[i])) continue;
-        mid = 0.5 * (cuts[i] + cuts[i + 1]);
-        half = 0.5 * (cuts[i + 1] - cuts[i]);
-        double result = 0.0, error = 0.0;
-        // A rule that stops at GSL's round-off (GSL_EROUND) with its error estimate below 1e-14 has met what the
-        // comparison needs (1e-12) and is taken too.
-        const auto met = [&](int status) { return status == GSL_SUCCESS || (status == GSL_EROUND && error < 1e-14); };
-        int status = gsl_integration_qags(&E, cuts[i], cuts[i + 1], 1e-15, 1e-13, 4000, w, &result, &error);
-        if (!met(status)) status = gsl_integration_qags(&U, 0.0, M_PI, 1e-15, 1e-13, 4000, w, &result, &error);
-        if (!met(status))
-            status = gsl_integration_qag(&U, 0.0, M_PI, 1e-15, 1e-13, 4000, GSL_INTEG_GAUSS61, w, &result, &error);
-        EXPECT_TRUE(met(status)) << cuts[i] << " " << cuts[i + 1] << " " << status << " " << error;
-        sum += result;
-    }
-    gsl_integration_workspace_free(w);
-    return sum;
-}
 
 // (Theta - Theta_3)(t)/sqrt(1 - t^2) from the blends' definitions (8(g), 8(r)), not from blend_kinks:
 // Theta' = (2/pi) sqrt(1 - t^2), Theta_3' = (16/(5 pi)) (1 - t^2)^(5/2), both 0 at t = -1, integrated by QAWS

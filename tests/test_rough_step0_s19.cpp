@@ -22,49 +22,16 @@
 #include "roughroll/problems/normal_solution.hpp"
 #include "roughroll/problems/pressure_kinks.hpp"
 
+#include "convolution_by_qags.hpp"
 #include "rough_pair.hpp"
 
 using namespace roughroll;
 using roughroll_test::beta_pair;
+using roughroll_test::convolution_by_qags;
 using roughroll_test::rough_pair;
 
 namespace {
 
-// int_{-1}^{1} g(eta) K(eta - r) d eta by GSL's adaptive rules on each piece [a, b] between -1, the cuts, r and 1 (g's
-// one-sided roots and the kernel's jump at piece ends): QAGS in eta (its extrapolation takes a root at or just beyond
-// the piece's end, r within 1e-9 of a cut), QAGS and QAG's 61-point rule in eta = (a + b)/2 - (b - a)/2 cos u (the roots
-// at the ends smooth in u; QAGS in eta met GSL's round-off at n = 256, 5.6e-10, next to a zone end), in this order, the
-// first that succeeds. (QAG in u alone was 8e-13 off at r = a + 1e-8 below: mpmath's value of that convolution,
-// 0.282707502397335935, is the table's to 2e-16.)
-double convolution_by_qags(const std::function<double(double)>& g, const kernel& k, double r, std::vector<double> cuts) {
-    cuts.push_back(-1.0);
-    cuts.push_back(1.0);
-    cuts.push_back(r);
-    std::sort(cuts.begin(), cuts.end());
-    double mid = 0.0, half = 0.0;
-    const std::function<double(double)> in_eta = [&](double eta) { return eta == r ? 0.0 : g(eta) * k(eta - r); };
-    const std::function<double(double)> in_u = [&](double u) { return in_eta(mid - half * std::cos(u)) * half * std::sin(u); };
-    const auto call = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
-    gsl_function E{call, const_cast<std::function<double(double)>*>(&in_eta)};
-    gsl_function U{call, const_cast<std::function<double(double)>*>(&in_u)};
-    gsl_set_error_handler_off();  // a failed rule returns its status to the fallbacks below, not through abort()
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
-    double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        if (!(cuts[i + 1] > cuts[i])) continue;
-        mid = 0.5 * (cuts[i] + cuts[i + 1]);
-        half = 0.5 * (cuts[i + 1] - cuts[i]);
-        double result = 0.0, error = 0.0;
-        int status = gsl_integration_qags(&E, cuts[i], cuts[i + 1], 1e-15, 1e-13, 4000, w, &result, &error);
-        if (status != GSL_SUCCESS) status = gsl_integration_qags(&U, 0.0, M_PI, 1e-15, 1e-13, 4000, w, &result, &error);
-        if (status != GSL_SUCCESS)
-            status = gsl_integration_qag(&U, 0.0, M_PI, 1e-15, 1e-13, 4000, GSL_INTEG_GAUSS61, w, &result, &error);
-        EXPECT_EQ(status, GSL_SUCCESS) << cuts[i] << " " << cuts[i + 1] << " " << error;
-        sum += result;
-    }
-    gsl_integration_workspace_free(w);
-    return sum;
-}
 
 // A stick zone's psi with n algebraically falling terms (as a converged zone's: q ~ (c - r)^(1/2 - eps)).
 std::vector<double> falling_psi(int n) {
