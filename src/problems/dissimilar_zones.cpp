@@ -273,7 +273,12 @@ double dissimilar_zones::completed_W(double r, const std::optional<double>& cauc
             const double z = eta - r;
             return z == 0.0 ? 0.0 : g(eta) * std::exp(-term.A * std::fabs(z)) * (z > 0.0 ? 1.0 : -1.0);
         };
-        w += term.T * integrate_over(points, w_context, false, integrand);
+        // Cut in the angle where one GSL call over a piece meets its rounding (end_quadrature::pieces, 8(p)): p's
+        // U-series oscillates across [c0, r] (about n/2 periods over the angle pi), which GSL's 21-point rule reads as
+        // error that bisection does not reduce (GSL_EROUND; measured: the rough pair driven at Q/f = 0.9, full coupling,
+        // n = 384 and 512, 6e-10..3e-9 on [c0, r] for r near the edge, docs/formulation.md 8(u)). Where one call
+        // succeeds, pieces keeps its value bit for bit.
+        w += term.T * integrate_over(points, w_context, true, integrand);
     }
     return w;
 }
