@@ -37,6 +37,17 @@ jacobi_collocation::jacobi_collocation(int n, double a) : rule(n, a, 1.0 - a) {
     collocation = gauss_jacobi(n + 1, -a, a - 1.0).nodes;
 }
 
+jacobi_collocation::jacobi_collocation(const gauss_jacobi& rule_) : rule(rule_) {
+    collocation = gauss_jacobi(rule.n + 1, -rule.a, rule.a - 1.0).nodes;  // as above: b = 1 - a
+}
+
+std::shared_ptr<const gauss_jacobi> jacobi_rule_set::rule(int n, double a, double b) {
+    for (const std::shared_ptr<const gauss_jacobi>& r : rules_)
+        if (r->n == n && r->a == a && r->b == b) return r;
+    rules_.push_back(std::make_shared<const gauss_jacobi>(n, a, b));
+    return rules_.back();
+}
+
 double jacobi_weight(double a, double b, double t) {
     return std::pow(std::max(0.0, 1.0 - t), a) * std::pow(std::max(0.0, 1.0 + t), b);
 }

@@ -202,9 +202,10 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
 // Plan C (docs/formulation.md 8(w)): the braked three zones of smooth rollers (one slip direction sigma at both edges,
 // a + b = 1) take k_E = sigma beta_D f into the normal operator on the weight w_N, and carry p_q, the exact
 // (H + k_E)^-1 of -beta_D q, from the source's stick zone (on its own weight: Jacobi from 8(v), else the square root).
-// Null elsewhere (the old path of kinks_of). `rules_of`: the previous step's kinks, whose zone rules are reused.
+// Null elsewhere (the old path of kinks_of). `rules_of`: the previous step's kinks, whose zone recurrences are reused;
+// `rules`: the solve's Gauss-Jacobi rules, shared with the tangential solvers' Jacobi zones.
 std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, int n, double beta_d, bool smooth,
-                                                  double f, const pressure_kinks* rules_of) {
+                                                  double f, const pressure_kinks* rules_of, jacobi_rule_set& rules) {
     if (!smooth || s.layout.stick_zones() != 1 || s.layout.opposite() || s.layout.layers_neglected()) return nullptr;
     if (!(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0 && !s.psi_b.empty())) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
@@ -213,11 +214,12 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
         const std::vector<double> c = s.psi_b;
         const double a = s.weight_a, b = s.weight_b;
         k->add_weighted_zone(
-            n, beta_d, s.sign, s.start(), s.c0(), a, [c, a, b](double t) { return jacobi_series(c, a, b, t); }, rules_of);
+            n, beta_d, s.sign, s.start(), s.c0(), a, [c, a, b](double t) { return jacobi_series(c, a, b, t); }, rules_of,
+            &rules);
     } else {
         const std::vector<double> c = s.psi_b;
         k->add_weighted_zone(
-            n, beta_d, s.sign, s.start(), s.c0(), 0.5, [c](double t) { return u_series(c, t); }, rules_of);
+            n, beta_d, s.sign, s.start(), s.c0(), 0.5, [c](double t) { return u_series(c, t); }, rules_of, &rules);
     }
     return k;
 }
@@ -255,6 +257,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
     int switched_at = 0;                      // the step that switched it on (0: none)
+    // The Gauss-Jacobi rules of this solve (n and 4 n nodes, 8(v) and 8(w)): built once, read by every step's weighted
+    // kinks and tangential solver (the same n and exponent), instead of once by each.
+    const auto jacobi_rules = std::make_shared<jacobi_rule_set>();
     for (int k = 1; k <= coupling_max_iterations; ++k) {
         if (checkpoint_) checkpoint_();
         const double beta = beta_d_;
@@ -265,7 +270,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         const normal_solution& source_normal = current_ ? current_->normal : start ? start->normal : johnson;
         std::shared_ptr<pressure_kinks> weighted =
             weighted_kinks_of(source, johnson.rule.n, beta, k1_.empty() && k2_.empty(), f_,
-                              current_ ? current_->normal.kinks.get() : nullptr);
+                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules);
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
             auto it = std::make_unique<iterate>(iterate{
                 weighted ? normal_solver_.solve_weighted(
@@ -282,6 +287,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
                     return coupled(r) + kinks->layer_difference(r);
                 };
             it->tangential = std::make_unique<tangential_solver>(it->normal, k1_, k2_, f_, false);
+            it->tangential->share_rules(jacobi_rules);
             if (current_ && current_->tangential) it->tangential->share_jacobi(*current_->tangential);
             // 8(v), adopted with 8(w): the braked three zones of smooth rollers (the weighted pressure's case) take the
             // local -k q into the operator on the Jacobi weight; G's k q of the source comes off their right side.

@@ -94,7 +94,8 @@ void pressure_kinks::set_weight(double k_e) {
 }
 
 void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
-                                       const std::function<double(double)>& psi, const pressure_kinks* rules_of) {
+                                       const std::function<double(double)>& psi, const pressure_kinks* rules_of,
+                                       jacobi_rule_set* rules) {
     if (!weighted_) throw numerical_error("full coupling: a weighted kink zone before the pressure's weight (8(w))");
     if (!(start > -1.0 && start < c0 && c0 < 1.0))
         throw numerical_error(
@@ -107,8 +108,12 @@ void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double
                     0.5 * (c0 - start),
                     beta_d * sign,
                     a_z,
-                    same ? same->rule : std::make_shared<const gauss_jacobi>(n, a_z, 1.0 - a_z),
-                    same ? same->far : std::make_shared<const gauss_jacobi>(4 * n, a_z, 1.0 - a_z),
+                    rules  ? rules->rule(n, a_z, 1.0 - a_z)
+                    : same ? same->rule
+                           : std::make_shared<const gauss_jacobi>(n, a_z, 1.0 - a_z),
+                    rules  ? rules->rule(4 * n, a_z, 1.0 - a_z)
+                    : same ? same->far
+                           : std::make_shared<const gauss_jacobi>(4 * n, a_z, 1.0 - a_z),
                     {},
                     {},
                     {},

@@ -76,11 +76,15 @@ std::vector<double> tangential_solver::collocation_points(double start, double c
 // The braked zone's Jacobi collocation (docs/formulation.md 8(v)) for one exponent a: its rule, the rule of 4 n nodes
 // for the Cauchy transform off the zone, and its system, whose matrix (H - k on the weight, the -xi column) is the
 // same for every zone and every step of the alternation: factorised once.
+// Its two rules come from the solve's jacobi_rule_set where one is given (share_rules): the pressure's weighted kinks
+// (8(w)) take the same two.
 struct tangential_solver::jacobi_zone {
-    jacobi_zone(int n, double a_) : a(a_), colloc(n, a_), far(4 * n, a_, 1.0 - a_), system(static_cast<std::size_t>(n) + 1) {}
+    jacobi_zone(int n, double a_, jacobi_rule_set& rules)
+        : a(a_), colloc(*rules.rule(n, a_, 1.0 - a_)), far(rules.rule(4 * n, a_, 1.0 - a_)),
+          system(static_cast<std::size_t>(n) + 1) {}
     double a;
     jacobi_collocation colloc;
-    gauss_jacobi far;
+    std::shared_ptr<const gauss_jacobi> far;
     dense_system system;
 };
 
@@ -91,7 +95,10 @@ void tangential_solver::couple_locally(std::function<double(double)> source_q, d
 }
 
 tangential_solver::jacobi_zone& tangential_solver::jacobi_for(double a) {
-    if (!jacobi_ || jacobi_->a != a || jacobi_->colloc.rule.n != n_) jacobi_ = std::make_shared<jacobi_zone>(n_, a);
+    if (!jacobi_ || jacobi_->a != a || jacobi_->colloc.rule.n != n_) {
+        jacobi_rule_set own;  // no set shared: the rules for this zone alone
+        jacobi_ = std::make_shared<jacobi_zone>(n_, a, rules_ ? *rules_ : own);
+    }
     return *jacobi_;
 }
 
@@ -239,18 +246,18 @@ std::vector<double> tangential_solver::slip_velocity_magnitude(const tangential_
             outside_.a = s.weight_a;
             outside_.c = s.psi_b;
             outside_.at_nodes.resize(rule.n);
-            outside_.at_far.resize(z.far.n);
+            outside_.at_far.resize(z.far->n);
             for (int i = 0; i < rule.n; ++i)
                 outside_.at_nodes[i] = jacobi_series(s.psi_b, s.weight_a, s.weight_b, rule.nodes[i]);
-            for (int i = 0; i < z.far.n; ++i)
-                outside_.at_far[i] = jacobi_series(s.psi_b, s.weight_a, s.weight_b, z.far.nodes[i]);
+            for (int i = 0; i < z.far->n; ++i)
+                outside_.at_far[i] = jacobi_series(s.psi_b, s.weight_a, s.weight_b, z.far->nodes[i]);
         }
         const std::vector<double>&at_nodes = outside_.at_nodes, &at_far = outside_.at_far;
         // G stays whole here, k q_source included: off the zone q = 0, and at the alternation's fixed point q_source = q,
         // so the slip velocity is the stick equation's; while the ends lag it reads as the old route's did.
         for (std::size_t i = 0; i < r.size(); ++i) {
             const double t = (r[i] - s.start()) / rho - 1.0;
-            l[i] = std::fabs(t) >= 1.0 ? jacobi_cauchy_outside(s.psi_b, rule, at_nodes, z.far, at_far, t) : 0.0;
+            l[i] = std::fabs(t) >= 1.0 ? jacobi_cauchy_outside(s.psi_b, rule, at_nodes, *z.far, at_far, t) : 0.0;
         }
     } else if (!(s.psi_b.empty() || rho == 0.0)) {
         std::vector<double> t(r.size());

@@ -10,6 +10,7 @@
 // psi of degree <= n - 1 (8(v)): the Gauss-Chebyshev collocation of section 3 is its case a = b = 1/2.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 namespace roughroll {
@@ -44,9 +45,23 @@ struct gauss_jacobi {
 // P_n^(a, 1-a) and the n + 1 collocation points, the zeros of P_{n+1}^(-a, a-1) (ascending).
 struct jacobi_collocation {
     jacobi_collocation(int n, double a);
+    explicit jacobi_collocation(const gauss_jacobi& rule);  // of a rule built already (b = 1 - a): copied, not rebuilt
 
     gauss_jacobi rule;
     std::vector<double> collocation;
+};
+
+// The Gauss-Jacobi rules of one solve, each built once and shared by whoever is handed the set: full coupling's
+// braked three zones (8(v), 8(w)) need the rules of n and 4 n nodes of the weight (1 - t)^a (1 + t)^(1 - a) both in
+// the tangential solver's Jacobi zone and in the pressure's weighted kinks, with the same n and a. A rule depends on
+// (n, a, b) only, so the shared one is bit for bit the rule either would build. An explicit workspace (not thread
+// safe: one per solve), keyed by the exact exponents.
+class jacobi_rule_set {
+public:
+    std::shared_ptr<const gauss_jacobi> rule(int n, double a, double b);
+
+private:
+    std::vector<std::shared_ptr<const gauss_jacobi>> rules_;
 };
 
 // (1 - t)^a (1 + t)^b on [-1, 1].

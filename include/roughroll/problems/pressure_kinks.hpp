@@ -76,9 +76,12 @@ public:
     // add_weighted_zone per stick zone (q = sign w_Z(t) psi(t), w_Z = (1 - t)^a_Z (1 + t)^(1 - a_Z)), then, after the
     // normal solve, set_series with phi's Jacobi coefficients on w_N. Not combined with add_zone or add_plateau.
     void set_weight(double k_e);
-    // `rules_of`: kinks of an earlier step whose zone rules (n, a_z) are taken instead of built again (the same rules).
+    // `rules_of`: kinks of an earlier step whose zone recurrences (n, a_z) are taken instead of built again (the same
+    // ones). `rules`: the solve's Gauss-Jacobi rules, whose rules of n and 4 n nodes of the weight w_Z the tangential
+    // solver's Jacobi zone (8(v)) takes too; null: built here (or taken from `rules_of`).
     void add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
-                           const std::function<double(double)>& psi, const pressure_kinks* rules_of = nullptr);
+                           const std::function<double(double)>& psi, const pressure_kinks* rules_of = nullptr,
+                           jacobi_rule_set* rules = nullptr);
     void set_series(std::vector<double> phi_c);
     bool weighted() const { return weighted_; }
     double weight_a() const { return a_n_; }

@@ -15,10 +15,12 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/convolution_table.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/kernel_moments.hpp"
 #include "roughroll/numerics/linear_system.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -70,6 +72,9 @@ public:
     // The Jacobi zone's rules and factors of another solver of the same n (the alternation's previous step): they
     // depend on n and the exponent only, so the steps share them instead of rebuilding them (bit for bit the same).
     void share_jacobi(const tangential_solver& other) { jacobi_ = other.jacobi_; }
+    // The solve's Gauss-Jacobi rules (full_coupling: one set per solve, which the pressure's weighted kinks of the same
+    // n and exponent read too): the Jacobi zone takes its rules of n and 4 n nodes from it instead of building them.
+    void share_rules(std::shared_ptr<jacobi_rule_set> rules) { rules_ = std::move(rules); }
 
 private:
     tangential_solution on_zone(double start, double c0, double forcing, bool near) override {
@@ -93,6 +98,7 @@ private:
     std::function<double(double)> source_q_;
     double source_start_ = 0.0, source_end_ = 0.0;
     std::shared_ptr<jacobi_zone> jacobi_;
+    std::shared_ptr<jacobi_rule_set> rules_;  // null: the zone builds its own rules
     // psi of the last solution asked off its zone, at the rule's nodes and the far rule's (the checks ask the slip
     // velocity one point at a time).
     struct jacobi_values_cache {
