@@ -619,8 +619,8 @@ TEST(FullCouplingPhysical, CurveRowsHaveTheirOwnWidths) {
 // The stop from the contraction (docs/formulation.md 8(e), session 18): the alternation stops once the bound
 // kappa/(1 - kappa) times its last change, kappa the largest ratio of its own changes, is within a quarter of the
 // tolerance (1e-12 in lambda, e, xi; 1e-10 in the ends), where the plain rule waited for the change itself: at n = 64
-// from Johnson's point, braked and driven three zones and free rolling's five zones, never a step more, free rolling a
-// step fewer, and the same fixed point as the plain rule's to within those tolerances (the plain rule's own distance
+// from Johnson's point, braked and driven three zones and free rolling's five zones, never a step more, and the same
+// fixed point as the plain rule's to within those tolerances (the plain rule's own distance
 // from it is kappa/(1 - kappa) of them).
 TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps) {
     int plain_steps = 0, bound_steps = 0;
@@ -645,10 +645,9 @@ TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps
         plain.set_stop(coupling_stop::plain);
         const tangential_solution a = plain.solve(hertz, zones, johnson, true);
         const tangential_solution b = bound.solve(hertz, zones, johnson, true);
+        // Free rolling took a step fewer by the bound on the square-root weight; on the weight w_N (8(x), "Landed") its
+        // alternation contracts faster and both rules stop at step 7 (measured), so only "never a step more" is asked.
         EXPECT_LE(bound.summary().iterations, plain.summary().iterations);
-        if (q == 0.0) {
-            EXPECT_LT(bound.summary().iterations, plain.summary().iterations);
-        }
         plain_steps += plain.summary().iterations;
         bound_steps += bound.summary().iterations;
         EXPECT_NEAR(b.xi, a.xi, 2.0 * coupling_value_tolerance);
@@ -685,6 +684,11 @@ TEST(FullCoupling, ThePlateauIsDecidedOnceForTheAlternation) {
     ASSERT_FALSE(carries_plateau(johnson));
     ASSERT_TRUE(carries_plateau(s));
     ASSERT_TRUE(coupled.normal().kinks);
-    EXPECT_EQ(coupled.normal().kinks->plateaus(), 0u);
+    // Since 8(x) ("Landed") these five zones (both stick zones above five_zone_spacings, decided on the same point as
+    // the plateau's rule) take the weight w_N, which carries the plateau at every point: the old path's rule no longer
+    // decides it here.
+    ASSERT_TRUE(weighs_five_zones(johnson));
+    EXPECT_TRUE(coupled.normal().kinks->weighted());
+    EXPECT_EQ(coupled.normal().kinks->plateaus(), 1u);
     EXPECT_GE(coupled.summary().iterations, 2);
 }

@@ -58,12 +58,22 @@ bool coupling_settled(const std::vector<double>& changes, std::size_t own_from, 
     return kappa <= 0.5 && kappa / (1.0 - kappa) * changes[k] <= 0.25 * tolerance;
 }
 
+namespace {
+// The length of [start, end] in node spacings pi sqrt(1 - m^2)/(n + 1) of n = max_nodes/4 (m its midpoint).
+double spacings(double start, double end) {
+    const double m = 0.5 * (start + end);
+    return (end - start) / (M_PI * std::sqrt((1.0 - m) * (1.0 + m)) / (max_nodes / 4 + 1));
+}
+}  // namespace
+
 bool carries_plateau(const tangential_solution& s) {
-    const auto short_zone = [](double start, double end) {
-        const double m = 0.5 * (start + end);
-        return end - start < plateau_spacings * M_PI * std::sqrt((1.0 - m) * (1.0 + m)) / (max_nodes / 4 + 1);
-    };
-    return s.layout.stick_zones() == 2 && (short_zone(s.start(), s.c0()) || short_zone(s.start2(), s.end2()));
+    return s.layout.stick_zones() == 2 &&
+           (spacings(s.start(), s.c0()) < plateau_spacings || spacings(s.start2(), s.end2()) < plateau_spacings);
+}
+
+bool weighs_five_zones(const tangential_solution& s) {
+    return s.layout.stick_zones() == 2 && spacings(s.start(), s.c0()) >= five_zone_spacings &&
+           spacings(s.start2(), s.end2()) >= five_zone_spacings;
 }
 
 full_coupling::full_coupling(const kernel& k1, const kernel& k2, int n, method how, double f, double beta_d)
@@ -205,8 +215,58 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
 // Null elsewhere (the old path of kinks_of). `rules_of`: the previous step's kinks, whose zone recurrences are reused;
 // `rules`: the solve's Gauss-Jacobi rules, shared with the tangential solvers' Jacobi zones.
 std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, int n, double beta_d, bool smooth,
-                                                  double f, const pressure_kinks* rules_of, jacobi_rule_set& rules) {
-    if (!smooth || s.layout.stick_zones() != 1 || s.layout.opposite() || s.layout.layers_neglected()) return nullptr;
+                                                  double f, const pressure_kinks* rules_of, jacobi_rule_set& rules,
+                                                  const normal_solution& source_normal, bool five) {
+    if (!smooth || s.layout.layers_neglected()) return nullptr;
+    // 8(x): five zones (slip-, stick, slip+, stick, slip-: the edges slip one way, sigma_E = -sign, p1 = sign (f p S + q),
+    // S = -1 at both edges) on the same weight, k_E = sigma_E beta_D f, p_q summed over both stick zones, each on the
+    // square-root weight with the blend's kinks 2 f p (Theta - Theta_3) in its q (8(r)); the right side keeps only
+    // beta_D sign f p (S_3 + 1), the reversed slip and its smoothed blends, less the plateau's carried part 2 f pbar B
+    // (8(p), carried at every such point: its ramp across the thin second zone is a near-step for the series, 8(x)).
+    // Where `five` is false (weighs_five_zones), null: the old path of kinks_of.
+    if (s.layout.stick_zones() == 2) {
+        if (!five || !s.five) return nullptr;
+        const five_zone_solution& v = *s.five;
+        const auto inside = [](const tangential_solution& z) {
+            return z.c0() > z.start() && z.start() > -1.0 && z.c0() < 1.0 && !z.psi_b.empty() && !(z.weight_a > 0.0);
+        };
+        if (!inside(v.zone1) || !inside(v.zone2)) return nullptr;
+        auto k = std::make_shared<pressure_kinks>();
+        k->set_weight(-v.sign * beta_d * f);
+        for (const auto& [z, rise] : {std::pair<const tangential_solution*, double>{&v.zone1, 1.0}, {&v.zone2, -1.0}}) {
+            const std::vector<double> c = z->psi_b;
+            const double start = z->start(), rho = 0.5 * (z->c0() - z->start());
+            k->add_weighted_zone(
+                n, beta_d, v.sign, z->start(), z->c0(), 0.5,
+                [c, &source_normal, f, start, rho, rise](double t) {
+                    return u_series(c, t) +
+                           rise * 2.0 * f * source_normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
+                },
+                rules_of);
+        }
+        // The plateau of thin zones (8(p)) on the weight, at every weighted five-zone point: pbar = w_N P, P the cubic
+        // Hermite interpolant of g = p/w_N through g and g' at the zones' midpoints (add_weighted_plateau). P is a free
+        // choice (the right side loses exactly the P carried), so g' by a central difference (step 1e-3 rho, error
+        // O(1e-6 rho^2 g''')) only moves P off the interpolant by that much, not the answer.
+        if (v.zone1.c0() <= v.zone2.start()) {
+            const double a_n = k->weight_a();
+            const auto g = [&source_normal, a_n](double r) {
+                return source_normal.pressure(r) / jacobi_weight(a_n, 1.0 - a_n, r);
+            };
+            const auto slope_at = [&g](double m, double rho) {
+                const double d = 1e-3 * rho;
+                return (g(m + d) - g(m - d)) / (2.0 * d);
+            };
+            const double m1 = 0.5 * (v.zone1.start() + v.zone1.c0()), m2 = 0.5 * (v.zone2.start() + v.zone2.c0());
+            k->add_weighted_plateau(beta_d, v.sign, f,
+                                    blend_plateau(v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()),
+                                    {g(m1), g(m2)},
+                                    {slope_at(m1, 0.5 * (v.zone1.c0() - v.zone1.start())),
+                                     slope_at(m2, 0.5 * (v.zone2.c0() - v.zone2.start()))});
+        }
+        return k;
+    }
+    if (s.layout.stick_zones() != 1 || s.layout.opposite()) return nullptr;
     if (!(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0 && !s.psi_b.empty())) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     k->set_weight(s.sign * beta_d * f);
@@ -252,7 +312,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     // else on the first step's source (the coarser level's five zones; three zones carry none). Every step keeps its
     // source's structure (`step`), so one decision covers them all; asked of each step's source, a stick zone near
     // the threshold could switch the plateau on and off between steps, and the fixed point would be of neither rule.
-    const bool plateau = carries_plateau(johnson_point.layout.stick_zones() == 2 ? johnson_point : source);
+    // So is the weighted path's for five zones (weighs_five_zones, 8(x)).
+    const tangential_solution& decides = johnson_point.layout.stick_zones() == 2 ? johnson_point : source;
+    const bool plateau = carries_plateau(decides), five = weighs_five_zones(decides);
     double previous_change = 0.0;
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
@@ -270,7 +332,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         const normal_solution& source_normal = current_ ? current_->normal : start ? start->normal : johnson;
         std::shared_ptr<pressure_kinks> weighted =
             weighted_kinks_of(source, johnson.rule.n, beta, k1_.empty() && k2_.empty(), f_,
-                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules);
+                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules, source_normal, five);
+        // The braked three zones (8(v), 8(w)) also put their stick zone on its Jacobi weight; five zones (8(x)) not.
+        const bool braked = weighted && source.layout.stick_zones() == 1;
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
             auto it = std::make_unique<iterate>(iterate{
                 weighted ? normal_solver_.solve_weighted(
@@ -292,16 +356,16 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             // 8(v), adopted with 8(w): the braked three zones of smooth rollers (the weighted pressure's case) take the
             // local -k q into the operator on the Jacobi weight; G's k q of the source comes off their right side.
             // From the step whose source is this level's and whose ends moved by at most settled_for_jacobi, then kept.
-            if (weighted && !jacobi_on && current_ && !summary_.end_changes.empty() &&
+            if (braked && !jacobi_on && current_ && !summary_.end_changes.empty() &&
                 summary_.end_changes.back() <= settled_for_jacobi) {
                 jacobi_on = true;
                 switched_at = k;
             }
-            if (weighted && jacobi_on)
+            if (braked && jacobi_on)
                 it->tangential->couple_locally([source](double r) { return stick_traction(source, r); }, source.start(),
                                                source.c0());
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
-            it->s = step(*it->zones, source, Q, f_, jacobian_, weighted != nullptr);
+            it->s = step(*it->zones, source, Q, f_, jacobian_, braked);
             return it;
         };
         std::unique_ptr<iterate> next;
@@ -380,7 +444,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // least two steps, so that the point's G never refers to the coarser level's iterate.
         // Nor does a braked zone still on the square-root weight stop: its fixed point is not the Jacobi weight's, and
         // the next step switches (its ends moved by less than settled_for_jacobi).
-        if (settled && !(start && k == 1) && !(weighted && !jacobi_on)) {
+        if (settled && !(start && k == 1) && !(braked && !jacobi_on)) {
             if (checked && !current_->s.checks.hold()) throw failed_checks(current_->s, Q, f_);
             summary_.offset = offset;
             summary_.peak_pressure_change =

@@ -31,7 +31,10 @@ double normal_solution::projected_minus_hilbert(double r) const {
     // The collocation (4.2) without K2*: -H[phi sqrt(1 - r^2)] = -sum b_j T_{j+1} is a polynomial of degree n, equal to
     // gamma_0n + (2/pi) lambda r + P_n[...] at n + 1 points, so everywhere; H[p_q^0] = -removed + C (8(l) step 0), and
     // gamma_0n - C = (2/pi) lambda e (solve() below).
-    const double term = chebyshev_sum(projected, r) + (kinks ? kinks->removed(r) : 0.0);
+    // On the weight w_N (8(w), 8(x)) the collocation is (H + k_E)[w_N phi] = -gamma' - (2/pi) lambda r - P_n[R] at n + 1
+    // points, and (H + k_E)[w_N phi] is a polynomial of degree n (8(v)'s identity), so everywhere: -H[p] gains k_E p.
+    const double term = chebyshev_sum(projected, r) + (kinks ? kinks->removed(r) : 0.0) +
+                        (kinks && kinks->weighted() ? kinks->weight_k() * pressure(r) : 0.0);
     return M_2_PI * lambda * (r + offset) + term;
 }
 
@@ -179,12 +182,13 @@ normal_solution normal_solver::solve_weighted(const std::function<double(double)
     gsl_vector* rhs = w.system.rhs();
     gsl_vector_set_zero(rhs);
     gsl_vector_set(rhs, n + 1, 1.0 - weighted->load());
+    std::vector<double> c;  // the projection's coefficients, kept for -H[p] (projected_minus_hilbert, 8(u), 8(x))
     if (coupled) {
         const pressure_kinks* pk = weighted.get();
         const std::function<double(double)> right = [&coupled, &source_pressure, pk, k_e](double r) {
             return coupled(r) - pk->removed(r) - (source_pressure ? k_e * source_pressure(r) : 0.0);
         };
-        const std::vector<double> c = chebyshev_projection(right, kinks, n);
+        c = chebyshev_projection(right, kinks, n);
         for (int i = 0; i <= n; ++i) gsl_vector_set(rhs, i, -chebyshev_sum(c, w.colloc.collocation[i]));
     }
     const gsl_vector* x = w.system.holds_factors() ? w.system.solve_factorised("normal problem on the weight w_N (8(w))")
@@ -204,6 +208,7 @@ normal_solution normal_solver::solve_weighted(const std::function<double(double)
                       0.0,
                       std::move(weighted)};
     s.offset = M_PI * s.gamma / (2.0 * s.lambda);
+    s.projected = std::move(c);
     return s;
 }
 

@@ -2,6 +2,7 @@
 #include "roughroll/problems/pressure_kinks.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 
@@ -67,8 +68,37 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
     zones_.push_back(std::move(z));
 }
 
+namespace {
+// int B eta^k, k = 0..4, in closed form: zone i gives rho_i int Theta(t) (m_i + rho_i t)^k dt, Theta = Theta_3 rising
+// (zone 1) or 1 - Theta_3 falling (zone 2), with int t^j Theta_3 on [-1, 1] = 1, 7/16, 1/3, 77/320, 1/5 (j = 0..4:
+// the even j from Theta_3's constant 1/2, the odd ones from arcsin(t)/pi + sqrt(1 - t^2) P(t), P of blend_plateau.hpp;
+// 77/320 by sympy, checked by QAGS in validation/test_five_zones_weighted_s20.cpp); 1 - Theta_3 gives 1/(j + 1)
+// for even j and the odd ones negated. The plateau (c1, s2) gives int eta^k exactly. blend_plateau::moment has k <= 2.
+std::array<double, 5> plateau_moments(const blend_plateau& b) {
+    const auto zone = [](int k, double s, double c, double sign) {
+        const double m = 0.5 * (s + c), rho = 0.5 * (c - s);
+        const double t[5] = {1.0, sign * 7.0 / 16.0, 1.0 / 3.0, sign * 77.0 / 320.0, 1.0 / 5.0};
+        double sum = 0.0, binomial = 1.0;  // C(k, j)
+        for (int j = 0; j <= k; ++j) {
+            sum += binomial * std::pow(m, k - j) * std::pow(rho, j) * t[j];
+            binomial = binomial * (k - j) / (j + 1);
+        }
+        return rho * sum;
+    };
+    std::array<double, 5> m{};
+    for (int k = 0; k < 5; ++k)
+        m[k] = zone(k, b.start1(), b.end1(), 1.0) +
+               (std::pow(b.start2(), k + 1) - std::pow(b.end1(), k + 1)) / (k + 1) +
+               zone(k, b.start2(), b.end2(), -1.0);
+    return m;
+}
+}  // namespace
+
 void pressure_kinks::add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1,
                                  double h2) {
+    if (weighted_)
+        throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(x)) takes its plateau by "
+                              "add_weighted_plateau");
     // pbar/sqrt(1 - r^2) = alpha + slope r through h1, h2 at the midpoints m1, m2 (docs/formulation.md 8(p)).
     const double m1 = 0.5 * (plateau.start1() + plateau.end1()), m2 = 0.5 * (plateau.start2() + plateau.end2());
     const double slope = (h2 - h1) / (m2 - m1), alpha = h1 - slope * m1;
@@ -85,8 +115,38 @@ void pressure_kinks::add_plateau(double beta_d, double sign, double f, const ble
     }
 }
 
+void pressure_kinks::add_weighted_plateau(double beta_d, double sign, double f, const blend_plateau& plateau,
+                                          const std::array<double, 2>& g, const std::array<double, 2>& slopes) {
+    if (!weighted_)
+        throw numerical_error("full coupling: add_weighted_plateau (docs/formulation.md 8(x)) needs the weight w_N");
+    // pbar/w_N = P(r), the cubic Hermite interpolant of g = p/w_N through g and g' at the zones' midpoints m1, m2:
+    // with it the step 2 f (p - pbar) B left on the right side is O(rho^2 g'') across a zone, not the linear
+    // interpolant's O(rho g'), which kept the thin second zone's end at order 1 (8(x), "Landed").
+    const double m1 = 0.5 * (plateau.start1() + plateau.end1()), m2 = 0.5 * (plateau.start2() + plateau.end2());
+    const double d = m2 - m1, dd = (g[1] - g[0]) / d, s1 = slopes[0], s2 = slopes[1];
+    // P = g1 + s1 x + A x^2 + E x^3 in x = r - m1, then in powers of r.
+    const double A = (3.0 * dd - 2.0 * s1 - s2) / d, E = (s1 + s2 - 2.0 * dd) / (d * d);
+    kinks_plateau b{plateau, 2.0 * f * beta_d * sign, g[0] - s1 * m1 + A * m1 * m1 - E * m1 * m1 * m1,
+                    s1 - 2.0 * A * m1 + 3.0 * E * m1 * m1};
+    b.c2 = A - 3.0 * E * m1;
+    b.c3 = E;
+    // As 8(w)'s p_q with q/w_N = (amplitude/beta_D) P B: C = (beta_D sin(pi a_N)/pi) int q/w_N, int p_b =
+    // 2 beta_D sin(pi a_N) int (q/w_N) P_1^(-a_N, a_N - 1), P_1^(-a, a - 1)(r) = r/2 + 1/2 - a; B's moments to 4.
+    const std::array<double, 5> mom = plateau_moments(plateau);
+    const double cf[4] = {b.alpha, b.slope, b.c2, b.c3};
+    double q0 = 0.0, q1 = 0.0;  // int P B, int r P B
+    for (int k = 0; k < 4; ++k) {
+        q0 += cf[k] * mom[k];
+        q1 += cf[k] * mom[k + 1];
+    }
+    const double sin_n = std::sin(M_PI * a_n_);
+    load_ += 2.0 * sin_n * b.amplitude * (0.5 * q1 + (0.5 - a_n_) * q0);
+    constant_ += sin_n * M_1_PI * b.amplitude * q0;
+    plateaus_.push_back(b);
+}
+
 void pressure_kinks::set_weight(double k_e) {
-    if (!zones_.empty() || !plateaus_.empty())
+    if (!zones_.empty() || !plateaus_.empty() || !wzones_.empty())
         throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(w)) takes no U-series kinks");
     weighted_ = true;
     k_e_ = k_e;
@@ -198,6 +258,8 @@ double pressure_kinks::kink_part(double r) const {
             sum += scale * z.amplitude * w_n * cauchy_outside(z, t);
         }
     }
+    for (const kinks_plateau& b : plateaus_)  // 8(x): the plateau on the weight (add_plateau)
+        sum += scale * b.amplitude * w_n * (b.value(r) - k_e_ * b.poly(r) * b.shape(r));
     return sum;
 }
 
@@ -251,7 +313,8 @@ double pressure_kinks::removed(double r) const {
     }
     for (const kinks_plateau& b : plateaus_) {
         const double shape = b.shape(r);
-        if (shape != 0.0) sum += b.amplitude * std::sqrt((1.0 - r) * (1.0 + r)) * (b.alpha + b.slope * r) * shape;
+        const double w = weighted_ ? jacobi_weight(a_n_, 1.0 - a_n_, r) : std::sqrt((1.0 - r) * (1.0 + r));
+        if (shape != 0.0) sum += b.amplitude * w * b.poly(r) * shape;
     }
     return normal_layer_ ? sum - (*normal_layer_)(r) : sum;  // 8(o): the right side gains K2[p_q^0]
 }
@@ -300,10 +363,56 @@ std::vector<double> pressure_kinks::ends() const {
 }
 
 std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
-    if (weighted_) return std::nullopt;  // 8(w) is built for the braked three zones only (no blend)
     auto unit = blended_cauchy::make({1.0}, s, c);
     if (!unit) return std::nullopt;
     kinks_blend k(std::move(*unit));
+    if (weighted_) {
+        // 8(x): the whole weighted p on the pieces [s, ..., 1] cut at c and at the kinks' ends. The rule's points per
+        // piece: a collocation point at a node spacing pi/(2n) (in the angle) from an end where p has a one-sided root
+        // puts a pole of the subtracted integrand at twice that from the piece (in the angle); Gauss-Legendre then
+        // converges like exp(-4 M/sqrt(n)) (Bernstein ellipse 1 + 2/sqrt(n)): M = 10 sqrt(n) + 48 gives e^-40 there.
+        k.whole_ = std::make_shared<const pressure_kinks>(*this);
+        int n = 0;
+        for (const weighted_zone& z : wzones_) n = std::max(n, z.rule->n);
+        const int m = static_cast<int>(std::ceil(10.0 * std::sqrt(static_cast<double>(std::max(n, 1))))) + 48;
+        const gauss_legendre rules[2] = {gauss_legendre(m), gauss_legendre(m + 1)};
+        std::vector<double> cuts{s, c, 1.0}, inner = ends();
+        for (const kinks_plateau& b : plateaus_) add_graded_cuts(inner, b);  // 8(p): log|r - m| about thin zones
+        for (const double e : inner)
+            if (e > s && e < 1.0) cuts.push_back(e);
+        std::sort(cuts.begin(), cuts.end());
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        const double rho = 0.5 * (c - s);
+        const auto blend_at = [s, c, rho](double eta) {  // H of the zone [s, c] (8(g))
+            if (eta <= s) return 0.0;
+            if (eta >= c) return 1.0;
+            const double t = std::clamp((eta - s) / rho - 1.0, -1.0, 1.0);
+            return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt((1.0 - t) * (1.0 + t)));
+        };
+        // A point r at a distance d from a cut of a piece of length L sees the subtracted integrand's mirrored pole at
+        // u = -2 sqrt(d/L) in the piece's angle, and the rule's error is about exp(-2 M sqrt(8 sqrt(d/L)/pi)): within
+        // 1e-13 for d/L > (88/M^2)^2; nearer (a trial end next to the source's kink, the checks' points at an end) the
+        // adaptive route answers (nullopt), with a factor 4 to spare.
+        const double near = 4.0 * std::pow(88.0 / (static_cast<double>(m) * m), 2);
+        for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+            const double a = cuts[i], e = cuts[i + 1], half = 0.5 * (e - a);
+            k.near_.push_back({a, near * (e - a)});
+            k.near_.push_back({e, near * (e - a)});
+            if (!(half > 0.0)) continue;
+            for (int l = 0; l < 2; ++l) {
+                const gauss_legendre& rule = rules[l];
+                kinks_blend::weighted_table& table = k.tables_[l];
+                for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+                    const double u = M_PI_2 * (rule.nodes[j] + 1.0), sh = std::sin(0.5 * u), ch = std::cos(0.5 * u);
+                    const double eta = u < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch;
+                    table.eta.push_back(eta);
+                    table.weight.push_back(rule.weights[j] * M_PI_2 * half * std::sin(u));
+                    table.g.push_back((*this)(eta) * blend_at(eta));
+                }
+            }
+        }
+        return k;
+    }
     for (const zone& z : zones_) {
         // g W_1 on the zone (docs/formulation.md 8(o), "W with the kinks"): g, a polynomial of degree terms - 1
         // (`terms` its coefficients above eps of their sum; those below change g by at most n eps of it), times W_1,
@@ -410,7 +519,34 @@ std::optional<double> kinks_blend::plateau_part(double r) const {
     return M_1_PI * total;
 }
 
+std::optional<double> kinks_blend::weighted_part(double r, double blend) const {
+    // Within 1e-9 of the trailing edge (1 - r)^a_N's difference quotient is a spike no fixed rule resolves: the
+    // adaptive route (dissimilar_zones::cauchy_by_quadrature), as plateau_part declines there.
+    const double s = unit_.start();
+    const bool inside = r > s && r < 1.0;
+    if (inside && !(1.0 - r > 1e-9)) return std::nullopt;
+    for (const auto& [cut, apart] : near_)
+        if (std::fabs(r - cut) < apart && r != cut) return std::nullopt;
+    const double gr = inside ? (*whole_)(r) * blend : 0.0;
+    // A node within a thousandth of its weight (its local spacing) of r would lose eps |g|/|eta - r| of the difference
+    // quotient to cancellation: then the other rule, whose nodes interlace (M and M + 1 points per piece), none as near.
+    double sum = 0.0;
+    for (const weighted_table& table : tables_) {
+        sum = 0.0;
+        bool near_node = false;
+        for (std::size_t i = 0; i < table.eta.size() && !near_node; ++i) {
+            const double d = table.eta[i] - r;
+            near_node = std::fabs(d) < 1e-3 * table.weight[i];
+            sum += table.weight[i] * (table.g[i] - gr) / d;
+        }
+        if (!near_node) break;
+    }
+    if (gr != 0.0) sum += gr * std::log((1.0 - r) / (r - s));
+    return M_1_PI * sum;
+}
+
 std::optional<double> kinks_blend::operator()(double r, double blend) const {
+    if (whole_) return weighted_part(r, blend);
     const auto w1 = unit_(r);
     if (!w1) return std::nullopt;
     const double root = std::sqrt((1.0 - r) * (1.0 + r));
@@ -430,6 +566,10 @@ std::optional<double> kinks_blend::operator()(double r, double blend) const {
 }
 
 void kinks_blend::operator()(const double* r, const double* blend, std::optional<double>* out, std::size_t count) const {
+    if (whole_) {
+        for (std::size_t i = 0; i < count; ++i) out[i] = weighted_part(r[i], blend[i]);
+        return;
+    }
     // operator() at each point, bit for bit: W_1, then per part the n-term sums u_series(g) (only where the point is
     // inside the part's zone with a blend) and cauchy_u_series(g W_1) for all points at once (their batched forms).
     std::vector<std::optional<double>> w1(count);

@@ -72,6 +72,14 @@ double coupled_layers_crossing(double beta_d, double f);
 constexpr double plateau_spacings = 8.0;
 bool carries_plateau(const tangential_solution& s);
 
+// Whether five zones of smooth rollers take plan C on the weight w_N with the Hermite plateau (docs/formulation.md
+// 8(x), "Landed"): where both stick zones are at least five_zone_spacings node spacings (as carries_plateau's) long.
+// A shorter one (Q/f = +0.75: the second zone [0.99920, 0.99953], 0.7 spacings, 4.7e-4 from the edge) holds a V-shaped
+// dip of p/w_N from p_q's one-sided terms that no polynomial pbar follows: the weighted path lost those five zones
+// at n = 128..512, where the old path (kinks_of, square-root weight) answers. Decided once per alternation, as the plateau.
+constexpr double five_zone_spacings = 2.0;
+bool weighs_five_zones(const tangential_solution& s);
+
 class full_coupling {
 public:
     // The level's kernels, n and method, friction and beta_D != 0.

@@ -26,9 +26,11 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <array>
 #include <memory>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <gsl/gsl_integration.h>
@@ -50,8 +52,18 @@ class kinks_blend;
 struct kinks_plateau {
     blend_plateau shape;
     double amplitude, alpha, slope;  // amplitude = 2 f beta_D sign; alpha + slope r = pbar/sqrt(1 - r^2)
-    // H[(alpha + slope eta) B](r) = (alpha + slope r) H[B](r) + slope int B/pi
-    double value(double r) const { return (alpha + slope * r) * shape.hilbert(r) + slope * shape.moment(0) * M_1_PI; }
+    // On the weight w_N (8(x)) pbar/w_N = P = alpha + slope r + c2 r^2 + c3 r^3, the cubic Hermite interpolant
+    // (add_weighted_plateau; c2 = c3 = 0 otherwise): H[P B](r) = P(r) H[B](r) + (1/pi) int (P(eta) - P(r))/(eta - r) B,
+    // which takes B's moments 0..2.
+    double c2 = 0.0, c3 = 0.0;
+    double poly(double r) const { return alpha + r * (slope + r * (c2 + r * c3)); }
+    double value(double r) const {
+        const double m0 = shape.moment(0);
+        double v = poly(r) * shape.hilbert(r) + slope * m0 * M_1_PI;
+        if (c2 != 0.0 || c3 != 0.0)
+            v += M_1_PI * (c2 * (shape.moment(1) + r * m0) + c3 * (shape.moment(2) + r * shape.moment(1) + r * r * m0));
+        return v;
+    }
 };
 
 class pressure_kinks {
@@ -67,7 +79,14 @@ public:
     // Its H is closed form, so p_q^0 carries the step 2 f p of beta_D p1 across each zone, which the series saw
     // as a jump where a zone is thinner than the node spacing; the right side keeps 2 f (p - pbar) B, whose step
     // across a zone is O(zone length p').
+    // Not on the weight w_N (there add_weighted_plateau).
     void add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1, double h2);
+    // The same plateau on the weight w_N (five zones of smooth rollers, docs/formulation.md 8(x)): pbar = w_N P, P the
+    // cubic Hermite interpolant of g = p/w_N through `g` and `slopes` (g and g') at the zones' midpoints, carried as
+    // 8(w)'s p_q of q = sign 2 f pbar B: p_b = (amplitude/(1 + k_E^2)) w_N (H[P B] - k_E P B); its load and C from B's
+    // moments 0..4 in closed form. After set_weight.
+    void add_weighted_plateau(double beta_d, double sign, double f, const blend_plateau& plateau,
+                              const std::array<double, 2>& g, const std::array<double, 2>& slopes);
     // The weighted pressure of docs/formulation.md 8(w) (plan C; braked three zones of smooth rollers, a + b = 1):
     //   p = w_N phi + p_q,  w_N = (1 - r)^a_N (1 + r)^(1 - a_N),  a_N = 1/2 + atan(k_E)/pi,  k_E = sigma beta_D f,
     //   p_q = -(beta_D/(1 + k_E^2)) sum_Z (k_E q_Z - w_N H[q_Z/w_N]),   (H + k_E)[p_q] = -beta_D q + C,
@@ -163,6 +182,17 @@ public:
 private:
     friend class pressure_kinks;
     explicit kinks_blend(blended_cauchy unit) : unit_(std::move(unit)) {}
+    // The weighted pressure (8(w), 8(x): the object carries the whole p, the normal U-series is zero): W's Cauchy part
+    // H[p H](r) by a fixed rule on the pieces between s, the kinks' ends and 1, each in the cos map (p's one-sided
+    // square roots at the zone ends and (1 - r)^a_N at the edge smooth or nearly so in the angle), p H tabulated at
+    // its nodes once per blend, g(r) subtracted on every piece (the principal value), + g(r) log((1 - r)/(r - s)).
+    std::optional<double> weighted_part(double r, double blend) const;
+    std::shared_ptr<const pressure_kinks> whole_;  // the weighted pressure (a copy), null otherwise
+    struct weighted_table {
+        std::vector<double> eta, weight, g;  // the pieces' nodes, weights (d eta), p H there
+    };
+    weighted_table tables_[2];  // M and M + 1 points per piece (interlaced nodes)
+    std::vector<std::pair<double, double>> near_;  // per cut: the distance within which the rule declines
     // H[p_b H](r) of the plateaus' part p_b of p_q^0 (docs/formulation.md 8(p)): no expansion on one zone holds B, so
     // by adaptive quadrature of that part alone (closed form per point, smooth between the zones' ends and the cuts
     // graded about thin zones), with p_b(r) H(r) subtracted at r. Empty within 1e-9 of the edge r = 1.
