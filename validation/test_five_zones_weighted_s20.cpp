@@ -11,12 +11,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,64 +24,16 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/pressure_kinks.hpp"
 
+#include "../tests/hilbert_on_pieces.hpp"
 #include "aluminium_on_steel.hpp"
 #include "command_output.hpp"
 
 using namespace roughroll;
 
 namespace {
-using integrand = std::function<double(double)>;
-double call(double x, void* p) { return (*static_cast<const integrand*>(p))(x); }
-
-struct workspace {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
-    ~workspace() { gsl_integration_workspace_free(w); }
-};
-
-void expect_converged(int status, double err) {
-    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && err < 1e-12)) << status << " " << err;
-}
-
-// (1/pi) PV int_{-1}^{1} g(eta)/(eta - r) d eta, g smooth between `cuts`: QAWC on [r - d, r + d], QAGS elsewhere.
-double hilbert(const integrand& g, double r, std::vector<double> cuts) {
-    workspace ws;
-    double d = 0.5 * std::min(1.0 - std::fabs(r), 0.1);
-    for (const double c : cuts) d = std::min(d, 0.5 * std::fabs(c - r));
-    std::vector<double> pts{-1.0, 1.0, r - d, r + d};
-    for (const double c : cuts) pts.push_back(c);
-    std::sort(pts.begin(), pts.end());
-    double sum = 0.0, err = 0.0;
-    const integrand h = [&](double eta) { return g(eta) / (eta - r); };
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-        const double lo = pts[i], hi = pts[i + 1];
-        if (!(hi > lo)) continue;
-        double v = 0.0;
-        if (lo == r - d && hi == r + d) {
-            gsl_function F{&call, const_cast<integrand*>(&g)};
-            expect_converged(gsl_integration_qawc(&F, lo, hi, r, 1e-15, 1e-13, 4000, ws.w, &v, &err), err);
-        } else {
-            gsl_function F{&call, const_cast<integrand*>(&h)};
-            expect_converged(gsl_integration_qags(&F, lo, hi, 1e-15, 1e-13, 4000, ws.w, &v, &err), err);
-        }
-        sum += v;
-    }
-    return sum * M_1_PI;
-}
-
-double integral(const integrand& g, std::vector<double> cuts) {
-    workspace ws;
-    cuts.push_back(-1.0);
-    cuts.push_back(1.0);
-    std::sort(cuts.begin(), cuts.end());
-    double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        double v = 0.0, err = 0.0;
-        gsl_function F{&call, const_cast<integrand*>(&g)};
-        expect_converged(gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-15, 1e-14, 4000, ws.w, &v, &err), err);
-        sum += v;
-    }
-    return sum;
-}
+using hilbert_on_pieces::hilbert;
+using hilbert_on_pieces::integral;
+using hilbert_on_pieces::integrand;
 
 // The plateau B of blend_plateau.hpp, written out from 8(p) and 8(r) (Theta_3 = 1/2 + arcsin(t)/pi + sqrt(1 - t^2) P,
 // P = (33 t - 26 t^3 + 8 t^5)/(15 pi)), not from blend_plateau.

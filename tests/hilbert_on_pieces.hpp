@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// QUADPACK's routes to the Hilbert transform and the integral of a function that is smooth between given cuts (the
+// plateau's ramps, a stick zone's ends): the references tests/test_weighted_pressure.cpp (8(w)) and
+// validation/test_five_zones_weighted_s20.cpp (8(x)) check the weighted pressure against. They share nothing with the
+// solver but the definitions. Header-only, for tests.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+#include <gtest/gtest.h>
+
+namespace hilbert_on_pieces {
+
+using integrand = std::function<double(double)>;
+
+inline double call(double x, void* p) { return (*static_cast<const integrand*>(p))(x); }
+
+struct workspace {
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
+    ~workspace() { gsl_integration_workspace_free(w); }
+    workspace() = default;
+    workspace(const workspace&) = delete;
+    workspace& operator=(const workspace&) = delete;
+};
+
+// QUADPACK's status: a round-off stop is accepted where its own error estimate is below 1e-12, anything else fails
+// the calling test.
+inline void expect_converged(int status, double err) {
+    EXPECT_TRUE(status == GSL_SUCCESS || (status == GSL_EROUND && err < 1e-12)) << status << " " << err;
+}
+
+// (1/pi) PV int_{-1}^{1} g(eta)/(eta - r) d eta, g smooth between `cuts`: QAWC on [r - d, r + d], QAGS elsewhere.
+inline double hilbert(const integrand& g, double r, std::vector<double> cuts) {
+    workspace ws;
+    double d = 0.5 * std::min(1.0 - std::fabs(r), 0.1);
+    for (const double c : cuts) d = std::min(d, 0.5 * std::fabs(c - r));
+    std::vector<double> pts{-1.0, 1.0, r - d, r + d};
+    for (const double c : cuts) pts.push_back(c);
+    std::sort(pts.begin(), pts.end());
+    double sum = 0.0, err = 0.0;
+    const integrand h = [&](double eta) { return g(eta) / (eta - r); };
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+        const double lo = pts[i], hi = pts[i + 1];
+        if (!(hi > lo)) continue;
+        double v = 0.0;
+        if (lo == r - d && hi == r + d) {
+            gsl_function F{&call, const_cast<integrand*>(&g)};
+            expect_converged(gsl_integration_qawc(&F, lo, hi, r, 1e-15, 1e-13, 4000, ws.w, &v, &err), err);
+        } else {
+            gsl_function F{&call, const_cast<integrand*>(&h)};
+            expect_converged(gsl_integration_qags(&F, lo, hi, 1e-15, 1e-13, 4000, ws.w, &v, &err), err);
+        }
+        sum += v;
+    }
+    return sum * M_1_PI;
+}
+
+// int_{-1}^{1} g, g smooth between `cuts`: QAGS on each piece.
+inline double integral(const integrand& g, std::vector<double> cuts) {
+    workspace ws;
+    cuts.push_back(-1.0);
+    cuts.push_back(1.0);
+    std::sort(cuts.begin(), cuts.end());
+    double sum = 0.0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        double v = 0.0, err = 0.0;
+        gsl_function F{&call, const_cast<integrand*>(&g)};
+        expect_converged(gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-15, 1e-14, 4000, ws.w, &v, &err), err);
+        sum += v;
+    }
+    return sum;
+}
+
+}  // namespace hilbert_on_pieces
