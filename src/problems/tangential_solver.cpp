@@ -22,6 +22,21 @@ const kernel& resolved(const kernel& k, const normal_solution& normal) {
     check_resolution(k, normal.rule, normal.how, "K1* (tangential kernel)");
     return k;
 }
+
+// The stick zone's unknowns psi_k at the rule's nodes (the first n entries of the solution x; entry n is xi) and the
+// zone's load int psi on the rule (E4, 8(v)), f + rho load being the Q of (3.5).
+struct zone_unknowns {
+    std::vector<double> psi;
+    double load = 0.0;
+};
+zone_unknowns unknowns_of(const gsl_vector* x, const std::vector<double>& weights) {
+    zone_unknowns u{std::vector<double>(weights.size()), 0.0};
+    for (std::size_t k = 0; k < weights.size(); ++k) {
+        u.psi[k] = gsl_vector_get(x, k);
+        u.load += weights[k] * u.psi[k];
+    }
+    return u;
+}
 }  // namespace
 
 tangential_solver::tangential_solver(const normal_solution& normal, const kernel& k1, const kernel& k2, double f,
@@ -132,14 +147,9 @@ tangential_solution tangential_solver::solve_on_jacobi(double start, double c0, 
     context << "tangential problem (4.4) on the Jacobi weight (docs/formulation.md 8(v)) at c0 = " << c0
             << ", stick zone from " << start;
     const gsl_vector* x = z.system.holds_factors() ? z.system.solve_factorised(context.str()) : z.system.solve(context.str());
-    std::vector<double> psi(n);
-    double load = 0.0;
-    for (int i = 0; i < n; ++i) {
-        psi[i] = gsl_vector_get(x, i);
-        load += z.colloc.rule.weights[i] * psi[i];
-    }
-    tangential_solution s = zone_solution(f_, start, c0, gsl_vector_get(x, n), f_ + rho * load,
-                                          jacobi_coefficients(z.colloc.rule, psi), z.system.rcond());
+    const zone_unknowns u = unknowns_of(x, z.colloc.rule.weights);
+    tangential_solution s = zone_solution(f_, start, c0, gsl_vector_get(x, n), f_ + rho * u.load,
+                                          jacobi_coefficients(z.colloc.rule, u.psi), z.system.rcond());
     s.weight_a = a;
     s.weight_b = 1.0 - a;
     s.forcing = forcing;
@@ -182,14 +192,9 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
                           : near      ? system_.solve_near(context.str())
                                       : system_.solve(context.str());
 
-    std::vector<double> psi(n_);
-    double load = 0.0;
-    for (int k = 0; k < n_; ++k) {
-        psi[k] = gsl_vector_get(x, k);
-        load += rule.weights[k] * psi[k];
-    }
-    tangential_solution s =
-        zone_solution(f_, start, c0, gsl_vector_get(x, n_), f_ + rho * load, u_coefficients(rule, psi), system_.rcond());
+    const zone_unknowns u = unknowns_of(x, rule.weights);
+    tangential_solution s = zone_solution(f_, start, c0, gsl_vector_get(x, n_), f_ + rho * u.load,
+                                          u_coefficients(rule, u.psi), system_.rcond());
     s.forcing = forcing;
     return s;
 }
