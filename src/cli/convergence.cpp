@@ -78,11 +78,7 @@ int run_convergence(const convergence_options& o) {
     if (Q == 0.0) throw input_error("Q = 0 is solved exactly without a discretisation: nothing to converge");
     // The outputs, checked and opened before the minutes of work.
     const std::string name = "convergence-" + std::filesystem::path(o.scene.path).stem().string();
-    const auto stem = output_stem(o.out, name);
-    const auto csv = std::filesystem::path(stem.string() + ".csv");
-    const auto script = std::filesystem::path(stem.string() + ".gp");
-    output_file csv_file(csv, s.files), script_file(script, s.files);
-    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
+    plot_files files(output_stem(o.out, name), s.files);
 
     settle_width(s, nullptr, Q);  // a physical scene: the roughness at the width for its load
     if (s.surfaces.smooth())
@@ -127,7 +123,7 @@ int run_convergence(const convergence_options& o) {
         }
     }
 
-    std::ostream& out = csv_file.stream();
+    std::ostream& out = files.csv_file.stream();
     out << "# roughroll " << version() << "\n"
         << "# roughroll convergence " << one_line(o.scene.path) << ", Q = " << shortest(Q)
         << "; errors against the extrapolated "
@@ -140,10 +136,10 @@ int run_convergence(const convergence_options& o) {
             << shortest(ec) << ',' << shortest(ex) << ',' << shortest(std::max({el, ec, ex})) << ','
             << shortest(m.estimate_xi / std::fabs(ref.xi)) << '\n';
     }
-    csv_file.commit();
+    files.csv_file.commit();
 
-    std::ostream& gp = script_file.stream();
-    gp << gnuplot_output_stem(stem)
+    std::ostream& gp = files.script_file.stream();
+    gp << gnuplot_output_stem(files.stem)
        << "set datafile separator ','\nset logscale xy\nset grid\nset key top right box opaque\n"
        // Powers of ten on both axes (the default printed 0.000010 ... 10.00000, the last one
        // cut at the right edge, which the right margin now leaves room for).
@@ -157,16 +153,16 @@ int run_convergence(const convergence_options& o) {
         gp << "set terminal " << t[0] << "\nset output out.'" << t[1] << "'\nplot ";
         const char* sep = "";
         for (method how : {method::paper, method::product, method::extrapolated}) {
-            gp << sep << "'" << gnuplot_path(csv.filename()) << "' using 3:(strcol(1) eq '" << to_string(how)
+            gp << sep << "'" << gnuplot_path(files.csv.filename()) << "' using 3:(strcol(1) eq '" << to_string(how)
                << "' ? $7 : NaN) with linespoints lw 2 pt 7 title '" << to_string(how) << "'";
             sep = ", \\\n     ";
         }
         gp << "\n";
     }
     gp << "unset output\n";
-    script_file.commit();
-    if (o.plot) run_gnuplot(script, stem, {".svg", ".png"});
-    std::printf("written: %s (.csv, .gp%s)\n", one_line(stem.string()).c_str(), o.plot ? ", .svg, .png" : "");
+    files.script_file.commit();
+    if (o.plot) run_gnuplot(files.script, files.stem, {".svg", ".png"});
+    std::printf("written: %s (.csv, .gp%s)\n", one_line(files.stem.string()).c_str(), o.plot ? ", .svg, .png" : "");
     return 0;
 }
 

@@ -157,10 +157,8 @@ int run_figure(const figure_options& o) {
                           " for its convergence estimates; use n <= " + std::to_string(max_nodes / 2));
     const auto curves = curves_of(o.which);
     // The outputs, checked and opened before any work.
-    const auto stem = output_stem(o.out, "fig" + o.which);
-    const auto csv = std::filesystem::path(stem.string() + ".csv");
-    output_file csv_file(csv, {}), table_file(stem.string() + "-table.md", {}), script_file(stem.string() + ".gp", {});
-    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, {});
+    plot_files files(output_stem(o.out, "fig" + o.which), {});
+    output_file table_file(files.stem.string() + "-table.md", {});
 
     // Each curve swept in c0 (one linear solve per point, no root search): all curves and
     // Carter's share the c0 grid, each has its own loads Q(c0).
@@ -176,7 +174,7 @@ int run_figure(const figure_options& o) {
             if (row.is_refused()) throw resolution_error("Fig. " + o.which + ": " + row.refused);
     }
 
-    std::ostream& out = csv_file.stream();
+    std::ostream& out = files.csv_file.stream();
     out << "# roughroll " << version() << "\n";
     out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes()
         << "; curves swept in c0, each with its own Q(c0)\n";
@@ -196,12 +194,12 @@ int run_figure(const figure_options& o) {
         out << ',' << shortest(1.0 - rho * rho) << ',' << shortest(M_2_PI * (1.0 - rho)) << ',' << (hold ? 1 : 0)
             << '\n';
     }
-    csv_file.commit();
+    files.csv_file.commit();
 
     write_table(table_file, o.which, curves, options);
-    write_gnuplot(script_file, csv, stem, o.which, curves);
+    write_gnuplot(files.script_file, files.csv, files.stem, o.which, curves);
     if (!o.plot) return 0;
-    run_gnuplot(stem.string() + ".gp", stem, {".svg", ".png"});
+    run_gnuplot(files.script, files.stem, {".svg", ".png"});
     return 0;
 }
 

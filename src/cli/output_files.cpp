@@ -150,6 +150,12 @@ fs::path output_stem(const std::string& dir, const std::string& name) {
     return stem;
 }
 
+plot_files::plot_files(fs::path stem_, const std::vector<std::string>& inputs)
+    : stem(std::move(stem_)), csv(stem.string() + ".csv"), script(stem.string() + ".gp"), csv_file(csv, inputs),
+      script_file(script, inputs) {
+    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, inputs);
+}
+
 output_file::output_file(fs::path path, const std::vector<std::string>& inputs) : path_(std::move(path)) {
     check_output(path_, inputs);
     std::error_code ec;

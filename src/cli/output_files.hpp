@@ -51,6 +51,15 @@ private:
     bool committed_ = false;
 };
 
+// The files of a plotting subcommand (convergence, traction, figure), opened before any work so that a bad --out
+// costs no solve: stem.csv and stem.gp as output_files, stem.svg and stem.png checked for run_gnuplot.
+struct plot_files {
+    plot_files(std::filesystem::path stem, const std::vector<std::string>& inputs);
+
+    std::filesystem::path stem, csv, script;
+    output_file csv_file, script_file;
+};
+
 // stdout flushed and checked: input_error "cannot write standard output: <strerror>".
 void finish_stdout();
 

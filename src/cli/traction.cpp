@@ -219,11 +219,7 @@ int run_traction(const traction_options& o) {
 
     scene s = load_scene(o.scene);
     // The outputs, checked and opened before any work: a bad --out costs no solve.
-    const auto stem = output_stem(o.out, "traction-" + name);
-    const auto csv = std::filesystem::path(stem.string() + ".csv");
-    const auto script = std::filesystem::path(stem.string() + ".gp");
-    output_file csv_file(csv, s.files), script_file(script, s.files);
-    for (const char* ext : {".svg", ".png"}) check_output(stem.string() + ext, s.files);
+    plot_files files(output_stem(o.out, "traction-" + name), s.files);
 
     const double Q = load_of(s, o.load.given());
     progress("traction " + name + ": solving the point at Q = " + shortest(Q) +
@@ -261,7 +257,7 @@ int run_traction(const traction_options& o) {
     }
     const bool unresolved = std::any_of(rows.begin(), rows.end(), [](const traction_row& row) { return std::isnan(row.v); });
 
-    std::ostream& out = csv_file.stream();
+    std::ostream& out = files.csv_file.stream();
     out << "# roughroll " << version() << "\n"
         << "# roughroll traction " << one_line(o.scene.path) << (s.label.empty() ? "" : ": ") << one_line(s.label)
         << "\n"
@@ -288,7 +284,7 @@ int run_traction(const traction_options& o) {
         if (si) out << ',' << shortest(*row.x1_m) << ',' << shortest(*row.p2_Pa) << ',' << shortest(*row.p1_Pa);
         out << '\n';
     }
-    csv_file.commit();
+    files.csv_file.commit();
 
     plot_facts facts{};
     facts.title = "Tractions over the contact: " +
@@ -305,10 +301,10 @@ int run_traction(const traction_options& o) {
     facts.v_unresolved = unresolved;
     facts.checks_hold = solution.checks.hold();
     facts.si = si;
-    write_traction_gnuplot(script_file.stream(), csv, stem, facts);
-    script_file.commit();
+    write_traction_gnuplot(files.script_file.stream(), files.csv, files.stem, facts);
+    files.script_file.commit();
     if (!o.plot) return 0;
-    run_gnuplot(script, stem, {".svg", ".png"});
+    run_gnuplot(files.script, files.stem, {".svg", ".png"});
     return 0;
 }
 

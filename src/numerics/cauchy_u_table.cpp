@@ -96,14 +96,7 @@ cauchy_u_table::cauchy_u_table(const std::vector<double>& b) : b_(b) {
 double cauchy_u_table::outer(double w, int side) const {
     const int p = std::min(outer_panels_ - 1, static_cast<int>(w / outer_length_));
     const double* c = &outer_[side][static_cast<std::size_t>(p) * size];
-    const double s = 2.0 * (w - p * outer_length_) / outer_length_ - 1.0;
-    double y1 = 0.0, y2 = 0.0;
-    for (int k = theta_panels::degree; k >= 1; --k) {
-        const double y0 = c[k] + 2.0 * s * y1 - y2;
-        y2 = y1;
-        y1 = y0;
-    }
-    return c[0] + s * y1 - y2;
+    return theta_panels::panel_sum(c, 2.0 * (w - p * outer_length_) / outer_length_ - 1.0);
 }
 
 double cauchy_u_table::beyond(double x) const {

@@ -92,13 +92,7 @@ double theta_panels::operator()(double r) const {
     // The batched route's operations for one lane, without its lanes (W's quadrature takes single
     // values by the hundred thousand).
     const auto [c, s] = locate(r);
-    double y1 = 0.0, y2 = 0.0;
-    for (int k = degree; k >= 1; --k) {
-        const double y0 = c[k] + 2.0 * s * y1 - y2;
-        y2 = y1;
-        y1 = y0;
-    }
-    return c[0] + s * y1 - y2;
+    return panel_sum(c, s);
 }
 
 void theta_panels::operator()(const double* r, double* out, std::size_t count) const {

@@ -30,6 +30,16 @@ public:
     // M = modulus(y, x) bounding f on the ellipse of half-axes y = h (rho - 1/rho)/2 (imaginary) and
     // x = h (rho + 1/rho)/2 (real).
     static double ellipse_bound(double half_length, const std::function<double(double y, double x)>& modulus);
+    // sum_{k<=N} c_k T_k(s) of one panel's coefficients, Clenshaw's recurrence (cauchy_u_table's outer panels too).
+    static double panel_sum(const double* c, double s) {
+        double y1 = 0.0, y2 = 0.0;
+        for (int k = degree; k >= 1; --k) {
+            const double y0 = c[k] + 2.0 * s * y1 - y2;
+            y2 = y1;
+            y1 = y0;
+        }
+        return c[0] + s * y1 - y2;
+    }
 
     theta_panels() = default;
     explicit theta_panels(int panels);  // throws numerical_error for panels < 1
