@@ -1,0 +1,499 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "roughroll/numerics/variable_k_weight.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_math.h>
+
+#include "roughroll/base/error.hpp"
+#include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/numerics/gauss_jacobi.hpp"
+
+namespace roughroll {
+
+namespace {
+
+void check_zones(const std::vector<double>& ends, std::size_t zones, const char* what) {
+    if (ends.size() < 2 || ends.size() != zones + 1 || ends.front() != -1.0 || ends.back() != 1.0)
+        throw numerical_error(std::string(what) + ": the zone ends must run from -1 to 1, one more than the zones");
+    for (std::size_t j = 1; j < ends.size(); ++j)
+        if (!(ends[j] > ends[j - 1]))
+            throw numerical_error(std::string(what) + ": the zone ends must increase (zone " + std::to_string(j) +
+                                  " is empty)");
+}
+
+// Gauss-Jacobi rules of one discretisation, by their exponents (exact keys: the exponents come from one table).
+class panel_rules {
+public:
+    explicit panel_rules(int points) : points_(points) {}
+    const gauss_jacobi& rule(double right, double left) {
+        for (const std::unique_ptr<gauss_jacobi>& r : rules_)
+            if (r->a == right && r->b == left) return *r;
+        rules_.push_back(std::make_unique<gauss_jacobi>(points_, right, left));
+        return *rules_.back();
+    }
+
+private:
+    int points_;
+    std::vector<std::unique_ptr<gauss_jacobi>> rules_;
+};
+
+struct discrete_measure {
+    std::vector<double> x, w;
+};
+
+// A panel [u, v] of zone `zone` is resolved when every zone end other than u and v lies at least v - u away from it
+// (8(z)); otherwise it is halved. The panel's own ends carry their powers in the Gauss-Jacobi rule.
+void add_panel(const piecewise_power_weight& pw, int zone, double u, double v, panel_rules& rules, discrete_measure& out,
+               int depth) {
+    const double length = v - u;
+    bool resolved = true;
+    for (double s : pw.ends) {
+        if (s == u || s == v) continue;
+        const double d = s < u ? u - s : s - v;
+        if (d < length) resolved = false;
+    }
+    // A finitely smooth factor m is graded towards the zone ends it touches (8(z), "A varying k").
+    if (pw.smooth && (u == pw.ends[zone] || v == pw.ends[zone + 1]) &&
+        length > std::ldexp(pw.ends[zone + 1] - pw.ends[zone], -16))
+        resolved = false;
+    if (!resolved) {
+        if (depth > 200) throw numerical_error("variable-k weight: a panel could not be resolved (zone ends too close)");
+        const double m = 0.5 * (u + v);
+        add_panel(pw, zone, u, m, rules, out, depth + 1);
+        add_panel(pw, zone, m, v, rules, out, depth + 1);
+        return;
+    }
+    int ju = -1, jv = -1;
+    for (std::size_t j = 0; j < pw.ends.size(); ++j) {
+        if (pw.ends[j] == u) ju = static_cast<int>(j);
+        if (pw.ends[j] == v) jv = static_cast<int>(j);
+    }
+    const double beta = ju >= 0 ? pw.exponents[ju] : 0.0, alpha = jv >= 0 ? pw.exponents[jv] : 0.0;
+    const gauss_jacobi& r = rules.rule(alpha, beta);
+    const double half = 0.5 * length, mid = 0.5 * (u + v);
+    const double scale = pw.factors[zone] * std::pow(half, 1.0 + alpha + beta);
+    for (int k = 0; k < r.n; ++k) {
+        const double x = mid + half * r.nodes[k];
+        double f = scale * r.weights[k];
+        for (std::size_t j = 0; j < pw.ends.size(); ++j)
+            if (static_cast<int>(j) != ju && static_cast<int>(j) != jv && pw.exponents[j] != 0.0)
+                f *= std::pow(std::fabs(x - pw.ends[j]), pw.exponents[j]);
+        if (pw.smooth) f *= pw.smooth(x);
+        out.x.push_back(x);
+        out.w.push_back(f);
+    }
+}
+
+}  // namespace
+
+double piecewise_power_weight::operator()(double x) const {
+    if (x < -1.0 || x > 1.0) return 0.0;
+    double f = factors[zone_of(x)];
+    for (std::size_t j = 0; j < ends.size(); ++j)
+        if (exponents[j] != 0.0) f *= std::pow(std::fabs(x - ends[j]), exponents[j]);
+    return smooth ? f * smooth(x) : f;
+}
+
+int piecewise_power_weight::zone_of(double x) const {
+    const int zones = static_cast<int>(factors.size());
+    const int i = static_cast<int>(std::upper_bound(ends.begin(), ends.end(), x) - ends.begin()) - 1;
+    return std::clamp(i, 0, zones - 1);
+}
+
+orthogonal_recurrence recurrence_of(const piecewise_power_weight& pw, int count) {
+    gsl_guard();
+    check_zones(pw.ends, pw.factors.size(), "variable-k weight");
+    if (pw.exponents.size() != pw.ends.size() || count < 1)
+        throw numerical_error("variable-k weight: one exponent per zone end and at least one term are needed");
+    for (double e : pw.exponents)
+        if (!(e > -1.0)) throw numerical_error("variable-k weight: an exponent at a zone end is not above -1");
+    panel_rules rules(count + 24);
+    discrete_measure m;
+    for (std::size_t i = 0; i + 1 < pw.ends.size(); ++i)
+        add_panel(pw, static_cast<int>(i), pw.ends[i], pw.ends[i + 1], rules, m, 0);
+    // Stieltjes in its orthonormal form (Lanczos on diag(x) from sqrt(w)): p_{-1} = 0, p_0 = 1/sqrt(beta_0),
+    // alpha_j = <x p_j, p_j>, sqrt(beta_{j+1}) p_{j+1} = (x - alpha_j) p_j - sqrt(beta_j) p_{j-1}.
+    const std::size_t N = m.x.size();
+    orthogonal_recurrence r;
+    r.alpha.resize(count);
+    r.beta.resize(count);
+    double beta0 = 0.0;
+    for (double wi : m.w) beta0 += wi;
+    r.beta[0] = beta0;
+    std::vector<double> p(N, 1.0 / std::sqrt(beta0)), prev(N, 0.0), next(N);
+    for (int j = 0; j < count; ++j) {
+        double a = 0.0;
+        for (std::size_t i = 0; i < N; ++i) a += m.w[i] * m.x[i] * p[i] * p[i];
+        r.alpha[j] = a;
+        if (j + 1 == count) break;
+        const double sb = j == 0 ? 0.0 : std::sqrt(r.beta[j]);
+        double b = 0.0;
+        for (std::size_t i = 0; i < N; ++i) {
+            next[i] = (m.x[i] - a) * p[i] - sb * prev[i];
+            b += m.w[i] * next[i] * next[i];
+        }
+        if (!(b > 0.0) || !std::isfinite(b)) throw numerical_error("variable-k weight: the Stieltjes procedure broke down");
+        r.beta[j + 1] = b;
+        const double inv = 1.0 / std::sqrt(b);
+        for (std::size_t i = 0; i < N; ++i) {
+            prev[i] = p[i];
+            p[i] = next[i] * inv;
+        }
+    }
+    return r;
+}
+
+gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n) {
+    gsl_guard();
+    if (n < 1 || static_cast<int>(r.alpha.size()) < n)
+        throw numerical_error("Gauss rule of " + std::to_string(n) + " nodes from a shorter recurrence");
+    // Golub and Welsch: the nodes are the eigenvalues of the Jacobi matrix, W_k = beta_0 v_{0k}^2. The implicit QL
+    // iteration with Wilkinson shifts on the tridiagonal matrix (Numerical Recipes' tqli, after EISPACK's imtql2),
+    // carrying only the first components of the eigenvectors: O(n^2), where a dense eigensolver costs O(n^3).
+    std::vector<double> d(r.alpha.begin(), r.alpha.begin() + n), e(n, 0.0), z(n, 0.0);
+    for (int j = 0; j + 1 < n; ++j) e[j] = std::sqrt(r.beta[j + 1]);
+    z[0] = 1.0;
+    for (int l = 0; l < n; ++l) {
+        int iter = 0, m = l;
+        do {
+            for (m = l; m < n - 1; ++m) {
+                const double dd = std::fabs(d[m]) + std::fabs(d[m + 1]);
+                if (std::fabs(e[m]) <= GSL_DBL_EPSILON * dd) break;
+            }
+            if (m == l) break;
+            if (++iter > 60)
+                throw numerical_error("Gauss rule of a variable-k weight: the QL iteration did not converge at n = " +
+                                      std::to_string(n));
+            double g = (d[l + 1] - d[l]) / (2.0 * e[l]);
+            double rr = std::hypot(g, 1.0);
+            g = d[m] - d[l] + e[l] / (g + (g >= 0.0 ? std::fabs(rr) : -std::fabs(rr)));
+            double s = 1.0, c = 1.0, p = 0.0;
+            int i = m - 1;
+            bool underflow = false;
+            for (; i >= l; --i) {
+                const double f = s * e[i], b = c * e[i];
+                e[i + 1] = rr = std::hypot(f, g);
+                if (rr == 0.0) {
+                    d[i + 1] -= p;
+                    e[m] = 0.0;
+                    underflow = true;
+                    break;
+                }
+                s = f / rr;
+                c = g / rr;
+                g = d[i + 1] - p;
+                rr = (d[i] - g) * s + 2.0 * c * b;
+                p = s * rr;
+                d[i + 1] = g + p;
+                g = c * rr - b;
+                const double zf = z[i + 1];
+                z[i + 1] = s * z[i] + c * zf;
+                z[i] = c * z[i] - s * zf;
+            }
+            if (underflow) continue;
+            d[l] -= p;
+            e[l] = g;
+            e[m] = 0.0;
+        } while (m != l);
+    }
+    std::vector<int> order(n);
+    for (int k = 0; k < n; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](int i, int j) { return d[i] < d[j]; });
+    gauss_rule g;
+    g.nodes.resize(n);
+    g.weights.resize(n);
+    // The weights by the Christoffel function, W_k = 1/sum_{j<n} p_j(t_k)^2 (p_j orthonormal): relative accuracy for
+    // the small weights next to the ends, where beta_0 v_{0k}^2 keeps only absolute accuracy (2.6e-10 relative at
+    // n = 1000 against GSL's Gauss-Jacobi rule, 8(z)).
+    for (int k = 0; k < n; ++k) {
+        // One Newton step on sqrt(beta_n) p_n = (t - alpha_{n-1}) p_{n-1} - sqrt(beta_{n-1}) p_{n-2} (with its
+        // derivative by the same recurrence) polishes the QL eigenvalue to the recurrence's own accuracy.
+        double t = d[order[k]];
+        {
+            double pm = 0.0, p0 = 1.0 / std::sqrt(r.beta[0]), dm = 0.0, d0 = 0.0;
+            for (int j = 0; j < n; ++j) {
+                const double sb = j == 0 ? 0.0 : std::sqrt(r.beta[j]);
+                const double scale = j + 1 < n ? 1.0 / std::sqrt(r.beta[j + 1]) : 1.0;
+                const double p1 = ((t - r.alpha[j]) * p0 - sb * pm) * scale;
+                const double d1 = (p0 + (t - r.alpha[j]) * d0 - sb * dm) * scale;
+                pm = p0;
+                p0 = p1;
+                dm = d0;
+                d0 = d1;
+            }
+            if (d0 != 0.0 && std::isfinite(p0 / d0)) t -= p0 / d0;
+        }
+        g.nodes[k] = t;
+        double prev = 0.0, p = 1.0 / std::sqrt(r.beta[0]), sum = p * p;
+        for (int j = 0; j + 1 < n; ++j) {
+            const double next = ((t - r.alpha[j]) * p - (j == 0 ? 0.0 : std::sqrt(r.beta[j]) * prev)) / std::sqrt(r.beta[j + 1]);
+            prev = p;
+            p = next;
+            sum += p * p;
+        }
+        g.weights[k] = 1.0 / sum;
+        if (!(std::isfinite(g.nodes[k]) && std::fabs(g.nodes[k]) < 1.0 && g.weights[k] > 0.0))
+            throw numerical_error("Gauss rule of a variable-k weight: a node or weight is not valid at n = " +
+                                  std::to_string(n));
+    }
+    return g;
+}
+
+variable_k_weight::variable_k_weight(std::vector<double> ends, std::vector<double> k)
+    : variable_k_weight(std::move(ends), std::move(k), {}) {}
+
+namespace {
+// int_lo^hi f by QAGS (the moments mu_0, mu_1 of a where k varies); a round-off stop is accepted where its own error
+// estimate is at rounding.
+double qags(const std::function<double(double)>& f, double lo, double hi, gsl_integration_workspace* ws) {
+    if (!(hi > lo)) return 0.0;
+    gsl_function F{[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
+                   const_cast<std::function<double(double)>*>(&f)};
+    double r = 0.0, e = 0.0;
+    const int status = gsl_integration_qags(&F, lo, hi, 1e-15, 1e-13, 1000, ws, &r, &e);
+    if (!(status == GSL_EROUND && e <= std::max(1e-15, 1e-13 * std::fabs(r))))
+        gsl_check(status, "variable-k weight: the integral of a over a zone where k varies");
+    return r;
+}
+
+// int_lo^hi f for f analytic inside (lo, hi) but finitely smooth at its ends, or nearly singular at a point `near`
+// outside: 20-point Gauss-Legendre panels, each at least its length away from `near` and halved towards both ends down
+// to 2^-grading of the zone (`scale`). A fixed rule, not adaptive: I_c's integrand (a_c(t) - a_c(x))/(t - x) carries rounding
+// noise eps/|t - x| next to x, which an adaptive rule chases (QAGS stops with "bad behaviour" there).
+double graded(const std::function<double(double)>& f, double lo, double hi, double near, double scale,
+              const gauss_jacobi& legendre, int grading) {
+    double sum = 0.0;
+    const double floor = std::ldexp(scale, -grading);
+    std::function<void(double, double)> panel = [&](double u, double v) {
+        const double h = v - u, mid = 0.5 * (u + v);
+        const double d = near < u ? u - near : (near > v ? near - v : (std::isnan(near) ? h : 0.0));
+        // Halved while it is longer than 1e-15 of the zone (and its halves are distinct numbers).
+        if (h > 1e-15 * scale && mid > u && mid < v && ((d < h) || ((u == lo || v == hi) && h > floor))) {
+            panel(u, mid);
+            panel(mid, v);
+            return;
+        }
+        for (int k = 0; k < legendre.n; ++k) sum += 0.5 * h * legendre.weights[k] * f(0.5 * (u + v) + 0.5 * h * legendre.nodes[k]);
+    };
+    panel(lo, hi);
+    return sum;
+}
+}  // namespace
+
+variable_k_weight::variable_k_weight(std::vector<double> ends, std::vector<double> k,
+                                     std::vector<std::function<double(double)>> varying)
+    : k_(std::move(k)), varying_(std::move(varying)), workspace_(make_integration_workspace(1000)), legendre_(20, 0.0, 0.0) {
+    gsl_guard();
+    check_zones(ends, k_.size(), "variable-k weight");
+    const std::size_t M = k_.size();
+    if (varying_.empty()) varying_.resize(M);
+    if (varying_.size() != M) throw numerical_error("variable-k weight: one k (constant or varying) per zone");
+    bool any = false;
+    for (std::size_t i = 0; i < M; ++i) {
+        if (varying_[i]) {
+            any = true;
+            continue;
+        }
+        if (!std::isfinite(k_[i])) throw numerical_error("variable-k weight: k is not finite on zone " + std::to_string(i));
+    }
+    auto a_of = [&](std::size_t i, double x) {
+        const double kx = varying_[i] ? varying_[i](x) : k_[i];
+        if (!std::isfinite(kx)) throw numerical_error("variable-k weight: k is not finite on zone " + std::to_string(i));
+        return 0.5 - std::atan(kx) / M_PI;  // k = cot(pi a), 0 < a < 1
+    };
+    a_.resize(M);
+    std::vector<double> right(M);
+    for (std::size_t i = 0; i < M; ++i) {
+        a_[i] = a_of(i, ends[i]);
+        right[i] = a_of(i, ends[i + 1]);
+    }
+    // 8(z): w = prod |x - x_j|^{e_j} (times m where k varies); e_0 = 1 - a(-1), e_j = a(x_j-) - a(x_j+), e_M = a(1).
+    std::vector<double> e(M + 1), s(M);
+    e[0] = 1.0 - a_[0];
+    for (std::size_t j = 1; j < M; ++j) e[j] = right[j - 1] - a_[j];
+    e[M] = right[M - 1];
+    for (std::size_t i = 0; i < M; ++i) {
+        s[i] = std::sin(M_PI * a_[i]);
+        if (varying_[i]) {
+            mu0_ += qags([&](double t) { return a_of(i, t); }, ends[i], ends[i + 1], workspace_.get());
+            mu1_ += qags([&](double t) { return a_of(i, t) * t; }, ends[i], ends[i + 1], workspace_.get());
+        } else {
+            mu0_ += a_[i] * (ends[i + 1] - ends[i]);
+            mu1_ += a_[i] * 0.5 * (ends[i + 1] - ends[i]) * (ends[i + 1] + ends[i]);
+        }
+    }
+    std::vector<double> minus(M + 1);
+    for (std::size_t j = 0; j <= M; ++j) minus[j] = -e[j];
+    if (!any) {
+        weight_ = {ends, e, s, {}};
+        dual_ = {std::move(ends), std::move(minus), std::move(s), {}};
+        return;
+    }
+    // a = a_pc + a_c: a_pc takes a's jumps, a_c continuous with a_c(-1) = 0.
+    a_pc_.resize(M);
+    a_pc_[0] = a_[0];
+    for (std::size_t i = 1; i < M; ++i) a_pc_[i] = a_pc_[i - 1] + (a_[i] - right[i - 1]);
+    a_c_right_ = right[M - 1] - a_pc_[M - 1];
+    const std::vector<double> ones(M, 1.0);
+    weight_ = {ends, e, ones, [this](double x) { return std::sin(M_PI * a_at(x)) * m_of(x); }};
+    dual_ = {std::move(ends), std::move(minus), ones, [this](double x) { return std::sin(M_PI * a_at(x)) / m_of(x); }};
+}
+
+double variable_k_weight::k_at(double x) const {
+    const int i = weight_.zone_of(x);
+    return varying_[i] ? varying_[i](x) : k_[i];
+}
+
+// I_c's panels are halved towards the zone's ends to 2^-4 only: where k varies by 8(x)'s blend, a_c - a_c(end) ~ d^{9/2}
+// there (Theta_3' ~ (1 - t^2)^{5/2}), which 20-point Gauss-Legendre integrates to 20^-11 on a panel touching it.
+constexpr int end_grading = 4;
+
+double variable_k_weight::m_of(double x) const {
+    // I_c(x) = int (a_c(t) - a_c(x))/(t - x) dt zone by zone: closed form where k is constant (a_c constant there),
+    // QAGS where it varies (bounded integrand; split at x inside its zone).
+    const std::vector<double>& ends = weight_.ends;
+    const double ax = a_c(x);
+    double I = 0.0;
+    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+        const double l = ends[i], r = ends[i + 1];
+        if (!varying_[i]) {
+            const double A = a_[i] - a_pc_[i];
+            if (A != ax && x != l && x != r) I += (A - ax) * std::log(std::fabs((r - x) / (l - x)));
+            continue;
+        }
+        const std::function<double(double)> f = [&](double t) { return t == x ? 0.0 : (a_at(t) - a_pc_[i] - ax) / (t - x); };
+        if (x > l && x < r) {
+            // Analytic at t = x: split there, graded only as at the zone's ends (no `near`).
+            const double none = std::numeric_limits<double>::quiet_NaN();
+            I += graded(f, l, x, none, r - l, legendre_, end_grading) + graded(f, x, r, none, r - l, legendre_, end_grading);
+        } else
+            I += graded(f, l, r, x, r - l, legendre_, end_grading);
+    }
+    return std::pow(1.0 - x, ax - a_c_right_) * std::pow(1.0 + x, -ax) * std::exp(I);
+}
+
+double variable_k_weight::mass() const { return M_PI * (mu0_ + mu1_ - 0.5 * mu0_ * mu0_); }
+
+double variable_k_weight::hilbert_of_weight(double x) const { return k_at(x) * weight_(x) - (x + 1.0 - mu0_); }
+
+variable_k_collocation::variable_k_collocation(const variable_k_weight& weight, int n)
+    : weight_(weight), n_(n), recurrence_(recurrence_of(weight.weight(), std::max(n, 1))) {
+    if (n < 1) throw numerical_error("variable-k collocation needs at least one node");
+    // The discretisation against the closed-form masses (8(z)): a panel left unresolved would show here first.
+    const double mass = weight.mass();
+    if (!(std::fabs(recurrence_.beta[0] - mass) <= 1e-12 * mass))
+        throw numerical_error("variable-k weight: the discretised mass " + std::to_string(recurrence_.beta[0]) +
+                              " misses the closed form " + std::to_string(mass));
+    const orthogonal_recurrence dual = recurrence_of(weight.dual(), n + 1);
+    if (!(std::fabs(dual.beta[0] - M_PI) <= 1e-12 * M_PI))
+        throw numerical_error("variable-k weight: the dual weight's discretised mass misses pi");
+    rule_ = gauss_rule_of(recurrence_, n);
+    points_ = gauss_rule_of(dual, n + 1).nodes;
+    for (double x : points_) {
+        double sum = 0.0;
+        for (int j = 0; j < n; ++j) sum += rule_.weights[j] / (rule_.nodes[j] - x);
+        defect_ = std::max(defect_, std::fabs(-(x + 1.0 - weight.mu0()) - M_1_PI * sum));
+    }
+}
+
+void variable_k_collocation::assemble(gsl_matrix* m) const {
+    gsl_matrix_set_zero(m);
+    for (int i = 0; i <= n_; ++i) {
+        const double x = points_[i];
+        for (int j = 0; j < n_; ++j) gsl_matrix_set(m, i, j, M_1_PI * rule_.weights[j] / (rule_.nodes[j] - x));
+        gsl_matrix_set(m, i, n_, -1.0);
+    }
+}
+
+variable_k_collocation::solution variable_k_collocation::solve(const std::vector<double>& g) {
+    if (static_cast<int>(g.size()) != n_ + 1)
+        throw numerical_error("variable-k collocation: the right side needs one value per collocation point");
+    const char* context = "variable-k collocation";
+    if (!plain_) plain_ = std::make_unique<dense_system>(n_ + 1);
+    const bool fresh = !plain_->holds_factors();
+    if (fresh) assemble(plain_->matrix());
+    for (int i = 0; i <= n_; ++i) gsl_vector_set(plain_->rhs(), i, g[i]);
+    const gsl_vector* x = fresh ? plain_->solve(context) : plain_->solve_factorised(context);
+    solution s;
+    s.psi.assign(x->data, x->data + n_);
+    s.xi = gsl_vector_get(x, n_);
+    return s;
+}
+
+variable_k_collocation::solution variable_k_collocation::solve_loaded(const std::vector<double>& g,
+                                                                      const std::vector<double>& h, double load) {
+    if (static_cast<int>(g.size()) != n_ + 1 || static_cast<int>(h.size()) != n_ + 1)
+        throw numerical_error("variable-k collocation: the right side needs one value per collocation point");
+    const char* context = "variable-k collocation with its load";
+    if (!loaded_) loaded_ = std::make_unique<dense_system>(n_ + 2);
+    const bool fresh = !loaded_->holds_factors() || h != loaded_h_;
+    if (fresh) {
+        gsl_matrix* m = loaded_->matrix();
+        const matrix_ptr plain = make_matrix(n_ + 1, n_ + 1);
+        assemble(plain.get());
+        gsl_matrix_set_zero(m);
+        for (int i = 0; i <= n_; ++i) {
+            for (int j = 0; j <= n_; ++j) gsl_matrix_set(m, i, j, gsl_matrix_get(plain.get(), i, j));
+            gsl_matrix_set(m, i, n_ + 1, -h[i]);
+        }
+        for (int j = 0; j < n_; ++j) gsl_matrix_set(m, n_ + 1, j, rule_.weights[j]);
+        loaded_h_ = h;
+    }
+    for (int i = 0; i <= n_; ++i) gsl_vector_set(loaded_->rhs(), i, g[i]);
+    gsl_vector_set(loaded_->rhs(), n_ + 1, load);
+    const gsl_vector* x = fresh ? loaded_->solve(context) : loaded_->solve_factorised(context);
+    solution s;
+    s.psi.assign(x->data, x->data + n_);
+    s.xi = gsl_vector_get(x, n_);
+    s.lambda = gsl_vector_get(x, n_ + 1);
+    return s;
+}
+
+double variable_k_collocation::interpolate(const std::vector<double>& psi, double x) const {
+    // c_j = sum_k W_k psi_k p_j(t_k) (exact: degree <= 2n - 2), psi(x) = sum_j c_j p_j(x), p_j orthonormal.
+    const orthogonal_recurrence& r = recurrence_;
+    auto values = [&](double t, std::vector<double>& p) {
+        p.resize(n_);
+        p[0] = 1.0 / std::sqrt(r.beta[0]);
+        if (n_ > 1) p[1] = (t - r.alpha[0]) * p[0] / std::sqrt(r.beta[1]);
+        for (int j = 1; j + 1 < n_; ++j)
+            p[j + 1] = ((t - r.alpha[j]) * p[j] - std::sqrt(r.beta[j]) * p[j - 1]) / std::sqrt(r.beta[j + 1]);
+    };
+    std::vector<double> c(n_, 0.0), p;
+    for (int k = 0; k < n_; ++k) {
+        values(rule_.nodes[k], p);
+        for (int j = 0; j < n_; ++j) c[j] += rule_.weights[k] * psi[k] * p[j];
+    }
+    values(x, p);
+    double s = 0.0;
+    for (int j = 0; j < n_; ++j) s += c[j] * p[j];
+    return s;
+}
+
+double variable_k_collocation::hilbert(const std::vector<double>& psi, double x) const {
+    double sum = 0.0, plain = 0.0;
+    for (int j = 0; j < n_; ++j) {
+        const double d = rule_.nodes[j] - x;
+        if (d == 0.0) throw numerical_error("variable-k collocation: H asked at a node");
+        sum += rule_.weights[j] * psi[j] / d;
+        plain += rule_.weights[j] / d;
+    }
+    // (H - k)[w psi](x) = (1/pi) sum W_j psi_j/(t_j - x) + psi(x) D(x), D = (H - k)[w](x) - (1/pi) sum W_j/(t_j - x).
+    const double px = interpolate(psi, x);
+    const double D = -(x + 1.0 - weight_.mu0()) - M_1_PI * plain;
+    return M_1_PI * sum + px * D + weight_.k_at(x) * weight_(x) * px;
+}
+
+double variable_k_collocation::load(const std::vector<double>& psi) const {
+    double s = 0.0;
+    for (int j = 0; j < n_; ++j) s += rule_.weights[j] * psi[j];
+    return s;
+}
+
+}  // namespace roughroll
