@@ -64,7 +64,8 @@ gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n);
 // "A varying k"): there a = a_pc + a_c, a_pc piecewise constant with a's jumps, a_c continuous with a_c(-1) = 0, and
 //   w = (1 - x)^{a(1)} (1 + x)^{1 - a(-1)} prod_{0<j<M} |x - x_j|^{a(x_j-) - a(x_j+)} m(x),
 //   m = (1 - x)^{a_c(x) - a_c(1)} (1 + x)^{-a_c(x)} exp(I_c(x)),  I_c(x) = int (a_c(t) - a_c(x))/(t - x) dt  (bounded;
-//   closed form on the zones of constant k, graded Gauss-Legendre panels where k varies).
+//   closed form on the zones of constant k, graded Gauss-Legendre panels where k varies; interpolated zone by zone
+//   at Chebyshev points, checked against the direct value between them).
 class variable_k_weight {
 public:
     // ends: x_0 = -1 < x_1 < ... < x_M = 1; k: M finite values.
@@ -100,6 +101,13 @@ private:
     double mu0_ = 0.0, mu1_ = 0.0;
     double a_c(double x) const { return a_at(x) - a_pc_[weight_.zone_of(x)]; }
     double m_of(double x) const;  // m(x) above
+    double i_c_direct(double x) const;  // I_c(x) by its quadrature
+    struct zone_table {                 // I_c on a zone: Chebyshev points of the first kind, barycentric
+        std::vector<double> x, f, b;
+        double operator()(double at) const;
+    };
+    std::vector<zone_table> tables_;  // empty where the direct evaluation is kept
+    void tabulate();
     integration_workspace_ptr workspace_;  // QAGS's, for mu_0 and mu_1 where k varies (not thread safe)
     gauss_jacobi legendre_;                // the panels' rule of I_c
 
