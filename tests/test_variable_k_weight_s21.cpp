@@ -314,4 +314,28 @@ TEST(VariableKWeight, ContinuousBlendedKOnFiveZones) {
                     std::fabs(s.xi - xi_true), std::fabs(c.load(s.psi) - load_true), c.point_defect());
     }
     EXPECT_LT(last, 1e-12);
+    // The control: the edges' weight w_N = (1 - x)^a_E (1 + x)^(1 - a_E) with k(x) taken at its points (8(y)'s
+    // collocation; what a fixed point of 8(x)'s remainder on w_N converges to, without the plateau): u/w_N carries the
+    // blend's ramps, which the polynomial follows only algebraically.
+    const int n = 32;
+    const double aE = w.exponents().back();
+    const jacobi_cauchy_collocation jc(n, aE, 1.0 - aE);
+    gsl_matrix* A = gsl_matrix_calloc(n + 1, n + 1);
+    gsl_vector* F = gsl_vector_alloc(n + 1);
+    std::vector<double> kx(n + 1);
+    for (int m = 0; m <= n; ++m) kx[m] = w.k_at(jc.collocation[m]);
+    jc.add_to(A, kx);
+    for (int m = 0; m <= n; ++m) {
+        const double x = jc.collocation[m];
+        gsl_matrix_set(A, m, n, -1.0);
+        gsl_vector_set(F, m, hilbert_by_quadpack(w.weight(), chi, x) - kx[m] * w(x) * chi(x) - xi_true);
+    }
+    const std::vector<double> r = lu_solved(A, F);
+    double control_load = 0.0;
+    for (int j = 0; j < n; ++j) control_load += jc.rule.weights[j] * r[j];
+    std::printf("  control on w_N, n = 32: xi %.2e, load %.2e\n", std::fabs(r[n] - xi_true),
+                std::fabs(control_load - load_true));
+    EXPECT_GT(std::fabs(control_load - load_true), 1e-9);  // the control fails
+    gsl_vector_free(F);
+    gsl_matrix_free(A);
 }
