@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The weight of (H - k(x)) with a piecewise constant k, its Gauss rule and its exact collocation
+// The weight of (H - k(x)) with a piecewise constant or varying k, its Gauss rule and its exact collocation
 // (docs/formulation.md 8(z)). H[g](x) = (1/pi) PV int g(t) dt/(t - x) on [-1, 1].
 //
 // Zones -1 = x_0 < x_1 < ... < x_M = 1, k = k_i on (x_{i-1}, x_i), k_i = cot(pi a_i), 0 < a_i < 1. With
@@ -132,7 +132,8 @@ public:
     const gauss_rule& rule() const { return rule_; }
     const std::vector<double>& points() const { return points_; }  // n + 1, ascending
     const orthogonal_recurrence& recurrence() const { return recurrence_; }
-    // max_m |D(x_m)|, D(x) = (H - k)[w_k](x) - (1/pi) sum_j W_j/(t_j - x): zero at the points in exact arithmetic (8(z)).
+    // max_m |D(x_m)|, D(x) = (H - k)[w_k](x) - (1/pi) sum_j W_j/(t_j - x): zero at the points in exact arithmetic (8(z));
+    // the constructor refuses (numerical_error) above 1e-9 of max(1, max_m |x_m + 1 - mu_0|).
     double point_defect() const { return defect_; }
 
     struct solution {
