@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -32,12 +33,14 @@ namespace roughroll {
 
 // A weight c_i m(x) prod_j |x - x_j|^{e_j} on zone i of [-1, 1]: e_j > -1, c_i > 0, m > 0 continuous and analytic
 // inside each zone (empty: m = 1). Where m is set its zone ends are where it may be only finitely smooth: the panels of
-// the discretisation are graded towards them (to 2^-16 of the zone).
+// the discretisation are graded towards them (to 2^-16 of the zone), towards every end, or only towards the ends
+// flagged in `rough` (8(z), "The cost": m is analytic at an end both of whose zones have a constant k).
 struct piecewise_power_weight {
     std::vector<double> ends;       // x_0 = -1 < ... < x_M = 1
     std::vector<double> exponents;  // e_0 .. e_M
     std::vector<double> factors;    // c_1 .. c_M (index i - 1)
     std::function<double(double)> smooth;
+    std::vector<char> rough;        // empty, or one flag per end: m finitely smooth there (graded)
 
     double operator()(double x) const;  // 0 outside [-1, 1]; at an end x_j with e_j != 0: its limit (0 or inf)
     int zone_of(double x) const;        // 0 .. M - 1, the zone holding x (an interior end: the zone to its right)
@@ -49,10 +52,19 @@ struct orthogonal_recurrence {
 };
 
 // alpha_0 .. alpha_{count-1}, beta_0 .. beta_{count-1} of a piecewise power weight, by the Stieltjes procedure on its
-// discretisation by Gauss-Jacobi panels of count + 24 points, each panel at most as long as its distance from every zone
-// end that is not one of its own ends (the other factors are analytic there, within a Bernstein ellipse of parameter
-// above 5.8). The inner products of degree <= 2 count - 1 are then those of the weight to rounding.
-orthogonal_recurrence recurrence_of(const piecewise_power_weight& w, int count);
+// discretisation by Gauss-Jacobi panels, each panel at most as long as its distance from every zone end that is not
+// one of its own ends (the other factors are analytic there, within a Bernstein ellipse of parameter above 5.8). The
+// inner products of degree <= 2 count - 1 are then those of the weight to rounding. `economical` (8(z), "The cost"):
+// a panel [u, v] gets 24 + ceil(2 count (acos u - acos v)/pi) points (a polynomial of degree 2 count - 1 turns
+// through that degree times the panel's Chebyshev angle there), rounded up to a multiple of 8, at most count + 24, and m is
+// graded only towards the `rough` ends; `dense`: count + 24 points on every panel and m graded towards every zone end
+// (the construction of session 21, kept as the reference of tests/test_variable_k_weight_s21.cpp).
+enum class discretisation { economical, dense };
+orthogonal_recurrence recurrence_of(const piecewise_power_weight& w, int count,
+                                    discretisation how = discretisation::economical);
+// The number of discretisation points recurrence_of would use (the cost's measure; bench/variable_k_weight_cost.cpp).
+std::size_t discretisation_size(const piecewise_power_weight& w, int count,
+                                discretisation how = discretisation::economical);
 
 // The n-point Gauss rule of a recurrence with at least n terms (Golub-Welsch by implicit QL, O(n^2)): nodes ascending.
 struct gauss_rule {
@@ -102,12 +114,18 @@ private:
     double a_c(double x) const { return a_at(x) - a_pc_[weight_.zone_of(x)]; }
     double m_of(double x) const;  // m(x) above
     double i_c_direct(double x) const;  // I_c(x) by its quadrature
+    struct zone_rule {                  // where k varies: fixed graded Gauss-Legendre panels, a_c at their nodes
+        std::vector<double> u, v;       // the panels
+        std::vector<double> t, w, a;    // nodes, weights, a_c(t) (20 per panel)
+    };
+    std::vector<zone_rule> rules_;      // per zone, empty where k is constant
     struct zone_table {                 // I_c on a zone: Chebyshev points of the first kind, barycentric
         std::vector<double> x, f, b;
         double operator()(double at) const;
     };
     std::vector<zone_table> tables_;  // empty where the direct evaluation is kept
     void tabulate();
+    void build_rules();
     integration_workspace_ptr workspace_;  // QAGS's, for mu_0 and mu_1 where k varies (not thread safe)
     gauss_jacobi legendre_;                // the panels' rule of I_c
 
@@ -126,7 +144,7 @@ public:
 class variable_k_collocation {
 public:
     // Keeps a reference to `weight`, which must outlive it.
-    variable_k_collocation(const variable_k_weight& weight, int n);
+    variable_k_collocation(const variable_k_weight& weight, int n, discretisation how = discretisation::economical);
 
     int n() const { return n_; }
     const gauss_rule& rule() const { return rule_; }
