@@ -160,9 +160,29 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s
 // pressure_kinks::add_layers). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
 // to carry) and rough rollers' five zones (measured in 8(o): free rolling of the rough pair cost 2.6 to 3.3 times the
 // CPU with the kinks, and its levels' changes at n = 64, 128 were larger, not smaller).
-std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, const gauss_chebyshev& rule, double beta_d,
-                                               const kernel& k1, const kernel& k2,
-                                               const normal_solution& source_normal, double f, bool plateau) {
+// The source of a step's kinks: the iterate whose point s gives q (its stick zones' psi) and whose pressure p the
+// blends' kinks and the plateau read (the same iterate as beta_D p1^(k-1), 8(l) step 0), with beta_D and f.
+struct step_source {
+    const tangential_solution& s;
+    const normal_solution& normal;
+    double beta_d, f;
+};
+
+// A stick zone whose q the kinks carry: strictly inside (-1, 1), with its series.
+bool carries_q(const tangential_solution& z) {
+    return z.c0() > z.start() && z.start() > -1.0 && z.c0() < 1.0 && !z.psi_b.empty();
+}
+
+// The blend's kinks 2 f p (Theta - Theta_3) of the stick zone [start, start + 2 rho] at t, with the sign of its rise
+// (8(r)), p the source's pressure.
+double blend_part(const step_source& from, double start, double rho, double rise, double t) {
+    return rise * 2.0 * from.f * from.normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
+}
+
+std::shared_ptr<const pressure_kinks> kinks_of(const step_source& from, const gauss_chebyshev& rule, const kernel& k1,
+                                               const kernel& k2, bool plateau) {
+    const tangential_solution& s = from.s;
+    const double beta_d = from.beta_d, f = from.f;
     const bool smooth = k1.empty() && k2.empty();
     if (!smooth && s.layout.stick_zones() == 2) return nullptr;
     const auto layered = [&](std::shared_ptr<pressure_kinks> k) {
@@ -170,18 +190,14 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
         return k;
     };
     // The blend's kinks of the stick zone [start, c0], with the sign of its rise (8(r)).
-    const auto blend_of = [&source_normal, f](double start, double c0, double rise) {
+    const auto blend_of = [&from](double start, double c0, double rise) {
         const double rho = 0.5 * (c0 - start);
-        return std::function<double(double)>([&source_normal, f, start, rho, rise](double t) {
-            return rise * 2.0 * f * source_normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
-        });
-    };
-    const auto inside = [](const tangential_solution& z) {
-        return z.c0() > z.start() && z.start() > -1.0 && z.c0() < 1.0 && !z.psi_b.empty();
+        return std::function<double(double)>(
+            [&from, start, rho, rise](double t) { return blend_part(from, start, rho, rise, t); });
     };
     if (s.layout.stick_zones() == 2 && s.five) {
         const five_zone_solution& v = *s.five;
-        if (!inside(v.zone1) || !inside(v.zone2)) return nullptr;
+        if (!carries_q(v.zone1) || !carries_q(v.zone2)) return nullptr;
         auto k = std::make_shared<pressure_kinks>();
         k->add_zone(rule, beta_d, v.sign, v.zone1.start(), v.zone1.c0(), v.zone1.psi_b,
                     blend_of(v.zone1.start(), v.zone1.c0(), 1.0));
@@ -191,16 +207,14 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
         // "The step carried across thin stick zones"): pbar through p/sqrt(1 - r^2) at the zones' midpoints; only
         // where `plateau` (carries_plateau) says so.
         if (plateau && v.zone1.c0() <= v.zone2.start()) {
-            const auto h = [&source_normal](double r) {
-                return source_normal.pressure(r) / std::sqrt((1.0 - r) * (1.0 + r));
-            };
+            const auto h = [&from](double r) { return from.normal.pressure(r) / std::sqrt((1.0 - r) * (1.0 + r)); };
             k->add_plateau(beta_d, v.sign, f,
                            blend_plateau(v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()),
                            h(0.5 * (v.zone1.start() + v.zone1.c0())), h(0.5 * (v.zone2.start() + v.zone2.c0())));
         }
         return k;
     }
-    if (s.layout.stick_zones() != 1 || !inside(s)) return nullptr;
+    if (s.layout.stick_zones() != 1 || !carries_q(s)) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     // The blended zone's right side 2 sign f p Theta (8(g)) has Theta's (1 +- t)^(3/2) kinks, which p's U-series
     // cannot carry and the entry condition weighs by (1 + t)^(-3/2) (order 1 at the entry): its part
@@ -214,9 +228,10 @@ std::shared_ptr<const pressure_kinks> kinks_of(const tangential_solution& s, con
 // (H + k_E)^-1 of -beta_D q, from the source's stick zone (on its own weight: Jacobi from 8(v), else the square root).
 // Null elsewhere (the old path of kinks_of). `rules_of`: the previous step's kinks, whose zone recurrences are reused;
 // `rules`: the solve's Gauss-Jacobi rules, shared with the tangential solvers' Jacobi zones.
-std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, int n, double beta_d, bool smooth,
-                                                  double f, const pressure_kinks* rules_of, jacobi_rule_set& rules,
-                                                  const normal_solution& source_normal, bool five) {
+std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n, bool smooth,
+                                                  const pressure_kinks* rules_of, jacobi_rule_set& rules, bool five) {
+    const tangential_solution& s = from.s;
+    const double beta_d = from.beta_d, f = from.f;
     if (!smooth || s.layout.layers_neglected()) return nullptr;
     // 8(x): five zones (slip-, stick, slip+, stick, slip-: the edges slip one way, sigma_E = -sign, p1 = sign (f p S + q),
     // S = -1 at both edges) on the same weight, k_E = sigma_E beta_D f, p_q summed over both stick zones, each on the
@@ -227,10 +242,9 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
     if (s.layout.stick_zones() == 2) {
         if (!five || !s.five) return nullptr;
         const five_zone_solution& v = *s.five;
-        const auto inside = [](const tangential_solution& z) {
-            return z.c0() > z.start() && z.start() > -1.0 && z.c0() < 1.0 && !z.psi_b.empty() && !(z.weight_a > 0.0);
-        };
-        if (!inside(v.zone1) || !inside(v.zone2)) return nullptr;
+        // Each zone's q on the square-root weight (its U-series below), as the five zones' systems solve it.
+        for (const tangential_solution* z : {&v.zone1, &v.zone2})
+            if (!carries_q(*z) || z->weight_a > 0.0) return nullptr;
         auto k = std::make_shared<pressure_kinks>();
         k->set_weight(-v.sign * beta_d * f);
         for (const auto& [z, rise] : {std::pair<const tangential_solution*, double>{&v.zone1, 1.0}, {&v.zone2, -1.0}}) {
@@ -238,10 +252,7 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
             const double start = z->start(), rho = 0.5 * (z->c0() - z->start());
             k->add_weighted_zone(
                 n, beta_d, v.sign, z->start(), z->c0(), 0.5,
-                [c, &source_normal, f, start, rho, rise](double t) {
-                    return u_series(c, t) +
-                           rise * 2.0 * f * source_normal.pressure(start + rho * (t + 1.0)) * blend_kinks(t);
-                },
+                [c, &from, start, rho, rise](double t) { return u_series(c, t) + blend_part(from, start, rho, rise, t); },
                 rules_of);
         }
         // The plateau of thin zones (8(p)) on the weight, at every weighted five-zone point: pbar = w_N P, P the cubic
@@ -250,9 +261,7 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
         // O(1e-6 rho^2 g''')) only moves P off the interpolant by that much, not the answer.
         if (v.zone1.c0() <= v.zone2.start()) {
             const double a_n = k->weight_a();
-            const auto g = [&source_normal, a_n](double r) {
-                return source_normal.pressure(r) / jacobi_weight(a_n, 1.0 - a_n, r);
-            };
+            const auto g = [&from, a_n](double r) { return from.normal.pressure(r) / jacobi_weight(a_n, 1.0 - a_n, r); };
             const auto slope_at = [&g](double m, double rho) {
                 const double d = 1e-3 * rho;
                 return (g(m + d) - g(m - d)) / (2.0 * d);
@@ -266,8 +275,7 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
         }
         return k;
     }
-    if (s.layout.stick_zones() != 1 || s.layout.opposite()) return nullptr;
-    if (!(s.c0() > s.start() && s.start() > -1.0 && s.c0() < 1.0 && !s.psi_b.empty())) return nullptr;
+    if (s.layout.stick_zones() != 1 || s.layout.opposite() || !carries_q(s)) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     k->set_weight(s.sign * beta_d * f);
     if (s.weight_a > 0.0) {
@@ -288,6 +296,36 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const tangential_solution& s, 
 const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
                                                 const tangential_solution& johnson_point, bool checked,
                                                 const full_coupling* coarser) {
+    // The plateau's rule (carries_plateau), once for the whole alternation: on Johnson's five zones where it has them,
+    // else on the first step's source (the coarser level's five zones; three zones carry none). Every step keeps its
+    // source's structure (`step`), so one decision covers them all; asked of each step's source, a stick zone near
+    // the threshold could switch the plateau on and off between steps, and the fixed point would be of neither rule.
+    // So is the weighted path's for five zones (weighs_five_zones, 8(x)).
+    const iterate* start = coarser != nullptr && coarser->current_ && coarser->current_->s.Q == johnson_point.Q
+                               ? coarser->current_.get()
+                               : nullptr;
+    const tangential_solution& decides =
+        johnson_point.layout.stick_zones() == 2 || !start ? johnson_point : start->s;
+    const bool plateau = carries_plateau(decides), five = weighs_five_zones(decides);
+    if (!five) return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, false);
+    // 8(x), "The fallback": an alternation on the weight w_N that loses its five zones (a step's Newton finds them
+    // no more, or holds in a cycle: free rolling at f = 0.2, n = 1000), fails its checks or does not converge is
+    // solved again on the old path (kinks_of), which answers or refuses as the program before the weight did.
+    // What the checkpoint throws ends the solve (contact::set_checkpoint).
+    halted_ = false;
+    try {
+        return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, true);
+    } catch (const resolution_error&) {
+        if (halted_) throw;
+    } catch (const numerical_error&) {
+        if (halted_) throw;
+    }
+    return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, false);
+}
+
+const tangential_solution& full_coupling::alternate(const normal_solution& johnson, dissimilar_zones& johnson_zones,
+                                                    const tangential_solution& johnson_point, bool checked,
+                                                    const full_coupling* coarser, bool plateau, bool five) {
     const double Q = johnson_point.Q;
     current_.reset();
     previous_.reset();
@@ -308,13 +346,6 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     // load, the same four unknowns, its ends this level's first step's start), else differenced afresh.
     jacobian_ = newton_jacobian{};
     if (start) jacobian_.J = coarser->jacobian_.J;
-    // The plateau's rule (carries_plateau), once for the whole alternation: on Johnson's five zones where it has them,
-    // else on the first step's source (the coarser level's five zones; three zones carry none). Every step keeps its
-    // source's structure (`step`), so one decision covers them all; asked of each step's source, a stick zone near
-    // the threshold could switch the plateau on and off between steps, and the fixed point would be of neither rule.
-    // So is the weighted path's for five zones (weighs_five_zones, 8(x)).
-    const tangential_solution& decides = johnson_point.layout.stick_zones() == 2 ? johnson_point : source;
-    const bool plateau = carries_plateau(decides), five = weighs_five_zones(decides);
     double previous_change = 0.0;
     std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
@@ -323,16 +354,21 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     // kinks and tangential solver (the same n and exponent), instead of once by each.
     const auto jacobi_rules = std::make_shared<jacobi_rule_set>();
     for (int k = 1; k <= coupling_max_iterations; ++k) {
-        if (checkpoint_) checkpoint_();
+        if (checkpoint_) {
+            halted_ = true;  // what it throws ends the solve: no fallback (solve)
+            checkpoint_();
+            halted_ = false;
+        }
         const double beta = beta_d_;
         std::function<double(double)> coupled = [source_zones, source, beta](double r) {
             return beta * source_zones->traction(source, r);
         };
         // 8(l) step 0: the kinks of p^(k) from q of p1^(k-1), the same iterate as beta_D p1^(k-1).
         const normal_solution& source_normal = current_ ? current_->normal : start ? start->normal : johnson;
+        const step_source from{source, source_normal, beta, f_};
         std::shared_ptr<pressure_kinks> weighted =
-            weighted_kinks_of(source, johnson.rule.n, beta, k1_.empty() && k2_.empty(), f_,
-                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules, source_normal, five);
+            weighted_kinks_of(from, johnson.rule.n, k1_.empty() && k2_.empty(),
+                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules, five);
         // The braked three zones (8(v), 8(w)) also put their stick zone on its Jacobi weight; five zones (8(x)) not.
         const bool braked = weighted && source.layout.stick_zones() == 1;
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
@@ -370,8 +406,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         };
         std::unique_ptr<iterate> next;
         try {
-            next = solve_step(weighted ? nullptr
-                                       : kinks_of(source, johnson.rule, beta, k1_, k2_, source_normal, f_, plateau));
+            next = solve_step(weighted ? nullptr : kinks_of(from, johnson.rule, k1_, k2_, plateau));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;

@@ -72,7 +72,8 @@ namespace {
 // int B eta^k, k = 0..4, in closed form: zone i gives rho_i int Theta(t) (m_i + rho_i t)^k dt, Theta = Theta_3 rising
 // (zone 1) or 1 - Theta_3 falling (zone 2), with int t^j Theta_3 on [-1, 1] = 1, 7/16, 1/3, 77/320, 1/5 (j = 0..4:
 // the even j from Theta_3's constant 1/2, the odd ones from arcsin(t)/pi + sqrt(1 - t^2) P(t), P of blend_plateau.hpp;
-// 77/320 by sympy, checked by QAGS in validation/test_five_zones_weighted_s20.cpp); 1 - Theta_3 gives 1/(j + 1)
+// 77/320 by sympy, checked by QAGS in validation/test_five_zones_weighted_s20.cpp, whose C and load fail with 77/320 + 1e-9
+// in its place: by 4e-13 to 3e-11 against 1e-13, 1e-12, session 21); 1 - Theta_3 gives 1/(j + 1)
 // for even j and the odd ones negated. The plateau (c1, s2) gives int eta^k exactly. blend_plateau::moment has k <= 2.
 std::array<double, 5> plateau_moments(const blend_plateau& b) {
     const auto zone = [](int k, double s, double c, double sign) {

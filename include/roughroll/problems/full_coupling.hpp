@@ -76,7 +76,8 @@ bool carries_plateau(const tangential_solution& s);
 // 8(x), "Landed"): where both stick zones are at least five_zone_spacings node spacings (as carries_plateau's) long.
 // A shorter one (Q/f = +0.75: the second zone [0.99920, 0.99953], 0.7 spacings, 4.7e-4 from the edge) holds a V-shaped
 // dip of p/w_N from p_q's one-sided terms that no polynomial pbar follows: the weighted path lost those five zones
-// at n = 128..512, where the old path (kinks_of, square-root weight) answers. Decided once per alternation, as the plateau.
+// at n = 128..512, where the old path (kinks_of, square-root weight) answers. Decided once per alternation, as the plateau;
+// an alternation on the weight that fails is solved again on the old path (full_coupling::solve, 8(x) "The fallback").
 constexpr double five_zone_spacings = 2.0;
 bool weighs_five_zones(const tangential_solution& s);
 
@@ -113,6 +114,10 @@ public:
 
 private:
     struct iterate;
+    // One alternation on one path: `five` the five zones on the weight w_N (8(x)), `plateau` carries_plateau's.
+    const tangential_solution& alternate(const normal_solution& johnson, dissimilar_zones& johnson_zones,
+                                         const tangential_solution& johnson_point, bool checked,
+                                         const full_coupling* coarser, bool plateau, bool five);
     kernel k1_, k2_;
     double f_, beta_d_;
     normal_solver normal_solver_;
@@ -124,6 +129,7 @@ private:
     coupling_summary summary_;
     std::function<void()> checkpoint_;
     coupling_stop stop_ = coupling_stop::contraction;
+    bool halted_ = false;  // the checkpoint threw (no fallback)
 };
 
 }  // namespace roughroll
