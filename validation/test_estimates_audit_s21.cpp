@@ -44,10 +44,13 @@ nlohmann::json point(const std::string& arguments) {
     return nlohmann::json::parse(o.text);
 }
 
-// The default answer of `scene` at `load` (plus `settings`, e.g. a tolerance) against n = 1000 (product): one
-// comparison per estimate the answer prints; each asserted to bound its distance with the reference's estimate added.
-std::vector<comparison> audit(const std::string& scene, const std::string& load, const std::string& settings = "") {
-    const std::string path = std::string(ROUGHROLL_DATA) + "/" + scene;
+std::string data(const std::string& name) { return std::string(ROUGHROLL_DATA) + "/" + name; }
+
+// The default answer of the scene file `path` (`scene` in the lines printed) at `load` (plus `settings`, e.g. a
+// tolerance) against n = 1000 (product): one comparison per estimate the answer prints; each asserted to bound its
+// distance with the reference's estimate added.
+std::vector<comparison> audit(const std::string& scene, const std::string& path, const std::string& load,
+                              const std::string& settings = "") {
     const nlohmann::json a = point(path + " " + load + " " + settings);
     const nlohmann::json r = point(path + " " + load + " --method product --n 1000");
     std::vector<comparison> out;
@@ -63,7 +66,7 @@ std::vector<comparison> audit(const std::string& scene, const std::string& load,
         if (!er.contains(key)) continue;
         const comparison c{scene + " " + load + " " + settings, key, e[key].get<double>(),
                            std::fabs(value_of(a, key) - value_of(r, key)), er[key].get<double>()};
-        std::printf("%-48s n = %4d %-16s estimate %.3g distance %.3g (reference's estimate %.3g)\n", c.point.c_str(),
+        std::printf("%-40s n = %4d %-16s estimate %.3g distance %.3g (reference's estimate %.3g)\n", c.point.c_str(),
                     a["n"].get<int>(), key, c.estimate, c.distance, c.reference_estimate);
         EXPECT_LE(c.distance, c.estimate + c.reference_estimate) << c.point << " " << key;
         out.push_back(c);
@@ -82,8 +85,8 @@ std::vector<comparison> audit(const std::string& scene, const std::string& load,
 TEST(EstimatesAudit, FigTwoADefaultPointsWithinTheirEstimates) {
     std::vector<comparison> all;
     for (const char* load : {"--Q-over-f -0.99", "--Q-over-f -0.3", "--Q-over-f 0.05", "--Q-over-f 0.75"})
-        for (const auto& c : audit("fig2a-T0.5.toml", load, "--tolerance 1e-4")) all.push_back(c);
-    for (const auto& c : audit("fig2a-T0.5.toml", "--Q-over-f 0.5", "--tolerance 1e-8")) all.push_back(c);
+        for (const auto& c : audit("fig2a", data("fig2a-T0.5.toml"), load, "--tolerance 1e-4")) all.push_back(c);
+    for (const auto& c : audit("fig2a", data("fig2a-T0.5.toml"), "--Q-over-f 0.5", "--tolerance 1e-8")) all.push_back(c);
     EXPECT_EQ(all.size(), 25u);  // 5 loads x 5 quantities (no stick start: identical rollers)
     int caught = 0, told = 0;
     for (const auto& c : all) {
@@ -102,10 +105,34 @@ TEST(EstimatesAudit, FigTwoADefaultPointsWithinTheirEstimates) {
 // rolling at f = 0.05 and 0.2 (five zones), braked Q/f = -0.75 and driven +0.75, and the braked at --tolerance 1e-8.
 TEST(EstimatesAudit, JohnsonPairDefaultPointsWithinTheirEstimates) {
     std::size_t rows = 0;
-    rows += audit("aluminium-on-steel.toml", "--Q 0 --friction 0.05").size();
-    rows += audit("aluminium-on-steel.toml", "--Q 0 --friction 0.2").size();
-    rows += audit("aluminium-on-steel.toml", "--Q-over-f -0.75").size();
-    rows += audit("aluminium-on-steel.toml", "--Q-over-f 0.75").size();
-    rows += audit("aluminium-on-steel.toml", "--Q-over-f -0.75", "--tolerance 1e-8").size();
+    rows += audit("pair", data("aluminium-on-steel.toml"), "--Q 0 --friction 0.05").size();
+    rows += audit("pair", data("aluminium-on-steel.toml"), "--Q 0 --friction 0.2").size();
+    rows += audit("pair", data("aluminium-on-steel.toml"), "--Q-over-f -0.75").size();
+    rows += audit("pair", data("aluminium-on-steel.toml"), "--Q-over-f 0.75").size();
+    rows += audit("pair", data("aluminium-on-steel.toml"), "--Q-over-f -0.75", "--tolerance 1e-8").size();
     EXPECT_EQ(rows, 30u);
+}
+
+// The rough pair (data/aluminium-on-steel-rough.toml, Johnson's level: the ladder answers at n = 128) braked and driven
+// at Q/f = -+0.75: c0, the start and xi hold their estimates by factors 20 to 70 against a reference 100 times closer
+// (its xi 1e-12, its ends 2e-9 to 9e-9).
+TEST(EstimatesAudit, RoughPairDefaultPointsWithinTheirEstimates) {
+    std::size_t rows = 0;
+    rows += audit("rough pair", data("aluminium-on-steel-rough.toml"), "--Q-over-f -0.75").size();
+    rows += audit("rough pair", data("aluminium-on-steel-rough.toml"), "--Q-over-f 0.75").size();
+    EXPECT_EQ(rows, 12u);
+}
+
+// The smooth pair at full coupling (8(q)'s ladder): free rolling at f = 0.05 (answered at n = 128; its xi within 2.7
+// times its estimate, the reference's 5.8e-12 twenty times below the distance) and the driven Q/f = +0.75 (n = 256).
+// large_n: the free rolling's reference at n = 1000 takes about 16 s CPU.
+TEST(EstimatesAudit, FullCouplingDefaultPointsWithinTheirEstimates) {
+    const std::string full = changed_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml",
+                                           {{"coupling = \"johnson\"", "coupling = \"full\""}}, "roughroll-audit");
+    ASSERT_FALSE(full.empty());
+    std::size_t rows = 0;
+    rows += audit("full pair", full, "--Q 0 --friction 0.05").size();
+    rows += audit("full pair", full, "--Q-over-f 0.75").size();
+    std::remove(full.c_str());
+    EXPECT_EQ(rows, 12u);
 }
