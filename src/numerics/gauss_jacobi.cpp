@@ -69,6 +69,54 @@ inline recurrence_step recurrence_at(double a, double b, int j) {
     return {(s + 1.0) * (s + 2.0) * s * inv, (s + 1.0) * (a * a - b * b) * inv, 2.0 * (j + a) * (j + b) * (s + 2.0) * inv};
 }
 
+// The coefficients' two sources, the same bits (recurrence_at): a table of them, or each computed when needed.
+struct tabulated {
+    const jacobi_recurrence& table;
+    recurrence_step operator()(int j) const {
+        const std::size_t i = static_cast<std::size_t>(j);
+        return {table.A[i], table.B[i], table.C[i]};
+    }
+};
+struct computed {
+    double a, b;
+    recurrence_step operator()(int j) const { return recurrence_at(a, b, j); }
+};
+
+// P_0(x) .. P_{count-1}(x) into out by the recurrence with the coefficients of `step`.
+template <class Steps>
+void values_of(const Steps& step, double x, int count, double* out) {
+    if (count <= 0) return;
+    out[0] = 1.0;
+    if (count == 1) return;
+    const recurrence_step first = step(0);
+    out[1] = first.A * x + first.B;
+    for (int j = 1; j + 1 < count; ++j) {
+        const recurrence_step r = step(j);
+        out[j + 1] = (r.A * x + r.B) * out[j] - r.C * out[j - 1];
+    }
+}
+
+// sum_j c_j P_{j+shift}(x) (shift 0 or 1) by the recurrence with the coefficients of `step`: the one series routine
+// of every Jacobi sum (jacobi_series, jacobi_recurrence::series and series_shifted, jacobi_cauchy_outside's psi(x)).
+template <class Steps>
+double series_of(const Steps& step, const std::vector<double>& c, double x, int shift) {
+    if (c.empty()) return 0.0;
+    const recurrence_step first = step(0);
+    double prev = 1.0, cur = first.A * x + first.B;  // P_{k-1}, P_k
+    int k = 1;
+    double sum = c[0] * (shift == 0 ? prev : cur);  // c_0 * 1 is c_0, bit for bit
+    for (std::size_t j = 1; j < c.size(); ++j) {
+        for (; k < static_cast<int>(j) + shift; ++k) {
+            const recurrence_step r = step(k);
+            const double next = (r.A * x + r.B) * cur - r.C * prev;
+            prev = cur;
+            cur = next;
+        }
+        sum += c[j] * cur;
+    }
+    return sum;
+}
+
 }  // namespace
 
 jacobi_recurrence::jacobi_recurrence(double a_, double b_, int count) : a(a_), b(b_) {
@@ -84,65 +132,20 @@ jacobi_recurrence::jacobi_recurrence(double a_, double b_, int count) : a(a_), b
     }
 }
 
-void jacobi_recurrence::values(double x, int count, double* out) const {
-    if (count <= 0) return;
-    out[0] = 1.0;
-    if (count == 1) return;
-    out[1] = A[0] * x + B[0];
-    for (int j = 1; j + 1 < count; ++j) out[j + 1] = (A[j] * x + B[j]) * out[j] - C[j] * out[j - 1];
-}
+void jacobi_recurrence::values(double x, int count, double* out) const { values_of(tabulated{*this}, x, count, out); }
 
-void jacobi_values(double a, double b, double x, int count, double* out) {
-    if (count <= 0) return;
-    out[0] = 1.0;
-    if (count == 1) return;
-    const recurrence_step first = recurrence_at(a, b, 0);
-    out[1] = first.A * x + first.B;
-    for (int j = 1; j + 1 < count; ++j) {
-        const recurrence_step r = recurrence_at(a, b, j);
-        out[j + 1] = (r.A * x + r.B) * out[j] - r.C * out[j - 1];
-    }
-}
+void jacobi_values(double a, double b, double x, int count, double* out) { values_of(computed{a, b}, x, count, out); }
 
 double jacobi_series(const std::vector<double>& c, double a, double b, double x) {
-    // jacobi_recurrence::series without the table: the same steps, in the same order (no allocation).
-    if (c.empty()) return 0.0;
-    const recurrence_step first = recurrence_at(a, b, 0);
-    double prev = 1.0, cur = first.A * x + first.B, sum = c[0];
-    if (c.size() > 1) sum += c[1] * cur;
-    for (std::size_t j = 1; j + 1 < c.size(); ++j) {
-        const recurrence_step r = recurrence_at(a, b, static_cast<int>(j));
-        const double next = (r.A * x + r.B) * cur - r.C * prev;
-        prev = cur;
-        cur = next;
-        sum += c[j + 1] * cur;
-    }
-    return sum;
+    return series_of(computed{a, b}, c, x, 0);
 }
 
 double jacobi_recurrence::series(const std::vector<double>& c, double x) const {
-    if (c.empty()) return 0.0;
-    double prev = 1.0, cur = A[0] * x + B[0], sum = c[0];
-    if (c.size() > 1) sum += c[1] * cur;
-    for (std::size_t j = 1; j + 1 < c.size(); ++j) {
-        const double next = (A[j] * x + B[j]) * cur - C[j] * prev;
-        prev = cur;
-        cur = next;
-        sum += c[j + 1] * cur;
-    }
-    return sum;
+    return series_of(tabulated{*this}, c, x, 0);
 }
 
 double jacobi_recurrence::series_shifted(const std::vector<double>& c, double x) const {
-    if (c.empty()) return 0.0;
-    double prev = 1.0, cur = A[0] * x + B[0], sum = c[0] * cur;
-    for (std::size_t j = 1; j < c.size(); ++j) {
-        const double next = (A[j] * x + B[j]) * cur - C[j] * prev;
-        prev = cur;
-        cur = next;
-        sum += c[j] * cur;
-    }
-    return sum;
+    return series_of(tabulated{*this}, c, x, 1);
 }
 
 std::vector<double> jacobi_coefficients(const gauss_jacobi& rule, const std::vector<double>& values) {
@@ -163,7 +166,7 @@ std::vector<double> jacobi_coefficients(const gauss_jacobi& rule, const std::vec
 
 double jacobi_cauchy_outside(const std::vector<double>& c, const gauss_jacobi& rule,
                              const std::vector<double>& psi_nodes, const gauss_jacobi& far,
-                             const std::vector<double>& psi_far, double x) {
+                             const std::vector<double>& psi_far, double x, const jacobi_recurrence* table) {
     // 8(v), "Off the zone". rho = |x| + sqrt(x^2 - 1) is the parameter of the Bernstein ellipse through x: the
     // M-point rule integrates psi/(tau - x) with an error of order rho^(-2M), below rounding where rho^(2M) > 1e17.
     const double ax = std::fabs(x);
@@ -178,7 +181,7 @@ double jacobi_cauchy_outside(const std::vector<double>& c, const gauss_jacobi& r
     // above the cut (X ~ x at infinity: -|x - 1|^a |x + 1|^b for x < -1), for a + b = 1 (8(v)). Here rho < e^(39/(2M)),
     // so |x| stays below about 1.2 and psi(x) below rho^n |c| (no cancellation worth the name in either part).
     const double a = rule.a, b = rule.b;
-    const double psi_x = jacobi_series(c, a, b, x);
+    const double psi_x = table ? series_of(tabulated{*table}, c, x, 0) : jacobi_series(c, a, b, x);  // the same bits
     double sum = 0.0;
     for (int k = 0; k < rule.n; ++k) sum += rule.weights[k] * (psi_nodes[k] - psi_x) / (rule.nodes[k] - x);
     const double X = std::copysign(std::pow(std::fabs(x - 1.0), a) * std::pow(std::fabs(x + 1.0), b), x);

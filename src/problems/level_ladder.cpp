@@ -87,7 +87,9 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
 
 level_ladder::level_ladder(const solver_options& options, const roughness& surfaces,
                            const std::function<std::unique_ptr<contact>(int n)>& make)
-    : level_ladder(options, surfaces, [make](int n, const std::shared_ptr<level_store>&) { return make(n); }) {}
+    : level_ladder(options, surfaces, [make](int n, const std::shared_ptr<level_store>&) { return make(n); }) {
+    shared_ = false;
+}
 
 bool level_ladder::answers(const contact& c, const tangential_solution& s,
                            const std::optional<error_estimate>& e) const {
@@ -316,14 +318,15 @@ std::optional<level_ladder::answer> level_ladder::below_first(double Q) {
     // their Jacobi weights (8(v), 8(w)), where every level change from n = 16 on is at rounding or far above the
     // distance from n = 1000 (the estimates bound it by factors 3 to 10^7: the braked pair Q/f = -0.75 and the strong
     // scene beta_D = 0.3, f = 0.2, Q/f = -0.75 at n = 16 .. 128, 8(q)'s table): such a point may answer at a rung below
-    // the first. The rung's own estimate decides, as at any rung; a point whose stick zone is not on its Jacobi weight
-    // (five zones near free rolling, a zone at an edge, gross sliding) is left to the rungs from the first, untouched
-    // (these rungs' levels are their own: spectral_levels_).
+    // the first. The rung's own estimate decides, as at any rung; a braked point whose stick zone is not on its Jacobi
+    // weight (five zones near free rolling, a zone at an edge, gross sliding) is left to the rungs from the first,
+    // untouched (these rungs' levels are their own: spectral_levels_). Free rolling and the driven side (Q beta_D >= 0)
+    // are five_zones_below_first's.
     if (flagged_final_ || !smooth_) return std::nullopt;
     const contact& first = at(rungs_.front());
     const dissimilar& m = first.materials();
-    if (m.coupling != coupling_level::full || !(Q * m.beta_d < 0.0) || !(std::fabs(Q) < first.friction()))
-        return std::nullopt;
+    if (m.coupling != coupling_level::full || !(std::fabs(Q) < first.friction())) return std::nullopt;
+    if (!(Q * m.beta_d < 0.0)) return shared_ ? five_zones_below_first(Q) : std::nullopt;
     for (const int n : spectral_rungs(how_)) {
         try {
             std::unique_ptr<contact>& c = built_[n];
@@ -341,6 +344,34 @@ std::optional<level_ladder::answer> level_ladder::below_first(double Q) {
         } catch (const numerical_error&) {
             break;
         }
+    }
+    return std::nullopt;
+}
+
+std::optional<level_ladder::answer> level_ladder::five_zones_below_first(double Q) {
+    // docs/formulation.md 8(q), "Rungs below the first": free rolling and the driven side (Q beta_D >= 0) of smooth
+    // rollers at full coupling. Their five zones on the pressure's weight (8(x)) converge fast enough that free rolling
+    // of the pair at f = 0.05 meets the default tolerance at n = 64 (stick start +- 2.4e-5, 7.7e-5 of 1 + s; its
+    // distance from n = 1000 7.6e-7): rung n_0/2 is tried, on the climb's own store (level_store), so that where it
+    // does not answer (the driven point, whose thin second stick zone needs n = 256) the climb's rung n_0 takes its
+    // levels n_0/4, n_0/2 as solved here and only level n_0/8 was added. Rung n_0/4 is not tried: free rolling fails
+    // (3.4) at n = 32 (8(r)), after levels 8 and 16. Tried only where the rungs share their levels (a factory of n
+    // alone shares none: there a rung that does not answer would cost its three levels). Only five zones answer here, with their checks holding and
+    // their estimate within the tolerance; any other structure is left to the climb. (A ladder that tried rung n_0/2
+    // for a braked load first keeps that contact, on its own store: right, only not shared.)
+    const int n = spectral_rungs(how_).back();
+    try {
+        contact& c = at(n);
+        tangential_solution s = c.point(Q);
+        if (s.layout.stick_zones() != 2 || !s.checks.hold()) return std::nullopt;
+        std::optional<error_estimate> e = c.estimate(s);
+        if (e && check(c, s, *e).ratio <= 1.0) return answer{std::move(s), std::move(e), n};
+    } catch (const beyond_method_error&) {
+        throw;
+    } catch (const resolution_error&) {
+        // The climb solves its rungs and refuses, where it does, with its own line; the levels made here that it
+        // asks for again are the store's, as a lower rung's would be.
+    } catch (const numerical_error&) {
     }
     return std::nullopt;
 }

@@ -221,23 +221,7 @@ double pressure_kinks::series_part(double r) const {
 }
 
 double pressure_kinks::cauchy_outside(const weighted_zone& z, double x) const {
-    // jacobi_cauchy_outside (8(v), "Off the zone") with the series summed by the tabulated recurrence.
-    const gauss_jacobi& rule = *z.rule;
-    const gauss_jacobi& far = *z.far;
-    const double ax = std::fabs(x);
-    const double rho = ax + std::sqrt((ax - 1.0) * (ax + 1.0));
-    if (2.0 * far.n * std::log(rho) > 39.0) {
-        double sum = 0.0;
-        for (int k = 0; k < far.n; ++k) sum += far.weights[k] * z.at_far[k] / (far.nodes[k] - x);
-        return M_1_PI * sum;
-    }
-    const double a = rule.a, b = rule.b;
-    const double psi_x = z.own->series(z.c, x);
-    double sum = 0.0;
-    for (int k = 0; k < rule.n; ++k) sum += rule.weights[k] * (z.at_nodes[k] - psi_x) / (rule.nodes[k] - x);
-    const double X = std::copysign(std::pow(std::fabs(x - 1.0), a) * std::pow(std::fabs(x + 1.0), b), x);
-    const double c0 = (X - x - 1.0 + 2.0 * a) / std::sin(M_PI * a);
-    return M_1_PI * sum + psi_x * c0;
+    return jacobi_cauchy_outside(z.c, *z.rule, z.at_nodes, *z.far, z.at_far, x, z.own.get());  // 8(v), "Off the zone"
 }
 
 double pressure_kinks::kink_part(double r) const {

@@ -82,9 +82,11 @@ std::vector<double> jacobi_coefficients(const gauss_jacobi& rule, const std::vec
 // (1/pi) int_{-1}^{1} w(tau) psi(tau)/(tau - x) d tau for |x| > 1, psi the series c on the rule's weight with
 // a + b = 1 (8(v), "Off the zone"), psi_nodes its values at the rule's nodes. `far` is a rule of the same weight
 // with more nodes (4 n), psi_far psi's values at its nodes, used where it is exact to rounding; nearer the zone
-// the polynomial part by the rule itself and psi(x) C_0(x) in closed form.
+// the polynomial part by the rule itself and psi(x) C_0(x) in closed form. `table`: the recurrence of the rule's
+// weight tabulated (jacobi_recurrence of a and b, at least c.size() terms), which sums psi(x) with the same bits as
+// without it, only faster (pressure_kinks keeps one per zone); null: each coefficient computed.
 double jacobi_cauchy_outside(const std::vector<double>& c, const gauss_jacobi& rule,
                              const std::vector<double>& psi_nodes, const gauss_jacobi& far,
-                             const std::vector<double>& psi_far, double x);
+                             const std::vector<double>& psi_far, double x, const jacobi_recurrence* table = nullptr);
 
 }  // namespace roughroll

@@ -89,7 +89,9 @@ public:
     // From the first rung (from = 0) a braked point at full coupling on smooth rollers first tries spectral_rungs(),
     // each answering only where its point's stick zone is on its Jacobi weight (8(v), 8(w): levels spectral), its
     // checks hold and its estimate is within the tolerance; those rungs share their levels with each other only, so
-    // that where none answers the climb from the first rung is the one without them, digit for digit.
+    // that where none answers the climb from the first rung is the one without them, digit for digit. Free rolling and
+    // the driven side (Q beta_D >= 0) first try spectral_rungs().back() on the climb's own store, answering there only
+    // with five zones (8(q), "Rungs below the first": five_zones_below_first).
     answer point(double Q, std::size_t from = 0);
     // The same for the point whose stick zone ends at c0 (contact::at_stick_end, a swept curve).
     answer at_stick_end(double c0, std::size_t from = 0);
@@ -126,6 +128,9 @@ private:
     std::optional<tolerance_check> before_point(contact& c, double Q, std::size_t i);
     // The point at Q from spectral_rungs(), where one answers it (point's comment); else nothing.
     std::optional<answer> below_first(double Q);
+    // below_first's free rolling and driven side (Q beta_D >= 0): rung spectral_rungs().back() on the climb's store,
+    // answering only with five zones.
+    std::optional<answer> five_zones_below_first(double Q);
 
     std::vector<int> rungs_;
     double tolerance_;
@@ -134,6 +139,7 @@ private:
     int order_;           // the levels' order p (order_of)
     method how_;          // the method (spectral_rungs)
     bool flagged_final_;  // zone_search::single: a point whose checks fail is answered as it is
+    bool shared_ = true;  // the rungs share their levels (a rung_factory's store); false for a factory of n alone
     rung_factory make_;
     std::shared_ptr<level_store> levels_;  // held by the rungs' contacts too (a released contact outlives the ladder)
     std::shared_ptr<level_store> spectral_levels_;  // spectral_rungs()' own (below_first)
