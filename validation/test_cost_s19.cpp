@@ -118,13 +118,10 @@ TEST(CostS19, PhysicalRungsBuiltWithoutASolve) {
     EXPECT_EQ(p.width->lambda, lambda);
 }
 
-// Free rolling at f = 0.2 and the tolerance 1e-5: refused, rung 512 not solved by rule (a) of 8(q) (from the levels up
-// to 256; before the five zones took the weight w_N, 8(x), rung 1000 was the one not solved, by rule (a')). The physical
-// scene does its twin's work (the program before solved the top rung's point to find its width first: more checkpoint
-// calls) and refuses with the same line. Rung 1000's point loses its five zones on the weight (its Newton held in a
-// cycle, stopped after four iterations by damped_newton: 8(x), "The slow refusal") and is answered on the old path
-// (8(x), "The fallback") with an estimate above the tolerance: the best reached. large_n: about 57 s CPU (280 s when
-// the cycle spent all 40 iterations).
+// Free rolling at f = 0.2 and the tolerance 1e-5: refused, rung 512 not solved by rule (a') of 8(q) (its levels up to
+// 256 alone; rung 1000 before the five zones took the weight w_N, 8(x) "Landed"). The physical scene does its twin's
+// work (the program before solved the top rung's point to find its width first: more checkpoint calls) and refuses
+// with the same line. large_n: about 280 s CPU since 8(x) (7.5 s per solve before: 8(x) names the defect).
 TEST(CostS19, PhysicalTopRungRefusedBeforeItsPoint) {
     const scene physical = physical_full(0.2, 0.0, "[solver]\ntolerance = 1e-5\n");
     const scene twin = dimensionless_twin(physical, "[solver]\ntolerance = 1e-5\n");

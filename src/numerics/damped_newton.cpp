@@ -42,10 +42,6 @@ std::optional<std::vector<double>> newton_step(const std::vector<std::vector<dou
     return dx;
 }
 
-// Newton is held in a two-step cycle where this many successive full steps above F's rounding each take x back to
-// within that rounding of where it was two iterates before (damped_newton).
-constexpr int cycle_repeats = 2;
-
 // |F|'s Euclidean norm, for the test of a kept Jacobian's step.
 double norm_of(const std::vector<double>& F) {
     double sum = 0.0;
@@ -91,8 +87,6 @@ newton_result damped_newton(const newton_problem& problem, std::vector<double> x
     if (updated) J = kept->J;
     double last_full = -1.0;  // the size of the last step if it was a full one within F's rounding, else -1
     double last_size = -1.0;  // the size of the last full step (a kept Jacobian's contraction test), else -1
-    std::vector<double> last_dx;  // the last full step above F's rounding, else empty (the cycle's test below)
-    int cycles = 0;               // successive full steps that closed a two-step cycle
     for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
         std::optional<std::vector<double>> dx;
         double step = 1.0;
@@ -192,26 +186,6 @@ newton_result damped_newton(const newton_problem& problem, std::vector<double> x
             return {newton_stop::rounding_limit, std::nullopt, rounding};
         }
         last_full = rounded ? size : -1.0;
-        // Held in a two-step cycle: cycle_repeats successive full steps above F's rounding, each taking x back to
-        // within that rounding of where it was two iterates before. The points are the same ones as far as F can
-        // tell, so the same map keeps x there: F jumps between them (the five zones' second entry condition
-        // +-4.55e-9 across s2 = 0.99291936, steps 2.4e-8 against eps/rcond 4.0e-9, returns within 2e-10, at n = 1000
-        // of free rolling at f = 0.2 on the pressure's weight, docs/formulation.md 8(x)). No root from here, said at
-        // once rather than after max_iterations (there 40 iterations of six residuals, 120 s CPU). A contracting step
-        // brings x back by about the step before it, above the rounding; within it the stop above decides, as before;
-        // without F's rounding (problem.rounding empty) no cycle is read.
-        if (step == 1.0 && !rounded && rounding >= 0.0) {
-            if (!last_dx.empty()) {
-                std::vector<double> back(k);
-                for (std::size_t j = 0; j < k; ++j) back[j] = (*dx)[j] + last_dx[j];
-                cycles = problem.step_size(x, back) <= rounding ? cycles + 1 : 0;
-                if (cycles >= cycle_repeats) return fail();
-            }
-            last_dx = *dx;
-        } else {
-            last_dx.clear();
-            cycles = 0;
-        }
     }
     return fail();
 }

@@ -307,20 +307,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     const tangential_solution& decides =
         johnson_point.layout.stick_zones() == 2 || !start ? johnson_point : start->s;
     const bool plateau = carries_plateau(decides), five = weighs_five_zones(decides);
-    if (!five) return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, false);
-    // 8(x), "The fallback": an alternation on the weight w_N that loses its five zones (a step's Newton finds them
-    // no more, or holds in a cycle: free rolling at f = 0.2, n = 1000), fails its checks or does not converge is
-    // solved again on the old path (kinks_of), which answers or refuses as the program before the weight did.
-    // What the checkpoint throws ends the solve (contact::set_checkpoint).
-    halted_ = false;
-    try {
-        return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, true);
-    } catch (const resolution_error&) {
-        if (halted_) throw;
-    } catch (const numerical_error&) {
-        if (halted_) throw;
-    }
-    return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, false);
+    // No fallback to the old path where the weighted alternation fails (8(x), "The fallback"): a level on the other path
+    // than its rung's other levels would make their estimate compare two discretisations.
+    return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, five);
 }
 
 const tangential_solution& full_coupling::alternate(const normal_solution& johnson, dissimilar_zones& johnson_zones,
@@ -354,11 +343,7 @@ const tangential_solution& full_coupling::alternate(const normal_solution& johns
     // kinks and tangential solver (the same n and exponent), instead of once by each.
     const auto jacobi_rules = std::make_shared<jacobi_rule_set>();
     for (int k = 1; k <= coupling_max_iterations; ++k) {
-        if (checkpoint_) {
-            halted_ = true;  // what it throws ends the solve: no fallback (solve)
-            checkpoint_();
-            halted_ = false;
-        }
+        if (checkpoint_) checkpoint_();
         const double beta = beta_d_;
         std::function<double(double)> coupled = [source_zones, source, beta](double r) {
             return beta * source_zones->traction(source, r);

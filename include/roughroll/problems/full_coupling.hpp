@@ -77,7 +77,7 @@ bool carries_plateau(const tangential_solution& s);
 // A shorter one (Q/f = +0.75: the second zone [0.99920, 0.99953], 0.7 spacings, 4.7e-4 from the edge) holds a V-shaped
 // dip of p/w_N from p_q's one-sided terms that no polynomial pbar follows: the weighted path lost those five zones
 // at n = 128..512, where the old path (kinks_of, square-root weight) answers. Decided once per alternation, as the plateau;
-// an alternation on the weight that fails is solved again on the old path (full_coupling::solve, 8(x) "The fallback").
+// no fallback where an alternation on the weight fails (8(x), "The fallback": it would mix the paths between levels).
 constexpr double five_zone_spacings = 2.0;
 bool weighs_five_zones(const tangential_solution& s);
 
@@ -129,7 +129,6 @@ private:
     coupling_summary summary_;
     std::function<void()> checkpoint_;
     coupling_stop stop_ = coupling_stop::contraction;
-    bool halted_ = false;  // the checkpoint threw (no fallback)
 };
 
 }  // namespace roughroll
