@@ -116,6 +116,12 @@ std::unique_ptr<contact> level_ladder::release(int n) {
 
 namespace {
 
+// An estimate the refusal names as the best reached, in two digits rounded up: a bound stays a bound when printed, and
+// the digits beyond two are noise (the advice beside it rounds the same way, rounded_up).
+std::string bound_text(double x) {
+    return x > 0.0 && std::isfinite(x) ? significant(rounded_up(x, 2), 2) : significant(x, 2);
+}
+
 // A relative size the ladder says a rung's estimate reaches "at least" (rules (a), (a'), (b) of 8(q)), in three
 // digits rounded down: rounded to the nearest it could claim more than is certain (rung 1000's certain 1.0494e-5
 // read 1.05e-5, above its estimate 1.04945e-5).
@@ -294,8 +300,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         // Rounded up before it is compared with 1: 0.995 would be advised as 1, which no tolerance may be.
         const double accepted = best->check.answering > 0.0 ? rounded_up(best->check.answering, 2) : 0.0;
         msg +=
-            ": the best estimate reached is " + best->check.quantity + " +- " + shortest(best->check.estimate) +
-            (std::isfinite(relative) ? " (" + shortest(relative) + " relative)" : std::string(" (of a zero value)")) +
+            ": the best estimate reached is " + best->check.quantity + " +- " + bound_text(best->check.estimate) +
+            (std::isfinite(relative) ? " (" + bound_text(relative) + " relative)" : std::string(" (of a zero value)")) +
             " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped + not_solved : ", and " + beyond_all) +
             (rounding_limit ? ", and at n = " + std::to_string(last_n) + " " + last_reason : std::string()) +
             "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate (n = " +
