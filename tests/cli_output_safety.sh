@@ -192,6 +192,7 @@ mkdir -p "$w/table"
 chmod 777 "$w/table"
 readonly_file "$w/table/fig2a-table.md"
 expect figure-table-0444 "fig2a-table.md': the file exists and is not writable" -- figure 2a --points 2 --out "$w/table" --no-plot
+[ -e "$w/table/fig2a.csv" ] && fail "figure-table-0444: the CSV was written: the check came after the work"
 # A file the user may write is replaced as before.
 printf 'earlier\n' >"$w/mine.csv"
 [ "$(id -u)" -eq 0 ] && chown "$me" "$w/mine.csv"

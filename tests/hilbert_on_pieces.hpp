@@ -15,18 +15,16 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
+#include "quadpack_common.hpp"
+
 namespace hilbert_on_pieces {
 
-using integrand = std::function<double(double)>;
+using quadpack_common::function_of;
+using quadpack_common::integrand;
 
-inline double call(double x, void* p) { return (*static_cast<const integrand*>(p))(x); }
-
-struct workspace {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(4000);
-    ~workspace() { gsl_integration_workspace_free(w); }
-    workspace() = default;
-    workspace(const workspace&) = delete;
-    workspace& operator=(const workspace&) = delete;
+// 4000 subintervals.
+struct workspace : quadpack_common::interval_workspace {
+    workspace() : interval_workspace(4000) {}
 };
 
 // QUADPACK's status: a round-off stop is accepted where its own error estimate is below 1e-12, anything else fails
@@ -50,11 +48,11 @@ inline double hilbert(const integrand& g, double r, std::vector<double> cuts) {
         if (!(hi > lo)) continue;
         double v = 0.0;
         if (lo == r - d && hi == r + d) {
-            gsl_function F{&call, const_cast<integrand*>(&g)};
-            expect_converged(gsl_integration_qawc(&F, lo, hi, r, 1e-15, 1e-13, 4000, ws.w, &v, &err), err);
+            gsl_function F = function_of(g);
+            expect_converged(gsl_integration_qawc(&F, lo, hi, r, 1e-15, 1e-13, ws.limit, ws.w, &v, &err), err);
         } else {
-            gsl_function F{&call, const_cast<integrand*>(&h)};
-            expect_converged(gsl_integration_qags(&F, lo, hi, 1e-15, 1e-13, 4000, ws.w, &v, &err), err);
+            gsl_function F = function_of(h);
+            expect_converged(gsl_integration_qags(&F, lo, hi, 1e-15, 1e-13, ws.limit, ws.w, &v, &err), err);
         }
         sum += v;
     }
@@ -70,8 +68,8 @@ inline double integral(const integrand& g, std::vector<double> cuts) {
     double sum = 0.0;
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
         double v = 0.0, err = 0.0;
-        gsl_function F{&call, const_cast<integrand*>(&g)};
-        expect_converged(gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-15, 1e-14, 4000, ws.w, &v, &err), err);
+        gsl_function F = function_of(g);
+        expect_converged(gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-15, 1e-14, ws.limit, ws.w, &v, &err), err);
         sum += v;
     }
     return sum;

@@ -16,21 +16,19 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/numerics/gauss_jacobi.hpp"
+#include "quadpack_common.hpp"
 
 namespace jacobi_quadpack {
 using namespace roughroll;
 
-using integrand = std::function<double(double)>;
+using quadpack_common::function_of;
+using quadpack_common::integrand;
 
-inline double call(double x, void* p) { return (*static_cast<const integrand*>(p))(x); }
-
-struct workspace {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
-    gsl_integration_qaws_table* t = gsl_integration_qaws_table_alloc(0.0, 0.0, 0, 0);
-    ~workspace() {
-        gsl_integration_workspace_free(w);
-        gsl_integration_qaws_table_free(t);
-    }
+// 2000 subintervals, and QAWS's table of the end powers.
+struct workspace : quadpack_common::interval_workspace {
+    gsl_integration_qaws_table* const t = gsl_integration_qaws_table_alloc(0.0, 0.0, 0, 0);
+    workspace() : interval_workspace(2000) {}
+    ~workspace() { gsl_integration_qaws_table_free(t); }
 };
 
 // QUADPACK's status: a round-off stop is accepted where its own error estimate is at rounding (below 1e-15 of
@@ -45,9 +43,9 @@ inline double qaws(const integrand& g, double lo, double hi, double alpha, doubl
     gsl_guard();
     workspace ws;
     gsl_check(gsl_integration_qaws_table_set(ws.t, alpha, beta, 0, 0), "qaws table");
-    gsl_function F{&call, const_cast<integrand*>(&g)};
+    gsl_function F = function_of(g);
     double r = 0.0, e = 0.0;
-    accept(gsl_integration_qaws(&F, lo, hi, ws.t, 0.0, 1.2e-14, 2000, ws.w, &r, &e), r, e, "qaws");
+    accept(gsl_integration_qaws(&F, lo, hi, ws.t, 0.0, 1.2e-14, ws.limit, ws.w, &r, &e), r, e, "qaws");
     return r;
 }
 
@@ -60,9 +58,9 @@ inline double hilbert(const integrand& chi, double a, double b, double x) {
     const double right = qaws([&](double t) { return std::pow(1.0 + t, b) * chi(t) / (t - x); }, u, 1.0, 0.0, a);
     workspace ws;
     const integrand g = [&](double t) { return jacobi_weight(a, b, t) * chi(t); };
-    gsl_function F{&call, const_cast<integrand*>(&g)};
+    gsl_function F = function_of(g);
     double mid = 0.0, e = 0.0;
-    accept(gsl_integration_qawc(&F, l, u, x, 0.0, 1.2e-14, 2000, ws.w, &mid, &e), mid, e, "qawc");
+    accept(gsl_integration_qawc(&F, l, u, x, 0.0, 1.2e-14, ws.limit, ws.w, &mid, &e), mid, e, "qawc");
     return M_1_PI * (left + mid + right);
 }
 

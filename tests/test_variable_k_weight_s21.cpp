@@ -62,9 +62,9 @@ double hilbert_by_quadpack(const piecewise_power_weight& w, const integrand& chi
         s += qaws([&](double t) { return rest(w, i, t, i + 1, -1) * chi(t) / (t - x); }, hi, r, 0.0, w.exponents[i + 1]);
         workspace ws;
         const integrand g = [&](double t) { return w(t) * chi(t); };
-        gsl_function F{&call, const_cast<integrand*>(&g)};
+        gsl_function F = function_of(g);
         double mid = 0.0, e = 0.0;
-        accept(gsl_integration_qawc(&F, lo, hi, x, 0.0, 1.2e-14, 2000, ws.w, &mid, &e), mid, e, "qawc");
+        accept(gsl_integration_qawc(&F, lo, hi, x, 0.0, 1.2e-14, ws.limit, ws.w, &mid, &e), mid, e, "qawc");
         s += mid;
     }
     return M_1_PI * s;

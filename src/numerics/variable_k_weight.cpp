@@ -186,12 +186,11 @@ gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n) {
     gsl_guard();
     if (n < 1 || static_cast<int>(r.alpha.size()) < n)
         throw numerical_error("Gauss rule of " + std::to_string(n) + " nodes from a shorter recurrence");
-    // Golub and Welsch: the nodes are the eigenvalues of the Jacobi matrix, W_k = beta_0 v_{0k}^2. The implicit QL
-    // iteration with Wilkinson shifts on the tridiagonal matrix (Numerical Recipes' tqli, after EISPACK's imtql2),
-    // carrying only the first components of the eigenvectors: O(n^2), where a dense eigensolver costs O(n^3).
-    std::vector<double> d(r.alpha.begin(), r.alpha.begin() + n), e(n, 0.0), z(n, 0.0);
+    // Golub and Welsch: the nodes are the eigenvalues of the Jacobi matrix. The implicit QL iteration with Wilkinson
+    // shifts on the tridiagonal matrix (Numerical Recipes' tqli, after EISPACK's imtql1), eigenvalues only: O(n^2),
+    // where a dense eigensolver costs O(n^3); the weights come from the Christoffel function below.
+    std::vector<double> d(r.alpha.begin(), r.alpha.begin() + n), e(n, 0.0);
     for (int j = 0; j + 1 < n; ++j) e[j] = std::sqrt(r.beta[j + 1]);
-    z[0] = 1.0;
     for (int l = 0; l < n; ++l) {
         int iter = 0, m = l;
         do {
@@ -225,9 +224,6 @@ gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n) {
                 p = s * rr;
                 d[i + 1] = g + p;
                 g = c * rr - b;
-                const double zf = z[i + 1];
-                z[i + 1] = s * z[i] + c * zf;
-                z[i] = c * z[i] - s * zf;
             }
             if (underflow) continue;
             d[l] -= p;
