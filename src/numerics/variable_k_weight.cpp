@@ -27,12 +27,15 @@ void check_zones(const std::vector<double>& ends, std::size_t zones, const char*
                                   " is empty)");
 }
 
-// Gauss-Jacobi rules of one discretisation, by their size and exponents (exact keys: the exponents come from one table).
+// Gauss-Jacobi rules of the discretisations, by their size and exponents (exact keys: the exponents come from one table).
+// Kept between calls, per thread (a Newton step rebuilds the rule with the same exponents at the edges and sizes that are
+// multiples of 8: building them again was a sixth of a rebuild, 8(z) "The cost"); at most 512 rules, then started afresh.
 class panel_rules {
 public:
     const gauss_jacobi& rule(int points, double right, double left) {
         for (const std::unique_ptr<gauss_jacobi>& r : rules_)
             if (r->n == points && r->a == right && r->b == left) return *r;
+        if (rules_.size() >= 512) rules_.clear();
         rules_.push_back(std::make_unique<gauss_jacobi>(points, right, left));
         return *rules_.back();
     }
@@ -40,6 +43,11 @@ public:
 private:
     std::vector<std::unique_ptr<gauss_jacobi>> rules_;
 };
+
+panel_rules& shared_rules() {
+    thread_local panel_rules rules;
+    return rules;
+}
 
 struct discrete_measure {
     std::vector<double> x, w;
@@ -59,35 +67,12 @@ int panel_points(double u, double v, int count, discretisation how) {
     return std::min(count + 24, 8 * ((p + 7) / 8));
 }
 
-// A panel [u, v] of zone `zone` is resolved when every zone end other than u and v lies at least v - u away from it
-// (8(z)); otherwise it is halved. The panel's own ends carry their powers in the Gauss-Jacobi rule. `sink` receives
-// (x, weight) per point; a null measure only counts.
-void add_panel(const piecewise_power_weight& pw, int zone, double u, double v, int count, discretisation how,
-               panel_rules& rules, discrete_measure* out, std::size_t& size, int depth) {
-    const double length = v - u;
-    bool resolved = true;
-    for (double s : pw.ends) {
-        if (s == u || s == v) continue;
-        const double d = s < u ? u - s : s - v;
-        if (d < length) resolved = false;
-    }
-    // A finitely smooth factor m is graded towards the zone ends it touches (8(z), "A varying k"); economically only
-    // towards the ends where it is not analytic (`rough`: an end next to a zone where k varies).
-    if (pw.smooth && length > std::ldexp(pw.ends[zone + 1] - pw.ends[zone], -16)) {
-        const bool all = how == discretisation::dense || pw.rough.empty();
-        if ((u == pw.ends[zone] && (all || pw.rough[zone])) || (v == pw.ends[zone + 1] && (all || pw.rough[zone + 1])))
-            resolved = false;
-    }
-    if (!resolved) {
-        if (depth > 200) throw numerical_error("variable-k weight: a panel could not be resolved (zone ends too close)");
-        const double m = 0.5 * (u + v);
-        add_panel(pw, zone, u, m, count, how, rules, out, size, depth + 1);
-        add_panel(pw, zone, m, v, count, how, rules, out, size, depth + 1);
-        return;
-    }
+// The discrete measure of one panel [u, v] of zone `zone`: Gauss-Jacobi with the powers of the zone ends it touches,
+// the other powers and m at its points.
+void panel_measure(const piecewise_power_weight& pw, int zone, double u, double v, int count, discretisation how,
+                   panel_rules& rules, discrete_measure& out) {
     const int points = panel_points(u, v, count, how);
-    size += static_cast<std::size_t>(points);
-    if (!out) return;
+    const double length = v - u;
     int ju = -1, jv = -1;
     for (std::size_t j = 0; j < pw.ends.size(); ++j) {
         if (pw.ends[j] == u) ju = static_cast<int>(j);
@@ -104,9 +89,82 @@ void add_panel(const piecewise_power_weight& pw, int zone, double u, double v, i
             if (static_cast<int>(j) != ju && static_cast<int>(j) != jv && pw.exponents[j] != 0.0)
                 f *= std::pow(std::fabs(x - pw.ends[j]), pw.exponents[j]);
         if (pw.smooth) f *= pw.smooth(x);
-        out->x.push_back(x);
-        out->w.push_back(f);
+        out.x.push_back(x);
+        out.w.push_back(f);
     }
+}
+
+void append(const discrete_measure& m, discrete_measure* out, std::size_t& size) {
+    size += m.x.size();
+    if (!out) return;
+    out->x.insert(out->x.end(), m.x.begin(), m.x.end());
+    out->w.insert(out->w.end(), m.w.begin(), m.w.end());
+}
+
+// A panel [u, v] of zone `zone` is resolved when every zone end other than u and v lies at least v - u away from it
+// (8(z)); otherwise it is halved. The panel's own ends carry their powers in the Gauss-Jacobi rule. A null measure
+// only counts (`size`).
+void add_panel(const piecewise_power_weight& pw, int zone, double u, double v, int count, discretisation how,
+               panel_rules& rules, discrete_measure* out, std::size_t& size, int depth) {
+    const double length = v - u;
+    bool resolved = true;
+    for (double s : pw.ends) {
+        if (s == u || s == v) continue;
+        const double d = s < u ? u - s : s - v;
+        if (d < length) resolved = false;
+    }
+    // A finitely smooth factor m is graded towards the zone ends it touches (8(z), "A varying k"), to 2^-16 of the zone:
+    // the dense route towards every end; the economical one only towards the ends where it is not analytic (`rough`:
+    // an end next to a zone where k varies), and there only as deep as m needs (below).
+    const bool all = how == discretisation::dense || pw.rough.empty();
+    bool rough_end = false;
+    if (pw.smooth && length > std::ldexp(pw.ends[zone + 1] - pw.ends[zone], -16))
+        rough_end = (u == pw.ends[zone] && (all || pw.rough[zone])) || (v == pw.ends[zone + 1] && (all || pw.rough[zone + 1]));
+    if (!resolved || (rough_end && all)) {
+        if (depth > 200) throw numerical_error("variable-k weight: a panel could not be resolved (zone ends too close)");
+        const double m = 0.5 * (u + v);
+        add_panel(pw, zone, u, m, count, how, rules, out, size, depth + 1);
+        add_panel(pw, zone, m, v, count, how, rules, out, size, depth + 1);
+        return;
+    }
+    if (!rough_end && !out) {
+        size += static_cast<std::size_t>(panel_points(u, v, count, how));
+        return;
+    }
+    discrete_measure whole;
+    panel_measure(pw, zone, u, v, count, how, rules, whole);
+    if (!rough_end) {
+        append(whole, out, size);
+        return;
+    }
+    // The grading's depth from m itself (8(z), "The cost"): m ~ 1 + c d^b (log d) at a rough end (b = 9/2 for 8(x)'s
+    // blend, 1 for a k whose derivative jumps there), and a Gauss rule on the panel touching the end errs by about
+    // c h^(b+1) N^-(2b+2), the same on the half touching it with h/2: the panel's rule against its two halves' estimates
+    // the panel's error and bounds the halves' (their error is 2^-(b+1) of it). Both the mass and the moment of
+    // T_{2 count - 1}, the fastest turning polynomial the recurrence integrates, within 1e-14 of the panel's mass: the
+    // halves are kept; otherwise both halves are examined again, down to the dense route's 2^-16 of the zone.
+    const double mid = 0.5 * (u + v);
+    discrete_measure left, right;
+    panel_measure(pw, zone, u, mid, count, how, rules, left);
+    panel_measure(pw, zone, mid, v, count, how, rules, right);
+    const int degree = 2 * count - 1;
+    auto moments = [degree](const discrete_measure& m, double& mass, double& turning) {
+        for (std::size_t k = 0; k < m.x.size(); ++k) {
+            mass += m.w[k];
+            turning += m.w[k] * std::cos(degree * std::acos(std::clamp(m.x[k], -1.0, 1.0)));
+        }
+    };
+    double m0 = 0.0, t0 = 0.0, m1 = 0.0, t1 = 0.0;
+    moments(whole, m0, t0);
+    moments(left, m1, t1);
+    moments(right, m1, t1);
+    if (std::fabs(m1 - m0) <= 1e-14 * std::fabs(m1) && std::fabs(t1 - t0) <= 1e-14 * std::fabs(m1)) {
+        append(left, out, size);
+        append(right, out, size);
+        return;
+    }
+    add_panel(pw, zone, u, mid, count, how, rules, out, size, depth + 1);
+    add_panel(pw, zone, mid, v, count, how, rules, out, size, depth + 1);
 }
 
 void check_weight(const piecewise_power_weight& pw, int count) {
@@ -135,7 +193,7 @@ int piecewise_power_weight::zone_of(double x) const {
 
 std::size_t discretisation_size(const piecewise_power_weight& pw, int count, discretisation how) {
     check_weight(pw, count);
-    panel_rules rules;
+    panel_rules& rules = shared_rules();
     std::size_t size = 0;
     for (std::size_t i = 0; i + 1 < pw.ends.size(); ++i)
         add_panel(pw, static_cast<int>(i), pw.ends[i], pw.ends[i + 1], count, how, rules, nullptr, size, 0);
@@ -145,7 +203,7 @@ std::size_t discretisation_size(const piecewise_power_weight& pw, int count, dis
 orthogonal_recurrence recurrence_of(const piecewise_power_weight& pw, int count, discretisation how) {
     gsl_guard();
     check_weight(pw, count);
-    panel_rules rules;
+    panel_rules& rules = shared_rules();
     discrete_measure m;
     std::size_t size = 0;
     for (std::size_t i = 0; i + 1 < pw.ends.size(); ++i)
@@ -182,6 +240,15 @@ orthogonal_recurrence recurrence_of(const piecewise_power_weight& pw, int count,
     return r;
 }
 
+namespace {
+// sqrt(a^2 + b^2): std::hypot (a quarter of the rule's cost, 8(z) "The cost") only where a square could overflow or
+// underflow; the QL sweep's entries are those of a Jacobi matrix on [-1, 1], below 2 in size, except a shift's g.
+inline double pythag(double a, double b) {
+    const double m = std::max(std::fabs(a), std::fabs(b));
+    return m < 1e150 && m > 1e-150 ? std::sqrt(a * a + b * b) : std::hypot(a, b);
+}
+}  // namespace
+
 gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n) {
     gsl_guard();
     if (n < 1 || static_cast<int>(r.alpha.size()) < n)
@@ -203,14 +270,14 @@ gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n) {
                 throw numerical_error("Gauss rule of a variable-k weight: the QL iteration did not converge at n = " +
                                       std::to_string(n));
             double g = (d[l + 1] - d[l]) / (2.0 * e[l]);
-            double rr = std::hypot(g, 1.0);
+            double rr = pythag(g, 1.0);
             g = d[m] - d[l] + e[l] / (g + (g >= 0.0 ? std::fabs(rr) : -std::fabs(rr)));
             double s = 1.0, c = 1.0, p = 0.0;
             int i = m - 1;
             bool underflow = false;
             for (; i >= l; --i) {
                 const double f = s * e[i], b = c * e[i];
-                e[i + 1] = rr = std::hypot(f, g);
+                e[i + 1] = rr = pythag(f, g);
                 if (rr == 0.0) {
                     d[i + 1] -= p;
                     e[m] = 0.0;
@@ -301,7 +368,7 @@ double qags(const std::function<double(double)>& f, double lo, double hi, gsl_in
 // to 2^-grading of the zone (`scale`). A fixed rule, not adaptive: I_c's integrand (a_c(t) - a_c(x))/(t - x) carries rounding
 // noise eps/|t - x| next to x, which an adaptive rule chases (QAGS stops with "bad behaviour" there).
 double graded(const std::function<double(double)>& f, double lo, double hi, double near, double scale,
-              const gauss_jacobi& legendre, int grading) {
+              const std::vector<double>& nodes, const std::vector<double>& weights, int grading) {
     double sum = 0.0;
     const double floor = std::ldexp(scale, -grading);
     std::function<void(double, double)> panel = [&](double u, double v) {
@@ -313,7 +380,7 @@ double graded(const std::function<double(double)>& f, double lo, double hi, doub
             panel(mid, v);
             return;
         }
-        for (int k = 0; k < legendre.n; ++k) sum += 0.5 * h * legendre.weights[k] * f(0.5 * (u + v) + 0.5 * h * legendre.nodes[k]);
+        for (std::size_t k = 0; k < nodes.size(); ++k) sum += 0.5 * h * weights[k] * f(0.5 * (u + v) + 0.5 * h * nodes[k]);
     };
     panel(lo, hi);
     return sum;
@@ -322,8 +389,33 @@ double graded(const std::function<double(double)>& f, double lo, double hi, doub
 
 variable_k_weight::variable_k_weight(std::vector<double> ends, std::vector<double> k,
                                      std::vector<std::function<double(double)>> varying)
-    : k_(std::move(k)), varying_(std::move(varying)), workspace_(make_integration_workspace(1000)), legendre_(20, 0.0, 0.0) {
+    : k_(std::move(k)), varying_(std::move(varying)), workspace_(make_integration_workspace(1000)) {
     gsl_guard();
+    {
+        // GSL's tabulated 20-point Gauss-Legendre rule (its nodes and weights to double precision; the Golub-Welsch rule of
+        // numerics/gauss_jacobi has its weights 2.6e-14 off, which a_c's Legendre coefficients amplify to 2e-13 in I_c).
+        const std::unique_ptr<gsl_integration_glfixed_table, void (*)(gsl_integration_glfixed_table*)> table(
+            gsl_integration_glfixed_table_alloc(20), gsl_integration_glfixed_table_free);
+        if (!table) throw numerical_error("variable-k weight: no Gauss-Legendre table");
+        legendre_.n = 20;
+        legendre_.nodes.resize(20);
+        legendre_.weights.resize(20);
+        for (std::size_t k = 0; k < 20; ++k)
+            gsl_check(gsl_integration_glfixed_point(-1.0, 1.0, k, &legendre_.nodes[k], &legendre_.weights[k], table.get()),
+                      "variable-k weight: a Gauss-Legendre point");
+        // c_j = (2j + 1)/2 sum_k W_k a_c(t_k) P_j(s_k): the Legendre coefficients of the degree-19 interpolant at the
+        // nodes (exact: the rule integrates degree 39); transform_[k n + j] = (2j + 1)/2 W_k P_j(s_k) (Bonnet).
+        transform_.assign(400, 0.0);
+        for (int k = 0; k < 20; ++k) {
+            double pm = 0.0, p = 1.0;
+            for (int j = 0; j < 20; ++j) {
+                transform_[k * 20 + j] = 0.5 * (2 * j + 1) * legendre_.weights[k] * p;
+                const double next = ((2 * j + 1) * legendre_.nodes[k] * p - j * pm) / (j + 1);
+                pm = p;
+                p = next;
+            }
+        }
+    }
     check_zones(ends, k_.size(), "variable-k weight");
     const std::size_t M = k_.size();
     if (varying_.empty()) varying_.resize(M);
@@ -373,16 +465,17 @@ variable_k_weight::variable_k_weight(std::vector<double> ends, std::vector<doubl
     a_pc_.resize(M);
     a_pc_[0] = a_[0];
     for (std::size_t i = 1; i < M; ++i) a_pc_[i] = a_pc_[i - 1] + (a_[i] - right[i - 1]);
-    a_c_right_ = right[M - 1] - a_pc_[M - 1];
+    a_c_offset_.resize(M);
+    for (std::size_t i = 0; i < M; ++i) a_c_offset_[i] = 0.5 - a_pc_[i];
+    a_c_right_ = a_c_on(M - 1, 1.0);
     const std::vector<double> ones(M, 1.0);
     // m is finitely smooth only at the ends of the zones where k varies (a_c and I_c are analytic elsewhere, 8(z)).
     std::vector<char> rough(M + 1, 0);
     for (std::size_t i = 0; i < M; ++i)
         if (varying_[i]) rough[i] = rough[i + 1] = 1;
-    weight_ = {ends, e, ones, [this](double x) { return std::sin(M_PI * a_at(x)) * m_of(x); }, rough};
+    weight_ = {ends, e, ones, [this](double x) { const factors f = factors_at(x); return f.sine * f.m; }, rough};
     build_rules();
-    tabulate();
-    dual_ = {std::move(ends), std::move(minus), ones, [this](double x) { return std::sin(M_PI * a_at(x)) / m_of(x); },
+    dual_ = {std::move(ends), std::move(minus), ones, [this](double x) { const factors f = factors_at(x); return f.sine / f.m; },
              std::move(rough)};
 }
 
@@ -395,7 +488,8 @@ double variable_k_weight::k_at(double x) const {
 // there (Theta_3' ~ (1 - t^2)^{5/2}), which 20-point Gauss-Legendre integrates to 20^-11 on a panel touching it.
 constexpr int end_grading = 4;
 
-double variable_k_weight::i_c_direct(double x) const {
+double variable_k_weight::i_c_by_quadrature(double x) const {
+    if (a_pc_.empty()) return 0.0;
     // I_c(x) = int (a_c(t) - a_c(x))/(t - x) dt zone by zone: closed form where k is constant (a_c constant there),
     // 20-point Gauss-Legendre where it varies, on the zone's fixed panels graded to its ends (rules_, a_c cached at their
     // nodes: 8(z), "The cost"). The integrand is analytic on a panel unless x lies on it or, outside k's zone, closer to
@@ -407,22 +501,23 @@ double variable_k_weight::i_c_direct(double x) const {
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
         const double l = ends[i], r = ends[i + 1];
         if (!varying_[i]) {
-            const double A = a_[i] - a_pc_[i];
+            const double A = a_c_on(i, l);
             if (A != ax && x != l && x != r) I += (A - ax) * std::log(std::fabs((r - x) / (l - x)));
             continue;
         }
-        const std::function<double(double)> f = [&](double t) { return t == x ? 0.0 : (a_at(t) - a_pc_[i] - ax) / (t - x); };
+        const std::function<double(double)> f = [&](double t) { return t == x ? 0.0 : (a_c_on(i, t) - ax) / (t - x); };
         const bool inside = x > l && x < r;
-        const zone_rule& z = rules_[i];
+        const panel_set& z = rules_[i].coarse;
         const int per = legendre_.n;
         for (std::size_t p = 0; p < z.u.size(); ++p) {
             const double u = z.u[p], v = z.v[p], h = v - u;
             const double d = x < u ? u - x : (x > v ? x - v : 0.0);
             if (x > u && x < v) {
                 const double none = std::numeric_limits<double>::quiet_NaN();
-                I += graded(f, u, x, none, h, legendre_, 0) + graded(f, x, v, none, h, legendre_, 0);
+                I += graded(f, u, x, none, h, legendre_.nodes, legendre_.weights, 0) +
+                     graded(f, x, v, none, h, legendre_.nodes, legendre_.weights, 0);
             } else if (!inside && d < h) {
-                I += graded(f, u, v, x, h, legendre_, 0);
+                I += graded(f, u, v, x, h, legendre_.nodes, legendre_.weights, 0);
             } else {
                 for (int k = 0; k < per; ++k) {
                     const std::size_t q = p * per + k;
@@ -434,86 +529,142 @@ double variable_k_weight::i_c_direct(double x) const {
     return I;
 }
 
+double variable_k_weight::i_c(double x) const { return a_pc_.empty() ? 0.0 : i_c_at(x, a_c(x)); }
+
+double variable_k_weight::i_c_at(double x, double ax) const {
+    // I_c(x) zone by zone (8(z), "The cost"): closed form where k is constant; where it varies the cached Gauss-Legendre
+    // sum of (a_c(t) - a_c(x))/(t - x) on every panel at least its length from x (the integrand analytic in a Bernstein
+    // ellipse rho >= 5.8 there: 5.8^-40), and on the panels nearer than that product integration on a_c's degree-19
+    // interpolant p = sum_j c_j P_j(s), s = (2t - u - v)/(v - u), y = s(x):
+    //   int_u^v (p(t) - a_c(x))/(t - x) dt = sum_j c_j R_j(y) + (p(y) - a_c(x)) log|(v - x)/(u - x)|,
+    //   R_j(y) = int_{-1}^1 (P_j(s) - P_j(y))/(s - y) ds:  R_0 = 0, R_1 = 2, (j + 1) R_{j+1} = (2j + 1) y R_j - j R_{j-1}
+    // (from Bonnet's recurrence of P_j; R_j is Christoffel's 2 W_{j-1}, DLMF 14.7.1 with Q_j = P_j Q_0 - W_{j-1}). Exact for
+    // the interpolant, inside the panel and out (|y| <= 3: R_j + P_j log is -2 Q_j there, and the rounding of the two
+    // parts, eps |c_j P_j(y)| <= eps |c_j| 5.8^j, stays at rounding while the c_j decay); no evaluation of a at x's panel.
+    const std::vector<double>& ends = weight_.ends;
+    double I = 0.0;
+    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+        const double l = ends[i], r = ends[i + 1];
+        if (!varying_[i]) {
+            const double A = a_c_on(i, l);
+            if (A != ax && x != l && x != r) I += (A - ax) * std::log(std::fabs((r - x) / (l - x)));
+            continue;
+        }
+        const zone_rule& z = rules_[i];
+        for (std::size_t p = 0; p < z.coarse.u.size(); ++p) {
+            const double u = z.coarse.u[p], v = z.coarse.v[p];
+            const double d = x < u ? u - x : (x > v ? x - v : 0.0);
+            if (d >= v - u || z.fine_begin[p] == z.fine_end[p]) {
+                I += panel_part(z.coarse, p, x, ax);
+                continue;
+            }
+            for (std::size_t q = z.fine_begin[p]; q < z.fine_end[p]; ++q) I += panel_part(z.fine, q, x, ax);
+        }
+    }
+    return I;
+}
+
+double variable_k_weight::panel_part(const panel_set& z, std::size_t p, double x, double ax) const {
+    const int per = legendre_.n;
+    const double u = z.u[p], v = z.v[p], h = v - u;
+    const double d = x < u ? u - x : (x > v ? x - v : 0.0);
+    const std::size_t first = p * static_cast<std::size_t>(per);
+    double I = 0.0;
+    if (d >= h) {
+        for (int k = 0; k < per; ++k) I += z.w[first + k] * (z.a[first + k] - ax) / (z.t[first + k] - x);
+        return I;
+    }
+    const double y = (2.0 * x - u - v) / h;
+    double pm = 0.0, pk = 1.0, rm = 0.0, rk = 0.0, value = 0.0;
+    for (int j = 0; j < per; ++j) {
+        value += z.c[first + j] * pk;
+        I += z.c[first + j] * rk;
+        const double pn = ((2 * j + 1) * y * pk - j * pm) / (j + 1);
+        const double rn = j == 0 ? 2.0 : ((2 * j + 1) * y * rk - j * rm) / (j + 1);
+        pm = pk;
+        pk = pn;
+        rm = rk;
+        rk = rn;
+    }
+    if (x != u && x != v) I += (value - ax) * std::log(std::fabs((v - x) / (u - x)));
+    return I;
+}
+
 void variable_k_weight::build_rules() {
     // Each zone where k varies: 20-point Gauss-Legendre panels halved towards both its ends to 2^-end_grading of it
-    // (a_c - a_c(end) ~ d^{9/2} for 8(x)'s blend: 20^-11 on the panel that touches the end).
+    // (a_c - a_c(end) ~ d^{9/2} for 8(x)'s blend: 20^-11 on the panel that touches the end), a_c cached at their nodes
+    // with its Legendre coefficients. Product integration needs a_c's interpolant, which converges only as N^-9 on a
+    // panel touching such an end (measured: 2e-13 on the 2^-4 panel, 6e-12 in I_c near the end): the two end panels are
+    // graded again, to 2^-16 of the zone, for the x near them.
     const std::vector<double>& ends = weight_.ends;
     rules_.assign(ends.size() - 1, {});
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
         if (!varying_[i]) continue;
-        const double l = ends[i], r = ends[i + 1], floor = std::ldexp(r - l, -end_grading);
+        const double l = ends[i], r = ends[i + 1];
         zone_rule& z = rules_[i];
-        std::function<void(double, double)> panel = [&](double u, double v) {
+        auto add = [&](panel_set& s, double u, double v) {
             const double mid = 0.5 * (u + v);
-            if ((u == l || v == r) && v - u > floor && mid > u && mid < v) {
-                panel(u, mid);
-                panel(mid, v);
-                return;
-            }
-            z.u.push_back(u);
-            z.v.push_back(v);
+            s.u.push_back(u);
+            s.v.push_back(v);
+            const std::size_t first = s.a.size();
             for (int k = 0; k < legendre_.n; ++k) {
                 const double t = mid + 0.5 * (v - u) * legendre_.nodes[k];
-                z.t.push_back(t);
-                z.w.push_back(0.5 * (v - u) * legendre_.weights[k]);
-                z.a.push_back(a_at(t) - a_pc_[i]);
+                s.t.push_back(t);
+                s.w.push_back(0.5 * (v - u) * legendre_.weights[k]);
+                s.a.push_back(a_c_on(i, t));
             }
+            // a_c's Legendre coefficients (transform_); the mean c_0 is taken out first: the others then carry the rounding
+            // of a_c's variation on the panel, not of a_c (their sum is p at the panel's ends).
+            s.c.resize(s.a.size(), 0.0);
+            double mean = 0.0;
+            for (int k = 0; k < legendre_.n; ++k) mean += 0.5 * legendre_.weights[k] * s.a[first + k];
+            for (int k = 0; k < legendre_.n; ++k) {
+                const double d = s.a[first + k] - mean;
+                for (int j = 0; j < legendre_.n; ++j) s.c[first + j] += transform_[k * legendre_.n + j] * d;
+            }
+            s.c[first] = mean;
         };
-        panel(l, r);
-    }
-}
-
-void variable_k_weight::tabulate() {
-    // I_c is bounded and continuous (a_c is), analytic inside each zone and as smooth at its ends as a_c: interpolated
-    // zone by zone at N Chebyshev points of the first kind (barycentric), N doubled from 32 until the interpolant agrees
-    // with the direct value at the N - 1 points between them within 1e-14 (1 + max |I_c|); a zone that needs more than
-    // 1024 keeps the direct evaluation. Each point of the rule's discretisation then costs O(N), not a quadrature.
-    const std::vector<double>& ends = weight_.ends;
-    tables_.assign(ends.size() - 1, {});
-    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
-        const double mid = 0.5 * (ends[i] + ends[i + 1]), half = 0.5 * (ends[i + 1] - ends[i]);
-        for (int N = 32; N <= 1024; N *= 2) {
-            zone_table t;
-            t.x.resize(N);
-            t.f.resize(N);
-            t.b.resize(N);
-            double top = 0.0;
-            for (int k = 0; k < N; ++k) {
-                const double theta = M_PI * (2 * k + 1) / (2.0 * N);
-                t.x[k] = mid + half * std::cos(theta);
-                t.f[k] = i_c_direct(t.x[k]);
-                t.b[k] = (k % 2 ? -1.0 : 1.0) * std::sin(theta);
-                top = std::max(top, std::fabs(t.f[k]));
+        // Halved while it touches an end of [lo, hi] and is longer than `floor`.
+        std::function<void(panel_set&, double, double, double, double, double)> graded_panels =
+            [&](panel_set& s, double u, double v, double lo, double hi, double floor) {
+                const double mid = 0.5 * (u + v);
+                if ((u == lo || v == hi) && v - u > floor && mid > u && mid < v) {
+                    graded_panels(s, u, mid, lo, hi, floor);
+                    graded_panels(s, mid, v, lo, hi, floor);
+                    return;
+                }
+                add(s, u, v);
+            };
+        graded_panels(z.coarse, l, r, l, r, std::ldexp(r - l, -end_grading));
+        for (std::size_t p = 0; p < z.coarse.u.size(); ++p) {
+            const double u = z.coarse.u[p], v = z.coarse.v[p];
+            z.fine_begin.push_back(z.fine.u.size());
+            if (u == l || v == r) {
+                graded_panels(z.fine, u, v, u == l ? l : u - 1.0, v == r ? r : v + 1.0, std::ldexp(r - l, -16));
+            } else {
+                // At least its length from either end, the interpolant still errs by 5.8^-19 of a_c's variation
+                // (measured 3e-14 in I_c at a panel's end): quarters, four lengths away at least (16^-19).
+                for (int q = 0; q < 4; ++q) add(z.fine, u + 0.25 * q * (v - u), q == 3 ? v : u + 0.25 * (q + 1) * (v - u));
             }
-            double worst = 0.0;
-            for (int k = 1; k < N; ++k) {
-                const double x = mid + half * std::cos(M_PI * k / N);
-                worst = std::max(worst, std::fabs(t(x) - i_c_direct(x)));
-            }
-            if (worst <= 1e-14 * (1.0 + top)) {
-                tables_[i] = std::move(t);
-                break;
-            }
+            z.fine_end.push_back(z.fine.u.size());
         }
     }
 }
 
-double variable_k_weight::zone_table::operator()(double x) const {
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 0; k < this->x.size(); ++k) {
-        const double d = x - this->x[k];
-        if (d == 0.0) return f[k];
-        num += b[k] / d * f[k];
-        den += b[k] / d;
-    }
-    return num / den;
+variable_k_weight::factors variable_k_weight::factors_at(double x) const {
+    // The weight's and the dual's discretisations share most points (the panels inside [-1, 1] carry the same rule in
+    // both): m is computed once per point (8(z), "The cost").
+    const auto found = memo_.find(x);
+    if (found != memo_.end()) return found->second;
+    if (memo_.size() >= 200000) memo_.clear();
+    const factors f{std::sin(M_PI * a_at(x)), m_of(x)};
+    memo_.emplace(x, f);
+    return f;
 }
 
 double variable_k_weight::m_of(double x) const {
     const double ax = a_c(x);
-    const zone_table& t = tables_[weight_.zone_of(x)];
-    const double I = t.x.empty() ? i_c_direct(x) : t(x);
-    return std::pow(1.0 - x, ax - a_c_right_) * std::pow(1.0 + x, -ax) * std::exp(I);
+    return std::pow(1.0 - x, ax - a_c_right_) * std::pow(1.0 + x, -ax) * std::exp(i_c_at(x, ax));
 }
 
 double variable_k_weight::mass() const { return M_PI * (mu0_ + mu1_ - 0.5 * mu0_ * mu0_); }

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -34,7 +35,8 @@ namespace roughroll {
 // A weight c_i m(x) prod_j |x - x_j|^{e_j} on zone i of [-1, 1]: e_j > -1, c_i > 0, m > 0 continuous and analytic
 // inside each zone (empty: m = 1). Where m is set its zone ends are where it may be only finitely smooth: the panels of
 // the discretisation are graded towards them (to 2^-16 of the zone), towards every end, or only towards the ends
-// flagged in `rough` (8(z), "The cost": m is analytic at an end both of whose zones have a constant k).
+// flagged in `rough` (8(z), "The cost": m is analytic at an end both of whose zones have a constant k), and there only
+// as deep as m needs (a panel's rule against its halves').
 struct piecewise_power_weight {
     std::vector<double> ends;       // x_0 = -1 < ... < x_M = 1
     std::vector<double> exponents;  // e_0 .. e_M
@@ -57,8 +59,10 @@ struct orthogonal_recurrence {
 // inner products of degree <= 2 count - 1 are then those of the weight to rounding. `economical` (8(z), "The cost"):
 // a panel [u, v] gets 24 + ceil(2 count (acos u - acos v)/pi) points (a polynomial of degree 2 count - 1 turns
 // through that degree times the panel's Chebyshev angle there), rounded up to a multiple of 8, at most count + 24, and m is
-// graded only towards the `rough` ends; `dense`: count + 24 points on every panel and m graded towards every zone end
-// (the construction of session 21, kept as the reference of tests/test_variable_k_weight_s21.cpp).
+// graded only towards the `rough` ends, halving the panel that touches one while its rule and its two halves' disagree
+// by more than 1e-14 of its mass (in the mass and in the moment of T_{2 count - 1}; session 22); `dense`: count + 24
+// points on every panel and m graded towards every zone end to 2^-16 of the zone (the construction of session 21, kept
+// as the reference of tests/test_variable_k_weight_s21.cpp and _s22.cpp).
 enum class discretisation { economical, dense };
 orthogonal_recurrence recurrence_of(const piecewise_power_weight& w, int count,
                                     discretisation how = discretisation::economical);
@@ -76,8 +80,8 @@ gauss_rule gauss_rule_of(const orthogonal_recurrence& r, int n);
 // "A varying k"): there a = a_pc + a_c, a_pc piecewise constant with a's jumps, a_c continuous with a_c(-1) = 0, and
 //   w = (1 - x)^{a(1)} (1 + x)^{1 - a(-1)} prod_{0<j<M} |x - x_j|^{a(x_j-) - a(x_j+)} m(x),
 //   m = (1 - x)^{a_c(x) - a_c(1)} (1 + x)^{-a_c(x)} exp(I_c(x)),  I_c(x) = int (a_c(t) - a_c(x))/(t - x) dt  (bounded;
-//   closed form on the zones of constant k, graded Gauss-Legendre panels where k varies; interpolated zone by zone
-//   at Chebyshev points, checked against the direct value between them).
+//   closed form on the zones of constant k, graded Gauss-Legendre panels where k varies, with product integration on
+//   a_c's interpolant on the panels near x: 8(z), "The cost").
 class variable_k_weight {
 public:
     // ends: x_0 = -1 < x_1 < ... < x_M = 1; k: M finite values.
@@ -103,6 +107,12 @@ public:
     double mass() const;
     // (H - k)[w_k](x) = -(x + 1 - mu_0) (8(z)); H[w_k](x) = k(x) w_k(x) - (x + 1 - mu_0) inside, off the zone ends.
     double hilbert_of_weight(double x) const;
+    // I_c(x) = int (a_c(t) - a_c(x))/(t - x) dt (above; 0 where k is constant everywhere) as m uses it: the cached
+    // panels' Gauss-Legendre sums, and product integration on a_c's Legendre interpolant on the panels nearer x than
+    // their length (8(z), "The cost"). `i_c_by_quadrature`: session 21's route (the panels near x halved towards it with
+    // a_c evaluated afresh), the reference of tests/test_variable_k_weight_s22.cpp.
+    double i_c(double x) const;
+    double i_c_by_quadrature(double x) const;
 
 private:
     std::vector<double> k_, a_;  // a_: a on each zone at its left end
@@ -111,23 +121,39 @@ private:
     double a_c_right_ = 0.0;    // a_c(1)
     piecewise_power_weight weight_, dual_;
     double mu0_ = 0.0, mu1_ = 0.0;
-    double a_c(double x) const { return a_at(x) - a_pc_[weight_.zone_of(x)]; }
+    // a_c on zone i as (1/2 - a_pc) - atan(k)/pi: rounded to |a_c| ~ k/pi, not to a ~ 1/2 (product integration's
+    // interpolant amplifies that noise, 8(z) "The cost"); a constant offset cancels in I_c.
+    std::vector<double> a_c_offset_;  // 1/2 - a_pc per zone
+    double a_c_on(std::size_t i, double x) const {
+        return varying_[i] ? a_c_offset_[i] - std::atan(varying_[i](x)) / M_PI : a_[i] - a_pc_[i];
+    }
+    double a_c(double x) const { return a_c_on(static_cast<std::size_t>(weight_.zone_of(x)), x); }
     double m_of(double x) const;  // m(x) above
-    double i_c_direct(double x) const;  // I_c(x) by its quadrature
-    struct zone_rule {                  // where k varies: fixed graded Gauss-Legendre panels, a_c at their nodes
+    struct factors {
+        double sine, m;  // sin(pi a(x)), m(x)
+    };
+    factors factors_at(double x) const;  // memoised (memo_; not thread safe, as the workspace below)
+    mutable std::unordered_map<double, factors> memo_;
+    double i_c_at(double x, double ax) const;  // I_c(x) with ax = a_c(x)
+    struct panel_set {                  // 20-point Gauss-Legendre panels, a_c cached at their nodes
         std::vector<double> u, v;       // the panels
         std::vector<double> t, w, a;    // nodes, weights, a_c(t) (20 per panel)
+        std::vector<double> c;          // a_c's Legendre coefficients on each panel (20 per panel): product integration
+    };
+    struct zone_rule {                  // where k varies: panels graded to 2^-4 of the zone towards its ends (the sums),
+        panel_set coarse, fine;         // and each again: the end panels graded to 2^-16, the others quartered (for x
+        std::vector<std::size_t> fine_begin, fine_end;  // near them: product integration); per coarse panel, its fine
     };
     std::vector<zone_rule> rules_;      // per zone, empty where k is constant
-    struct zone_table {                 // I_c on a zone: Chebyshev points of the first kind, barycentric
-        std::vector<double> x, f, b;
-        double operator()(double at) const;
-    };
-    std::vector<zone_table> tables_;  // empty where the direct evaluation is kept
-    void tabulate();
+    double panel_part(const panel_set& s, std::size_t p, double x, double ax) const;
     void build_rules();
     integration_workspace_ptr workspace_;  // QAGS's, for mu_0 and mu_1 where k varies (not thread safe)
-    gauss_jacobi legendre_;                // the panels' rule of I_c
+    struct fixed_rule {                    // n-point Gauss-Legendre on [-1, 1]
+        int n = 0;
+        std::vector<double> nodes, weights;
+    };
+    fixed_rule legendre_;                  // the panels' rule of I_c
+    std::vector<double> transform_;        // its values -> Legendre coefficients (20 x 20)
 
 public:
     // The weights hold this object's address (m where k varies): not copied, not moved.
