@@ -155,7 +155,7 @@ void fold_estimate(error_estimate& e, const estimated_quantity& q, double value)
                                 : "; the scene is beyond the method's reach at the largest n");
     else if (p.n < max_nodes && !p.n_given)  // a ladder's rung: the ladder goes on to the larger n itself
         msg << "; a larger n (at most " << max_nodes << ") may converge";
-    else if (p.n < max_nodes)  // the ladder may answer below n too (rough pair braked, Q/f = -(1 - 1e-5): n = 128)
+    else if (p.n < max_nodes)  // the ladder may answer below n too (levels that wobble at n converge below, 8(q))
         msg << "; another n may converge: a larger n (solver.n, --n; at most " << max_nodes
             << "), or leave n out and the ladder of levels tries n up to " << max_nodes;
     else if (p.n_given)  // levels 250, 500, 1000 may wobble where a smaller n's converge (8(q)): the ladder tries them
@@ -195,6 +195,23 @@ error_bound coupled_bound(const three_levels& v, double floor, bool three_level,
                   : 2.0 * std::max({std::fabs(d1), std::fabs(d2), tail}) + floor;
     const bool resolved = std::isfinite(value) && !stalls;
     return {resolved ? value : 0.0, ratio, false, resolved};
+}
+
+// The second chance's bound of level n from n/2, n, 2n (v) where the last change d2 is within the floor F of those levels
+// (docs/formulation.md 8(j), "A last change within the floor"): its sign and size are rounding, so the observed ratio
+// means nothing (the rough pair's free rolling at n = 384: -1.51e-8, then 3.54e-10 within F = 4.0e-9 had been refused
+// as an oscillation). The discretisation change it hides is at most h = |d2| + F. Where the change before is at least
+// 2h, the levels contract into the floor at least as an order-1 method's (|e_2n| <= |e_n|/2); then |e_n| <= |e_2n - e_n|
+// + |e_2n| gives |e_n| <= 2h, and level n's own rounding adds F: 2h + F (Richardson's value moves |d1|/(2^p - 1)
+// more). Both changes within F: bound_error's rounding branch. Else (F < |d1| < 2h) no estimate.
+error_bound within_floor_bound(const three_levels& v, int order, bool extrapolated, double floor) {
+    const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+    if (std::fabs(d1) <= floor) return bound_error(v, order, reported_value{1, extrapolated}, floor);
+    const double hidden = std::fabs(d2) + floor;
+    const double shift = extrapolated ? std::fabs(d1) / (std::ldexp(1.0, order) - 1.0) : 0.0;
+    const double value = shift + 2.0 * hidden + floor;
+    const bool resolved = std::fabs(d1) >= 2.0 * hidden && std::isfinite(value);
+    return {resolved ? value : 0.0, d1 / d2, false, resolved};
 }
 
 // 8(q) "The three-level rule at full coupling": the kinks carried, and every zone two nodes wide at level n/4.
@@ -346,12 +363,17 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         } else if (chance) {
             // A second chance where n/4 is still pre-asymptotic for this quantity (the second stick
             // zone's end of data/aluminium-on-steel-rough.toml at n = 64 over 16, 32, 64): n/2, n, 2n,
-            // accepted only where they show at least order p - 1.
+            // accepted only where they show at least order p - 1, or where the last change is within the floor and
+            // the one before contracts into it (within_floor_bound).
             if (const estimate_level* a = finer_level()) {
                 const three_levels fine{v.middle, v.finest, value(q, *a)};
-                b = bound_error(fine, order, reported_value{1, q.extrapolated},
-                                floor_over(q, q.finer_floor, levels[1], levels[2], *a));
-                if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
+                const double fine_floor = floor_over(q, q.finer_floor, levels[1], levels[2], *a);
+                if (std::fabs(fine.finest - fine.middle) <= fine_floor) {
+                    b = within_floor_bound(fine, order, q.extrapolated, fine_floor);
+                } else {
+                    b = bound_error(fine, order, reported_value{1, q.extrapolated}, fine_floor);
+                    if (!(b.ratio >= std::ldexp(1.0, order - 1))) b.resolved = false;
+                }
                 second_chance = second_chance || b.resolved;
                 if (!b.resolved) refuse(p, q.name, fine, 2 * coarsest_n);
                 on_finer[i] = true;
