@@ -4,9 +4,10 @@
 // only an observed order p - 1 (d1/d2 >= 8), so a last change of rounding, whose sign and size mean nothing, refused
 // the point: the rough pair's free rolling at n = 384 (data/aluminium-on-steel-rough.toml), whose second zone's start
 // moved -1.51e-8 then 3.54e-10 over 192, 384, 768 within F = 4.0e-9. Now such levels are bounded by 2 (|d2| + F) + F
-// where the change before is at least 2 (|d2| + F) (they contract into the floor at least as an order-1 method), by
-// bound_error's rounding branch where both changes are within F, and refused where F < |d1| < 2 (|d2| + F). The made-up
-// levels below are that point's (its s2 at 192, 384, 768; 96 chosen so that n/4, n/2, n fail: ratio -3.3).
+// where the change before, less its own rounding, is at least 2 (|d2| + F) (they contract into the floor at least as an
+// order-1 method), by bound_error's rounding branch where both changes are within F, and refused where
+// F < |d1| < 2 (|d2| + F) + F. The made-up levels below are that point's (--method product: its s2 at 192, 384, 768;
+// 96 chosen so that n/4, n/2, n fail: ratio -3.3).
 #include <array>
 #include <optional>
 #include <string>
@@ -88,6 +89,11 @@ TEST(SecondChanceWithinFloor, NoContractionIntoTheFloorIsRefused) {
     EXPECT_NE(o.refusal.find("the second stick zone's start does not converge visibly over the levels n = 192, 384, 768"),
               std::string::npos)
         << o.refusal;
+    // The change before, less its own rounding F, must reach 2h: d1 = -1e-8 lies between 2h = 8.7e-9 and 2h + F =
+    // 1.27e-8, its discretisation part perhaps only 6e-9, no contraction by 2.
+    const outcome margin = estimate_of(2.0e-8, -1.0e-8, 3.54e-10);
+    EXPECT_FALSE(margin.e) << margin.e->start;
+    EXPECT_NE(margin.refusal.find("over the levels n = 192, 384, 768"), std::string::npos) << margin.refusal;
     // A last change above the floor keeps the rule of before: at least order p - 1 (here -1.51e-8, 5e-9: ratio -3).
     const outcome above = estimate_of(d0, -1.51e-8, 5.0e-9);
     EXPECT_FALSE(above.e) << above.e->start;

@@ -199,18 +199,19 @@ error_bound coupled_bound(const three_levels& v, double floor, bool three_level,
 
 // The second chance's bound of level n from n/2, n, 2n (v) where the last change d2 is within the floor F of those levels
 // (docs/formulation.md 8(j), "A last change within the floor"): its sign and size are rounding, so the observed ratio
-// means nothing (the rough pair's free rolling at n = 384: -1.51e-8, then 3.54e-10 within F = 4.0e-9 had been refused
-// as an oscillation). The discretisation change it hides is at most h = |d2| + F. Where the change before is at least
-// 2h, the levels contract into the floor at least as an order-1 method's (|e_2n| <= |e_n|/2); then |e_n| <= |e_2n - e_n|
-// + |e_2n| gives |e_n| <= 2h, and level n's own rounding adds F: 2h + F (Richardson's value moves |d1|/(2^p - 1)
-// more). Both changes within F: bound_error's rounding branch. Else (F < |d1| < 2h) no estimate.
+// means nothing (the rough pair's free rolling at n = 384: -1.52e-8, then 4.57e-10 within F = 4.0e-9 had been refused
+// as an oscillation). The discretisation change it hides is at most h = |d2| + F, and the one before is at least
+// |d1| - F (d1 carries rounding too). Where |d1| - F >= 2h, the levels contract into the floor at least as an order-1
+// method's, and the rule assumes they go on so (|e_2n| <= |e_n|/2); then |e_n| <= |e_2n - e_n| + |e_2n| gives
+// |e_n| <= 2h, and level n's own rounding adds F: 2h + F (Richardson's value moves |d1|/(2^p - 1) more). Both changes
+// within F: bound_error's rounding branch. Else (F < |d1| < 2h + F) no estimate.
 error_bound within_floor_bound(const three_levels& v, int order, bool extrapolated, double floor) {
     const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
     if (std::fabs(d1) <= floor) return bound_error(v, order, reported_value{1, extrapolated}, floor);
     const double hidden = std::fabs(d2) + floor;
     const double shift = extrapolated ? std::fabs(d1) / (std::ldexp(1.0, order) - 1.0) : 0.0;
     const double value = shift + 2.0 * hidden + floor;
-    const bool resolved = std::fabs(d1) >= 2.0 * hidden && std::isfinite(value);
+    const bool resolved = std::fabs(d1) - floor >= 2.0 * hidden && std::isfinite(value);
     return {resolved ? value : 0.0, d1 / d2, false, resolved};
 }
 
