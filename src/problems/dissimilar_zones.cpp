@@ -353,6 +353,13 @@ double dissimilar_zones::integrate_over(const std::vector<double>& points, const
 
 double dissimilar_zones::load_under_H(double start, double c0) {
     // int p H = int_s^c p Theta (end_quadrature) + int_c^1 p (closed form, load_between).
+    // On the weighted pressure (the U-series zero) int_s^c p Theta by W's fixed rule (kinks_blend::zone_load,
+    // docs/formulation.md 8(x) "W's routes"): end_quadrature on the first five-zone stick zone, where p carries q's
+    // n-term series, erred by 8e-12 at n = 1000 with GSL's estimate 4e-13.
+    if (pressure_kinks_ && pressure_kinks_->weighted() &&
+        std::all_of(pressure_b_.begin(), pressure_b_.end(), [](double b) { return b == 0.0; }))
+        if (const kinks_blend* kinks = kinks_blend_of(start, c0))
+            if (const std::optional<double> zone = kinks->zone_load()) return *zone + load_between(solver_.normal(), c0, 1.0);
     const std::function<double(double)> pressure_theta = [&](double x) { return pressure(x) * H(x, start, c0); };
     std::vector<double> points{start, c0};
     if (pressure_kinks_) add_kink_points(points, *pressure_kinks_, 1e-9);  // p's one-sided roots (8(o))

@@ -20,6 +20,20 @@ constexpr std::size_t plateau_intervals = 400;
 constexpr double plateau_absolute = 1e-14, plateau_relative = 1e-12, plateau_accepted = 1e-13;
 // kinks_blend's memo of plateau_part's points per piece stops growing here (memory: 40 bytes and the map's node each).
 constexpr std::size_t plateau_memo_points = 1 << 14;
+// The graded rule of kinks_blend::near_part: Gauss-Legendre points per graded piece (8(x) "W's routes").
+constexpr int graded_points = 32;
+
+// Node j of `rule` on [a, e] in the cos map eta = a + (e - a)(1 - cos u)/2, u = (pi/2)(x_j + 1), and its weight d eta:
+// the weighted W's rule (8(x)). eta is taken from the nearer end, so that its distance to that end (where p has a
+// one-sided root, or r sits) carries no cancellation.
+struct mapped_node {
+    double eta, weight;
+};
+mapped_node cos_map_node(const gauss_legendre& rule, std::size_t j, double a, double e) {
+    const double half = 0.5 * (e - a);
+    const double u = M_PI_2 * (rule.nodes[j] + 1.0), sh = std::sin(0.5 * u), ch = std::cos(0.5 * u);
+    return {u < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch, rule.weights[j] * M_PI_2 * half * std::sin(u)};
+}
 
 // Graded cuts about the zones of `b` (every 16 zone half-lengths outwards, up to 2): p_q^0's plateau part varies like
 // log|r - m| on the scale of a thin zone (8(p)); each piece then meets it within a sixteenth of its length of an end,
@@ -360,42 +374,80 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         int n = 0;
         for (const weighted_zone& z : wzones_) n = std::max(n, z.rule->n);
         const int m = static_cast<int>(std::ceil(10.0 * std::sqrt(static_cast<double>(std::max(n, 1))))) + 48;
-        const gauss_legendre rules[2] = {gauss_legendre(m), gauss_legendre(m + 1)};
+        // A piece inside a weighted zone carries its q, a series of up to n terms (about n/2 periods in the piece's
+        // angle), which M points alias: M + n there (8(x) "W's routes": at n = 1000, f = 0.2 M alone erred by 5.3e-12
+        // against QUADPACK, and its two interlaced rules differed by 1.3e-11, so W jumped where a point neared a node).
+        k.rule_ = std::make_shared<const gauss_legendre>(m);
+        k.zone_rule_ = std::make_shared<const gauss_legendre>(m + n);
+        k.graded_rule_ = std::make_shared<const gauss_legendre>(graded_points);
+        const gauss_legendre rules[2] = {gauss_legendre(m + 1), gauss_legendre(m + n + 1)};
+        const auto in_zone = [this](double a, double e) {
+            for (const weighted_zone& z : wzones_)
+                if (a >= z.start && e <= z.start + 2.0 * z.rho) return true;
+            return false;
+        };
         std::vector<double> cuts{s, c, 1.0}, inner = ends();
         for (const kinks_plateau& b : plateaus_) add_graded_cuts(inner, b);  // 8(p): log|r - m| about thin zones
         for (const double e : inner)
             if (e > s && e < 1.0) cuts.push_back(e);
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-        const double rho = 0.5 * (c - s);
-        const auto blend_at = [s, c, rho](double eta) {  // H of the zone [s, c] (8(g))
-            if (eta <= s) return 0.0;
-            if (eta >= c) return 1.0;
-            const double t = std::clamp((eta - s) / rho - 1.0, -1.0, 1.0);
-            return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt((1.0 - t) * (1.0 + t)));
-        };
+        for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+            kinks_blend::weighted_piece piece{cuts[i], cuts[i + 1], {}, {}, in_zone(cuts[i], cuts[i + 1])};
+            for (int l = 0; l < 2; ++l) {
+                const gauss_legendre& rule = l == 0 ? (piece.zone ? *k.zone_rule_ : *k.rule_) : rules[piece.zone ? 1 : 0];
+                piece.begin[l] = k.tables_[l].eta.size();
+                k.tabulate(rule, piece.a, piece.e, k.tables_[l]);
+                piece.end[l] = k.tables_[l].eta.size();
+            }
+            k.pieces_.push_back(piece);
+        }
         // A point r at a distance d from a cut of a piece of length L sees the subtracted integrand's mirrored pole at
         // u = -2 sqrt(d/L) in the piece's angle, and the rule's error is about exp(-2 M sqrt(8 sqrt(d/L)/pi)): within
-        // 1e-13 for d/L > (88/M^2)^2; nearer (a trial end next to the source's kink, the checks' points at an end) the
-        // adaptive route answers (nullopt), with a factor 4 to spare.
+        // 1e-13 for d/L > (88/M^2)^2; the band is 4 times that. Nearer (a trial end next to the source's kink, the
+        // checks' points at an end), near_part: the same rule on the pieces trimmed by 4 bands away from the cut, the
+        // graded rule between (8(x) "W's routes"). Until session 22 such a point was declined, and the adaptive route
+        // (dissimilar_zones::cauchy_by_quadrature) differed from this rule by 2.5e-11 at n = 1000: Newton cycled.
         const double near = 4.0 * std::pow(88.0 / (static_cast<double>(m) * m), 2);
-        for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-            const double a = cuts[i], e = cuts[i + 1], half = 0.5 * (e - a);
-            k.near_.push_back({a, near * (e - a)});
-            k.near_.push_back({e, near * (e - a)});
-            if (!(half > 0.0)) continue;
-            for (int l = 0; l < 2; ++l) {
-                const gauss_legendre& rule = rules[l];
-                kinks_blend::weighted_table& table = k.tables_[l];
-                for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-                    const double u = M_PI_2 * (rule.nodes[j] + 1.0), sh = std::sin(0.5 * u), ch = std::cos(0.5 * u);
-                    const double eta = u < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch;
-                    table.eta.push_back(eta);
-                    table.weight.push_back(rule.weights[j] * M_PI_2 * half * std::sin(u));
-                    table.g.push_back((*this)(eta) * blend_at(eta));
+        const std::size_t count = k.pieces_.size(), none = static_cast<std::size_t>(-1);
+        // Cut i's band (pieces i - 1 and i on either side); groups of cuts nearer than 16 bands, merged until every
+        // piece between two groups is 16 of both groups' bands long, so a point is near at most one group and the
+        // trimmed pieces keep at least half their length.
+        std::vector<double> band(cuts.size(), 0.0);
+        for (std::size_t i = 0; i < count; ++i) {
+            band[i] = std::max(band[i], near * (cuts[i + 1] - cuts[i]));
+            band[i + 1] = std::max(band[i + 1], near * (cuts[i + 1] - cuts[i]));
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> spans;  // [first cut, last cut] of each group
+        for (std::size_t i = 0; i < cuts.size(); ++i) spans.push_back({i, i});
+        const auto span_band = [&band](const std::pair<std::size_t, std::size_t>& g) {
+            return *std::max_element(band.begin() + static_cast<std::ptrdiff_t>(g.first),
+                                     band.begin() + static_cast<std::ptrdiff_t>(g.second) + 1);
+        };
+        for (bool merged = true; merged;) {
+            merged = false;
+            for (std::size_t g = 0; g + 1 < spans.size(); ++g) {
+                const double gap = cuts[spans[g + 1].first] - cuts[spans[g].second];
+                if (gap < 16.0 * std::max(span_band(spans[g]), span_band(spans[g + 1]))) {
+                    spans[g].second = spans[g + 1].second;
+                    spans.erase(spans.begin() + static_cast<std::ptrdiff_t>(g) + 1);
+                    merged = true;
+                    break;
                 }
             }
         }
+        for (const auto& g : spans) {
+            kinks_blend::near_group group;
+            group.cuts.assign(cuts.begin() + static_cast<std::ptrdiff_t>(g.first),
+                              cuts.begin() + static_cast<std::ptrdiff_t>(g.second) + 1);
+            group.band = span_band(g);
+            group.left = g.first == 0 ? none : g.first - 1;  // piece [cuts[first - 1], cuts[first]]
+            group.right = g.second + 1 == cuts.size() ? none : g.second;
+            group.lo = group.left == none ? cuts[g.first] : cuts[g.first] - 4.0 * group.band;
+            group.hi = group.right == none ? cuts[g.second] : cuts[g.second] + 4.0 * group.band;
+            k.groups_.push_back(std::move(group));
+        }
+        k.trimmed_ = std::make_shared<std::vector<kinks_blend::trimmed_pair>>(k.groups_.size());
         return k;
     }
     for (const zone& z : zones_) {
@@ -436,13 +488,8 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
 }
 
 std::optional<double> kinks_blend::plateau_part(double r) const {
-    const double s = unit_.start(), c = unit_.end(), rho = 0.5 * (c - s);
-    const auto blend = [s, c, rho](double eta) {  // H of the zone [s, c] (8(g))
-        if (eta <= s) return 0.0;
-        if (eta >= c) return 1.0;
-        const double t = std::clamp((eta - s) / rho - 1.0, -1.0, 1.0);
-        return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt((1.0 - t) * (1.0 + t)));
-    };
+    const double s = unit_.start(), c = unit_.end();
+    const auto blend = [this](double eta) { return blend_at(eta); };
     const auto part = [&](double eta) {  // p_b(eta) H(eta)
         if (!(eta > s && eta < 1.0)) return 0.0;
         double sum = 0.0;
@@ -504,19 +551,118 @@ std::optional<double> kinks_blend::plateau_part(double r) const {
     return M_1_PI * total;
 }
 
+void kinks_blend::tabulate(const gauss_legendre& rule, double a, double e, weighted_table& table) const {
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        const mapped_node x = cos_map_node(rule, j, a, e);
+        table.eta.push_back(x.eta);
+        table.weight.push_back(x.weight);
+        table.g.push_back((*whole_)(x.eta) * blend_at(x.eta));
+    }
+}
+
+double kinks_blend::blend_at(double eta) const {
+    const double s = unit_.start(), c = unit_.end(), rho = 0.5 * (c - s);
+    if (eta <= s) return 0.0;
+    if (eta >= c) return 1.0;
+    const double t = std::clamp((eta - s) / rho - 1.0, -1.0, 1.0);
+    return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt((1.0 - t) * (1.0 + t)));
+}
+
+namespace {
+// sum w (g(eta) - gr)/(eta - r) over `rule` on [a, e] in the cos map of the tables (pressure_kinks::blend).
+template <class G>
+double cos_map_sum(const gauss_legendre& rule, double a, double e, double r, double gr, const G& g) {
+    double sum = 0.0;
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        const mapped_node x = cos_map_node(rule, j, a, e);
+        if (x.eta == r) continue;  // a node rounded onto the end r: its weight is below r's rounding
+        sum += x.weight * (g(x.eta) - gr) / (x.eta - r);
+    }
+    return sum;
+}
+}  // namespace
+
+double kinks_blend::near_part(double r, double gr, const near_group& group, trimmed_pair& trimmed) const {
+    const auto g = [this](double eta) { return (*whole_)(eta) * blend_at(eta); };
+    const std::size_t none = static_cast<std::size_t>(-1);
+    if (!trimmed.built) {  // the rule on the trimmed pieces (their nodes do not depend on r)
+        const auto rule = [this](const weighted_piece& p) -> const gauss_legendre& { return p.zone ? *zone_rule_ : *rule_; };
+        if (group.left != none) tabulate(rule(pieces_[group.left]), pieces_[group.left].a, group.lo, trimmed.left);
+        if (group.right != none) tabulate(rule(pieces_[group.right]), group.hi, pieces_[group.right].e, trimmed.right);
+        trimmed.built = true;
+    }
+    // The rule's table on every piece outside the group's (r lies in (lo, hi): no node of these is near it), and on
+    // the trimmed ones.
+    const std::size_t first = group.left != none ? group.left : 0;
+    const std::size_t last = group.right != none ? group.right : pieces_.size() - 1;
+    double sum = 0.0;
+    const weighted_table& table = tables_[0];
+    const auto add = [&](const weighted_table& t, std::size_t from, std::size_t to) {
+        for (std::size_t i = from; i < to; ++i) sum += t.weight[i] * (t.g[i] - gr) / (t.eta[i] - r);
+    };
+    for (std::size_t p = 0; p < pieces_.size(); ++p)
+        if (p < first || p > last) add(table, pieces_[p].begin[0], pieces_[p].end[0]);
+    add(trimmed.left, 0, trimmed.left.eta.size());
+    add(trimmed.right, 0, trimmed.right.eta.size());
+    // [lo, hi] cut at the group's cuts and r, each part graded geometrically (ratio 2) towards each end from the
+    // distance d to the nearest point beyond that end (r or a cut): a piece of length h then has its nearest singular
+    // point (a kink's root, or the subtracted integrand's pole mirrored about a cut) at least h from it, where the cos
+    // map's graded_points-point rule is exact to rounding (8(x) "W's routes").
+    std::vector<double> points = group.cuts;
+    points.push_back(r);
+    points.push_back(group.lo);
+    points.push_back(group.hi);
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    std::vector<double> ends;
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        const double u = points[i], v = points[i + 1];
+        if (u < group.lo || v > group.hi) continue;  // r below s (W at a point before the zone): not integrated
+        const double du = i > 0 ? u - points[i - 1] : INFINITY, dv = i + 2 < points.size() ? points[i + 2] - v : INFINITY;
+        const double mid = 0.5 * (u + v);
+        ends.assign(1, u);
+        for (double x = u, h = du; x + h < mid; h *= 2.0) ends.push_back(x += h);
+        std::size_t from_right = ends.size();
+        for (double x = v, h = dv; x - h > mid; h *= 2.0) ends.push_back(x -= h);
+        std::reverse(ends.begin() + static_cast<std::ptrdiff_t>(from_right), ends.end());
+        ends.push_back(v);
+        for (std::size_t j = 0; j + 1 < ends.size(); ++j) sum += cos_map_sum(*graded_rule_, ends[j], ends[j + 1], r, gr, g);
+    }
+    return sum;
+}
+
+std::optional<double> kinks_blend::zone_load() const {
+    if (!whole_) return std::nullopt;
+    // The pieces up to c (a cut) carry the zone; M + n points where q's n-term series lies (8(x) "W's routes": GSL's
+    // route on [s, c] erred by 8e-12 at n = 1000, its own estimate 4e-13; this rule 3e-16).
+    double sum = 0.0;
+    const weighted_table& table = tables_[0];
+    for (const weighted_piece& p : pieces_)
+        if (p.e <= unit_.end())
+            for (std::size_t i = p.begin[0]; i < p.end[0]; ++i) sum += table.weight[i] * table.g[i];
+    return sum;
+}
+
 std::optional<double> kinks_blend::weighted_part(double r, double blend) const {
     // Within 1e-9 of the trailing edge (1 - r)^a_N's difference quotient is a spike no fixed rule resolves: the
     // adaptive route (dissimilar_zones::cauchy_by_quadrature), as plateau_part declines there.
     const double s = unit_.start();
     const bool inside = r > s && r < 1.0;
     if (inside && !(1.0 - r > 1e-9)) return std::nullopt;
-    for (const auto& [cut, apart] : near_)
-        if (std::fabs(r - cut) < apart && r != cut) return std::nullopt;
     const double gr = inside ? (*whole_)(r) * blend : 0.0;
+    double sum = 0.0;
+    bool near = false;
+    for (std::size_t i = 0; i < groups_.size() && !near; ++i) {
+        const near_group& group = groups_[i];
+        if (r > group.cuts.front() - group.band && r < group.cuts.back() + group.band) {
+            near = true;
+            sum = near_part(r, gr, group, (*trimmed_)[i]);
+        }
+    }
     // A node within a thousandth of its weight (its local spacing) of r would lose eps |g|/|eta - r| of the difference
     // quotient to cancellation: then the other rule, whose nodes interlace (M and M + 1 points per piece), none as near.
-    double sum = 0.0;
     for (const weighted_table& table : tables_) {
+        if (near) break;
         sum = 0.0;
         bool near_node = false;
         for (std::size_t i = 0; i < table.eta.size() && !near_node; ++i) {

@@ -178,6 +178,9 @@ public:
     // The same at `count` points r[i] with blends blend[i] into out[i], bit for bit (the n-term sums of the points
     // side by side: W at a zone's collocation points, dissimilar_zones::W).
     void operator()(const double* r, const double* blend, std::optional<double>* out, std::size_t count) const;
+    // int_s^c p H (the stick zone's part of int p H) by the weighted tables' rule (docs/formulation.md 8(x) "W's
+    // routes"); empty unless the pressure is weighted.
+    std::optional<double> zone_load() const;
 
 private:
     friend class pressure_kinks;
@@ -186,13 +189,42 @@ private:
     // H[p H](r) by a fixed rule on the pieces between s, the kinks' ends and 1, each in the cos map (p's one-sided
     // square roots at the zone ends and (1 - r)^a_N at the edge smooth or nearly so in the angle), p H tabulated at
     // its nodes once per blend, g(r) subtracted on every piece (the principal value), + g(r) log((1 - r)/(r - s)).
+    // Next to a cut (within its band) the same rule on the pieces trimmed away from it and a graded rule on the rest
+    // (near_part, docs/formulation.md 8(x) "W's routes"). Empty only within 1e-9 of r = 1.
     std::optional<double> weighted_part(double r, double blend) const;
     std::shared_ptr<const pressure_kinks> whole_;  // the weighted pressure (a copy), null otherwise
     struct weighted_table {
         std::vector<double> eta, weight, g;  // the pieces' nodes, weights (d eta), p H there
     };
     weighted_table tables_[2];  // M and M + 1 points per piece (interlaced nodes)
-    std::vector<std::pair<double, double>> near_;  // per cut: the distance within which the rule declines
+    // The pieces [a, e] between the cuts, their entries [begin, end) in each table, and whether inside a weighted zone
+    // (then M + n points: q's n-term series).
+    struct weighted_piece {
+        double a, e;
+        std::size_t begin[2], end[2];
+        bool zone;
+    };
+    std::vector<weighted_piece> pieces_;
+    // Cuts nearer one another than 16 bands, as one group: a point within `band` of them (lo_band < r < hi_band)
+    // takes the pieces `left` .. `right` (the one ending at the group's first cut .. the one starting at its last; npos
+    // at s or 1) as the rule on [a of left, lo] and [hi, e of right] plus the graded rule on [lo, hi], lo and hi four
+    // bands beyond the group's outer cuts.
+    struct near_group {
+        std::vector<double> cuts;
+        double band, lo, hi;
+        std::size_t left, right;
+    };
+    std::vector<near_group> groups_;
+    struct trimmed_pair {
+        bool built = false;
+        weighted_table left, right;  // the rule on [a of left, lo] and on [hi, e of right]
+    };
+    std::shared_ptr<std::vector<trimmed_pair>> trimmed_;  // per group, built at its first near point (shared by copies)
+    std::shared_ptr<const gauss_legendre> rule_, zone_rule_, graded_rule_;  // M, M + n and graded_points points
+    double near_part(double r, double gr, const near_group& group, trimmed_pair& trimmed) const;
+    double blend_at(double eta) const;  // H of the zone [s, c] (8(g))
+    // Appends `rule`'s nodes on [a, e] in the cos map, their weights and p H there to `table`.
+    void tabulate(const gauss_legendre& rule, double a, double e, weighted_table& table) const;
     // H[p_b H](r) of the plateaus' part p_b of p_q^0 (docs/formulation.md 8(p)): no expansion on one zone holds B, so
     // by adaptive quadrature of that part alone (closed form per point, smooth between the zones' ends and the cuts
     // graded about thin zones), with p_b(r) H(r) subtracted at r. Empty within 1e-9 of the edge r = 1.
