@@ -198,6 +198,12 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
     rounding_limits& limits = met ? *met : kept;
     const std::vector<five_zone_start> own = search_starts(Q);
     starts.insert(starts.end(), own.begin(), own.end());
+    // A root whose checks (3.3)-(3.4) fail is kept only until a later start reaches a root whose checks hold: the rough
+    // pair at Q/f = 0.02 (data/aluminium-on-steel-rough.toml), where the driven three zones at Q, at n = 80 and 128,
+    // led Newton to a slip+ zone closed to 2.6e-5 (stick margin -0.091) and every finer level followed it from the
+    // coarser ends, while the scan's start (Q/f = 1/4 continued in Q) reaches the physical root, n = 64's (8(j) 4a,
+    // "Which root"). Where no start reaches one whose checks hold, the first root stands, as before.
+    std::optional<five_zone_solution> failing;
     for (const five_zone_start& start : starts) {
         double load = Q, forcing = std::fabs(beta_d_);  // where s is, nominally (Newton's load differs by its residual)
         std::optional<five_zone_solution> s;
@@ -212,7 +218,7 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
             load = start.load;
             forcing = start.forcing;
             s = from_three_zones(load, forcing, holds, limits);
-            if (holds && load == Q) return std::nullopt;  // not five zones: dissimilar_zones::solve answers Q
+            if (holds && load == Q) return failing;  // not five zones: dissimilar_zones::solve answers Q
         }
         std::vector<zone_leg> path = start.path;
         path.push_back({zone_parameter::load, Q});
@@ -226,12 +232,13 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
                     return five_zones(in_load ? next : load, {p.s1, p.c1, p.s2, p.c2}, in_load ? p.forcing : next,
                                       &limits);
                 });
-            if (!s && leg >= start.shared_after) return std::nullopt;
+            if (!s && leg >= start.shared_after) return failing;
             at = path[leg].target;
         }
-        if (s) return s;
+        if (s && s->checks.hold()) return s;
+        if (s && !failing) failing = std::move(s);
     }
-    return std::nullopt;
+    return failing;
 }
 
 }  // namespace roughroll
