@@ -90,7 +90,7 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
 
 std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends,
                                                                std::optional<double> beta, rounding_limits* met,
-                                                               newton_jacobian* kept) {
+                                                               newton_jacobian* kept, bool checked) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     const double forcing = beta.value_or(std::fabs(beta_d_));
@@ -107,7 +107,9 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
         },
         zone_solver::entry_coefficient, Q, f_, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}}, false,
         zone_newton_iterations, zone_end_resolution, met ? *met : own, kept);
-    if (s) s->checks = check(*s);
+    // Not made: NaN margins, nothing holding (a caller that reads them makes them: check).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (s) s->checks = checked ? check(*s) : traction_checks{nan, nan, nan, nan, nan, false, false, false};
     return s;
 }
 

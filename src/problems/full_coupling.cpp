@@ -94,14 +94,16 @@ namespace {
 // (five zones by their four ends; else three zones or gross sliding by dissimilar_zones::solve,
 // which tries the previous kind first), with the checks (3.3)-(3.4) of the answer made; full_coupling::solve
 // acts on them (a point reported; a level of an estimate need not hold them, as at Johnson's level).
+// `checked` false: five zones' checks are not made (docs/formulation.md 8(q), "The checks where they are read": no one
+// reads a level's; s.checks not made: NaN margins); three zones' are (their search chooses by them).
 // A structure the alternation cannot follow is a resolution_error (a curve's refused row), not a fault.
 // `kept`: the five zones' Newton Jacobian from the last step (damped_newton.hpp).
 tangential_solution step(dissimilar_zones& z, const tangential_solution& previous, double Q, double f,
-                         newton_jacobian& kept, bool one_kind) {
+                         newton_jacobian& kept, bool one_kind, bool checked) {
     tangential_solution t;
     if (previous.layout.stick_zones() == 2) {
         rounding_limits met;
-        const auto v = z.five_zones(Q, previous.layout.stick_ends(), std::nullopt, &met, &kept);
+        const auto v = z.five_zones(Q, previous.layout.stick_ends(), std::nullopt, &met, &kept, checked);
         if (!v && met.met()) throw rounding_limit_error(coupling_at_load(Q, f) + met.refusal());
         if (!v)
             throw resolution_error(coupling_at_load(Q, f) +
@@ -386,7 +388,7 @@ const tangential_solution& full_coupling::alternate(const normal_solution& johns
                 it->tangential->couple_locally([source](double r) { return stick_traction(source, r); }, source.start(),
                                                source.c0());
             it->zones = std::make_unique<dissimilar_zones>(*it->tangential, k1_, beta_d_);
-            it->s = step(*it->zones, source, Q, f_, jacobian_, braked);
+            it->s = step(*it->zones, source, Q, f_, jacobian_, braked, checked);
             return it;
         };
         std::unique_ptr<iterate> next;

@@ -178,9 +178,12 @@ public:
     // when Newton does not converge, and where it stops at the ends' rounding limit, noted in `met` where given
     // (zone_newton.hpp: the caller refuses with it where none of its routes answers). The checks are made, not
     // acted on. `kept`: Newton's Jacobian carried from the last call (full coupling's alternation, damped_newton.hpp).
+    // `checked` false: the checks are not made (NaN margins, none holding), for a caller that makes them (check) where
+    // it reads them.
     std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends,
                                                  std::optional<double> beta = std::nullopt,
-                                                 rounding_limits* met = nullptr, newton_jacobian* kept = nullptr);
+                                                 rounding_limits* met = nullptr, newton_jacobian* kept = nullptr,
+                                                 bool checked = true);
     // Five zones at load Q, |Q| < f, from the starts `first` (the coarser level's ends, a curve's previous row),
     // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q is the answer; empty where
     // none does, where the continuation ends on the braked side (the three zones of a braked roller 1 answer), and

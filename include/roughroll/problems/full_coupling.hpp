@@ -95,8 +95,9 @@ public:
 
     // The fully coupled point at Johnson's load `johnson_point.Q`, from Johnson's level: its pressure
     // `johnson`, its zones workspace (on `johnson`) and its point (k = 0 of the alternation).
-    // `checked`: each step's checks (3.3)-(3.4) must hold (a point reported), else numerical_error;
-    // without, they are made, not acted on (a level of an estimate, as at Johnson's level).
+    // `checked`: each step's checks (3.3)-(3.4) must hold (a point reported), else resolution_error;
+    // without, five zones' are not made (a level of an estimate reads none; s.checks not made: NaN margins: docs/formulation.md
+    // 8(q), "The checks where they are read"), three zones' made, not acted on.
     // `coarser`: a coarser level's alternation converged at the same load; its last iterate (beta_D p1, its
     // zone ends and kinks, evaluated at this level's points) replaces Johnson's point as the start, which
     // the alternation then leaves for this level's own fixed point (docs/formulation.md 8(e), "The start
