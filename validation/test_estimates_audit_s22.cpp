@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -97,6 +98,26 @@ int caught_if_sixteen_times_smaller(const std::vector<comparison>& rows, int& to
     return caught;
 }
 
+// The stored references (docs/robustness.md, "Session 22: the points session 21 did not reach").
+const std::vector<stored> driven_005 = {
+    // product, n = 1000, Q/f = 0.05 (session 22, main b077a23)
+    {"c0", 0.57202098414054725, 7.8315765966929163e-09},
+    {"stick_start", -0.81988251551811842, 7.8824896482453866e-09},
+    {"xi", -0.059958305307663287, 1.3956496286238954e-12},
+    {"hertz_load_ratio", 1.4726672424352603, 6.8652565242118884e-11},
+    {"pressure_peak_p", 0.64595559510646827, 1.0986128934234104e-11},
+    {"pressure_peak_r", -2.2351666799300804e-08, 1.5417084328510231e-07},
+};
+const std::vector<stored> driven_03 = {
+    // product, n = 1000, Q/f = 0.3
+    {"c0", 0.17543926753097794, 7.9564481274418285e-09},
+    {"stick_start", -0.85753692795888492, 8.0373378667929927e-09},
+    {"xi", -0.048435051884757593, 1.0230119848991671e-12},
+    {"hertz_load_ratio", 1.4726672424352603, 6.8652565242118884e-11},
+    {"pressure_peak_p", 0.64595559510646827, 1.0986128934234104e-11},
+    {"pressure_peak_r", -2.2351666799300804e-08, 1.5417084328510231e-07},
+};
+
 }  // namespace
 
 // The rough pair (data/aluminium-on-steel-rough.toml) at Johnson's level, driven at Q/f = 0.05 and 0.3 (session 21's
@@ -105,24 +126,6 @@ int caught_if_sixteen_times_smaller(const std::vector<comparison>& rows, int& to
 // against references 100 times closer (their xi to 1.4e-12 and 1.0e-12), the start by 61 and 40, the peak pressure by
 // 17 (reference 1.1e-11), c0 by 470 and 580 (reference 8e-9: the zone ends' rounding floor at n = 1000, 8(q)).
 TEST(EstimatesAuditS22, RoughPairDrivenWithinTheirEstimates) {
-    const std::vector<stored> driven_005 = {
-        // product, n = 1000, Q/f = 0.05 (session 22, main b077a23)
-        {"c0", 0.57202098414054725, 7.8315765966929163e-09},
-        {"stick_start", -0.81988251551811842, 7.8824896482453866e-09},
-        {"xi", -0.059958305307663287, 1.3956496286238954e-12},
-        {"hertz_load_ratio", 1.4726672424352603, 6.8652565242118884e-11},
-        {"pressure_peak_p", 0.64595559510646827, 1.0986128934234104e-11},
-        {"pressure_peak_r", -2.2351666799300804e-08, 1.5417084328510231e-07},
-    };
-    const std::vector<stored> driven_03 = {
-        // product, n = 1000, Q/f = 0.3
-        {"c0", 0.17543926753097794, 7.9564481274418285e-09},
-        {"stick_start", -0.85753692795888492, 8.0373378667929927e-09},
-        {"xi", -0.048435051884757593, 1.0230119848991671e-12},
-        {"hertz_load_ratio", 1.4726672424352603, 6.8652565242118884e-11},
-        {"pressure_peak_p", 0.64595559510646827, 1.0986128934234104e-11},
-        {"pressure_peak_r", -2.2351666799300804e-08, 1.5417084328510231e-07},
-    };
     std::vector<comparison> all = audit(data("aluminium-on-steel-rough.toml"), "--Q-over-f 0.05", driven_005);
     for (const auto& c : audit(data("aluminium-on-steel-rough.toml"), "--Q-over-f 0.3", driven_03)) all.push_back(c);
     EXPECT_EQ(all.size(), 12u);
@@ -143,4 +146,24 @@ TEST(EstimatesAuditS22, FullCouplingDrivenNearSlidingWithinItsEstimates) {
     const std::vector<comparison> rows = audit_live(full, "--Q-over-f 0.99");
     std::remove(full.c_str());
     EXPECT_EQ(rows.size(), 6u);
+}
+
+// The stored rows are not stale: the references at n = 1000 solved again, each stored value within the estimates of
+// the stored and the new solution together (each bounds its own distance from the exact value, so the two can be no
+// further apart). A change of the solvers that moves a reference by more fails here, before the comparisons above
+// silently use a wrong reference. large_n: two references at n = 1000, about 190 s CPU each.
+TEST(EstimatesAuditS22, StoredReferencesSolvedAgain) {
+    for (const auto& [load, reference] : {std::pair<std::string, const std::vector<stored>*>{"--Q-over-f 0.05", &driven_005},
+                                          std::pair<std::string, const std::vector<stored>*>{"--Q-over-f 0.3", &driven_03}}) {
+        const command_output o = run_command(std::string(ROUGHROLL_CLI) + " point " + data("aluminium-on-steel-rough.toml") +
+                                             " " + load + " --method product --n 1000 --json --quiet");
+        ASSERT_EQ(o.status, 0) << load << "\n" << o.text;
+        const nlohmann::json r = nlohmann::json::parse(o.text);
+        for (const stored& s : *reference) {
+            const double now = value_of(r, s.key), now_estimate = r["error_estimate"][s.key].get<double>();
+            std::printf("%-16s %-16s stored %.17g now %.17g (estimates %.3g, %.3g)\n", load.c_str(), s.key, s.value, now,
+                        s.estimate, now_estimate);
+            EXPECT_LE(std::fabs(now - s.value), s.estimate + now_estimate) << load << " " << s.key;
+        }
+    }
 }
