@@ -13,7 +13,7 @@
 // reference, solved here. The test can fail: on the rows the reference can tell (its own estimate under a tenth of the
 // distance), an estimate 16 times smaller (Richardson's |x_n - x_{n/2}|/15 at order 4, or less) under-reports xi at
 // Q/f = 0.05, which the test checks. Not here: the under-report the audit found (the rough pair at full coupling braked
-// at Q/f = -0.99, docs/robustness.md), which would fail until its estimate rule is mended.
+// at Q/f = -0.99, docs/robustness.md), mended and tested in validation/test_sign_change_s22.cpp.
 #include <cmath>
 #include <cstdio>
 #include <string>

@@ -201,14 +201,27 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     point.kinks_carried = structure == estimate_structure::full_coupling && normal().kinks != nullptr &&
                           !normal().kinks->layered();
     point.n_given = store_ == nullptr;  // a ladder's rungs share its level_store (level_ladder.hpp)
-    error_estimate e = estimate_from_levels(table, levels, finer, point);
+    // Level 2n solved once, for the table and the peak alike (its pressure read before another level is solved).
+    std::optional<std::optional<estimate_level>> above;
+    std::optional<pressure_peak> above_peak;
+    const auto finer_once = [&]() -> std::optional<estimate_level> {
+        if (!above) {
+            above = finer();
+            if (*above) above_peak = peak_of_level(*level(2 * nodes()));
+        }
+        return *above;
+    };
+    error_estimate e = estimate_from_levels(table, levels, finer_once, point);
     // The peak pressure from the same levels' pressures (no solve; a curve swept in c0 prints no peak). Level n's is
     // the reported pressure's: at full coupling model_'s at s, else its pressure, whose position Richardson's
     // extrapolation of P_H/P2 does not move (contact::normal).
     if (!swept) {
         std::array<pressure_peak, 3> peaks;
         for (int i = 0; i < 3; ++i) peaks[i] = peak_of_level(levels_[i] ? *levels_[i] : *model_);
-        e.peak = peak_from_levels(peaks, point);
+        e.peak = peak_from_levels(peaks, point, [&]() -> std::optional<pressure_peak> {
+            finer_once();
+            return above_peak;
+        });
     }
     return e;
 }

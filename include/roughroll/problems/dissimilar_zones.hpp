@@ -185,7 +185,8 @@ public:
                                                  rounding_limits* met = nullptr, newton_jacobian* kept = nullptr,
                                                  bool checked = true);
     // Five zones at load Q, |Q| < f, from the starts `first` (the coarser level's ends, a curve's previous row),
-    // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q is the answer; empty where
+    // then from the search's own (zone_start.hpp, 8(j) 4a): the first start to reach Q whose checks hold is the
+    // answer (a root whose checks fail stands only where no later start gives one that holds); empty where
     // none does, where the continuation ends on the braked side (the three zones of a braked roller 1 answer), and
     // where the driven three zones at Q keep v > 0 up to the trailing edge (they answer). A start whose Newton (of
     // the three zones or the five) stops at the ends' rounding limit gives nothing, the next start is tried; the

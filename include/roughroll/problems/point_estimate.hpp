@@ -160,10 +160,12 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
 // of the three levels (coarsest first) whose normal solutions the point's estimate solved: no solve of its own. The
 // rule of the point's other quantities on the same levels (error_bound's; at full coupling twice the larger change
 // with its geometric tail, 8(e), not 8(q)'s three-level rule), with floors: for r twice the largest resolution of a level's position (the golden section's band, pressure_peak),
-// for p the pressure's rounding at the finest level. The peak is never a refusal and never asks for level 2n: where
-// the levels show no order, twice the larger of the two changes, plus the changes from level n up to the finest
-// (docs/performance.md "The peak pressure's estimate").
-peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point);
+// for p the pressure's rounding at the finest level. The peak is never a refusal: where the levels show no order, twice
+// the larger of the two changes, plus the changes from level n up to the finest (docs/performance.md "The peak
+// pressure's estimate"). At full coupling, where the changes change sign, level 2n's peak (`finer`, solved on demand;
+// none on a ladder's rung) confirms as the other quantities' (8(q) "Changes of opposite sign").
+peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point,
+                            const std::function<std::optional<pressure_peak>()>& finer);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
 // the peak's difference from `coarse`'s, with the floors above at n nodes.
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
