@@ -73,8 +73,8 @@ TEST(SignChange, RoughPairFullCouplingBrakedNearSlidingWithinItsEstimates) {
     std::remove(scene.c_str());
 }
 
-// The rule on made-up levels (xi alone): changes +2, -0.5 over n/4, n/2, n at full coupling, outside the three-level
-// rule. Before: twice the larger, 4. Now level 2n (5.5: changes -0.5, +3 over n/2, n, 2n) bounds level 2n by twice
+// The rule on made-up levels (xi alone): changes +2, -0.5 over n/4, n/2, n at full coupling on rough rollers, outside
+// the three-level rule. Before: twice the larger, 4. Now level 2n (5.5: changes -0.5, +3 over n/2, n, 2n) bounds level 2n by twice
 // the larger, 6, and level n is 3 farther: 9. Where level 2n cannot be solved, no estimate; at n = 1000 (no
 // level 2n exists) the three levels' 4 stands.
 TEST(SignChange, OppositeChangesConfirmedOnLevelTwoN) {
@@ -92,6 +92,7 @@ TEST(SignChange, OppositeChangesConfirmedOnLevelTwoN) {
         return level(5.5);
     };
     estimate_point p{method::product, 64, 2, estimate_structure::full_coupling, false, true, "Q", 0.0};
+    p.rough = true;
     const error_estimate e = estimate_from_levels(table, levels, finer, p);
     EXPECT_EQ(solved, 1);
     EXPECT_EQ(e.xi, 9.0);
@@ -104,4 +105,9 @@ TEST(SignChange, OppositeChangesConfirmedOnLevelTwoN) {
     solved = 0;
     EXPECT_EQ(estimate_from_levels(table, levels, finer, p).xi, 4.0);
     EXPECT_EQ(solved, 0) << "no level 2000";
+
+    p.n = 64;
+    p.rough = false;  // smooth rollers: twice the larger, no level 2n
+    EXPECT_EQ(estimate_from_levels(table, levels, finer, p).xi, 4.0);
+    EXPECT_EQ(solved, 0);
 }

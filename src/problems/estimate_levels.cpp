@@ -200,6 +200,7 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     // (the rule was measured to 1.51 on smooth rollers): they keep twice the larger change.
     point.kinks_carried = structure == estimate_structure::full_coupling && normal().kinks != nullptr &&
                           !normal().kinks->layered();
+    point.rough = structure == estimate_structure::full_coupling && !surfaces_.smooth();
     point.n_given = store_ == nullptr;  // a ladder's rungs share its level_store (level_ladder.hpp)
     // Level 2n solved once, for the table and the peak alike (its pressure read before another level is solved).
     std::optional<std::optional<estimate_level>> above;

@@ -250,7 +250,7 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
         // 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two estimates.
         const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
         const double fine_bound = [&]() {
-            if (!coupled || p.kinks_carried || p.self != 2 || 2 * p.n > max_nodes || !(d1 * d2 < 0.0) ||
+            if (!coupled || !p.rough || p.self != 2 || 2 * p.n > max_nodes || !(d1 * d2 < 0.0) ||
                 std::fabs(d2) <= floor)
                 return 0.0;
             if (!above_tried) above_peak = finer();
@@ -381,15 +381,15 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         const bool confirm = p.structure == estimate_structure::paper && b.resolved &&
                              (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
         const bool chance = !coupled && !b.resolved && p.checks_hold && q.second_chance;
-        // Full coupling on rough rollers (the kinks not carried: smooth rollers' changes of opposite sign were measured
-        // bounded, 8(q)), changes of opposite sign above the floor: the levels are not yet where twice the larger
+        // Full coupling on rough rollers (smooth rollers' changes of opposite sign were measured bounded, 8(q)),
+        // changes of opposite sign above the floor: the levels are not yet where twice the larger
         // change bounds what follows (8(q) "Changes of opposite sign": the rough pair braked
         // at Q/f = -0.99, stick start -1.2e-6, +1.0e-7 over n = 32, 64, 128, then -3.2e-6 to 256; level 128 lies
         // 5.2e-6 from n = 1000 against its estimate 2.3e-6). Level 2n confirms (on a ladder's rung too: the store
         // does not give that level to rung 2n, which solves it again where rung n does not answer); where it cannot
         // be solved, no estimate. Above n = max_nodes/2 no level 2n exists: the rule of three levels stands there,
         // the limit 8(q) states.
-        const bool erratic = coupled && !p.kinks_carried && !three_level && b.resolved && !rounding &&
+        const bool erratic = coupled && p.rough && !three_level && b.resolved && !rounding &&
                              2 * p.n <= max_nodes && (v.middle - v.coarsest) * (v.finest - v.middle) < 0.0;
         if (erratic) {
             const estimate_level* a = p.self == 2 ? finer_level() : nullptr;

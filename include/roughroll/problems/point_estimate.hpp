@@ -104,6 +104,9 @@ struct estimate_point {
     // Full coupling with the pressure's and the blends' kinks carried (smooth rollers, 8(r)): where every zone also
     // holds two nodes of the coarsest level, the levels' changes are read by the three-level rule (8(q)).
     bool kinks_carried = false;
+    // Full coupling on rough rollers (layers on either cylinder): changes of opposite sign outside the three-level rule
+    // are confirmed on level 2n (8(q) "Changes of opposite sign"); smooth rollers keep their measured rules.
+    bool rough = false;
     // n given by the caller, not a ladder's rung: a refusal at n < max_nodes may then advise leaving n out (on a rung
     // the ladder already tries the larger n, and its line would advise what the user did).
     bool n_given = true;
