@@ -385,6 +385,11 @@ double graded(const std::function<double(double)>& f, double lo, double hi, doub
     panel(lo, hi);
     return sum;
 }
+
+// I_c's part from a zone [l, r] where k, so a_c = A, is constant: int_l^r (A - a_c(x))/(t - x) dt in closed form (8(z)).
+double constant_zone_part(double A, double ax, double x, double l, double r) {
+    return A != ax && x != l && x != r ? (A - ax) * std::log(std::fabs((r - x) / (l - x))) : 0.0;
+}
 }  // namespace
 
 variable_k_weight::variable_k_weight(std::vector<double> ends, std::vector<double> k,
@@ -501,8 +506,7 @@ double variable_k_weight::i_c_by_quadrature(double x) const {
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
         const double l = ends[i], r = ends[i + 1];
         if (!varying_[i]) {
-            const double A = a_c_on(i, l);
-            if (A != ax && x != l && x != r) I += (A - ax) * std::log(std::fabs((r - x) / (l - x)));
+            I += constant_zone_part(a_c_on(i, l), ax, x, l, r);
             continue;
         }
         const std::function<double(double)> f = [&](double t) { return t == x ? 0.0 : (a_c_on(i, t) - ax) / (t - x); };
@@ -546,8 +550,7 @@ double variable_k_weight::i_c_at(double x, double ax) const {
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
         const double l = ends[i], r = ends[i + 1];
         if (!varying_[i]) {
-            const double A = a_c_on(i, l);
-            if (A != ax && x != l && x != r) I += (A - ax) * std::log(std::fabs((r - x) / (l - x)));
+            I += constant_zone_part(a_c_on(i, l), ax, x, l, r);
             continue;
         }
         const zone_rule& z = rules_[i];
