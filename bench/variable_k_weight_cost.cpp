@@ -3,7 +3,7 @@
 // timing is asserted anywhere). Five zones as free rolling has them (ends -0.7, 0.3, 0.5, 0.5055: the second stick zone
 // 0.0055 long), k = -k0, blend, +k0, blend, -k0 (8(x)'s continuous k, k0 = 0.0288) and the piecewise constant
 // k = -k0, 0, k0, 0, -k0; both discretisations (economical, dense) in one run, medians of 5 repetitions. Build:
-//   g++ -O2 -std=c++17 -Iinclude bench/variable_k_weight_cost.cpp build-s8/libroughroll_core.a -lgsl -lgslcblas
+//   g++ -O2 -std=c++17 -Iinclude bench/variable_k_weight_cost.cpp build-s8/libroughroll_core.a $(pkg-config --libs tomlplusplus) -lgsl -lgslcblas
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,7 +14,10 @@
 #include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"
 
+#include "../tests/variable_k_fixture.hpp"  // the five zones and 8(x)'s blended k, as the tests have them
+
 using namespace roughroll;
+using variable_k_fixture::blended;
 using clock_type = std::chrono::steady_clock;
 
 namespace {
@@ -23,20 +26,12 @@ double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
 }
-std::vector<std::function<double(double)>> blended(const std::vector<double>& e, double k0) {
-    auto t_of = [](double x, double l, double r) { return std::clamp((2.0 * x - l - r) / (r - l), -1.0, 1.0); };
-    return {{},
-            [=](double x) { return k0 * (2.0 * blend_plateau::theta3(t_of(x, e[1], e[2])) - 1.0); },
-            {},
-            [=](double x) { return k0 * (1.0 - 2.0 * blend_plateau::theta3(t_of(x, e[3], e[4]))); },
-            {}};
-}
 }  // namespace
 
 int main() {
-    const std::vector<double> ends{-1.0, -0.7, 0.3, 0.5, 0.5055, 1.0};
-    const double k0 = 0.0288;
-    const std::vector<double> k{-k0, 0.0, k0, 0.0, -k0};
+    const std::vector<double>& ends = variable_k_fixture::free_rolling_ends;
+    const double k0 = variable_k_fixture::free_rolling_k0;
+    const std::vector<double> k = variable_k_fixture::piecewise_k(k0);
     std::printf("case      n  route       points(w,d)   weight  recurrence(w) recurrence(d) Golub-Welsch(w+d) collocation+LU "
                 "  total   [s, medians of 5]\n");
     for (const bool blend : {true, false}) {

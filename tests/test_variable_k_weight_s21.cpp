@@ -22,6 +22,7 @@
 #include "roughroll/numerics/variable_k_weight.hpp"
 
 #include "jacobi_quadpack.hpp"
+#include "variable_k_fixture.hpp"
 
 using namespace roughroll;
 
@@ -300,18 +301,7 @@ TEST(VariableKWeight, BadZonesAreRefused) {
     EXPECT_THROW(variable_k_weight({-1.0, 0.9}, {0.1}), numerical_error);
 }
 
-namespace {
-// 8(x)'s continuous k on five zones: -k0 on the edges' slip zones, +k0 on the reversed one, and across the stick zones
-// the blend k0 S_3 = k0 (2 Theta_3 - 1) (8(r)), rising on the first, falling on the second: no jump anywhere.
-std::vector<std::function<double(double)>> blended(const std::vector<double>& e, double k0) {
-    auto t_of = [](double x, double l, double r) { return std::clamp((2.0 * x - l - r) / (r - l), -1.0, 1.0); };
-    return {{},
-            [=](double x) { return k0 * (2.0 * blend_plateau::theta3(t_of(x, e[1], e[2])) - 1.0); },
-            {},
-            [=](double x) { return k0 * (1.0 - 2.0 * blend_plateau::theta3(t_of(x, e[3], e[4]))); },
-            {}};
-}
-}  // namespace
+using variable_k_fixture::blended;  // 8(x)'s continuous k on five zones (variable_k_fixture.hpp)
 
 TEST(VariableKWeight, ContinuousBlendedKOnFiveZones) {
     // 8(z), "A varying k": the weight of 8(x)'s continuous k has no power at the stick zones' ends, and the rule, the
@@ -383,9 +373,9 @@ TEST(VariableKWeight, EconomicalDiscretisationAgreesWithTheDenseOne) {
     // and 3e-11 relative. Checked to fail: with 1.25 instead of 2
     // times the angle the nodes are 1.7e-13 and the points 6.4e-13 off at n = 256 (piecewise); with 1.0 times the
     // collocation refuses at n = 256 (its points 0.05 off the exact collocation).
-    const std::vector<double> ends{-1.0, -0.7, 0.3, 0.5, 0.5055, 1.0};
-    const double k0 = 0.0288;
-    const std::vector<double> k{-k0, 0.0, k0, 0.0, -k0};
+    const std::vector<double>& ends = variable_k_fixture::free_rolling_ends;
+    const double k0 = variable_k_fixture::free_rolling_k0;
+    const std::vector<double> k = variable_k_fixture::piecewise_k(k0);
     for (const bool blend : {true, false}) {
         const variable_k_weight w = blend ? variable_k_weight(ends, k, blended(ends, k0)) : variable_k_weight(ends, k);
         for (int n : {32, 64, 128, 256}) {
