@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Session 23's audit of the printed estimates (issue 24, "every estimate a bound"), continuing sessions 21 and 22
+// (validation/test_estimates_audit_s21.cpp, _s22.cpp) at the points they did not reach: `point ... --json` at the
+// default settings (no n: the ladder's rung, docs/formulation.md 8(q)) against the product solution at n = 1000 of the
+// same load, for every quantity the JSON key error_estimate holds. Each must hold |answer - reference| <= estimate +
+// the reference's own estimate (every estimate is absolute, in its quantity's units: error_estimate.hpp).
+// The smooth pair at full coupling driven at Q/f = 0.3 (five zones, W's weighted route of 8(x); its reference at
+// n = 1000 was refused in session 22 before W's fix) has a cheap reference (about 15 s CPU), solved here.
+// At --tolerance 1e-8 both smooth points are refused at once (8.5 s and 1.3 s CPU), each advising n = 256 with its
+// best estimate: the answers at n = 256 are audited here too. /work/notes/s23-audit3.md has the whole table and the
+// points not reached (docs/robustness.md "Session 23").
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "command_output.hpp"
+
+namespace {
+
+struct stored {
+    const char* key;
+    double value;     // the product solution at n = 1000
+    double estimate;  // its own printed estimate
+};
+
+struct comparison {
+    std::string key;
+    double estimate, distance, reference_estimate;
+};
+
+const char* const keys[] = {"c0", "stick_start", "xi", "hertz_load_ratio", "pressure_peak_p", "pressure_peak_r"};
+
+double value_of(const nlohmann::json& o, const std::string& key) {
+    if (key == "pressure_peak_p") return o["pressure_peak"]["p"].get<double>();
+    if (key == "pressure_peak_r") return o["pressure_peak"]["r"].get<double>();
+    return o[key].get<double>();
+}
+
+std::string data(const std::string& name) { return std::string(ROUGHROLL_DATA) + "/" + name; }
+
+// `scene` with coupling = "full" in a temporary file (removed by the caller).
+std::string full_coupling(const std::string& scene) {
+    return changed_scene(data(scene), {{"coupling = \"johnson\"", "coupling = \"full\""}}, "roughroll-audit-s23");
+}
+
+nlohmann::json point(const std::string& path, const std::string& options) {
+    const command_output o = run_command(std::string(ROUGHROLL_CLI) + " point " + path + " " + options + " --json --quiet");
+    EXPECT_EQ(o.status, 0) << options << "\n" << o.text;
+    return o.status == 0 ? nlohmann::json::parse(o.text) : nlohmann::json();
+}
+
+// The reference's rows: every estimate it prints, with its value.
+std::vector<stored> reference_rows(const nlohmann::json& r) {
+    std::vector<stored> out;
+    if (!r.is_object() || !r["error_estimate"].is_object()) return out;
+    for (const char* key : keys)
+        if (r["error_estimate"].contains(key)) out.push_back({key, value_of(r, key), r["error_estimate"][key].get<double>()});
+    return out;
+}
+
+// The default answer of `path` at `load` against the reference: one comparison per estimate printed, each asserted to
+// bound its distance with the reference's estimate added; every reference key must be printed.
+std::vector<comparison> audit(const std::string& path, const std::string& load, const std::vector<stored>& reference) {
+    const nlohmann::json a = point(path, load);
+    std::vector<comparison> out;
+    if (!a.is_object()) return out;
+    EXPECT_TRUE(a["checks_hold"].get<bool>()) << load;
+    const auto& e = a["error_estimate"];
+    EXPECT_TRUE(e.is_object()) << load << ": no estimate printed";
+    if (!e.is_object()) return out;
+    for (const stored& s : reference) {
+        EXPECT_TRUE(e.contains(s.key)) << load << " " << s.key;
+        if (!e.contains(s.key)) continue;
+        const comparison c{s.key, e[s.key].get<double>(), std::fabs(value_of(a, s.key) - s.value), s.estimate};
+        std::printf("%-24s n = %4d %-16s estimate %.3g distance %.3g (reference's estimate %.3g)\n", load.c_str(),
+                    a["n"].get<int>(), s.key, c.estimate, c.distance, c.reference_estimate);
+        EXPECT_LE(c.distance, c.estimate + c.reference_estimate) << load << " " << s.key;
+        out.push_back(c);
+    }
+    return out;
+}
+
+// How many of the rows the reference can tell (its estimate under half the distance) an estimate `factor` times
+// smaller would under-report.
+int caught_if_smaller(const std::vector<comparison>& rows, double factor, int& told) {
+    int caught = 0;
+    told = 0;
+    for (const auto& c : rows) {
+        if (c.reference_estimate >= 0.5 * c.distance) continue;
+        ++told;
+        if (c.distance > c.estimate / factor + c.reference_estimate) ++caught;
+    }
+    return caught;
+}
+
+}  // namespace
+
+// The smooth pair at full coupling driven at Q/f = 0.3: five zones (slip, stick, slip, stick, slip) on the weighted
+// route of 8(x), answered at rung 128 in under a second of CPU; its reference at n = 1000 (about 15 s CPU) is solved
+// here. Also n = 256 given: the answer a --tolerance 1e-8 refusal advises ("n = 256 answers with it", its stick start
+// +- 1.2e-6), so that refusal's figure is checked too. Measured on main 36eb361 (estimate / distance): rung 128 c0 30,
+// start 56, xi 23, P_H/P2 6.2, peak p 17, peak r 3.7 (within the reference's 6.1e-5); n = 256 22, 17, 9.0, 42, 13, 25.
+// The reference at n = 1000 is not much closer (its own estimates 1.9e-8 for c0, 1.2e-10 for xi against distances
+// 4.5e-8 and 3.1e-10), so only an estimate about 40 times too small is caught: 64 times smaller under-reports c0 and
+// xi at rung 128, which the test checks. On main before W's fix (b077a23) the reference was refused (179 s CPU, session
+// 22: "the five zones ... are not found again"), which fails the test.
+TEST(EstimatesAuditS23, FullCouplingDrivenFiveZonesWithinTheirEstimates) {
+    const std::string full = full_coupling("aluminium-on-steel.toml");
+    ASSERT_FALSE(full.empty());
+    const std::vector<stored> reference = reference_rows(point(full, "--Q-over-f 0.3 --method product --n 1000"));
+    EXPECT_EQ(reference.size(), 6u);
+    const std::vector<comparison> rows = audit(full, "--Q-over-f 0.3", reference);
+    EXPECT_EQ(rows.size(), 6u);
+    EXPECT_EQ(audit(full, "--Q-over-f 0.3 --n 256", reference).size(), 6u);
+    std::remove(full.c_str());
+    int told = 0;
+    const int caught = caught_if_smaller(rows, 64.0, told);
+    std::printf("an estimate 64 times smaller under-reports %d of the %d rows the reference can tell\n", caught, told);
+    EXPECT_GE(caught, 2);  // measured: c0 (distance 4.5e-8, estimate 1.4e-6) and xi (3.1e-10, 7.0e-9)
+}
+
+// The smooth pair at full coupling driven at Q/f = 0.99 (three zones) at n = 256, the n its --tolerance 1e-8 refusal
+// advises (stick start +- 2e-6); the default (rung 512) is validation/test_estimates_audit_s22.cpp's. Reference at
+// n = 1000 about 3 s CPU. Measured on main 36eb361: c0 53, start 11.5, xi 14.7, P_H/P2 13.6, peak p 413, peak r 9.1.
+TEST(EstimatesAuditS23, FullCouplingNearSlidingAtTheAdvisedN) {
+    const std::string full = full_coupling("aluminium-on-steel.toml");
+    ASSERT_FALSE(full.empty());
+    const std::vector<stored> reference = reference_rows(point(full, "--Q-over-f 0.99 --method product --n 1000"));
+    EXPECT_EQ(reference.size(), 6u);
+    EXPECT_EQ(audit(full, "--Q-over-f 0.99 --n 256", reference).size(), 6u);
+    std::remove(full.c_str());
+}
