@@ -49,7 +49,8 @@ std::string full_coupling(const std::string& scene) {
 }
 
 nlohmann::json point(const std::string& path, const std::string& options) {
-    const command_output o = run_command(std::string(ROUGHROLL_CLI) + " point " + path + " " + options + " --json --quiet");
+    const command_output o =
+        run_command(std::string(ROUGHROLL_CLI) + " point " + path + " " + options + " --json --quiet");
     EXPECT_EQ(o.status, 0) << options << "\n" << o.text;
     return o.status == 0 ? nlohmann::json::parse(o.text) : nlohmann::json();
 }
@@ -59,7 +60,8 @@ std::vector<stored> reference_rows(const nlohmann::json& r) {
     std::vector<stored> out;
     if (!r.is_object() || !r["error_estimate"].is_object()) return out;
     for (const char* key : keys)
-        if (r["error_estimate"].contains(key)) out.push_back({key, value_of(r, key), r["error_estimate"][key].get<double>()});
+        if (r["error_estimate"].contains(key))
+            out.push_back({key, value_of(r, key), r["error_estimate"][key].get<double>()});
     return out;
 }
 
