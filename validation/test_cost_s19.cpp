@@ -26,6 +26,7 @@
 #include "roughroll/io/scene_point.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/contact_internals.hpp"
+#include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/level_ladder.hpp"
 
 using namespace roughroll;
@@ -65,6 +66,11 @@ scene dimensionless_twin(const scene& physical, const std::string& extra = "") {
 // the climb is made once (on the program before, 64 and 128 twice: rung 256 solved its levels again from another
 // start), rung 256's alternation starts from level 128, and its numbers lie within their estimates of rung 256 solved
 // alone (a contact with no store: the chain 64, 128, 256 from Johnson's point at 64).
+// Session 23 (docs/formulation.md 8(j), "Johnson's point from the coarser rung's five zones"): rung 256's Johnson's
+// point (the plateau's and the weighted path's decision, 8(x), and the estimate's levels' start) comes from level 128's
+// five zones, which rung 128 solved: no three-zone search at 256 (on the program before, one: "Which is: 1"); the
+// contact alone, whose levels are fresh, searches them once at its level (they fail their checks there). Its numbers
+// within the estimates below guard the rule's answer; the golden outputs are identical.
 TEST(CostS19, FullCouplingRungsShareOneChain) {
     const dissimilar pair{beta_al_st, coupling_level::full};
     const double f = 0.05, Q = 0.75 * f;
@@ -82,11 +88,15 @@ TEST(CostS19, FullCouplingRungsShareOneChain) {
     }
     ASSERT_TRUE(answering->coupling() && a->estimate);
     EXPECT_EQ(answering->coupling()->start_level, 128);
+    ASSERT_NE(contact_internals::johnson_zones(*answering), nullptr);
+    EXPECT_EQ(contact_internals::johnson_zones(*answering)->three_zone_searches(), 0u);
     contact alone(roughness{}, f, solver_options{256}, pair);
     const tangential_solution p = alone.point(Q);
     const std::optional<error_estimate> e = alone.estimate(p);
     ASSERT_TRUE(e);
     ASSERT_EQ(p.layout.stick_zones(), 2u);
+    ASSERT_NE(contact_internals::johnson_zones(alone), nullptr);
+    EXPECT_EQ(contact_internals::johnson_zones(alone)->three_zone_searches(), 1u);
     EXPECT_LE(std::fabs(a->solution.start() - p.start()), std::min(a->estimate->start, e->start));
     EXPECT_LE(std::fabs(a->solution.start2() - p.start2()), std::min(a->estimate->start, e->start));
     EXPECT_LE(std::fabs(a->solution.c0() - p.c0()), std::min(a->estimate->c0, e->c0));

@@ -95,6 +95,8 @@ std::vector<estimate_level> contact_internals::levels_before(contact& c, double 
     return c.impl_->model_->levels_before(Q, [&c] { return c.impl_->below(); });
 }
 
+const dissimilar_zones* contact_internals::johnson_zones(contact& c) { return c.impl_->model_->johnson_zones(); }
+
 tangential_solution contact::continued_point(double Q, const tangential_solution& previous) {
     return impl_->model_->continued(Q, previous, [this] { return impl_->below(); });
 }

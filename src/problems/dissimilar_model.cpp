@@ -78,6 +78,7 @@ public:
 
     const normal_solution& normal() const override { return normal_; }
     tangential_solver* tangential() override { return &tangential_; }
+    const dissimilar_zones* johnson_zones() const override { return &zones_; }
     estimate_structure structure() const override { return estimate_structure::dissimilar; }
     double traction(const tangential_solution& d, double r) override { return zones_of_point().traction(d, r); }
     double slip_velocity(const tangential_solution& d, double r) override {
@@ -234,6 +235,10 @@ private:
     std::optional<tangential_solution> five_continued(double Q, const std::vector<johnson_model*>& below,
                                                       std::vector<double> ends, rounding_limits& met);
 
+    // Whether this level holds five zones at Q whose checks (3.3)-(3.4) hold (its point's, or a level's of an
+    // estimate, cached by five or five_continued).
+    bool five_hold(double Q) const { return last_five_ && last_five_load_ == Q && last_five_->checks.hold(); }
+
     std::optional<double> layers_;
     std::optional<tangential_solution> last_three_;
     std::optional<five_zone_solution> last_five_;
@@ -257,6 +262,20 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
         } else if (previous->layout.stick_zones() == 1 && previous->start() > -1.0) {
             guess = zone_guess{previous->start(), previous->c0()};
             opposite = previous->layout.opposite();
+        }
+    }
+    // Where the finest level below holds five zones at Q whose checks hold (a coarser rung of the ladder answered this
+    // load with them: its levels are this rung's, 8(q) "The rungs share their levels"), this level's five zones from
+    // them first, and three zones only where these are not found or fail their checks. The three zones' search
+    // (zone_solver: Newton from the coarser level's three zones, which fail the checks there, then the scan of every
+    // start, for both structures) was a fifth of the driven point (docs/performance.md, session 23); where its zones hold
+    // their checks at a level whose five zones hold theirs too, the discretisation has both structures' roots, and
+    // either is a point of the model at this n (the transitions of 8(j) 4a, where the two meet).
+    if (!below.empty() && below.back()->five_hold(Q)) {
+        rounding_limits tried;  // a route that does not answer here is the search below's, with its own notes
+        try {
+            if (std::optional<tangential_solution> s = five_point(Q, below, tried)) return *s;
+        } catch (const resolution_error&) {  // five zones failing the checks at this n: the three zones' search next
         }
     }
     for (johnson_model* level : below) {

@@ -502,6 +502,7 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
 }
 
 tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite, bool only_this_kind) {
+    ++three_zone_searches_;
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
         throw unadvised_refusal(no_three_zones(Q, f_,

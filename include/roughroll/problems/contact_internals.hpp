@@ -15,6 +15,8 @@
 
 namespace roughroll {
 
+class dissimilar_zones;
+
 struct contact_internals {
     // The two-parameter tangential solver of c's level; for method::one_parameter there is none:
     // throws input_error (contact::traction and contact::slip_velocity serve every method).
@@ -26,6 +28,8 @@ struct contact_internals {
     // The levels of c's estimate at Q solved before c's point, kept for c.point(Q) (point_model::levels_before; the
     // ladder's rule (a'), docs/formulation.md 8(q)); empty where c's model solves none first.
     static std::vector<estimate_level> levels_before(contact& c, double Q);
+    // Johnson's zones workspace of c's level (dissimilar rollers, either coupling level); null for any other model.
+    static const dissimilar_zones* johnson_zones(contact& c);
 };
 
 inline tangential_solver& tangential_of(contact& c) { return contact_internals::tangential(c); }

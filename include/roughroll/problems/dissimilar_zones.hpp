@@ -172,6 +172,9 @@ public:
     // only_this_kind: the structure `opposite` names, not the other one after it (full coupling's weighted steps, 8(w)).
     tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false,
                               bool only_this_kind = false);
+    // How many times solve was asked here (each a three-zone search, both structures where the first fails): a
+    // count of work, for tests that pin where a search is not made (Johnson's point from coarser five zones).
+    std::size_t three_zone_searches() const { return three_zone_searches_; }
 
     // Five zones at load Q, |Q| < f, by Newton in the four ends from `ends` = (s1, c1, s2, c2) (damped_newton),
     // with the forcing `beta` in place of |beta_D| where given (a step of the continuation in beta_D/f); empty
@@ -253,6 +256,7 @@ private:
     zone_memo<kinks_blend> kinks_blends_;  // kinks_blend_of's
     std::shared_ptr<const five_zone_solution> tractions_of_;  // traction's memo of a five-zone solution's p1
     std::unordered_map<double, double> tractions_;
+    std::size_t three_zone_searches_ = 0;  // solve's calls
 };
 
 }  // namespace roughroll

@@ -56,6 +56,9 @@ public:
     virtual const coupling_summary* coupling() const { return nullptr; }
     // The two-parameter tangential solver; nullptr for the one-parameter limit.
     virtual tangential_solver* tangential() = 0;
+    // Johnson's three- and five-zone workspace of this level (dissimilar rollers: Johnson's point, and full coupling's
+    // start); null for any other model. For tests that count its searches (contact_internals::johnson_zones).
+    virtual const dissimilar_zones* johnson_zones() const { return nullptr; }
     virtual estimate_structure structure() const = 0;
     virtual void set_checkpoint(std::function<void()> hook) { checkpoint_ = std::move(hook); }
     // This model at m nodes by the level method (model_levels): an estimate level, the companion n/2 of
