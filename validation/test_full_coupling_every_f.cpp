@@ -169,10 +169,12 @@ TEST(FullCouplingEveryF, PlateauCarriedWhereACoarsestLevelDoesNotResolveAStickZo
         const tangential_solution s = c.point(l.q_over_f * l.f);
         ASSERT_EQ(s.layout.stick_zones(), 2);
         ASSERT_NE(c.normal().kinks, nullptr);
-        // Since 8(x) ("Landed") five zones with both stick zones at least five_zone_spacings long take the weight w_N
-        // and carry the plateau at every such point; the rule above decides it on the old path only.
+        // Five zones with both stick zones at least five_zone_spacings long take the exact weight of 8(z) ("Wired",
+        // session 23; 8(x)'s w_N with the plateau before), which carries no plateau; the rule above decides it on the
+        // old path only.
         EXPECT_EQ(c.normal().kinks->weighted(), fewest >= five_zone_spacings) << fewest;
-        EXPECT_EQ(c.normal().kinks->plateaus(), l.carried || c.normal().kinks->weighted() ? 1u : 0u);
+        EXPECT_EQ(c.normal().kinks->variable(), c.normal().kinks->weighted()) << fewest;
+        EXPECT_EQ(c.normal().kinks->plateaus(), l.carried && !c.normal().kinks->weighted() ? 1u : 0u);
     }
 }
 
@@ -248,9 +250,11 @@ TEST(FullCouplingEveryF, EstimatesHoldOnBothSidesOfThePlateauThreshold) {
         const tangential_solution s = c.point(0.0);
         ASSERT_EQ(s.layout.stick_zones(), 2);
         ASSERT_NE(c.normal().kinks, nullptr);
-        // Both on the weight w_N since 8(x) ("Landed"), which carries the plateau at every weighted five-zone point.
+        // Both on the exact weight of 8(z) ("Wired", session 23), which carries no plateau (8(x)'s w_N carried it at
+        // every weighted five-zone point before): the threshold no longer changes the path here.
         EXPECT_TRUE(carried || c.normal().kinks->weighted());
-        EXPECT_EQ(c.normal().kinks->plateaus(), 1u);
+        EXPECT_TRUE(c.normal().kinks->variable());
+        EXPECT_EQ(c.normal().kinks->plateaus(), 0u);
         coarse_within_its_estimates_of_fine(full, f);
     }
     std::remove(full.c_str());

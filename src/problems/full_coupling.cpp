@@ -2,6 +2,7 @@
 #include "roughroll/problems/full_coupling.hpp"
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <cmath>
 #include <memory>
@@ -235,11 +236,11 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
     const tangential_solution& s = from.s;
     const double beta_d = from.beta_d, f = from.f;
     if (!smooth || s.layout.layers_neglected()) return nullptr;
-    // 8(x): five zones (slip-, stick, slip+, stick, slip-: the edges slip one way, sigma_E = -sign, p1 = sign (f p S + q),
-    // S = -1 at both edges) on the same weight, k_E = sigma_E beta_D f, p_q summed over both stick zones, each on the
-    // square-root weight with the blend's kinks 2 f p (Theta - Theta_3) in its q (8(r)); the right side keeps only
-    // beta_D sign f p (S_3 + 1), the reversed slip and its smoothed blends, less the plateau's carried part 2 f pbar B
-    // (8(p), carried at every such point: its ramp across the thin second zone is a near-step for the series, 8(x)).
+    // 8(x), 8(z): five zones (slip-, stick, slip+, stick, slip-: the edges slip one way, sigma_E = -sign, p1 = sign (f p S
+    // + q), S = -1 at both edges) on the exact weight w_k of (H + k) with 8(x)'s continuous k = sign beta_D f S_3 (S_3 the
+    // smoothed S, k = k_E = sigma_E beta_D f at both edges), p_q summed over both stick zones, each from its q on the
+    // square-root weight with the blend's kinks 2 f p (Theta - Theta_3) in it (8(r)): (D1) is solved whole, nothing on
+    // its right side (no plateau, no remainder: 8(z), "Wired").
     // Where `five` is false (weighs_five_zones), null: the old path of kinks_of.
     if (s.layout.stick_zones() == 2) {
         if (!five || !s.five) return nullptr;
@@ -249,32 +250,16 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
             if (!carries_q(*z) || z->weight_a > 0.0) return nullptr;
         auto k = std::make_shared<pressure_kinks>();
         k->set_weight(-v.sign * beta_d * f);
+        std::array<std::function<double(double)>, 2> psi;
+        int i = 0;
         for (const auto& [z, rise] : {std::pair<const tangential_solution*, double>{&v.zone1, 1.0}, {&v.zone2, -1.0}}) {
             const std::vector<double> c = z->psi_b;
             const double start = z->start(), rho = 0.5 * (z->c0() - z->start());
-            k->add_weighted_zone(
-                n, beta_d, v.sign, z->start(), z->c0(), 0.5,
-                [c, &from, start, rho, rise](double t) { return u_series(c, t) + blend_part(from, start, rho, rise, t); },
-                rules_of);
-        }
-        // The plateau of thin zones (8(p)) on the weight, at every weighted five-zone point: pbar = w_N P, P the cubic
-        // Hermite interpolant of g = p/w_N through g and g' at the zones' midpoints (add_weighted_plateau). P is a free
-        // choice (the right side loses exactly the P carried), so g' by a central difference (step 1e-3 rho, error
-        // O(1e-6 rho^2 g''')) only moves P off the interpolant by that much, not the answer.
-        if (v.zone1.c0() <= v.zone2.start()) {
-            const double a_n = k->weight_a();
-            const auto g = [&from, a_n](double r) { return from.normal.pressure(r) / jacobi_weight(a_n, 1.0 - a_n, r); };
-            const auto slope_at = [&g](double m, double rho) {
-                const double d = 1e-3 * rho;
-                return (g(m + d) - g(m - d)) / (2.0 * d);
+            psi[i++] = [c, &from, start, rho, rise](double t) {
+                return u_series(c, t) + blend_part(from, start, rho, rise, t);
             };
-            const double m1 = 0.5 * (v.zone1.start() + v.zone1.c0()), m2 = 0.5 * (v.zone2.start() + v.zone2.c0());
-            k->add_weighted_plateau(beta_d, v.sign, f,
-                                    blend_plateau(v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()),
-                                    {g(m1), g(m2)},
-                                    {slope_at(m1, 0.5 * (v.zone1.c0() - v.zone1.start())),
-                                     slope_at(m2, 0.5 * (v.zone2.c0() - v.zone2.start()))});
         }
+        k->set_variable(n, beta_d, v.sign, f, {v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()}, psi);
         return k;
     }
     if (s.layout.stick_zones() != 1 || s.layout.opposite() || !carries_q(s)) return nullptr;

@@ -162,6 +162,25 @@ normal_solution normal_solver::solve_weighted(const std::function<double(double)
     if (!weighted || !weighted->weighted())
         throw numerical_error("full coupling: the weighted normal solve (docs/formulation.md 8(w)) without its weight");
     const int n = rule_.n;
+    if (weighted->variable()) {
+        // The five zones on the exact weight of 8(z) ("Wired"): it carries the whole (D1), nothing on the right side.
+        // No projection is kept, so 8(u)'s G_H reads G's formula (dissimilar_zones::blended_G): -H[p] of this discrete
+        // p differs from it by beta_D sign (q - q_n) only, which moved the ends by at most 1.6e-9 at n = 128 (8(z)).
+        const pressure_kinks::variable_result v = weighted->solve_variable();
+        normal_solution s{rule_,
+                          how_,
+                          v.psi,
+                          std::vector<double>(n, 0.0),
+                          v.lambda,
+                          v.gamma,
+                          v.rcond,
+                          std::make_shared<const kernel_operator>(rule_, how_, 0.0, nullptr),
+                          coupled,
+                          0.0,
+                          std::move(weighted)};
+        s.offset = M_PI * s.gamma / (2.0 * s.lambda);
+        return s;
+    }
     const double a = weighted->weight_a(), k_e = weighted->weight_k();
     if (!weighted_ || weighted_->a != a) weighted_ = std::make_shared<weighted_system>(n, a);
     weighted_system& w = *weighted_;

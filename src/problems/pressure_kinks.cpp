@@ -5,11 +5,14 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <string>
 
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
+#include "roughroll/base/text.hpp"
+#include "roughroll/numerics/variable_k_weight.hpp"
 
 namespace roughroll {
 
@@ -224,12 +227,106 @@ void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double
     wzones_.push_back(std::move(z));
 }
 
+// set_variable's state (pressure_kinks.hpp; 8(z), "Wired").
+struct pressure_kinks::variable_state {
+    int n = 0;
+    std::array<double, 4> ends{};
+    std::unique_ptr<variable_k_weight> weight;   // w_k of (H - k_z), k_z = -k
+    std::unique_ptr<variable_k_collocation> colloc;
+    std::array<std::vector<double>, 2> b;        // U coefficients of g_Z, h w_d = sqrt(1 - t^2) g_Z(t) on zone Z
+    std::vector<double> psi, c;                  // solve_variable's, and psi's orthonormal coefficients
+    // Zone Z's t of r (|t| < 1 on the zone).
+    double t_of(int z, double r) const {
+        const double s = ends[2 * z], c = ends[2 * z + 1];
+        return (2.0 * r - s - c) / (c - s);
+    }
+    // sqrt(1 - t^2) g_n(t) on the stick zones (h w_d as carried), 0 elsewhere; and H[h w_d](r).
+    double carried(double r) const {
+        for (int z = 0; z < 2; ++z) {
+            const double t = t_of(z, r);
+            if (std::fabs(t) < 1.0) return std::sqrt((1.0 - t) * (1.0 + t)) * u_series(b[z], t);
+        }
+        return 0.0;
+    }
+    double cauchy(double r) const { return cauchy_u_series(b[0], t_of(0, r)) + cauchy_u_series(b[1], t_of(1, r)); }
+};
+
+void pressure_kinks::set_variable(int n, double beta_d, double sign, double f, const std::array<double, 4>& e,
+                                  const std::array<std::function<double(double)>, 2>& psi) {
+    if (!weighted_ || !wzones_.empty() || !plateaus_.empty() || variable_)
+        throw numerical_error("full coupling: the variable-k pressure (8(z)) needs set_weight alone before it");
+    if (!(-1.0 < e[0] && e[0] < e[1] && e[1] < e[2] && e[2] < e[3] && e[3] < 1.0))
+        throw numerical_error("full coupling: the variable-k pressure (8(z)) needs five zones of positive length");
+    auto st = std::make_shared<variable_state>();
+    st->n = n;
+    st->ends = e;
+    // k_z = -k = k0 (2 B - 1), k0 = -sign beta_D f: -k0 = -k_E at the edges (8(z)'s convention (H - k_z)).
+    const double k0 = -sign * beta_d * f;
+    const auto t_of = [](double x, double l, double r) { return std::clamp((2.0 * x - l - r) / (r - l), -1.0, 1.0); };
+    const double s1 = e[0], c1 = e[1], s2 = e[2], c2 = e[3];
+    std::vector<std::function<double(double)>> varying{
+        {}, [=](double x) { return k0 * (2.0 * blend_plateau::theta3(t_of(x, s1, c1)) - 1.0); }, {},
+        [=](double x) { return k0 * (1.0 - 2.0 * blend_plateau::theta3(t_of(x, s2, c2))); }, {}};
+    try {
+        st->weight = std::make_unique<variable_k_weight>(std::vector<double>{-1.0, s1, c1, s2, c2, 1.0},
+                                                         std::vector<double>{-k0, 0.0, k0, 0.0, -k0}, varying);
+        st->colloc = std::make_unique<variable_k_collocation>(*st->weight, n);
+    } catch (const numerical_error& e) {
+        // The weight's own checks (its masses, the collocation points' defect, QAGS of mu_0, mu_1, the panels' grading)
+        // failed at these ends: no fallback (header).
+        throw resolution_error("full coupling: the five zones' exact pressure weight (docs/formulation.md 8(z)) cannot "
+                               "be built at n = " + std::to_string(n) + " for the stick zones [" + shortest(s1) + ", " +
+                               shortest(c1) + "] and [" + shortest(s2) + ", " + shortest(c2) + "] (" + e.what() +
+                               "); another n (--n, or a tolerance for the ladder) may answer, and coupling = "
+                               "\"johnson\" answers the load");
+    }
+    // h = -beta_D sign sqrt(1 - t^2) psi_Z: g_Z = -beta_D sign psi_Z w_d at the zone's n Gauss-Chebyshev nodes.
+    const gauss_chebyshev rule = gauss_chebyshev::transform(n);
+    const double mu0 = st->weight->mu0(), amplitude = -beta_d * sign;
+    load_ = 0.0;
+    constant_ = 0.0;
+    for (int z = 0; z < 2; ++z) {
+        const double s = e[2 * z], c = e[2 * z + 1], rho = 0.5 * (c - s), m = 0.5 * (s + c);
+        std::vector<double> g(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i) {
+            const double t = rule.nodes[i];
+            g[i] = amplitude * psi[z](t) * st->weight->dual()(m + rho * t);
+        }
+        st->b[z] = u_coefficients(rule, g);
+        const std::vector<double>& b = st->b[z];
+        // C = -(1/pi) int h w_d = -(rho/2) b_0; int p_q = -int h w_d (r + 1 - mu_0), r = m + rho t, t = U_1/2 (8(z)).
+        constant_ += -0.5 * rho * b[0];
+        load_ += -rho * M_PI_2 * ((m + 1.0 - mu0) * b[0] + 0.5 * rho * (b.size() > 1 ? b[1] : 0.0));
+    }
+    if (legendre_nodes_.empty()) {
+        const gauss_legendre legendre(2 * n + 32);
+        legendre_nodes_ = legendre.nodes;
+        legendre_weights_ = legendre.weights;
+    }
+    variable_ = std::move(st);
+}
+
+pressure_kinks::variable_result pressure_kinks::solve_variable() {
+    if (!variable_) throw numerical_error("full coupling: solve_variable without set_variable");
+    variable_state& st = *variable_;
+    const std::vector<double> zero(static_cast<std::size_t>(st.n) + 1, 0.0);
+    // (H - k_z)[w_k psi] - xi - lambda' r = 0, int w_k psi = 1 - int p_q; with (H - k_z)[p_q] = h + C:
+    // (H + k) p = xi + lambda' r + h + C, i.e. gamma = -(xi + C), lambda = -(pi/2) lambda'.
+    const variable_k_collocation::solution s = st.colloc->solve_loaded(zero, st.colloc->points(), 1.0 - load_);
+    st.psi = s.psi;
+    st.c = st.colloc->coefficients(s.psi);
+    return {s.psi, -M_PI_2 * s.lambda, -(s.xi + constant_), st.colloc->rcond()};
+}
+
+double pressure_kinks::k_at(double r) const { return variable_ ? -variable_->weight->k_at(r) : k_e_; }
+
 void pressure_kinks::set_series(std::vector<double> phi_c) {
     series_ = std::move(phi_c);
     series_rec_ = std::make_shared<const jacobi_recurrence>(a_n_, 1.0 - a_n_, static_cast<int>(series_.size()));
 }
 
 double pressure_kinks::series_part(double r) const {
+    if (variable_) return std::fabs(r) < 1.0 ? (*variable_->weight)(r) * variable_->colloc->series(variable_->c, r) : 0.0;
     if (!(std::fabs(r) < 1.0) || series_.empty()) return 0.0;
     return jacobi_weight(a_n_, 1.0 - a_n_, r) * series_rec_->series(series_, r);
 }
@@ -240,6 +337,10 @@ double pressure_kinks::cauchy_outside(const weighted_zone& z, double x) const {
 
 double pressure_kinks::kink_part(double r) const {
     if (!(std::fabs(r) < 1.0)) return 0.0;
+    if (variable_) {  // p_q = -w_k (k_z sqrt(1 - t^2) g_n + H[h w_d]) (1/((1 + k_z^2) w_d) = w_k, 8(z))
+        const double kz = variable_->weight->k_at(r);
+        return -(*variable_->weight)(r) * (kz * variable_->carried(r) + variable_->cauchy(r));
+    }
     const double w_n = jacobi_weight(a_n_, 1.0 - a_n_, r), scale = 1.0 / (1.0 + k_e_ * k_e_);
     double sum = 0.0;
     for (const weighted_zone& z : wzones_) {
@@ -272,6 +373,11 @@ double pressure_kinks::factor(double r) const {
 
 double pressure_kinks::operator()(double r) const {
     if (!(std::fabs(r) < 1.0)) return 0.0;
+    if (variable_) {  // one evaluation of w_k for both parts
+        const variable_state& v = *variable_;
+        const double kz = v.weight->k_at(r);
+        return (*v.weight)(r) * (v.colloc->series(v.c, r) - (kz * v.carried(r) + v.cauchy(r)));
+    }
     if (weighted_) return series_part(r) + kink_part(r);
     return std::sqrt(1.0 - r * r) * factor(r);
 }
@@ -299,6 +405,12 @@ double pressure_kinks::integral(double lo, double hi) const {
 }
 
 double pressure_kinks::removed(double r) const {
+    if (variable_) {  // -h_n = -(1 + k_z^2) w_k sqrt(1 - t^2) g_n: what p_q carries exactly
+        const double c = variable_->carried(r);
+        if (c == 0.0) return 0.0;
+        const double kz = variable_->weight->k_at(r);
+        return -(1.0 + kz * kz) * (*variable_->weight)(r) * c;
+    }
     double sum = 0.0;
     for (const weighted_zone& z : wzones_) {
         const double t = (r - z.start) / z.rho - 1.0;
@@ -350,6 +462,7 @@ double pressure_kinks::constant() const { return constant_; }
 
 std::vector<double> pressure_kinks::ends() const {
     std::vector<double> e;
+    if (variable_) e.assign(variable_->ends.begin(), variable_->ends.end());
     for (const zone& z : zones_) {
         e.push_back(z.start);
         e.push_back(z.start + 2.0 * z.rho);
@@ -373,6 +486,7 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         k.whole_ = std::make_shared<const pressure_kinks>(*this);
         int n = 0;
         for (const weighted_zone& z : wzones_) n = std::max(n, z.rule->n);
+        if (variable_) n = variable_->n;
         const int m = static_cast<int>(std::ceil(10.0 * std::sqrt(static_cast<double>(std::max(n, 1))))) + 48;
         // A piece inside a weighted zone carries its q, a series of up to n terms (about n/2 periods in the piece's
         // angle), which M points alias: M + n there (8(x) "W's routes": at n = 1000, f = 0.2 M alone erred by 5.3e-12
@@ -384,6 +498,11 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         const auto in_zone = [this](double a, double e) {
             for (const weighted_zone& z : wzones_)
                 if (a >= z.start && e <= z.start + 2.0 * z.rho) return true;
+            // The wired five zones (8(z)): p_q carries the n-term U-series of h w_d on each stick zone (without M + n
+            // there the zone's load erred by -4.8e-10, +5.2e-10 at n = 512, 1000: session 23's review V5).
+            if (variable_)
+                for (int z = 0; z < 2; ++z)
+                    if (a >= variable_->ends[2 * z] && e <= variable_->ends[2 * z + 1]) return true;
             return false;
         };
         std::vector<double> cuts{s, c, 1.0}, inner = ends();

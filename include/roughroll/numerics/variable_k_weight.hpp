@@ -192,6 +192,10 @@ public:
     // H[w_k psi](x) for |x| < 1 not a node: the node sum plus psi(x) D(x) (exact for deg psi <= n - 1).
     double hilbert(const std::vector<double>& psi, double x) const;
     double load(const std::vector<double>& psi) const;  // int w_k psi = sum_j W_j psi_j
+    double rcond() const;  // of the last solve's LU (0 before any)
+    // interpolate() in two parts (the wired pressure's, 8(z)): the orthonormal coefficients once (O(n^2)), then O(n) per x.
+    std::vector<double> coefficients(const std::vector<double>& psi) const;
+    double series(const std::vector<double>& c, double x) const;  // c from coefficients()
 
 private:
     const variable_k_weight& weight_;
@@ -202,6 +206,7 @@ private:
     double defect_ = 0.0;
     std::unique_ptr<dense_system> plain_, loaded_;
     std::vector<double> loaded_h_;  // the h the loaded system was factorised with
+    std::vector<double> root_beta_;  // sqrt(beta_j) of the recurrence, for series()
     void assemble(gsl_matrix* m) const;
 };
 

@@ -102,6 +102,26 @@ public:
                            const std::function<double(double)>& psi, const pressure_kinks* rules_of = nullptr,
                            jacobi_rule_set* rules = nullptr);
     void set_series(std::vector<double> phi_c);
+    // The five zones' pressure at full coupling on the exact weight of 8(z) ("Wired", session 23; it replaced 8(x)'s w_N
+    // with the plateau and the remainder). After set_weight(k_E), k_E = -sign beta_D f: the operator is
+    // (H + k(r)), k = sign beta_D f S_3(r), S_3 = 2 B - 1 with B the plateau of the stick zones `ends` (s1, c1, s2, c2;
+    // blend_plateau), k = k_E at both edges; p = w_k psi + p_q on the weight of (H - k_z), k_z = -k (numerics/
+    // variable_k_weight), p_q = -(k_z h/(1 + k_z^2) + w_k H[h w_d]) for h = -beta_D sign q, q = sqrt(1 - t^2) psi_Z(t) on
+    // each stick zone (8(z), "The stick zones' part p_q for a varying k": 1/(1 + k^2) inside H), h w_d expanded in U_j on
+    // the zone's n Gauss-Chebyshev nodes. Nothing is left on (D1)'s right side: solve_variable gives the whole p.
+    // A weight or rule that cannot be built at these ends and n (numerics/variable_k_weight's checks) is a
+    // resolution_error naming what may answer (another n, coupling = "johnson"): no fallback to another discretisation,
+    // which would put the levels of one estimate on two (8(x), "The fallback").
+    void set_variable(int n, double beta_d, double sign, double f, const std::array<double, 4>& ends,
+                      const std::array<std::function<double(double)>, 2>& psi);
+    bool variable() const { return static_cast<bool>(variable_); }
+    // The k of (H + k) at r: k_E, or sign beta_D f S_3(r) after set_variable.
+    double k_at(double r) const;
+    struct variable_result {
+        std::vector<double> psi;  // at the nodes of w_k's rule
+        double lambda, gamma, rcond;  // P_H/P2, gamma = (2/pi) lambda e of (H + k) p + gamma + (2/pi) lambda r = -beta_D sign q
+    };
+    variable_result solve_variable();  // after set_variable; stores psi
     bool weighted() const { return weighted_; }
     double weight_a() const { return a_n_; }
     double weight_k() const { return k_e_; }
@@ -159,6 +179,8 @@ private:
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
     double load_ = 0.0, constant_ = 0.0;
     std::shared_ptr<const cut_convolution> normal_layer_, difference_layer_;  // add_layers' tables
+    struct variable_state;                       // set_variable's (pressure_kinks.cpp); shared by copies
+    std::shared_ptr<variable_state> variable_;
 };
 
 // W's Cauchy part of p_q^0 times the blend H of a stick zone [s, c] (docs/formulation.md 8(o), "W with the kinks"):
