@@ -202,6 +202,12 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
                           !normal().kinks->layered();
     point.rough = structure == estimate_structure::full_coupling && !surfaces_.smooth();
     point.n_given = store_ == nullptr;  // a ladder's rungs share its level_store (level_ladder.hpp)
+    // The ladder's tolerance, where a confirmation on level 2n would be asked of a rung that cannot answer without it
+    // (level_store::fails_tolerance, 8(q) "Changes of opposite sign").
+    if (store_ && store_->fails_tolerance())
+        point.fails_tolerance = [this, &s, fails = store_->fails_tolerance()](const error_estimate& x) {
+            return fails(s, normal().lambda, x);
+        };
     // Level 2n solved once, for the table and the peak alike (its pressure read before another level is solved).
     std::optional<std::optional<estimate_level>> above;
     std::optional<pressure_peak> above_peak;
@@ -213,6 +219,7 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         return *above;
     };
     error_estimate e = estimate_from_levels(table, levels, finer_once, point);
+    point.lower_bound = e.lower_bound;  // level 2n not solved: the peak not confirmed either
     // The peak pressure from the same levels' pressures (no solve; a curve swept in c0 prints no peak). Level n's is
     // the reported pressure's: at full coupling model_'s at s, else its pressure, whose position Richardson's
     // extrapolation of P_H/P2 does not move (contact::normal).

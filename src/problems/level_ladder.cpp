@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include "roughroll/base/error.hpp"
@@ -83,6 +84,15 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
       levels_(std::make_shared<level_store>()),
       spectral_levels_(std::make_shared<level_store>()) {
     check_tolerance(tolerance_, "the tolerance");
+    levels_->set_tolerance_test(tolerance_test());
+}
+
+level_store::tolerance_test level_ladder::tolerance_test() const {
+    // check()'s test by value (a released contact keeps the store after the ladder ends).
+    return [tolerance = tolerance_, strength = strength_](const tangential_solution& s, double lambda,
+                                                          const error_estimate& e) {
+        return check_estimate(s, lambda, e, tolerance, strength).ratio > 1.0;
+    };
 }
 
 level_ladder::level_ladder(const solver_options& options, const roughness& surfaces,
@@ -214,6 +224,15 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         int n;
     };
     std::optional<best_reached> best;
+    // Rungs whose estimate is a lower bound (error_estimate::lower_bound: level 2n not solved where it would have
+    // confirmed, the tolerance failed without it), with their points: confirmed only where the climb is refused and
+    // one may be the best estimate reached, which the refusal names and advises to accept.
+    struct lower_bound {
+        int n;
+        tangential_solution solution;
+        double ratio;  // its check's: the confirmed estimate's is at least this
+    };
+    std::vector<lower_bound> lower_bounds;
     std::string last_reason, skipped, beyond_all;
     std::string not_solved;       // rule (a') refused a rung before its point (said after the best estimate reached)
     bool advised_last = false;    // the last rung tried refused the point with a line that says what to change
@@ -254,8 +273,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 continue;
             }
             const tolerance_check t = check(c, a.solution, *a.estimate);
-            if (t.ratio <= 1.0) return a;
-            if (!best || t.ratio < best->check.ratio) best = best_reached{t, n};
+            if (a.estimate->lower_bound) {
+                // Within the tolerance only by a confirmation, which raises every estimate: never (fails_tolerance).
+                if (t.ratio <= 1.0) throw std::logic_error("level_ladder: a lower bound within the tolerance");
+                lower_bounds.push_back({n, a.solution, t.ratio});
+            } else {
+                if (t.ratio <= 1.0) return a;
+                if (!best || t.ratio < best->check.ratio) best = best_reached{t, n};
+            }
             last_reason.clear();
             if (!a.estimate->changes || i + 1 == rungs_.size()) continue;
             // Full coupling: no rung above can answer (refused now), or the next one cannot and its
@@ -289,6 +314,29 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             last_reason = one_line(e.what());
             advised_last = true;
         }
+    }
+    // A lower bound below the best estimate reached may hide a better one: confirmed now (its level 2n solved, the
+    // ladder's test off), as its rung's estimate would have been without the test. Its refusal leaves it out.
+    for (const lower_bound& l : lower_bounds) {
+        if (best && l.ratio >= best->check.ratio) continue;
+        const level_store::tolerance_test test = tolerance_test();
+        levels_->set_tolerance_test({});
+        try {
+            contact& c = at(l.n);
+            const std::optional<error_estimate> e = c.estimate(l.solution);
+            if (e) {
+                const tolerance_check t = check(c, l.solution, *e);
+                if (!best || t.ratio < best->check.ratio) best = best_reached{t, l.n};
+            }
+        } catch (const beyond_method_error&) {
+            levels_->set_tolerance_test(test);
+            throw;
+        } catch (const resolution_error&) {  // refused on level 2n: not an estimate reached (its line is the rung's)
+        } catch (...) {  // the test on again however the estimate ends
+            levels_->set_tolerance_test(test);
+            throw;
+        }
+        levels_->set_tolerance_test(test);
     }
     // The rounding limit ends the climb at the rung that met it: no rung above was tried. Its line advises a smaller
     // n; a larger tolerance helps only where a lower rung answered with an estimate above it (`best`), said there.

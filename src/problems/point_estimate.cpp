@@ -246,23 +246,26 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
     bool above_tried = false;
     const auto bound = [&](double pressure_peak::*x, double floor) {
         const three_levels v{peaks[0].*x, peaks[1].*x, peaks[2].*x};
-        // Changes of opposite sign at full coupling on rough rollers (estimate_from_levels): level 2n's rule on n/2, n, 2n bounds level
-        // 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two estimates.
+        const char* const name = x == &pressure_peak::r ? "the peak pressure's position" : "the peak pressure";
+        // Changes of opposite sign at full coupling on rough rollers (estimate_from_levels): level 2n's rule on n/2, n,
+        // 2n bounds level 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two estimates.
+        // As the table's quantities, refused where level 2n cannot be solved or n/2, n, 2n give no estimate (a ladder's
+        // rung climbs): the three levels' rule is no bound there (8(q) "Changes of opposite sign"). Not confirmed where
+        // the estimate is a lower bound already (p.lower_bound: level 2n not solved, the rung cannot answer).
         const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
         const double fine_bound = [&]() {
-            if (!coupled || !p.rough || p.self != 2 || 2 * p.n > max_nodes || !(d1 * d2 < 0.0) ||
+            if (!coupled || !p.rough || p.lower_bound || p.self != 2 || 2 * p.n > max_nodes || !(d1 * d2 < 0.0) ||
                 std::fabs(d2) <= floor)
                 return 0.0;
             if (!above_tried) above_peak = finer();
             above_tried = true;
-            if (!above_peak) return 0.0;
+            if (!above_peak) refuse(p, name, v, p.n >> p.self);
             const three_levels fine{v.middle, v.finest, (*above_peak).*x};
             const peak_error fine_floor = peak_floors({peaks[1], peaks[2], *above_peak}, 2 * p.n);
             const double f = x == &pressure_peak::r ? fine_floor.r : fine_floor.p;
             const error_bound fb = coupled_bound(fine, f, false, order);
-            const double step = std::fabs(fine.finest - fine.middle);
-            return (fb.resolved ? fb.value : 2.0 * std::max(std::fabs(fine.finest - fine.middle),
-                                                            std::fabs(fine.middle - fine.coarsest)) + f) + step;
+            if (!fb.resolved) refuse(p, name, fine, p.n >> (p.self - 1));
+            return fb.value + std::fabs(fine.finest - fine.middle);
         }();
         // Level n is levels[self]; the coupled rule bounds the finest level: level n is farther by its changes above.
         const double own = p.self == 0 ? v.coarsest : p.self == 1 ? v.middle : v.finest;
@@ -367,6 +370,29 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         confirmed = true;
         return fb;
     };
+    // A ladder's rung (point.fails_tolerance): whether the estimate from n/4, n/2, n alone, every quantity's rule
+    // without level 2n, already fails the ladder's tolerance. A confirmation only raises an estimate (the larger of the
+    // two) or refuses it, so such a rung cannot answer whatever level 2n gives: level 2n is not solved for it (8(q)
+    // "Changes of opposite sign": the rough pair braked at Q/f = -0.99, --tolerance 1e-5, rung 256's level 512, 2.6 s of
+    // the climb's 17.9 s CPU, rung 512 then skipped by rule (a)). Asked once, where a confirmation is first needed.
+    std::optional<bool> fails_unconfirmed;
+    const auto fails_before_finer = [&]() {
+        if (!fails_unconfirmed) {
+            error_estimate unconfirmed{0.0, 0.0, 0.0, 0.0, "", false};
+            bool resolved = true;
+            for (const estimated_quantity& q : table) {
+                const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
+                const error_bound b =
+                    coupled_bound(v, floor_over(q, q.floor, levels[0], levels[1], levels[2]), three_level, order);
+                resolved = resolved && b.resolved;
+                fold_estimate(unconfirmed, q, b.value);
+            }
+            // A quantity without an estimate is refused below, as without the ladder's test.
+            fails_unconfirmed = coupled && resolved && p.fails_tolerance && p.fails_tolerance(unconfirmed);
+        }
+        return *fails_unconfirmed;
+    };
+    bool lower_bound = false;
     std::vector<bool> on_finer(table.size(), false);  // checked on n/2, n, 2n
     std::vector<error_bound> bounds;
     for (std::size_t i = 0; i < table.size(); ++i) {
@@ -385,13 +411,15 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         // changes of opposite sign above the floor: the levels are not yet where twice the larger
         // change bounds what follows (8(q) "Changes of opposite sign": the rough pair braked
         // at Q/f = -0.99, stick start -1.2e-6, +1.0e-7 over n = 32, 64, 128, then -3.2e-6 to 256; level 128 lies
-        // 5.2e-6 from n = 1000 against its estimate 2.3e-6). Level 2n confirms (on a ladder's rung too: the store
-        // does not give that level to rung 2n, which solves it again where rung n does not answer); where it cannot
-        // be solved, no estimate. Above n = max_nodes/2 no level 2n exists: the rule of three levels stands there,
-        // the limit 8(q) states.
+        // 5.2e-6 from n = 1000 against its estimate 2.3e-6). Level 2n confirms; where it cannot be
+        // solved, no estimate. Above n = max_nodes/2 no level 2n exists: the rule of three levels stands there, the
+        // limit 8(q) states. A ladder's rung that fails its tolerance without level 2n does not solve it
+        // (fails_before_finer): its estimate is a lower bound, and rung 2n solves that level as its own point.
         const bool erratic = coupled && p.rough && !three_level && b.resolved && !rounding &&
                              2 * p.n <= max_nodes && (v.middle - v.coarsest) * (v.finest - v.middle) < 0.0;
-        if (erratic) {
+        if (erratic && p.self == 2 && fails_before_finer()) {
+            lower_bound = true;
+        } else if (erratic) {
             const estimate_level* a = p.self == 2 ? finer_level() : nullptr;
             if (a != nullptr) {
                 b = confirm_on_finer(q, *a, b);
@@ -471,7 +499,11 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
                            "change where the changes contract, else twice the larger of the two"
                          : " (dissimilar rollers, full coupling: level n, twice the larger of the "
                            "last two level changes") +
-            (confirmed ? "; confirmed on n/2, n, 2n where they changed sign)" : ")");
+            (confirmed    ? "; confirmed on n/2, n, 2n where they changed sign)"
+             : lower_bound ? "; above the tolerance before level 2n's confirmation where they changed sign: a lower "
+                             "bound)"
+                           : ")");
+        e.lower_bound = lower_bound;
         return e;
     }
     // Against what: Richardson's value's level n, else level n's neighbour n/2 (or 2n).

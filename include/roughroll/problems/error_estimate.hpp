@@ -51,13 +51,19 @@ struct error_estimate {
     // estimates (level_ladder, docs/formulation.md 8(q)); empty for every other rule.
     std::optional<coupled_changes> changes = std::nullopt;
     // The peak pressure's position and value; empty where the point's estimate has no levels (the edge layers
-    // neglected). Not among the quantities the ladder's tolerance asks for (level_ladder.hpp), nor ever a refusal.
+    // neglected). Not among the quantities the ladder's tolerance asks for (level_ladder.hpp), and a refusal only where
+    // its changes of opposite sign cannot be confirmed on level 2n (docs/formulation.md 8(q) "Changes of opposite sign").
     std::optional<peak_error> peak = std::nullopt;
     // Five zones (two stick zones): c0's estimate is the larger of the main zone's end and the second zone's end, the
     // start's of the two zones' starts (formulation 7 "What c0 means"); true where the second zone's is the larger, so
     // that a refusal names the zone end a user sees (level_ladder's check_estimate), not the member it is folded into.
     bool c0_second_zone = false;
     bool start_second_zone = false;
+    // A ladder's rung whose estimate from n/4, n/2, n already fails the ladder's tolerance where its changes of opposite
+    // sign would be confirmed on level 2n (8(q) "Changes of opposite sign"; rough rollers at full coupling): level 2n
+    // was not solved, so every member is only a lower bound of the estimate (a confirmation raises it or refuses). The
+    // rung cannot answer; the ladder confirms it only to name it as the best estimate reached (level_ladder::climb).
+    bool lower_bound = false;
 };
 
 }  // namespace roughroll

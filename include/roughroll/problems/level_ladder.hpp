@@ -112,6 +112,8 @@ public:
 
 private:
     using solve_rung = std::function<answer(contact&, int n)>;
+    // check()'s test as the store gives it to the rungs' estimates (level_store::fails_tolerance): by value.
+    level_store::tolerance_test tolerance_test() const;
     // `Q`: the load of a point (rule (a') asks the levels before a rung's point); empty for a swept point.
     answer climb(const solve_rung& solve, std::size_t from, std::optional<double> Q = std::nullopt);
     // Full coupling (docs/formulation.md 8(q)): for each rung above rung i, whether the point `a` of

@@ -35,6 +35,8 @@
 namespace roughroll {
 
 class point_model;
+struct tangential_solution;
+struct error_estimate;
 
 class level_store {
 public:
@@ -88,6 +90,16 @@ public:
         const auto it = made_.find(n);
         return it == made_.end() ? 0 : it->second;
     }
+
+    // The ladder's tolerance as its rungs' estimates may ask it (level_ladder's check_estimate of a point s with its
+    // P_H/P2 `lambda`): true where the estimate fails it. A rung's estimate whose changes of opposite sign would be
+    // confirmed on level 2n, and which fails it before that confirmation, cannot answer whatever level 2n adds, so it
+    // does not solve level 2n (docs/formulation.md 8(q) "Changes of opposite sign"; error_estimate::lower_bound).
+    // Empty outside a ladder and while the ladder confirms such an estimate. Holds values only (the ladder's tolerance
+    // and kernels' strength), never the ladder, which a released contact and its store outlive.
+    using tolerance_test = std::function<bool(const tangential_solution& s, double lambda, const error_estimate& e)>;
+    void set_tolerance_test(tolerance_test fails) { fails_tolerance_ = std::move(fails); }
+    const tolerance_test& fails_tolerance() const { return fails_tolerance_; }
 
 private:
     // While one lives, `hook` (an asker's checkpoint) is the one every shared model's solve calls; then the one before.
@@ -159,6 +171,7 @@ private:
     }
     std::vector<std::pair<key, std::unique_ptr<point_model>>> shared_;
     std::map<int, int> made_;
+    tolerance_test fails_tolerance_;
     const std::function<void()>* hook_ = nullptr;  // the asker at work's (at_work, asked)
 };
 

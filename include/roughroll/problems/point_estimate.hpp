@@ -110,6 +110,12 @@ struct estimate_point {
     // n given by the caller, not a ladder's rung: a refusal at n < max_nodes may then advise leaving n out (on a rung
     // the ladder already tries the larger n, and its line would advise what the user did).
     bool n_given = true;
+    // A ladder's rung (level_store::fails_tolerance): whether an estimate fails the ladder's tolerance. Where changes of
+    // opposite sign would be confirmed on level 2n and the estimate from n/4, n/2, n already fails it, level 2n is not
+    // solved (a confirmation only raises an estimate, or refuses it: the rung cannot answer either way), and the
+    // estimate is marked a lower bound (error_estimate::lower_bound); `lower_bound` then tells peak_from_levels.
+    std::function<bool(const error_estimate&)> fails_tolerance = nullptr;
+    bool lower_bound = false;
 };
 
 // The order p of the levels' error, ~ C n^-p, for method `how` (error_bound's rule, and each level's start from the
@@ -163,10 +169,12 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
 // of the three levels (coarsest first) whose normal solutions the point's estimate solved: no solve of its own. The
 // rule of the point's other quantities on the same levels (error_bound's; at full coupling twice the larger change
 // with its geometric tail, 8(e), not 8(q)'s three-level rule), with floors: for r twice the largest resolution of a level's position (the golden section's band, pressure_peak),
-// for p the pressure's rounding at the finest level. The peak is never a refusal: where the levels show no order, twice
-// the larger of the two changes, plus the changes from level n up to the finest (docs/performance.md "The peak
-// pressure's estimate"). At full coupling, where the changes change sign, level 2n's peak (`finer`, solved on demand;
-// none on a ladder's rung) confirms as the other quantities' (8(q) "Changes of opposite sign").
+// for p the pressure's rounding at the finest level. Where the levels show no order, twice the larger of the two
+// changes, plus the changes from level n up to the finest (docs/performance.md "The peak pressure's estimate"): no
+// refusal. At full coupling on rough rollers, where the changes change sign, level 2n's peak (`finer`, solved on demand)
+// confirms as the other quantities' (8(q) "Changes of opposite sign"), and as theirs, the peak is refused
+// (resolution_error) where level 2n cannot be solved or n/2, n, 2n show no estimate: a ladder's rung then climbs. Not
+// confirmed where point.lower_bound (the estimate is a lower bound already) or 2n > max_nodes (8(q)'s limit).
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point,
                             const std::function<std::optional<pressure_peak>()>& finer);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
