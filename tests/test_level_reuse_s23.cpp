@@ -63,6 +63,7 @@ TEST(LevelReuse, PeakConfirmedOnLevelTwoNOrRefused) {
             return peak_at(r);
         };
     };
+    EXPECT_TRUE(peak_asks_level_two_n(peaks, p));
     EXPECT_EQ(peak_from_levels(peaks, p, at(5.5)).r, 9.0);
     EXPECT_EQ(solved, 1);
 
@@ -95,6 +96,9 @@ TEST(LevelReuse, PeakConfirmedOnLevelTwoNOrRefused) {
     smooth.rough = false;
     EXPECT_EQ(peak_from_levels(peaks, smooth, at(5.5)).r, 4.0);
     EXPECT_EQ(solved, 0);
+    EXPECT_FALSE(peak_asks_level_two_n(peaks, top));
+    EXPECT_FALSE(peak_asks_level_two_n(peaks, smooth));
+    EXPECT_FALSE(peak_asks_level_two_n({peak_at(1.0), peak_at(3.0), peak_at(3.5)}, p)) << "one sign: not asked";
 }
 
 // xi changes +2, -0.5 over n/4, n/2, n (as test_sign_change_s22's made-up levels): without level 2n twice the larger,

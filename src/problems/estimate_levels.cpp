@@ -219,13 +219,18 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         return *above;
     };
     error_estimate e = estimate_from_levels(table, levels, finer_once, point);
-    point.lower_bound = e.lower_bound;  // level 2n not solved: the peak not confirmed either
     // The peak pressure from the same levels' pressures (no solve; a curve swept in c0 prints no peak). Level n's is
     // the reported pressure's: at full coupling model_'s at s, else its pressure, whose position Richardson's
     // extrapolation of P_H/P2 does not move (contact::normal).
     if (!swept) {
         std::array<pressure_peak, 3> peaks;
         for (int i = 0; i < 3; ++i) peaks[i] = peak_of_level(levels_[i] ? *levels_[i] : *model_);
+        // Level 2n not solved for the table (a lower bound): nor for the peak. Nor for the peak alone, which is no
+        // quantity of the ladder's tolerance, where the table's estimate already fails it: a lower bound as well.
+        if (!e.lower_bound && !above && point.fails_tolerance && peak_asks_level_two_n(peaks, point) &&
+            point.fails_tolerance(e))
+            e.lower_bound = true;
+        point.lower_bound = e.lower_bound;
         e.peak = peak_from_levels(peaks, point, [&]() -> std::optional<pressure_peak> {
             finer_once();
             return above_peak;

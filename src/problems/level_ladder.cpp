@@ -331,7 +331,11 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         } catch (const beyond_method_error&) {
             levels_->set_tolerance_test(test);
             throw;
-        } catch (const resolution_error&) {  // refused on level 2n: not an estimate reached (its line is the rung's)
+        } catch (const resolution_error& e) {  // refused on level 2n: no estimate reached there
+            if (l.n == last_n) {  // the climb ended at this rung (rule (b)): its refusal is the last reason
+                last_reason = one_line(e.what());
+                advised_last = true;
+            }
         } catch (...) {  // the test on again however the estimate ends
             levels_->set_tolerance_test(test);
             throw;

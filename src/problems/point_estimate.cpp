@@ -237,6 +237,22 @@ peak_error peak_floors(std::initializer_list<pressure_peak> peaks, int finest_n)
 }
 }  // namespace
 
+namespace {
+// Whether the peak's r or p over the three levels v (floor: their floor) is confirmed on level 2n: full coupling on
+// rough rollers, level n the finest, 2n within max_nodes, changes of opposite sign with the last above the floor.
+bool peak_confirms(const three_levels& v, double floor, const estimate_point& p) {
+    const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+    return p.structure == estimate_structure::full_coupling && p.rough && p.self == 2 && 2 * p.n <= max_nodes &&
+           d1 * d2 < 0.0 && std::fabs(d2) > floor;
+}
+}  // namespace
+
+bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const estimate_point& p) {
+    const peak_error floor = peak_floors({peaks[0], peaks[1], peaks[2]}, p.n << (2 - p.self));
+    return peak_confirms({peaks[0].r, peaks[1].r, peaks[2].r}, floor.r, p) ||
+           peak_confirms({peaks[0].p, peaks[1].p, peaks[2].p}, floor.p, p);
+}
+
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& p,
                             const std::function<std::optional<pressure_peak>()>& finer) {
     const int order = order_of(p.how);
@@ -254,9 +270,7 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
         // the estimate is a lower bound already (p.lower_bound: level 2n not solved, the rung cannot answer).
         const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
         const double fine_bound = [&]() {
-            if (!coupled || !p.rough || p.lower_bound || p.self != 2 || 2 * p.n > max_nodes || !(d1 * d2 < 0.0) ||
-                std::fabs(d2) <= floor)
-                return 0.0;
+            if (p.lower_bound || !peak_confirms(v, floor, p)) return 0.0;
             if (!above_tried) above_peak = finer();
             above_tried = true;
             if (!above_peak) refuse(p, name, v, p.n >> p.self);

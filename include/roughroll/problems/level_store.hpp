@@ -73,8 +73,9 @@ public:
     // level of the same n the next rung asks for (issue 24, cost; full coupling's one chain, point_model::shared_by_rungs).
     // The model made first keeps its own method for what it reports (JSON "method"), so an asker under 'extrapolated' (a
     // rung's contact) is given only a model made under 'extrapolated' (model(): never a level made first as 'product',
-    // e.g. a level 2n asked by rung n's estimate before rung 2n, which no estimate of full coupling asks today); a
-    // 'product' asker (a level) takes either.
+    // e.g. a level 2n asked by rung n's estimate before rung 2n: on smooth rollers none is asked, and on rough ones,
+    // which confirm changes of opposite sign on it, the key keeps the two methods apart anyway; docs/formulation.md 8(q)
+    // "Changes of opposite sign", session 23); a 'product' asker (a level) takes either.
     static method computed_by(const roughness& surfaces, method how);
     level_store();  // out of line, as the destructor: point_model is complete only in level_store.cpp
     level_store(const level_store&) = delete;

@@ -177,6 +177,8 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
 // confirmed where point.lower_bound (the estimate is a lower bound already) or 2n > max_nodes (8(q)'s limit).
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point,
                             const std::function<std::optional<pressure_peak>()>& finer);
+// Whether peak_from_levels asks `finer` (level 2n) of these peaks at this point, point.lower_bound aside.
+bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const estimate_point& point);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
 // the peak's difference from `coarse`'s, with the floors above at n nodes.
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
