@@ -225,8 +225,9 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     if (!swept) {
         std::array<pressure_peak, 3> peaks;
         for (int i = 0; i < 3; ++i) peaks[i] = peak_of_level(levels_[i] ? *levels_[i] : *model_);
-        // Level 2n not solved for the table (a lower bound): nor for the peak. Nor for the peak alone, which is no
-        // quantity of the ladder's tolerance, where the table's estimate already fails it: a lower bound as well.
+        // Level 2n not solved for the table (a lower bound): nor for the peak. Nor for the peak alone where the table's
+        // estimate already fails the ladder's tolerance: a lower bound as well. Right only while the peak is not read
+        // by the tolerance (check_estimate): e.peak is not set yet when the test is asked.
         if (!e.lower_bound && !above && point.fails_tolerance && peak_asks_level_two_n(peaks, point) &&
             point.fails_tolerance(e))
             e.lower_bound = true;

@@ -84,11 +84,10 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
       levels_(std::make_shared<level_store>()),
       spectral_levels_(std::make_shared<level_store>()) {
     check_tolerance(tolerance_, "the tolerance");
-    levels_->set_tolerance_test(tolerance_test());
 }
 
 level_store::tolerance_test level_ladder::tolerance_test() const {
-    // check()'s test by value (a released contact keeps the store after the ladder ends).
+    // check()'s test by value.
     return [tolerance = tolerance_, strength = strength_](const tangential_solution& s, double lambda,
                                                           const error_estimate& e) {
         return check_estimate(s, lambda, e, tolerance, strength).ratio > 1.0;
@@ -224,6 +223,18 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         int n;
     };
     std::optional<best_reached> best;
+    // The rungs' estimates see the tolerance during the climb alone (level_store::fails_tolerance): a contact's estimate
+    // asked at any other time (a curve's first rows, a released contact) confirms as without a ladder.
+    struct tolerance_seen {
+        level_store& store;
+        tolerance_seen(level_store& s, level_store::tolerance_test test) : store(s) {
+            store.set_tolerance_test(std::move(test));
+        }
+        tolerance_seen(const tolerance_seen&) = delete;
+        tolerance_seen& operator=(const tolerance_seen&) = delete;
+        ~tolerance_seen() { store.set_tolerance_test({}); }
+    };
+    const tolerance_seen seen(*levels_, tolerance_test());
     // Rungs whose estimate is a lower bound (error_estimate::lower_bound: level 2n not solved where it would have
     // confirmed, the tolerance failed without it), with their points: confirmed only where the climb is refused and
     // one may be the best estimate reached, which the refusal names and advises to accept.
@@ -317,10 +328,9 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     }
     // A lower bound below the best estimate reached may hide a better one: confirmed now (its level 2n solved, the
     // ladder's test off), as its rung's estimate would have been without the test. Its refusal leaves it out.
+    levels_->set_tolerance_test({});
     for (const lower_bound& l : lower_bounds) {
         if (best && l.ratio >= best->check.ratio) continue;
-        const level_store::tolerance_test test = tolerance_test();
-        levels_->set_tolerance_test({});
         try {
             contact& c = at(l.n);
             const std::optional<error_estimate> e = c.estimate(l.solution);
@@ -329,18 +339,13 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 if (!best || t.ratio < best->check.ratio) best = best_reached{t, l.n};
             }
         } catch (const beyond_method_error&) {
-            levels_->set_tolerance_test(test);
             throw;
         } catch (const resolution_error& e) {  // refused on level 2n: no estimate reached there
             if (l.n == last_n) {  // the climb ended at this rung (rule (b)): its refusal is the last reason
                 last_reason = one_line(e.what());
                 advised_last = true;
             }
-        } catch (...) {  // the test on again however the estimate ends
-            levels_->set_tolerance_test(test);
-            throw;
         }
-        levels_->set_tolerance_test(test);
     }
     // The rounding limit ends the climb at the rung that met it: no rung above was tried. Its line advises a smaller
     // n; a larger tolerance helps only where a lower rung answered with an estimate above it (`best`), said there.

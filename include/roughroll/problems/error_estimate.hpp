@@ -62,7 +62,8 @@ struct error_estimate {
     // A ladder's rung whose estimate from n/4, n/2, n already fails the ladder's tolerance where its changes of opposite
     // sign would be confirmed on level 2n (8(q) "Changes of opposite sign"; rough rollers at full coupling): level 2n
     // was not solved, so every member is only a lower bound of the estimate (a confirmation raises it or refuses). The
-    // rung cannot answer; the ladder confirms it only to name it as the best estimate reached (level_ladder::climb).
+    // rung cannot answer; the ladder confirms it only to name it as the best estimate reached. Such an estimate never
+    // leaves level_ladder::climb (the store's test is set during the climb alone): no printer reads this member.
     bool lower_bound = false;
 };
 

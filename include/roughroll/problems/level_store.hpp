@@ -96,8 +96,9 @@ public:
     // P_H/P2 `lambda`): true where the estimate fails it. A rung's estimate whose changes of opposite sign would be
     // confirmed on level 2n, and which fails it before that confirmation, cannot answer whatever level 2n adds, so it
     // does not solve level 2n (docs/formulation.md 8(q) "Changes of opposite sign"; error_estimate::lower_bound).
-    // Empty outside a ladder and while the ladder confirms such an estimate. Holds values only (the ladder's tolerance
-    // and kernels' strength), never the ladder, which a released contact and its store outlive.
+    // Set by level_ladder::climb for the climb alone (empty before and after it, and while it confirms such an
+    // estimate), so that no estimate asked outside a climb is a lower bound. Holds values only (the ladder's tolerance
+    // and kernels' strength), never the ladder.
     using tolerance_test = std::function<bool(const tangential_solution& s, double lambda, const error_estimate& e)>;
     void set_tolerance_test(tolerance_test fails) { fails_tolerance_ = std::move(fails); }
     const tolerance_test& fails_tolerance() const { return fails_tolerance_; }
