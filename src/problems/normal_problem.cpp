@@ -162,24 +162,28 @@ normal_solution normal_solver::solve_weighted(const std::function<double(double)
     if (!weighted || !weighted->weighted())
         throw numerical_error("full coupling: the weighted normal solve (docs/formulation.md 8(w)) without its weight");
     const int n = rule_.n;
-    if (weighted->variable()) {
-        // The five zones on the exact weight of 8(z) ("Wired"): it carries the whole (D1), nothing on the right side.
-        // No projection is kept, so 8(u)'s G_H reads G's formula (dissimilar_zones::blended_G): -H[p] of this discrete
-        // p differs from it by beta_D sign (q - q_n) only, which moved the ends by at most 1.6e-9 at n = 128 (8(z)).
-        const pressure_kinks::variable_result v = weighted->solve_variable();
+    // The solution on the weight: p is weighted's (its series set), nothing on the kernel's side (8(w)).
+    const auto on_weight = [&](std::vector<double> psi, double lambda, double gamma, double rcond) {
         normal_solution s{rule_,
                           how_,
-                          v.psi,
+                          std::move(psi),
                           std::vector<double>(n, 0.0),
-                          v.lambda,
-                          v.gamma,
-                          v.rcond,
+                          lambda,
+                          gamma,
+                          rcond,
                           std::make_shared<const kernel_operator>(rule_, how_, 0.0, nullptr),
                           coupled,
                           0.0,
                           std::move(weighted)};
         s.offset = M_PI * s.gamma / (2.0 * s.lambda);
         return s;
+    };
+    if (weighted->variable()) {
+        // The five zones on the exact weight of 8(z) ("Wired"): it carries the whole (D1), nothing on the right side.
+        // No projection is kept, so 8(u)'s G_H reads G's formula (dissimilar_zones::blended_G): -H[p] of this discrete
+        // p differs from it by beta_D sign (q - q_n) only, which moved the ends by at most 1.6e-9 at n = 128 (8(z)).
+        const pressure_kinks::variable_result v = weighted->solve_variable();
+        return on_weight(v.psi, v.lambda, v.gamma, v.rcond);
     }
     const double a = weighted->weight_a(), k_e = weighted->weight_k();
     if (!weighted_ || weighted_->a != a) weighted_ = std::make_shared<weighted_system>(n, a);
@@ -215,18 +219,8 @@ normal_solution normal_solver::solve_weighted(const std::function<double(double)
     std::vector<double> phi(n);
     for (int k = 0; k < n; ++k) phi[k] = gsl_vector_get(x, k);
     weighted->set_series(jacobi_coefficients(w.colloc.rule, phi));
-    normal_solution s{rule_,
-                      how_,
-                      phi,
-                      std::vector<double>(n, 0.0),
-                      gsl_vector_get(x, n + 1),
-                      gsl_vector_get(x, n) - weighted->constant(),
-                      w.system.rcond(),
-                      std::make_shared<const kernel_operator>(rule_, how_, 0.0, nullptr),
-                      coupled,
-                      0.0,
-                      std::move(weighted)};
-    s.offset = M_PI * s.gamma / (2.0 * s.lambda);
+    const double lambda = gsl_vector_get(x, n + 1), gamma = gsl_vector_get(x, n) - weighted->constant();
+    normal_solution s = on_weight(std::move(phi), lambda, gamma, w.system.rcond());
     s.projected = std::move(c);
     return s;
 }

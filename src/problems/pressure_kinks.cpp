@@ -16,6 +16,14 @@
 
 namespace roughroll {
 
+// integral()'s rule, made by the first of the calls that set the pressure's parts; later calls keep it.
+void pressure_kinks::keep_legendre_rule(int points) {
+    if (!legendre_nodes_.empty()) return;
+    const gauss_legendre legendre(points);
+    legendre_nodes_ = legendre.nodes;
+    legendre_weights_ = legendre.weights;
+}
+
 namespace {
 // The plateau's adaptive quadrature (kinks_blend::plateau_part): GSL's 21-point rule per piece in the cos map of
 // end_quadrature::piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
@@ -62,11 +70,7 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
             "full coupling: a stick zone of the pressure's kinks is not inside the contact "
             "(docs/formulation.md 8(l))");
     zone z{start, 0.5 * (c0 - start), beta_d * sign, {}, nullptr};
-    if (legendre_nodes_.empty()) {
-        const gauss_legendre legendre(2 * rule.n + 32);
-        legendre_nodes_ = legendre.nodes;
-        legendre_weights_ = legendre.weights;
-    }
+    keep_legendre_rule(2 * rule.n + 32);
     std::vector<double> g(static_cast<std::size_t>(rule.n));
     // int q r/sqrt(1 - r^2) dr and int q/sqrt(1 - r^2) dr over the zone: rho int sqrt(1 - t^2) g(t) (r, 1) dt,
     // by the rule's Gauss weights for sqrt(1 - t^2) (4.6), exact for the expansion g_n of degree n - 1 times r.
@@ -126,11 +130,7 @@ void pressure_kinks::add_plateau(double beta_d, double sign, double f, const ble
     // sign 2 f (alpha + slope eta) B: the plateau's moments.
     load_ += amplitude * (alpha * plateau.moment(1) + slope * plateau.moment(2));
     constant_ += amplitude * (alpha * plateau.moment(0) + slope * plateau.moment(1)) * M_1_PI;
-    if (legendre_nodes_.empty()) {
-        const gauss_legendre legendre(64);
-        legendre_nodes_ = legendre.nodes;
-        legendre_weights_ = legendre.weights;
-    }
+    keep_legendre_rule(64);
 }
 
 void pressure_kinks::add_weighted_plateau(double beta_d, double sign, double f, const blend_plateau& plateau,
@@ -197,11 +197,7 @@ void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double
                     {},
                     nullptr,
                     nullptr};
-    if (legendre_nodes_.empty()) {
-        const gauss_legendre legendre(2 * n + 32);
-        legendre_nodes_ = legendre.nodes;
-        legendre_weights_ = legendre.weights;
-    }
+    keep_legendre_rule(2 * n + 32);
     // G(t) = psi(t)/w_N(r(t)), analytic on the zone (inside the contact): its degree n - 1 interpolant on the zone's
     // Gauss-Jacobi nodes; the q carried is sign w_Z w_N G_n (removed()), so that (D1) holds for the p represented.
     const gauss_jacobi& rule = *z.rule;
@@ -298,11 +294,7 @@ void pressure_kinks::set_variable(int n, double beta_d, double sign, double f, c
         constant_ += -0.5 * rho * b[0];
         load_ += -rho * M_PI_2 * ((m + 1.0 - mu0) * b[0] + 0.5 * rho * (b.size() > 1 ? b[1] : 0.0));
     }
-    if (legendre_nodes_.empty()) {
-        const gauss_legendre legendre(2 * n + 32);
-        legendre_nodes_ = legendre.nodes;
-        legendre_weights_ = legendre.weights;
-    }
+    keep_legendre_rule(2 * n + 32);
     variable_ = std::move(st);
 }
 

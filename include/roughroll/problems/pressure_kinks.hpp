@@ -177,6 +177,7 @@ private:
     std::vector<double> series_;
     std::vector<weighted_zone> wzones_;
     std::vector<double> legendre_nodes_, legendre_weights_;  // integral's rule, 2n + 32 points (as chebyshev_projection)
+    void keep_legendre_rule(int points);
     double load_ = 0.0, constant_ = 0.0;
     std::shared_ptr<const cut_convolution> normal_layer_, difference_layer_;  // add_layers' tables
     struct variable_state;                       // set_variable's (pressure_kinks.cpp); shared by copies
