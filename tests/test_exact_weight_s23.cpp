@@ -28,6 +28,7 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
+#include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"
 #include "roughroll/problems/pressure_kinks.hpp"
 
@@ -223,20 +224,10 @@ TEST(ExactWeightS23, ZoneLoadOfTheWiredPressureAgainstQuadpack) {
         }
         b1[0] += 0.05;
         b2[0] += 0.03;
-        const auto series = [](const std::vector<double>& b, double t) {  // sum b_j U_j(t), by its recurrence
-            double u0 = 1.0, u1 = 2.0 * t, sum = b[0] + (b.size() > 1 ? b[1] * u1 : 0.0);
-            for (std::size_t j = 2; j < b.size(); ++j) {
-                const double u2 = 2.0 * t * u1 - u0;
-                u0 = u1;
-                u1 = u2;
-                sum += b[j] * u2;
-            }
-            return sum;
-        };
         pressure_kinks p;
         p.set_weight(-beta_d * f);
         p.set_variable(n, beta_d, 1.0, f, {s1, c1, s2, c2},
-                       {[&](double t) { return series(b1, t); }, [&](double t) { return series(b2, t); }});
+                       {[&](double t) { return u_series(b1, t); }, [&](double t) { return u_series(b2, t); }});
         p.solve_variable();
         const double s = s1 + 2e-9, c = c1 - 1e-9;
         const auto b = p.blend(s, c);
