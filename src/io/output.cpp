@@ -130,6 +130,23 @@ nlohmann::json to_json(const point_report& r) {
         estimate["pressure_peak_r"] = r.estimate->peak->r;
         estimate["pressure_peak_p"] = r.estimate->peak->p;
     }
+    if (r.estimate && r.estimate->zone_ends) {
+        // Full coupling's zone ends each with its own estimate, by one Richardson level where clean (docs/formulation.md
+        // 8(q)): beside level n's (c0, stick_start, zones). Only there: other points' keys unchanged.
+        const zone_end_values& x = *r.estimate->zone_ends;
+        const auto end = [](const std::optional<zone_end_value>& v) {
+            return v ? nlohmann::json{{"value", v->value},
+                                      {"error_estimate", v->error},
+                                      {"extrapolated", v->extrapolated}}
+                     : nlohmann::json(nullptr);
+        };
+        nlohmann::json ends = {{"c0", end(x.c0)}, {"stick_start", end(x.start)}};
+        if (s.layout.stick_zones() == 2) {
+            ends["second_zone_end"] = end(x.end2);
+            ends["second_zone_start"] = end(x.start2);
+        }
+        estimate["zone_ends"] = ends;
+    }
     nlohmann::json si = nullptr;
     if (r.si)
         si = {{"a_m", r.si->a},

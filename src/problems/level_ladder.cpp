@@ -285,8 +285,23 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
             const tolerance_check t = check(c, a.solution, *a.estimate);
             if (a.estimate->lower_bound) {
-                // Within the tolerance only by a confirmation, which raises every estimate: never (fails_tolerance).
-                if (t.ratio <= 1.0) throw std::logic_error("level_ladder: a lower bound within the tolerance");
+                // Never within the tolerance (stop-s23.md "Seen in the read"; 8(q) "Level 2n on a ladder"). An estimate is
+                // a lower bound only where the store's test (tolerance_test(): check_estimate by value, with this ladder's
+                // tolerance_ and strength_, which nothing assigns after construction) said it fails, at the same s (solve
+                // passes the s it returns to contact::estimate) and the same P_H/P2 (contact::normal, unchanged: a lower
+                // bound solves no level 2n, for the table nor for the peak, so nothing is solved between that test and
+                // this check). The test was shown either e itself (estimate_from's peak branch: e.peak, which
+                // check_estimate does not read, set after) or estimate_from_levels' `unconfirmed`, which equals e in
+                // every member check_estimate reads (lambda, c0, start, xi, Q and the second-zone flags): where
+                // fails_before_finer holds, every erratic quantity takes the lower-bound branch (asked once, cached),
+                // the paper's confirmation and the second chance are not asked at full coupling, level 2n is not solved
+                // (so the loop's confirmation of the rest does not run), and each quantity's bound is the same
+                // coupled_bound of the same levels and floor, folded in the same order; zone_ends is not read. The
+                // same arithmetic gives the same ratio, > 1. A violated invariant of the code, not a refusal: a bug.
+                if (t.ratio <= 1.0)
+                    throw std::logic_error("level_ladder: a lower bound within the tolerance at n = " +
+                                           std::to_string(n) + " (" + t.quantity + ": estimate " +
+                                           shortest(t.estimate) + ", tolerance " + shortest(tolerance_) + ")");
                 lower_bounds.push_back({n, a.solution, t.ratio});
             } else {
                 if (t.ratio <= 1.0) return a;

@@ -118,6 +118,29 @@ std::string no_honest_estimate(method how, int n, estimate_structure structure) 
            named[static_cast<int>(structure)] + ": ";
 }
 
+std::optional<zone_end_value> richardson_end(const three_levels& v, double noise, int order) {
+    // x_k = x + C/k^2 + e_k: the Richardson values R_k = x_k + (x_k - x_{k/2})/3 remove C/k^2, and delta = R_n - R_{n/2}.
+    // Where the rest e_k falls geometrically by r per doubling, R_n - x = delta/(r - 1) (for d1/d2 near 4 the rest is the
+    // smaller part of the changes): 2 |delta| holds it for every r >= 1.5, twice over for r >= 2 (a rest of order 1 or
+    // more; a higher order's r = 2^q >= 8 gives 14 times). r >= 1.5 is assumed, not checked: one ratio cannot tell a
+    // slower rest (r = 1.2 at 0.66 of C/n^2 gives d1/d2 = 3.88 and |R_n - x| = 2.5 times the estimate; 8(q) states it and
+    // what would check it, a second ratio from level n/8). Three levels show one ratio only, so a ratio near 4 by chance
+    // (the erratic part of 8(q) cancelling in delta) is what |d2|/2^p guards: the rest taken at least a method's-order
+    // step of the last change, as the three-level rule's |d1|/2^p (8(q)). Measured against n = 1000 in 8(q). Noise: each
+    // level's end lies within s = noise/2 of its discrete solution; R carries 5s/3, delta up to 10s/3, so an observed
+    // delta may be short by 5 noise/3 and 2 |delta| by 10 noise/3: with 3 noise added the estimate still holds
+    // |delta_true| + 5 noise/6 (r >= 2) wherever delta_true lies (2.5 noise needed). The check asks |d2| >= 4 noise so
+    // that the ratio is the changes', not the noise's.
+    const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+    const double ratio = d1 / d2;
+    if (!(std::fabs(d2) >= ends_clean_changes * noise && ratio >= ends_least_ratio && ratio <= ends_most_ratio))
+        return std::nullopt;
+    const double delta = (4.0 * d2 - d1) / 3.0;
+    const double error = std::max(2.0 * std::fabs(delta), std::ldexp(std::fabs(d2), -order)) + 3.0 * noise;
+    if (!std::isfinite(error)) return std::nullopt;
+    return zone_end_value{v.finest + d2 / 3.0, error, true};
+}
+
 int order_of(method how) { return level_of(how) == method::product ? 4 : 2; }
 
 namespace {
@@ -505,6 +528,33 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
             p.kinks_carried && fewest_zone_nodes(levels[2].solution, p.n / 2) >= 0.9 * resolved_zone;
         e.changes = coupled_changes{changes_of(last), changes_of(order_one),
                                     next_three_level ? std::ldexp(coupled_contracting_share, -order) : 2.0};
+        // One Richardson level for the zone ends (8(q), "One Richardson level for the zone ends"): smooth rollers, whose
+        // five zones on the exact weight (8(z)) converge at order 2 (the tangential side's blended stick zones on the
+        // square-root weight, 8(y)); each end where its own changes are clean, with the noise of the changes above.
+        // Rough rollers (changes of opposite sign confirmed on level 2n, never measured at order 2) are left out. A point
+        // with a zone under two nodes of level n/4 (the three-level rule's test, takes_three_level) keeps level n's ends:
+        // they fall between the same nodes, and a clean ratio there is chance (the driven Q/f = +0.75's trailing zone,
+        // 0.38 nodes of level 128: s2 falls 3.87 times from 256 to 512, then 17.6 times to 1000; its value would be
+        // 1.7e-8 from n = 1000's against an estimate of 1.2e-8).
+        if (!p.rough) {
+            const bool resolved = fewest_zone_nodes(levels[2].solution, p.n / 4) >= resolved_zone;
+            zone_end_values x;
+            for (std::size_t i = 0; i < table.size(); ++i) {
+                const estimated_quantity& q = table[i];
+                if (!q.newton_end) continue;
+                const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
+                const double noise =
+                    floor_over(q, q.floor, levels[0], levels[1], levels[2]) + 4.0 * coupling_end_tolerance;
+                const std::optional<zone_end_value> r = resolved ? richardson_end(v, noise, order) : std::nullopt;
+                std::optional<zone_end_value>& to = q.value == value_c0      ? x.c0
+                                                    : q.value == value_start ? x.start
+                                                    : q.value == value_end2  ? x.end2
+                                                                             : x.start2;
+                // Not clean: level n's value with its own bound, the one folded into its member (never smaller).
+                to = r ? *r : zone_end_value{v.finest, bounds[i].value, false};
+            }
+            e.zone_ends = x;
+        }
     }
     if (coupled) {
         e.against =

@@ -31,6 +31,20 @@ struct peak_error {
     double r, p;
 };
 
+// Full coupling's zone ends by one Richardson level of order 2 (docs/formulation.md 8(q), "One Richardson level for the
+// zone ends"), each end on its own: where its changes over the levels n/4, n/2, n fall at order 2 cleanly, its value from
+// levels n/2 and n, x_n + (x_n - x_{n/2})/3, and that value's estimate (`extrapolated`); elsewhere level n's value and
+// its own estimate (the one folded into c0's or the start's member). Values beside the point's: its zones, traction,
+// creep and the ends it reports (tangential_solution; error_estimate::c0, start) stay level n's.
+struct zone_end_value {
+    double value, error;
+    bool extrapolated;
+};
+struct zone_end_values {
+    // The second stick zone's ends for five zones only.
+    std::optional<zone_end_value> c0, start, end2, start2;
+};
+
 // The error estimate of a point, per quantity. Every estimate comes from three levels of the same
 // plain discretisation (the method itself; product integration for method::extrapolated): n/4,
 // n/2, n where n/2 is in the asymptotic range and n/4 can be solved, else n/2, n, 2n, else n, 2n,
@@ -65,6 +79,10 @@ struct error_estimate {
     // rung cannot answer; the ladder confirms it only to name it as the best estimate reached. Such an estimate never
     // leaves level_ladder::climb (the store's test is set during the climb alone): no printer reads this member.
     bool lower_bound = false;
+    // Full coupling on smooth rollers, levels n/4, n/2, n: each zone end by one Richardson level where its changes are
+    // clean order 2, else level n's with its own estimate (zone_end_values); empty for every other rule. Not read by the
+    // ladder's tolerance (level_ladder's check_estimate reads c0 and start, level n's): an answer's n is chosen as before.
+    std::optional<zone_end_values> zone_ends = std::nullopt;
 };
 
 }  // namespace roughroll

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/method.hpp"
 #include "roughroll/problems/error_estimate.hpp"
 #include "roughroll/problems/normal_solution.hpp"
@@ -182,6 +183,16 @@ bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const esti
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
 // the peak's difference from `coarse`'s, with the floors above at n nodes.
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
+
+// One Richardson level of order 2 for a zone end at full coupling (docs/formulation.md 8(q), "One Richardson level for
+// the zone ends"), from its levels n/4, n/2, n (`v`); `noise` the floor of a difference of two levels (the estimate's
+// floor of the ends and the alternation's tolerance, as the carried changes'), `order` the method's p. The end's
+// changes d1 = x_{n/2} - x_{n/4}, d2 = x_n - x_{n/2} are clean order 2 where |d2| is at least ends_clean_changes times
+// the noise and 3 <= d1/d2 <= 5 (one sign, falling 3 to 5 times per doubling); there the value x_n + d2/3 and its
+// error max(2 |delta|, |d2|/2^p) + 3 noise, delta = (4 d2 - d1)/3 the change of the Richardson values from n/2 to n.
+// Elsewhere empty, never a smaller estimate: the end keeps level n's value and its own estimate.
+inline constexpr double ends_least_ratio = 3.0, ends_most_ratio = 5.0, ends_clean_changes = 4.0;
+std::optional<zone_end_value> richardson_end(const three_levels& v, double noise, int order);
 
 // The first words of every refusal of an estimate: "no honest error estimate for method 'M' at
 // n = N (the structure): ".
