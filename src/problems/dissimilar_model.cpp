@@ -64,6 +64,30 @@ constexpr double layer_change_measured_to = 555.0;
 double layer_change_lower_bound(double x) {
     return x <= layer_change_measured_to ? 0.3 * std::exp(-0.57 * std::sqrt(x)) : 0.0;
 }
+// The crossing below which layer_change_lower_bound(t_c top^2) exceeds `tolerance` (< 0.3): where the rule refuses.
+double unresolved_crossing(int top, double tolerance) {
+    const double root_x = std::log(0.3 / tolerance) / 0.57;
+    return std::min(root_x * root_x, layer_change_measured_to) / (static_cast<double>(top) * top);
+}
+
+// Whether the scene has a roughness layer (2(b)): its kernels K1*, K2*.
+bool rough(const roughness& surfaces) {
+    return !kernel::tangential(surfaces).empty() || !kernel::normal(surfaces).empty();
+}
+
+// The advice of the quick refusal of rough rollers' free rolling (docs/formulation.md 8(n), "Rough rollers: beyond
+// every n"): no route neglects their layers, so only a smaller f answers; `reach` the f below which the rule refuses
+// no longer (the five zones resolved enough at the top rung, by the measured law), empty where it is not known.
+std::string rough_layers_advice(std::optional<double> reach) {
+    std::string advice = "the edge layers of these rough rollers are resolved, and their free rolling may be answered "
+                         "by its five zones, only at a smaller friction f";
+    if (reach && *reach > 0.0) {
+        // Rounded down to two digits: the advice never names an f the rule refuses.
+        const double unit = std::pow(10.0, std::floor(std::log10(*reach)) - 1.0);
+        advice += " (below about " + significant(std::floor(*reach / unit) * unit, 2) + " at this tolerance)";
+    }
+    return advice + "; no route neglects the layers of rough rollers (smooth rollers have one, 8(n))";
+}
 
 // Johnson's zones (dissimilar_zones) on the uncoupled pressure of a level: Johnson's level itself
 // (uncoupled_model) and the start of full coupling's alternation (coupled_model).
@@ -104,6 +128,10 @@ public:
     }
 
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
+        // Free rolling of rough rollers: their own crossing decides (8(n), "Rough rollers: beyond every n"), before
+        // item 11's estimate, which is the smooth pair's and 4.5 times too thick for them.
+        if (Q == 0.0 && rough(surfaces_))
+            if (std::optional<std::string> why = layers_beyond(Q, top, tolerance)) return why;
         // A leading slip zone thinner than the largest rung resolves (8(j) item 11): refused before any solve.
         if (!layers_negligible(Q)) {
             try {
@@ -112,29 +140,54 @@ public:
                 return std::string(why.what());
             }
         }
-        // Free rolling of smooth rollers at Johnson's level whose layers the tolerance does not neglect:
-        // the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp), which
-        // the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
-        const std::optional<double> crossing = unresolved_layers(Q, tolerance);
-        if (!crossing) return std::nullopt;
+        return layers_beyond(Q, top, tolerance);
+    }
+
+protected:
+    // Free rolling whose layers the tolerance does not neglect (smooth rollers at Johnson's level) or cannot (rough
+    // rollers, every level): the estimate at n is at least the change of 1 + s1 from n/2 (numerics/error_bound.hpp),
+    // which the ladder compares with tolerance (1 + s1); no rung n <= top meets it where the top one does not.
+    std::optional<std::string> layers_beyond(double Q, int top, double tolerance) const {
         // The law was measured on product integration.
         if (level_of(options_.how) != method::product) return std::nullopt;
+        const std::optional<double> crossing = unresolved_layers(Q, tolerance);
+        if (!crossing) return std::nullopt;
         const double x = *crossing * top * top;
         const double change = layer_change_lower_bound(x);
         if (!(change > tolerance)) return std::nullopt;
         std::ostringstream msg;
         msg.precision(2);
         msg << "no n up to " << top << " meets the tolerance " << shortest(tolerance)
-            << " (relative) for free rolling of these rollers at f = " << shortest(f_) << ": its edge layers, about "
-            << *crossing << " of the half-width, are too thin (at n = " << top
-            << " the five zones' leading layer still changes by more than " << change << " of itself from n = "
-            << top / 2 << ", docs/formulation.md 8(n))";
-        const std::string advice = edge_zones_advice(Q);
+            << " (relative) for free rolling of these rollers at f = " << shortest(f_) << ": its edge layers, ";
+        if (*crossing > 0.0)
+            msg << "about " << *crossing << " of the half-width,";
+        else
+            msg << "below the smallest double,";
+        msg << " are too thin (at n = " << top << " the five zones' leading layer still changes by more than "
+            << change << " of itself from n = " << top / 2 << ", docs/formulation.md 8(n))";
+        const std::string advice =
+            rough(surfaces_) ? rough_layers_advice(rough_reach(unresolved_crossing(top, tolerance)))
+                             : edge_zones_advice(Q);
         if (!advice.empty()) msg << "; " << advice;
         return msg.str();
     }
+    // Rough rollers: the friction at which the crossing falls to `crossing` (the rule's edge), where known.
+    virtual std::optional<double> rough_reach(double crossing) const {
+        // Johnson's level: below x0 the crossing is t_c = x0 exp(-(pi/|beta_D|)(f - g(x0))) (johnson_layers_crossing),
+        // g(x0) of the no-slip solution, which does not depend on f: the f of a crossing c is g(x0) + (|beta_D|/pi)
+        // log(x0/c).
+        const layers_crossing& here = rough_crossing();
+        if (!(crossing > 0.0 && crossing < here.x0)) return std::nullopt;
+        return here.friction_at(crossing);
+    }
+    // Johnson's level, free rolling of rough rollers: the crossing of this level's no-slip solution, made once.
+    const layers_crossing& rough_crossing() const {
+        if (!rough_crossing_)
+            rough_crossing_ = johnson_layers_crossing(normal_, kernel::tangential(surfaces_),
+                                                      kernel::normal(surfaces_), materials_.beta_d, f_);
+        return *rough_crossing_;
+    }
 
-protected:
     // `solve()`, its refusal (resolution_error) followed by what answers the load instead, where something does.
     template <class F>
     auto advised(double Q, F&& solve) const -> decltype(solve()) {
@@ -155,6 +208,8 @@ protected:
     // The crossing t_c of the edge layers whose resolution beyond_every_n bounds (free rolling of smooth rollers),
     // where the point needs them resolved: at Johnson's level where the tolerance does not neglect them.
     virtual std::optional<double> unresolved_layers(double Q, double tolerance) const {
+        // Rough rollers: no layers-neglected route, so always resolved, at their own crossing (8(n), "Rough rollers").
+        if (Q == 0.0 && rough(surfaces_)) return rough_crossing().crossing;
         const std::optional<double> bound = layers_bound(Q);
         if (!bound || *bound <= tolerance) return std::nullopt;
         return no_slip_layers(materials_.beta_d, f_).crossing;
@@ -240,6 +295,7 @@ private:
     bool five_hold(double Q) const { return last_five_ && last_five_load_ == Q && last_five_->checks.hold(); }
 
     std::optional<double> layers_;
+    mutable std::optional<layers_crossing> rough_crossing_;  // rough_crossing's, once asked
     std::optional<tangential_solution> last_three_;
     std::optional<five_zone_solution> last_five_;
     double last_five_load_ = 0.0;  // the load it was asked for
@@ -485,8 +541,29 @@ protected:
     // (8(p) "The edges"; 8(n) "Beyond every n", at full coupling, where the leading layer's changes lie above
     // Johnson's law).
     std::optional<double> unresolved_layers(double Q, double) const override {
+        // Rough rollers: the crossing of the no-slip limit with their layers (8(t), item 1; no route neglects them).
+        if (Q == 0.0 && rough(surfaces_)) return rough_limit().crossing(f_);
         if (!(Q == 0.0 && johnson_layers_)) return std::nullopt;
         return coupled_layers_crossing(materials_.beta_d, f_);
+    }
+    // The f at which the limit's crossing falls to `crossing` (it falls as f grows: atan f, 8(t) item 1), by bisection
+    // on (0, f]; the rule refuses f, so its crossing is below `crossing`.
+    std::optional<double> rough_reach(double crossing) const override {
+        const no_slip_coupled_solution& limit = rough_limit();
+        double lo = 0.0, hi = f_;
+        if (!(limit.crossing(hi) < crossing)) return std::nullopt;
+        for (int i = 0; i < 60 && hi - lo > 1e-6 * hi; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (mid > 0.0 && limit.crossing(mid) < crossing ? hi : lo) = mid;
+        }
+        return lo;
+    }
+    // The no-slip limit at full coupling with the scene's layers (8(t)): n = 64 puts its lambda and xi within 3e-9 of
+    // the extrapolated ones (8(t)'s table), phi(-1), which sets the crossing, likewise. Made once.
+    const no_slip_coupled_solution& rough_limit() const {
+        if (!rough_limit_)
+            rough_limit_ = no_slip_coupled(materials_.beta_d, kernel::tangential(surfaces_), kernel::normal(surfaces_), 64);
+        return *rough_limit_;
     }
     // Free rolling of smooth rollers: the no-slip limit at the tolerance its bound meets (8(t)), or Johnson's level
     // with its edge layers neglected (8(n)), at the tolerance it names where the default does not neglect them.
@@ -571,6 +648,7 @@ private:
 
     std::optional<double> johnson_layers_;  // layers_relative_bound at Johnson's level, for the advice
     std::optional<double> no_slip_relative_;  // the no-slip limit's largest relative bound (smooth rollers), 8(t)
+    mutable std::optional<no_slip_coupled_solution> rough_limit_;  // rough_limit's, once asked
     struct no_slip_route {
         no_slip_coupled_solution limit;
         normal_solution normal;

@@ -10,11 +10,13 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/gauss_chebyshev.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/no_slip_coupled.hpp"
+#include "roughroll/problems/tangential_solver.hpp"
 #include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 
@@ -230,6 +232,38 @@ double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f,
     // would be negative and the clamp would return -f p = f |p|, of a sign unrelated to p1's (review N5).
     const double bound = f * std::max(0.0, pressure);
     return std::max(-bound, std::min(bound, limit.traction(r)));
+}
+
+double layers_crossing::friction_at(double t) const { return g0 + slope * std::log(x0 / t); }
+
+layers_crossing johnson_layers_crossing(const normal_solution& normal, const kernel& k1, const kernel& k2,
+                                        double beta_d, double f) {
+    if (beta_d == 0.0 || !(f > 0.0)) throw input_error("the crossing of the edge layers needs beta_d != 0 and f > 0");
+    // The no-slip solution: the stick zone [-1, 1] of (4.4) with Dundurs' forcing (dissimilar_zones.hpp), bounded at
+    // both edges, Q = 0 (p even, p1 odd: 8(f)); its own solver, so that no level's factorisation is touched.
+    tangential_solver solver(normal, k1, k2, f);
+    const tangential_solution s = solver.solve_on_zone(-1.0, 1.0, beta_d);
+    // |p1|/p at x from the edge, the larger of the two edges (x carried without r's rounding: x >= 1e-3 here).
+    const auto g = [&](double x) {
+        return std::max(std::fabs(solver.traction(s, -1.0 + x)) / normal.pressure(-1.0 + x),
+                        std::fabs(solver.traction(s, 1.0 - x)) / normal.pressure(1.0 - x));
+    };
+    const double n = normal.rule.n;
+    const double x0 = std::max(1e-3, 10.0 * 0.5 * M_PI * M_PI / (n * n));
+    const double g0 = g(x0), slope = std::fabs(beta_d) / M_PI;
+    if (g0 < f) return {x0 * std::exp(-(f - g0) / slope), x0, g0, slope};
+    // From the centre (g = 0) outwards in steps of 1/4 in log x to the first point past f, then bisection.
+    double inside = 0.0, outside = inside;
+    for (;;) {
+        outside = std::max(inside - 0.25, std::log(x0));
+        if (g(std::exp(outside)) >= f) break;
+        inside = outside;
+    }
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (inside + outside);
+        (g(std::exp(mid)) >= f ? outside : inside) = mid;
+    }
+    return {std::exp(0.5 * (inside + outside)), x0, g0, slope};
 }
 
 double no_slip_traction(double beta_d, double r) {

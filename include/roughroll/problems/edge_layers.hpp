@@ -24,7 +24,9 @@
 // (not moved by the tangential traction).
 #pragma once
 
+#include "roughroll/model/kernel.hpp"
 #include "roughroll/problems/no_slip_coupled.hpp"
+#include "roughroll/problems/normal_solution.hpp"
 #include "roughroll/problems/tangential_solution.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 
@@ -107,6 +109,28 @@ tangential_solution coupled_no_slip_point(const no_slip_coupled_solution& limit,
 // within t_c of the edges (the layers). Where the reported p < 0 (the limit's tension within t_inf of an edge, 8(t)
 // "Where the limit is an approximation", item 2, inside the layers) p1 is 0.
 double coupled_no_slip_traction(const no_slip_coupled_solution& limit, double f, double pressure, double r);
+
+// The crossing t_c of free rolling's edge layers at Johnson's level for any pair, smooth or rough (docs/formulation.md
+// 8(n), "Rough rollers: beyond every n"): the distance from either edge (the larger of the two) where |p1|/p of the
+// no-slip solution reaches f. That solution is one linear solve on the level of `normal` (stick on [-1, 1], Dundurs'
+// forcing beta_d, layer kernels k1 = K1*, k2 = K2*; for rough rollers it has no closed form). g = |p1|/p grows like
+// (|beta_D|/pi) log(1/x) at x = 1 +- r -> 0, which no n resolves below a few end spacings, so where the crossing lies
+// below x0 = max(1e-3, ten end spacings (pi^2/2)/n^2) it is extrapolated from g(x0) with that slope:
+//   t_c = x0 exp(-(pi/|beta_D|)(f - g(x0))).
+// Measured on the rough pair (8(n), "Rough rollers"): the local slope rises to |beta_D|/pi from below as x falls (0.87
+// of it at 1e-2, 0.97 at 1e-3), so the extrapolation overestimates t_c: against the crossing found directly on n = 1000's
+// solution, by 1.7 %, 4 %, 6 % at f = 0.25, 0.3, 0.35 from n = 128 (x0 = 3e-3), 1 % to 2.4 % from n >= 256 (x0 = 1e-3);
+// smooth rollers: 8(n)'s 2/(1 + exp(pi f/|beta_D|)) within 0.6 % at n = 128 (g(x0) of the collocation). Above x0: the
+// root nearest the centre, by bisection in log x. 0 where the extrapolation underflows.
+struct layers_crossing {
+    double crossing;  // t_c at f
+    double x0, g0;    // the extrapolation's base: |p1|/p = g0 at x0 (the no-slip solution's; independent of f)
+    double slope;     // |beta_D|/pi
+    // The friction at which the extrapolated crossing is t < x0: g0 + slope log(x0/t).
+    double friction_at(double t) const;
+};
+layers_crossing johnson_layers_crossing(const normal_solution& normal, const kernel& k1, const kernel& k2,
+                                        double beta_d, double f);
 
 // The no-slip solution of 8(f) at Q = 0: its traction p1(r) on [-1, 1] and its creep xi.
 double no_slip_traction(double beta_d, double r);
