@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "roughroll/model/roughness.hpp"
+
 // Dundurs' beta_D, docs/formulation.md 8(a): ((1 - 2 nu1)/mu1 - (1 - 2 nu2)/mu2) / (2 C),
 // C = (1 - nu1)/mu1 + (1 - nu2)/mu2; written out here, not taken from the library's
 // physical_scene, so that the tests do not share its arithmetic.
@@ -22,4 +24,13 @@ inline double complete_slip_limit() {
         (2.0 * mid + std::sin(2.0 * mid) < M_PI_2 ? lo : hi) = mid;
     }
     return -2.0 / M_PI * std::cos(lo) * beta_al_st;
+}
+
+// The rough pair's layer (data/aluminium-on-steel-rough.toml) on roller 1 at its half-width (`roughroll point ... --json`,
+// si.roughness_at_a at n = 64; tests/rough_pair.hpp has it at a = a_H), in the tests of its free rolling.
+inline roughroll::roughness rough_pair_at_a() {
+    roughroll::roughness r;
+    r.cylinder1.tangential = {1.3075704137706388, 1.441667910063425};
+    r.cylinder1.normal = {4.748527233939407, 5.419389822743732};
+    return r;
 }

@@ -128,7 +128,8 @@ TEST(LadderRefusals, OnlyTheLadderRefusesAtOnce) {
                                [](int n) { return std::make_unique<contact>(roughness{}, 0.3, solver_options{n}); });
     EXPECT_EQ(paper_problem.point(0.0).solution.c0(), 1.0);  // full stick, answered at the first rung
     contact rough(roughness{{{1.0, 0.5}, {}}, {}}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::johnson});
-    // Rough rollers since session 24: their own crossing (validation/test_rough_free_rolling_s24.cpp).
+    // Rough rollers since session 24: their own crossing (validation/test_rough_free_rolling_s24.cpp); this layer's at
+    // f = 0.5 is t_c = 1.6e-5 (x = t_c 1000^2 = 16), so the law's tenth 0.031 exceeds 5e-7.
     EXPECT_TRUE(rough.beyond_every_n(0.0, 1000, fine).has_value());
     contact full(roughness{}, 0.5, solver_options{128}, dissimilar{beta_al_st, coupling_level::full});
     EXPECT_TRUE(full.beyond_every_n(0.0, 1000, fine).has_value());  // its own crossing (test_full_coupling.cpp)

@@ -21,21 +21,12 @@
 using namespace roughroll;
 
 namespace {
-// The scene's layer on roller 1 at its half-width (`roughroll point ... --json`, si.roughness_at_a at n = 64):
-// any rough pair would do; this is the one the refusal was reported on.
-roughness rough_pair() {
-    roughness r;
-    r.cylinder1.tangential = {1.3075704137706388, 1.441667910063425};
-    r.cylinder1.normal = {4.748527233939407, 5.419389822743732};
-    return r;
-}
-
 struct level {
     contact c;
     dissimilar_zones d;
     level(double f, int n)
-        : c(rough_pair(), f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson}),
-          d(tangential_of(c), kernel::tangential(rough_pair()), beta_al_st) {}
+        : c(rough_pair_at_a(), f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson}),
+          d(tangential_of(c), kernel::tangential(rough_pair_at_a()), beta_al_st) {}
 };
 
 void print(const char* what, double f, const five_zone_solution& s) {

@@ -29,14 +29,6 @@
 using namespace roughroll;
 
 namespace {
-// The scene's layer on roller 1 at its half-width (as validation/test_rough_free_rolling_s23.cpp).
-roughness rough_pair() {
-    roughness r;
-    r.cylinder1.tangential = {1.3075704137706388, 1.441667910063425};
-    r.cylinder1.normal = {4.748527233939407, 5.419389822743732};
-    return r;
-}
-
 // Thrown by the checkpoint: a level was about to be solved.
 struct level_solved : std::runtime_error {
     level_solved() : std::runtime_error("a level was solved") {}
@@ -52,8 +44,8 @@ struct ladder_run {
 ladder_run run(double f, coupling_level level) {
     ladder_run r;
     const solver_options options;
-    level_ladder ladder(options, rough_pair(), [&](int n) {
-        auto c = std::make_unique<contact>(rough_pair(), f, solver_options{n, options.how, options.zones},
+    level_ladder ladder(options, rough_pair_at_a(), [&](int n) {
+        auto c = std::make_unique<contact>(rough_pair_at_a(), f, solver_options{n, options.how, options.zones},
                                            dissimilar{beta_al_st, level});
         c->set_checkpoint([] { throw level_solved(); });
         return c;
@@ -91,14 +83,14 @@ TEST(RoughFreeRollingS24, CrossingOfSmoothRollersIsTheClosedForm) {
     }
 }
 
-// The rough pair at f = 0.2: its five zones (the search at n = 64, Newton at n = 128 from its ends) have the leading
+// The rough pair at f = 0.2 (and 0.25, near the rule's edge): its five zones (the search at n = 64, Newton at n = 128 from its ends) have the leading
 // layer 1 + s1 = (4/e^2) t_c (1 + O(t_c)) of the derivation (8(n), "The layers' positions": the inner problem on the scale
 // t_c, where the layer kernels are a regular term), with t_c the rough pair's own crossing (0.0054), not the smooth
 // formula's (0.025); and the layer's change from n = 64 to 128 lies on the law the quick refusal uses (8(n) item 2,
 // measured on smooth rollers: 3 exp(-0.57 sqrt(x)), x = t_c n^2), above the tenth of it that the rule takes.
 TEST(RoughFreeRollingS24, CrossingAndLawAgainstTheFiveZones) {
     const double f = 0.2;
-    const roughness rough = rough_pair();
+    const roughness rough = rough_pair_at_a();
     std::optional<five_zone_solution> coarse, fine;
     {
         contact c(rough, f, solver_options{64, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
@@ -128,6 +120,32 @@ TEST(RoughFreeRollingS24, CrossingAndLawAgainstTheFiveZones) {
     std::printf("x = %.1f: change %.4e, law %.4e\n", x, change, law);
     EXPECT_GT(change, 0.5 * law);
     EXPECT_LT(change, 2.0 * law);
+
+    // Near the rule's edge (x = 196 at n = 1000 and the default tolerance): f = 0.25, levels 160 and 320, x = 177, the
+    // five zones continued in f at n = 128 (Newton from the previous f's ends) and then in n.
+    std::optional<five_zone_solution> s = fine;
+    const auto next = [&](double at_f, int n, double* crossing = nullptr) {
+        contact l(rough, at_f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
+        if (crossing)
+            *crossing = johnson_layers_crossing(l.normal(), kernel::tangential(rough), kernel::normal(rough),
+                                                beta_al_st, at_f)
+                            .crossing;
+        dissimilar_zones d(tangential_of(l), kernel::tangential(rough), beta_al_st);
+        s = d.five_zones(0.0, {s->s1, s->c1, s->s2, s->c2});
+        ASSERT_TRUE(s && s->checks.hold()) << "f = " << at_f << ", n = " << n;
+    };
+    next(0.225, 128);
+    next(0.25, 128);
+    next(0.25, 160);
+    const double half = s->s1;
+    double t = 0.0;
+    next(0.25, 320, &t);
+    const double x_edge = t * 320.0 * 320.0, change_edge = std::fabs(s->s1 - half) / (1.0 + s->s1);
+    const double law_edge = 3.0 * std::exp(-0.57 * std::sqrt(x_edge));
+    std::printf("f = 0.25: t_c %.4e, x = %.1f: change %.4e, law %.4e\n", t, x_edge, change_edge, law_edge);
+    EXPECT_GT(x_edge, 150.0);
+    EXPECT_GT(change_edge, 0.5 * law_edge);
+    EXPECT_LT(change_edge, 2.0 * law_edge);
 }
 
 // f = 0.5, 1, 10, 1e3, 1e6 at both coupling levels: refused with no level solved, naming the friction below which the
