@@ -36,16 +36,17 @@ double second_zone(const nlohmann::json& a, const char* end) {
     return NAN;
 }
 
-// Each quantity of the answer `a` at n = `n` against the reference `b` at n = 1000: distance <= estimate(n) +
-// estimate(1000). The second zone's ends fold into c0's and the start's estimates (zone_ends_table); the peak where
+// Each quantity of the answer `a` at n = `n` against the reference `b` at n = `m` (1000 but in the cheap test):
+// distance <= estimate(n) + estimate(m). The second zone's ends fold into c0's and the start's estimates (zone_ends_table); the peak where
 // `peak`.
-void within_estimates(const nlohmann::json& a, const nlohmann::json& b, int n, bool peak) {
+void within_estimates(const nlohmann::json& a, const nlohmann::json& b, int n, bool peak, int m = 1000) {
     const auto& e = a["error_estimate"];
     const auto& eb = b["error_estimate"];
-    const auto row = [n](const char* name, double answer, double reference, double estimate, double reference_estimate) {
+    const auto row = [n, m](const char* name, double answer, double reference, double estimate,
+                            double reference_estimate) {
         const double distance = std::fabs(answer - reference);
-        std::printf("  %-12s distance from n = 1000 %.3g, estimates %.3g (%d) + %.3g (1000)\n", name, distance, estimate,
-                    n, reference_estimate);
+        std::printf("  %-12s distance from n = %d %.3g, estimates %.3g (%d) + %.3g (%d)\n", name, m, distance, estimate,
+                    n, reference_estimate, m);
         EXPECT_LE(distance, estimate + reference_estimate) << name;
     };
     const auto value = [](const nlohmann::json& j, const char* key) { return j[key].get<double>(); };
@@ -99,4 +100,20 @@ TEST(RoughFiveZones, DrivenAtTwoHundredthsFindsThePhysicalRootAtThreeTwenty) {
     ASSERT_EQ(a["zones"].size(), 5u);
     ASSERT_EQ(b["zones"].size(), 5u);
     within_estimates(a, b, 320, false);
+}
+
+// Free rolling at n = 48 against n = 128 (any finer answer with its own estimate serves as the reference): cheap enough
+// for the sanitized run (the two tests above are large_n), so that the rough pair's five zones through the CLI and
+// their estimates run under ASan/UBSan too. The reference can tell c0, the start and xi (its estimates 3.0e-7,
+// 1.8e-6, 9.8e-9 against distances 9.9e-7, 6.9e-6, 1.8e-8), so an estimate at n = 48 43 times too small fails on the
+// start (measured on main 57b4b3a: 48's estimates 7.7e-5, 2.2e-4, 1.1e-6). About 2 s CPU in Release.
+TEST(RoughFiveZones, FreeRollingAtFortyEightWithinItsEstimates) {
+    const nlohmann::json a = rough_free_rolling(48);
+    ASSERT_FALSE(a.is_null());
+    const nlohmann::json b = rough_free_rolling(128);
+    ASSERT_FALSE(b.is_null());
+    EXPECT_TRUE(a["checks_hold"].get<bool>());
+    ASSERT_EQ(a["zones"].size(), 5u);
+    ASSERT_EQ(b["zones"].size(), 5u);
+    within_estimates(a, b, 48, true, 128);
 }
