@@ -16,6 +16,12 @@
 
 namespace roughroll {
 
+// blend()'s kept tables and rules are of the pressure before a change (each of its changes calls this first).
+void pressure_kinks::drop_blend_tables() {
+    piece_tables_.reset();
+    blend_rules_.reset();
+}
+
 // integral()'s rule, made by the first of the calls that set the pressure's parts; later calls keep it.
 void pressure_kinks::keep_legendre_rule(int points) {
     if (!legendre_nodes_.empty()) return;
@@ -65,6 +71,7 @@ void add_graded_cuts(std::vector<double>& cuts, const kinks_plateau& b) {
 
 void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
                               const std::vector<double>& psi_b, const std::function<double(double)>& blend) {
+    drop_blend_tables();
     if (!(start > -1.0 && start < c0 && c0 < 1.0))
         throw numerical_error(
             "full coupling: a stick zone of the pressure's kinks is not inside the contact "
@@ -118,6 +125,7 @@ std::array<double, 5> plateau_moments(const blend_plateau& b) {
 
 void pressure_kinks::add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1,
                                  double h2) {
+    drop_blend_tables();
     if (weighted_)
         throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(x)) takes its plateau by "
                               "add_weighted_plateau");
@@ -135,6 +143,7 @@ void pressure_kinks::add_plateau(double beta_d, double sign, double f, const ble
 
 void pressure_kinks::add_weighted_plateau(double beta_d, double sign, double f, const blend_plateau& plateau,
                                           const std::array<double, 2>& g, const std::array<double, 2>& slopes) {
+    drop_blend_tables();
     if (!weighted_)
         throw numerical_error("full coupling: add_weighted_plateau (docs/formulation.md 8(x)) needs the weight w_N");
     // pbar/w_N = P(r), the cubic Hermite interpolant of g = p/w_N through g and g' at the zones' midpoints m1, m2:
@@ -164,6 +173,7 @@ void pressure_kinks::add_weighted_plateau(double beta_d, double sign, double f, 
 }
 
 void pressure_kinks::set_weight(double k_e) {
+    drop_blend_tables();
     if (!zones_.empty() || !plateaus_.empty() || !wzones_.empty())
         throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(w)) takes no U-series kinks");
     weighted_ = true;
@@ -174,6 +184,7 @@ void pressure_kinks::set_weight(double k_e) {
 void pressure_kinks::add_weighted_zone(int n, double beta_d, double sign, double start, double c0, double a_z,
                                        const std::function<double(double)>& psi, const pressure_kinks* rules_of,
                                        jacobi_rule_set* rules) {
+    drop_blend_tables();
     if (!weighted_) throw numerical_error("full coupling: a weighted kink zone before the pressure's weight (8(w))");
     if (!(start > -1.0 && start < c0 && c0 < 1.0))
         throw numerical_error(
@@ -231,6 +242,11 @@ struct pressure_kinks::variable_state {
     std::unique_ptr<variable_k_collocation> colloc;
     std::array<std::vector<double>, 2> b;        // U coefficients of g_Z, h w_d = sqrt(1 - t^2) g_Z(t) on zone Z
     std::vector<double> psi, c;                  // solve_variable's, and psi's orthonormal coefficients
+    // p(r) (operator()) at the points asked since solve_variable: the tangential side asks p again at the same r (its
+    // collocation points, checks and quadratures at every Newton step), and each costs w_k's I_c and psi's n-term series
+    // (8(z) "Wired": p's evaluations were two thirds of the wired free rolling point, session 24). The same value as
+    // afresh (a function of r).
+    mutable std::unordered_map<double, double, double_bits_hash> pressure;
     // Zone Z's t of r (|t| < 1 on the zone).
     double t_of(int z, double r) const {
         const double s = ends[2 * z], c = ends[2 * z + 1];
@@ -249,6 +265,7 @@ struct pressure_kinks::variable_state {
 
 void pressure_kinks::set_variable(int n, double beta_d, double sign, double f, const std::array<double, 4>& e,
                                   const std::array<std::function<double(double)>, 2>& psi) {
+    drop_blend_tables();
     if (!weighted_ || !wzones_.empty() || !plateaus_.empty() || variable_)
         throw numerical_error("full coupling: the variable-k pressure (8(z)) needs set_weight alone before it");
     if (!(-1.0 < e[0] && e[0] < e[1] && e[1] < e[2] && e[2] < e[3] && e[3] < 1.0))
@@ -299,6 +316,7 @@ void pressure_kinks::set_variable(int n, double beta_d, double sign, double f, c
 }
 
 pressure_kinks::variable_result pressure_kinks::solve_variable() {
+    drop_blend_tables();
     if (!variable_) throw numerical_error("full coupling: solve_variable without set_variable");
     variable_state& st = *variable_;
     const std::vector<double> zero(static_cast<std::size_t>(st.n) + 1, 0.0);
@@ -307,12 +325,14 @@ pressure_kinks::variable_result pressure_kinks::solve_variable() {
     const variable_k_collocation::solution s = st.colloc->solve_loaded(zero, st.colloc->points(), 1.0 - load_);
     st.psi = s.psi;
     st.c = st.colloc->coefficients(s.psi);
+    st.pressure.clear();
     return {s.psi, -M_PI_2 * s.lambda, -(s.xi + constant_), st.colloc->rcond()};
 }
 
 double pressure_kinks::k_at(double r) const { return variable_ ? -variable_->weight->k_at(r) : k_e_; }
 
 void pressure_kinks::set_series(std::vector<double> phi_c) {
+    drop_blend_tables();
     series_ = std::move(phi_c);
     series_rec_ = std::make_shared<const jacobi_recurrence>(a_n_, 1.0 - a_n_, static_cast<int>(series_.size()));
 }
@@ -367,8 +387,13 @@ double pressure_kinks::operator()(double r) const {
     if (!(std::fabs(r) < 1.0)) return 0.0;
     if (variable_) {  // one evaluation of w_k for both parts
         const variable_state& v = *variable_;
+        const auto found = v.pressure.find(r);
+        if (found != v.pressure.end()) return found->second;
         const double kz = v.weight->k_at(r);
-        return (*v.weight)(r) * (v.colloc->series(v.c, r) - (kz * v.carried(r) + v.cauchy(r)));
+        const double p = (*v.weight)(r) * (v.colloc->series(v.c, r) - (kz * v.carried(r) + v.cauchy(r)));
+        if (v.pressure.size() >= 200000) v.pressure.clear();
+        v.pressure.emplace(r, p);
+        return p;
     }
     if (weighted_) return series_part(r) + kink_part(r);
     return std::sqrt(1.0 - r * r) * factor(r);
@@ -423,6 +448,7 @@ double pressure_kinks::removed(double r) const {
 }
 
 void pressure_kinks::add_layers(const kernel& k2, const kernel& k1) {
+    drop_blend_tables();
     if (!plateaus_.empty())
         throw numerical_error("full coupling: the layer terms of the pressure's kinks are not built for the plateau "
                               "of five zones (docs/formulation.md 8(o))");
@@ -475,6 +501,7 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         // piece: a collocation point at a node spacing pi/(2n) (in the angle) from an end where p has a one-sided root
         // puts a pole of the subtracted integrand at twice that from the piece (in the angle); Gauss-Legendre then
         // converges like exp(-4 M/sqrt(n)) (Bernstein ellipse 1 + 2/sqrt(n)): M = 10 sqrt(n) + 48 gives e^-40 there.
+        if (!piece_tables_) piece_tables_ = std::make_shared<std::vector<piece_nodes>>();
         k.whole_ = std::make_shared<const pressure_kinks>(*this);
         int n = 0;
         for (const weighted_zone& z : wzones_) n = std::max(n, z.rule->n);
@@ -483,10 +510,16 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         // A piece inside a weighted zone carries its q, a series of up to n terms (about n/2 periods in the piece's
         // angle), which M points alias: M + n there (8(x) "W's routes": at n = 1000, f = 0.2 M alone erred by 5.3e-12
         // against QUADPACK, and its two interlaced rules differed by 1.3e-11, so W jumped where a point neared a node).
-        k.rule_ = std::make_shared<const gauss_legendre>(m);
-        k.zone_rule_ = std::make_shared<const gauss_legendre>(m + n);
-        k.graded_rule_ = std::make_shared<const gauss_legendre>(graded_points);
-        const gauss_legendre rules[2] = {gauss_legendre(m + 1), gauss_legendre(m + n + 1)};
+        if (!blend_rules_)
+            blend_rules_ = std::make_shared<blend_rules>(blend_rules{
+                std::make_shared<const gauss_legendre>(m), std::make_shared<const gauss_legendre>(m + n),
+                std::make_shared<const gauss_legendre>(graded_points), std::make_shared<const gauss_legendre>(m + 1),
+                std::make_shared<const gauss_legendre>(m + n + 1)});
+        k.rule_ = blend_rules_->rule;
+        k.zone_rule_ = blend_rules_->zone_rule;
+        k.graded_rule_ = blend_rules_->graded_rule;
+        k.second_rule_ = blend_rules_->second_rule;
+        k.second_zone_rule_ = blend_rules_->second_zone_rule;
         const auto in_zone = [this](double a, double e) {
             for (const weighted_zone& z : wzones_)
                 if (a >= z.start && e <= z.start + 2.0 * z.rho) return true;
@@ -503,14 +536,25 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
             if (e > s && e < 1.0) cuts.push_back(e);
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        // A piece between two of the kinks' ends (or one and the edge 1) is the same for every blend of this pressure:
+        // its nodes and p there are kept (piece_table) for the next blend, which multiplies them by its own H (bit for
+        // bit the product tabulate forms). Newton's steps move s and c, and each asks a blend of both stick zones: the
+        // pieces beyond the zones (the second stick zone's with M + n points) were tabulated afresh every time (the
+        // tabulation was a third of the wired free rolling point, session 24).
+        const std::vector<double> kink_ends = ends();
+        const auto fixed = [&kink_ends](double x) {
+            return x == 1.0 || std::find(kink_ends.begin(), kink_ends.end(), x) != kink_ends.end();
+        };
         for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-            kinks_blend::weighted_piece piece{cuts[i], cuts[i + 1], {}, {}, in_zone(cuts[i], cuts[i + 1])};
-            for (int l = 0; l < 2; ++l) {
-                const gauss_legendre& rule = l == 0 ? (piece.zone ? *k.zone_rule_ : *k.rule_) : rules[piece.zone ? 1 : 0];
-                piece.begin[l] = k.tables_[l].eta.size();
-                k.tabulate(rule, piece.a, piece.e, k.tables_[l]);
-                piece.end[l] = k.tables_[l].eta.size();
-            }
+            kinks_blend::weighted_piece piece{cuts[i], cuts[i + 1], 0, 0, in_zone(cuts[i], cuts[i + 1]), false};
+            piece.kept = fixed(piece.a) && fixed(piece.e);
+            const gauss_legendre& rule = piece.zone ? *k.zone_rule_ : *k.rule_;
+            piece.begin = k.tables_[0].eta.size();
+            if (piece.kept)
+                k.tabulate(piece_table(rule, piece.a, piece.e, 0), k.tables_[0]);
+            else
+                k.tabulate(rule, piece.a, piece.e, k.tables_[0]);
+            piece.end = k.tables_[0].eta.size();
             k.pieces_.push_back(piece);
         }
         // A point r at a distance d from a cut of a piece of length L sees the subtracted integrand's mirrored pole at
@@ -620,7 +664,7 @@ std::optional<double> kinks_blend::plateau_part(double r) const {
         if (!(e - a > 1e-15 * (1.0 + std::fabs(a)))) continue;
         const double half = 0.5 * (e - a);
         // A piece ending at r is asked at points of its own: not kept.
-        std::unordered_map<double, plateau_point, angle_hash>* memo = nullptr;
+        angle_memo* memo = nullptr;
         if (!(inside && (a == r || e == r))) {
             auto& pieces = *plateau_memo_;
             auto it = std::find_if(pieces.begin(), pieces.end(), [&](const plateau_piece& x) { return x.a == a && x.e == e; });
@@ -635,12 +679,11 @@ std::optional<double> kinks_blend::plateau_part(double r) const {
         const auto integrand = [&](double phi) {
             plateau_point x;
             if (memo) {
-                const auto found = memo->find(phi);
-                if (found != memo->end()) {
-                    x = found->second;
+                if (const plateau_point* found = memo->find(phi)) {
+                    x = *found;
                 } else {
                     x = point(phi);
-                    if (memo->size() < plateau_memo_points) memo->emplace(phi, x);
+                    if (memo->size() < plateau_memo_points) memo->insert(phi, x);
                 }
             } else {
                 x = point(phi);
@@ -669,6 +712,42 @@ void kinks_blend::tabulate(const gauss_legendre& rule, double a, double e, weigh
         table.weight.push_back(x.weight);
         table.g.push_back((*whole_)(x.eta) * blend_at(x.eta));
     }
+}
+
+void kinks_blend::tabulate(const pressure_kinks::piece_nodes& kept, weighted_table& table) const {
+    for (std::size_t j = 0; j < kept.eta.size(); ++j) {
+        table.eta.push_back(kept.eta[j]);
+        table.weight.push_back(kept.weight[j]);
+        table.g.push_back(kept.p[j] * blend_at(kept.eta[j]));
+    }
+}
+
+const pressure_kinks::piece_nodes& pressure_kinks::piece_table(const gauss_legendre& rule, double a, double e,
+                                                               int table) const {
+    for (const piece_nodes& kept : *piece_tables_)
+        if (kept.a == a && kept.e == e && kept.table == table) return kept;
+    piece_nodes kept{a, e, table, {}, {}, {}};
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        const mapped_node x = cos_map_node(rule, j, a, e);
+        kept.eta.push_back(x.eta);
+        kept.weight.push_back(x.weight);
+        kept.p.push_back((*this)(x.eta));
+    }
+    piece_tables_->push_back(std::move(kept));
+    return piece_tables_->back();
+}
+
+const kinks_blend::weighted_table& kinks_blend::second_table() const {
+    if (second_built_) return tables_[1];
+    for (const weighted_piece& piece : pieces_) {
+        const gauss_legendre& rule = piece.zone ? *second_zone_rule_ : *second_rule_;
+        if (piece.kept)
+            tabulate(whole_->piece_table(rule, piece.a, piece.e, 1), tables_[1]);
+        else
+            tabulate(rule, piece.a, piece.e, tables_[1]);
+    }
+    second_built_ = true;
+    return tables_[1];
 }
 
 double kinks_blend::blend_at(double eta) const {
@@ -712,7 +791,7 @@ double kinks_blend::near_part(double r, double gr, const near_group& group, trim
         for (std::size_t i = from; i < to; ++i) sum += t.weight[i] * (t.g[i] - gr) / (t.eta[i] - r);
     };
     for (std::size_t p = 0; p < pieces_.size(); ++p)
-        if (p < first || p > last) add(table, pieces_[p].begin[0], pieces_[p].end[0]);
+        if (p < first || p > last) add(table, pieces_[p].begin, pieces_[p].end);
     add(trimmed.left, 0, trimmed.left.eta.size());
     add(trimmed.right, 0, trimmed.right.eta.size());
     // [lo, hi] cut at the group's cuts and r, each part graded geometrically (ratio 2) towards each end from the
@@ -750,7 +829,7 @@ std::optional<double> kinks_blend::zone_load() const {
     const weighted_table& table = tables_[0];
     for (const weighted_piece& p : pieces_)
         if (p.e <= unit_.end())
-            for (std::size_t i = p.begin[0]; i < p.end[0]; ++i) sum += table.weight[i] * table.g[i];
+            for (std::size_t i = p.begin; i < p.end; ++i) sum += table.weight[i] * table.g[i];
     return sum;
 }
 
@@ -772,8 +851,9 @@ std::optional<double> kinks_blend::weighted_part(double r, double blend) const {
     }
     // A node within a thousandth of its weight (its local spacing) of r would lose eps |g|/|eta - r| of the difference
     // quotient to cancellation: then the other rule, whose nodes interlace (M and M + 1 points per piece), none as near.
-    for (const weighted_table& table : tables_) {
+    for (int l = 0; l < 2; ++l) {
         if (near) break;
+        const weighted_table& table = l == 0 ? tables_[0] : second_table();
         sum = 0.0;
         bool near_node = false;
         for (std::size_t i = 0; i < table.eta.size() && !near_node; ++i) {

@@ -19,6 +19,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <unordered_map>
@@ -46,6 +48,16 @@ struct piecewise_power_weight {
 
     double operator()(double x) const;  // 0 outside [-1, 1]; at an end x_j with e_j != 0: its limit (0 or inf)
     int zone_of(double x) const;        // 0 .. M - 1, the zone holding x (an interior end: the zone to its right)
+};
+
+// A memo's hash of a point x: its bits, mixed (std::hash<double> hashes its bytes; with it variable_k_weight's memo of m
+// took a tenth of the wired free rolling point, session 24). -0 and +0 are equal keys: one hash.
+struct double_bits_hash {
+    std::size_t operator()(double x) const {
+        std::uint64_t u = 0;
+        if (x != 0.0) std::memcpy(&u, &x, sizeof u);
+        return static_cast<std::size_t>((u * 0x9E3779B97F4A7C15ull) >> 32);
+    }
 };
 
 // The monic recurrence pi_{j+1} = (x - alpha_j) pi_j - beta_j pi_{j-1}, beta_0 = int w (Gautschi's convention).
@@ -133,7 +145,7 @@ private:
         double sine, m;  // sin(pi a(x)), m(x)
     };
     factors factors_at(double x) const;  // memoised (memo_; not thread safe, as the workspace below)
-    mutable std::unordered_map<double, factors> memo_;
+    mutable std::unordered_map<double, factors, double_bits_hash> memo_;
     double i_c_at(double x, double ax) const;  // I_c(x) with ax = a_c(x)
     struct panel_set {                  // 20-point Gauss-Legendre panels, a_c cached at their nodes
         std::vector<double> u, v;       // the panels

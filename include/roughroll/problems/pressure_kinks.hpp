@@ -23,6 +23,7 @@
 // (cut_convolution, the zone ends as cuts).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -182,6 +183,22 @@ private:
     std::shared_ptr<const cut_convolution> normal_layer_, difference_layer_;  // add_layers' tables
     struct variable_state;                       // set_variable's (pressure_kinks.cpp); shared by copies
     std::shared_ptr<variable_state> variable_;
+    // blend()'s tables of the pieces between the kinks' ends (pressure_kinks.cpp): per piece and table (0: M or M + n
+    // points, 1: one more), the nodes in the cos map, their weights and p there. Shared by copies; every change of the
+    // pressure drops them (not thread safe, as the tables of kinks_blend).
+    friend class kinks_blend;
+    struct piece_nodes {
+        double a, e;
+        int table;
+        std::vector<double> eta, weight, p;
+    };
+    mutable std::shared_ptr<std::vector<piece_nodes>> piece_tables_;
+    struct blend_rules {  // kinks_blend's rules (its rule_ .. second_zone_rule_), the same for every blend of this pressure
+        std::shared_ptr<const gauss_legendre> rule, zone_rule, graded_rule, second_rule, second_zone_rule;
+    };
+    mutable std::shared_ptr<blend_rules> blend_rules_;
+    const piece_nodes& piece_table(const gauss_legendre& rule, double a, double e, int table) const;
+    void drop_blend_tables();
 };
 
 // W's Cauchy part of p_q^0 times the blend H of a stick zone [s, c] (docs/formulation.md 8(o), "W with the kinks"):
@@ -219,13 +236,18 @@ private:
     struct weighted_table {
         std::vector<double> eta, weight, g;  // the pieces' nodes, weights (d eta), p H there
     };
-    weighted_table tables_[2];  // M and M + 1 points per piece (interlaced nodes)
-    // The pieces [a, e] between the cuts, their entries [begin, end) in each table, and whether inside a weighted zone
-    // (then M + n points: q's n-term series).
+    // M and M + 1 points per piece (interlaced nodes). The second is read only where a point r lies within a thousandth
+    // of a node's weight of a node of the first (weighted_part): built then (second_table), not with every blend (half of
+    // the tabulation, which was a third of the wired free rolling point, session 24).
+    mutable weighted_table tables_[2];
+    mutable bool second_built_ = false;
+    const weighted_table& second_table() const;
+    // The pieces [a, e] between the cuts, their entries [begin, end) in the first table, whether inside a weighted zone
+    // (then M + n points: q's n-term series), and whether between two of the kinks' ends (pressure_kinks::piece_table).
     struct weighted_piece {
         double a, e;
-        std::size_t begin[2], end[2];
-        bool zone;
+        std::size_t begin, end;
+        bool zone, kept;
     };
     std::vector<weighted_piece> pieces_;
     // Cuts nearer one another than 16 bands, as one group: a point within `band` of them (lo_band < r < hi_band)
@@ -243,11 +265,15 @@ private:
         weighted_table left, right;  // the rule on [a of left, lo] and on [hi, e of right]
     };
     std::shared_ptr<std::vector<trimmed_pair>> trimmed_;  // per group, built at its first near point (shared by copies)
-    std::shared_ptr<const gauss_legendre> rule_, zone_rule_, graded_rule_;  // M, M + n and graded_points points
+    // M, M + n and graded_points points, and M + 1, M + n + 1 for the second table: the pressure's (blend_rules), made at its
+    // first blend (building them for every blend was a twentieth of the wired free rolling point, session 24).
+    std::shared_ptr<const gauss_legendre> rule_, zone_rule_, graded_rule_, second_rule_, second_zone_rule_;
     double near_part(double r, double gr, const near_group& group, trimmed_pair& trimmed) const;
     double blend_at(double eta) const;  // H of the zone [s, c] (8(g))
     // Appends `rule`'s nodes on [a, e] in the cos map, their weights and p H there to `table`.
     void tabulate(const gauss_legendre& rule, double a, double e, weighted_table& table) const;
+    // The same from a piece the pressure kept (pressure_kinks::piece_table), times this blend's H.
+    void tabulate(const pressure_kinks::piece_nodes& kept, weighted_table& table) const;
     // H[p_b H](r) of the plateaus' part p_b of p_q^0 (docs/formulation.md 8(p)): no expansion on one zone holds B, so
     // by adaptive quadrature of that part alone (closed form per point, smooth between the zones' ends and the cuts
     // graded about thin zones), with p_b(r) H(r) subtracted at r. Empty within 1e-9 of the edge r = 1.
@@ -261,16 +287,56 @@ private:
     struct plateau_point {
         double eta, part, sh, ch;
     };
-    struct angle_hash {  // the angle's bits, mixed (std::hash<double> hashes its bytes: 3 % of the driven point)
-        std::size_t operator()(double phi) const {
+    // One piece's points by the angle's bits: open addressing with linear probing, grown at half full (the integrand with a
+    // node-based std::unordered_map's lookups was a quarter of the driven point by leaf, session 24; the same points).
+    class angle_memo {
+    public:
+        const plateau_point* find(double phi) const {
+            if (keys_.empty()) return nullptr;
+            const std::uint64_t u = bits(phi);
+            for (std::size_t i = slot(u);; i = (i + 1) & (keys_.size() - 1)) {
+                if (keys_[i] == u) return &values_[i];
+                if (keys_[i] == empty) return nullptr;
+            }
+        }
+        void insert(double phi, const plateau_point& x) {
+            if (2 * (count_ + 1) > keys_.size()) grow();
+            place(bits(phi), x);
+            ++count_;
+        }
+        std::size_t size() const { return count_; }
+
+    private:
+        static constexpr std::uint64_t empty = ~std::uint64_t{0};  // a NaN's bits: no angle QAG asks
+        std::vector<std::uint64_t> keys_;
+        std::vector<plateau_point> values_;
+        std::size_t count_ = 0;
+        static std::uint64_t bits(double phi) {
             std::uint64_t u = 0;
             std::memcpy(&u, &phi, sizeof u);
-            return static_cast<std::size_t>((u * 0x9E3779B97F4A7C15ull) >> 32);
+            return u;
+        }
+        std::size_t slot(std::uint64_t u) const {
+            return static_cast<std::size_t>((u * 0x9E3779B97F4A7C15ull) >> 32) & (keys_.size() - 1);
+        }
+        void place(std::uint64_t u, const plateau_point& x) {
+            std::size_t i = slot(u);
+            while (keys_[i] != empty) i = (i + 1) & (keys_.size() - 1);
+            keys_[i] = u;
+            values_[i] = x;
+        }
+        void grow() {
+            std::vector<std::uint64_t> keys(std::max<std::size_t>(64, 2 * keys_.size()), empty);
+            std::vector<plateau_point> values(keys.size());
+            keys.swap(keys_);
+            values.swap(values_);
+            for (std::size_t i = 0; i < keys.size(); ++i)
+                if (keys[i] != empty) place(keys[i], values[i]);
         }
     };
     struct plateau_piece {
         double a, e;
-        std::unordered_map<double, plateau_point, angle_hash> points;
+        angle_memo points;
     };
     std::shared_ptr<std::vector<plateau_piece>> plateau_memo_;  // shared by copies: the same blend
     struct part {
