@@ -33,6 +33,7 @@
 #include "roughroll/problems/pressure_kinks.hpp"
 
 #include "hilbert_on_pieces.hpp"
+#include "variable_k_fixture.hpp"
 
 using namespace roughroll;
 
@@ -208,7 +209,9 @@ TEST(ExactWeightS23, MomentsOfAOnAThinZoneNearTheEdge) {
 //    tests/test_w_route_s22.cpp's state.
 TEST(ExactWeightS23, ZoneLoadOfTheWiredPressureAgainstQuadpack) {
     gsl_set_error_handler_off();
-    const double f = 0.2, s1 = -0.98483838432, c1 = 0.97527798693, s2 = 0.99291937343, c2 = 0.99844743400;
+    const double f = 0.2;
+    const std::array<double, 4>& ends = variable_k_fixture::two_tenths_ends;
+    const double s1 = ends[0], c1 = ends[1], s2 = ends[2], c2 = ends[3];
     const auto theta = [](double eta, double s, double c) {
         if (eta <= s) return 0.0;
         if (eta >= c) return 1.0;
@@ -217,13 +220,8 @@ TEST(ExactWeightS23, ZoneLoadOfTheWiredPressureAgainstQuadpack) {
     };
     for (const int n : {512, 1000}) {
         SCOPED_TRACE(n);
-        std::vector<double> b1, b2;
-        for (int j = 0; j < n; ++j) {
-            b1.push_back(1e-2 * std::cos(0.9 * j) / std::pow(1.0 + j, 2.5));
-            b2.push_back(4e-3 * std::sin(0.7 * j + 0.3) / std::pow(1.0 + j, 2.5));
-        }
-        b1[0] += 0.05;
-        b2[0] += 0.03;
+        const std::array<std::vector<double>, 2> terms = variable_k_fixture::psi_terms(n);
+        const std::vector<double>&b1 = terms[0], &b2 = terms[1];
         pressure_kinks p;
         p.set_weight(-beta_d * f);
         p.set_variable(n, beta_d, 1.0, f, {s1, c1, s2, c2},

@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include "quadpack_common.hpp"
+#include "variable_k_fixture.hpp"
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/quadrature.hpp"
@@ -38,7 +39,8 @@ namespace {
 constexpr int n = 1000;
 constexpr double beta_d = 0.1438337, f = 0.2;
 // The kinks' zones (the source's ends) and the blends' (the next step's, 1e-9 .. 3e-9 away).
-constexpr double s1k = -0.98483838432, c1k = 0.97527798693, s2k = 0.99291937343, c2k = 0.99844743400;
+constexpr double s1k = variable_k_fixture::two_tenths_ends[0], c1k = variable_k_fixture::two_tenths_ends[1],
+                 s2k = variable_k_fixture::two_tenths_ends[2], c2k = variable_k_fixture::two_tenths_ends[3];
 
 double theta(double eta, double s, double c) {
     if (eta <= s) return 0.0;
@@ -51,13 +53,8 @@ const pressure_kinks& weighted_pressure() {
     static const pressure_kinks k = [] {
         pressure_kinks p;
         p.set_weight(-beta_d * f);
-        std::vector<double> b1, b2;
-        for (int j = 0; j < n; ++j) {
-            b1.push_back(1e-2 * std::cos(0.9 * j) / std::pow(1.0 + j, 2.5));
-            b2.push_back(4e-3 * std::sin(0.7 * j + 0.3) / std::pow(1.0 + j, 2.5));
-        }
-        b1[0] += 0.05;
-        b2[0] += 0.03;
+        const std::array<std::vector<double>, 2> b = variable_k_fixture::psi_terms(n);
+        const std::vector<double>&b1 = b[0], &b2 = b[1];
         p.add_weighted_zone(n, beta_d, 1.0, s1k, c1k, 0.5, [&](double t) { return u_series(b1, t); });
         p.add_weighted_zone(n, beta_d, 1.0, s2k, c2k, 0.5, [&](double t) { return u_series(b2, t); });
         p.add_weighted_plateau(beta_d, 1.0, f, blend_plateau(s1k, c1k, s2k, c2k), {0.62, 0.1}, {-0.3, -1.5});
