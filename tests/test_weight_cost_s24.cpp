@@ -8,8 +8,8 @@
 // 2. the zone load of a blend whose stick zone is the kinks' own (its piece [s, c] kept by an earlier blend) against
 //    QAGS of p Theta, an independent route (as tests/test_exact_weight_s23.cpp's 4, there on pieces not kept).
 // Can fail (mutations of pressure_kinks.cpp, session 24): with the kept pieces' blend factor left out (tabulate's H),
-// 2 fails by about the zone's load; with the kept tables keyed without their table (0: M points, 1: M + 1), the second
-// table's points in 1 differ.
+// 2 fails (zone load +1.3e-2 off QAGS); with the kept tables keyed without their table (0: M points, 1: M + 1), the
+// second table's points in 1 fail against QUADPACK.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -102,12 +102,25 @@ TEST(WeightCostS24, KeptTablesGiveTheFreshBlendsValues) {
     // the pieces inside them: pressure_kinks::blend).
     const int m = static_cast<int>(std::ceil(10.0 * std::sqrt(double(n)))) + 48;
     const gauss_legendre off(m), on(m + n);
+    std::vector<double> near_nodes;
     for (const auto& [rule, lo, hi] : {std::tuple<const gauss_legendre&, double, double>{off, ends[3], 1.0},
                                        std::tuple<const gauss_legendre&, double, double>{on, c, ends[3]}})
         for (const std::size_t j : {rule.nodes.size() / 2, rule.nodes.size() / 3}) {
             const auto x = node(rule, j, lo, hi);
-            r.push_back(x[0] + 1e-7 * x[1]);
+            near_nodes.push_back(x[0] + 1e-7 * x[1]);
         }
+    r.insert(r.end(), near_nodes.begin(), near_nodes.end());
+    // There also against QUADPACK's H[p H] (the fresh blend keeps its pieces too: a wrong second table would be wrong in
+    // both; the first table's node 1e-7 of its weight from r loses about 1e-10 to cancellation).
+    gsl_set_error_handler_off();
+    for (const double x : near_nodes) {
+        const std::function<double(double)> g = [&](double eta) { return (*kept)(eta) * blend_of(eta, s, c); };
+        const double reference = hilbert_on_pieces::hilbert(g, x, {s, c, ends[0], ends[1], ends[2], ends[3]});
+        const std::optional<double> w = (*a)(x, blend_of(x, s, c));
+        ASSERT_TRUE(w);
+        EXPECT_NEAR(*w, reference, 1e-12) << x;
+        std::printf("r %.17g: W %.17g, QUADPACK %+.2e\n", x, *w, *w - reference);
+    }
     int compared = 0;
     for (const double x : r) {
         const double h = blend_of(x, s, c);
