@@ -202,6 +202,21 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
                           !normal().kinks->layered();
     point.rough = structure == estimate_structure::full_coupling && !surfaces_.smooth();
     point.n_given = store_ == nullptr;  // a ladder's rungs share its level_store (level_ladder.hpp)
+    // Level n/8 for the zone ends' second ratio (8(q) "One Richardson level for the zone ends"): smooth rollers at full
+    // coupling on n/4, n/2, n only (the ends extrapolated there); held by the store on a ladder (rung n/2's coarsest is
+    // n/8), else solved on the structure of s as level 2n is (n/8 nodes), at most once per estimate; n a multiple of 8
+    // so that n/8 halves n/4 (the ratios are of doublings).
+    if (point.kinks_carried && !point.rough && self == 2 && nodes() % 8 == 0 && nodes() / 8 >= min_nodes)
+        point.coarser = [this, &s, swept, &own]() -> std::optional<estimate_level> {
+            try {
+                const held eighth = level(nodes() / 8);
+                return estimate_level{swept ? eighth->at_stick_end(own.c0(), false, sweeping_near_)
+                                            : eighth->like(s, options_.how, nodes()),
+                                      (*eighth).normal().lambda};
+            } catch (const error&) {  // resolution_error, numerical_error among them: no second ratio, no extrapolation
+                return std::nullopt;
+            }
+        };
     // The ladder's tolerance, where a confirmation on level 2n would be asked of a rung that cannot answer without it
     // (level_store::fails_tolerance, 8(q) "Changes of opposite sign").
     if (store_ && store_->fails_tolerance())

@@ -118,23 +118,31 @@ std::string no_honest_estimate(method how, int n, estimate_structure structure) 
            named[static_cast<int>(structure)] + ": ";
 }
 
-std::optional<zone_end_value> richardson_end(const three_levels& v, double noise, int order) {
+bool ends_clean_ratio(double d_coarse, double d_fine, double noise) {
+    const double ratio = d_coarse / d_fine;
+    return std::fabs(d_fine) >= ends_clean_changes * noise && ratio >= ends_least_ratio && ratio <= ends_most_ratio;
+}
+
+std::optional<zone_end_value> richardson_end(std::optional<double> eighth, const three_levels& v, double noise,
+                                             int order) {
     // x_k = x + C/k^2 + e_k: the Richardson values R_k = x_k + (x_k - x_{k/2})/3 remove C/k^2, and delta = R_n - R_{n/2}.
-    // Where the rest e_k falls geometrically by r per doubling, R_n - x = delta/(r - 1) (for d1/d2 near 4 the rest is the
-    // smaller part of the changes): 2 |delta| holds it for every r >= 1.5, twice over for r >= 2 (a rest of order 1 or
-    // more; a higher order's r = 2^q >= 8 gives 14 times). r >= 1.5 is assumed, not checked: one ratio cannot tell a
-    // slower rest (r = 1.2 at 0.66 of C/n^2 gives d1/d2 = 3.88 and |R_n - x| = 2.5 times the estimate; 8(q) states it and
-    // what would check it, a second ratio from level n/8). Three levels show one ratio only, so a ratio near 4 by chance
-    // (the erratic part of 8(q) cancelling in delta) is what |d2|/2^p guards: the rest taken at least a method's-order
-    // step of the last change, as the three-level rule's |d1|/2^p (8(q)). Measured against n = 1000 in 8(q). Noise: each
-    // level's end lies within s = noise/2 of its discrete solution; R carries 5s/3, delta up to 10s/3, so an observed
-    // delta may be short by 5 noise/3 and 2 |delta| by 10 noise/3: with 3 noise added the estimate still holds
-    // |delta_true| + 5 noise/6 (r >= 2) wherever delta_true lies (2.5 noise needed). The check asks |d2| >= 4 noise so
-    // that the ratio is the changes', not the noise's.
-    const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
-    const double ratio = d1 / d2;
-    if (!(std::fabs(d2) >= ends_clean_changes * noise && ratio >= ends_least_ratio && ratio <= ends_most_ratio))
-        return std::nullopt;
+    // Where the rest e_k falls geometrically by r per doubling, R_n - x = delta/(r - 1). The rest moves each ratio of
+    // changes off 4 by (ratio - 4) = -e (r - 1)(r - 4)/d at the level pair's finer change d, so from (n/8, n/4, n/2) to
+    // (n/4, n/2, n) |ratio - 4| is multiplied by d1/(r d2) = (d1/d2)/r: it does not grow only where r >= d1/d2 >= 3
+    // (8(q) "One Richardson level for the zone ends"). Checked, not assumed: both ratios in [3, 5] and the second no
+    // farther from 4 than the first; then 2 |delta| holds R_n - x four times over (r - 1 >= 2). A slow rest (r = 1.2 at
+    // 0.66 of C/n^2: ratios 3.96 then 3.88, |R_n - x| = 2.5 times the rule's estimate) is refused. Level n/8 not at hand:
+    // refused too. Three levels show one ratio only, so a ratio near 4 by chance (the erratic part of 8(q) cancelling in
+    // delta) is what |d2|/2^p guards: the rest taken at least a method's-order step of the last change, as the
+    // three-level rule's |d1|/2^p (8(q)). Measured against n = 1000 in 8(q). Noise: each level's end lies within
+    // s = noise/2 of its discrete solution; R carries 5s/3, delta up to 10s/3, so an observed delta may be short by
+    // 5 noise/3 and 2 |delta| by 10 noise/3: with 3 noise added the estimate still holds |delta_true| + 5 noise/6 (r >= 2)
+    // wherever delta_true lies (2.5 noise needed). The check asks |d2| >= 4 noise (|d1| >= 12 noise, |d0| >= 36 noise)
+    // so that the ratios are the changes', not the noise's.
+    if (!eighth) return std::nullopt;
+    const double d0 = v.coarsest - *eighth, d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+    if (!ends_clean_ratio(d0, d1, noise) || !ends_clean_ratio(d1, d2, noise)) return std::nullopt;
+    if (!(std::fabs(d1 / d2 - 4.0) <= std::fabs(d0 / d1 - 4.0))) return std::nullopt;
     const double delta = (4.0 * d2 - d1) / 3.0;
     const double error = std::max(2.0 * std::fabs(delta), std::ldexp(std::fabs(d2), -order)) + 3.0 * noise;
     if (!std::isfinite(error)) return std::nullopt;
@@ -538,6 +546,14 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         // 1.7e-8 from n = 1000's against an estimate of 1.2e-8).
         if (!p.rough) {
             const bool resolved = fewest_zone_nodes(levels[2].solution, p.n / 4) >= resolved_zone;
+            // Level n/8, asked once and only for an end clean over n/4, n/2, n (its second ratio, richardson_end).
+            std::optional<estimate_level> eighth;
+            bool eighth_asked = false;
+            const auto eighth_level = [&]() -> const estimate_level* {
+                if (!eighth_asked && p.coarser) eighth = p.coarser();
+                eighth_asked = true;
+                return eighth ? &*eighth : nullptr;
+            };
             zone_end_values x;
             for (std::size_t i = 0; i < table.size(); ++i) {
                 const estimated_quantity& q = table[i];
@@ -545,7 +561,11 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
                 const three_levels v{value(q, levels[0]), value(q, levels[1]), value(q, levels[2])};
                 const double noise =
                     floor_over(q, q.floor, levels[0], levels[1], levels[2]) + 4.0 * coupling_end_tolerance;
-                const std::optional<zone_end_value> r = resolved ? richardson_end(v, noise, order) : std::nullopt;
+                const estimate_level* const below =
+                    resolved && ends_clean_ratio(v.middle - v.coarsest, v.finest - v.middle, noise) ? eighth_level()
+                                                                                                    : nullptr;
+                const std::optional<zone_end_value> r =
+                    below ? richardson_end(value(q, *below), v, noise, order) : std::nullopt;
                 std::optional<zone_end_value>& to = q.value == value_c0      ? x.c0
                                                     : q.value == value_start ? x.start
                                                     : q.value == value_end2  ? x.end2

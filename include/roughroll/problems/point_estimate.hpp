@@ -117,6 +117,10 @@ struct estimate_point {
     // estimate is marked a lower bound (error_estimate::lower_bound); `lower_bound` then tells peak_from_levels.
     std::function<bool(const error_estimate&)> fails_tolerance = nullptr;
     bool lower_bound = false;
+    // Full coupling on smooth rollers: level n/8 on the structure of level n's point (held by the level store or solved;
+    // empty where it cannot be), asked only where a zone end's changes over n/4, n/2, n are clean: its second ratio
+    // checks the rest of the Richardson level (richardson_end). Unset: no zone end is extrapolated.
+    std::function<std::optional<estimate_level>()> coarser = nullptr;
 };
 
 // The order p of the levels' error, ~ C n^-p, for method `how` (error_bound's rule, and each level's start from the
@@ -185,14 +189,20 @@ bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const esti
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
 
 // One Richardson level of order 2 for a zone end at full coupling (docs/formulation.md 8(q), "One Richardson level for
-// the zone ends"), from its levels n/4, n/2, n (`v`); `noise` the floor of a difference of two levels (the estimate's
-// floor of the ends and the alternation's tolerance, as the carried changes'), `order` the method's p. The end's
-// changes d1 = x_{n/2} - x_{n/4}, d2 = x_n - x_{n/2} are clean order 2 where |d2| is at least ends_clean_changes times
-// the noise and 3 <= d1/d2 <= 5 (one sign, falling 3 to 5 times per doubling); there the value x_n + d2/3 and its
-// error max(2 |delta|, |d2|/2^p) + 3 noise, delta = (4 d2 - d1)/3 the change of the Richardson values from n/2 to n.
+// the zone ends"), from its levels n/4, n/2, n (`v`) and n/8 (`eighth`, empty where it is not at hand); `noise` the floor
+// of a difference of two levels (the estimate's floor of the ends and the alternation's tolerance, as the carried
+// changes'), `order` the method's p. The end's changes d0 = x_{n/4} - x_{n/8}, d1 = x_{n/2} - x_{n/4},
+// d2 = x_n - x_{n/2} are clean order 2 where |d2| is at least ends_clean_changes times the noise, 3 <= d0/d1 <= 5 and
+// 3 <= d1/d2 <= 5 (one sign, falling 3 to 5 times per doubling) and |d1/d2 - 4| <= |d0/d1 - 4| (the rest beyond C/k^2
+// falls at least as fast as the changes: r >= d1/d2 >= 3 for a geometric rest); there the value x_n + d2/3 and its error
+// max(2 |delta|, |d2|/2^p) + 3 noise, delta = (4 d2 - d1)/3 the change of the Richardson values from n/2 to n.
 // Elsewhere empty, never a smaller estimate: the end keeps level n's value and its own estimate.
 inline constexpr double ends_least_ratio = 3.0, ends_most_ratio = 5.0, ends_clean_changes = 4.0;
-std::optional<zone_end_value> richardson_end(const three_levels& v, double noise, int order);
+// Whether changes d_coarse, d_fine (the finer last) fall 3 to 5 times with the finer at least ends_clean_changes times
+// the noise: the first test of richardson_end, on n/4, n/2, n (asked before level n/8 is).
+bool ends_clean_ratio(double d_coarse, double d_fine, double noise);
+std::optional<zone_end_value> richardson_end(std::optional<double> eighth, const three_levels& v, double noise,
+                                             int order);
 
 // The first words of every refusal of an estimate: "no honest error estimate for method 'M' at
 // n = N (the structure): ".
