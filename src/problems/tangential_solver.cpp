@@ -23,19 +23,32 @@ const kernel& resolved(const kernel& k, const normal_solution& normal) {
     return k;
 }
 
-// The stick zone's unknowns psi_k at the rule's nodes (the first n entries of the solution x; entry n is xi) and the
-// zone's load int psi on the rule (E4, 8(v)), f + rho load being the Q of (3.5).
-struct zone_unknowns {
-    std::vector<double> psi;
+// The c0-independent part of the stick system (4.4) on a rule: the Cauchy term, and in column n -1, since -xi moves to
+// the left of (4.4) (on the square-root weight, and on the Jacobi weight of 8(v)).
+template <class Rule>
+void stick_matrix(gsl_matrix* a, const Rule& rule, int n) {
+    gsl_matrix_set_zero(a);
+    add_cauchy_term(a, rule);
+    for (int m = 0; m <= n; ++m) gsl_matrix_set(a, m, n, -1.0);
+}
+
+// The solution on the stick zone [start, c0] with Dundurs' forcing b from the system's unknowns x (psi_k at the rule's
+// n nodes, then xi in entry n): Q = f + rho int psi (3.22), int psi by the rule's weights (E4, 8(v)); psi's
+// coefficients by `coefficients` (U, or Jacobi on 8(v)'s weight).
+template <class Coefficients>
+tangential_solution zone_of(const gsl_vector* x, const std::vector<double>& weights, const Coefficients& coefficients,
+                            double f, double start, double c0, double forcing, double rcond) {
+    const double rho = 0.5 * (c0 - start);
+    std::vector<double> psi(weights.size());
     double load = 0.0;
-};
-zone_unknowns unknowns_of(const gsl_vector* x, const std::vector<double>& weights) {
-    zone_unknowns u{std::vector<double>(weights.size()), 0.0};
     for (std::size_t k = 0; k < weights.size(); ++k) {
-        u.psi[k] = gsl_vector_get(x, k);
-        u.load += weights[k] * u.psi[k];
+        psi[k] = gsl_vector_get(x, k);
+        load += weights[k] * psi[k];
     }
-    return u;
+    tangential_solution s =
+        zone_solution(f, start, c0, gsl_vector_get(x, weights.size()), f + rho * load, coefficients(psi), rcond);
+    s.forcing = forcing;
+    return s;
 }
 }  // namespace
 
@@ -51,10 +64,7 @@ tangential_solver::tangential_solver(const normal_solution& normal, const kernel
       k1_operator_(normal.kernel_term && k1.max_rate() <= normal.kernel_term->max_rate()
                        ? normal.kernel_term
                        : std::make_shared<const kernel_operator>(normal.rule, normal.how, k1.max_rate())) {
-    gsl_matrix_set_zero(cauchy_.get());
-    add_cauchy_term(cauchy_.get(), normal_.rule);
-    // Column n: -xi moves to the left of (4.4).
-    for (int m = 0; m <= n_; ++m) gsl_matrix_set(cauchy_.get(), m, n_, -1.0);
+    stick_matrix(cauchy_.get(), normal_.rule, n_);
 }
 
 std::vector<double> tangential_solver::G(const std::vector<double>& r) {
@@ -124,12 +134,7 @@ tangential_solution tangential_solver::solve_on_jacobi(double start, double c0, 
     const double rho = 0.5 * (c0 - start);
     jacobi_zone& z = jacobi_for(a);
     const int n = n_;
-    if (!z.system.holds_factors()) {
-        gsl_matrix* m = z.system.matrix();
-        gsl_matrix_set_zero(m);
-        add_cauchy_term(m, z.colloc);
-        for (int i = 0; i <= n; ++i) gsl_matrix_set(m, i, n, -1.0);
-    }
+    if (!z.system.holds_factors()) stick_matrix(z.system.matrix(), z.colloc, n);
     std::vector<double> r(static_cast<std::size_t>(n) + 1);
     for (int i = 0; i <= n; ++i) r[i] = start + rho * (z.colloc.collocation[i] + 1.0);  // E4
     const std::vector<double> g = G(r), p = normal_.pressure(r);
@@ -147,12 +152,12 @@ tangential_solution tangential_solver::solve_on_jacobi(double start, double c0, 
     context << "tangential problem (4.4) on the Jacobi weight (docs/formulation.md 8(v)) at c0 = " << c0
             << ", stick zone from " << start;
     const gsl_vector* x = z.system.holds_factors() ? z.system.solve_factorised(context.str()) : z.system.solve(context.str());
-    const zone_unknowns u = unknowns_of(x, z.colloc.rule.weights);
-    tangential_solution s = zone_solution(f_, start, c0, gsl_vector_get(x, n), f_ + rho * u.load,
-                                          jacobi_coefficients(z.colloc.rule, u.psi), z.system.rcond());
+    tangential_solution s = zone_of(
+        x, z.colloc.rule.weights,
+        [&](const std::vector<double>& psi) { return jacobi_coefficients(z.colloc.rule, psi); }, f_, start, c0, forcing,
+        z.system.rcond());
     s.weight_a = a;
     s.weight_b = 1.0 - a;
-    s.forcing = forcing;
     return s;
 }
 
@@ -191,12 +196,9 @@ tangential_solution tangential_solver::solve_on_zone(double start, double c0, do
     const gsl_vector* x = same_matrix ? system_.solve_factorised(context.str())
                           : near      ? system_.solve_near(context.str())
                                       : system_.solve(context.str());
-
-    const zone_unknowns u = unknowns_of(x, rule.weights);
-    tangential_solution s = zone_solution(f_, start, c0, gsl_vector_get(x, n_), f_ + rho * u.load,
-                                          u_coefficients(rule, u.psi), system_.rcond());
-    s.forcing = forcing;
-    return s;
+    return zone_of(
+        x, rule.weights, [&](const std::vector<double>& psi) { return u_coefficients(rule, psi); }, f_, start, c0,
+        forcing, system_.rcond());
 }
 
 std::optional<double> tangential_solver::search_start(double magnitude) const { return carter(magnitude, f_).c0; }
