@@ -62,15 +62,24 @@ public:
     // fault on the way (a GSL status, a singular system, a root search without convergence) is a numerical_error in
     // the user's terms (general_search_fault, `why`), the search's own line nested in it: every caller's.
     tangential_solution general(double Q, std::optional<zone_guess> guess, search_cause why) {
-        return worded(Q, why, [&] { return general_search(Q, guess); });
+        return worded(Q, why, [&] {
+            checkpoint();
+            return search(Q).solve(Q, true, guided_ ? guess : std::nullopt);
+        });
     }
     // The same search, empty where no zone of its structure carries Q (zone_solver::find).
     std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess> guess, search_cause why) {
-        return worded(Q, why, [&] { return general_find(Q, guess); });
+        return worded(Q, why, [&] {
+            checkpoint();
+            return search(Q).find(Q, true, guided_ ? guess : std::nullopt);
+        });
+    }
+    // The general search at s's load from s's zone (a level of s's estimate, the coarse level of its extrapolation).
+    tangential_solution general_like(const tangential_solution& s) {
+        return general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched});
     }
     tangential_solution like(const tangential_solution& s, method, int) override {
-        return s.layout.general() ? general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched})
-                                  : single(s.Q, false);
+        return s.layout.general() ? general_like(s) : single(s.Q, false);
     }
     double traction(const tangential_solution& d, double r) override { return problem().traction(d, r); }
     double slip_velocity(const tangential_solution& d, double r) override { return problem().slip_velocity(d, r); }
@@ -87,15 +96,9 @@ protected:
     tangential_solution solve(double Q, std::optional<double> guess, bool checked, std::optional<double> slope) {
         return problem().solve(Q, guess, checked || checks_always_, slope);
     }
-    // The search itself, its faults in the search's own words (general, find_general word them).
-    virtual tangential_solution general_search(double Q, std::optional<zone_guess> guess) {
-        checkpoint();
-        return zones_->solve(Q, true, guess);
-    }
-    virtual std::optional<tangential_solution> general_find(double Q, std::optional<zone_guess> guess) {
-        checkpoint();
-        return zones_->find(Q, true, guess);
-    }
+    // The search of Q's zones, its faults in its own words (general, find_general word them): one per model, but
+    // for the one-parameter limit of dissimilar rollers, one per sign of Q (8(s)).
+    virtual zone_solver& search(double) { return *zones_; }
     // The paper's single zone s where it holds (or options.zones says "single"); else the general
     // search's answer where it holds its checks (or options.zones says "general"); else s, its checks
     // failed. `guess`: the coarse level's zone.
@@ -115,6 +118,7 @@ protected:
 
     std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
     bool checks_always_ = false;          // the solver checks every point it solves
+    bool guided_ = true;                  // a coarse level's zone starts the search (general's `guess`)
 
 private:
     // `search`'s numerical_error as general_search_fault's line, the search's own nested in it.
@@ -179,9 +183,7 @@ public:
         // error estimate of the extrapolated ones).
         if (!companion_) return s;
         if (!last_fine_ || last_fine_->Q != s.Q)
-            last_fine_ = s.layout.general()
-                             ? general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched})
-                             : tangential_.solve(s.Q);
+            last_fine_ = s.layout.general() ? general_like(s) : tangential_.solve(s.Q);
         return *last_fine_;
     }
 
@@ -236,7 +238,7 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
     // (docs/formulation.md 7(e)). Level n, estimated against n/2, refused where the fast path's extrapolation is:
     // a creep at the edge of the double range.
     const bool general = s.layout.general();
-    if (general) coarse = companion_->general(Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched});
+    if (general) coarse = companion_->general_like(s);
     const double c0 = general ? s.c0() : richardson(s.c0(), coarse.c0()), xi = richardson(s.xi, coarse.xi);
     if (!(std::isfinite(c0) && std::isfinite(xi)))
         throw numerical_error("extrapolation: the creep is not finite (roughness parameters too large?)");
@@ -257,6 +259,7 @@ public:
         if (in.materials.beta_d != 0.0)
             braked_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(-1.0)));
         checks_always_ = true;
+        guided_ = false;  // its search is cheap: no starts from the levels below
     }
     point_model& level(int m) override { return levels_.at(m); }
     // No level starts another's search (point ignores `below`, like() searches afresh) and single()'s cache
@@ -280,17 +283,8 @@ public:
     }
 
 private:
-    zone_solver& search(double Q) { return *(Q < 0.0 && braked_ ? braked_ : zones_); }  // Q's forcing sgn(Q) beta_D
-    tangential_solution general_search(double Q, std::optional<zone_guess>) override {
-        checkpoint();
-        return search(Q).solve(Q, true);
-    }
-    std::optional<tangential_solution> general_find(double Q, std::optional<zone_guess>) override {
-        checkpoint();
-        return search(Q).find(Q, true);
-    }
+    zone_solver& search(double Q) override { return *(Q < 0.0 && braked_ ? braked_ : zones_); }  // sgn(Q) beta_D
     tangential_solution limit_point(double Q) {
-        // Its search is cheap: no starts from the levels below.
         if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);
         // The one-parameter paper's zone can be singular where the general zone is not (its
         // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)). A fault of the general
