@@ -169,9 +169,12 @@ tangential_solution tangential_problem::full_stick(double) {
 
 tangential_solution tangential_problem::gross_sliding(double forcing) {
     if (carter_) return carter_at(f_);
-    if (forcing != 0.0)
-        return roughroll::gross_sliding(normal(), f_, forcing, [this](const std::vector<double>& r) { return G(r); });
+    if (forcing != 0.0) return least_sliding(forcing);
     return gross_sliding_at(f_, -1.0, -f_ * G(std::vector<double>{-1.0}).front());
+}
+
+tangential_solution tangential_problem::least_sliding(double forcing) {
+    return roughroll::gross_sliding(normal(), f_, forcing, [this](const std::vector<double>& r) { return G(r); });
 }
 
 double tangential_problem::load(double c0, std::optional<double> forcing) {

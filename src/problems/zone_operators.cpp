@@ -13,7 +13,6 @@
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/problems/gross_sliding.hpp"
 #include "roughroll/problems/one_parameter.hpp"
 #include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/tangential_solver.hpp"
@@ -135,9 +134,7 @@ stick_zone_operator tangential_problem::zone_operator_of(double forcing) {
     };
     op.empty_load = [f = f_](double) { return f; };
     // w = b p + f G (7(d), 8(s)): its least point in place of the paper's edge form.
-    op.gross_sliding = [this, forcing] {
-        return roughroll::gross_sliding(normal(), f_, forcing, [this](const auto& r) { return G(r); });
-    };
+    op.gross_sliding = [this, forcing] { return least_sliding(forcing); };
     op.check = [this](const tangential_solution& t) { return check(t); };
     return op;
 }

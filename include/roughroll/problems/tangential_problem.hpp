@@ -101,6 +101,9 @@ protected:
     // |Q| = f (2(g)): the paper's zone shrunk onto r = -1, Carter's where smooth; with Dundurs' forcing the stick
     // point r*, where w = b p + f G is least (8(s), as 8(g); gross_sliding.hpp).
     virtual tangential_solution gross_sliding(double forcing);
+    // |Q| = f at the least point r* of w = b p + f G on [-1, 1] (gross_sliding.hpp), also where b = 0: the general
+    // search's form (7(d)), and gross_sliding's with Dundurs' forcing.
+    tangential_solution least_sliding(double forcing);
     // v of the |Q| problem (3.6) at points of the slip zones, in descending order (the caller applies s.sign).
     virtual std::vector<double> slip_velocity_magnitude(const tangential_solution& s, const std::vector<double>& r) = 0;
     virtual double check_rounding(const tangential_solution& s) = 0;  // the margins' rounding floor (7(d))
