@@ -71,10 +71,14 @@ std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& load
     rows.reserve(loads.size());
     const tangential_solution* previous = nullptr;
     for (double Q : loads) {
+        // A refused row is this point only (curve_point): the curve goes on, the next row searching alone.
+        const auto refuse = [&](const resolution_error& why) {
+            rows.push_back(refused_load(Q, c.friction(), why));
+            previous = nullptr;
+        };
         if (before_row) before_row();
         if (const std::optional<std::string> why = refused_at_once ? refused_at_once(Q) : std::nullopt) {
-            rows.push_back(refused_load(Q, c.friction(), resolution_error(*why)));
-            previous = nullptr;
+            refuse(resolution_error(*why));
             continue;
         }
         try {
@@ -84,12 +88,12 @@ std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& load
             rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
             previous = &rows.back().solution;   // rows reserved: the address stays
         } catch (const unadvised_refusal& e) {  // its line names no change: at a given n, what to change is n
-            rows.push_back(given_n > 0 ? refused_load(Q, c.friction(), advised_at_given_n(e, given_n))
-                                       : refused_load(Q, c.friction(), e));
-            previous = nullptr;
-        } catch (const resolution_error& e) {  // this point only (curve_point): the curve goes on
-            rows.push_back(refused_load(Q, c.friction(), e));
-            previous = nullptr;  // the next row searches alone
+            if (given_n > 0)
+                refuse(advised_at_given_n(e, given_n));
+            else
+                refuse(e);
+        } catch (const resolution_error& e) {
+            refuse(e);
         }
     }
     return rows;
