@@ -88,10 +88,7 @@ std::vector<curve_point> creep_curve(contact& c, const std::vector<double>& load
             rows.push_back({std::move(s), carter(Q, c.friction()), e, {}});
             previous = &rows.back().solution;   // rows reserved: the address stays
         } catch (const unadvised_refusal& e) {  // its line names no change: at a given n, what to change is n
-            if (given_n > 0)
-                refuse(advised_at_given_n(e, given_n));
-            else
-                refuse(e);
+            refuse(given_n > 0 ? advised_at_given_n(e, given_n) : resolution_error(e));
         } catch (const resolution_error& e) {
             refuse(e);
         }
