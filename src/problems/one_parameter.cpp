@@ -166,10 +166,8 @@ tangential_solution one_parameter_solver::solve_on_zone(double start, double c0,
     std::vector<double> psi_b(n_);
     for (int j = 0; j < n_; ++j) psi_b[j] = gsl_vector_get(x, j);
     const double Q = f_ + rho * M_PI_2 * psi_b[0];  // (3.22): rho int q = Q - f, int q = (pi/2) c_0
-    tangential_solution s =
-        zone_solution(f_, start, c0, gsl_vector_get(x, n_), Q, std::move(psi_b), tangential_system_.rcond());
-    s.forcing = forcing;
-    return s;
+    return zone_solution(f_, start, c0, gsl_vector_get(x, n_), Q, std::move(psi_b), tangential_system_.rcond(),
+                         forcing);
 }
 
 tangential_solution one_parameter_solver::full_stick(double forcing) {

@@ -58,7 +58,7 @@ void apply_load_sign(tangential_solution& s, double Q, const char* what) {
 }
 
 tangential_solution zone_solution(double f, double start, double c0, double xi, double Q, std::vector<double> psi_b,
-                                  double rcond) {
+                                  double rcond, double forcing) {
     tangential_solution s{};
     s.f = f;
     s.xi = xi;
@@ -67,6 +67,7 @@ tangential_solution zone_solution(double f, double start, double c0, double xi, 
     s.layout = one_stick_zone(start, c0);
     s.psi_b = std::move(psi_b);
     s.rcond = rcond;
+    s.forcing = forcing;
     return s;
 }
 

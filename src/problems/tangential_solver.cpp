@@ -45,10 +45,8 @@ tangential_solution zone_of(const gsl_vector* x, const std::vector<double>& weig
         psi[k] = gsl_vector_get(x, k);
         load += weights[k] * psi[k];
     }
-    tangential_solution s =
-        zone_solution(f, start, c0, gsl_vector_get(x, weights.size()), f + rho * load, coefficients(psi), rcond);
-    s.forcing = forcing;
-    return s;
+    return zone_solution(f, start, c0, gsl_vector_get(x, weights.size()), f + rho * load, coefficients(psi), rcond,
+                         forcing);
 }
 }  // namespace
 

@@ -40,9 +40,9 @@ void check_load_resolvable(double magnitude, double f);
 void apply_load_sign(tangential_solution& s, double Q, const char* what);
 
 // A solution of the |Q| problem (sign +1) with the stick zone [start, c0]: creep xi, load Q, the U
-// coefficients of psi (none without a stick zone) and the system's rcond (1 without a solve).
+// coefficients of psi (none without a stick zone), the system's rcond (1 without a solve) and Dundurs' forcing (8(e)).
 tangential_solution zone_solution(double f, double start, double c0, double xi, double Q,
-                                  std::vector<double> psi_b = {}, double rcond = 1.0);
+                                  std::vector<double> psi_b = {}, double rcond = 1.0, double forcing = 0.0);
 
 // q0(r) of (3.15) on the stick zone [start, c0] of s, q = psi(t) sqrt(1 - t^2) (4.1), 0 off it; at many points.
 double stick_traction(const tangential_solution& s, double r);
