@@ -259,7 +259,9 @@ public:
         if (in.materials.beta_d != 0.0)
             braked_ = std::make_unique<zone_solver>(limit_.zone_operator(limit_.forcing_at(-1.0)));
         checks_always_ = true;
-        guided_ = false;  // its search is cheap: no starts from the levels below
+        // Required, not only cheap: its levels are shared by a ladder's rungs (shareable), so a level's answer must not
+        // depend on which rung's levels below started its search.
+        guided_ = false;
     }
     point_model& level(int m) override { return levels_.at(m); }
     // No level starts another's search (point ignores `below`, like() searches afresh) and single()'s cache
