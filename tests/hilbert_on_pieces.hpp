@@ -75,4 +75,26 @@ inline double integral(const integrand& g, std::vector<double> cuts) {
     return sum;
 }
 
+// int_s^c g on `parts` pieces graded to both ends by the cosine map (a stick zone's square-root ends, where the blend
+// and the pressure bend): QAGS at 1e-13 relative on each piece; the sum and the sum of QUADPACK's estimates.
+struct graded_integral {
+    double value = 0.0;
+    double estimate = 0.0;
+};
+inline graded_integral integral_graded(const integrand& g, double s, double c, int parts) {
+    workspace ws;
+    std::vector<double> cuts{s};
+    for (int j = 1; j < parts; ++j) cuts.push_back(s + (c - s) * (0.5 - 0.5 * std::cos(M_PI * j / parts)));
+    cuts.push_back(c);
+    graded_integral total;
+    gsl_function F = function_of(g);
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        double v = 0.0, err = 0.0;
+        expect_converged(gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-17, 1e-13, ws.limit, ws.w, &v, &err), err);
+        total.value += v;
+        total.estimate += err;
+    }
+    return total;
+}
+
 }  // namespace hilbert_on_pieces

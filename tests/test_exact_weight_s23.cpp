@@ -233,20 +233,7 @@ TEST(ExactWeightS23, ZoneLoadOfTheWiredPressureAgainstQuadpack) {
         const std::optional<double> zone = b->zone_load();
         ASSERT_TRUE(zone);
         const std::function<double(double)> g = [&](double x) { return p(x) * theta(x, s, c); };
-        gsl_function F = quadpack_common::function_of(g);
-        hilbert_on_pieces::workspace ws;
-        std::vector<double> cuts{s, c};
-        const int parts = 4096;
-        for (int j = 1; j < parts; ++j) cuts.push_back(s + (c - s) * (0.5 - 0.5 * std::cos(M_PI * j / parts)));
-        std::sort(cuts.begin(), cuts.end());
-        double total = 0.0, estimate = 0.0;
-        for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-            double r = 0.0, e = 0.0;
-            hilbert_on_pieces::expect_converged(
-                gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-17, 1e-13, ws.limit, ws.w, &r, &e), e);
-            total += r;
-            estimate += e;
-        }
+        const auto [total, estimate] = hilbert_on_pieces::integral_graded(g, s, c, 4096);
         std::printf("n %d: zone load %.17g, QAGS %.17g (its estimate %.1e): %+.2e\n", n, *zone, total, estimate,
                     *zone - total);
         EXPECT_NEAR(*zone, total, 1e-13 + estimate);

@@ -147,19 +147,7 @@ TEST(WeightCostS24, ZoneLoadFromKeptPiecesAgainstQuadpack) {
     const std::optional<double> zone = b->zone_load();
     ASSERT_TRUE(zone);
     const std::function<double(double)> g = [&](double x) { return (*p)(x) * blend_of(x, s, c); };
-    gsl_function F = quadpack_common::function_of(g);
-    hilbert_on_pieces::workspace ws;
-    std::vector<double> cuts{s};
-    const int parts = 512;
-    for (int j = 1; j <= parts; ++j) cuts.push_back(s + (c - s) * (0.5 - 0.5 * std::cos(M_PI * j / parts)));
-    double total = 0.0, estimate = 0.0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        double r = 0.0, e = 0.0;
-        hilbert_on_pieces::expect_converged(
-            gsl_integration_qags(&F, cuts[i], cuts[i + 1], 1e-17, 1e-13, ws.limit, ws.w, &r, &e), e);
-        total += r;
-        estimate += e;
-    }
+    const auto [total, estimate] = hilbert_on_pieces::integral_graded(g, s, c, 512);
     std::printf("zone load %.17g, QAGS %.17g (its estimate %.1e): %+.2e\n", *zone, total, estimate, *zone - total);
     EXPECT_NEAR(*zone, total, 1e-13 + estimate);
 }

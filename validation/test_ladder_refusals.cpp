@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "aluminium_on_steel.hpp"
+#include "ladder_first_solve.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/edge_layers.hpp"
@@ -24,39 +25,13 @@
 using namespace roughroll;
 
 namespace {
-// Thrown by the checkpoint: a level was about to be solved.
-struct level_solved : std::runtime_error {
-    level_solved() : std::runtime_error("a level was solved") {}
-};
+using ladder_first_solve::ladder_run;
+using ladder_first_solve::level_solved;
 
-struct ladder_run {
-    std::string refusal;  // the resolution_error's line; empty when the ladder started a solve
-    int rungs_built = 0;  // contacts the factory made
-    bool solved = false;  // a level's solve was started
-};
-
-// The ladder at friction f, free rolling, the tolerance `tol` (empty: the default), every rung's
-// contact stopping at its first level's solve.
+// The ladder at friction f, free rolling of the smooth pair at Johnson's level, the tolerance `tol` (empty: the default),
+// every rung's contact stopping at its first level's solve.
 ladder_run run(double f, std::optional<double> tol = std::nullopt) {
-    ladder_run r;
-    solver_options options;
-    options.tolerance = tol;
-    level_ladder ladder(options, roughness{}, [&](int n) {
-        ++r.rungs_built;
-        auto c = std::make_unique<contact>(roughness{}, f, solver_options{n, options.how, options.zones, tol},
-                                           dissimilar{beta_al_st, coupling_level::johnson});
-        c->set_checkpoint([] { throw level_solved(); });
-        return c;
-    });
-    try {
-        ladder.point(0.0);
-        ADD_FAILURE() << "f = " << f << ": answered without a solve";
-    } catch (const resolution_error& e) {
-        r.refusal = e.what();
-    } catch (const level_solved&) {
-        r.solved = true;
-    }
-    return r;
+    return ladder_first_solve::run(f, roughness{}, coupling_level::johnson, tol);
 }
 
 // The edge layers' crossing t_c and the layers-neglected route's largest relative estimate (8(n)):

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "aluminium_on_steel.hpp"
+#include "ladder_first_solve.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/contact_internals.hpp"
@@ -29,37 +30,11 @@
 using namespace roughroll;
 
 namespace {
-// Thrown by the checkpoint: a level was about to be solved.
-struct level_solved : std::runtime_error {
-    level_solved() : std::runtime_error("a level was solved") {}
-};
-
-struct ladder_run {
-    std::string refusal;  // the resolution_error's line; empty when the ladder started a solve
-    bool solved = false;  // a level's solve was started
-};
+using ladder_first_solve::ladder_run;
 
 // The ladder for the rough pair's free rolling at friction f and the default tolerance, every rung's contact stopping
 // at its first level's solve.
-ladder_run run(double f, coupling_level level) {
-    ladder_run r;
-    const solver_options options;
-    level_ladder ladder(options, rough_pair_at_a(), [&](int n) {
-        auto c = std::make_unique<contact>(rough_pair_at_a(), f, solver_options{n, options.how, options.zones},
-                                           dissimilar{beta_al_st, level});
-        c->set_checkpoint([] { throw level_solved(); });
-        return c;
-    });
-    try {
-        ladder.point(0.0);
-        ADD_FAILURE() << "f = " << f << ": answered without a solve";
-    } catch (const resolution_error& e) {
-        r.refusal = e.what();
-    } catch (const level_solved&) {
-        r.solved = true;
-    }
-    return r;
-}
+ladder_run run(double f, coupling_level level) { return ladder_first_solve::run(f, rough_pair_at_a(), level); }
 
 // The friction the refusal names, "below about X".
 std::optional<double> named_friction(const std::string& refusal) {
