@@ -45,6 +45,7 @@
 #include "roughroll/problems/tangential_solver.hpp"
 #include "aluminium_on_steel.hpp"
 #include "chebyshev_by_qagp.hpp"
+#include "ladder_first_solve.hpp"
 
 using namespace roughroll;
 
@@ -125,28 +126,12 @@ TEST(FullCoupling, StartFromTheCoarserLevelReachesTheSameFixedPoint) {
 }
 
 namespace {
-// Thrown by the checkpoint: a level was about to be solved.
-struct level_solved : std::runtime_error {
-    level_solved() : std::runtime_error("a level was solved") {}
-};
+using ladder_first_solve::level_solved;
 
 // The ladder's free rolling at full coupling and friction `friction`, default settings: the refusal's line, or
 // empty when a rung started to solve a level (the checkpoint runs before every level's solve and every step).
 std::string free_rolling_refusal(double friction) {
-    level_ladder ladder(solver_options{}, roughness{}, [friction](int n) {
-        auto c = std::make_unique<contact>(roughness{}, friction, solver_options{n},
-                                           dissimilar{beta_al_st, coupling_level::full});
-        c->set_checkpoint([] { throw level_solved(); });
-        return c;
-    });
-    try {
-        ladder.point(0.0);
-        ADD_FAILURE() << "f = " << friction << ": answered without a solve";
-    } catch (const resolution_error& e) {
-        return e.what();
-    } catch (const level_solved&) {
-    }
-    return {};
+    return ladder_first_solve::run(friction, roughness{}, coupling_level::full).refusal;
 }
 }  // namespace
 
