@@ -445,8 +445,8 @@ tangential_solution five_zone_point(const five_zone_solution& v) {
     s.ends_resolution = v.ends_resolution;
     s.checks = v.checks;
     s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
-    s.five = std::make_shared<const five_zone_solution>(v);
     s.layout = layout_of(v);
+    s.zone_systems = std::make_shared<const std::vector<tangential_solution>>(std::vector{v.zone1, v.zone2});
     return s;
 }
 
@@ -455,12 +455,12 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
         // Full coupling asks the previous iterate's p1 at the same points again and again (G of every zone solve
         // and slip velocity of a five-zone system, 8(e)): each value once per point (the same value, bit for bit).
         // The memo holds the solution it is for, so that its address is not another's while it is kept.
-        if (tractions_of_ != s.five || tractions_.size() > traction_memo_size) {
-            tractions_of_ = s.five;
+        if (tractions_of_ != s.zone_systems || tractions_.size() > traction_memo_size) {
+            tractions_of_ = s.zone_systems;
             tractions_.clear();
         }
         const auto [at, fresh] = tractions_.try_emplace(r, 0.0);
-        if (fresh) at->second = traction(*s.five, r);
+        if (fresh) at->second = stick_zones_traction(s, r);
         return at->second;
     }
     if (s.layout.layers_neglected())  // 8(n): f p on the layers, the no-slip traction on the main stick zone
@@ -472,7 +472,7 @@ double dissimilar_zones::traction(const tangential_solution& s, double r) {
 }
 
 double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
-    if (s.layout.stick_zones() == 2) return slip_velocity(*s.five, r);
+    if (s.layout.stick_zones() == 2) return stick_zones_slip_velocity(s, r);
     if (s.layout.layers_neglected()) return layers_neglected_slip_velocity(s.layout, beta_d_, r);  // 8(n)
     const double v = solver_.slip_velocity(s, r);
     if (!s.layout.opposite() || s.sticks(r)) return v;
@@ -484,9 +484,14 @@ double dissimilar_zones::slip_velocity(const tangential_solution& s, double r) {
 
 traction_checks dissimilar_zones::check(const tangential_solution& s) {
     if (!s.layout.opposite()) return solver_.check(s);
-    // (3.3) on the stick zone, (3.4) on both slip zones with their own directions (the layout).
-    return check_zones(s.layout.zones, blended_checks(), [&](double r) { return solver_.normal().pressure(r); },
-                       [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
+    // (3.3) on the stick zones, (3.4) on the slip zones with their own directions (the layout). Five zones with the
+    // pressure their systems take (pressure, five_zone_system), their traction apart from traction's memo (which keeps
+    // full coupling's previous iterate while its step's answer is checked).
+    const bool five = s.layout.stick_zones() == 2;
+    return check_zones(
+        s.layout.zones, blended_checks(), [&](double r) { return five ? pressure(r) : solver_.normal().pressure(r); },
+        [&](double r) { return five ? stick_zones_traction(s, r) : traction(s, r); },
+        [&](double r) { return slip_velocity(s, r); });
 }
 
 zone_check_terms dissimilar_zones::blended_checks() {

@@ -117,15 +117,17 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
     return s;
 }
 
-double dissimilar_zones::traction(const five_zone_solution& s, double r) {
-    // p1 = f p S + q1 + q2, S = -1 + 2 H1 - 2 H2 in the frame beta_D > 0 (8(j)).
-    double p1 = f_ * pressure(r) * (s.sign * (-1.0 + 2.0 * H(r, s.s1, s.c1) - 2.0 * H(r, s.s2, s.c2)));
-    for (const tangential_solution* t : {&s.zone1, &s.zone2})
-        if (r > t->start() && r < t->c0()) p1 += s.sign * stick_traction(*t, r);
+double dissimilar_zones::stick_zones_traction(const tangential_solution& s, double r) {
+    // p1 = f p S + q1 + q2, S = -1 + 2 H1 - 2 H2 in the frame beta_D > 0 (8(j)), each q_k its zone's system's.
+    const zone &z1 = s.layout.stick_zone(0), &z2 = s.layout.stick_zone(1);
+    double p1 = f_ * pressure(r) * (s.sign * (-1.0 + 2.0 * H(r, z1.from, z1.to) - 2.0 * H(r, z2.from, z2.to)));
+    for (std::size_t k = 0; k < 2; ++k)
+        if (const tangential_solution& t = s.zone_system(k); r > t.start() && r < t.c0())
+            p1 += s.sign * stick_traction(t, r);
     return p1;
 }
 
-double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
+double dissimilar_zones::stick_zones_slip_velocity(const tangential_solution& s, double r) {
     // v = xi + b p + f G - 2 f (G_H + W1 - W2) - L1[q1] - L1[q2], with -L1[q_k] = v_k - (xi_k + b p + f G). Next to each
     // stick zone G_H is that zone's (five_zone_system), the form its discrete q solves, with which v vanishes like
     // (r - c)^(1/2) beyond an exit and (s - r)^(3/2) before an entry: G on the leading slip- zone (zone 1's entry) and
@@ -133,25 +135,30 @@ double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
     // G_H = G + X (G_d - G), X = 1 - 35 u^4 + 84 u^5 - 70 u^6 + 20 u^7, u = (r - c1)/(s2 - c1), 1 - X = O(u^4) at c1 and
     // X = O((1 - u)^4) at s2, below v's own orders there (8(u)). One form on the whole slip+ zone would leave
     // 2 f (G - G_d) at one of its ends: zone 1's on all of r < s2 failed the slip check at n = 256 (8(u)).
-    if ((r >= s.s1 && r <= s.c1) || (r >= s.s2 && r <= s.c2)) return 0.0;
+    const zone &z1 = s.layout.stick_zone(0), &z2 = s.layout.stick_zone(1);
+    if ((r >= z1.from && r <= z1.to) || (r >= z2.from && r <= z2.to)) return 0.0;
     const double x = std::clamp(r, -1.0, 1.0);
     const double g = solver_.G(x), bp = s.forcing * pressure(x);  // in the frame beta_D > 0
-    double v = s.sign * s.xi + bp - f_ * g - 2.0 * f_ * (W(x, s.s1, s.c1) - W(x, s.s2, s.c2));
-    if (r > s.c1 && r < s.s2) {  // G_H - G added apart, so that G_H = G (Johnson's level) leaves v bit for bit
-        const double u = (r - s.c1) / (s.s2 - s.c1);
+    double v = s.sign * s.xi + bp - f_ * g - 2.0 * f_ * (W(x, z1.from, z1.to) - W(x, z2.from, z2.to));
+    if (r > z1.to && r < z2.from) {  // G_H - G added apart, so that G_H = G (Johnson's level) leaves v bit for bit
+        const double u = (r - z1.to) / (z2.from - z1.to);
         const double X = 1.0 - u * u * u * u * (35.0 + u * (-84.0 + u * (70.0 - 20.0 * u)));
         const double g_h = blended_G({x}, [X](double) { return X; }).front();
         v -= 2.0 * f_ * (g_h - g);
     }
-    for (const tangential_solution* t : {&s.zone1, &s.zone2}) v += solver_.slip_velocity(*t, x) - (t->xi + bp + f_ * g);
+    for (std::size_t k = 0; k < 2; ++k) {
+        const tangential_solution& t = s.zone_system(k);
+        v += solver_.slip_velocity(t, x) - (t.xi + bp + f_ * g);
+    }
     return s.sign * v;
 }
 
-traction_checks dissimilar_zones::check(const five_zone_solution& s) {
-    // (3.3) on both stick zones, (3.4) on the three slip zones in their directions S (layout_of).
-    return check_zones(layout_of(s).zones, blended_checks(), [&](double r) { return pressure(r); },
-                       [&](double r) { return traction(s, r); }, [&](double r) { return slip_velocity(s, r); });
+// The search's own solutions as points (five_zone_point): the same traction, slip velocity and checks.
+double dissimilar_zones::traction(const five_zone_solution& s, double r) { return stick_zones_traction(five_zone_point(s), r); }
+double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
+    return stick_zones_slip_velocity(five_zone_point(s), r);
 }
+traction_checks dissimilar_zones::check(const five_zone_solution& s) { return check(five_zone_point(s)); }
 
 std::vector<five_zone_start> dissimilar_zones::search_starts(double Q) const {
     // In the frame beta_D > 0 (8(h)) the scan's loads lie above sign * Q; the starts' loads have Q's sign. Outside

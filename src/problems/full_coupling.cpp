@@ -198,8 +198,8 @@ std::shared_ptr<const pressure_kinks> kinks_of(const step_source& from, const ga
         return std::function<double(double)>(
             [&from, start, rho, rise](double t) { return blend_part(from, start, rho, rise, t); });
     };
-    if (s.layout.stick_zones() == 2 && s.five) {
-        const five_zone_solution& v = *s.five;
+    if (s.layout.stick_zones() == 2) {
+        const struct { const tangential_solution &zone1, &zone2; double sign; } v{s.zone_system(0), s.zone_system(1), s.sign};
         if (!carries_q(v.zone1) || !carries_q(v.zone2)) return nullptr;
         auto k = std::make_shared<pressure_kinks>();
         k->add_zone(rule, beta_d, v.sign, v.zone1.start(), v.zone1.c0(), v.zone1.psi_b,
@@ -243,8 +243,8 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
     // its right side (no plateau, no remainder: 8(z), "Wired").
     // Where `five` is false (weighs_five_zones), null: the old path of kinks_of.
     if (s.layout.stick_zones() == 2) {
-        if (!five || !s.five) return nullptr;
-        const five_zone_solution& v = *s.five;
+        if (!five) return nullptr;
+        const struct { const tangential_solution &zone1, &zone2; double sign; } v{s.zone_system(0), s.zone_system(1), s.sign};
         // Each zone's q on the square-root weight (its U-series below), as the five zones' systems solve it.
         for (const tangential_solution* z : {&v.zone1, &v.zone2})
             if (!carries_q(*z) || z->weight_a > 0.0) return nullptr;

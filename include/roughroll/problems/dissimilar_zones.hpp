@@ -123,9 +123,9 @@ inline std::vector<const tangential_solution*> stick_systems(const five_zone_sol
     return {&s.zone1, &s.zone2};
 }
 
-// The five zones as a point of contact (contact::point): start, c0 the first stick zone [s1, c1],
-// start2, end2 the second [s2, c2], Q, xi, the checks, the layout (layout_of) and the solution itself
-// (`five`), through which dissimilar_zones::traction and slip_velocity answer for all five zones.
+// The five zones as a point of contact (contact::point): the layout (layout_of; start, c0 the first stick zone
+// [s1, c1], start2, end2 the second [s2, c2]), Q, xi, sign, forcing, the checks, and each stick zone's system
+// (zone_systems), from which dissimilar_zones::traction, slip_velocity and check answer for all five zones.
 tangential_solution five_zone_point(const five_zone_solution& v);
 // Their layout: slip -d, stick [s1, c1], slip d, stick [s2, c2], slip -d, d = sgn beta_D (8(j)).
 inline zone_layout layout_of(const five_zone_solution& v) {
@@ -159,9 +159,11 @@ public:
     // `k1`: K1* of the solver (for W of the blended stick zone).
     dissimilar_zones(tangential_solver& solver, const kernel& k1, double beta_d);
 
-    // p1(r) and v(r) (0 on the stick zone) of a solution of this workspace, either structure.
+    // p1(r) and v(r) (0 on the stick zones) of a solution of this workspace, every structure (three zones of either
+    // kind, five zones, the edge layers neglected), and its checks (3.3)-(3.4) on its layout.
     double traction(const tangential_solution& s, double r);
     double slip_velocity(const tangential_solution& s, double r);
+    traction_checks check(const tangential_solution& s);
 
     // The point at load Q, |Q| <= f, with its checks (3.3)-(3.4) on every zone (made, not acted
     // on: a reported point goes through require_checks, a level of an estimate need not);
@@ -199,8 +201,9 @@ public:
     std::optional<five_zone_solution> five_zones(double Q) { return five_zones(Q, std::vector<five_zone_start>{}); }
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
     five_zone_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
-    double traction(const five_zone_solution& s, double r);       // p1(r)
-    double slip_velocity(const five_zone_solution& s, double r);  // v(r), 0 on the stick zones
+    // p1(r), v(r) (0 on the stick zones) and the checks (3.3)-(3.4) of the five zones' point (five_zone_point).
+    double traction(const five_zone_solution& s, double r);
+    double slip_velocity(const five_zone_solution& s, double r);
     traction_checks check(const five_zone_solution& s);
 
     // Free rolling (Q = 0) of smooth rollers with the edge layers neglected (edge_layers.hpp,
@@ -219,8 +222,10 @@ private:
     stick_zone_operator zone_operator(bool opposite, double b, double magnitude);
     tangential_solution blended(double start, double c0, double b);  // the system with S of 8(g)
     tangential_solution gross_sliding(double b);
-    traction_checks check(const tangential_solution& s);  // (3.3)-(3.4) of either structure
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
+    // p1(r) and v(r) of five zones (8(j)) from their point's layout and stick zones' systems (zone_system).
+    double stick_zones_traction(const tangential_solution& s, double r);
+    double stick_zones_slip_velocity(const tangential_solution& s, double r);
     // G_H = (1 - phi) G + phi G_d at each r[i] (docs/formulation.md 8(u)), phi = (1 + S)/2 of the blend S: G_d = -L1[p]
     // of the discrete p (normal_solution::projected_minus_hilbert) where the normal solution keeps its projection and
     // K1* is empty (smooth rollers at full coupling); G elsewhere, where the two agree (Johnson's level) or G_d is not
@@ -254,7 +259,7 @@ private:
     end_quadrature quadrature_;  // W's and int p Theta's
     zone_memo<blended_cauchy> blends_;    // blend_of's
     zone_memo<kinks_blend> kinks_blends_;  // kinks_blend_of's
-    std::shared_ptr<const five_zone_solution> tractions_of_;  // traction's memo of a five-zone solution's p1
+    std::shared_ptr<const std::vector<tangential_solution>> tractions_of_;  // traction's memo of five zones' p1
     std::unordered_map<double, double> tractions_;
     std::size_t three_zone_searches_ = 0;  // solve's calls
 };

@@ -5,7 +5,10 @@
 // dissimilar_zones.hpp): part of the public interface (roughroll.hpp).
 #pragma once
 
+#include <cstddef>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "roughroll/problems/zone_layout.hpp"
@@ -25,8 +28,6 @@ struct traction_checks {
 
     bool hold() const { return pressure_holds && stick_holds && slip_holds; }
 };
-
-struct five_zone_solution;  // dissimilar_zones.hpp
 
 struct tangential_solution {
     double Q;                   // P1/P2
@@ -52,10 +53,11 @@ struct tangential_solution {
     // slip velocity and checks dissimilar_zones' own; layout.layers_neglected(): the no-slip solution
     // of 8(n), whose traction and checks are dissimilar_zones' too.
     zone_layout layout;
-    // Five zones (8(j)): the solution of both stick zones (dissimilar_zones.hpp), whose traction, slip
-    // velocity and checks these are; set with the layout (five_zone_point), null for every other
-    // structure. The test for five zones is the layout's, layout.stick_zones() == 2.
-    std::shared_ptr<const five_zone_solution> five;
+    // The stick zones' own systems, one per stick zone of the layout from r = -1, where the layout has several (five
+    // zones, 8(j): each zone's psi_b, xi_k, rcond and forcing; the point's xi, Q, sign and checks are the whole
+    // structure's, its psi_b empty); null where the point's own psi_b and xi are its one stick zone's. Shared: copies
+    // of a point (full coupling's iterates, a curve's rows) share them. Read through zone_system(k).
+    std::shared_ptr<const std::vector<tangential_solution>> zone_systems;
 
     // The ends of the first stick zone from r = -1, [start, c0] (docs/formulation.md 7(i)): the paper's
     // zone [-1, c0]; three zones [s, c0]; five zones the first, [s1, c1]; gross sliding the point
@@ -70,6 +72,14 @@ struct tangential_solution {
     double end2() const { return layout.stick_zones() > 1 ? layout.stick_zone(1).to : 2.0; }
     // r on a stick zone [from, to) of the layout
     bool sticks(double r) const { return layout.sticks(r); }
+    // The system of the k-th stick zone from r = -1 (its psi_b, xi_k, its ends [start(), c0()]): the point itself
+    // where it has one stick zone; std::out_of_range for k >= layout.stick_zones().
+    const tangential_solution& zone_system(std::size_t k) const {
+        if (zone_systems) return zone_systems->at(k);
+        if (k == 0 && layout.stick_zones() == 1) return *this;
+        // A layout built by hand without its systems: a programming error (exit 70), as layout.stick_zone's.
+        throw std::out_of_range("no system of stick zone " + std::to_string(k + 1) + " on this solution");
+    }
 };
 
 }  // namespace roughroll
