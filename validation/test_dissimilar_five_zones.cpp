@@ -24,7 +24,7 @@ using namespace roughroll;
 
 namespace {
 // The product's five zones at (f, Q), n = 32, found without a guess (dissimilar_zones::five_zones).
-five_zone_solution product(double f, double Q, int n = 32, const roughness& r = roughness{}) {
+tangential_solution product(double f, double Q, int n = 32, const roughness& r = roughness{}) {
     contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     dissimilar_zones d(tangential_of(c), kernel::tangential(r), beta_al_st);
     const auto s = d.five_zones(Q);
@@ -35,11 +35,11 @@ five_zone_solution product(double f, double Q, int n = 32, const roughness& r = 
 // The product against the grid route: the grid's five runs, its creep within the route's error (the
 // order-1 Richardson value of N = 100, 200 within their spread), the ends within two cells of N = 200.
 double against_grid(double f, double Q, const roughness& r = roughness{}) {
-    const five_zone_solution s = product(f, Q, 32, r);
+    const tangential_solution s = product(f, Q, 32, r);
     std::printf(
-        "f = %.3f, Q/f = %.2f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f (Newton %d, sweeps %d); margins stick "
+        "f = %.3f, Q/f = %.2f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f (Newton %d); margins stick "
         "%.2e, slip %.2e\n",
-        f, Q / f, s.s1, s.c1, s.s2, s.c2, s.xi, s.iterations, s.sweeps, s.checks.stick_margin, s.checks.slip_margin);
+        f, Q / f, s.start(), s.c0(), s.start2(), s.end2(), s.xi, s.iterations, s.checks.stick_margin, s.checks.slip_margin);
     EXPECT_TRUE(s.checks.hold()) << s.checks.stick_margin << " " << s.checks.slip_margin;
     EXPECT_NEAR(s.Q, Q, 1e-14);
     contact c(r, f, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
@@ -59,7 +59,7 @@ double against_grid(double f, double Q, const roughness& r = roughness{}) {
     EXPECT_EQ(runs.size(), 5u);
     if (runs.size() != 5u) return s.xi;
     const std::vector<int> states{-1, 0, 1, 0, -1};
-    const std::vector<double> ends{s.s1, s.c1, s.s2, s.c2};
+    const std::vector<double> ends = s.layout.stick_ends();
     for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(runs[k].state, states[k]);
     for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(ends[k], runs[k].to, 0.02) << "end " << k;
     return s.xi;
@@ -89,18 +89,18 @@ TEST(DissimilarFiveZones, RoughFreeRollingAgainstTheGridRoute) {
 // where the three zones had v < 0 (DissimilarProduct.DrivenAtThreeQuartersHasATrailingLayer).
 TEST(DissimilarFiveZones, DrivenAtThreeQuarters) {
     const double f = 0.05, Q = 0.75 * f;
-    const five_zone_solution s = product(f, Q);
-    std::printf("Q/f = 0.75: stick [%.9f, %.9f], [%.9f, %.9f], xi %.10f; margins %.2e, %.2e\n", s.s1, s.c1, s.s2, s.c2,
+    const tangential_solution s = product(f, Q);
+    std::printf("Q/f = 0.75: stick [%.9f, %.9f], [%.9f, %.9f], xi %.10f; margins %.2e, %.2e\n", s.start(), s.c0(), s.start2(), s.end2(),
                 s.xi, s.checks.stick_margin, s.checks.slip_margin);
     EXPECT_TRUE(s.checks.hold());
-    EXPECT_GT(s.s2, 0.999);
+    EXPECT_GT(s.start2(), 0.999);
     const normal_solution hertz = hertz_solution(32, method::product);
     const auto g100 = validation::solve_on_grid(hertz, kernel{}, f, Q, 100, 0, beta_al_st);
     const auto g200 = validation::solve_on_grid(hertz, kernel{}, f, Q, 200, 0, beta_al_st);
     const auto runs = g200.runs();
     ASSERT_EQ(runs.size(), 3u);
-    EXPECT_NEAR(s.s1, runs[0].to, 0.02);
-    EXPECT_NEAR(s.c1, runs[1].to, 0.02);
+    EXPECT_NEAR(s.start(), runs[0].to, 0.02);
+    EXPECT_NEAR(s.c0(), runs[1].to, 0.02);
     const double richardson = 2.0 * g200.xi - g100.xi, spread = std::fabs(g200.xi - g100.xi);
     std::printf("  grid %.9f, %.9f; product - Richardson %.2e, spread %.2e\n", g100.xi, g200.xi, s.xi - richardson,
                 spread);
@@ -133,18 +133,18 @@ TEST(DissimilarFiveZones, SlipVelocityUpToTheTrailingEdge) {
 TEST(DissimilarFiveZones, ConvergesInN) {
     const double f = 0.05;
     for (const roughness& r : {roughness{}, roughness{{{1.0, 0.5}, {0.5, 2.0}}, {}}}) {
-        const five_zone_solution b = product(f, 0.0, 32, r);
+        const tangential_solution b = product(f, 0.0, 32, r);
         // The other levels by Newton from n = 32's ends, as the levels of an estimate are found.
         const auto level = [&](int n) {
             contact c(r, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
             dissimilar_zones d(tangential_of(c), kernel::tangential(r), beta_al_st);
-            const auto s = d.five_zones(0.0, {b.s1, b.c1, b.s2, b.c2});
+            const auto s = d.five_zones(0.0, b.layout.stick_ends());
             if (!s) throw numerical_error("five zones: Newton from the n = 32 ends did not converge");
             EXPECT_TRUE(s->checks.hold()) << n;
             return *s;
         };
-        const five_zone_solution a = level(16), c = level(64);
-        const auto row = [](const five_zone_solution& s) { return std::vector<double>{s.xi, s.s1, s.c1, s.s2, s.c2}; };
+        const tangential_solution a = level(16), c = level(64);
+        const auto row = [](const tangential_solution& s) { return std::vector<double>{s.xi, s.start(), s.c0(), s.start2(), s.end2()}; };
         const auto ra = row(a), rb = row(b), rc = row(c);
         const char* names[] = {"xi", "s1", "c1", "s2", "c2"};
         for (std::size_t k = 0; k < ra.size(); ++k) {
@@ -164,10 +164,10 @@ TEST(DissimilarFiveZones, RollersExchanged) {
         dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st), e(tangential_of(c), kernel{}, -beta_al_st);
         const auto a = d.five_zones(Q), b = e.five_zones(-Q);
         ASSERT_TRUE(a && b);
-        EXPECT_EQ(a->s1, b->s1);
-        EXPECT_EQ(a->c1, b->c1);
-        EXPECT_EQ(a->s2, b->s2);
-        EXPECT_EQ(a->c2, b->c2);
+        EXPECT_EQ(a->start(), b->start());
+        EXPECT_EQ(a->c0(), b->c0());
+        EXPECT_EQ(a->start2(), b->start2());
+        EXPECT_EQ(a->end2(), b->end2());
         EXPECT_EQ(a->xi, -b->xi);
         EXPECT_EQ(a->Q, -b->Q);
         EXPECT_TRUE(b->checks.hold());
@@ -216,10 +216,10 @@ TEST(DissimilarFiveZones, TowardsNoSlip) {
         const auto s = ends.empty() ? d.five_zones(0.0) : d.five_zones(0.0, ends);
         ASSERT_TRUE(s) << f;
         EXPECT_TRUE(s->checks.hold()) << f;
-        ends = {s->s1, s->c1, s->s2, s->c2};
+        ends = s->layout.stick_ends();
         distance.push_back(s->xi - no_slip);
-        std::printf("f = %.3f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f, xi - no slip %.3e\n", f, s->s1, s->c1, s->s2,
-                    s->c2, s->xi, distance.back());
+        std::printf("f = %.3f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f, xi - no slip %.3e\n", f, s->start(), s->c0(), s->start2(),
+                    s->end2(), s->xi, distance.back());
     }
     const double expected = std::exp(-M_PI * 0.025 / beta_al_st);
     for (std::size_t k = 1; k < distance.size(); ++k) {
@@ -237,10 +237,10 @@ TEST(DissimilarFiveZones, TowardsCompleteSlip) {
     const double complete = -0.5823613 * beta_al_st;
     double previous = 0.0, previous_ratio = 0.0;
     for (double f : {0.04, 0.02, 0.01, 0.005, 0.0025}) {
-        const five_zone_solution s = product(f, 0.0);
+        const tangential_solution s = product(f, 0.0);
         EXPECT_TRUE(s.checks.hold()) << f;
-        std::printf("f = %.5f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f, xi - complete slip %.3e\n", f, s.s1, s.c1,
-                    s.s2, s.c2, s.xi, s.xi - complete);
+        std::printf("f = %.5f: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f, xi - complete slip %.3e\n", f, s.start(), s.c0(),
+                    s.start2(), s.end2(), s.xi, s.xi - complete);
         EXPECT_GT(s.xi, complete);
         if (previous != 0.0) {
             EXPECT_LT(s.xi, previous);
@@ -257,12 +257,12 @@ TEST(DissimilarFiveZones, TowardsCompleteSlip) {
 // beyond the main stick zone (1e-4 long) are below n = 32's resolution: the checks fail, and
 // points refuse it.
 TEST(DissimilarFiveZones, LargeFrictionByContinuationInBetaOverF) {
-    const five_zone_solution s = product(0.2, 0.0);
-    std::printf("f = 0.2: stick [%.7f, %.7f], [%.7f, %.7f], xi %.9f\n", s.s1, s.c1, s.s2, s.c2, s.xi);
+    const tangential_solution s = product(0.2, 0.0);
+    std::printf("f = 0.2: stick [%.7f, %.7f], [%.7f, %.7f], xi %.9f\n", s.start(), s.c0(), s.start2(), s.end2(), s.xi);
     EXPECT_TRUE(s.checks.hold());
     EXPECT_NEAR(s.xi, -0.058692205, 1e-9);  // TowardsNoSlip's f = 0.2, continued in f
-    EXPECT_NEAR(s.c1, 0.977972, 1e-6);
-    EXPECT_NEAR(s.s2, 0.993672, 1e-6);
+    EXPECT_NEAR(s.c0(), 0.977972, 1e-6);
+    EXPECT_NEAR(s.start2(), 0.993672, 1e-6);
     EXPECT_FALSE(product(0.3, 0.0).checks.hold());
 }
 
@@ -277,23 +277,23 @@ TEST(DissimilarFiveZones, BrakedSideHandsOverToThreeZones) {
     const auto near = d.five_zones(-0.02 * f);
     ASSERT_TRUE(near);
     EXPECT_TRUE(near->checks.hold());
-    std::printf("Q/f = -0.02: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f\n", near->s1, near->c1, near->s2, near->c2,
+    std::printf("Q/f = -0.02: stick [%.6f, %.6f], [%.6f, %.6f], xi %.9f\n", near->start(), near->c0(), near->start2(), near->end2(),
                 near->xi);
-    const auto last = d.five_zones(-0.0725 * f, {near->s1, near->c1, near->s2, near->c2});
+    const auto last = d.five_zones(-0.0725 * f, near->layout.stick_ends());
     ASSERT_TRUE(last);
     EXPECT_TRUE(last->checks.hold());
-    EXPECT_LT(last->s2 - last->c1, 0.06);  // the slip+ zone closing
+    EXPECT_LT(last->start2() - last->c0(), 0.06);  // the slip+ zone closing
     // Three zones fail at -0.0725 (the traction reaches +f p inside: the slip+ zone) and hold at -0.075.
     EXPECT_FALSE(d.solve(-0.0725 * f).checks.hold());
     const tangential_solution three = d.solve(-0.075 * f);
     EXPECT_TRUE(three.checks.hold());
     EXPECT_FALSE(three.layout.opposite());
     std::printf("Q/f = -0.0725: five [%.6f, %.6f], [%.6f, %.6f] xi %.9f; -0.075: three [%.6f, %.6f] xi %.9f\n",
-                last->s1, last->c1, last->s2, last->c2, last->xi, three.start(), three.c0(), three.xi);
+                last->start(), last->c0(), last->start2(), last->end2(), last->xi, three.start(), three.c0(), three.xi);
     // Continuity through the transition: the merged stick zone's ends are the outer ends of the five,
     // and the creep moves by the local slope times the step (slope from the five zones' -0.02 .. -0.0725).
-    EXPECT_NEAR(three.start(), last->s1, 0.002);
-    EXPECT_NEAR(three.c0(), last->c2, 0.002);
+    EXPECT_NEAR(three.start(), last->start(), 0.002);
+    EXPECT_NEAR(three.c0(), last->end2(), 0.002);
     const double slope = (last->xi - near->xi) / (-0.0525 * f);
     EXPECT_LT(std::fabs(three.xi - last->xi), 2.0 * std::fabs(slope) * 0.0025 * f);
     const normal_solution hertz = hertz_solution(32, method::product);

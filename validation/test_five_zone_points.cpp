@@ -48,7 +48,7 @@ void agrees(double Q) {
     ASSERT_EQ(r.status, 0);
     const nlohmann::json& j = r.out;
     std::printf("Q/f = %.2f: CLI xi %.12f, library %.12f; stick [%.9f, %.9f], [%.9f, %.9f]\n", Q / f,
-                j["xi"].get<double>(), s->xi, s->s1, s->c1, s->s2, s->c2);
+                j["xi"].get<double>(), s->xi, s->start(), s->c0(), s->start2(), s->end2());
     EXPECT_TRUE(j["checks_hold"].get<bool>());
     EXPECT_TRUE(j["checks"]["stick_traction_bound_3_3"].get<bool>());
     EXPECT_TRUE(j["checks"]["slip_velocity_positive_3_4"].get<bool>());
@@ -56,11 +56,11 @@ void agrees(double Q) {
     EXPECT_DOUBLE_EQ(j["Q"].get<double>(), Q);
     EXPECT_NEAR(j["beta_d"].get<double>(), beta_al_st, 1e-12);  // the materials', as for three zones
     EXPECT_NEAR(j["xi"].get<double>(), s->xi, 1e-10);
-    EXPECT_NEAR(j["stick_start"].get<double>(), s->s1, 1e-9);
-    EXPECT_NEAR(j["c0"].get<double>(), s->c1, 1e-9);
+    EXPECT_NEAR(j["stick_start"].get<double>(), s->start(), 1e-9);
+    EXPECT_NEAR(j["c0"].get<double>(), s->c0(), 1e-9);
     const nlohmann::json& z = j["zones"];
     ASSERT_EQ(z.size(), 5u);
-    const double ends[] = {-1.0, s->s1, s->c1, s->s2, s->c2, 1.0};
+    const double ends[] = {-1.0, s->start(), s->c0(), s->start2(), s->end2(), 1.0};
     const char* states[] = {"slip", "stick", "slip", "stick", "slip"};
     const int directions[] = {-1, 0, 1, 0, -1};  // beta_D > 0: slip-, stick, slip+, stick, slip- (8(j))
     for (std::size_t k = 0; k < 5; ++k) {

@@ -233,26 +233,26 @@ TEST(FreeRollingEveryF, LayersBoundAgainstTheFiveZonesContinued) {
         const auto s = ends.empty() ? d.five_zones(0.0) : d.five_zones(0.0, ends);
         ASSERT_TRUE(s) << f;
         ASSERT_TRUE(s->checks.hold()) << f;
-        ends = {s->s1, s->c1, s->s2, s->c2};
+        ends = s->layout.stick_ends();
         if (f < 0.3) continue;  // the continuation's start
         const neglected_layers layers = no_slip_layers(beta_al_st, f);
         const double distance = std::fabs(s->xi - no_slip_limit());
         const double reported = no_slip_limit() + layers.xi_shift;
         std::printf("f = %.3f: xi - no slip %.4g, bound %.4g (ratio %.3f), pointwise %.4g; layers %.4g %.4g (t %.4g); "
                     "reported xi %.3g off (estimate %.3g), ends %.3g (%.3g) %.3g (%.3g)\n",
-                    f, s->xi - no_slip_limit(), layers.sharp, distance / layers.sharp, layers.pointwise, 1.0 + s->s1,
-                    1.0 - s->c1, layers.thickness, s->xi - reported, layers.xi_bound, 1.0 + s->s1 - layers.leading,
-                    layers.leading_bound, 1.0 - s->c1 - layers.trailing, layers.trailing_bound);
+                    f, s->xi - no_slip_limit(), layers.sharp, distance / layers.sharp, layers.pointwise, 1.0 + s->start(),
+                    1.0 - s->c0(), layers.thickness, s->xi - reported, layers.xi_bound, 1.0 + s->start() - layers.leading,
+                    layers.leading_bound, 1.0 - s->c0() - layers.trailing, layers.trailing_bound);
         EXPECT_LE(distance, layers.sharp) << f;
         EXPECT_GE(distance, layers.sharp / 1.6) << f;
-        EXPECT_LT(1.0 + s->s1, layers.thickness) << f;  // the premise t = 2 t_c of 8(n)
-        EXPECT_LT(1.0 - s->c1, layers.thickness) << f;
+        EXPECT_LT(1.0 + s->start(), layers.thickness) << f;  // the premise t = 2 t_c of 8(n)
+        EXPECT_LT(1.0 - s->c0(), layers.thickness) << f;
         // The layers' route's values (8(n), "The layers' positions").
         EXPECT_NEAR(layers.xi_shift, first_order_creep(f) - no_slip_limit(), 4.0 * DBL_EPSILON * std::fabs(no_slip_limit())) << f;
         EXPECT_LE(std::fabs(s->xi - reported), layers.xi_bound) << f;
-        EXPECT_LE(std::fabs(1.0 - s->c1 - layers.trailing), layers.trailing_bound) << f;
+        EXPECT_LE(std::fabs(1.0 - s->c0() - layers.trailing), layers.trailing_bound) << f;
         if (f <= 0.4) {
-            EXPECT_LE(std::fabs(1.0 + s->s1 - layers.leading), layers.leading_bound) << f;
+            EXPECT_LE(std::fabs(1.0 + s->start() - layers.leading), layers.leading_bound) << f;
         }
         // The program's answer (the layers' route at the default tolerance from f = 0.306 on) within its
         // estimates of the continued five zones: the gap's values against an independent route.
@@ -262,9 +262,9 @@ TEST(FreeRollingEveryF, LayersBoundAgainstTheFiveZonesContinued) {
         ASSERT_EQ(r.out["zone_path"].get<std::string>(), "no-slip") << f;
         const nlohmann::json& e = r.out["error_estimate"];
         EXPECT_LE(std::fabs(r.out["xi"].get<double>() - s->xi), e["xi"].get<double>()) << f;
-        EXPECT_LE(std::fabs(r.out["c0"].get<double>() - s->c1), e["c0"].get<double>()) << f;
+        EXPECT_LE(std::fabs(r.out["c0"].get<double>() - s->c0()), e["c0"].get<double>()) << f;
         if (f <= 0.4) {
-            EXPECT_LE(std::fabs(r.out["stick_start"].get<double>() - s->s1), e["stick_start"].get<double>()) << f;
+            EXPECT_LE(std::fabs(r.out["stick_start"].get<double>() - s->start()), e["stick_start"].get<double>()) << f;
         }
     }
 }
@@ -291,16 +291,16 @@ TEST(FreeRollingEveryF, OtherFiveZonesFailTheStickCheck) {
     std::printf(
         "f = 0.43, n = 512: reversed slip %.4g tc (physical %.4g), trailing layer %.4g tc (%.4g), stick margin "
         "%.3g (%.3g), xi difference %.3g\n",
-        (other->s2 - other->c1) / tc, (physical->s2 - physical->c1) / tc, (1.0 - other->c1) / tc,
-        (1.0 - physical->c1) / tc, other->checks.stick_margin, physical->checks.stick_margin, other->xi - physical->xi);
+        (other->start2() - other->c0()) / tc, (physical->start2() - physical->c0()) / tc, (1.0 - other->c0()) / tc,
+        (1.0 - physical->c0()) / tc, other->checks.stick_margin, physical->checks.stick_margin, other->xi - physical->xi);
     EXPECT_TRUE(physical->checks.hold());
-    EXPECT_GT(physical->s2 - physical->c1, 0.5 * tc);
-    EXPECT_LT(other->s2 - other->c1, 0.05 * tc);               // another root, not the physical one drifting
-    EXPECT_GT(std::fabs(other->c1 - physical->c1), 0.1 * tc);  // ends a fifth of the layer away
+    EXPECT_GT(physical->start2() - physical->c0(), 0.5 * tc);
+    EXPECT_LT(other->start2() - other->c0(), 0.05 * tc);               // another root, not the physical one drifting
+    EXPECT_GT(std::fabs(other->c0() - physical->c0()), 0.1 * tc);  // ends a fifth of the layer away
     EXPECT_LT(std::fabs(other->xi - physical->xi), 1e-10);     // the creep cannot tell them apart
     EXPECT_FALSE(other->checks.hold());
     EXPECT_LT(other->checks.stick_margin, -1e-4);  // far beyond any rounding: the check cannot miss it
-    const double middle = 0.5 * (other->s2 + other->c2);
+    const double middle = 0.5 * (other->start2() + other->end2());
     EXPECT_LT(f * c.normal().pressure(middle) - std::fabs(d.traction(*other, middle)), -1e-4 * f);
     // Through the program: refused, or answered within its estimates of the physical root.
     const run_result r = run_point(f, "--n 512");
@@ -314,9 +314,9 @@ TEST(FreeRollingEveryF, OtherFiveZonesFailTheStickCheck) {
     const nlohmann::json& e = r.out["error_estimate"];
     EXPECT_TRUE(r.out["checks_hold"].get<bool>());
     EXPECT_LE(std::fabs(r.out["xi"].get<double>() - physical->xi), e["xi"].get<double>());
-    EXPECT_LE(std::fabs(r.out["c0"].get<double>() - physical->c1), e["c0"].get<double>());
-    const double resolution = r.out["zone_path"].get<std::string>() == "no-slip" ? 3e-3 * (1.0 + physical->s1) : 0.0;
-    EXPECT_LE(std::fabs(r.out["stick_start"].get<double>() - physical->s1), e["stick_start"].get<double>() + resolution);
+    EXPECT_LE(std::fabs(r.out["c0"].get<double>() - physical->c0()), e["c0"].get<double>());
+    const double resolution = r.out["zone_path"].get<std::string>() == "no-slip" ? 3e-3 * (1.0 + physical->start()) : 0.0;
+    EXPECT_LE(std::fabs(r.out["stick_start"].get<double>() - physical->start()), e["stick_start"].get<double>() + resolution);
 }
 
 // Complete slip (8(f)): the creep approaches -0.5823613 beta_D from above, its distance falling by 56

@@ -620,7 +620,7 @@ TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps
         if (q == 0.0) {
             const auto v = zones.five_zones(0.0);
             ASSERT_TRUE(v);
-            johnson = five_zone_point(*v);
+            johnson = *v;
             johnson.Q = 0.0;
         } else {
             johnson = zones.solve(Q);
@@ -661,7 +661,7 @@ TEST(FullCoupling, ThePlateauIsDecidedOnceForTheAlternation) {
     dissimilar_zones zones(solver, kernel{}, beta_al_st);
     const auto v = zones.five_zones(Q);
     ASSERT_TRUE(v);
-    tangential_solution johnson = five_zone_point(*v);
+    tangential_solution johnson = *v;
     johnson.Q = Q;
     full_coupling coupled(kernel{}, kernel{}, 64, method::product, f, beta_al_st);
     const tangential_solution s = coupled.solve(hertz, zones, johnson, false);

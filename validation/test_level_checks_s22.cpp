@@ -30,7 +30,7 @@ struct johnson_free_rolling {
         : hertz(hertz_solution(n, method::product)), solver(hertz, kernel{}, kernel{}, f), zones(solver, kernel{}, beta_al_st) {
         const auto v = zones.five_zones(0.0);
         if (!v) throw std::runtime_error("no five zones at Johnson's level");
-        point = five_zone_point(*v);
+        point = *v;
         point.Q = 0.0;
     }
     const normal_solution hertz;

@@ -29,14 +29,14 @@ struct level {
           d(tangential_of(c), kernel::tangential(rough_pair_at_a()), beta_al_st) {}
 };
 
-void print(const char* what, double f, const five_zone_solution& s) {
-    std::printf("%s f = %.4f: [%.9f, %.9f, %.9f, %.9f], xi %.12f, margins stick %.2e slip %.2e\n", what, f, s.s1, s.c1,
-                s.s2, s.c2, s.xi, s.checks.stick_margin, s.checks.slip_margin);
+void print(const char* what, double f, const tangential_solution& s) {
+    std::printf("%s f = %.4f: [%.9f, %.9f, %.9f, %.9f], xi %.12f, margins stick %.2e slip %.2e\n", what, f, s.start(), s.c0(),
+                s.start2(), s.end2(), s.xi, s.checks.stick_margin, s.checks.slip_margin);
 }
 
 // Free rolling at f by the search alone, and by the continuation in f from f = 0.05's search.
 void search_against_continuation(double f, int n) {
-    std::optional<five_zone_solution> searched;
+    std::optional<tangential_solution> searched;
     {
         level l(f, n);
         searched = l.d.five_zones(0.0);
@@ -44,7 +44,7 @@ void search_against_continuation(double f, int n) {
     ASSERT_TRUE(searched) << "the search finds no five zones at f = " << f;
     print("search      ", f, *searched);
     EXPECT_TRUE(searched->checks.hold());
-    std::optional<five_zone_solution> s;
+    std::optional<tangential_solution> s;
     {
         level l(0.05, n);
         s = l.d.five_zones(0.0);
@@ -53,17 +53,17 @@ void search_against_continuation(double f, int n) {
     const int steps = static_cast<int>(std::lround((f - 0.05) / 0.0125));
     for (int i = 1; i <= steps && s; ++i) {
         level l(0.05 + 0.0125 * i, n);
-        s = l.d.five_zones(0.0, {s->s1, s->c1, s->s2, s->c2});
+        s = l.d.five_zones(0.0, s->layout.stick_ends());
     }
     ASSERT_TRUE(s) << "the continuation in f stops";
     print("continuation", f, *s);
     EXPECT_TRUE(s->checks.hold());
     // Two Newton roots of the same equations, each to its ends' resolution (zone_end_resolution 1e-11, times the
     // conditioning): the same root where they agree far below the zones' sizes (the thinnest 1e-3).
-    EXPECT_NEAR(searched->s1, s->s1, 1e-8);
-    EXPECT_NEAR(searched->c1, s->c1, 1e-8);
-    EXPECT_NEAR(searched->s2, s->s2, 1e-8);
-    EXPECT_NEAR(searched->c2, s->c2, 1e-8);
+    EXPECT_NEAR(searched->start(), s->start(), 1e-8);
+    EXPECT_NEAR(searched->c0(), s->c0(), 1e-8);
+    EXPECT_NEAR(searched->start2(), s->start2(), 1e-8);
+    EXPECT_NEAR(searched->end2(), s->end2(), 1e-8);
     EXPECT_NEAR(searched->xi, s->xi, 1e-10);
 }
 }  // namespace

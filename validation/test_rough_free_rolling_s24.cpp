@@ -66,7 +66,7 @@ TEST(RoughFreeRollingS24, CrossingOfSmoothRollersIsTheClosedForm) {
 TEST(RoughFreeRollingS24, CrossingAndLawAgainstTheFiveZones) {
     const double f = 0.2;
     const roughness rough = rough_pair_at_a();
-    std::optional<five_zone_solution> coarse, fine;
+    std::optional<tangential_solution> coarse, fine;
     {
         contact c(rough, f, solver_options{64, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
         dissimilar_zones d(tangential_of(c), kernel::tangential(rough), beta_al_st);
@@ -78,19 +78,19 @@ TEST(RoughFreeRollingS24, CrossingAndLawAgainstTheFiveZones) {
         johnson_layers_crossing(c.normal(), kernel::tangential(rough), kernel::normal(rough), beta_al_st, f).crossing;
     {
         dissimilar_zones d(tangential_of(c), kernel::tangential(rough), beta_al_st);
-        fine = d.five_zones(0.0, {coarse->s1, coarse->c1, coarse->s2, coarse->c2});
+        fine = d.five_zones(0.0, coarse->layout.stick_ends());
     }
     ASSERT_TRUE(fine && fine->checks.hold()) << "no five zones at n = 128";
     const double smooth = 2.0 / (1.0 + std::exp(M_PI * f / beta_al_st));
-    std::printf("t_c %.6e (smooth formula %.6e), 1 + s1 = %.6e (n = 128), %.6e (n = 64)\n", t_c, smooth, 1.0 + fine->s1,
-                1.0 + coarse->s1);
+    std::printf("t_c %.6e (smooth formula %.6e), 1 + s1 = %.6e (n = 128), %.6e (n = 64)\n", t_c, smooth, 1.0 + fine->start(),
+                1.0 + coarse->start());
     EXPECT_LT(t_c, 0.3 * smooth);
     // 4/e^2 + 0.125 t_c (the correction measured on smooth rollers) = 0.5420; the five zones at n = 128 are within 1e-3
     // of their limit in 1 + s1 (relative: the change to n = 256 in rough5's continuation, s23).
-    const double ratio = (1.0 + fine->s1) / t_c;
+    const double ratio = (1.0 + fine->start()) / t_c;
     EXPECT_NEAR(ratio, 4.0 * std::exp(-2.0) + 0.125 * t_c, 0.01) << ratio;
     const double x = t_c * 128.0 * 128.0;
-    const double change = std::fabs(fine->s1 - coarse->s1) / (1.0 + fine->s1);
+    const double change = std::fabs(fine->start() - coarse->start()) / (1.0 + fine->start());
     const double law = 3.0 * std::exp(-0.57 * std::sqrt(x));
     std::printf("x = %.1f: change %.4e, law %.4e\n", x, change, law);
     EXPECT_GT(change, 0.5 * law);
@@ -98,7 +98,7 @@ TEST(RoughFreeRollingS24, CrossingAndLawAgainstTheFiveZones) {
 
     // Near the rule's edge (x = 196 at n = 1000 and the default tolerance): f = 0.25, levels 160 and 320, x = 177, the
     // five zones continued in f at n = 128 (Newton from the previous f's ends) and then in n.
-    std::optional<five_zone_solution> s = fine;
+    std::optional<tangential_solution> s = fine;
     const auto next = [&](double at_f, int n, double* crossing = nullptr) {
         contact l(rough, at_f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
         if (crossing)
@@ -106,16 +106,16 @@ TEST(RoughFreeRollingS24, CrossingAndLawAgainstTheFiveZones) {
                                                 beta_al_st, at_f)
                             .crossing;
         dissimilar_zones d(tangential_of(l), kernel::tangential(rough), beta_al_st);
-        s = d.five_zones(0.0, {s->s1, s->c1, s->s2, s->c2});
+        s = d.five_zones(0.0, s->layout.stick_ends());
         ASSERT_TRUE(s && s->checks.hold()) << "f = " << at_f << ", n = " << n;
     };
     next(0.225, 128);
     next(0.25, 128);
     next(0.25, 160);
-    const double half = s->s1;
+    const double half = s->start();
     double t = 0.0;
     next(0.25, 320, &t);
-    const double x_edge = t * 320.0 * 320.0, change_edge = std::fabs(s->s1 - half) / (1.0 + s->s1);
+    const double x_edge = t * 320.0 * 320.0, change_edge = std::fabs(s->start() - half) / (1.0 + s->start());
     const double law_edge = 3.0 * std::exp(-0.57 * std::sqrt(x_edge));
     std::printf("f = 0.25: t_c %.4e, x = %.1f: change %.4e, law %.4e\n", t, x_edge, change_edge, law_edge);
     EXPECT_GT(x_edge, 150.0);

@@ -257,7 +257,7 @@ private:
     std::optional<tangential_solution> five(double Q, const std::vector<double>* ends, rounding_limits& met) {
         checkpoint();
         if (!(last_five_ && last_five_load_ == Q)) {
-            std::optional<five_zone_solution> v;
+            std::optional<tangential_solution> v;
             try {
                 // From the coarser level's ends first (Newton, as the three-zone levels); on a curve the previous
                 // row's five zones continued in the load next (a start only: the root is the same to Newton's
@@ -273,7 +273,7 @@ private:
             last_five_ = v;
             last_five_load_ = Q;
         }
-        tangential_solution s = five_zone_point(*last_five_);
+        tangential_solution s = *last_five_;
         s.Q = Q;
         return s;
     }
@@ -297,7 +297,7 @@ private:
     std::optional<double> layers_;
     mutable std::optional<layers_crossing> rough_crossing_;  // rough_crossing's, once asked
     std::optional<tangential_solution> last_three_;
-    std::optional<five_zone_solution> last_five_;
+    std::optional<tangential_solution> last_five_;
     double last_five_load_ = 0.0;  // the load it was asked for
 };
 
@@ -379,19 +379,19 @@ std::optional<tangential_solution> johnson_model::five_continued(double Q, const
                                                                  std::vector<double> ends, rounding_limits& met) {
     std::vector<johnson_model*> levels = below;
     levels.push_back(this);
-    std::vector<five_zone_solution> found;
+    std::vector<tangential_solution> found;
     for (johnson_model* level : levels) {
         level->checkpoint();
-        std::optional<five_zone_solution> v;
+        std::optional<tangential_solution> v;
         try {
             v = level->zones_.five_zones(Q, ends, std::nullopt, &met);  // Newton from the ends, empty where it fails
         } catch (const numerical_error&) {
         }
         if (!v) return std::nullopt;
-        ends = {v->s1, v->c1, v->s2, v->c2};
+        ends = v->layout.stick_ends();
         found.push_back(std::move(*v));
     }
-    tangential_solution s = five_zone_point(found.back());
+    tangential_solution s = found.back();
     s.Q = Q;  // as five_point: the load asked for
     // A root whose checks fail is another structure's (the transitions of 8(j) 4a): the point's search decides.
     if (!s.checks.hold()) return std::nullopt;

@@ -438,18 +438,6 @@ stick_zone_operator dissimilar_zones::zone_operator(bool opposite, double b, dou
     return op;
 }
 
-tangential_solution five_zone_point(const five_zone_solution& v) {
-    tangential_solution s = zone_solution(v.f, v.s1, v.c1, v.xi, v.Q, {}, std::min(v.zone1.rcond, v.zone2.rcond));
-    s.sign = v.sign;
-    s.iterations = v.iterations;
-    s.ends_resolution = v.ends_resolution;
-    s.checks = v.checks;
-    s.forcing = v.zone1.forcing;  // |beta_D|, the frame's (sign * forcing = beta_D, as reported)
-    s.layout = layout_of(v);
-    s.zone_systems = std::make_shared<const std::vector<tangential_solution>>(std::vector{v.zone1, v.zone2});
-    return s;
-}
-
 double dissimilar_zones::traction(const tangential_solution& s, double r) {
     if (s.layout.stick_zones() == 2) {
         // Full coupling asks the previous iterate's p1 at the same points again and again (G of every zone solve

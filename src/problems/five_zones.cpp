@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
@@ -36,7 +39,7 @@ constexpr double forcing_step = 0.25, smallest_forcing_step = 1.0 / 64.0;   // i
 constexpr double scan_loads[] = {2.0 / 8, 4.0 / 8, 1.0 / 8, 3.0 / 8, 5.0 / 8, 6.0 / 8, 7.0 / 8, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 }  // namespace
 
-five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2, double beta) {
+tangential_solution dissimilar_zones::five_zone_system(double s1, double c1, double s2, double c2, double beta) {
     // Solved in the frame beta_D > 0 with the forcing beta (|beta_D| but on a continuation in
     // beta_D/f); for beta_D < 0 the exchange of rollers of 8(h) gives xi, Q, p1, v with the opposite
     // sign and the same ends.
@@ -66,33 +69,36 @@ five_zone_solution dissimilar_zones::five_zone_system(double s1, double c1, doub
         for (std::size_t m = 0; m < r.size(); ++m) out[m] = v[m] - (t.xi + f_ * g[m]) + base[m];
         return out;
     };
-    five_zone_solution s{};
-    s.f = f_;
-    s.forcing = beta;
-    s.s1 = s1, s.c1 = c1, s.s2 = s2, s.c2 = c2;
-    s.zone1 = solver_.solve_on_zone(s1, c1, beta, &base1);
-    s.zone2 = solver_.solve_on_zone(s2, c2, beta, &base2);
-    double previous = s.zone1.xi + s.zone2.xi;
-    for (s.sweeps = 1;; ++s.sweeps) {
-        const std::vector<double> e1 = coupled(s.zone2, r1, base1);
-        s.zone1 = solver_.solve_on_zone(s1, c1, beta, &e1);
-        const std::vector<double> e2 = coupled(s.zone1, r2, base2);
-        s.zone2 = solver_.solve_on_zone(s2, c2, beta, &e2);
-        const double now = s.zone1.xi + s.zone2.xi;
+    tangential_solution zone1 = solver_.solve_on_zone(s1, c1, beta, &base1),
+                        zone2 = solver_.solve_on_zone(s2, c2, beta, &base2);
+    double previous = zone1.xi + zone2.xi;
+    for (int sweeps = 1;; ++sweeps) {
+        const std::vector<double> e1 = coupled(zone2, r1, base1);
+        zone1 = solver_.solve_on_zone(s1, c1, beta, &e1);
+        const std::vector<double> e2 = coupled(zone1, r2, base2);
+        zone2 = solver_.solve_on_zone(s2, c2, beta, &e2);
+        const double now = zone1.xi + zone2.xi;
         if (std::fabs(now - previous) <= sweep_tolerance * f_ + sweep_rounding * std::fabs(now)) break;
-        if (s.sweeps == max_sweeps || !std::isfinite(now))
+        if (sweeps == max_sweeps || !std::isfinite(now))
             throw numerical_error("five zones: the coupling of the two stick zones does not converge");
         previous = now;
     }
-    s.sign = beta_d_ > 0.0 ? 1.0 : -1.0;
-    s.xi = s.sign * s.zone1.xi;
+    const double sign = beta_d_ > 0.0 ? 1.0 : -1.0;
     // Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2; solve_on_zone's Q is f + rho int q.
-    s.Q = s.sign *
-          (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (s.zone1.Q - f_) + (s.zone2.Q - f_));
+    const double Q =
+        sign * (f_ * (-1.0 + 2.0 * load_under_H(s1, c1) - 2.0 * load_under_H(s2, c2)) + (zone1.Q - f_) + (zone2.Q - f_));
+    // The point: xi = xi1 (= xi2 at the root) with the frame's sign, the forcing |beta_D| of the frame (sign * forcing
+    // = beta_D, as reported), the worse rcond, the layout and each zone's system.
+    tangential_solution s =
+        zone_solution(f_, s1, c1, sign * zone1.xi, Q, {}, std::min(zone1.rcond, zone2.rcond), zone1.forcing);
+    s.sign = sign;
+    s.layout = five_zones_layout(s1, c1, s2, c2, sign > 0.0 ? 1 : -1);
+    s.zone_systems =
+        std::make_shared<const std::vector<tangential_solution>>(std::vector{std::move(zone1), std::move(zone2)});
     return s;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends,
+std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends,
                                                                std::optional<double> beta, rounding_limits* met,
                                                                newton_jacobian* kept, bool checked) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
@@ -101,8 +107,8 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, const s
     rounding_limits own;  // where the caller keeps none
     // The zone search's Newton in the blend's stick zones (ends_newton, k = 2): the load's gap, both entry
     // conditions psi_k(-1) = 0 and xi1 = xi2, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
-    auto s = ends_newton<five_zone_solution>(
-        [&](const std::vector<stick_span>& z) -> std::optional<five_zone_solution> {
+    auto s = ends_newton<tangential_solution>(
+        [&](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
             try {
                 return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, forcing);
             } catch (const numerical_error&) {
@@ -153,13 +159,6 @@ double dissimilar_zones::stick_zones_slip_velocity(const tangential_solution& s,
     return s.sign * v;
 }
 
-// The search's own solutions as points (five_zone_point): the same traction, slip velocity and checks.
-double dissimilar_zones::traction(const five_zone_solution& s, double r) { return stick_zones_traction(five_zone_point(s), r); }
-double dissimilar_zones::slip_velocity(const five_zone_solution& s, double r) {
-    return stick_zones_slip_velocity(five_zone_point(s), r);
-}
-traction_checks dissimilar_zones::check(const five_zone_solution& s) { return check(five_zone_point(s)); }
-
 std::vector<five_zone_start> dissimilar_zones::search_starts(double Q) const {
     // In the frame beta_D > 0 (8(h)) the scan's loads lie above sign * Q; the starts' loads have Q's sign. Outside
     // beta_D/f in [1, 6] (f <= 0.02 or f >= 0.15 for aluminium on steel) free rolling at 2.875 (f = 0.05's) or 1.5.
@@ -180,7 +179,7 @@ std::vector<five_zone_start> dissimilar_zones::search_starts(double Q) const {
     return starts;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::from_three_zones(double load, double forcing, bool& holds,
+std::optional<tangential_solution> dissimilar_zones::from_three_zones(double load, double forcing, bool& holds,
                                                                      rounding_limits& met) {
     // slip-, stick [s, c], slip+ leave v < 0 near the trailing edge (8(j) item 4): the second zone from there.
     holds = false;
@@ -204,7 +203,7 @@ std::optional<five_zone_solution> dissimilar_zones::from_three_zones(double load
     return std::nullopt;
 }
 
-std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::vector<five_zone_start> starts,
+std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, std::vector<five_zone_start> starts,
                                                                rounding_limits* met) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
     rounding_limits kept;  // where the caller keeps none
@@ -216,10 +215,10 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
     // led Newton to a slip+ zone closed to 2.6e-5 (stick margin -0.091) and every finer level followed it from the
     // coarser ends, while the scan's start (Q/f = 1/4 continued in Q) reaches the physical root, n = 64's (8(j) 4a,
     // "Which root"). Where no start reaches one whose checks hold, the first root stands, as before.
-    std::optional<five_zone_solution> failing;
+    std::optional<tangential_solution> failing;
     for (const five_zone_start& start : starts) {
         double load = Q, forcing = std::fabs(beta_d_);  // where s is, nominally (Newton's load differs by its residual)
-        std::optional<five_zone_solution> s;
+        std::optional<tangential_solution> s;
         if (start.from == five_zone_start::base::ends) {
             s = five_zones(Q, start.ends, forcing, &limits);
         } else if (start.from == five_zone_start::base::solved) {
@@ -241,8 +240,8 @@ std::optional<five_zone_solution> dissimilar_zones::five_zones(double Q, std::ve
             s = continued(
                 *s, at, path[leg].target, in_load ? load_step * f_ : forcing_step,
                 in_load ? smallest_load_step * f_ : smallest_forcing_step, !in_load,
-                [&](double next, const five_zone_solution& p) {
-                    return five_zones(in_load ? next : load, {p.s1, p.c1, p.s2, p.c2}, in_load ? p.forcing : next,
+                [&](double next, const tangential_solution& p) {
+                    return five_zones(in_load ? next : load, p.layout.stick_ends(), in_load ? p.forcing : next,
                                       &limits);
                 });
             if (!s && leg >= start.shared_after) return failing;

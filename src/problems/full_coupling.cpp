@@ -111,7 +111,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
                                    "the five zones (slip, stick, reversed slip, stick, slip) are not found again "
                                    "from the previous step of the alternation at this n (docs/formulation.md 8(e), "
                                    "8(q)); another n may answer, and coupling = \"johnson\" answers the load");
-        t = five_zone_point(*v);
+        t = *v;
         t.Q = Q;
     } else {
         // With the weighted pressure (8(w)) the braked three zones' steps keep their own structure: the step that

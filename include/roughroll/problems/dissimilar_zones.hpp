@@ -27,7 +27,7 @@
 //   - gross sliding |Q| = f: slip everywhere, v = xi' + b p + f G >= 0 vanishing at its least
 //     point r*: xi' = -min_r (b p + f G) (8(g));
 //   - the complete-slip limit f -> 0 (8(f)), its own special case (complete_slip_creep).
-//   - five zones (8(j)): five_zone_solution below, by five_zones (five_zones.cpp), not through solve().
+//   - five zones (8(j)): by five_zones (five_zones.cpp), not through solve().
 // The two three-zone structures are values of the one zone search's operator (zone_operator below,
 // stick_zone_operator.hpp), found by zone_solver; solve tries them in turn (the coarser level's first).
 // Not solve()'s (refused with resolution_error naming what is missing, never a number): free rolling Q = 0 and
@@ -104,33 +104,13 @@ void require_checks(const tangential_solution& s);
 //   Q = f (-1 + 2 int p H1 - 2 int p H2) + rho1 int q1 + rho2 int q2.
 // Each zone's system carries its own constant xi_k (the regularising constant of 8(g)'s counting);
 // the four ends solve Q(ends) = Q, psi1(-1) = 0, psi2(-1) = 0, xi1 = xi2.
-struct five_zone_solution {
-    double Q, f, xi;                   // xi = xi1 (= xi2 at the root), both with the sign below
-    double sign = 1.0;                 // sgn beta_D: the frame beta_D > 0 maps Q, xi, p1, v by it (8(h))
-    double forcing = 0.0;              // the frame's |beta_D| (another value only on a continuation in beta_D/f)
-    double s1, c1, s2, c2;             // the stick zones [s1, c1], [s2, c2]
-    tangential_solution zone1, zone2;  // each zone's system (its psi and xi_k)
-    traction_checks checks;            // (3.3) on both stick zones, (3.4) with S on the three slip zones
-    int iterations = 0;                // Newton's
-    double ends_resolution = 0.0;      // Newton's (newton_root::resolution)
-    int sweeps = 0;                    // block Gauss-Seidel sweeps of the last system
-};
-
-using five_zone_start = zone_start<five_zone_solution>;  // a start of their search (zone_start.hpp)
-
-// Their stick zones' systems, for the zone search's Newton (ends_newton, zone_newton.hpp).
-inline std::vector<const tangential_solution*> stick_systems(const five_zone_solution& s) {
-    return {&s.zone1, &s.zone2};
-}
-
-// The five zones as a point of contact (contact::point): the layout (layout_of; start, c0 the first stick zone
-// [s1, c1], start2, end2 the second [s2, c2]), Q, xi, sign, forcing, the checks, and each stick zone's system
-// (zone_systems), from which dissimilar_zones::traction, slip_velocity and check answer for all five zones.
-tangential_solution five_zone_point(const five_zone_solution& v);
-// Their layout: slip -d, stick [s1, c1], slip d, stick [s2, c2], slip -d, d = sgn beta_D (8(j)).
-inline zone_layout layout_of(const five_zone_solution& v) {
-    return five_zones_layout(v.s1, v.c1, v.s2, v.c2, v.sign > 0.0 ? 1 : -1);
-}
+// Their solution is a tangential_solution (five_zone_system): the layout slip -d [-1, s1), stick [s1, c1], slip d
+// (c1, s2), stick [s2, c2], slip -d (c2, 1], d = sgn beta_D (five_zones_layout; start, c0 the first stick zone, start2,
+// end2 the second), xi = xi1 (= xi2 at the root) and Q with the frame's sign `sign` (8(h)), `forcing` the frame's
+// |beta_D| (another value only on a continuation in beta_D/f), the worse rcond, Newton's iterations and ends'
+// resolution, the checks ((3.3) on both stick zones, (3.4) with S on the three slip zones), and each stick zone's
+// system (zone_system(k): its psi and xi_k), from which traction, slip_velocity and check answer for all five zones.
+using five_zone_start = zone_start<tangential_solution>;  // a start of their search (zone_start.hpp)
 
 // The last four zones' values of T (W's Cauchy parts of the blended zone, 8(g), 8(o)): five zones alternate
 // two zones and Newton's steps move both, so each is made once per zone. A pointer returned stays valid
@@ -185,7 +165,7 @@ public:
     // acted on. `kept`: Newton's Jacobian carried from the last call (full coupling's alternation, damped_newton.hpp).
     // `checked` false: the checks are not made (NaN margins, none holding), for a caller that makes them (check) where
     // it reads them.
-    std::optional<five_zone_solution> five_zones(double Q, const std::vector<double>& ends,
+    std::optional<tangential_solution> five_zones(double Q, const std::vector<double>& ends,
                                                  std::optional<double> beta = std::nullopt,
                                                  rounding_limits* met = nullptr, newton_jacobian* kept = nullptr,
                                                  bool checked = true);
@@ -196,15 +176,11 @@ public:
     // where the driven three zones at Q keep v > 0 up to the trailing edge (they answer). A start whose Newton (of
     // the three zones or the five) stops at the ends' rounding limit gives nothing, the next start is tried; the
     // limit is noted in `met` where given.
-    std::optional<five_zone_solution> five_zones(double Q, std::vector<five_zone_start> first,
+    std::optional<tangential_solution> five_zones(double Q, std::vector<five_zone_start> first,
                                                  rounding_limits* met = nullptr);
-    std::optional<five_zone_solution> five_zones(double Q) { return five_zones(Q, std::vector<five_zone_start>{}); }
+    std::optional<tangential_solution> five_zones(double Q) { return five_zones(Q, std::vector<five_zone_start>{}); }
     // The systems of both stick zones at given ends (block Gauss-Seidel on their coupling L1[q_other]).
-    five_zone_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
-    // p1(r), v(r) (0 on the stick zones) and the checks (3.3)-(3.4) of the five zones' point (five_zone_point).
-    double traction(const five_zone_solution& s, double r);
-    double slip_velocity(const five_zone_solution& s, double r);
-    traction_checks check(const five_zone_solution& s);
+    tangential_solution five_zone_system(double s1, double c1, double s2, double c2, double beta);
 
     // Free rolling (Q = 0) of smooth rollers with the edge layers neglected (edge_layers.hpp,
     // docs/formulation.md 8(n)): the no-slip solution, its checks (3.3)-(3.4) on [-1 + t, 1 - t], t the
@@ -215,7 +191,7 @@ private:
     std::vector<five_zone_start> search_starts(double Q) const;  // five_zones(Q)'s own starts
     // Newton from the driven three zones at `load` with `forcing`; `holds` where their v stays positive up to the
     // edge (they are the answer: no five zones).
-    std::optional<five_zone_solution> from_three_zones(double load, double forcing, bool& holds, rounding_limits& met);
+    std::optional<tangential_solution> from_three_zones(double load, double forcing, bool& holds, rounding_limits& met);
     double load_under_H(double start, double c0);           // int p H over [-1, 1] for the zone [start, c0]
     // The three zones at |Q| = magnitude with the forcing b as the one zone search's operator: both slip
     // zones in the direction of Q (`opposite` false), or the leading one against it (8(g)).

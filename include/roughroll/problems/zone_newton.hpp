@@ -43,9 +43,14 @@ private:
     double rounding_ = 0.0, tolerance_ = 0.0;  // the largest rounding met, and its Newton's tolerance
 };
 
-// The stick zones' systems of a solution, in order from r = -1: one here, two for the five zones
-// (dissimilar_zones.hpp).
-inline std::vector<const tangential_solution*> stick_systems(const tangential_solution& s) { return {&s}; }
+// The stick zones' systems of a solution, in order from r = -1 (tangential_solution::zone_system): the solution itself
+// for one stick zone, each zone's for the five zones (dissimilar_zones.hpp).
+inline std::vector<const tangential_solution*> stick_systems(const tangential_solution& s) {
+    if (!s.zone_systems) return {&s};
+    std::vector<const tangential_solution*> systems;
+    for (const tangential_solution& t : *s.zone_systems) systems.push_back(&t);
+    return systems;
+}
 
 // Newton in the ends of k stick zones at the load Q, for every zone search. `solve`: the systems on the zones,
 // empty where they fail (the step is halved). The residuals, per zone structure:
