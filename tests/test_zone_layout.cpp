@@ -3,9 +3,12 @@
 // solution without zones (built by hand, never by a solver) does when asked for them.
 #include "roughroll/problems/zone_layout.hpp"
 
+#include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -56,6 +59,30 @@ TEST(ZoneLayout, AMissingStickZoneIsAnOutOfRangeError) {
         EXPECT_EQ(std::string(e.what()),
                   "no stick zone 2 among the layout's 1 (a solution gets its zones from a solver)");
     }
+}
+
+// One system per stick zone (docs/formulation.md 7(k)): a point of one stick zone is its own zone's system; a point of
+// several carries them in order from r = -1, shared by its copies; a zone it lacks, or a layout of several zones
+// without their systems (built by hand), is std::out_of_range. (Fails where zone_system(k) returns the point for every
+// k, or the systems in another order.)
+TEST(ZoneLayout, OneSystemPerStickZone) {
+    const tangential_solution one = zone_solution(0.3, -0.5, 0.25, 0.1, 0.2, {1.0, 2.0}, 1.0);
+    EXPECT_EQ(&one.zone_system(0), &one);
+    EXPECT_THROW((void)one.zone_system(1), std::out_of_range);
+
+    tangential_solution five = zone_solution(0.3, -0.9, -0.2, 0.1, 0.0, {}, 1.0);
+    five.layout = five_zones_layout(-0.9, -0.2, 0.1, 0.6, 1);
+    EXPECT_THROW((void)five.zone_system(0), std::out_of_range);  // two stick zones, no systems
+    five.zone_systems = std::make_shared<const std::vector<tangential_solution>>(std::vector{
+        zone_solution(0.3, -0.9, -0.2, 0.1, 0.0, {3.0}, 1.0), zone_solution(0.3, 0.1, 0.6, 0.1, 0.0, {4.0}, 1.0)});
+    const tangential_solution copy = five;
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(copy.zone_system(k).start(), five.layout.stick_zone(k).from) << k;
+        EXPECT_EQ(copy.zone_system(k).c0(), five.layout.stick_zone(k).to) << k;
+        EXPECT_EQ(&copy.zone_system(k), &five.zone_system(k)) << k;  // shared, not copied
+    }
+    EXPECT_EQ(copy.zone_system(1).psi_b, std::vector<double>{4.0});
+    EXPECT_THROW((void)copy.zone_system(2), std::out_of_range);
 }
 
 }  // namespace
