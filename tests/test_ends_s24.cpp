@@ -253,9 +253,8 @@ TEST(RichardsonEndsS24, EachEndOnItsOwnAndLevelNsEstimatesUntouched) {
 // returning e (the members 4e-7, 6.1e-7: the answer's ratio at 1e-7 0.32 -> 19) or folding without the second zone's
 // ends (c0's member 5.2e-9 where c2's own 4e-7 is the larger).
 TEST(RichardsonEndsS25, TheToleranceReadsEachEndAtItsOwnEstimate) {
-    tangential_solution s = five_zone_level(-0.6847158620506969, 0.4863685616797325, 0.8347224629925493,
-                                            0.9192781903204459)
-                                .solution;
+    tangential_solution s =
+        five_zone_level(-0.6847158620506969, 0.4863685616797325, 0.8347224629925493, 0.9192781903204459).solution;
     s.xi = -0.0682423944420049;
     s.f = 0.05;
     error_estimate e{1e-12, 1.5e-7, 6e-13, 0.0, "levels n/4, n/2, n", false, 6.1e-7};
@@ -292,8 +291,7 @@ TEST(RichardsonEndsS25, TheToleranceReadsEachEndAtItsOwnEstimate) {
     const tolerance_check t = check_estimate(s, lambda, e, 1e-7);
     EXPECT_LE(t.ratio, 1.0) << t.quantity;
     EXPECT_TRUE(t.by_zone_ends);
-    EXPECT_GT(check_estimate(s, lambda, error_estimate{e.lambda, e.c0, e.xi, 0.0, "", false, e.start}, 1e-7).ratio,
-              1.0)
+    EXPECT_GT(check_estimate(s, lambda, error_estimate{e.lambda, e.c0, e.xi, 0.0, "", false, e.start}, 1e-7).ratio, 1.0)
         << "level n's c0 and start alone";
     // Below 3.2e-8 relative the start's Richardson estimate decides, named as such.
     const tolerance_check tight = check_estimate(s, lambda, e, 1e-8);
@@ -306,8 +304,8 @@ TEST(RichardsonEndsS25, TheToleranceReadsEachEndAtItsOwnEstimate) {
 
     // No end extrapolated: e itself, bit for bit (the golden outputs' points).
     error_estimate plain = e;
-    for (std::optional<zone_end_value>* v : {&plain.zone_ends->c0, &plain.zone_ends->start, &plain.zone_ends->end2,
-                                             &plain.zone_ends->start2})
+    for (std::optional<zone_end_value>* v :
+         {&plain.zone_ends->c0, &plain.zone_ends->start, &plain.zone_ends->end2, &plain.zone_ends->start2})
         (*v)->extrapolated = false;
     const error_estimate same = ends_as_read(plain);
     EXPECT_EQ(same.c0, plain.c0);

@@ -104,9 +104,10 @@ tolerance_check check_members(const tangential_solution& s, double lambda, const
 }  // namespace
 
 void note_zone_ends_answer(error_estimate& e) {
-    e.against += "; within the tolerance through the zone ends' Richardson values (error_estimate.zone_ends, each with "
-                 "its estimate): c0, the stick start and the zones are level n's, with their own estimates "
-                 "(docs/formulation.md 8(q))";
+    e.against +=
+        "; within the tolerance through the zone ends' Richardson values (error_estimate.zone_ends, each with "
+        "its estimate): c0, the stick start and the zones are level n's, with their own estimates "
+        "(docs/formulation.md 8(q))";
 }
 
 tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
@@ -225,9 +226,6 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
         const int m = rungs_[j];
         std::optional<tolerance_check> certain;
         if (j == i + 1 && m == 2 * n) {
-            // Where rung 2n may extrapolate its ends (its zones resolved by its coarsest level n/2, as the three-level
-            // rule asks: next_factor < 2), they are read at their Richardson estimates (check_estimate), whose certain
-            // part in |x_n - x_{n/2}| is only richardson_certain_share (8(q), "The ladder on the Richardson ends").
             // Where rung 2n may extrapolate its ends (8(q), "The ladder on the Richardson ends": its zones two nodes of its
             // coarsest level n/2 wide, its ends within what an answer through them allows of rung n's), they are read at
             // their Richardson estimates, of which only richardson_share of |x_n - x_{n/2}| is certain; and that answer's
@@ -237,9 +235,9 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
                 may_take_three_level(a.solution, m, richardson_move(a.solution, c.normal().lambda), smooth_);
             const double factor =
                 richardson ? std::min(changes.next_factor, std::ldexp(3.0, -order_)) : changes.next_factor;
-            const tolerance_check t = check(c, a.solution,
-                                            scaled_changes(changes.last, factor,
-                                                           richardson ? std::min(factor, richardson_share()) : factor));
+            const tolerance_check t =
+                check(c, a.solution,
+                      scaled_changes(changes.last, factor, richardson ? std::min(factor, richardson_share()) : factor));
             if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) certain = t;
         }
         if (order_one && !certain) {
@@ -312,8 +310,9 @@ std::optional<tolerance_check> level_ladder::before_point(contact& c, double Q, 
     // Where rung m may extrapolate its ends (8(q), "The ladder on the Richardson ends"), an answer through them has its
     // ends within richardson_move of level m/2's, farther than delta: its zones are tested widened by that, for the
     // three-level rule of every quantity as for the Richardson ends, of which only richardson_share is certain.
-    const bool richardson = may_extrapolate_ends(m) &&
-                            may_take_three_level(half.solution, m, richardson_move(half.solution, half.lambda), smooth_);
+    const bool richardson =
+        may_extrapolate_ends(m) &&
+        may_take_three_level(half.solution, m, richardson_move(half.solution, half.lambda), smooth_);
     const bool three_level = richardson || may_take_three_level(half.solution, m, delta, smooth_);
     const double k = three_level ? std::ldexp(3.0, -order_) : 2.0;
     const tolerance_check t = certain_part(k, richardson ? std::min(k, richardson_share()) : k);
@@ -401,7 +400,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 // the paper's confirmation and the second chance are not asked at full coupling, level 2n is not solved
                 // (so the loop's confirmation of the rest does not run), and each quantity's bound is the same
                 // coupled_bound of the same levels and floor, folded in the same order; zone_ends, which check_estimate
-                // reads (ends_as_read), is empty there (a lower bound is rough rollers', who have none). The same arithmetic gives the same ratio, > 1. A violated invariant of the code, not a refusal: a bug.
+                // reads (ends_as_read), is empty there (a lower bound is rough rollers', who have none). The same
+                // arithmetic gives the same ratio, > 1. A violated invariant of the code, not a refusal: a bug.
                 if (t.ratio <= 1.0)
                     throw std::logic_error("level_ladder: a lower bound within the tolerance at n = " +
                                            std::to_string(n) + " (" + t.quantity + ": estimate " +
