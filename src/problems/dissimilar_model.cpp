@@ -28,9 +28,7 @@ namespace {
 // relative to the no-slip creep, and the bounds of the main stick zone's ends (relative to the
 // half-width); none for any other pair or level.
 std::optional<double> layers_relative_bound(const dissimilar& materials, const roughness& surfaces, double f) {
-    if (materials.coupling == coupling_level::full || !kernel::normal(surfaces).empty() ||
-        !kernel::tangential(surfaces).empty())
-        return std::nullopt;
+    if (materials.coupling == coupling_level::full || kernel::layered(surfaces)) return std::nullopt;
     const neglected_layers layers = no_slip_layers(materials.beta_d, f);
     // The estimate the route reports (its xi the no-slip creep with the layers' shift; P_H/P2 Hertz's 1), as the
     // ladder compares it (edge_layers.hpp).
@@ -68,11 +66,6 @@ double layer_change_lower_bound(double x) {
 double unresolved_crossing(int top, double tolerance) {
     const double root_x = std::log(0.3 / tolerance) / 0.57;
     return std::min(root_x * root_x, layer_change_measured_to) / (static_cast<double>(top) * top);
-}
-
-// Whether the scene has a roughness layer (2(b)): its kernels K1*, K2*.
-bool rough(const roughness& surfaces) {
-    return !kernel::tangential(surfaces).empty() || !kernel::normal(surfaces).empty();
 }
 
 // The advice of the quick refusal of rough rollers' free rolling (docs/formulation.md 8(n), "Rough rollers: beyond
@@ -130,7 +123,7 @@ public:
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
         // Free rolling of rough rollers: their own crossing decides (8(n), "Rough rollers: beyond every n"), before
         // item 11's estimate, which is the smooth pair's and 4.5 times too thick for them.
-        if (Q == 0.0 && rough(surfaces_))
+        if (Q == 0.0 && kernel::layered(surfaces_))
             if (std::optional<std::string> why = layers_beyond(Q, top, tolerance)) return why;
         // A leading slip zone thinner than the largest rung resolves (8(j) item 11): refused before any solve.
         if (!layers_negligible(Q)) {
@@ -166,7 +159,7 @@ protected:
         msg << " are too thin (at n = " << top << " the five zones' leading layer still changes by more than "
             << change << " of itself from n = " << top / 2 << ", docs/formulation.md 8(n))";
         const std::string advice =
-            rough(surfaces_) ? rough_layers_advice(rough_reach(unresolved_crossing(top, tolerance)))
+            kernel::layered(surfaces_) ? rough_layers_advice(rough_reach(unresolved_crossing(top, tolerance)))
                              : edge_zones_advice(Q);
         if (!advice.empty()) msg << "; " << advice;
         return msg.str();
@@ -209,7 +202,7 @@ protected:
     // where the point needs them resolved: at Johnson's level where the tolerance does not neglect them.
     virtual std::optional<double> unresolved_layers(double Q, double tolerance) const {
         // Rough rollers: no layers-neglected route, so always resolved, at their own crossing (8(n), "Rough rollers").
-        if (Q == 0.0 && rough(surfaces_)) return rough_crossing().crossing;
+        if (Q == 0.0 && kernel::layered(surfaces_)) return rough_crossing().crossing;
         const std::optional<double> bound = layers_bound(Q);
         if (!bound || *bound <= tolerance) return std::nullopt;
         return no_slip_layers(materials_.beta_d, f_).crossing;
@@ -542,7 +535,7 @@ protected:
     // Johnson's law).
     std::optional<double> unresolved_layers(double Q, double) const override {
         // Rough rollers: the crossing of the no-slip limit with their layers (8(t), item 1; no route neglects them).
-        if (Q == 0.0 && rough(surfaces_)) return rough_limit().crossing(f_);
+        if (Q == 0.0 && kernel::layered(surfaces_)) return rough_limit().crossing(f_);
         if (!(Q == 0.0 && johnson_layers_)) return std::nullopt;
         return coupled_layers_crossing(materials_.beta_d, f_);
     }

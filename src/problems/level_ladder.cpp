@@ -124,7 +124,7 @@ level_ladder::level_ladder(const solver_options& options, const roughness& surfa
     : rungs_(ladder_rungs(options.how)),
       tolerance_(options.tolerance.value_or(default_tolerance)),
       strength_(std::max(kernel::tangential(surfaces).strength(), kernel::normal(surfaces).strength())),
-      smooth_(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty()),
+      smooth_(!kernel::layered(surfaces)),
       order_(order_of(options.how)),
       how_(options.how),
       flagged_final_(options.zones == zone_search::single),

@@ -12,8 +12,7 @@ level_store::level_store() = default;
 level_store::~level_store() = default;
 
 method level_store::computed_by(const roughness& surfaces, method how) {
-    const bool smooth = kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty();
-    return how == method::extrapolated && smooth ? level_of(how) : how;
+    return how == method::extrapolated && !kernel::layered(surfaces) ? level_of(how) : how;
 }
 
 point_model& level_store::model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,

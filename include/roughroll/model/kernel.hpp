@@ -27,6 +27,8 @@ public:
     // K1* (i = 1, tangential) and K2* (i = 2, normal) of a pair of cylinders.
     static kernel tangential(const roughness& r);
     static kernel normal(const roughness& r);
+    // Whether the surfaces carry a roughness layer (2(b)): K1* or K2* not empty.
+    static bool layered(const roughness& r) { return !tangential(r).empty() || !normal(r).empty(); }
 
     bool empty() const { return terms_.empty(); }
     const std::vector<exponential_term>& terms() const { return terms_; }

@@ -147,8 +147,7 @@ protected:
 
 // 'extrapolated' on rough surfaces: Richardson's rule on the level n/2 (a smooth scene is exact at one level).
 inline bool extrapolates(const roughness& surfaces, const solver_options& options) {
-    return options.how == method::extrapolated &&
-           !(kernel::normal(surfaces).empty() && kernel::tangential(surfaces).empty());
+    return options.how == method::extrapolated && kernel::layered(surfaces);
 }
 
 // The levels of a model of final type M (point_model::level): its holder's scene at m nodes by the level
