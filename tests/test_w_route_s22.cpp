@@ -4,8 +4,11 @@
 // route (dissimilar_zones::cauchy_by_quadrature, which erred by 2.5e-11 there at n = 1000, f = 0.2, so that W jumped by
 // that where a point crossed the band's edge and the five zones' Newton cycled). A pressure of the shape of that state:
 // p on w_N with k_E = -beta_D f, two stick zones on the square-root weight whose q carries a 1000-term series
-// (coefficients falling like j^-2.5, as psi's next to the entry at f = 0.2), the plateau of 8(x) between them, and the
-// blend's ends a few 1e-9 off the kinks' ends (an alternation's step). Against GSL's QAGS of W's definition on the
+// (coefficients falling like j^-2.5, as psi's next to the entry at f = 0.2), and the blend's ends a few 1e-9 off the
+// kinks' ends (an alternation's step). (Until session 25 it carried 8(x)'s Hermite plateau between them too,
+// pressure_kinks::add_weighted_plateau, which no solver used since session 23 and which is gone.) Session 25 (8(z), "W next
+// to a thin zone"): the same pressure with the driven pair's shape, a second zone 3.3e-4 long beside a reversed slip
+// 1.5 long, whose long piece W's fixed cuts grade towards the short one. Against GSL's QAGS of W's definition on the
 // pieces between s, c, 1, r and every kink's end, each cut again in 64 equal parts and the outer ones graded towards the
 // piece's ends (independent of the tables), every QUADPACK status checked (session 22's review, W2).
 #include <algorithm>
@@ -26,7 +29,6 @@
 #include "quadpack_common.hpp"
 #include "variable_k_fixture.hpp"
 #include "roughroll/model/kernel.hpp"
-#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/normal_problem.hpp"
@@ -49,18 +51,28 @@ double theta(double eta, double s, double c) {
     return 0.5 + M_1_PI * (std::asin(t) + t * std::sqrt(1.0 - t * t));
 }
 
+// `terms`: the zones' series and rules (W's M = 10 sqrt(terms) + 48).
+pressure_kinks pressure_on(const std::array<double, 4>& ends, int terms) {
+    pressure_kinks p;
+    p.set_weight(-beta_d * f);
+    const std::array<std::vector<double>, 2> b = variable_k_fixture::psi_terms(terms);
+    const std::vector<double>&b1 = b[0], &b2 = b[1];
+    p.add_weighted_zone(terms, beta_d, 1.0, ends[0], ends[1], 0.5, [&](double t) { return u_series(b1, t); });
+    p.add_weighted_zone(terms, beta_d, 1.0, ends[2], ends[3], 0.5, [&](double t) { return u_series(b2, t); });
+    p.set_series({0.64, 0.01, -0.02, 0.004, 1e-3, -5e-4});
+    return p;
+}
+
 const pressure_kinks& weighted_pressure() {
-    static const pressure_kinks k = [] {
-        pressure_kinks p;
-        p.set_weight(-beta_d * f);
-        const std::array<std::vector<double>, 2> b = variable_k_fixture::psi_terms(n);
-        const std::vector<double>&b1 = b[0], &b2 = b[1];
-        p.add_weighted_zone(n, beta_d, 1.0, s1k, c1k, 0.5, [&](double t) { return u_series(b1, t); });
-        p.add_weighted_zone(n, beta_d, 1.0, s2k, c2k, 0.5, [&](double t) { return u_series(b2, t); });
-        p.add_weighted_plateau(beta_d, 1.0, f, blend_plateau(s1k, c1k, s2k, c2k), {0.62, 0.1}, {-0.3, -1.5});
-        p.set_series({0.64, 0.01, -0.02, 0.004, 1e-3, -5e-4});
-        return p;
-    }();
+    static const pressure_kinks k = pressure_on(variable_k_fixture::two_tenths_ends, n);
+    return k;
+}
+
+// The driven pair's five zones at full coupling (Q/f = +0.75, f = 0.05, the default point, answered at n = 64): the
+// second stick zone [0.99920, 0.99953], 3.3e-4 long and 4.7e-4 from the edge, after a reversed slip 1.5 long.
+constexpr std::array<double, 4> driven_ends{-0.86859392, -0.50949028, 0.99920165, 0.99952993};
+const pressure_kinks& driven_pressure() {
+    static const pressure_kinks k = pressure_on(driven_ends, 64);
     return k;
 }
 
@@ -106,8 +118,7 @@ std::vector<double> part_cuts(double a, double e, int parts) {
 // 1e-13): 1e-16; near r p's rounding (about 1e-15 in its 1000-term sums) over eta - r, 1e-15 int d eta/|eta - r| on the
 // part (to r's rounding where it ends at r); on a part ending at a kink's root e, its B sqrt|eta - e| (B < 0.01 here)
 // over eta - r on the narrowest part GSL bisects to (2e-14): 4e-23/|r - e|, 4e-13 at 1e-10 from a kink.
-quadpack_sum reference(double r, double s, double c) {
-    const pressure_kinks& k = weighted_pressure();
+quadpack_sum reference(double r, double s, double c, const pressure_kinks& k = weighted_pressure()) {
     const auto g = [&](double eta) { return k(eta) * theta(eta, s, c); };
     const bool inside = r > s && r < 1.0;
     const double gr = inside ? g(r) : 0.0;
@@ -192,8 +203,8 @@ double load_reference(double lo, double hi, double s, double c) {
 }
 
 // W's Cauchy part by kinks_blend (the program's route), empty where it declines.
-std::optional<double> rule(double r, double s, double c) {
-    const std::optional<kinks_blend> b = weighted_pressure().blend(s, c);
+std::optional<double> rule(double r, double s, double c, const pressure_kinks& k = weighted_pressure()) {
+    const std::optional<kinks_blend> b = k.blend(s, c);
     EXPECT_TRUE(b);
     return b ? (*b)(r, theta(r, s, c)) : std::nullopt;
 }
@@ -325,5 +336,44 @@ TEST(WRoute, NextToTheTrailingEdgeAgainstQuadpack) {
             EXPECT_LT(std::fabs(error), 1e-13 + ref.estimate) << "1 - r = " << d;
             worst = std::max(worst, std::fabs(error));
         }
+    std::printf("worst %.2g\n", worst);
+}
+
+// W next to a thin zone (8(z), "W next to a thin zone", session 25): on the driven pair's shape the first zone's blend
+// has the piece [c1, s2] 1.5 long beside the second zone's [s2, c2], 3.3e-4 long, and W's fixed cuts grade the long piece
+// towards s2 (l, 3 l, 7 l, ... from it, l the short piece's length). The points of the second zone then take the tables'
+// rule: no point from its first hundredth to its last is next to a cut (kinks_blend::near). Ungraded, the long piece's
+// band (4 (88/M^2)^2 of 1.5: 1.7e-4 at n = 64, M = 128, half the zone) covered the zone's points near s2, and its group
+// of cuts (s2, c2, 1) the rest: every such point took near_part (measured: the driven point at n = 64 asked it 2152
+// times, free rolling 71; 1.69 s against 0.25 s). W (n = 64) at the zone's points, at s2 + 1e-9 (near, as before) and
+// next to c2, and of the second zone's blend at the first zone's middle, within 1e-13 plus the reference's
+// own estimate of QUADPACK's (reference: QAGS on the pieces between s, c, 1, r and the kinks' ends, independent of the
+// cuts). Fails with short_piece_ratio = 1e300 (no grading: the zone's points near).
+TEST(WRoute, ThinZonesPointsByTheTablesAgainstQuadpack) {
+    gsl_set_error_handler_off();
+    const pressure_kinks& k = driven_pressure();
+    const double s1 = driven_ends[0] + 2e-9, c1 = driven_ends[1] - 1e-9, s2 = driven_ends[2], c2 = driven_ends[3];
+    const std::optional<kinks_blend> first = k.blend(s1, c1);
+    ASSERT_TRUE(first);
+    for (const double x : {0.01, 0.1, 0.25, 0.5, 0.75, 0.9, 0.99}) {
+        const double r = s2 + x * (c2 - s2);
+        EXPECT_FALSE(first->near(r)) << "the second zone's point at " << x << " of it takes near_part";
+    }
+    EXPECT_TRUE(first->near(s2 + 1e-9));  // next to the kink: the graded rule, as before
+    double worst = 0.0;
+    const auto check = [&](double r, double s, double c) {
+        const std::optional<double> w = rule(r, s, c, k);
+        EXPECT_TRUE(w) << "r = " << r << ": declined";
+        if (!w) return;
+        const quadpack_sum ref = reference(r, s, c, k);
+        const double error = *w - static_cast<double>(ref.value);
+        std::printf("blend [%.8f, %.8f], r %.17g: W - reference %+.2e (its estimate %.1e)\n", s, c, r, error, ref.estimate);
+        EXPECT_LT(std::fabs(error), 1e-13 + ref.estimate) << "r = " << r;
+        worst = std::max(worst, std::fabs(error));
+    };
+    for (const double x : {0.01, 0.5, 0.99}) check(s2 + x * (c2 - s2), s1, c1);
+    check(s2 + 1e-9, s1, c1);
+    check(c2 + 1e-6, s1, c1);
+    check(0.5 * (driven_ends[0] + driven_ends[1]), s2 - 3e-9, c2 + 1e-9);
     std::printf("worst %.2g\n", worst);
 }

@@ -66,15 +66,17 @@ double number_after(const std::string& line, const std::string& label) {
 }
 }  // namespace
 
-// Driven, Q/f = +0.75 (five zones), tolerance 1e-6: rung 128 and 256 solved, 512 skipped by (a) (at least 4.08e-5 of
-// s), and rung 1000 refused from its levels 250, 500 before its point: the line names what it would reach at least.
+// Driven, Q/f = +0.75 (five zones), tolerance 1e-7: rung 128 and 256 solved, 512 skipped by (a), and rung 1000 refused
+// from its levels 250, 500 before its point: the line names what it would reach at least. (1e-6 until session 25: on the
+// exact weight, docs/formulation.md 8(z) "The driven five zones on the weight", the point answers at 1e-6 at n = 1000.)
 // Its trailing stick zone holds less than two nodes of level 250 (8(q) finding 2), widened by the ends' largest move
 // an answering point could have: no three-level rule, so k = 2, which the number checks against an independent route,
 // the change |x_500 - x_250| that an explicit n = 500 point's estimate carries (its levels 125, 250, 500: rule (a)'s
 // changes, the levels solved on their own chain, equal to the alternation's tolerance). The old program solved rung
 // 1000's point and refused with the best estimate alone ("n = 1000 was not solved" absent).
 TEST(LadderTopRung, RefusedFromItsLevelsBeforeItsPoint) {
-    const full_run r = run_full(0.75, 1e-6);
+    constexpr double tolerance = 1e-7;
+    const full_run r = run_full(0.75, tolerance);
     ASSERT_FALSE(r.answer.has_value());
     EXPECT_EQ(r.solved, (std::vector<int>{128, 256, 1000}));
     const std::string said = "n = 1000 was not solved: its estimate of stick start is at least ";
@@ -91,7 +93,7 @@ TEST(LadderTopRung, RefusedFromItsLevelsBeforeItsPoint) {
     ASSERT_EQ(s.layout.stick_zones(), 2u);
     // 2 |x_500 - x_250| (less the noise, 4e-10 and the floors) relative to 1 + s_1, to the line's three digits.
     EXPECT_NEAR(at_least, 2.0 * e->changes->last.start / (1.0 + s.start()), 1e-2 * at_least);
-    EXPECT_GT(at_least * (1.0 - 0.5e-6), 1.01e-6);
+    EXPECT_GT(at_least * (1.0 - 0.5e-6), 1.01 * tolerance);
 }
 
 // The three-level test of an answering point (may_take_three_level): zones of level m/2 widened by the ends' largest

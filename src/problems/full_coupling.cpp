@@ -59,24 +59,6 @@ bool coupling_settled(const std::vector<double>& changes, std::size_t own_from, 
     return kappa <= 0.5 && kappa / (1.0 - kappa) * changes[k] <= 0.25 * tolerance;
 }
 
-namespace {
-// The length of [start, end] in node spacings pi sqrt(1 - m^2)/(n + 1) of n = max_nodes/4 (m its midpoint).
-double spacings(double start, double end) {
-    const double m = 0.5 * (start + end);
-    return (end - start) / (M_PI * std::sqrt((1.0 - m) * (1.0 + m)) / (max_nodes / 4 + 1));
-}
-}  // namespace
-
-bool carries_plateau(const tangential_solution& s) {
-    return s.layout.stick_zones() == 2 &&
-           (spacings(s.start(), s.c0()) < plateau_spacings || spacings(s.start2(), s.end2()) < plateau_spacings);
-}
-
-bool weighs_five_zones(const tangential_solution& s) {
-    return s.layout.stick_zones() == 2 && spacings(s.start(), s.c0()) >= five_zone_spacings &&
-           spacings(s.start2(), s.end2()) >= five_zone_spacings;
-}
-
 full_coupling::full_coupling(const kernel& k1, const kernel& k2, int n, method how, double f, double beta_d)
     : k1_(k1), k2_(k2), f_(f), beta_d_(beta_d), normal_solver_(n, how) {
     check_beta_d(beta_d);
@@ -152,19 +134,19 @@ std::vector<double> ends_of(const tangential_solution& s) { return {s.start(), s
 
 // The pressure's kinks at the zone ends of `s` carried explicitly (docs/formulation.md 8(l) step 0, 8(o)):
 // p_q^0 = beta_D sqrt(1 - r^2) H[q/sqrt(1 - r^2)] from a stick zone's part q of p1 = sign (f p S + q), q =
-// sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), one pressure_kinks zone per stick zone:
-// the braked three zones (slip sigma on both sides, S = 1), the driven three zones (S the blend of 8(g)) and five
-// zones (S = -1 + 2 H1 - 2 H2, both stick zones blended: 8(j)), whose int p H and W (dissimilar_zones) take p_q^0
-// (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series' closed form, 8(o)). On a
-// blended zone the blend's own (1 +- t)^(3/2) kinks join q too (8(r)): its part 2 f p (Theta - Theta_3), rising on
-// the first five-zone stick zone (and the driven one), falling on the second, leaves the smoother Theta_3 on the
-// right side; without it the entry converged at order 1 (8(r)). Rough rollers carry them on three zones (braked and
-// driven) with the layer terms K2[p_q^0] on the normal right side and (K2 - K1)[p_q^0] in G (8(o), "Rough rollers";
-// pressure_kinks::add_layers). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0, nothing
-// to carry) and rough rollers' five zones (measured in 8(o): free rolling of the rough pair cost 2.6 to 3.3 times the
-// CPU with the kinks, and its levels' changes at n = 64, 128 were larger, not smaller).
+// sqrt(1 - t^2) psi(t) on the zone (as tangential_solver::traction adds it), for the braked three zones (slip sigma on
+// both sides, S = 1) and the driven three zones (S the blend of 8(g)), whose int p H and W (dissimilar_zones) take p_q^0
+// (load_between; W's Cauchy part of p_q^0 H by Tricomi's identity beside the series' closed form, 8(o)). On the blended
+// zone the blend's own (1 +- t)^(3/2) kinks join q too (8(r)): its part 2 f p (Theta - Theta_3) leaves the smoother
+// Theta_3 on the right side; without it the entry converged at order 1 (8(r)). Rough rollers carry them on three zones
+// (braked and driven) with the layer terms K2[p_q^0] on the normal right side and (K2 - K1)[p_q^0] in G (8(o), "Rough
+// rollers"; pressure_kinks::add_layers). Null elsewhere, where the old right side beta_D p1 stays: gross sliding (q = 0,
+// nothing to carry), rough rollers' five zones (measured in 8(o): free rolling of the rough pair cost 2.6 to 3.3 times
+// the CPU with the kinks, and its levels' changes at n = 64, 128 were larger, not smaller) and smooth rollers' five
+// zones, which are on the exact weight (weighted_kinks_of; 8(x)'s plateau on the square-root weight, kept for the
+// driven pair's thin second zone until session 25, is gone: 8(z), "The driven five zones on the weight").
 // The source of a step's kinks: the iterate whose point s gives q (its stick zones' psi) and whose pressure p the
-// blends' kinks and the plateau read (the same iterate as beta_D p1^(k-1), 8(l) step 0), with beta_D and f.
+// blends' kinks read (the same iterate as beta_D p1^(k-1), 8(l) step 0), with beta_D and f.
 struct step_source {
     const tangential_solution& s;
     const normal_solution& normal;
@@ -183,47 +165,25 @@ double blend_part(const step_source& from, double start, double rho, double rise
 }
 
 std::shared_ptr<const pressure_kinks> kinks_of(const step_source& from, const gauss_chebyshev& rule, const kernel& k1,
-                                               const kernel& k2, bool plateau) {
+                                               const kernel& k2) {
     const tangential_solution& s = from.s;
-    const double beta_d = from.beta_d, f = from.f;
+    const double beta_d = from.beta_d;
     const bool smooth = k1.empty() && k2.empty();
-    if (!smooth && s.layout.stick_zones() == 2) return nullptr;
+    // Five zones: smooth rollers' on the exact weight (weighted_kinks_of), rough rollers' without kinks (below).
+    if (s.layout.stick_zones() == 2) return nullptr;
     const auto layered = [&](std::shared_ptr<pressure_kinks> k) {
         if (!smooth) k->add_layers(k2, k1);
         return k;
     };
-    // The blend's kinks of the stick zone [start, c0], with the sign of its rise (8(r)).
-    const auto blend_of = [&from](double start, double c0, double rise) {
-        const double rho = 0.5 * (c0 - start);
-        return std::function<double(double)>(
-            [&from, start, rho, rise](double t) { return blend_part(from, start, rho, rise, t); });
-    };
-    if (s.layout.stick_zones() == 2) {
-        const struct { const tangential_solution &zone1, &zone2; double sign; } v{s.zone_system(0), s.zone_system(1), s.sign};
-        if (!carries_q(v.zone1) || !carries_q(v.zone2)) return nullptr;
-        auto k = std::make_shared<pressure_kinks>();
-        k->add_zone(rule, beta_d, v.sign, v.zone1.start(), v.zone1.c0(), v.zone1.psi_b,
-                    blend_of(v.zone1.start(), v.zone1.c0(), 1.0));
-        k->add_zone(rule, beta_d, v.sign, v.zone2.start(), v.zone2.c0(), v.zone2.psi_b,
-                    blend_of(v.zone2.start(), v.zone2.c0(), -1.0));
-        // The step 2 f p of the blend across each zone, with the plateau between them, carried in closed form (8(p),
-        // "The step carried across thin stick zones"): pbar through p/sqrt(1 - r^2) at the zones' midpoints; only
-        // where `plateau` (carries_plateau) says so.
-        if (plateau && v.zone1.c0() <= v.zone2.start()) {
-            const auto h = [&from](double r) { return from.normal.pressure(r) / std::sqrt((1.0 - r) * (1.0 + r)); };
-            k->add_plateau(beta_d, v.sign, f,
-                           blend_plateau(v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()),
-                           h(0.5 * (v.zone1.start() + v.zone1.c0())), h(0.5 * (v.zone2.start() + v.zone2.c0())));
-        }
-        return k;
-    }
     if (s.layout.stick_zones() != 1 || !carries_q(s)) return nullptr;
     auto k = std::make_shared<pressure_kinks>();
     // The blended zone's right side 2 sign f p Theta (8(g)) has Theta's (1 +- t)^(3/2) kinks, which p's U-series
     // cannot carry and the entry condition weighs by (1 + t)^(-3/2) (order 1 at the entry): its part
     // 2 f p (Theta - Theta_3) joins q here, leaving the smoother blend Theta_3 on the right side (8(r)).
     k->add_zone(rule, beta_d, s.sign, s.start(), s.c0(), s.psi_b,
-                s.layout.opposite() ? blend_of(s.start(), s.c0(), 1.0) : std::function<double(double)>{});
+                s.layout.opposite() ? std::function<double(double)>([&from, start = s.start(), rho = 0.5 * (s.c0() - s.start())](
+                                          double t) { return blend_part(from, start, rho, 1.0, t); })
+                                    : std::function<double(double)>{});
     return layered(std::move(k));
 }
 // Plan C (docs/formulation.md 8(w)): the braked three zones of smooth rollers (one slip direction sigma at both edges,
@@ -232,7 +192,7 @@ std::shared_ptr<const pressure_kinks> kinks_of(const step_source& from, const ga
 // Null elsewhere (the old path of kinks_of). `rules_of`: the previous step's kinks, whose zone recurrences are reused;
 // `rules`: the solve's Gauss-Jacobi rules, shared with the tangential solvers' Jacobi zones.
 std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n, bool smooth,
-                                                  const pressure_kinks* rules_of, jacobi_rule_set& rules, bool five) {
+                                                  const pressure_kinks* rules_of, jacobi_rule_set& rules) {
     const tangential_solution& s = from.s;
     const double beta_d = from.beta_d, f = from.f;
     if (!smooth || s.layout.layers_neglected()) return nullptr;
@@ -240,10 +200,9 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
     // + q), S = -1 at both edges) on the exact weight w_k of (H + k) with 8(x)'s continuous k = sign beta_D f S_3 (S_3 the
     // smoothed S, k = k_E = sigma_E beta_D f at both edges), p_q summed over both stick zones, each from its q on the
     // square-root weight with the blend's kinks 2 f p (Theta - Theta_3) in it (8(r)): (D1) is solved whole, nothing on
-    // its right side (no plateau, no remainder: 8(z), "Wired").
-    // Where `five` is false (weighs_five_zones), null: the old path of kinks_of.
+    // its right side (no plateau, no remainder: 8(z), "Wired"). All five zones of smooth rollers, the driven pair's
+    // thin second stick zone too (8(z), "The driven five zones on the weight", session 25).
     if (s.layout.stick_zones() == 2) {
-        if (!five) return nullptr;
         const struct { const tangential_solution &zone1, &zone2; double sign; } v{s.zone_system(0), s.zone_system(1), s.sign};
         // Each zone's q on the square-root weight (its U-series below), as the five zones' systems solve it.
         for (const tangential_solution* z : {&v.zone1, &v.zone2})
@@ -280,28 +239,11 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
 }
 }  // namespace
 
+// No fallback to another path where the alternation on the weight fails (8(x), "The fallback"): a level on another path
+// than its rung's other levels would make their estimate compare two discretisations.
 const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
                                                 const tangential_solution& johnson_point, bool checked,
                                                 const full_coupling* coarser) {
-    // The plateau's rule (carries_plateau), once for the whole alternation: on Johnson's five zones where it has them,
-    // else on the first step's source (the coarser level's five zones; three zones carry none). Every step keeps its
-    // source's structure (`step`), so one decision covers them all; asked of each step's source, a stick zone near
-    // the threshold could switch the plateau on and off between steps, and the fixed point would be of neither rule.
-    // So is the weighted path's for five zones (weighs_five_zones, 8(x)).
-    const iterate* start = coarser != nullptr && coarser->current_ && coarser->current_->s.Q == johnson_point.Q
-                               ? coarser->current_.get()
-                               : nullptr;
-    const tangential_solution& decides =
-        johnson_point.layout.stick_zones() == 2 || !start ? johnson_point : start->s;
-    const bool plateau = carries_plateau(decides), five = weighs_five_zones(decides);
-    // No fallback to the old path where the weighted alternation fails (8(x), "The fallback"): a level on the other path
-    // than its rung's other levels would make their estimate compare two discretisations.
-    return alternate(johnson, johnson_zones, johnson_point, checked, coarser, plateau, five);
-}
-
-const tangential_solution& full_coupling::alternate(const normal_solution& johnson, dissimilar_zones& johnson_zones,
-                                                    const tangential_solution& johnson_point, bool checked,
-                                                    const full_coupling* coarser, bool plateau, bool five) {
     const double Q = johnson_point.Q;
     current_.reset();
     previous_.reset();
@@ -340,7 +282,7 @@ const tangential_solution& full_coupling::alternate(const normal_solution& johns
         const step_source from{source, source_normal, beta, f_};
         std::shared_ptr<pressure_kinks> weighted =
             weighted_kinks_of(from, johnson.rule.n, k1_.empty() && k2_.empty(),
-                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules, five);
+                              current_ ? current_->normal.kinks.get() : nullptr, *jacobi_rules);
         // The braked three zones (8(v), 8(w)) also put their stick zone on its Jacobi weight; five zones (8(x)) not.
         const bool braked = weighted && source.layout.stick_zones() == 1;
         const auto solve_step = [&](std::shared_ptr<const pressure_kinks> kinks) {
@@ -378,7 +320,7 @@ const tangential_solution& full_coupling::alternate(const normal_solution& johns
         };
         std::unique_ptr<iterate> next;
         try {
-            next = solve_step(weighted ? nullptr : kinks_of(from, johnson.rule, k1_, k2_, plateau));
+            next = solve_step(weighted ? nullptr : kinks_of(from, johnson.rule, k1_, k2_));
         } catch (const std::exception&) {
             if (lagging) throw *lagging;  // the first failure seen, as the old program refused
             throw;

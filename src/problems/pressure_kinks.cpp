@@ -6,12 +6,13 @@
 #include <cfloat>
 #include <cmath>
 #include <string>
+#include <unordered_map>
 
 #include <gsl/gsl_math.h>
 
 #include "roughroll/base/error.hpp"
-#include "roughroll/base/gsl_handles.hpp"
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"
 
 namespace roughroll {
@@ -31,14 +32,14 @@ void pressure_kinks::keep_legendre_rule(int points) {
 }
 
 namespace {
-// The plateau's adaptive quadrature (kinks_blend::plateau_part): GSL's 21-point rule per piece in the cos map of
-// end_quadrature::piece (smooth at square-root and 3/2-power ends), to W's own tolerances.
-constexpr std::size_t plateau_intervals = 400;
-constexpr double plateau_absolute = 1e-14, plateau_relative = 1e-12, plateau_accepted = 1e-13;
-// kinks_blend's memo of plateau_part's points per piece stops growing here (memory: 40 bytes and the map's node each).
-constexpr std::size_t plateau_memo_points = 1 << 14;
 // The graded rule of kinks_blend::near_part: Gauss-Legendre points per graded piece (8(x) "W's routes").
 constexpr int graded_points = 32;
+
+// Cuts in increasing order, each once.
+void sort_cuts(std::vector<double>& cuts) {
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+}
 
 // Node j of `rule` on [a, e] in the cos map eta = a + (e - a)(1 - cos u)/2, u = (pi/2)(x_j + 1), and its weight d eta:
 // the weighted W's rule (8(x)). eta is taken from the nearer end, so that its distance to that end (where p has a
@@ -52,21 +53,6 @@ mapped_node cos_map_node(const gauss_legendre& rule, std::size_t j, double a, do
     return {u < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch, rule.weights[j] * M_PI_2 * half * std::sin(u)};
 }
 
-// Graded cuts about the zones of `b` (every 16 zone half-lengths outwards, up to 2): p_q^0's plateau part varies like
-// log|r - m| on the scale of a thin zone (8(p)); each piece then meets it within a sixteenth of its length of an end,
-// where the cos map of the rules below clusters its points.
-void add_graded_cuts(std::vector<double>& cuts, const kinks_plateau& b) {
-    const double zones[2][2] = {{b.shape.start1(), b.shape.end1()}, {b.shape.start2(), b.shape.end2()}};
-    for (const auto& z : zones) {
-        cuts.push_back(z[0]);
-        cuts.push_back(z[1]);
-        const double rho = 0.5 * (z[1] - z[0]);
-        for (double d = 16.0 * rho; d < 2.0; d *= 16.0) {
-            cuts.push_back(z[0] - d);
-            cuts.push_back(z[1] + d);
-        }
-    }
-}
 }  // namespace
 
 void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
@@ -96,85 +82,9 @@ void pressure_kinks::add_zone(const gauss_chebyshev& rule, double beta_d, double
     zones_.push_back(std::move(z));
 }
 
-namespace {
-// int B eta^k, k = 0..4, in closed form: zone i gives rho_i int Theta(t) (m_i + rho_i t)^k dt, Theta = Theta_3 rising
-// (zone 1) or 1 - Theta_3 falling (zone 2), with int t^j Theta_3 on [-1, 1] = 1, 7/16, 1/3, 77/320, 1/5 (j = 0..4:
-// the even j from Theta_3's constant 1/2, the odd ones from arcsin(t)/pi + sqrt(1 - t^2) P(t), P of blend_plateau.hpp;
-// 77/320 by sympy, checked by QAGS in validation/test_five_zones_weighted_s20.cpp, whose C and load fail with 77/320 + 1e-9
-// in its place: by 4e-13 to 3e-11 against 1e-13, 1e-12, session 21); 1 - Theta_3 gives 1/(j + 1)
-// for even j and the odd ones negated. The plateau (c1, s2) gives int eta^k exactly. blend_plateau::moment has k <= 2.
-std::array<double, 5> plateau_moments(const blend_plateau& b) {
-    const auto zone = [](int k, double s, double c, double sign) {
-        const double m = 0.5 * (s + c), rho = 0.5 * (c - s);
-        const double t[5] = {1.0, sign * 7.0 / 16.0, 1.0 / 3.0, sign * 77.0 / 320.0, 1.0 / 5.0};
-        double sum = 0.0, binomial = 1.0;  // C(k, j)
-        for (int j = 0; j <= k; ++j) {
-            sum += binomial * std::pow(m, k - j) * std::pow(rho, j) * t[j];
-            binomial = binomial * (k - j) / (j + 1);
-        }
-        return rho * sum;
-    };
-    std::array<double, 5> m{};
-    for (int k = 0; k < 5; ++k)
-        m[k] = zone(k, b.start1(), b.end1(), 1.0) +
-               (std::pow(b.start2(), k + 1) - std::pow(b.end1(), k + 1)) / (k + 1) +
-               zone(k, b.start2(), b.end2(), -1.0);
-    return m;
-}
-}  // namespace
-
-void pressure_kinks::add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1,
-                                 double h2) {
-    drop_blend_tables();
-    if (weighted_)
-        throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(x)) takes its plateau by "
-                              "add_weighted_plateau");
-    // pbar/sqrt(1 - r^2) = alpha + slope r through h1, h2 at the midpoints m1, m2 (docs/formulation.md 8(p)).
-    const double m1 = 0.5 * (plateau.start1() + plateau.end1()), m2 = 0.5 * (plateau.start2() + plateau.end2());
-    const double slope = (h2 - h1) / (m2 - m1), alpha = h1 - slope * m1;
-    const double amplitude = 2.0 * f * beta_d * sign;
-    plateaus_.push_back({plateau, amplitude, alpha, slope});
-    // int p_q^0 = beta_D int q r/sqrt(1 - r^2) and C = (beta_D/pi) int q/sqrt(1 - r^2), q/sqrt(1 - r^2) =
-    // sign 2 f (alpha + slope eta) B: the plateau's moments.
-    load_ += amplitude * (alpha * plateau.moment(1) + slope * plateau.moment(2));
-    constant_ += amplitude * (alpha * plateau.moment(0) + slope * plateau.moment(1)) * M_1_PI;
-    keep_legendre_rule(64);
-}
-
-void pressure_kinks::add_weighted_plateau(double beta_d, double sign, double f, const blend_plateau& plateau,
-                                          const std::array<double, 2>& g, const std::array<double, 2>& slopes) {
-    drop_blend_tables();
-    if (!weighted_)
-        throw numerical_error("full coupling: add_weighted_plateau (docs/formulation.md 8(x)) needs the weight w_N");
-    // pbar/w_N = P(r), the cubic Hermite interpolant of g = p/w_N through g and g' at the zones' midpoints m1, m2:
-    // with it the step 2 f (p - pbar) B left on the right side is O(rho^2 g'') across a zone, not the linear
-    // interpolant's O(rho g'), which kept the thin second zone's end at order 1 (8(x), "Landed").
-    const double m1 = 0.5 * (plateau.start1() + plateau.end1()), m2 = 0.5 * (plateau.start2() + plateau.end2());
-    const double d = m2 - m1, dd = (g[1] - g[0]) / d, s1 = slopes[0], s2 = slopes[1];
-    // P = g1 + s1 x + A x^2 + E x^3 in x = r - m1, then in powers of r.
-    const double A = (3.0 * dd - 2.0 * s1 - s2) / d, E = (s1 + s2 - 2.0 * dd) / (d * d);
-    kinks_plateau b{plateau, 2.0 * f * beta_d * sign, g[0] - s1 * m1 + A * m1 * m1 - E * m1 * m1 * m1,
-                    s1 - 2.0 * A * m1 + 3.0 * E * m1 * m1};
-    b.c2 = A - 3.0 * E * m1;
-    b.c3 = E;
-    // As 8(w)'s p_q with q/w_N = (amplitude/beta_D) P B: C = (beta_D sin(pi a_N)/pi) int q/w_N, int p_b =
-    // 2 beta_D sin(pi a_N) int (q/w_N) P_1^(-a_N, a_N - 1), P_1^(-a, a - 1)(r) = r/2 + 1/2 - a; B's moments to 4.
-    const std::array<double, 5> mom = plateau_moments(plateau);
-    const double cf[4] = {b.alpha, b.slope, b.c2, b.c3};
-    double q0 = 0.0, q1 = 0.0;  // int P B, int r P B
-    for (int k = 0; k < 4; ++k) {
-        q0 += cf[k] * mom[k];
-        q1 += cf[k] * mom[k + 1];
-    }
-    const double sin_n = std::sin(M_PI * a_n_);
-    load_ += 2.0 * sin_n * b.amplitude * (0.5 * q1 + (0.5 - a_n_) * q0);
-    constant_ += sin_n * M_1_PI * b.amplitude * q0;
-    plateaus_.push_back(b);
-}
-
 void pressure_kinks::set_weight(double k_e) {
     drop_blend_tables();
-    if (!zones_.empty() || !plateaus_.empty() || !wzones_.empty())
+    if (!zones_.empty() || !wzones_.empty())
         throw numerical_error("full coupling: the weighted pressure (docs/formulation.md 8(w)) takes no U-series kinks");
     weighted_ = true;
     k_e_ = k_e;
@@ -266,7 +176,7 @@ struct pressure_kinks::variable_state {
 void pressure_kinks::set_variable(int n, double beta_d, double sign, double f, const std::array<double, 4>& e,
                                   const std::array<std::function<double(double)>, 2>& psi) {
     drop_blend_tables();
-    if (!weighted_ || !wzones_.empty() || !plateaus_.empty() || variable_)
+    if (!weighted_ || !wzones_.empty() || variable_)
         throw numerical_error("full coupling: the variable-k pressure (8(z)) needs set_weight alone before it");
     if (!(-1.0 < e[0] && e[0] < e[1] && e[1] < e[2] && e[2] < e[3] && e[3] < 1.0))
         throw numerical_error("full coupling: the variable-k pressure (8(z)) needs five zones of positive length");
@@ -370,8 +280,6 @@ double pressure_kinks::kink_part(double r) const {
             sum += scale * z.amplitude * w_n * cauchy_outside(z, t);
         }
     }
-    for (const kinks_plateau& b : plateaus_)  // 8(x): the plateau on the weight (add_plateau)
-        sum += scale * b.amplitude * w_n * (b.value(r) - k_e_ * b.poly(r) * b.shape(r));
     return sum;
 }
 
@@ -379,7 +287,6 @@ double pressure_kinks::factor(double r) const {
     if (weighted_) return (*this)(r) / std::sqrt((1.0 - r) * (1.0 + r));
     double h = 0.0;  // H[q/sqrt(1 - r^2)]: the zone variable's Cauchy integral (d eta/(eta - r) = d tau/(tau - t))
     for (const zone& z : zones_) h += z.amplitude * (*z.cauchy)((r - z.start) / z.rho - 1.0);
-    for (const kinks_plateau& b : plateaus_) h += b.amplitude * b.value(r);  // 8(p): the plateau's closed form
     return h;
 }
 
@@ -404,8 +311,6 @@ double pressure_kinks::integral(double lo, double hi) const {
     // an algebraic function with square roots at the zone's ends (outside): smooth in u after the map.
     std::vector<double> cuts{std::clamp(lo, -1.0, 1.0), std::clamp(hi, -1.0, 1.0)};
     std::vector<double> inner = ends();
-    // The plateau's p_q^0 varies like log|r - m| on the scale of a thin zone (8(p)): graded cuts.
-    for (const kinks_plateau& b : plateaus_) add_graded_cuts(inner, b);
     for (const double e : inner)
         if (e > cuts[0] && e < cuts[1]) cuts.push_back(e);
     std::sort(cuts.begin(), cuts.end());
@@ -439,19 +344,11 @@ double pressure_kinks::removed(double r) const {
         if (!(std::fabs(t) < 1.0)) continue;
         sum += z.amplitude * std::sqrt((1.0 - r * r) * (1.0 - t * t)) * u_series(z.b, t);
     }
-    for (const kinks_plateau& b : plateaus_) {
-        const double shape = b.shape(r);
-        const double w = weighted_ ? jacobi_weight(a_n_, 1.0 - a_n_, r) : std::sqrt((1.0 - r) * (1.0 + r));
-        if (shape != 0.0) sum += b.amplitude * w * b.poly(r) * shape;
-    }
     return normal_layer_ ? sum - (*normal_layer_)(r) : sum;  // 8(o): the right side gains K2[p_q^0]
 }
 
 void pressure_kinks::add_layers(const kernel& k2, const kernel& k1) {
     drop_blend_tables();
-    if (!plateaus_.empty())
-        throw numerical_error("full coupling: the layer terms of the pressure's kinks are not built for the plateau "
-                              "of five zones (docs/formulation.md 8(o))");
     if (zones_.empty()) return;
     // p_q^0 on the pieces between the zone ends (and the edges) is sqrt(1 - r^2) times a polynomial of the zone variable
     // (inside a zone) or an algebraic function with square roots at the zone's ends (outside): analytic in the cut
@@ -492,6 +389,30 @@ std::vector<double> pressure_kinks::ends() const {
     return e;
 }
 
+namespace {
+// W's fixed cuts graded towards a short piece (8(z), "W next to a thin zone"): between two neighbouring kinks' ends (or
+// one and the edge 1) a piece more than short_piece_ratio times longer than its neighbour is cut at l, 3 l, 7 l, ...
+// from the end they share (l the neighbour's length) up to its middle. Every point within the short piece is then at
+// least the piece lengths it meets away from their far ends, so the rule of the tables answers it; ungraded, the long
+// piece's band (4 (88/M^2)^2 of its length, blend) covers the whole short piece and every point there took near_part's
+// graded rule, p afresh at about 10 x 32 points each (the driven pair's second stick zone, 3.3e-4 long beside a reversed
+// slip 1.5 long: ten times the point's CPU). The cuts depend on the kinks' ends only: their pieces are kept (piece_table).
+constexpr double short_piece_ratio = 16.0;
+std::vector<double> cuts_towards_short_pieces(std::vector<double> fixed) {
+    fixed.push_back(1.0);
+    sort_cuts(fixed);
+    std::vector<double> cuts;
+    for (std::size_t i = 0; i + 1 < fixed.size(); ++i) {
+        const double a = fixed[i], e = fixed[i + 1], mid = 0.5 * (a + e), length = e - a;
+        if (i > 0 && length > short_piece_ratio * (a - fixed[i - 1]))
+            for (double x = a, h = a - fixed[i - 1]; x + h < mid; h *= 2.0) cuts.push_back(x += h);
+        if (i + 2 < fixed.size() && length > short_piece_ratio * (fixed[i + 2] - e))
+            for (double x = e, h = fixed[i + 2] - e; x - h > mid; h *= 2.0) cuts.push_back(x -= h);
+    }
+    return cuts;
+}
+}  // namespace
+
 std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
     auto unit = blended_cauchy::make({1.0}, s, c);
     if (!unit) return std::nullopt;
@@ -531,17 +452,18 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
             return false;
         };
         std::vector<double> cuts{s, c, 1.0}, inner = ends();
-        for (const kinks_plateau& b : plateaus_) add_graded_cuts(inner, b);  // 8(p): log|r - m| about thin zones
+        const std::vector<double> graded = cuts_towards_short_pieces(inner);
+        inner.insert(inner.end(), graded.begin(), graded.end());
         for (const double e : inner)
             if (e > s && e < 1.0) cuts.push_back(e);
-        std::sort(cuts.begin(), cuts.end());
-        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        sort_cuts(cuts);
         // A piece between two of the kinks' ends (or one and the edge 1) is the same for every blend of this pressure:
         // its nodes and p there are kept (piece_table) for the next blend, which multiplies them by its own H (bit for
         // bit the product tabulate forms). Newton's steps move s and c, and each asks a blend of both stick zones: the
         // pieces beyond the zones (the second stick zone's with M + n points) were tabulated afresh every time (the
         // tabulation was a third of the wired free rolling point, session 24).
-        const std::vector<double> kink_ends = ends();
+        std::vector<double> kink_ends = ends();
+        kink_ends.insert(kink_ends.end(), graded.begin(), graded.end());
         const auto fixed = [&kink_ends](double x) {
             return x == 1.0 || std::find(kink_ends.begin(), kink_ends.end(), x) != kink_ends.end();
         };
@@ -634,84 +556,11 @@ std::optional<kinks_blend> pressure_kinks::blend(double s, double c) const {
         }
         k.parts_.push_back({z.start, z.rho, z.amplitude, z.b, u_coefficients(rule, values), z.cauchy});
     }
-    if (!plateaus_.empty()) {
-        k.plateaus_ = plateaus_;
-        k.workspace_ = std::shared_ptr<gsl_integration_workspace>(make_integration_workspace(plateau_intervals));
-        k.plateau_memo_ = std::make_shared<std::vector<kinks_blend::plateau_piece>>();
-    }
     return k;
 }
 
-std::optional<double> kinks_blend::plateau_part(double r) const {
-    const double s = unit_.start(), c = unit_.end();
-    const auto blend = [this](double eta) { return blend_at(eta); };
-    const auto part = [&](double eta) {  // p_b(eta) H(eta)
-        if (!(eta > s && eta < 1.0)) return 0.0;
-        double sum = 0.0;
-        for (const kinks_plateau& b : plateaus_) sum += b.amplitude * b.value(eta);
-        return sum * std::sqrt((1.0 - eta) * (1.0 + eta)) * blend(eta);
-    };
-    const bool inside = r > s && r < 1.0;
-    if (inside && !(1.0 - r > 1e-9)) return std::nullopt;
-    std::vector<double> cuts{s, c, 1.0};
-    for (const kinks_plateau& b : plateaus_) add_graded_cuts(cuts, b);
-    if (inside) cuts.push_back(r);
-    std::sort(cuts.begin(), cuts.end());
-    const double pr = inside ? part(r) : 0.0;
-    double total = 0.0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double a = std::max(cuts[i], s), e = std::min(cuts[i + 1], 1.0);
-        if (!(e - a > 1e-15 * (1.0 + std::fabs(a)))) continue;
-        const double half = 0.5 * (e - a);
-        // A piece ending at r is asked at points of its own: not kept.
-        angle_memo* memo = nullptr;
-        if (!(inside && (a == r || e == r))) {
-            auto& pieces = *plateau_memo_;
-            auto it = std::find_if(pieces.begin(), pieces.end(), [&](const plateau_piece& x) { return x.a == a && x.e == e; });
-            if (it == pieces.end()) it = pieces.insert(pieces.end(), plateau_piece{a, e, {}});
-            memo = &it->points;
-        }
-        const auto point = [&](double phi) {
-            const double sh = std::sin(0.5 * phi), ch = std::cos(0.5 * phi);
-            const double eta = phi < M_PI_2 ? a + 2.0 * half * sh * sh : e - 2.0 * half * ch * ch;
-            return plateau_point{eta, part(eta), sh, ch};
-        };
-        const auto integrand = [&](double phi) {
-            plateau_point x;
-            if (memo) {
-                if (const plateau_point* found = memo->find(phi)) {
-                    x = *found;
-                } else {
-                    x = point(phi);
-                    if (memo->size() < plateau_memo_points) memo->insert(phi, x);
-                }
-            } else {
-                x = point(phi);
-            }
-            if (x.eta == r) return 0.0;
-            return (x.part - pr) / (x.eta - r) * half * 2.0 * x.sh * x.ch;
-        };
-        const std::function<double(double)> f = integrand;
-        gsl_function fn;
-        fn.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
-        fn.params = const_cast<std::function<double(double)>*>(&f);
-        double value = 0.0, error = 0.0;
-        const int status = gsl_integration_qag(&fn, 0.0, M_PI, plateau_absolute, plateau_relative, plateau_intervals,
-                                               GSL_INTEG_GAUSS21, workspace_.get(), &value, &error);
-        if (!(status == GSL_SUCCESS || error < plateau_accepted) || !std::isfinite(value)) return std::nullopt;
-        total += value;
-    }
-    if (inside && pr != 0.0) total += pr * std::log((1.0 - r) / (r - s));
-    return M_1_PI * total;
-}
-
 void kinks_blend::tabulate(const gauss_legendre& rule, double a, double e, weighted_table& table) const {
-    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-        const mapped_node x = cos_map_node(rule, j, a, e);
-        table.eta.push_back(x.eta);
-        table.weight.push_back(x.weight);
-        table.g.push_back((*whole_)(x.eta) * blend_at(x.eta));
-    }
+    tabulate(whole_->nodes_on(rule, a, e, -1), table);
 }
 
 void kinks_blend::tabulate(const pressure_kinks::piece_nodes& kept, weighted_table& table) const {
@@ -722,18 +571,22 @@ void kinks_blend::tabulate(const pressure_kinks::piece_nodes& kept, weighted_tab
     }
 }
 
+pressure_kinks::piece_nodes pressure_kinks::nodes_on(const gauss_legendre& rule, double a, double e, int table) const {
+    piece_nodes nodes{a, e, table, {}, {}, {}};
+    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        const mapped_node x = cos_map_node(rule, j, a, e);
+        nodes.eta.push_back(x.eta);
+        nodes.weight.push_back(x.weight);
+        nodes.p.push_back((*this)(x.eta));
+    }
+    return nodes;
+}
+
 const pressure_kinks::piece_nodes& pressure_kinks::piece_table(const gauss_legendre& rule, double a, double e,
                                                                int table) const {
     for (const piece_nodes& kept : *piece_tables_)
         if (kept.a == a && kept.e == e && kept.table == table) return kept;
-    piece_nodes kept{a, e, table, {}, {}, {}};
-    for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-        const mapped_node x = cos_map_node(rule, j, a, e);
-        kept.eta.push_back(x.eta);
-        kept.weight.push_back(x.weight);
-        kept.p.push_back((*this)(x.eta));
-    }
-    piece_tables_->push_back(std::move(kept));
+    piece_tables_->push_back(nodes_on(rule, a, e, table));
     return piece_tables_->back();
 }
 
@@ -802,8 +655,7 @@ double kinks_blend::near_part(double r, double gr, const near_group& group, trim
     points.push_back(r);
     points.push_back(group.lo);
     points.push_back(group.hi);
-    std::sort(points.begin(), points.end());
-    points.erase(std::unique(points.begin(), points.end()), points.end());
+    sort_cuts(points);
     std::vector<double> ends;
     for (std::size_t i = 0; i + 1 < points.size(); ++i) {
         const double u = points[i], v = points[i + 1];
@@ -833,22 +685,26 @@ std::optional<double> kinks_blend::zone_load() const {
     return sum;
 }
 
+std::size_t kinks_blend::near_group_of(double r) const {
+    std::size_t i = 0;
+    while (i < groups_.size() && !(r > groups_[i].cuts.front() - groups_[i].band && r < groups_[i].cuts.back() + groups_[i].band))
+        ++i;
+    return i;
+}
+
+bool kinks_blend::near(double r) const { return near_group_of(r) < groups_.size(); }
+
 std::optional<double> kinks_blend::weighted_part(double r, double blend) const {
     // Within 1e-9 of the trailing edge (1 - r)^a_N's difference quotient is a spike no fixed rule resolves: the
-    // adaptive route (dissimilar_zones::cauchy_by_quadrature), as plateau_part declines there.
+    // adaptive route (dissimilar_zones::cauchy_by_quadrature).
     const double s = unit_.start();
     const bool inside = r > s && r < 1.0;
     if (inside && !(1.0 - r > 1e-9)) return std::nullopt;
     const double gr = inside ? (*whole_)(r) * blend : 0.0;
     double sum = 0.0;
-    bool near = false;
-    for (std::size_t i = 0; i < groups_.size() && !near; ++i) {
-        const near_group& group = groups_[i];
-        if (r > group.cuts.front() - group.band && r < group.cuts.back() + group.band) {
-            near = true;
-            sum = near_part(r, gr, group, (*trimmed_)[i]);
-        }
-    }
+    const std::size_t group = near_group_of(r);
+    const bool near = group < groups_.size();
+    if (near) sum = near_part(r, gr, groups_[group], (*trimmed_)[group]);
     // A node within a thousandth of its weight (its local spacing) of r would lose eps |g|/|eta - r| of the difference
     // quotient to cancellation: then the other rule, whose nodes interlace (M and M + 1 points per piece), none as near.
     for (int l = 0; l < 2; ++l) {
@@ -878,11 +734,6 @@ std::optional<double> kinks_blend::operator()(double r, double blend) const {
         const double inside =
             std::fabs(t) < 1.0 && blend != 0.0 ? root * blend * std::sqrt((1.0 - t) * (1.0 + t)) * u_series(z.g, t) : 0.0;
         sum += z.amplitude * (*w1 * (*z.cauchy)(t) - inside - cauchy_u_series(z.gw, t));
-    }
-    if (!plateaus_.empty()) {
-        const auto b = plateau_part(r);
-        if (!b) return std::nullopt;
-        sum += *b;
     }
     return sum;
 }
@@ -920,13 +771,7 @@ void kinks_blend::operator()(const double* r, const double* blend, std::optional
         for (std::size_t i = 0; i < count; ++i)
             if (w1[i]) sum[i] += z.amplitude * (*w1[i] * (*z.cauchy)(t[i]) - inside[i] - series[i]);
     }
-    for (std::size_t i = 0; i < count; ++i) {
-        out[i] = w1[i] ? std::optional<double>(sum[i]) : std::nullopt;
-        if (out[i] && !plateaus_.empty()) {
-            const auto b = plateau_part(r[i]);
-            out[i] = b ? std::optional<double>(*out[i] + *b) : std::nullopt;
-        }
-    }
+    for (std::size_t i = 0; i < count; ++i) out[i] = w1[i] ? std::optional<double>(sum[i]) : std::nullopt;
 }
 
 double blend_kinks(double t) { return -2.0 / (15.0 * M_PI) * t * (1.0 - t * t) * (9.0 - 4.0 * t * t); }

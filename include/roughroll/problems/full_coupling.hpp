@@ -61,26 +61,6 @@ enum class coupling_stop { contraction, plain };
 // 8(p), "The edges"); the edge layers of the five zones scale with it.
 double coupled_layers_crossing(double beta_d, double f);
 
-// Whether five zones carry the plateau between their stick zones in closed form (8(p), "Where the plateau is carried"):
-// where a stick zone is shorter than plateau_spacings node spacings pi sqrt(1 - m^2)/(n + 1) (m its midpoint) of the
-// coarsest level n = max_nodes/4 of the top rung. A zone the series resolves with that many spacings at every level of
-// the rung that reaches it keeps the series' route, converged at (r)'s order; a shorter one is a jump, or a ramp of a
-// few spacings, for the coarser levels of every rung, whose log peak grows by (J/pi) ln 2 per doubling (8(p), "Complete
-// slip at full coupling"), and only the plateau lets those levels converge. Decided on the zones of Johnson's point
-// (which the plateau does not move), once for every step of the alternation and every level of an estimate; where
-// Johnson's point has not five zones, on the alternation's first source, once for its steps (full_coupling::solve).
-constexpr double plateau_spacings = 8.0;
-bool carries_plateau(const tangential_solution& s);
-
-// Whether five zones of smooth rollers take plan C on the weight w_N with the Hermite plateau (docs/formulation.md
-// 8(x), "Landed"): where both stick zones are at least five_zone_spacings node spacings (as carries_plateau's) long.
-// A shorter one (Q/f = +0.75: the second zone [0.99920, 0.99953], 0.7 spacings, 4.7e-4 from the edge) holds a V-shaped
-// dip of p/w_N from p_q's one-sided terms that no polynomial pbar follows: the weighted path lost those five zones
-// at n = 128..512, where the old path (kinks_of, square-root weight) answers. Decided once per alternation, as the plateau;
-// no fallback where an alternation on the weight fails (8(x), "The fallback": it would mix the paths between levels).
-constexpr double five_zone_spacings = 2.0;
-bool weighs_five_zones(const tangential_solution& s);
-
 class full_coupling {
 public:
     // The level's kernels, n and method, friction and beta_D != 0.
@@ -115,10 +95,6 @@ public:
 
 private:
     struct iterate;
-    // One alternation on one path: `five` the five zones on the weight w_N (8(x)), `plateau` carries_plateau's.
-    const tangential_solution& alternate(const normal_solution& johnson, dissimilar_zones& johnson_zones,
-                                         const tangential_solution& johnson_point, bool checked,
-                                         const full_coupling* coarser, bool plateau, bool five);
     kernel k1_, k2_;
     double f_, beta_d_;
     normal_solver normal_solver_;

@@ -14,9 +14,6 @@
 // (u_coefficients); its Cauchy integral is cauchy_u_series (-sum b_j T_{j+1} on the zone, -sum b_j z^(j+1) off
 // it), which holds (r - c)_+^(1/2) exactly. The q carried is the one of that expansion,
 // sqrt(1 - r^2) sqrt(1 - t^2) g_n(t), so that (D1) holds for the p represented (removed() below).
-// Five zones carry besides the plateau between their two blended stick zones (add_plateau, 8(p) "The step carried
-// across thin stick zones"), whose H is closed form (blend_plateau): the step 2 f p of beta_D p1 across a zone
-// thinner than the node spacing, which the series saw as a jump.
 // Rough rollers (docs/formulation.md 8(o), "Rough rollers"; add_layers): with the layer terms L_i = H + K_i the
 // normal solve's right side gains K2[p_q^0] (it goes in through removed(), which the solve takes from beta_D p1)
 // and the tangential G = -L1[p] gains (K2 - K1)[p_q^0] (layer_difference), each tabulated once per kinks
@@ -24,20 +21,15 @@
 #pragma once
 
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
 #include <functional>
 #include <array>
 #include <memory>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 
-#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/blended_cauchy.hpp"
 #include "roughroll/numerics/cauchy_u_table.hpp"
 #include "roughroll/numerics/cut_convolution.hpp"
@@ -48,25 +40,6 @@ namespace roughroll {
 
 class kinks_blend;
 
-// A plateau part of q carried by pressure_kinks (add_plateau, docs/formulation.md 8(p)): q/sqrt(1 - r^2) gains
-// (amplitude/beta_D) (alpha + slope r) B(r), so p_q^0 gains sqrt(1 - r^2) amplitude value(r).
-struct kinks_plateau {
-    blend_plateau shape;
-    double amplitude, alpha, slope;  // amplitude = 2 f beta_D sign; alpha + slope r = pbar/sqrt(1 - r^2)
-    // On the weight w_N (8(x)) pbar/w_N = P = alpha + slope r + c2 r^2 + c3 r^3, the cubic Hermite interpolant
-    // (add_weighted_plateau; c2 = c3 = 0 otherwise): H[P B](r) = P(r) H[B](r) + (1/pi) int (P(eta) - P(r))/(eta - r) B,
-    // which takes B's moments 0..2.
-    double c2 = 0.0, c3 = 0.0;
-    double poly(double r) const { return alpha + r * (slope + r * (c2 + r * c3)); }
-    double value(double r) const {
-        const double m0 = shape.moment(0);
-        double v = poly(r) * shape.hilbert(r) + slope * m0 * M_1_PI;
-        if (c2 != 0.0 || c3 != 0.0)
-            v += M_1_PI * (c2 * (shape.moment(1) + r * m0) + c3 * (shape.moment(2) + r * shape.moment(1) + r * r * m0));
-        return v;
-    }
-};
-
 class pressure_kinks {
 public:
     // Adds the stick zone [start, c0] whose q(r) = sign sqrt(1 - t^2) psi(t), psi = sum psi_b U_j + blend(t), its
@@ -74,27 +47,13 @@ public:
     // closed zone: the blended zone's 2 f p (Theta - Theta_3)/sqrt(1 - t^2) (blend_kinks). Needs -1 < start < c0 < 1.
     void add_zone(const gauss_chebyshev& rule, double beta_d, double sign, double start, double c0,
                   const std::vector<double>& psi_b, const std::function<double(double)>& blend = {});
-    // Adds the plateau of five zones' two blended stick zones (docs/formulation.md 8(p), "The step carried across
-    // thin stick zones"): q's further part sign 2 f pbar B, pbar = sqrt(1 - r^2) (alpha + slope r) the linear
-    // interpolant of p/sqrt(1 - r^2) through `h1`, `h2` at the zones' midpoints, B the plateau (blend_plateau).
-    // Its H is closed form, so p_q^0 carries the step 2 f p of beta_D p1 across each zone, which the series saw
-    // as a jump where a zone is thinner than the node spacing; the right side keeps 2 f (p - pbar) B, whose step
-    // across a zone is O(zone length p').
-    // Not on the weight w_N (there add_weighted_plateau).
-    void add_plateau(double beta_d, double sign, double f, const blend_plateau& plateau, double h1, double h2);
-    // The same plateau on the weight w_N (five zones of smooth rollers, docs/formulation.md 8(x)): pbar = w_N P, P the
-    // cubic Hermite interpolant of g = p/w_N through `g` and `slopes` (g and g') at the zones' midpoints, carried as
-    // 8(w)'s p_q of q = sign 2 f pbar B: p_b = (amplitude/(1 + k_E^2)) w_N (H[P B] - k_E P B); its load and C from B's
-    // moments 0..4 in closed form. After set_weight.
-    void add_weighted_plateau(double beta_d, double sign, double f, const blend_plateau& plateau,
-                              const std::array<double, 2>& g, const std::array<double, 2>& slopes);
     // The weighted pressure of docs/formulation.md 8(w) (plan C; braked three zones of smooth rollers, a + b = 1):
     //   p = w_N phi + p_q,  w_N = (1 - r)^a_N (1 + r)^(1 - a_N),  a_N = 1/2 + atan(k_E)/pi,  k_E = sigma beta_D f,
     //   p_q = -(beta_D/(1 + k_E^2)) sum_Z (k_E q_Z - w_N H[q_Z/w_N]),   (H + k_E)[p_q] = -beta_D q + C,
     //   C = (beta_D sin(pi a_N)/pi) int q/w_N,   int p_q = 2 beta_D sin(pi a_N) int (q/w_N) P_1^(-a_N, a_N - 1).
     // The object then carries the whole pressure (the normal solution's U-series is zero): set_weight first, then
     // add_weighted_zone per stick zone (q = sign w_Z(t) psi(t), w_Z = (1 - t)^a_Z (1 + t)^(1 - a_Z)), then, after the
-    // normal solve, set_series with phi's Jacobi coefficients on w_N. Not combined with add_zone or add_plateau.
+    // normal solve, set_series with phi's Jacobi coefficients on w_N. Not combined with add_zone.
     void set_weight(double k_e);
     // `rules_of`: kinks of an earlier step whose zone recurrences (n, a_z) are taken instead of built again (the same
     // ones). `rules`: the solve's Gauss-Jacobi rules, whose rules of n and 4 n nodes of the weight w_Z the tangential
@@ -128,8 +87,7 @@ public:
     double weight_k() const { return k_e_; }
     double series_part(double r) const;  // w_N(r) sum phi_j P_j^(a_N, 1 - a_N)(r), 0 outside (-1, 1)
     double kink_part(double r) const;    // p_q(r) of the weighted zones
-    bool empty() const { return zones_.empty() && plateaus_.empty() && !weighted_; }
-    std::size_t plateaus() const { return plateaus_.size(); }  // add_plateau's count (0 or 1: five zones only)
+    bool empty() const { return zones_.empty() && !weighted_; }
 
     double operator()(double r) const;  // p_q^0(r), 0 outside (-1, 1)
     // p_q^0(r)/sqrt(1 - r^2), a bounded function with one-sided square roots at the zone ends: the factor
@@ -143,7 +101,7 @@ public:
     // less the layer term K2[p_q^0](r) with add_layers (8(o): (D1) for phi has -beta_D (p1 - q) - K2[p_q^0] there).
     double removed(double r) const;
     // Rough rollers (8(o)): tabulates K2[p_q^0] and (K2 - K1)[p_q^0] for the zones added so far (call it after them;
-    // plateaus are not taken: full_coupling carries rough rollers' kinks on three zones only).
+    // full_coupling carries rough rollers' kinks on three zones only).
     void add_layers(const kernel& k2, const kernel& k1);
     bool layered() const { return normal_layer_ || difference_layer_; }
     double layer_difference(double r) const;  // (K2 - K1)[p_q^0](r), G's part (0 without add_layers)
@@ -164,7 +122,6 @@ private:
         std::shared_ptr<const cauchy_u_table> cauchy;
     };
     std::vector<zone> zones_;
-    std::vector<kinks_plateau> plateaus_;
     struct weighted_zone {
         double start, rho, amplitude, a;  // amplitude = beta_D sign; q's weight exponent a_Z at t = 1
         std::shared_ptr<const gauss_jacobi> rule, far;
@@ -198,6 +155,8 @@ private:
     };
     mutable std::shared_ptr<blend_rules> blend_rules_;
     const piece_nodes& piece_table(const gauss_legendre& rule, double a, double e, int table) const;
+    // `rule`'s nodes on [a, e] in the cos map, their weights and p there (a piece kept or a blend's own).
+    piece_nodes nodes_on(const gauss_legendre& rule, double a, double e, int table) const;
     void drop_blend_tables();
 };
 
@@ -221,6 +180,9 @@ public:
     // int_s^c p H (the stick zone's part of int p H) by the weighted tables' rule (docs/formulation.md 8(x) "W's
     // routes"); empty unless the pressure is weighted.
     std::optional<double> zone_load() const;
+    // Whether W at r takes the graded rule about a group of cuts (near_part) rather than the tables' rule: r within a
+    // group's band (weighted pressures; false otherwise).
+    bool near(double r) const;
 
 private:
     friend class pressure_kinks;
@@ -269,76 +231,12 @@ private:
     // first blend (building them for every blend was a twentieth of the wired free rolling point, session 24).
     std::shared_ptr<const gauss_legendre> rule_, zone_rule_, graded_rule_, second_rule_, second_zone_rule_;
     double near_part(double r, double gr, const near_group& group, trimmed_pair& trimmed) const;
+    std::size_t near_group_of(double r) const;  // the first group whose band holds r, groups_.size() if none
     double blend_at(double eta) const;  // H of the zone [s, c] (8(g))
     // Appends `rule`'s nodes on [a, e] in the cos map, their weights and p H there to `table`.
     void tabulate(const gauss_legendre& rule, double a, double e, weighted_table& table) const;
     // The same from a piece the pressure kept (pressure_kinks::piece_table), times this blend's H.
     void tabulate(const pressure_kinks::piece_nodes& kept, weighted_table& table) const;
-    // H[p_b H](r) of the plateaus' part p_b of p_q^0 (docs/formulation.md 8(p)): no expansion on one zone holds B, so
-    // by adaptive quadrature of that part alone (closed form per point, smooth between the zones' ends and the cuts
-    // graded about thin zones), with p_b(r) H(r) subtracted at r. Empty within 1e-9 of the edge r = 1.
-    std::optional<double> plateau_part(double r) const;
-    std::vector<kinks_plateau> plateaus_;
-    std::shared_ptr<gsl_integration_workspace> workspace_;
-    // plateau_part's pieces between its fixed cuts are the same at every r, and so are the points QAG asks on them
-    // (its 21-point rule on [0, pi] and the same bisections): per piece, the r-free factors of the integrand at each
-    // angle asked (eta, p_b(eta) H(eta), the map's sin and cos), computed once per blend. The value is the same
-    // expression of the same numbers (bit for bit); W at the collocation points asked 57 points per piece on average.
-    struct plateau_point {
-        double eta, part, sh, ch;
-    };
-    // One piece's points by the angle's bits: open addressing with linear probing, grown at half full (the integrand with a
-    // node-based std::unordered_map's lookups was a quarter of the driven point by leaf, session 24; the same points).
-    class angle_memo {
-    public:
-        const plateau_point* find(double phi) const {
-            if (keys_.empty()) return nullptr;
-            const std::uint64_t u = bits(phi);
-            for (std::size_t i = slot(u);; i = (i + 1) & (keys_.size() - 1)) {
-                if (keys_[i] == u) return &values_[i];
-                if (keys_[i] == empty) return nullptr;
-            }
-        }
-        void insert(double phi, const plateau_point& x) {
-            if (2 * (count_ + 1) > keys_.size()) grow();
-            place(bits(phi), x);
-            ++count_;
-        }
-        std::size_t size() const { return count_; }
-
-    private:
-        static constexpr std::uint64_t empty = ~std::uint64_t{0};  // a NaN's bits: no angle QAG asks
-        std::vector<std::uint64_t> keys_;
-        std::vector<plateau_point> values_;
-        std::size_t count_ = 0;
-        static std::uint64_t bits(double phi) {
-            std::uint64_t u = 0;
-            std::memcpy(&u, &phi, sizeof u);
-            return u;
-        }
-        std::size_t slot(std::uint64_t u) const {
-            return static_cast<std::size_t>((u * 0x9E3779B97F4A7C15ull) >> 32) & (keys_.size() - 1);
-        }
-        void place(std::uint64_t u, const plateau_point& x) {
-            std::size_t i = slot(u);
-            while (keys_[i] != empty) i = (i + 1) & (keys_.size() - 1);
-            keys_[i] = u;
-            values_[i] = x;
-        }
-        void grow() {
-            std::vector<std::uint64_t> keys(std::max<std::size_t>(64, 2 * keys_.size()), empty);
-            std::vector<plateau_point> values(keys.size());
-            keys.swap(keys_);
-            values.swap(values_);
-            for (std::size_t i = 0; i < keys.size(); ++i)
-                if (keys[i] != empty) place(keys[i], values[i]);
-        }
-    };
-    struct plateau_piece {
-        double a, e;
-        angle_memo points;
-    };
-    std::shared_ptr<std::vector<plateau_piece>> plateau_memo_;  // shared by copies: the same blend
     struct part {
         double start, rho, amplitude;
         std::vector<double> g, gw;                   // U coefficients of g and of g W_1 on the kink zone
