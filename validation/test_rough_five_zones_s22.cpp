@@ -11,7 +11,9 @@
 // (validation/estimates_audit.hpp): solving them took 84 s and 142 s of these tests' 131 s and 162 s of CPU
 // (session 25, main 9f5eece, Release). Each large_n test solves its load again at a cheaper n
 // (estimates_audit::solved_again, the same method), so that a stale row fails there; what that re-solve can miss is
-// said at each test.
+// said at each test. A failure there after a change to the model, the solvers or the estimates means: solve the
+// n = 1000 point again and store its rows (the command above), not a larger `blind`: 0.2 is within a quarter of the
+// measured need (0.16, 0.14), so an estimate of the re-solve that grows by a third trips it too.
 #include <string>
 #include <vector>
 
