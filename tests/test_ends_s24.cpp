@@ -21,7 +21,6 @@
 #include <gtest/gtest.h>
 
 #include "roughroll/problems/full_coupling.hpp"
-#include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 
@@ -244,100 +243,4 @@ TEST(RichardsonEndsS24, EachEndOnItsOwnAndLevelNsEstimatesUntouched) {
     estimate_point johnson = p;
     johnson.structure = estimate_structure::dissimilar;
     EXPECT_FALSE(estimate_from_levels(table, converging, no_finer, johnson).zone_ends.has_value());
-}
-
-// Session 25 (docs/formulation.md 8(q), "The ladder on the Richardson ends"): the ladder's tolerance reads each zone end
-// at its own estimate, of its Richardson value where extrapolated (ends_as_read, check_estimate). Free rolling's five
-// zones at f = 0.05 (level n's values of the estimate above): c1 and s2 extrapolated (5e-9, 8e-9), s1 too (1e-8), c2 not
-// (level n's own bound 4e-7, folded into c0's member with c1's level-n bound 1.5e-7), then c2 too. Fails with ends_as_read
-// returning e (the members 4e-7, 6.1e-7: the answer's ratio at 1e-7 0.32 -> 19) or folding without the second zone's
-// ends (c0's member 5.2e-9 where c2's own 4e-7 is the larger).
-TEST(RichardsonEndsS25, TheToleranceReadsEachEndAtItsOwnEstimate) {
-    tangential_solution s =
-        five_zone_level(-0.6847158620506969, 0.4863685616797325, 0.8347224629925493, 0.9192781903204459).solution;
-    s.xi = -0.0682423944420049;
-    s.f = 0.05;
-    error_estimate e{1e-12, 1.5e-7, 6e-13, 0.0, "levels n/4, n/2, n", false, 6.1e-7};
-    e.start_second_zone = false;
-    zone_end_values x;
-    x.c0 = zone_end_value{0.48636854531012474, 5.2e-9, true};
-    x.start = zone_end_value{-0.6847157940011711, 1.0e-8, true};
-    x.end2 = zone_end_value{0.9192781903204459, 4.0e-7, false};
-    x.start2 = zone_end_value{0.8347224633912469, 8.4e-9, true};
-    e.zone_ends = x;
-    e.c0 = 4.0e-7;  // the member: the larger of c1's (1.5e-7) and c2's (4e-7) own bounds
-    e.c0_second_zone = true;
-    const error_estimate r = ends_as_read(e);
-    EXPECT_EQ(r.c0, 4.0e-7) << "c2 not extrapolated: its own bound";
-    EXPECT_TRUE(r.c0_second_zone);
-    EXPECT_EQ(r.start, 1.0e-8);
-    EXPECT_FALSE(r.start_second_zone);
-    EXPECT_EQ(r.xi, e.xi);
-    EXPECT_EQ(r.lambda, e.lambda);
-    // c2 extrapolated too: c0's member is c1's Richardson estimate, the larger of the two.
-    e.zone_ends->end2 = zone_end_value{0.9192781906132566, 2.4e-9, true};
-    const error_estimate both = ends_as_read(e);
-    EXPECT_EQ(both.c0, 5.2e-9);
-    EXPECT_FALSE(both.c0_second_zone);
-    // s2's estimate the larger: named as the second zone's start.
-    e.zone_ends->start2->error = 3.0e-8;
-    EXPECT_EQ(ends_as_read(e).start, 3.0e-8);
-    EXPECT_TRUE(ends_as_read(e).start_second_zone);
-    e.zone_ends->start2->error = 8.4e-9;
-
-    // The check, every end extrapolated: within 1e-7 (start 1e-8 of 1 + s1 = 0.315: 3.2e-8 relative) only through the
-    // zone ends.
-    const double lambda = 0.992;
-    const tolerance_check t = check_estimate(s, lambda, e, 1e-7);
-    EXPECT_LE(t.ratio, 1.0) << t.quantity;
-    EXPECT_TRUE(t.by_zone_ends);
-    EXPECT_GT(check_estimate(s, lambda, error_estimate{e.lambda, e.c0, e.xi, 0.0, "", false, e.start}, 1e-7).ratio, 1.0)
-        << "level n's c0 and start alone";
-    // Below 3.2e-8 relative the start's Richardson estimate decides, named as such.
-    const tolerance_check tight = check_estimate(s, lambda, e, 1e-8);
-    EXPECT_GT(tight.ratio, 1.0);
-    EXPECT_EQ(tight.quantity, "stick start");
-    EXPECT_NEAR(tight.estimate, 1.0e-8, 1e-22);
-    EXPECT_FALSE(tight.by_zone_ends);
-    // Where level n's own estimates are within the tolerance already, the answer is not "through the zone ends".
-    EXPECT_FALSE(check_estimate(s, lambda, e, 1e-4).by_zone_ends);
-
-    // No end extrapolated: e itself, bit for bit (the golden outputs' points).
-    error_estimate plain = e;
-    for (std::optional<zone_end_value>* v :
-         {&plain.zone_ends->c0, &plain.zone_ends->start, &plain.zone_ends->end2, &plain.zone_ends->start2})
-        (*v)->extrapolated = false;
-    const error_estimate same = ends_as_read(plain);
-    EXPECT_EQ(same.c0, plain.c0);
-    EXPECT_EQ(same.start, plain.start);
-    EXPECT_EQ(same.c0_second_zone, plain.c0_second_zone);
-    // An extrapolated end whose estimate is not a number: no estimate, never within a tolerance.
-    e.zone_ends->start->error = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_TRUE(std::isnan(ends_as_read(e).start));
-    EXPECT_GT(check_estimate(s, lambda, e, 1e-2).ratio, 1.0);
-}
-
-// What the ladder's rules (a) and (a') may take as certain of a rung's Richardson estimate from the change d1 of its two
-// coarser levels (richardson_certain_share): over every clean level n (d1/d2 from 3 to 5, as richardson_end accepts), the
-// estimate is at least the share of |d1|, and the share is reached (within 0.1 %) where the estimate's two parts cross.
-// Fails with the share 1/(4 2^p) = 1/64 (the least of 2 |delta| + |d2|/2^p, not of their larger): the crossing's
-// estimate is 2/131 |d1| < |d1|/64.
-TEST(RichardsonEndsS25, CertainShareIsTheLeastEstimateOfACleanLevelN) {
-    const double share = richardson_certain_share(product_order);
-    for (const double d1 : {-3.0e-7, 2.0e-6}) {
-        double least = std::numeric_limits<double>::infinity();
-        for (int k = 0; k <= 2000; ++k) {
-            const double ratio = 3.01 + 1.98 * k / 2000.0;  // d1/d2 over the clean window (its edges aside: rounding)
-            const double x = 0.48636854, d2 = d1 / ratio;
-            const three_levels v{x - d1 - d2, x - d2, x};
-            // Level n/8 with a second ratio in the window, no nearer 4 than the first.
-            const double eighth = v.coarsest - d1 * (ratio < 4.0 ? 3.005 : 4.995);
-            const std::optional<zone_end_value> r = richardson_end(eighth, v, 0.0, product_order);
-            ASSERT_TRUE(r.has_value()) << ratio;
-            EXPECT_GE(r->error, share * std::fabs(d1) * (1.0 - 1e-12)) << ratio;
-            least = std::min(least, r->error);
-        }
-        EXPECT_LE(least, share * std::fabs(d1) * 1.001) << "the share is the least, not below it";
-    }
-    EXPECT_LT(share, 1.0 / 64.0);
 }

@@ -19,7 +19,6 @@
 #include "aluminium_on_steel.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/contact_internals.hpp"
-#include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 
 using namespace roughroll;
@@ -96,93 +95,5 @@ TEST(RichardsonEndsS24, FreeRollingWithinTheirEstimatesOfNThousand) {
             continue;
         }
         EXPECT_GE(extrapolated, 3) << n;
-    }
-}
-
-// Session 25 (docs/formulation.md 8(q), "The ladder on the Richardson ends"): the ladder reads each zone end at its own
-// estimate, of its Richardson value where extrapolated. Free rolling of the pair at f = 0.05 on a ladder whose rungs
-// share their levels (as a scene's): at --tolerance 1e-7 rung 256 answers through its Richardson ends (every end
-// extrapolated, the stick start's 1.5e-8, 4.7e-8 of 1 + s1), where level n's own estimates (c0 1.5e-7, start 6.1e-7,
-// 1.9e-6 relative) are not within it. On the program before: refused after the whole climb (rung 512 skipped by rule
-// (a), rung 1000's estimate at its rounding floor, best 1.6e-7 relative), 13 s CPU. About 1.5 s CPU.
-namespace {
-
-level_ladder free_rolling_ladder(double tol) {
-    solver_options options;
-    options.tolerance = tol;
-    return level_ladder(options, roughness{}, [tol](int n, const std::shared_ptr<level_store>& levels) {
-        solver_options at_n{n};
-        at_n.tolerance = tol;
-        return std::make_unique<contact>(contact_internals::with_levels(roughness{}, f, at_n, pair, nullptr, levels));
-    });
-}
-
-}  // namespace
-
-TEST(RichardsonEndsS25, FreeRollingAnsweredAtATightToleranceThroughItsRichardsonEnds) {
-    level_ladder ladder = free_rolling_ladder(1e-7);
-    const level_ladder::answer a = ladder.point(0.0);
-    ASSERT_EQ(a.n, 256);
-    ASSERT_TRUE(a.estimate && a.estimate->zone_ends);
-    const tolerance_check t = ladder.check(ladder.at(256), a.solution, *a.estimate);
-    EXPECT_LE(t.ratio, 1.0);
-    EXPECT_TRUE(t.by_zone_ends) << "level n's own ends are not within 1e-7";
-    EXPECT_NE(a.estimate->against.find("through the zone ends' Richardson values"), std::string::npos)
-        << a.estimate->against;
-    const zone_end_values& x = *a.estimate->zone_ends;
-    const std::optional<zone_end_value>* const at[] = {&x.c0, &x.start, &x.end2, &x.start2};
-    const double scale[] = {1.0 - a.solution.c0(), 1.0 + a.solution.start(), 1.0 - a.solution.c0(),
-                            1.0 + a.solution.start()};
-    for (std::size_t i = 0; i < 4; ++i) {
-        ASSERT_TRUE(at[i]->has_value()) << i;
-        EXPECT_LE((*at[i])->error, 1e-7 * scale[i]) << i;
-    }
-    // Level n's values and estimates stay the point's (c0, start): the ends within the tolerance are zone_ends'.
-    EXPECT_EQ(x.c0->value == a.solution.c0(), !x.c0->extrapolated);
-    EXPECT_GT(a.estimate->start, 1e-7 * scale[1]);
-}
-
-// The same ladder at --tolerance 4e-8: rung 256's Richardson ends are not within it (the start's 4.7e-8 relative),
-// rung 512's are (3.2e-8). Rule (a) (8(q)) must not skip rung 512: of its Richardson estimates only 2/131 of rung
-// 256's last change is certain (richardson_certain_share), not the three-level rule's 3/16 (1.2e-7 relative, which
-// skipped it on the program before, and still does with the share mutated to 3/16: refused). Each end of the answer
-// against n = 1000's Richardson value (the reference of FreeRollingWithinTheirEstimatesOfNThousand, its own 2 |delta|
-// added) and against a second Richardson value from other levels, 384 and 768 (level n's ends of explicit points,
-// x_768 + (x_768 - x_384)/3, its own rest taken as that of 1000's, 2 |delta| of 500, 1000): within the estimate. About
-// 25 s CPU (large_n).
-TEST(RichardsonEndsS25, RungFiveTwelveSolvedWhereOnlyItsRichardsonEndsAnswer) {
-    level_ladder ladder = free_rolling_ladder(4e-8);
-    const level_ladder::answer a = ladder.point(0.0);
-    ASSERT_EQ(a.n, 512);
-    ASSERT_TRUE(a.estimate && a.estimate->zone_ends);
-    EXPECT_TRUE(ladder.check(ladder.at(512), a.solution, *a.estimate).by_zone_ends);
-    const zone_end_values& x = *a.estimate->zone_ends;
-    const std::optional<zone_end_value>* const at[] = {&x.c0, &x.start, &x.end2, &x.start2};
-
-    contact reference(roughness{}, f, solver_options{max_nodes, method::product}, pair);
-    const std::vector<estimate_level> below = contact_internals::levels_before(reference, 0.0);
-    ASSERT_EQ(below.size(), 2u);
-    const tangential_solution top = reference.point(0.0);
-    ASSERT_EQ(top.layout.stick_zones(), 2);
-    const std::vector<double> x500 = ends_of(below[1].solution), x1000 = ends_of(top);
-    std::vector<double> second(4);
-    {
-        contact c384(roughness{}, f, solver_options{384, method::product}, pair);
-        contact c768(roughness{}, f, solver_options{768, method::product}, pair);
-        const std::vector<double> x384 = ends_of(c384.point(0.0)), x768 = ends_of(c768.point(0.0));
-        for (std::size_t i = 0; i < 4; ++i) second[i] = x768[i] + (x768[i] - x384[i]) / 3.0;
-    }
-    const std::vector<double> x250 = ends_of(below[0].solution);
-    for (std::size_t i = 0; i < 4; ++i) {
-        ASSERT_TRUE(at[i]->has_value()) << i;
-        const zone_end_value& r = **at[i];
-        const double d1 = x500[i] - x250[i], d2 = x1000[i] - x500[i];
-        const double limit = x1000[i] + d2 / 3.0, own = 2.0 * std::fabs((4.0 * d2 - d1) / 3.0);
-        std::printf("end %zu: %s %.13f estimate %.2e; from 1000 %.2e (its 2|delta| %.1e), from 384/768 %.2e\n", i,
-                    r.extrapolated ? "R" : "n", r.value, r.error, std::fabs(r.value - limit), own,
-                    std::fabs(r.value - second[i]));
-        EXPECT_LE(std::fabs(r.value - limit), r.error - own) << i;
-        EXPECT_LE(std::fabs(r.value - second[i]), r.error - own) << i;
-        EXPECT_LE(r.error, 4e-8 * (i % 2 == 0 ? 1.0 - a.solution.c0() : 1.0 + a.solution.start())) << i;
     }
 }

@@ -27,37 +27,8 @@ std::vector<int> ladder_rungs(method how) {
 
 std::vector<int> spectral_rungs(method how) { return {default_nodes(how) / 4, default_nodes(how) / 2}; }
 
-error_estimate ends_as_read(const error_estimate& e) {
-    // docs/formulation.md 8(q), "The ladder on the Richardson ends". Each end of e.zone_ends carries its own estimate: of
-    // its Richardson value where extrapolated, else of level n's value (the bound folded into the member, never above
-    // it). The members fold them as estimate_from_levels folds the table (the larger; a NaN stays, read as no estimate).
-    if (!e.zone_ends) return e;
-    const zone_end_values& x = *e.zone_ends;
-    const auto extrapolated = [](const std::optional<zone_end_value>& v) { return v && v->extrapolated; };
-    if (!extrapolated(x.c0) && !extrapolated(x.start) && !extrapolated(x.end2) && !extrapolated(x.start2)) return e;
-    error_estimate r = e;
-    const auto fold = [](const std::optional<zone_end_value>& main, const std::optional<zone_end_value>& second,
-                         double member, double& out, bool& second_larger) {
-        // An end without its value (none is: estimate_from_levels gives every end of the table) keeps the member.
-        const double a = main ? main->error : member;
-        const double b = second ? second->error : 0.0;
-        if (std::isnan(a) || std::isnan(b)) {
-            out = std::nan("");
-            second_larger = std::isnan(b) && !std::isnan(a);
-            return;
-        }
-        out = std::max(a, b);
-        second_larger = b > a;
-    };
-    fold(x.c0, x.end2, e.c0, r.c0, r.c0_second_zone);
-    fold(x.start, x.start2, e.start, r.start, r.start_second_zone);
-    return r;
-}
-
-namespace {
-
-tolerance_check check_members(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
-                              double strength) {
+tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
+                               double strength) {
     // The rounding floors at the largest n (docs/performance.md "How the error estimates are made",
     // as contact's floors at n = max_nodes): below them no rung can bring an estimate.
     const double K = std::max(1.0, std::fabs(lambda));
@@ -99,25 +70,6 @@ tolerance_check check_members(const tangential_solution& s, double lambda, const
     }
     worst.answering = answering;
     return worst;
-}
-
-}  // namespace
-
-void note_zone_ends_answer(error_estimate& e) {
-    e.against +=
-        "; within the tolerance through the zone ends' Richardson values (error_estimate.zone_ends, each with "
-        "its estimate): c0, the stick start and the zones are level n's, with their own estimates "
-        "(docs/formulation.md 8(q))";
-}
-
-tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
-                               double strength) {
-    const error_estimate read = ends_as_read(e);
-    tolerance_check t = check_members(s, lambda, read, tol, strength);
-    // Within the tolerance only through the Richardson ends: level n's own c0 and start (the point's) are not.
-    if (t.ratio <= 1.0 && (read.c0 != e.c0 || read.start != e.start))
-        t.by_zone_ends = check_members(s, lambda, e, tol, strength).ratio > 1.0;
-    return t;
 }
 
 level_ladder::level_ladder(const solver_options& options, const roughness& surfaces, rung_factory make)
@@ -188,16 +140,8 @@ std::string at_least(double x) {
     return significant(std::floor(x * (1.0 - 1e-12) / unit) * unit, 3);
 }
 
-// `ends_factor` for the zone ends (c0's and the start's members), `factor` for P_H/P2 and xi.
-// An answer within the tolerance only through the zone ends' Richardson values says so where its estimate says what
-// it is against (8(q), "The ladder on the Richardson ends": what is reported).
-level_ladder::answer noted(level_ladder::answer a, const tolerance_check& t) {
-    if (t.by_zone_ends && a.estimate) note_zone_ends_answer(*a.estimate);
-    return a;
-}
-
-error_estimate scaled_changes(const level_changes& c, double factor, double ends_factor) {
-    error_estimate e{factor * c.lambda, ends_factor * c.c0, factor * c.xi, 0.0, "", false, ends_factor * c.start};
+error_estimate scaled_changes(const level_changes& c, double factor) {
+    error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
     e.c0_second_zone = c.c0_second_zone;
     e.start_second_zone = c.start_second_zone;
     return e;
@@ -226,59 +170,19 @@ level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, st
         const int m = rungs_[j];
         std::optional<tolerance_check> certain;
         if (j == i + 1 && m == 2 * n) {
-            // Where rung 2n may extrapolate its ends (8(q), "The ladder on the Richardson ends": its zones two nodes of its
-            // coarsest level n/2 wide, its ends within what an answer through them allows of rung n's), they are read at
-            // their Richardson estimates, of which only richardson_share of |x_n - x_{n/2}| is certain; and that answer's
-            // zones may let P_H/P2 and xi take the three-level rule, 3/2^p of it.
-            const bool richardson =
-                a.estimate->zone_ends && may_extrapolate_ends(m) &&
-                may_take_three_level(a.solution, m, richardson_move(a.solution, c.normal().lambda), smooth_);
-            const double factor =
-                richardson ? std::min(changes.next_factor, std::ldexp(3.0, -order_)) : changes.next_factor;
-            const tolerance_check t =
-                check(c, a.solution,
-                      scaled_changes(changes.last, factor, richardson ? std::min(factor, richardson_share()) : factor));
+            const tolerance_check t = check(c, a.solution, scaled_changes(changes.last, changes.next_factor));
             if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) certain = t;
         }
         if (order_one && !certain) {
             level_changes ends = changes.order_one;
             ends.lambda = ends.xi = 0.0;  // P_H/P2 and xi converge faster (8(e)): no order-1 law for them
-            const double tenth = 0.1 * 4.0 * n / m;
-            const tolerance_check t = check(c, a.solution, scaled_changes(ends, tenth, tenth));
+            const tolerance_check t = check(c, a.solution, scaled_changes(ends, 0.1 * 4.0 * n / m));
             if (t.ratio > 1.0) certain = t;
         }
         o.fails.push_back(certain.has_value());
         o.at_least.push_back(certain.value_or(tolerance_check{}));
     }
     return o;
-}
-
-bool level_ladder::may_extrapolate_ends(int m) const {
-    // estimate_levels.cpp's level n/8 (estimate_point::coarser): smooth rollers, n a multiple of 8, n/8 a level.
-    return smooth_ && m % 8 == 0 && m / 8 >= min_nodes;
-}
-
-double level_ladder::richardson_share() const {
-    // The certain part (richardson_certain_share) less the scale's own move to the rung: an answer through the ends has
-    // each within |d2| <= 2^p E_R of level m/2's, so with E_R <= tol s' its scale s' <= s/(1 - 2^p tol), and the rules'
-    // test of k' |d| against tol s (with 1 % and 1 - tol/2 more) proves E_R > tol s' where k' = share (1 - 2^p tol);
-    // none where 2^p tol >= 1/2.
-    const double move = std::ldexp(tolerance_, order_);
-    return move < 0.5 ? richardson_certain_share(order_) * (1.0 - move) : 0.0;
-}
-
-double level_ladder::richardson_move(const tangential_solution& s, double lambda) const {
-    // A, the largest estimate of a zone end the tolerance allows at s (c0's and the start's members: 1 / ratio of a unit
-    // estimate). An end answered at its Richardson value has E_R <= A/(1 - 2^p tol) (richardson_share) and
-    // E_R >= |x_m - x_{m/2}|/2^p: each end of the answering point within 2^p A/(1 - 2^p tol) of level m/2's, 1 % more.
-    error_estimate unit{0.0, 1.0, 0.0, 0.0, "", false, 0.0};
-    const double allowed_c0 = 1.0 / check_estimate(s, lambda, unit, tolerance_, strength_).ratio;
-    unit.c0 = 0.0;
-    unit.start = 1.0;
-    const double allowed_start = 1.0 / check_estimate(s, lambda, unit, tolerance_, strength_).ratio;
-    const double move = std::ldexp(tolerance_, order_);
-    if (!(move < 0.5)) return 2.0;  // the whole contact
-    return 1.01 * std::ldexp(std::max(allowed_c0, allowed_start), order_) / (1.0 - move);
 }
 
 std::optional<tolerance_check> level_ladder::before_point(contact& c, double Q, std::size_t i) {
@@ -296,8 +200,8 @@ std::optional<tolerance_check> level_ladder::before_point(contact& c, double Q, 
     if (levels.size() != 2) return std::nullopt;  // levels m/4, m/2 (no finer level fits: climb's test), or none
     const estimate_level& half = levels[1];
     const level_changes changes = changes_before_point(levels[0], half, m, c.friction(), strength_);
-    const auto certain_part = [&](double k, double ends) {
-        return check_estimate(half.solution, half.lambda, scaled_changes(changes, k, ends), tolerance_, strength_);
+    const auto certain_part = [&](double k) {
+        return check_estimate(half.solution, half.lambda, scaled_changes(changes, k), tolerance_, strength_);
     };
     // The largest allowed move of a zone end (c0's and the start's members: e / ratio of a unit estimate).
     error_estimate unit{0.0, 1.0, 0.0, 0.0, "", false, 1.0};
@@ -307,15 +211,8 @@ std::optional<tolerance_check> level_ladder::before_point(contact& c, double Q, 
     unit.start = 1.0;
     const double allowed_start = 1.0 / check_estimate(half.solution, half.lambda, unit, tolerance_, strength_).ratio;
     const double delta = 1.01 * std::max(allowed_c0, allowed_start) / (2.0 - tolerance_);
-    // Where rung m may extrapolate its ends (8(q), "The ladder on the Richardson ends"), an answer through them has its
-    // ends within richardson_move of level m/2's, farther than delta: its zones are tested widened by that, for the
-    // three-level rule of every quantity as for the Richardson ends, of which only richardson_share is certain.
-    const bool richardson =
-        may_extrapolate_ends(m) &&
-        may_take_three_level(half.solution, m, richardson_move(half.solution, half.lambda), smooth_);
-    const bool three_level = richardson || may_take_three_level(half.solution, m, delta, smooth_);
-    const double k = three_level ? std::ldexp(3.0, -order_) : 2.0;
-    const tolerance_check t = certain_part(k, richardson ? std::min(k, richardson_share()) : k);
+    const bool three_level = may_take_three_level(half.solution, m, delta, smooth_);
+    const tolerance_check t = certain_part(three_level ? std::ldexp(3.0, -order_) : 2.0);
     if (t.ratio * (1.0 - 0.5 * tolerance_) > 1.01) return t;
     return std::nullopt;
 }
@@ -399,16 +296,15 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
                 // fails_before_finer holds, every erratic quantity takes the lower-bound branch (asked once, cached),
                 // the paper's confirmation and the second chance are not asked at full coupling, level 2n is not solved
                 // (so the loop's confirmation of the rest does not run), and each quantity's bound is the same
-                // coupled_bound of the same levels and floor, folded in the same order; zone_ends, which check_estimate
-                // reads (ends_as_read), is empty there (a lower bound is rough rollers', who have none). The same
-                // arithmetic gives the same ratio, > 1. A violated invariant of the code, not a refusal: a bug.
+                // coupled_bound of the same levels and floor, folded in the same order; zone_ends is not read. The
+                // same arithmetic gives the same ratio, > 1. A violated invariant of the code, not a refusal: a bug.
                 if (t.ratio <= 1.0)
                     throw std::logic_error("level_ladder: a lower bound within the tolerance at n = " +
                                            std::to_string(n) + " (" + t.quantity + ": estimate " +
                                            shortest(t.estimate) + ", tolerance " + shortest(tolerance_) + ")");
                 lower_bounds.push_back({n, a.solution, t.ratio});
             } else {
-                if (t.ratio <= 1.0) return noted(std::move(a), t);
+                if (t.ratio <= 1.0) return a;
                 if (!best || t.ratio < best->check.ratio) best = best_reached{t, n};
             }
             last_reason.clear();
@@ -516,10 +412,7 @@ std::optional<level_ladder::answer> level_ladder::below_first(double Q) {
             tangential_solution s = c->point(Q);
             if (!(s.weight_a > 0.0) || !s.checks.hold()) break;  // not the spectral structure: the climb decides
             std::optional<error_estimate> e = c->estimate(s);
-            if (e) {
-                const tolerance_check t = check(*c, s, *e);
-                if (t.ratio <= 1.0) return noted(answer{std::move(s), std::move(e), n}, t);
-            }
+            if (e && check(*c, s, *e).ratio <= 1.0) return answer{std::move(s), std::move(e), n};
         } catch (const beyond_method_error&) {
             throw;
         } catch (const resolution_error&) {
@@ -550,10 +443,7 @@ std::optional<level_ladder::answer> level_ladder::five_zones_below_first(double 
         tangential_solution s = c.point(Q);
         if (s.layout.stick_zones() != 2 || !s.checks.hold()) return std::nullopt;
         std::optional<error_estimate> e = c.estimate(s);
-        if (e) {
-            const tolerance_check t = check(c, s, *e);
-            if (t.ratio <= 1.0) return noted(answer{std::move(s), std::move(e), n}, t);
-        }
+        if (e && check(c, s, *e).ratio <= 1.0) return answer{std::move(s), std::move(e), n};
     } catch (const beyond_method_error&) {
         throw;
     } catch (const resolution_error&) {
@@ -616,11 +506,7 @@ std::vector<curve_point> ladder_curve(level_ladder& ladder, const std::vector<do
     const bool in_c0 = sweep && c.materials().beta_d == 0.0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
         curve_point& row = rows[i];
-        if (!row.is_refused() && ladder.answers(c, row.solution, row.estimate)) {
-            if (row.estimate && row.solution.checks.hold() && ladder.check(c, row.solution, *row.estimate).by_zone_ends)
-                note_zone_ends_answer(*row.estimate);
-            continue;
-        }
+        if (!row.is_refused() && ladder.answers(c, row.solution, row.estimate)) continue;
         if (!in_c0 && at_once.at(i)) {
             n_used[i] = 0;
             continue;

@@ -149,15 +149,6 @@ std::optional<zone_end_value> richardson_end(std::optional<double> eighth, const
     return zone_end_value{v.finest + d2 / 3.0, error, true};
 }
 
-double richardson_certain_share(int order) {
-    // richardson_end's g(d2) = max((8/3) |d2 - d1/4|, |d2|/2^p), the larger of a V falling to 0 at d2 = d1/4 and one
-    // rising from d2 = 0: least where they cross, (8/3)(d1/4 - d2) = d2/2^p, d2 = (2/3) d1/(8/3 + 2^-p), there
-    // |d1| 2/(8 2^p + 3) (2/131 at p = 4, a little below 1/64; the crossing 0.244 d1 lies inside the clean window
-    // d1/5 .. d1/3, so it is reached). The estimate's noise term (3 noise) only adds; an end not extrapolated keeps level
-    // n's rule, 3 max(|d2|, |d1|/2^p) or 2 max(|d1|, |d2|) with its floor, larger.
-    return 2.0 / (8.0 * std::ldexp(1.0, order) + 3.0);
-}
-
 int order_of(method how) { return level_of(how) == method::product ? 4 : 2; }
 
 namespace {

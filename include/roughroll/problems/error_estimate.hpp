@@ -35,8 +35,7 @@ struct peak_error {
 // zone ends"), each end on its own: where its changes over the levels n/4, n/2, n fall at order 2 cleanly, its value from
 // levels n/2 and n, x_n + (x_n - x_{n/2})/3, and that value's estimate (`extrapolated`); elsewhere level n's value and
 // its own estimate (the one folded into c0's or the start's member). Values beside the point's: its zones, traction,
-// creep and the ends it reports (tangential_solution; error_estimate::c0, start) stay level n's; a ladder's answer may be
-// within its tolerance through these values (level_ladder.hpp, ends_as_read).
+// creep and the ends it reports (tangential_solution; error_estimate::c0, start) stay level n's.
 struct zone_end_value {
     double value, error;
     bool extrapolated;
@@ -81,9 +80,8 @@ struct error_estimate {
     // leaves level_ladder::climb (the store's test is set during the climb alone): no printer reads this member.
     bool lower_bound = false;
     // Full coupling on smooth rollers, levels n/4, n/2, n: each zone end by one Richardson level where its changes are
-    // clean order 2, else level n's with its own estimate (zone_end_values); empty for every other rule. The ladder's
-    // tolerance reads each end at its own estimate here (level_ladder's ends_as_read, docs/formulation.md 8(q) "The ladder
-    // on the Richardson ends"); c0 and start above stay level n's, of the point's ends.
+    // clean order 2, else level n's with its own estimate (zone_end_values); empty for every other rule. Not read by the
+    // ladder's tolerance (level_ladder's check_estimate reads c0 and start, level n's): an answer's n is chosen as before.
     std::optional<zone_end_values> zone_ends = std::nullopt;
 };
 

@@ -57,19 +57,7 @@ struct tolerance_check {
     // The least tolerance within which every quantity is (e <= max(tol s, r) for each): the largest e/s of those above
     // their floor r; 0 where all are, infinite where one above its floor has s = 0 (or a NaN estimate).
     double answering = 0.0;
-    // Within the tolerance (ratio <= 1) only through the zone ends' Richardson values (ends_as_read): level n's c0 and
-    // start, the point's, with their own estimates are not (docs/formulation.md 8(q), "The ladder on the Richardson ends").
-    bool by_zone_ends = false;
 };
-// The ends as the tolerance reads them (docs/formulation.md 8(q), "The ladder on the Richardson ends"): where
-// e.zone_ends holds an end extrapolated (full coupling on smooth rollers), c0's and the start's members are the largest
-// of their ends' own estimates, each of its Richardson value where extrapolated, else of level n's (the bound folded
-// into the member), with the second-zone flags of that fold; e itself, bit for bit, where no end is extrapolated.
-error_estimate ends_as_read(const error_estimate& e);
-// Says in e.against that its point answers the tolerance through the zone ends' Richardson values (ends_as_read), not
-// through level n's c0 and start, which it reports (docs/formulation.md 8(q), "The ladder on the Richardson ends").
-void note_zone_ends_answer(error_estimate& e);
-// The check of every quantity on ends_as_read(e): the zone ends read at their own estimates, extrapolated where they are.
 tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
                                double strength = 0.0);
 
@@ -140,13 +128,6 @@ private:
     // before: 1000 after 512 or 768), has its levels n/4 and n/2 solved first (kept for its point); where the certain
     // part of its estimate in their change fails the tolerance, that part, and its point is not solved.
     std::optional<tolerance_check> before_point(contact& c, double Q, std::size_t i);
-    // 8(q), "The ladder on the Richardson ends": whether rung m's estimate can extrapolate its zone ends (level m/8 fits,
-    // smooth rollers); the share of a rung's last level change certain in its Richardson estimates at the next rung,
-    // with the scale's move; how far an end answered through its Richardson value may lie from the rung's level m/2
-    // (point s at P_H/P2 lambda).
-    bool may_extrapolate_ends(int m) const;
-    double richardson_share() const;
-    double richardson_move(const tangential_solution& s, double lambda) const;
     // The point at Q from spectral_rungs(), where one answers it (point's comment); else nothing.
     std::optional<answer> below_first(double Q);
     // below_first's free rolling and driven side (Q beta_D >= 0): rung spectral_rungs().back() on the climb's store,

@@ -203,11 +203,6 @@ inline constexpr double ends_least_ratio = 3.0, ends_most_ratio = 5.0, ends_clea
 bool ends_clean_ratio(double d_coarse, double d_fine, double noise);
 std::optional<zone_end_value> richardson_end(std::optional<double> eighth, const three_levels& v, double noise,
                                              int order);
-// What richardson_end's estimate holds for certain of the change d1 = x_{n/2} - x_{n/4} before level n is solved
-// (8(q), "The ladder on the Richardson ends"): max(2 |delta|, |d2|/2^p) with delta = (4 d2 - d1)/3 is least where its two
-// parts cross, so E_R >= 2 |d1|/(8 2^p + 3) whatever level n gives (and level n's own rule, where the end is not
-// extrapolated, more).
-double richardson_certain_share(int order);
 
 // The first words of every refusal of an estimate: "no honest error estimate for method 'M' at
 // n = N (the structure): ".
