@@ -279,11 +279,21 @@ TEST(FullCouplingEveryF, NearCompleteSlipEstimatesBoundTheDistanceFromFiveTwelve
                     std::fabs(a.out["xi"].get<double>() - s.xi), e["xi"].get<double>(),
                     std::fabs(a.out["hertz_load_ratio"].get<double>() - c.normal().lambda),
                     e["hertz_load_ratio"].get<double>());
-        EXPECT_LE(std::fabs(a.out["c0"].get<double>() - s.c0()), e["c0"].get<double>());
-        EXPECT_LE(std::fabs(a.out["stick_start"].get<double>() - s.start()), e["stick_start"].get<double>());
-        EXPECT_LE(std::fabs(a.out["xi"].get<double>() - s.xi), e["xi"].get<double>());
-        EXPECT_LE(std::fabs(a.out["hertz_load_ratio"].get<double>() - c.normal().lambda),
-                  e["hertz_load_ratio"].get<double>());
+        // n = 512's own estimates (the same solve by the program): where one is not below half the answer's, n = 512
+        // cannot tell that quantity's error (xi at f = 1e-5 on the exact weight, session 25: +- 3.5e-15 at n = 64
+        // against n = 512's rounding floor 1.6e-14; levels 64, 256, 512 agree to 2e-15), and the distance need only
+        // fit in the two bounds.
+        const answered r = point_of(full, f, "--n 512 --method product");
+        ASSERT_EQ(r.status, 0) << r.text;
+        const auto& er = r.out["error_estimate"];
+        const auto within = [&](const char* q, double distance) {
+            const double own = e[q].get<double>(), ref = er[q].get<double>();
+            EXPECT_LE(distance, ref <= 0.5 * own ? own : own + ref) << q;
+        };
+        within("c0", std::fabs(a.out["c0"].get<double>() - s.c0()));
+        within("stick_start", std::fabs(a.out["stick_start"].get<double>() - s.start()));
+        within("xi", std::fabs(a.out["xi"].get<double>() - s.xi));
+        within("hertz_load_ratio", std::fabs(a.out["hertz_load_ratio"].get<double>() - c.normal().lambda));
     }
     std::remove(full.c_str());
 }

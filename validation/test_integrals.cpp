@@ -95,7 +95,7 @@ nlohmann::json point_of(const std::string& scene, const std::string& options) {
 }  // namespace
 
 // The driven Q/f = +0.75 at f = 0.05, full coupling (review F3 of session 16): since the plateau is carried at its
-// trailing stick zone the ladder answers it at n = 256 (was 512). Its every estimate bounds the distance from n = 512
+// trailing stick zone the ladder answers it at n = 256 (was 512); on the exact weight (8(z), session 25) at n = 64. Its every estimate bounds the distance from n = 512
 // plus n = 512's own estimate (a bound of n = 512's error): measured c0 5.4e-8 + 1.9e-7 against 6.6e-7, the stick start
 // 6.0e-7 + 5.4e-6 against 6.9e-6, xi 3.0e-10 + 2.3e-9 against 6.2e-8; the second stick zone's ends (zone 3 of 5) within
 // the start's and c0's estimates, which fold them in.
@@ -114,7 +114,14 @@ TEST(Integrals, DrivenFullCouplingAnsweredBelowFiveTwelveWithinItsEstimates) {
     const auto& ef = fine["error_estimate"];
     for (const char* q : {"c0", "stick_start", "xi", "hertz_load_ratio"}) {
         const double distance = std::fabs(coarse[q].get<double>() - fine[q].get<double>());
-        EXPECT_LE(distance + ef[q].get<double>(), e[q].get<double>()) << q;
+        // Where n = 512's own bound is below the answer's, the distance plus it bounds the answer's error and must fit
+        // in its estimate. Where it is not (P_H/P2 since the driven five zones are on the exact weight, session 25:
+        // the answer at n = 64 +- 1.7e-11, n = 512's rounding floor 2.3e-9; the levels 64, 500, 512, 1000 agree to
+        // 4e-14), n = 512 cannot tell, and only the two bounds' consistency is checked.
+        if (ef[q].get<double>() < e[q].get<double>())
+            EXPECT_LE(distance + ef[q].get<double>(), e[q].get<double>()) << q;
+        else
+            EXPECT_LE(distance, e[q].get<double>() + ef[q].get<double>()) << q;
     }
     for (const auto& [q, key] : {std::pair{"p", "pressure_peak_p"}, std::pair{"r", "pressure_peak_r"}})
         EXPECT_LE(std::fabs(coarse["pressure_peak"][q].get<double>() - fine["pressure_peak"][q].get<double>()),
