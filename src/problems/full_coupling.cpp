@@ -203,22 +203,22 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
     // its right side (no plateau, no remainder: 8(z), "Wired"). All five zones of smooth rollers, the driven pair's
     // thin second stick zone too (8(z), "The driven five zones on the weight", session 25).
     if (s.layout.stick_zones() == 2) {
-        const struct { const tangential_solution &zone1, &zone2; double sign; } v{s.zone_system(0), s.zone_system(1), s.sign};
+        const tangential_solution &zone1 = s.zone_system(0), &zone2 = s.zone_system(1);
         // Each zone's q on the square-root weight (its U-series below), as the five zones' systems solve it.
-        for (const tangential_solution* z : {&v.zone1, &v.zone2})
+        for (const tangential_solution* z : {&zone1, &zone2})
             if (!carries_q(*z) || z->weight_a > 0.0) return nullptr;
         auto k = std::make_shared<pressure_kinks>();
-        k->set_weight(-v.sign * beta_d * f);
+        k->set_weight(-s.sign * beta_d * f);
         std::array<std::function<double(double)>, 2> psi;
         int i = 0;
-        for (const auto& [z, rise] : {std::pair<const tangential_solution*, double>{&v.zone1, 1.0}, {&v.zone2, -1.0}}) {
+        for (const auto& [z, rise] : {std::pair<const tangential_solution*, double>{&zone1, 1.0}, {&zone2, -1.0}}) {
             const std::vector<double> c = z->psi_b;
             const double start = z->start(), rho = 0.5 * (z->c0() - z->start());
             psi[i++] = [c, &from, start, rho, rise](double t) {
                 return u_series(c, t) + blend_part(from, start, rho, rise, t);
             };
         }
-        k->set_variable(n, beta_d, v.sign, f, {v.zone1.start(), v.zone1.c0(), v.zone2.start(), v.zone2.c0()}, psi);
+        k->set_variable(n, beta_d, s.sign, f, {zone1.start(), zone1.c0(), zone2.start(), zone2.c0()}, psi);
         return k;
     }
     if (s.layout.stick_zones() != 1 || s.layout.opposite() || !carries_q(s)) return nullptr;
