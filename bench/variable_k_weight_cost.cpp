@@ -11,7 +11,6 @@
 #include <functional>
 #include <vector>
 
-#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"
 
 #include "../tests/variable_k_fixture.hpp"  // the five zones and 8(x)'s blended k, as the tests have them

@@ -44,7 +44,7 @@ using hilbert_on_pieces::integrand;
 
 const double beta_d = 0.1438337435056057;  // aluminium on steel (the JSON's beta_d)
 
-// Theta_3 of 8(r) written out (not blend_plateau's): 1/2 + arcsin(t)/pi + sqrt(1 - t^2) (33 t - 26 t^3 + 8 t^5)/(15 pi).
+// Theta_3 of 8(r) written out (not blend_theta3's): 1/2 + arcsin(t)/pi + sqrt(1 - t^2) (33 t - 26 t^3 + 8 t^5)/(15 pi).
 double theta3(double t) {
     t = std::clamp(t, -1.0, 1.0);
     return 0.5 + M_1_PI * std::asin(t) +

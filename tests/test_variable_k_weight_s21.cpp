@@ -16,7 +16,6 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/gsl_handles.hpp"
-#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/gauss_jacobi.hpp"
 #include "roughroll/numerics/jacobi_cauchy.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"

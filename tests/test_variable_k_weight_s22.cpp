@@ -18,7 +18,6 @@
 #include <gsl/gsl_math.h>
 #include <gtest/gtest.h>
 
-#include "roughroll/numerics/blend_plateau.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"
 
 #include "quadpack_common.hpp"

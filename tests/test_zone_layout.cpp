@@ -14,6 +14,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 
 namespace roughroll {
 namespace {
@@ -83,6 +84,30 @@ TEST(ZoneLayout, OneSystemPerStickZone) {
     }
     EXPECT_EQ(copy.zone_system(1).psi_b, std::vector<double>{4.0});
     EXPECT_THROW((void)copy.zone_system(2), std::out_of_range);
+}
+
+// The systems are held to one per stick zone of the layout (session 25 review R9): a layout changed after its systems
+// were made (one stick zone left, or three) reads no system of another zone, and stick_systems (Newton's residuals,
+// zone_newton.hpp) lists exactly the layout's. (Fails before session 26: zone_systems->at(k) answered zone 1's system
+// on a one-zone layout and zone 2's on a layout of three stick zones, and stick_systems listed both systems.)
+TEST(ZoneLayout, SystemsCountedAgainstTheLayout) {
+    tangential_solution s = zone_solution(0.3, -0.9, -0.2, 0.1, 0.0, {}, 1.0);
+    s.zone_systems = std::make_shared<const std::vector<tangential_solution>>(std::vector{
+        zone_solution(0.3, -0.9, -0.2, 0.1, 0.0, {3.0}, 1.0), zone_solution(0.3, 0.1, 0.6, 0.1, 0.0, {4.0}, 1.0)});
+    EXPECT_THROW((void)s.zone_system(0), std::out_of_range);  // one stick zone, two systems
+    EXPECT_THROW((void)stick_systems(s), std::out_of_range);
+    try {
+        (void)s.zone_system(0);
+    } catch (const std::out_of_range& e) {
+        EXPECT_EQ(std::string(e.what()), "no system of stick zone 1 on this solution (1 stick zones, 2 systems)");
+    }
+    s.layout = {{{-1.0, -0.9, false, -1}, {-0.9, -0.2, true, 0}, {-0.2, 0.1, false, 1}, {0.1, 0.3, true, 0},
+                 {0.3, 0.4, false, -1}, {0.4, 0.6, true, 0}, {0.6, 1.0, false, -1}},
+                zone_route::general};
+    EXPECT_THROW((void)s.zone_system(1), std::out_of_range);  // three stick zones, two systems
+    s.layout = five_zones_layout(-0.9, -0.2, 0.1, 0.6, 1);
+    EXPECT_EQ(s.zone_system(1).psi_b, std::vector<double>{4.0});
+    EXPECT_EQ(stick_systems(s).size(), 2u);
 }
 
 }  // namespace

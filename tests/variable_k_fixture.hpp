@@ -12,7 +12,7 @@
 #include <functional>
 #include <vector>
 
-#include "roughroll/numerics/blend_plateau.hpp"
+#include "roughroll/problems/pressure_kinks.hpp"
 
 namespace variable_k_fixture {
 
@@ -33,9 +33,9 @@ inline double t_of(double x, double l, double r) { return std::clamp((2.0 * x - 
 // beside it).
 inline std::vector<std::function<double(double)>> blended(const std::vector<double>& e, double k0) {
     return {{},
-            [=](double x) { return k0 * (2.0 * roughroll::blend_plateau::theta3(t_of(x, e[1], e[2])) - 1.0); },
+            [=](double x) { return k0 * (2.0 * roughroll::blend_theta3(t_of(x, e[1], e[2])) - 1.0); },
             {},
-            [=](double x) { return k0 * (1.0 - 2.0 * roughroll::blend_plateau::theta3(t_of(x, e[3], e[4]))); },
+            [=](double x) { return k0 * (1.0 - 2.0 * roughroll::blend_theta3(t_of(x, e[3], e[4]))); },
             {}};
 }
 

@@ -71,8 +71,8 @@ TEST(FiveZoneRungs, FreeRollingPairAnswersAtRung64WithinItsEstimates) {
 // taking levels 32 and 64 from the store as the rung-64 trial made them, so that every level is made once (a trial on a
 // store of its own would make 32 and 64 twice). (Until session 25 the driven pair at Q/f = +0.75, which climbed to 256
 // on the plateau path and answers at 64 on the exact weight: docs/formulation.md 8(z), "The driven five zones on the
-// weight"; the old name kept.) About 2 s CPU.
-TEST(FiveZoneRungs, DrivenPairClimbsOnTheTrialsLevels) {
+// weight"; the test was named DrivenPairClimbsOnTheTrialsLevels before session 26.) About 2 s CPU.
+TEST(FiveZoneRungs, FreeRollingClimbsOnTheTrialsLevels) {
     const dissimilar pair{beta_al_st, coupling_level::full};
     const double f = 0.1;
     level_ladder ladder = ladder_of(pair, f);

@@ -651,8 +651,8 @@ TEST(FullCoupling, TheContractionsStopReachesThePlainRulesFixedPointInFewerSteps
 // and the coupling shortens it (by about 3e-4) to just below them, so that a rule asked of each step's source switched the
 // plateau on from the second step. Since session 23 such zones, and since session 25 every five zones of smooth rollers
 // (the driven pair's thin second zone too: 8(z), "The driven five zones on the weight"), are on the exact weight of 8(z),
-// which carries no plateau: no rule is asked, every step is on the weight (the old name kept: the test's CTest labels).
-TEST(FullCoupling, ThePlateauIsDecidedOnceForTheAlternation) {
+// which carries no plateau: no rule is asked, every step is on the weight (named ThePlateauIsDecidedOnceForTheAlternation before session 26).
+TEST(FullCoupling, FiveZonesAlternateOnTheExactWeightThroughout) {
     const double Q = 0.275 * f;
     const normal_solution hertz = hertz_solution(64, method::product);
     tangential_solver solver(hertz, kernel{}, kernel{}, f);

@@ -142,8 +142,8 @@ TEST(FullCouplingEveryF, ThinStickZonesConvergeWithTheStepCarried) {
 // second zone, 4.7) and the driven Q/f = +0.75 at f = 0.05 (the trailing zone, 0.68) carried it; free rolling at
 // f = 0.05 (14.2) did not. The spacings are recomputed here from Johnson's point (n = 128). Since session 25 all of them
 // are on the exact weight of 8(z) (the zones below 2 spacings too: 8(z), "The driven five zones on the weight"), which
-// carries no plateau (the old name kept: the test's CTest label).
-TEST(FullCouplingEveryF, PlateauCarriedWhereACoarsestLevelDoesNotResolveAStickZone) {
+// carries no plateau (named PlateauCarriedWhereACoarsestLevelDoesNotResolveAStickZone before session 26).
+TEST(FullCouplingEveryF, ThinAndWideStickZonesAreOnTheExactWeight) {
     using namespace roughroll;
     struct load {
         double f, q_over_f;
@@ -233,8 +233,9 @@ TEST(FullCouplingEveryF, FreeRollingAtTwoTenthsConvergesToFiveTwelve) {
 // stick zone is 8.92 spacings of n = 250 (the series' route), and f = 0.15, 7.48 spacings (the plateau carried), within
 // 12 % of the threshold of 8 (8(p), "Where the plateau is carried"). On either route n = 128's estimates bound its
 // distance from n = 512 (measured by the review: the start 1.5e-6 against 2.75e-3 at f = 0.13, 5.3e-6 against 6.1e-5
-// at f = 0.15).
-TEST(FullCouplingEveryF, EstimatesHoldOnBothSidesOfThePlateauThreshold) {
+// at f = 0.15). Named EstimatesHoldOnBothSidesOfThePlateauThreshold before session 26 (no threshold is asked since
+// session 25).
+TEST(FullCouplingEveryF, FreeRollingAtThirteenAndFifteenHundredthsConvergesToFiveTwelve) {
     using namespace roughroll;
     const std::string full = scene_with("full");
     ASSERT_FALSE(full.empty());

@@ -12,7 +12,7 @@
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
-#include "roughroll/numerics/blend_plateau.hpp"
+#include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/variable_k_weight.hpp"
 
 namespace roughroll {
@@ -188,8 +188,8 @@ void pressure_kinks::set_variable(int n, double beta_d, double sign, double f, c
     const auto t_of = [](double x, double l, double r) { return std::clamp((2.0 * x - l - r) / (r - l), -1.0, 1.0); };
     const double s1 = e[0], c1 = e[1], s2 = e[2], c2 = e[3];
     std::vector<std::function<double(double)>> varying{
-        {}, [=](double x) { return k0 * (2.0 * blend_plateau::theta3(t_of(x, s1, c1)) - 1.0); }, {},
-        [=](double x) { return k0 * (1.0 - 2.0 * blend_plateau::theta3(t_of(x, s2, c2))); }, {}};
+        {}, [=](double x) { return k0 * (2.0 * blend_theta3(t_of(x, s1, c1)) - 1.0); }, {},
+        [=](double x) { return k0 * (1.0 - 2.0 * blend_theta3(t_of(x, s2, c2))); }, {}};
     try {
         st->weight = std::make_unique<variable_k_weight>(std::vector<double>{-1.0, s1, c1, s2, c2, 1.0},
                                                          std::vector<double>{-k0, 0.0, k0, 0.0, -k0}, varying);
@@ -775,6 +775,12 @@ void kinks_blend::operator()(const double* r, const double* blend, std::optional
 }
 
 double blend_kinks(double t) { return -2.0 / (15.0 * M_PI) * t * (1.0 - t * t) * (9.0 - 4.0 * t * t); }
+
+double blend_theta3(double t) {
+    // P's U coefficients (header; 8(r)).
+    static const std::vector<double> p{0.0, 45.0 / (60.0 * M_PI), 0.0, -9.0 / (60.0 * M_PI), 0.0, 1.0 / (60.0 * M_PI)};
+    return 0.5 + M_1_PI * std::asin(t) + std::sqrt((1.0 - t) * (1.0 + t)) * u_series(p, t);
+}
 
 void add_kink_points(std::vector<double>& points, const pressure_kinks& kinks, double apart) {
     if (points.empty()) return;

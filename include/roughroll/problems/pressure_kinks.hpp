@@ -252,6 +252,12 @@ private:
 // 1/pi, so their difference is sqrt(1 - t^2) times this polynomial: a part of q that pressure_kinks carries exactly.
 double blend_kinks(double t);
 
+// Theta_3(t) = 1/2 + arcsin(t)/pi + sqrt(1 - t^2) P(t), P = (45 U_1 - 9 U_3 + U_5)/(60 pi) = (33 t - 26 t^3 + 8 t^5)/(15 pi),
+// |t| <= 1 (docs/formulation.md 8(r)): the blend whose derivative (16/(5 pi)) (1 - t^2)^(5/2) leaves (1 +- t)^(7/2) at the
+// zone ends, Theta's arcsin with Theta's t sqrt(1 - t^2)/pi less blend_kinks; the variable exponent of 8(z) rises and
+// falls with it across the five zones' stick zones (set_variable).
+double blend_theta3(double t);
+
 // Adds to `points` (breakpoints of a quadrature over [points' least, points' greatest]) the zone ends of
 // `kinks` that lie strictly inside that range and more than `apart` from every point: an adaptive rule
 // that maps each piece's ends to smooth ones (end_quadrature::piece) then meets p's one-sided

@@ -73,12 +73,18 @@ struct tangential_solution {
     // r on a stick zone [from, to) of the layout
     bool sticks(double r) const { return layout.sticks(r); }
     // The system of the k-th stick zone from r = -1 (its psi_b, xi_k, its ends [start(), c0()]): the point itself
-    // where it has one stick zone; std::out_of_range for k >= layout.stick_zones().
+    // where it has one stick zone; std::out_of_range for k >= layout.stick_zones(), and where the systems are not
+    // one per stick zone of the layout (a layout changed after its systems were made, or built by hand without them:
+    // a programming error, exit 70, as layout.stick_zone's; not a system read for another zone).
     const tangential_solution& zone_system(std::size_t k) const {
-        if (zone_systems) return zone_systems->at(k);
-        if (k == 0 && layout.stick_zones() == 1) return *this;
-        // A layout built by hand without its systems: a programming error (exit 70), as layout.stick_zone's.
-        throw std::out_of_range("no system of stick zone " + std::to_string(k + 1) + " on this solution");
+        const std::size_t zones = layout.stick_zones();
+        if (k < zones) {
+            if (zone_systems && zone_systems->size() == zones) return (*zone_systems)[k];
+            if (!zone_systems && zones == 1) return *this;
+        }
+        throw std::out_of_range("no system of stick zone " + std::to_string(k + 1) + " on this solution (" +
+                                std::to_string(zones) + " stick zones, " +
+                                std::to_string(zone_systems ? zone_systems->size() : 1) + " systems)");
     }
 };
 

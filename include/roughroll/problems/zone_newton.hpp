@@ -43,12 +43,12 @@ private:
     double rounding_ = 0.0, tolerance_ = 0.0;  // the largest rounding met, and its Newton's tolerance
 };
 
-// The stick zones' systems of a solution, in order from r = -1 (tangential_solution::zone_system): the solution itself
-// for one stick zone, each zone's for the five zones (dissimilar_zones.hpp).
+// The stick zones' systems of a solution, in order from r = -1 (tangential_solution::zone_system, which holds them to
+// one per stick zone of the layout): the solution itself for one stick zone, each zone's for the five zones
+// (dissimilar_zones.hpp).
 inline std::vector<const tangential_solution*> stick_systems(const tangential_solution& s) {
-    if (!s.zone_systems) return {&s};
     std::vector<const tangential_solution*> systems;
-    for (const tangential_solution& t : *s.zone_systems) systems.push_back(&t);
+    for (std::size_t k = 0; k < s.layout.stick_zones(); ++k) systems.push_back(&s.zone_system(k));
     return systems;
 }
 
