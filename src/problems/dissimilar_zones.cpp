@@ -508,32 +508,28 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     // sliding). The first whose checks hold is the answer; else one that fails them, for the caller to refuse.
     // A structure with no zone is an empty find; a numerical fault (a GSL status, a singular system) of either search
     // is kept and, where neither structure answers, rethrown as the fault; where neither answers and a Newton of either
-    // stopped at the ends' rounding limit, that is the refusal (zone_newton.hpp).
-    std::optional<tangential_solution> found, failed;
+    // stopped at the ends' rounding limit, that is the refusal (zone_newton.hpp). The structures are the search's starts
+    // (first_holding, zone_start.hpp).
     std::optional<numerical_error> fault;
     rounding_limits met;
-    for (const bool blend : {opposite, !opposite}) {
-        if (only_this_kind && blend != opposite) break;
+    std::vector<bool> structures{opposite};
+    if (!only_this_kind) structures.push_back(!opposite);
+    std::optional<tangential_solution> found = search_from<tangential_solution>(structures, [&](bool blend) {
+        start_verdict<tangential_solution> verdict;
         try {
-            std::optional<tangential_solution> t =
-                zone_solver(zone_operator(blend, b, magnitude)).find(magnitude, false, guess, met);
-            if (!t) continue;
-            if (t->checks.hold()) {
-                found = t;
-                break;
-            }
-            if (!failed) failed = t;
+            verdict.root = zone_solver(zone_operator(blend, b, magnitude)).find(magnitude, false, guess, met);
         } catch (const resolution_error&) {
         } catch (const numerical_error& e) {
             if (!fault) fault = e;
         }
-    }
-    if (!found && !failed && fault) throw *fault;
-    if (!found && !failed && met.met()) throw rounding_limit_error(met.refusal());
-    if (!found && !failed)
+        return verdict;
+    });
+    if (!found && fault) throw *fault;
+    if (!found && met.met()) throw rounding_limit_error(met.refusal());
+    if (!found)
         throw unadvised_refusal(
             no_three_zones(Q, f_, "no three zones (slip in either direction at each edge) carry Q"));
-    tangential_solution s = found ? *found : *failed;
+    tangential_solution s = std::move(*found);
     s.layout.route = zone_route::general;  // gross sliding's too, where r* = -1 (the paper's edge form)
     // The checks of the |Q| problem (the zone search made them) are those of Q: the mirror of 8(h) changes
     // the signs of p1 and v together.

@@ -214,11 +214,11 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, std::v
     // pair at Q/f = 0.02 (data/aluminium-on-steel-rough.toml), where the driven three zones at Q, at n = 80 and 128,
     // led Newton to a slip+ zone closed to 2.6e-5 (stick margin -0.091) and every finer level followed it from the
     // coarser ends, while the scan's start (Q/f = 1/4 continued in Q) reaches the physical root, n = 64's (8(j) 4a,
-    // "Which root"). Where no start reaches one whose checks hold, the first root stands, as before.
-    std::optional<tangential_solution> failing;
-    for (const five_zone_start& start : starts) {
+    // "Which root"). Where no start reaches one whose checks hold, the first root stands, as before (first_holding).
+    return search_from<tangential_solution>(starts, [&](const five_zone_start& start) {
+        start_verdict<tangential_solution> verdict;
         double load = Q, forcing = std::fabs(beta_d_);  // where s is, nominally (Newton's load differs by its residual)
-        std::optional<tangential_solution> s;
+        std::optional<tangential_solution>& s = verdict.root;
         if (start.from == five_zone_start::base::ends) {
             s = five_zones(Q, start.ends, forcing, &limits);
         } else if (start.from == five_zone_start::base::solved) {
@@ -230,7 +230,8 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, std::v
             load = start.load;
             forcing = start.forcing;
             s = from_three_zones(load, forcing, holds, limits);
-            if (holds && load == Q) return failing;  // not five zones: dissimilar_zones::solve answers Q
+            // Not five zones: dissimilar_zones::solve answers Q.
+            if (holds && load == Q) return start_verdict<tangential_solution>{std::nullopt, true};
         }
         std::vector<zone_leg> path = start.path;
         path.push_back({zone_parameter::load, Q});
@@ -244,13 +245,11 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, std::v
                     return five_zones(in_load ? next : load, p.layout.stick_ends(), in_load ? p.forcing : next,
                                       &limits);
                 });
-            if (!s && leg >= start.shared_after) return failing;
+            if (!s && leg >= start.shared_after) verdict.ends_search = true;  // the path every later start shares
             at = path[leg].target;
         }
-        if (s && s->checks.hold()) return s;
-        if (s && !failing) failing = std::move(s);
-    }
-    return failing;
+        return verdict;
+    });
 }
 
 }  // namespace roughroll

@@ -17,6 +17,7 @@
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/zone_newton.hpp"
+#include "roughroll/problems/zone_start.hpp"
 
 namespace roughroll {
 
@@ -129,11 +130,12 @@ struct found {
     bool checked, from_guess;
 };
 
-// The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket); `first`: the
-// first zone solved whose checks fail.
+// The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket): each bracket a start
+// of the search, its zone offered to `roots` with its checks made (first_holding, zone_start.hpp), the answer the first
+// whose checks hold.
 std::optional<found> bracketed(const stick_zone_operator& op, const zone_end& end_of,
                                const std::vector<zone_trial>& trials, double magnitude,
-                               std::optional<tangential_solution>& first, rounding_limits& met) {
+                               first_holding<tangential_solution>& roots, rounding_limits& met) {
     const bool every = op.method.every_bracket;
     for (std::size_t k = 1; k < trials.size(); ++k) {
         if (!brackets_entry(trials[k - 1], trials[k])) continue;
@@ -154,8 +156,7 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_end& en
         // The scan to the first bracket has this one only: its zone answers, checked by the caller.
         if (!every) return found{*s, false, false};
         s->checks = op.check(*s);
-        if (s->checks.hold()) return found{*s, true, false};
-        if (!first) first = s;
+        if (roots.offer(*s)) return found{*s, true, false};
     }
     return std::nullopt;
 }
@@ -228,13 +229,13 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     std::vector<zone_trial> opening;
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
     std::vector<zone_trial> trials = scan_starts(op, end_of, opening, starts, !method.every_bracket);
-    std::optional<tangential_solution> first;
-    if (auto s = bracketed(op, end_of, trials, magnitude, first, met)) return *s;
+    first_holding<tangential_solution> roots;
+    if (auto s = bracketed(op, end_of, trials, magnitude, roots, met)) return *s;
     // No start carrying |Q| opens the pass for the clustered scan alone (its first start 4.8e-3 off the edge, the
     // blended zones' 8(g)), as before e51a784: a scan up to r* = -1 has no first start to read.
     const bool none_carries =
         method.clustered && !starts.empty() && trials.empty() && !(op.empty_load(starts.front()) > magnitude);
-    if (method.every_bracket && !first && (!trials.empty() || none_carries)) {
+    if (method.every_bracket && !roots.any() && (!trials.empty() || none_carries)) {
         // The stick zone of dissimilar rollers can start closer to the leading edge than the scan's first start,
         // 1 - cos(pi/32) = 4.8e-3 off it: near gross sliding it closes on the edge as 7(d)'s does, 1 + s ~
         // (1 - |Q|/f)^(2/3), and a leading slip zone can be thin (8(j) item 11). Where no bracket answered: starts
@@ -251,11 +252,12 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
             const std::vector<zone_trial> at = scan_starts(op, end_of, {}, {-1.0 + gap}, false);
             if (at.empty()) continue;
             if (above)
-                if (auto s = bracketed(op, end_of, {at.front(), *above}, magnitude, first, met)) return *s;
+                if (auto s = bracketed(op, end_of, {at.front(), *above}, magnitude, roots, met)) return *s;
             above = at.front();
         }
     }
-    if (first) return found{*first, true, false};  // the caller refuses it: its checks fail
+    if (std::optional<tangential_solution> first = std::move(roots).result())
+        return found{*std::move(first), true, false};  // the caller refuses it: its checks fail
     // Where the scan ends on no bracket, no zone of this structure carries the load (not a numerical
     // fault): zones = "auto" answers with the paper's zone and its failed checks where that zone exists
     // (contact::zones_for), dissimilar_zones::solve tries its other structure, a curve refuses the row

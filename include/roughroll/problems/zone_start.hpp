@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The starts of a zone search as data (issue 24, item 3): each start a base layout and a path of continuations
-// from it to the load asked, tried in order by one loop (dissimilar_zones::five_zones), the first to reach the load
-// the answer. The strategies, and the docs/formulation.md section each comes from:
+// from it to the load asked, tried in order by one loop (search_from, below: dissimilar_zones::five_zones), each
+// giving a verdict (its root, whether the search ends there), the first root whose checks hold the answer
+// (first_holding, the acceptance every zone search shares). The strategies, and the docs/formulation.md section each
+// comes from:
 //   - the coarser level's layout: Newton from its ends at the load (8(j) 9; at full coupling the previous iterate's,
 //     8(e); a caller's continuation in f is this start from the previous f's ends, since by 8(h) the ends move
 //     with beta_D/f alone: 8(j) 4a, 8(n));
@@ -56,6 +58,52 @@ struct zone_start {
     static zone_start continuing(S s) { return {base::solved, {}, std::move(s)}; }
     static zone_start three_zones_at(double load, double forcing) { return {base::three_zones, {}, {}, load, forcing}; }
 };
+
+// What one start of a zone search gave (docs/formulation.md 7(k)): its root (empty: none from here; the next start is
+// tried), and whether the search ends after it (a stop: the transition to another structure, a path every later start
+// shares), whatever the root.
+template <class S>
+struct start_verdict {
+    std::optional<S> root{};
+    bool ends_search = false;
+};
+
+// The acceptance of every zone search (docs/formulation.md 7(k)): roots offered in the order of their starts (five
+// zones' starts, the one stick zone's brackets, dissimilar rollers' two three-zone structures), each with its checks
+// (3.3)-(3.4) made; the first whose checks hold answers, and a root whose checks fail stands only where no later start
+// gives one that holds (the first such, for the caller to refuse or to report with its failed checks).
+template <class S>
+class first_holding {
+public:
+    // True where `s` answers (the search ends with it).
+    bool offer(S s) {
+        if (s.checks.hold()) {
+            answer_ = std::move(s);
+            return true;
+        }
+        if (!failing_) failing_ = std::move(s);
+        return false;
+    }
+    bool any() const { return answer_ || failing_; }
+    // The answer, else the first root whose checks fail, else nothing.
+    std::optional<S> result() && { return answer_ ? std::move(answer_) : std::move(failing_); }
+
+private:
+    std::optional<S> answer_, failing_;
+};
+
+// The starts tried in order by `attempt(start)` (a start_verdict<S>), until a root whose checks hold or a verdict that
+// ends the search: first_holding's result.
+template <class S, class Start, class Attempt>
+std::optional<S> search_from(const std::vector<Start>& starts, const Attempt& attempt) {
+    first_holding<S> roots;
+    for (const Start& start : starts) {
+        start_verdict<S> verdict = attempt(start);
+        if (verdict.root && roots.offer(std::move(*verdict.root))) break;
+        if (verdict.ends_search) break;
+    }
+    return std::move(roots).result();
+}
 
 // From `at` to `to` by `solve(next, previous)`: steps of `largest` (in log2 of the parameter where `geometric`),
 // halved where `solve` finds nothing, down to `smallest`, doubled again after a success; the solution at `to`,
