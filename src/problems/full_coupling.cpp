@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <functional>
 #include <cmath>
 #include <memory>
@@ -26,6 +27,15 @@ namespace {
 constexpr double settled_for_jacobi = 1e-6;
 std::string coupling_at_load(double Q, double f) { return "full coupling at Q/f = " + shortest(Q / f) + ": "; }
 }  // namespace
+
+double coupling_value_floor(double lambda, double offset, double xi, double f, double normal_rcond,
+                            double tangential_rcond) {
+    const double rcond = std::min(normal_rcond, tangential_rcond);
+    if (!(rcond > 0.0)) return 0.0;  // no condition known: the tolerance alone, as before
+    const double scale =
+        std::max({std::fabs(lambda), std::fabs(offset), std::fabs(xi) + f * std::max(1.0, std::fabs(lambda))});
+    return 2.0 * DBL_EPSILON * scale / rcond;
+}
 
 // One step k of the alternation: p^(k) (solving (D1) with beta_D p1^(k-1)), its solver and zones
 // workspace (the tangential solver keeps a reference to `normal`, so an iterate never moves: it
@@ -111,22 +121,25 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
 // slip velocity vanishes like (s - r)^(3/2) and the discrete one keeps a square-root residual of the entry condition
 // whose sign is chance at a given n (free rolling of the pair at n = 32: 8(r)). The checks take no tolerance: the
 // point is refused at this n, and the message says what may answer it.
-resolution_error failed_checks(const tangential_solution& t, double Q, double f) {
+failed_checks_error failed_checks(const tangential_solution& t, double Q, double f) {
     // The coupled pressure below zero: the term beta_D p1 of (D1), of order beta_D f, outweighs the load's
     // pressure (aluminium on steel at f = 1e6, gross sliding: margin -3.9e4), so the contact would open.
     if (!t.checks.pressure_holds)
-        return resolution_error(coupling_at_load(Q, f) + "the coupled pressure turns negative (margin p " +
-                                shortest(t.checks.pressure_margin) +
-                                "): the coupling term beta_d p1 of the normal problem, of order beta_d f, outweighs "
-                                "the pressure at this friction, so the contact would open: the load is beyond the "
-                                "coupled model (docs/formulation.md 8(e)); coupling = \"johnson\" answers it without "
-                                "that term, an approximation of order beta_d f here");
-    return resolution_error(coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: " +
-                            margins_text(t.checks) +
-                            "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
-                            "the alternation does not follow, or the discrete zones at this n miss the checks next "
-                            "to a zone end (8(r)); a larger n (--n, or none: the ladder's) may answer it, "
-                            "coupling = \"johnson\" answers the load");
+        return failed_checks_error(
+            coupling_at_load(Q, f) + "the coupled pressure turns negative (margin p " +
+                shortest(t.checks.pressure_margin) +
+                "): the coupling term beta_d p1 of the normal problem, of order beta_d f, outweighs "
+                "the pressure at this friction, so the contact would open: the load is beyond the "
+                "coupled model (docs/formulation.md 8(e)); coupling = \"johnson\" answers it without "
+                "that term, an approximation of order beta_d f here",
+            t.checks);
+    return failed_checks_error(
+        coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: " + margins_text(t.checks) +
+            "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
+            "the alternation does not follow, or the discrete zones at this n miss the checks next "
+            "to a zone end (8(r)); a larger n (--n, or none: the ladder's) may answer it, "
+            "coupling = \"johnson\" answers the load",
+        t.checks);
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
@@ -265,7 +278,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     jacobian_ = newton_jacobian{};
     if (start) jacobian_.J = coarser->jacobian_.J;
     double previous_change = 0.0;
-    std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below)
+    std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below), margins dropped
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
     int switched_at = 0;                      // the step that switched it on (0: none)
     // The Gauss-Jacobi rules of this solve (n and 4 n nodes, 8(v) and 8(w)): built once, read by every step's weighted
@@ -351,6 +364,9 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         if (!(std::isfinite(value_change) && std::isfinite(end_change)))
             throw numerical_error(coupling_at_load(Q, f_) + "the alternation gives a non-finite value at step " +
                                   std::to_string(k));
+        // The values' rounding floor over this step (coupling_value_floor): changes within it need not fall (below).
+        const double value_floor = coupling_value_floor(next->normal.lambda, next->normal.offset, next->s.xi, f_,
+                                                        next->normal.rcond, next->s.rcond);
         summary_.changes.push_back(value_change);
         summary_.end_changes.push_back(end_change);
         summary_.newton_residuals = jacobian_.residuals;
@@ -402,9 +418,10 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             return current_->s;
         }
         // Growing changes after the first steps: the alternation does not contract here (changes
-        // below the tolerance are rounding, which need not fall; only the ends are then unsettled).
-        if (k > 3 && (switched_at == 0 || k > switched_at + 2) && value_change > coupling_value_tolerance &&
-            value_change > previous_change &&
+        // below the tolerance or the rounding floor are rounding, which need not fall; only the ends are then
+        // unsettled).
+        if (k > 3 && (switched_at == 0 || k > switched_at + 2) &&
+            value_change > std::max(coupling_value_tolerance, value_floor) && value_change > previous_change &&
             previous_change > summary_.changes[k - 3]) {
             if (lagging) throw *lagging;
             std::ostringstream msg;

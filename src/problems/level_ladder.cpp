@@ -14,6 +14,7 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/quadrature.hpp"
 #include "roughroll/problems/contact_internals.hpp"
+#include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 
 namespace roughroll {
@@ -140,6 +141,43 @@ std::string at_least(double x) {
     return significant(std::floor(x * (1.0 - 1e-12) / unit) * unit, 3);
 }
 
+// docs/formulation.md 8(q), "A failure the levels settle": a reported point at full coupling refused on the checks
+// (3.3)-(3.4) at rungs n1 < n2 alike. A margin m of the checks converges with n at order at least 1/2 (the slowest
+// seen: the square-root residual of the entry condition next to a zone end, 8(r)), so m(n) = m* + C n^-p, p >= 1/2, and
+// |m(n2) - m*| <= |m(n2) - m(n1)| / ((n2/n1)^(1/2) - 1). Where m(n2) plus that bound and the margin's rounding floor is
+// still below zero (and m(n1) below zero too), the limit m* is: no n answers the point on these zones, and the climb
+// stops. A margin that tends to zero at order p >= 1/2 (the chance sign of 8(r)) gives a bound of at least |m(n2)|:
+// never settled. The refusal's line, or none.
+std::optional<std::string> settled_failure(int n1, const traction_checks& a, int n2, const traction_checks& b, double Q,
+                                           double f) {
+    const double root = std::sqrt(static_cast<double>(n2) / n1) - 1.0;
+    struct margin {
+        const char* name;
+        double coarse, fine, rounding;
+    };
+    const margin margins[] = {{"stick", a.stick_margin, b.stick_margin, std::max(a.stick_rounding, b.stick_rounding)},
+                              {"slip", a.slip_margin, b.slip_margin, std::max(a.slip_rounding, b.slip_rounding)},
+                              {"p", a.pressure_margin, b.pressure_margin, 0.0}};
+    for (const margin& m : margins) {
+        if (!(m.coarse < 0.0 && m.fine < 0.0 && root > 0.0)) continue;
+        const double bound = std::fabs(m.fine - m.coarse) / root + m.rounding;
+        if (!(m.fine + bound < 0.0)) continue;
+        const bool pressure = m.name[0] == 'p';
+        return "full coupling at Q/f = " + shortest(Q / f) + ": the coupled " +
+               (pressure ? std::string("pressure turns negative") : std::string("zones fail the checks (3.3)-(3.4)")) +
+               " at n = " + std::to_string(n1) + " and " + std::to_string(n2) + " alike (" + m.name + " margin " +
+               significant(m.coarse, 3) + ", " + significant(m.fine, 3) +
+               ": below zero at every n, docs/formulation.md " + "8(q)), so no n answers it: " +
+               (pressure ? std::string("the coupling term beta_d p1 outweighs the pressure at this friction (8(e)); "
+                                       "coupling = \"johnson\" answers the load without that term")
+                         : std::string("the zone structure changes under the coupling at this load, which the "
+                                       "alternation from Johnson's zones does not follow (8(e)); coupling = "
+                                       "\"johnson\" answers the load, and loads further from that change may answer "
+                                       "at full coupling"));
+    }
+    return std::nullopt;
+}
+
 error_estimate scaled_changes(const level_changes& c, double factor) {
     error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
     e.c0_second_zone = c.c0_second_zone;
@@ -250,9 +288,15 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     bool rounding_limit = false;  // the last rung tried met the ends' rounding limit, which grows with n: no rung above
     int last_n = rungs_.back();   // the last rung tried
     std::vector<bool> skip(rungs_.size(), false);
+    struct failed_rung {
+        int n;
+        traction_checks checks;
+    };
+    std::optional<failed_rung> failed;  // the rung before, where its point failed the checks at full coupling
     for (std::size_t i = from; i < rungs_.size() && beyond_all.empty() && !rounding_limit; ++i) {
         const int n = rungs_[i];
         if (skip[i]) continue;
+        const std::optional<failed_rung> failed_before = std::exchange(failed, std::nullopt);
         advised_last = false;
         last_n = n;
         try {
@@ -331,6 +375,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
         } catch (const beyond_method_error&) {  // no rung can: its own line says what to change
             throw;
+        } catch (const failed_checks_error& e) {  // as resolution_error, unless two rungs settle it (8(q))
+            last_reason = one_line(e.what());
+            advised_last = true;
+            if (Q && failed_before)
+                if (std::optional<std::string> why =
+                        settled_failure(failed_before->n, failed_before->checks, n, e.checks(), *Q, at(n).friction()))
+                    throw beyond_method_error(*why);
+            failed = failed_rung{n, e.checks()};
         } catch (const rounding_limit_error& e) {  // its line says what to change; a larger n rounds worse
             last_reason = one_line(e.what());
             advised_last = rounding_limit = true;

@@ -22,8 +22,10 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "roughroll/base/error.hpp"
 #include "roughroll/model/kernel.hpp"
 #include "roughroll/numerics/collocation.hpp"
 #include "roughroll/numerics/damped_newton.hpp"
@@ -31,6 +33,7 @@
 #include "roughroll/problems/coupling_summary.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 #include "roughroll/problems/normal_problem.hpp"
+#include "roughroll/problems/tangential_solution.hpp"
 #include "roughroll/problems/tangential_solver.hpp"
 
 namespace roughroll {
@@ -42,6 +45,30 @@ namespace roughroll {
 constexpr double coupling_value_tolerance = 1e-12;
 constexpr double coupling_end_tolerance = 10.0 * zone_end_resolution;
 constexpr int coupling_max_iterations = 40;
+
+// The rounding floor of the values' change over one step (docs/formulation.md 8(e), "Growth within the rounding
+// floor"): lambda and e are read off the normal solve, xi off the tangential one, each a dense LU solve whose forward
+// error is within eps |x| / rcond (rcond of its factor, about 1/kappa; normal_solution.hpp's p_rounding), x of size
+// at most `scale` = max(|lambda|, |e|, |xi| + f max(1, |lambda|)) (xi's system cancels terms of size f G, as
+// rounding_floors' xi). A change is the difference of two such solves: 2 eps scale / rcond, the worse rcond of the
+// two systems. Within it a change is rounding, whose size need not fall from step to step, so the test for growing
+// changes reads only changes above it (beta_d = 0.7, f = 0.3, Q/f = 0.5 at n = 256: rcond 1.2e-6, floor 3.5e-10,
+// changes 1e-12, 2.5e-11, 2.6e-11 while the ends still contract by 0.58). 0 where no rcond is known.
+double coupling_value_floor(double lambda, double offset, double xi, double f, double normal_rcond,
+                            double tangential_rcond);
+
+// A reported point whose coupled zones fail the checks (3.3)-(3.4) (full_coupling::solve): the refusal, with the
+// margins, which the ladder of levels compares between two rungs (docs/formulation.md 8(q), "A failure the levels
+// settle").
+class failed_checks_error : public resolution_error {
+public:
+    failed_checks_error(const std::string& what, const traction_checks& checks)
+        : resolution_error(what), checks_(checks) {}
+    const traction_checks& checks() const { return checks_; }
+
+private:
+    traction_checks checks_;
+};
 
 // The alternation's stop for one group of its numbers (lambda, e, xi; or the zone ends), docs/formulation.md 8(e),
 // "The stop from the contraction": `changes` the group's largest change per step, from the first step; `own_from` the
