@@ -83,5 +83,35 @@ TEST(ZoneSearch, AScanWithoutClusteredStartsDoesNotEnterThePassWhereNoStartCarri
     EXPECT_GT(near_edge, 0);
 }
 
+// Every start's root judged by one rule (first_holding, docs/formulation.md 7(k)): a root whose checks fail no longer
+// ends the search where a later start gives one whose checks hold. Zones [s, c] carrying f (1 - (c - s)), entry
+// condition E(s) = -(s + 0.9) (s - 0.2): the zone from the leading edge has E(-1) = -0.12 <= 0 (7(b)'s answer) but fails
+// the (made-up) checks, which hold on zones starting above -0.95; the scan's first bracket holds the root s = -0.9,
+// c = s + 1/3. Before session 26 the zone from the edge answered with its failed checks (start -1).
+TEST(ZoneSearch, ARootFailingItsChecksDoesNotEndTheSearch) {
+    stick_zone_operator op = without_starts();
+    const auto entry = [](double s) { return -(s + 0.9) * (s - 0.2); };
+    op.solve = [entry](double s, double c) { return zone_solution(f, s, c, 0.0, f * (1.0 - (c - s)), {entry(s)}); };
+    op.empty_load = [](double) { return f; };  // no stick zone: the slip zones carry f > |Q|
+    op.check = [](const tangential_solution& t) {
+        const bool holds = t.start() > -0.95;
+        return traction_checks{1.0, holds ? 1.0 : -1.0, 1.0, 0.0, 0.0, true, holds, true};
+    };
+    op.method.scan_to_least_point = false;
+    op.method.every_bracket = false;
+    op.method.edge = edge_zone::needed;
+    const std::optional<tangential_solution> s = zone_solver(op).find(Q);
+    ASSERT_TRUE(s);
+    EXPECT_TRUE(s->checks.hold());
+    EXPECT_NEAR(s->start(), -0.9, 1e-9);
+    EXPECT_NEAR(s->c0(), -0.9 + 1.0 / 3.0, 1e-9);
+    // Where no start gives a root whose checks hold (they hold nowhere), the first root stands: the edge's.
+    op.check = [](const tangential_solution&) { return traction_checks{1.0, -1.0, 1.0, 0.0, 0.0, true, false, true}; };
+    const std::optional<tangential_solution> failing = zone_solver(op).find(Q);
+    ASSERT_TRUE(failing);
+    EXPECT_FALSE(failing->checks.hold());
+    EXPECT_EQ(failing->start(), -1.0);
+}
+
 }  // namespace
 }  // namespace roughroll

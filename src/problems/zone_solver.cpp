@@ -98,13 +98,11 @@ tangential_solution zone_in_bracket(const stick_zone_operator& op, const zone_en
 }
 
 // A search's |Q| solution as the point at Q: general where its stick zone starts inside the contact, the mirror
-// for Q < 0 (apply_load_sign, `what` naming the search), its checks (3.3)-(3.4) by `check` (empty: the search
-// made them, in the |Q| frame, whose checks are Q's).
-tangential_solution searched_point(tangential_solution s, double Q, const char* what,
-                                   const std::function<traction_checks(const tangential_solution&)>& check) {
+// for Q < 0 (apply_load_sign, `what` naming the search). Its checks (3.3)-(3.4), made in the |Q| frame, are Q's: the
+// mirror changes the signs of p1 and v together.
+tangential_solution searched_point(tangential_solution s, double Q, const char* what) {
     s.layout.route = s.start() > -1.0 ? zone_route::general : zone_route::single;
     apply_load_sign(s, Q, what);
-    if (check) s.checks = check(s);
     return s;
 }
 
@@ -123,17 +121,10 @@ zone_newton_from newton_at(const stick_zone_operator& op, double magnitude, roun
     };
 }
 
-// The search's |Q| zone, whether its checks are made (the scan of every bracket makes them) and whether it is
-// Newton's from the guess (which may be another zone failing the checks: then searched again without).
-struct found {
-    tangential_solution zone;
-    bool checked, from_guess;
-};
-
-// The zone of the first of `trials`' brackets that answers (zone_search_method::every_bracket): each bracket a start
-// of the search, its zone offered to `roots` with its checks made (first_holding, zone_start.hpp), the answer the first
-// whose checks hold.
-std::optional<found> bracketed(const stick_zone_operator& op, const zone_end& end_of,
+// The zone of the first of `trials`' brackets that answers: each bracket a start of the search, its zone offered to
+// `roots` with its checks made (first_holding, zone_start.hpp); true where one answers, or where the scan to the first
+// bracket (not zone_search_method::every_bracket) solved its one bracket, which ends the search either way.
+bool bracketed(const stick_zone_operator& op, const zone_end& end_of,
                                const std::vector<zone_trial>& trials, double magnitude,
                                first_holding<tangential_solution>& roots, rounding_limits& met) {
     const bool every = op.method.every_bracket;
@@ -153,18 +144,19 @@ std::optional<found> bracketed(const stick_zone_operator& op, const zone_end& en
             continue;
         }
         met.note(here);
-        // The scan to the first bracket has this one only: its zone answers, checked by the caller.
-        if (!every) return found{*s, false, false};
         s->checks = op.check(*s);
-        if (roots.offer(*s)) return found{*s, true, false};
+        if (roots.offer(*std::move(s)) || !every) return true;  // the scan to the first bracket has this one only
     }
-    return std::nullopt;
+    return false;
 }
 
 // The general search at |Q| = magnitude; single_end: the paper's zone's c0 at this load, when it was solved
 // (saves one search). Empty where the scan ends on no bracket: no zone of the structure carries |Q|, or none is
-// found where a Newton of the search stopped at the rounding limit (noted in `met`).
-std::optional<found> general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
+// found where a Newton of the search stopped at the rounding limit (noted in `met`). Every start (the zone from the
+// leading edge, the near-sliding model, the coarser level's zone, the brackets of the scan and below it) gives a root
+// with its checks made, judged by one rule (first_holding, zone_start.hpp, docs/formulation.md 7(k)): the first whose
+// checks hold answers, else the first found (the caller refuses it or reports it with its failed checks).
+std::optional<tangential_solution> general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
                                     std::optional<double> single_end, rounding_limits& met) {
     const double f = op.f;
     const zone_search_method& method = op.method;
@@ -192,11 +184,16 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
             throw numerical_error(msg.str());
         }
     }
+    first_holding<tangential_solution> roots;
+    const auto answers = [&](tangential_solution s) {
+        s.checks = op.check(s);
+        return roots.offer(std::move(s));
+    };
     double at_edge_entry = std::numeric_limits<double>::quiet_NaN();  // unknown: the scan decides
     if (edge_end) {
         tangential_solution at_edge = op.solve(-1.0, *edge_end);
         at_edge_entry = op.entry(at_edge);
-        if (at_edge_entry <= 0.0) return found{at_edge, false, false};
+        if (at_edge_entry <= 0.0 && answers(std::move(at_edge))) return std::move(roots).result();
     }
     // r*, where G is least: the stick zone straddles it and collapses onto it at gross sliding (7(d)).
     std::optional<double> point;
@@ -207,11 +204,13 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     // Near gross sliding: from the operator's model zone at r*, before the coarse level's guess,
     // which rounding makes no better.
     if (op.near_sliding && f - magnitude <= near_sliding * f)
-        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude, met)))
-            return found{*s, false, false};
-    // Newton from the coarse level's zone when extrapolating.
+        if (auto s = op.near_sliding(magnitude, least_point(), newton_at(op, magnitude, met)); s && answers(*s))
+            return std::move(roots).result();
+    // Newton from the coarse level's zone when extrapolating. It may find another zone that solves both conditions but
+    // not the inequalities (seen near s = 0.97 while it wandered): then the scan goes on.
     if (guess && guess->start > -1.0)
-        if (auto s = newton_at(op, magnitude, met)(guess->start, guess->c0)) return found{*s, false, true};
+        if (auto s = newton_at(op, magnitude, met)(guess->start, guess->c0); s && answers(*s))
+            return std::move(roots).result();
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
     // (7(e), zone_end above), the zone from the leading edge (where the structure has one) first.
     std::vector<double> starts;
@@ -229,8 +228,7 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
     std::vector<zone_trial> opening;
     if (method.edge != edge_zone::absent) opening.push_back({-1.0, edge_end.value_or(-1.0), at_edge_entry});
     std::vector<zone_trial> trials = scan_starts(op, end_of, opening, starts, !method.every_bracket);
-    first_holding<tangential_solution> roots;
-    if (auto s = bracketed(op, end_of, trials, magnitude, roots, met)) return *s;
+    if (bracketed(op, end_of, trials, magnitude, roots, met)) return std::move(roots).result();
     // No start carrying |Q| opens the pass for the clustered scan alone (its first start 4.8e-3 off the edge, the
     // blended zones' 8(g)), as before e51a784: a scan up to r* = -1 has no first start to read.
     const bool none_carries =
@@ -252,17 +250,15 @@ std::optional<found> general_search(const stick_zone_operator& op, double magnit
             const std::vector<zone_trial> at = scan_starts(op, end_of, {}, {-1.0 + gap}, false);
             if (at.empty()) continue;
             if (above)
-                if (auto s = bracketed(op, end_of, {at.front(), *above}, magnitude, roots, met)) return *s;
+                if (bracketed(op, end_of, {at.front(), *above}, magnitude, roots, met)) return std::move(roots).result();
             above = at.front();
         }
     }
-    if (std::optional<tangential_solution> first = std::move(roots).result())
-        return found{*std::move(first), true, false};  // the caller refuses it: its checks fail
-    // Where the scan ends on no bracket, no zone of this structure carries the load (not a numerical
-    // fault): zones = "auto" answers with the paper's zone and its failed checks where that zone exists
-    // (contact::zones_for), dissimilar_zones::solve tries its other structure, a curve refuses the row
-    // (docs/robustness.md).
-    return std::nullopt;
+    // A root whose checks fail, for the caller to refuse. Where the scan ends on no bracket, no zone of this structure
+    // carries the load (not a numerical fault): zones = "auto" answers with the paper's zone and its failed checks
+    // where that zone exists (contact::zones_for), dissimilar_zones::solve tries its other structure, a curve refuses
+    // the row (docs/robustness.md).
+    return std::move(roots).result();
 }
 }  // namespace
 
@@ -287,21 +283,14 @@ std::optional<tangential_solution> zone_solver::find(double Q, bool force_genera
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;
     const std::optional<double> single_end = single ? std::optional<double>(single->c0()) : std::nullopt;
     check_load_resolvable(magnitude, op_.f);
-    if (magnitude == op_.f) return searched_point(op_.gross_sliding(), Q, op_.method.name, op_.check);
-    const auto search = [&](std::optional<zone_guess> g) {
-        std::optional<found> z = general_search(op_, magnitude, g, single_end, met);
-        // The checks the scan made in the |Q| frame are Q's: the mirror changes the signs of p1 and v together.
-        if (z)
-            z->zone = searched_point(std::move(z->zone), Q, op_.method.name,
-                                     z->checked ? decltype(op_.check){} : op_.check);
-        return z;
-    };
-    std::optional<found> z = search(guess);
-    // Newton from a guess may find another zone that solves both conditions but not the
-    // inequalities (seen near s = 0.97 while it wandered): then search without the guess.
-    if (z && z->from_guess && !z->zone.checks.hold()) z = search(std::nullopt);
-    if (!z) return std::nullopt;
-    return std::move(z->zone);
+    if (magnitude == op_.f) {
+        tangential_solution s = searched_point(op_.gross_sliding(), Q, op_.method.name);
+        s.checks = op_.check(s);
+        return s;
+    }
+    std::optional<tangential_solution> s = general_search(op_, magnitude, guess, single_end, met);
+    if (s) s = searched_point(*std::move(s), Q, op_.method.name);
+    return s;
 }
 
 tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
