@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -285,4 +286,47 @@ TEST(LadderRefusals, RoundingLimitStopsTheClimb) {
     EXPECT_TRUE(ends_with(limit.line,
                           "(at n = 128: the zone ends are not resolved at this n: give a smaller n)"))
         << limit.line;
+}
+
+// docs/formulation.md 8(q), "A failure the levels settle", on made-up margins (session 26 review R1-R3): three
+// consecutive rungs of one structure whose margin stays below zero by more than the full-coupling rule's bound of its
+// changes settle; two rungs, a margin that tends to zero, changes that stall, or two structures do not.
+namespace {
+failed_rung failing(int n, double stick, std::size_t stick_zones = 1, double pressure = 0.1) {
+    traction_checks c{};
+    c.pressure_margin = pressure;
+    c.stick_margin = stick;
+    c.slip_margin = 1e-8;
+    c.stick_rounding = 1e-12;
+    c.pressure_holds = pressure >= 0.0;
+    c.stick_holds = stick >= 0.0;
+    c.slip_holds = true;
+    return {n, c, stick_zones, false};
+}
+std::optional<std::string> settles(double a, double b, double c, std::size_t zones_of_last = 1) {
+    return settled_failure({failing(128, a), failing(256, b), failing(512, c, zones_of_last)}, -0.0038, 0.05);
+}
+}  // namespace
+
+TEST(LadderRefusals, SettledFailureNeedsThreeRungsOfOneStructure) {
+    // The braked pair's -0.000921 at every rung, with changes of a few 1e-9 either way: settled.
+    const std::optional<std::string> line = settles(-9.21e-4, -9.21e-4 + 2e-9, -9.21e-4 + 3e-9);
+    ASSERT_TRUE(line.has_value());
+    EXPECT_NE(line->find("at n = 128, 256 and 512 alike (stick margin"), std::string::npos) << *line;
+    EXPECT_NE(line->find("coupling = \"johnson\" answers the load"), std::string::npos) << *line;
+    EXPECT_EQ(line->find("::"), std::string::npos) << *line;
+    EXPECT_TRUE(settles(-9.21e-4, -9.21e-4, -9.21e-4).has_value());  // no change at all: the floor alone
+    // A margin halving towards zero (order 1): its changes' bound reaches past zero.
+    EXPECT_FALSE(settles(-2e-4, -1e-4, -0.5e-4).has_value());
+    // The zone ends' erratic sequence (8(q) "A fall faster than the ends' order") read as a margin about zero: changes
+    // of one size stall (no bound), or the last rung holds.
+    EXPECT_FALSE(settles(-8.0e-7, -6.8e-7, -5.6e-7).has_value());
+    EXPECT_FALSE(settles(-8.0e-7, -6.8e-7, 9.0e-7).has_value());
+    // Three rungs of two structures: their margins' differences are no convergence.
+    EXPECT_FALSE(settles(-9.21e-4, -9.21e-4, -9.21e-4, 2).has_value());
+    // The pressure's margin has no rounding floor; the same rule.
+    const std::optional<std::string> open = settled_failure(
+        {failing(128, 1e-3, 1, -0.2), failing(256, 1e-3, 1, -0.2), failing(512, 1e-3, 1, -0.2)}, -0.0038, 0.05);
+    ASSERT_TRUE(open.has_value());
+    EXPECT_NE(open->find("pressure turns negative"), std::string::npos) << *open;
 }

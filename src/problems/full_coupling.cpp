@@ -132,14 +132,14 @@ failed_checks_error failed_checks(const tangential_solution& t, double Q, double
                 "the pressure at this friction, so the contact would open: the load is beyond the "
                 "coupled model (docs/formulation.md 8(e)); coupling = \"johnson\" answers it without "
                 "that term, an approximation of order beta_d f here",
-            t.checks);
+            t);
     return failed_checks_error(
         coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: " + margins_text(t.checks) +
             "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
             "the alternation does not follow, or the discrete zones at this n miss the checks next "
             "to a zone end (8(r)); a larger n (--n, or none: the ladder's) may answer it, "
             "coupling = \"johnson\" answers the load",
-        t.checks);
+        t);
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).

@@ -141,33 +141,48 @@ std::string at_least(double x) {
     return significant(std::floor(x * (1.0 - 1e-12) / unit) * unit, 3);
 }
 
-// docs/formulation.md 8(q), "A failure the levels settle": a reported point at full coupling refused on the checks
-// (3.3)-(3.4) at rungs n1 < n2 alike. A margin m of the checks converges with n at order at least 1/2 (the slowest
-// seen: the square-root residual of the entry condition next to a zone end, 8(r)), so m(n) = m* + C n^-p, p >= 1/2, and
-// |m(n2) - m*| <= |m(n2) - m(n1)| / ((n2/n1)^(1/2) - 1). Where m(n2) plus that bound and the margin's rounding floor is
-// still below zero (and m(n1) below zero too), the limit m* is: no n answers the point on these zones, and the climb
-// stops. A margin that tends to zero at order p >= 1/2 (the chance sign of 8(r)) gives a bound of at least |m(n2)|:
-// never settled. The refusal's line, or none.
-std::optional<std::string> settled_failure(int n1, const traction_checks& a, int n2, const traction_checks& b, double Q,
-                                           double f) {
-    const double root = std::sqrt(static_cast<double>(n2) / n1) - 1.0;
+error_estimate scaled_changes(const level_changes& c, double factor) {
+    error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
+    e.c0_second_zone = c.c0_second_zone;
+    e.start_second_zone = c.start_second_zone;
+    return e;
+}
+
+}  // namespace
+
+std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& r, double Q, double f) {
+    // The margins' convergence is the zone ends' (the checks fail next to them, 8(r)): erratic at order 1, so one change
+    // bounds nothing (8(q) "A fall faster than the ends' order"); three rungs take the estimates' own rule at full
+    // coupling, of the three-levels kind (no contraction read), on the same structure only.
+    for (const failed_rung& x : r)
+        if (x.stick_zones != r[0].stick_zones || x.opposite != r[0].opposite) return std::nullopt;
     struct margin {
         const char* name;
-        double coarse, fine, rounding;
+        double traction_checks::*value;
+        double traction_checks::*rounding;  // null: none (the pressure's)
     };
-    const margin margins[] = {{"stick", a.stick_margin, b.stick_margin, std::max(a.stick_rounding, b.stick_rounding)},
-                              {"slip", a.slip_margin, b.slip_margin, std::max(a.slip_rounding, b.slip_rounding)},
-                              {"p", a.pressure_margin, b.pressure_margin, 0.0}};
+    const margin margins[] = {{"stick", &traction_checks::stick_margin, &traction_checks::stick_rounding},
+                              {"slip", &traction_checks::slip_margin, &traction_checks::slip_rounding},
+                              {"p", &traction_checks::pressure_margin, nullptr}};
     for (const margin& m : margins) {
-        if (!(m.coarse < 0.0 && m.fine < 0.0 && root > 0.0)) continue;
-        const double bound = std::fabs(m.fine - m.coarse) / root + m.rounding;
-        if (!(m.fine + bound < 0.0)) continue;
-        const bool pressure = m.name[0] == 'p';
+        double rounding = 0.0;
+        bool below = true;
+        for (const failed_rung& x : r) {
+            below = below && x.checks.*m.value < 0.0;
+            if (m.rounding) rounding = std::max(rounding, x.checks.*m.rounding);
+        }
+        if (!below) continue;
+        const error_bound e =
+            coupled_change_bound({r[0].checks.*m.value, r[1].checks.*m.value, r[2].checks.*m.value}, rounding);
+        if (!e.resolved || !(r[2].checks.*m.value + e.value < 0.0)) continue;
+        const bool pressure = m.rounding == nullptr;
         return "full coupling at Q/f = " + shortest(Q / f) + ": the coupled " +
                (pressure ? std::string("pressure turns negative") : std::string("zones fail the checks (3.3)-(3.4)")) +
-               " at n = " + std::to_string(n1) + " and " + std::to_string(n2) + " alike (" + m.name + " margin " +
-               significant(m.coarse, 3) + ", " + significant(m.fine, 3) +
-               ": below zero at every n, docs/formulation.md " + "8(q)), so no n answers it: " +
+               " at n = " + std::to_string(r[0].n) + ", " + std::to_string(r[1].n) + " and " + std::to_string(r[2].n) +
+               " alike (" + m.name + " margin " + significant(r[0].checks.*m.value, 3) + ", " +
+               significant(r[1].checks.*m.value, 3) + ", " + significant(r[2].checks.*m.value, 3) +
+               ": below zero by more than their changes' bound, docs/formulation.md 8(q)), so no larger n answers "
+               "it: " +
                (pressure ? std::string("the coupling term beta_d p1 outweighs the pressure at this friction (8(e)); "
                                        "coupling = \"johnson\" answers the load without that term")
                          : std::string("the zone structure changes under the coupling at this load, which the "
@@ -177,15 +192,6 @@ std::optional<std::string> settled_failure(int n1, const traction_checks& a, int
     }
     return std::nullopt;
 }
-
-error_estimate scaled_changes(const level_changes& c, double factor) {
-    error_estimate e{factor * c.lambda, factor * c.c0, factor * c.xi, 0.0, "", false, factor * c.start};
-    e.c0_second_zone = c.c0_second_zone;
-    e.start_second_zone = c.start_second_zone;
-    return e;
-}
-
-}  // namespace
 
 level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, std::size_t i) const {
     // Full coupling (docs/formulation.md 8(q)): each later rung's estimate from rung i's level changes.
@@ -288,15 +294,11 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     bool rounding_limit = false;  // the last rung tried met the ends' rounding limit, which grows with n: no rung above
     int last_n = rungs_.back();   // the last rung tried
     std::vector<bool> skip(rungs_.size(), false);
-    struct failed_rung {
-        int n;
-        traction_checks checks;
-    };
-    std::optional<failed_rung> failed;  // the rung before, where its point failed the checks at full coupling
+    std::vector<failed_rung> failed;  // the rungs before, each in turn, whose points failed the checks at full coupling
     for (std::size_t i = from; i < rungs_.size() && beyond_all.empty() && !rounding_limit; ++i) {
         const int n = rungs_[i];
         if (skip[i]) continue;
-        const std::optional<failed_rung> failed_before = std::exchange(failed, std::nullopt);
+        std::vector<failed_rung> failed_before = std::exchange(failed, {});
         advised_last = false;
         last_n = n;
         try {
@@ -375,14 +377,16 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
         } catch (const beyond_method_error&) {  // no rung can: its own line says what to change
             throw;
-        } catch (const failed_checks_error& e) {  // as resolution_error, unless two rungs settle it (8(q))
+        } catch (const failed_checks_error& e) {  // as resolution_error, unless three rungs settle it (8(q))
             last_reason = one_line(e.what());
             advised_last = true;
-            if (Q && failed_before)
-                if (std::optional<std::string> why =
-                        settled_failure(failed_before->n, failed_before->checks, n, e.checks(), *Q, at(n).friction()))
+            failed_before.push_back({n, e.checks(), e.stick_zones(), e.opposite()});
+            const std::size_t k = failed_before.size();
+            if (Q && k >= 3 && i + 1 < rungs_.size())
+                if (std::optional<std::string> why = settled_failure(
+                        {failed_before[k - 3], failed_before[k - 2], failed_before[k - 1]}, *Q, at(n).friction()))
                     throw beyond_method_error(*why);
-            failed = failed_rung{n, e.checks()};
+            failed = std::move(failed_before);
         } catch (const rounding_limit_error& e) {  // its line says what to change; a larger n rounds worse
             last_reason = one_line(e.what());
             advised_last = rounding_limit = true;

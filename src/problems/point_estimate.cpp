@@ -277,6 +277,8 @@ peak_error peak_floors(std::initializer_list<pressure_peak> peaks, int finest_n)
 }
 }  // namespace
 
+error_bound coupled_change_bound(const three_levels& v, double floor) { return coupled_bound(v, floor, false, 1); }
+
 namespace {
 // Whether the peak's r or p over the three levels v (floor: their floor) is confirmed on level 2n: full coupling on
 // rough rollers, level n the finest, 2n within max_nodes, changes of opposite sign with the last above the floor.

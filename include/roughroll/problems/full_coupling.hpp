@@ -52,22 +52,29 @@ constexpr int coupling_max_iterations = 40;
 // at most `scale` = max(|lambda|, |e|, |xi| + f max(1, |lambda|)) (xi's system cancels terms of size f G, as
 // rounding_floors' xi). A change is the difference of two such solves: 2 eps scale / rcond, the worse rcond of the
 // two systems. Within it a change is rounding, whose size need not fall from step to step, so the test for growing
-// changes reads only changes above it (beta_d = 0.7, f = 0.3, Q/f = 0.5 at n = 256: rcond 1.2e-6, floor 3.5e-10,
-// changes 1e-12, 2.5e-11, 2.6e-11 while the ends still contract by 0.58). 0 where no rcond is known.
+// changes reads only changes above it (beta_d = 0.7, f = 0.3, Q/f = 0.5 at n = 256: rcond 1.15e-6, floor 3.5e-10,
+// changes 2.0e-12, 1.1e-12, 9.7e-13, 1.7e-11, 1.8e-11 while the ends still contract by 0.58). 0 where no rcond is known.
 double coupling_value_floor(double lambda, double offset, double xi, double f, double normal_rcond,
                             double tangential_rcond);
 
 // A reported point whose coupled zones fail the checks (3.3)-(3.4) (full_coupling::solve): the refusal, with the
-// margins, which the ladder of levels compares between two rungs (docs/formulation.md 8(q), "A failure the levels
-// settle").
+// margins and the structure they are of, which the ladder of levels compares over three rungs (docs/formulation.md
+// 8(q), "A failure the levels settle").
 class failed_checks_error : public resolution_error {
 public:
-    failed_checks_error(const std::string& what, const traction_checks& checks)
-        : resolution_error(what), checks_(checks) {}
+    failed_checks_error(const std::string& what, const tangential_solution& t)
+        : resolution_error(what),
+          checks_(t.checks),
+          stick_zones_(t.layout.stick_zones()),
+          opposite_(t.layout.opposite()) {}
     const traction_checks& checks() const { return checks_; }
+    std::size_t stick_zones() const { return stick_zones_; }
+    bool opposite() const { return opposite_; }
 
 private:
     traction_checks checks_;
+    std::size_t stick_zones_;
+    bool opposite_;
 };
 
 // The alternation's stop for one group of its numbers (lambda, e, xi; or the zone ends), docs/formulation.md 8(e),

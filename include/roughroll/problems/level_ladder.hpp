@@ -20,6 +20,8 @@
 // the ones it gives alone (docs/performance.md "The rungs share their levels").
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
@@ -40,6 +42,20 @@ std::vector<int> ladder_rungs(method how);
 // The rungs below the first that a point of the braked three zones at full coupling on smooth rollers may answer at
 // (level_ladder::point; docs/formulation.md 8(q), "Rungs below the first"): default_nodes(how)/4, /2, in order.
 std::vector<int> spectral_rungs(method how);
+
+// A rung whose reported point at full coupling failed the checks (3.3)-(3.4): its n, the margins and the structure
+// they are of (full_coupling.hpp, failed_checks_error).
+struct failed_rung {
+    int n;
+    traction_checks checks;
+    std::size_t stick_zones;
+    bool opposite;
+};
+// docs/formulation.md 8(q), "A failure the levels settle": three consecutive rungs (coarsest first) whose points of one
+// structure fail the checks: a margin below zero at all three whose finest value plus the full-coupling rule's bound of
+// the three (coupled_change_bound: twice the larger change, unresolved where they stall) and its rounding floor is still
+// below zero. The refusal's line (no n answers, what does), or none.
+std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& rungs, double Q, double f);
 
 // How an estimate compares with the tolerance tol, quantity by quantity (docs/performance.md "The
 // ladder chooses n"): a quantity v with estimate e and scale s is within it when

@@ -152,6 +152,10 @@ std::vector<estimated_quantity> zone_ends_table(const rounding_floors& floor, do
 // structure of its Johnson's point, which its alternation keeps).
 level_changes changes_before_point(const estimate_level& quarter, const estimate_level& half, int m, double f,
                                    double strength);
+// The full-coupling rule's bound (coupled_bound: twice the larger change, or their geometric rest; unresolved where the
+// changes stall) of a quantity over three rungs that are no estimate's levels: a checks margin of the reported points
+// (the ladder's settled failure, docs/formulation.md 8(q) "A failure the levels settle").
+error_bound coupled_change_bound(const three_levels& v, double floor);
 // Whether rung m's point, each of its zone ends within `delta` of `half`'s (level m/2's), can have every zone two nodes
 // of level m/4 wide (the three-level rule's test, takes_three_level): the zones of `half` widened by delta at each end
 // inside (-1, 1). Never without the pressure's kinks, which only smooth rollers carry (`smooth`).
