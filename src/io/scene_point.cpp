@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "roughroll/io/scene_point.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
+#include <memory>
 #include <utility>
 
 #include "roughroll/base/error.hpp"
@@ -65,6 +68,53 @@ std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::op
     s.surfaces = roughness_at(*s.physical, w.a);
     return w;
 }
+
+namespace {
+// The relative step of the width's finite difference (docs/formulation.md 2(j) "The width's error"): far above the
+// quantities' noise (zone ends ~1e-9 against changes ~1e-7 at this step), far below the widths' curvature scale.
+constexpr double width_step = 1e-6;
+
+// The width's error in the estimate of a physical scene whose roughness follows the width (docs/formulation.md 2(j)
+// "The width's error"): the levels of the estimate are all solved at level n's width x = a/a_H, while x itself is
+// the root of lambda_n(x) = x^2 and carries lambda_n's error e_lambda as dx = e_lambda / |2x - lambda'(x)|. Each
+// quantity's sensitivity to x is a forward difference at level n, one point at x (1 + width_step), and each
+// estimate gains |dq/dx| dx; P_H/P2 = x^2 itself is off by 2x dx. None where T, A do not depend on the width
+// (smooth rollers, the paper's Hertz width).
+contact::estimate_term width_error(const scene& s, const contact_width& w, const std::function<void()>& checkpoint) {
+    if (!s.physical || smooth(*s.physical) || s.physical->width == width_rule::hertz) return {};
+    // The contact at the moved width, built once: a curve's rows share its normal problem (and a ladder's repeated
+    // estimates of one rung their point).
+    auto held = std::make_shared<std::unique_ptr<contact>>();
+    return [s, w, checkpoint, held](const tangential_solution& t, const normal_solution& p, error_estimate& e) {
+        if (e.Q != 0.0) return;  // a point swept in c0 is not given here (contact::at_stick_end)
+        const double x = w.a / w.a_hertz, step = width_step * x;
+        if (!*held) {
+            *held = std::make_unique<contact>(roughness_at(*s.physical, (x + step) * w.a_hertz), s.friction, s.solver,
+                                              s.materials);
+            (*held)->set_checkpoint(checkpoint);
+        }
+        contact& moved = **held;
+        const tangential_solution m = moved.point(t.Q);
+        const double slope = (moved.normal().lambda - p.lambda) / step - 2.0 * x;  // F'(x), F = lambda_n(x) - x^2
+        const double dx = e.lambda / std::fabs(slope);
+        const double k = dx / step;  // per unit change over the step
+        e.lambda = std::max(e.lambda, 2.0 * x * dx);
+        e.xi += k * std::fabs(m.xi - t.xi);
+        e.c0 += k * std::max(std::fabs(m.c0() - t.c0()), std::fabs(m.end2() - t.end2()));
+        if (e.start != 0.0) e.start += k * std::max(std::fabs(m.start() - t.start()), std::fabs(m.start2() - t.start2()));
+        if (e.peak) {
+            const pressure_peak at = peak_of(p), near = peak_of(moved.normal());
+            e.peak->r += k * std::fabs(near.r - at.r);
+            e.peak->p += k * std::fabs(near.p - at.p);
+        }
+    };
+}
+
+void watch_width(contact& c, const scene& s, const std::optional<contact_width>& w,
+                 const std::function<void()>& checkpoint) {
+    if (w) c.set_estimate_term(width_error(s, *w, checkpoint));
+}
+}  // namespace
 
 std::optional<si_point> si_of(const scene& s, const std::optional<contact_width>& w, const tangential_solution& t) {
     if (!s.physical || !w) return std::nullopt;
@@ -138,6 +188,7 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
     width = settle_width(s, &cache, Q, checkpoint);
     contact c = contact_internals::with_levels(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
     c.set_checkpoint(checkpoint);
+    watch_width(c, s, width, checkpoint);
     return c;
 }
 
@@ -175,6 +226,7 @@ struct scene_rungs {
             c = std::make_unique<contact>(
                 contact_internals::with_levels(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels));
             c->set_checkpoint(checkpoint);
+            watch_width(*c, at, width, checkpoint);
         }
         settled.insert_or_assign(n, std::make_pair(std::move(at), width));
         return c;
@@ -249,6 +301,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
             const std::optional<contact_width> width = settle_width(s);
             contact c(s.surfaces, s.friction, s.solver, s.materials);
             c.set_checkpoint(checkpoint);
+            watch_width(c, s, width, checkpoint);
             rows = sweep ? swept_curve(c, points, before_row, {}, s.solver.n)
                          : creep_curve(c, Qs, before_row, {}, s.solver.n);
             if (width) widths.assign(rows.size(), *width);
@@ -284,6 +337,7 @@ scene_curve curve_of(scene s, const std::optional<std::vector<double>>& loads, i
             const contact_width w = *settle_width(at, &cache, Q, checkpoint);
             contact c(at.surfaces, at.friction, at.solver, at.materials, &cache);
             c.set_checkpoint(checkpoint);
+            watch_width(c, at, w, checkpoint);
             std::vector<curve_point> row = creep_curve(c, {Q}, {}, {}, at.solver.n);
             out.nodes.push_back(row.front().is_refused() ? 0 : at.solver.nodes());
             out.rows.push_back(std::move(row.front()));

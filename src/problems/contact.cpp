@@ -108,7 +108,13 @@ kernel contact::impl::widest_kernel() const {
 
 tangential_solution contact::distribution(const tangential_solution& s) { return impl_->distribution(s); }
 
-std::optional<error_estimate> contact::estimate(const tangential_solution& s) { return impl_->estimate(s); }
+std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
+    std::optional<error_estimate> e = impl_->estimate(s);
+    if (e && impl_->term_) impl_->term_(s, normal(), *e);
+    return e;
+}
+
+void contact::set_estimate_term(estimate_term term) { impl_->term_ = std::move(term); }
 
 contact::swept_point contact::at_stick_end(double c0) { return impl_->at_stick_end(c0); }
 

@@ -58,6 +58,7 @@ struct contact::impl {
 
     std::shared_ptr<level_store> store_;         // a ladder's (level_store.hpp), or none
     std::function<void()> hook_;                 // contact::set_checkpoint's
+    contact::estimate_term term_;                // contact::set_estimate_term's
     std::shared_ptr<point_model> owner_;         // keeps the points' model, chosen once (the store's keeps the store)
     held model_;                                 // that model, called through here alone
     held companion_;                             // method::extrapolated: the coarse level n/2 (product)

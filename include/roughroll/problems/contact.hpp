@@ -113,6 +113,11 @@ public:
     // where they do not converge) or when no three levels fit in [min_nodes, max_nodes] (never
     // for n >= 8).
     std::optional<error_estimate> estimate(const tangential_solution& s);
+    // A term estimate() adds to every estimate it returns, given the point, its pressure and the estimate: a physical
+    // scene's width error, which the levels (all at this contact's width) cannot see (docs/formulation.md 2(j) "The
+    // width's error"; io/scene_point.cpp). None by default.
+    using estimate_term = std::function<void(const tangential_solution&, const normal_solution&, error_estimate&)>;
+    void set_estimate_term(estimate_term term);
 
     // Why no n up to `top` can answer the point at Q within the relative `tolerance` (the ladder's,
     // problems/level_ladder.hpp), decided before any solve: one line saying what to change; empty
