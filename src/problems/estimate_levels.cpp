@@ -247,10 +247,25 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
             point.fails_tolerance(e))
             e.lower_bound = true;
         point.lower_bound = e.lower_bound;
-        e.peak = peak_from_levels(peaks, point, [&]() -> std::optional<pressure_peak> {
-            finer_once();
-            return above_peak;
-        });
+        // At full coupling the position also from the slopes of level n's pressure and its neighbour's (n/2, or 2n
+        // where n is the coarsest), around level n's peak (8(e), "The peak's position from the slopes").
+        double slopes_r = 0.0;
+        if (structure == estimate_structure::full_coupling) {
+            const int next = self == 0 ? 1 : self - 1;
+            const point_model& own_level = levels_[self] ? *levels_[self] : *model_;
+            const point_model& next_level = levels_[next] ? *levels_[next] : *model_;
+            std::vector<double> ends = at[self].layout.stick_ends();
+            for (const double end : at[next].layout.stick_ends()) ends.push_back(end);
+            slopes_r = peak_position_from_slopes(own_level.normal(), own_level.nodes(), next_level.normal(),
+                                                 next_level.nodes(), peaks[self].r, ends, std::max(e.c0, e.start));
+        }
+        e.peak = peak_from_levels(
+            peaks, point,
+            [&]() -> std::optional<pressure_peak> {
+                finer_once();
+                return above_peak;
+            },
+            slopes_r);
     }
     return e;
 }

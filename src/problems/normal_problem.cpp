@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -69,6 +70,22 @@ pressure_peak peak_of(const normal_solution& s) {
     const bool weighted = s.kinks && s.kinks->weighted() && s.rcond > 0.0;
     return {r, p, fall > 0.0 ? h * std::sqrt(rounding / fall) : h,
             weighted ? GSL_DBL_EPSILON * std::fabs(p) / s.rcond : 0.0};
+}
+
+peak_slopes slopes_near(const normal_solution& a, const normal_solution& b, double r, double w, double step) {
+    // Samples every `step` on [r - w, r + w] inside the contact, both ends included.
+    const double from = std::max(r - w, -1.0 + step), to = std::min(r + w, 1.0 - step);
+    const int count = std::max(2, static_cast<int>(std::ceil((to - from) / step)));
+    std::vector<double> x(static_cast<std::size_t>(count) + 1);
+    for (int i = 0; i <= count; ++i) x[i] = from + (to - from) * i / count;
+    const double h = (to - from) / count;
+    const std::vector<double> pa = a.pressure(x), pb = b.pressure(x);
+    peak_slopes out{0.0, std::numeric_limits<double>::infinity()};
+    for (int i = 0; i < count; ++i)
+        out.slope_change = std::max(out.slope_change, std::fabs((pa[i + 1] - pb[i + 1]) - (pa[i] - pb[i])) / h);
+    for (int i = 1; i < count; ++i)
+        out.curvature = std::min(out.curvature, -(pa[i + 1] - 2.0 * pa[i] + pa[i - 1]) / (h * h));
+    return out;
 }
 
 normal_solver::normal_solver(int n, method how) : rule_(n), how_(how), system_(static_cast<std::size_t>(n) + 2) {}

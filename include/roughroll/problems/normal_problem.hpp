@@ -62,6 +62,16 @@ private:
     bool smooth_factors_ = false;  // system_ holds the factors of the matrix without K2
 };
 
+// Two pressures near a peak r of p_a (docs/formulation.md 8(e), "The peak's position from the slopes"): on
+// [r - w, r + w] (inside the contact), sampled at most `step` apart, the largest slope of p_a - p_b (each secant of two
+// neighbouring samples) and the least curvature -p_a'' (each second difference); the position's bound reads both
+// (point_estimate.hpp, peak_position_from_slopes).
+struct peak_slopes {
+    double slope_change;  // max |(p_a - p_b)'|
+    double curvature;     // min -p_a''
+};
+peak_slopes slopes_near(const normal_solution& a, const normal_solution& b, double r, double w, double step);
+
 // The smooth solution of Hertz, lambda = 1, phi = 2/pi, exact for every n.
 normal_solution hertz_solution(int n, method how);
 

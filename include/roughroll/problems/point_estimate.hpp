@@ -184,8 +184,18 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
 // confirms as the other quantities' (8(q) "Changes of opposite sign"), and as theirs, the peak is refused
 // (resolution_error) where level 2n cannot be solved or n/2, n, 2n show no estimate: a ladder's rung then climbs. Not
 // confirmed where point.lower_bound (the estimate is a lower bound already) or 2n > max_nodes (8(q)'s limit).
+// `slopes_r`: at full coupling the position's bound from two levels' pressures (peak_position_from_slopes), the
+// estimate of r where it is the larger (with r's floor); 0 elsewhere.
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point,
-                            const std::function<std::optional<pressure_peak>()>& finer);
+                            const std::function<std::optional<pressure_peak>()>& finer, double slopes_r = 0.0);
+// The peak position's bound at full coupling (docs/formulation.md 8(e), "The peak's position from the slopes"): level
+// n's pressure `level` with its peak at r, and the pressure `other` of the level next to it (n/2, or 2n where n is the
+// coarsest): share times the largest slope of their difference over a node spacing of the coarser level around r, over
+// the least curvature of level n's pressure there (share 1/(rho - 1) where level n is the finer, 1/(1 - 1/rho) where the
+// coarser, rho = 1.3). Where a zone end of `ends` lies in that window, at least `ends_estimate` (the ends' own estimate:
+// the peak may sit at the end's kink); 0 (no bound) where the pressure is not concave on it and no end lies there.
+double peak_position_from_slopes(const normal_solution& level, int level_n, const normal_solution& other, int other_n,
+                                 double r, const std::vector<double>& ends, double ends_estimate);
 // Whether peak_from_levels asks `finer` (level 2n) of these peaks at this point, point.lower_bound aside.
 bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const estimate_point& point);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
