@@ -480,3 +480,43 @@ TEST(HonestEstimates, JohnsonFiveZonesAnsweredAtTheirRoundingFloor) {
     EXPECT_LE(std::fabs(a.end2() - b.end2()), ea.c0 + eb.c0);
     EXPECT_LE(std::fabs(a.xi - b.xi), ea.xi + eb.xi);
 }
+
+// Session 26's audit F1 (docs/performance.md "A fall faster than the order at a zone end"): the rough pair at Johnson's
+// level driven at Q/f = 0.9, n = 256 (the default answer): the stick start changes 1.89e-6, then 1.1e-9 over n = 64,
+// 128, 256 (ratio 1700: level 128 lies 1.5e-9 from the limit by chance) and the rule read the last change as level
+// 256's error, +- 1.45e-9 against 2.63e-9 from n = 768 and 1000 (which agree to 1.8e-11; stored from `point
+// data/aluminium-on-steel-rough.toml --Q-over-f 0.9 --n N --json`, session 26). A zone end's estimate is now at least
+// nine times the least envelope its change before shows, 9 |d1|/(2^p + 4^p): 6.3e-8. Fails on the rule before. Then the
+// rule on made-up levels: ratios 1700 and 60 on c0 of Johnson's level (not xi, an integral, nor the paper's problem, which
+// confirms on level 2n).
+TEST(HonestEstimates, ZoneEndFallingFasterThanItsOrderIsChance) {
+    const double start_768 = -0.9626483378330352, start_1000 = -0.9626483378514137;
+    scene sc = read_scene(ROUGHROLL_DATA "/aluminium-on-steel-rough.toml");
+    override_solver(sc, 256, std::nullopt);
+    const scene_point at = solve_point(sc, 0.9 * sc.friction);
+    ASSERT_TRUE(at.estimate.has_value());
+    const double distance =
+        std::max(std::fabs(at.solution.start() - start_768), std::fabs(at.solution.start() - start_1000));
+    std::printf("start %.16f, distance from n = 768/1000 %.3g, estimate %.3g\n", at.solution.start(), distance,
+                at.estimate->start);
+    ASSERT_GT(distance, 1e-9);  // the point the audit measured
+    EXPECT_GE(at.estimate->start, distance + std::fabs(start_768 - start_1000));
+
+    const auto level = [](double v) {
+        tangential_solution t{};
+        t.xi = v;
+        t.layout = one_stick_zone(-1.0, v);  // c0 = v
+        return estimate_level{t, 1.0};
+    };
+    const std::vector<estimated_quantity> table{
+        {"xi", value_xi, 0.0, 0.0, false, true, &error_estimate::xi},
+        {"c0", value_c0, 0.0, 0.0, false, true, &error_estimate::c0, true}};
+    const auto none = []() -> std::optional<estimate_level> { return std::nullopt; };
+    const estimate_point p{method::product, 64, 2, estimate_structure::dissimilar, false, true, "Q", 0.25};
+    const error_estimate e = estimate_from_levels(table, {level(0.0), level(0.5), level(0.5 + 0.5 / 1700)}, none, p);
+    EXPECT_DOUBLE_EQ(e.c0, 9.0 * 0.5 / (16.0 + 256.0));
+    EXPECT_EQ(e.xi, (0.5 + 0.5 / 1700) - 0.5);  // the rule's |d2| (asymptotic), no floor
+    // Review R15: the floor at every ratio (a max), not only beyond 2^(p+2) = 64: at ratio 60 it is above |d2| = 0.5/60.
+    const error_estimate f = estimate_from_levels(table, {level(0.0), level(0.5), level(0.5 + 0.5 / 60)}, none, p);
+    EXPECT_DOUBLE_EQ(f.c0, 9.0 * 0.5 / (16.0 + 256.0));
+}

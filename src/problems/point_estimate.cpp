@@ -163,6 +163,16 @@ constexpr double coupled_contracting_share = 3.0;
 constexpr int coupled_end_order = 1;
 int coupled_order(const estimated_quantity& q, int order) { return q.newton_end ? coupled_end_order : order; }
 
+// A zone end's error at level n where its changes fell faster than the method's order allows (docs/performance.md "A
+// fall faster than the order at a zone end"): each level places the end at an erratic fraction of its envelope,
+// e_k = sigma_k C k^-p with |sigma_k| <= 1 (8(q) "A fall faster than the ends' order", at order p), so
+// |d1| = |e_{n/2} - e_{n/4}| <= C n^-p (2^p + 4^p): the change d1 shows the envelope at level n at least
+// |d1|/(2^p + 4^p). A small d2 is two errors that agree and shows nothing. Nine times that least envelope, as 8(q)'s
+// three-level rule takes at order 1 (there 3 |d1|/2 = 9 |d1|/(2 + 4)).
+double end_chance_floor(const three_levels& v, int order) {
+    return 9.0 * std::fabs(v.middle - v.coarsest) / (std::ldexp(1.0, order) + std::ldexp(1.0, 2 * order));
+}
+
 // Folds quantity q's `value` into its member of e (the larger of the quantities folded into one member; a NaN, folded
 // or already there, stays: std::max(0, NaN) is 0, an estimate every tolerance accepts, session 17 review L1) and, where
 // it is the larger, records whose zone end the member's value is.
@@ -498,6 +508,14 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
         const bool confirm = p.structure == estimate_structure::paper && b.resolved &&
                              (always_confirm || !b.asymptotic || (std::fabs(b.ratio) > too_fast && !rounding));
         const bool chance = !coupled && !b.resolved && p.checks_hold && q.second_chance;
+        // A zone end of the structures that confirm nothing on level 2n (Johnson's level): a fall faster than the
+        // method's order is a middle level near the limit by chance (as the paper's problem's too fast ratio, which
+        // confirms), so the last change tells nothing of level n's error; the estimate is at least nine times the least
+        // envelope the change before shows (end_chance_floor; docs/performance.md "A fall faster than the order at a zone
+        // end"). A max over every ratio (below about 30 the floor is under |d2| and changes nothing), so that a smaller
+        // last change never gives a smaller estimate.
+        if (!coupled && !confirm && q.newton_end && b.resolved && !rounding)
+            b.value = std::max(b.value, end_chance_floor(v, order) + floor);
         // Full coupling on rough rollers (smooth rollers' changes of opposite sign were measured bounded, 8(q)),
         // changes of opposite sign above the floor: the levels are not yet where twice the larger
         // change bounds what follows (8(q) "Changes of opposite sign": the rough pair braked
