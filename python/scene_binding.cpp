@@ -125,6 +125,7 @@ struct curve_columns {
     std::vector<double> c0_error, xi_error, Q_error;
     std::vector<int> zones;                   // the number of stick and slip zones (formulation section 7)
     std::vector<double> stick_start;          // the start of the stick zone, -1 in the paper's structure
+    std::vector<double> stick_start_error;    // its estimate (the CSV's stick_start_error_estimate)
     std::vector<std::string> zone_path;       // single, general or no-slip (the layout's route); "" when refused
     std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
     std::vector<int> n;                       // each row's n (the ladder's rung; 0 for a refused row)
@@ -168,6 +169,7 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.zones.push_back(
             row.is_refused() ? 0 : static_cast<int>(t.layout.zones.size()));  // five for two stick zones, as the CSV
         out.stick_start.push_back(t.start());
+        out.stick_start_error.push_back(row.estimate ? row.estimate->start : nan);
         out.zone_path.push_back(row.is_refused() ? "" : to_string(t.layout.route));
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         out.n.push_back(c.nodes[i]);
@@ -320,6 +322,7 @@ void bind_scene(py::module_& m) {
                 d["Q_error_estimate"] = array_of(c.Q_error);
                 d["zones"] = py::array_t<int>(static_cast<py::ssize_t>(c.zones.size()), c.zones.data());
                 d["stick_start"] = array_of(c.stick_start);
+                d["stick_start_error_estimate"] = array_of(c.stick_start_error);
                 d["zone_path"] = c.zone_path;  // a NumPy array of str in roughroll.Scene.curve
                 d["n"] = py::array_t<int>(static_cast<py::ssize_t>(c.n.size()), c.n.data());
                 d["status"] = c.status;     // a NumPy array of str in roughroll.Scene.curve

@@ -39,7 +39,7 @@ while IFS=, read -r Q Qf rest; do
         refused=$((refused + 1))
         [ "$state" = refused ] || fail "Q = $Q: refused alone, '$state' on the curve"
         # c0, xi, xi_over_f, checks_hold .. stick_start: empty (never a plausible number).
-        for name in c0 xi xi_over_f checks_hold c0_error_estimate xi_error_estimate zones stick_start zone_path; do
+        for name in c0 xi xi_over_f checks_hold c0_error_estimate xi_error_estimate zones stick_start stick_start_error_estimate zone_path; do
             k=$(column "$name")
             [ -z "$(echo "$row" | cut -d, -f"$k")" ] || fail "Q = $Q refused but $name = $(echo "$row" | cut -d, -f"$k")"
         done

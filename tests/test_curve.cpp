@@ -302,22 +302,25 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
     std::string line;
     std::getline(in, line);
     const std::vector<std::string> header = split(line);
-    ASSERT_EQ(header.size(), 19u);
-    ASSERT_EQ(header[14], "P1_N_per_m");
-    ASSERT_EQ(header[17], "n");  // each row's n (empty: not given to write_curve_csv)
+    ASSERT_EQ(header.size(), 20u);
+    ASSERT_EQ(header[13], "stick_start_error_estimate");  // after stick_start (session 26)
+    ASSERT_EQ(header[15], "P1_N_per_m");
+    ASSERT_EQ(header[18], "n");  // each row's n (empty: not given to write_curve_csv)
     int refused = 0;
     for (std::size_t i = 0; std::getline(in, line); ++i) {
         const std::vector<std::string> r = split(line);
         ASSERT_EQ(r.size(), header.size()) << line;
-        EXPECT_EQ(std::stod(r[14]), loads[i] * 1.0e5);
-        EXPECT_NE(r[16], "");  // Carter's xi1 of the given load
+        EXPECT_EQ(std::stod(r[15]), loads[i] * 1.0e5);
+        EXPECT_NE(r[17], "");  // Carter's xi1 of the given load
         if (r.back() == "refused") {
             ++refused;
-            EXPECT_EQ(r[15], "") << "xi1 of a refused row";
+            EXPECT_EQ(r[16], "") << "xi1 of a refused row";
+            EXPECT_EQ(r[13], "") << "the start's estimate of a refused row";
         } else {
             EXPECT_EQ(
-                r[15],
+                r[16],
                 shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0(), curve[i].solution.xi).xi1));
+            EXPECT_EQ(r[13], curve[i].estimate ? shortest(curve[i].estimate->start) : std::string());
         }
     }
     EXPECT_GE(refused, 1);

@@ -110,5 +110,19 @@ TEST(ZoneLayout, SystemsCountedAgainstTheLayout) {
     EXPECT_EQ(stick_systems(s).size(), 2u);
 }
 
+// The levels of an estimate compare zone ends only on the same zones (docs/formulation.md 7(e) "Unlike zones are not
+// compared"): the same kinds in the same order, whatever the ends; a leading slip zone at one level and none at another,
+// another slip direction, or five zones against three are unlike. (Fails where same_zones reads the count alone.)
+TEST(ZoneLayout, SameZonesComparesKindsNotEnds) {
+    const zone_layout general = one_stick_zone(-0.98, -0.88, zone_route::general);
+    EXPECT_TRUE(same_zones(general, one_stick_zone(-0.97, -0.80, zone_route::general)));
+    EXPECT_FALSE(same_zones(general, one_stick_zone(-1.0, -0.88, zone_route::general)));  // no leading slip zone
+    EXPECT_FALSE(same_zones(general, opposite_zones(-0.98, -0.88)));                      // leading slip against Q
+    EXPECT_FALSE(same_zones(general, one_stick_zone(-0.98, -0.88, zone_route::general, -1)));
+    EXPECT_FALSE(same_zones(five_zones_layout(-0.9, -0.2, 0.1, 0.6, 1), opposite_zones(-0.9, 0.6)));
+    EXPECT_EQ(zones_kinds(general), "slip+, stick, slip+");
+    EXPECT_EQ(zones_kinds(five_zones_layout(-0.9, -0.2, 0.1, 0.6, 1)), "slip-, stick, slip+, stick, slip-");
+}
+
 }  // namespace
 }  // namespace roughroll

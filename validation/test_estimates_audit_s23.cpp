@@ -37,7 +37,7 @@ const std::vector<stored> rough_full_099 = {
 
 // The smooth pair at full coupling driven at Q/f = 0.3: five zones (slip, stick, slip, stick, slip) on the weighted
 // route of 8(x), answered at rung 128 in under a second of CPU; its reference at n = 1000 (about 15 s CPU) is solved
-// here. Also n = 256 given: the answer a --tolerance 1e-8 refusal advises ("n = 256 answers with it", its stick start
+// here. Also n = 256 given: the answer a --tolerance 1e-8 refusal names as its best (at n = 256, its stick start
 // +- 1.2e-6), so that refusal's figure is checked too. Measured on main 36eb361 (estimate / distance): rung 128 c0 30,
 // start 56, xi 23, P_H/P2 6.2, peak p 17, peak r 3.7 (within the reference's 6.1e-5); n = 256 22, 17, 9.0, 42, 13, 25.
 // The reference at n = 1000 is not much closer (its own estimates 1.9e-8 for c0, 1.2e-10 for xi against distances
@@ -59,8 +59,8 @@ TEST(EstimatesAuditS23, FullCouplingDrivenFiveZonesWithinTheirEstimates) {
     EXPECT_GE(caught, 2);  // measured: c0 (distance 4.5e-8, estimate 1.4e-6) and xi (3.1e-10, 7.0e-9)
 }
 
-// The smooth pair at full coupling driven at Q/f = 0.99 (three zones) at n = 256, the n its --tolerance 1e-8 refusal
-// advises (stick start +- 2e-6); the default (rung 512) is validation/test_estimates_audit_s22.cpp's. Reference at
+// The smooth pair at full coupling driven at Q/f = 0.99 (three zones) at n = 256, the n of its --tolerance 1e-8 refusal's
+// best estimate (stick start +- 2e-6); the default (rung 512) is validation/test_estimates_audit_s22.cpp's. Reference at
 // n = 1000 about 3 s CPU. Measured on main 36eb361: c0 53, start 11.5, xi 14.7, P_H/P2 13.6, peak p 413, peak r 9.1.
 TEST(EstimatesAuditS23, FullCouplingNearSlidingAtTheAdvisedN) {
     const std::string full = full_coupling("aluminium-on-steel.toml");
@@ -72,7 +72,7 @@ TEST(EstimatesAuditS23, FullCouplingNearSlidingAtTheAdvisedN) {
 }
 
 // The rough pair at full coupling driven at Q/f = 0.99: the default point is refused after about 220 s CPU (no rung up
-// to 1000 meets 1e-4; the best is n = 256, stick start +- 3.4e-6, which the refusal advises giving). That answer at
+// to 1000 meets 1e-4; the best is n = 256, stick start +- 3.4e-6, which the refusal names). That answer at
 // n = 256 (its estimate confirmed on level 512: the changes change sign, 8(q)) against the stored reference at
 // n = 1000. Measured on main 36eb361 (estimate / distance): c0 3.0e3, start 25, xi 30, P_H/P2 808, peak p 110, peak r
 // 22 (every reference estimate above half its distance: the reference cannot tell below these).

@@ -4,9 +4,9 @@
 // checks hold and every estimate is within the tolerance; with one it is today's point.
 //  - The one-parameter case near gross sliding (eps1 = 2T/A^2 = 0.1 tangential, eps2 = 0.3 normal,
 //    Q/f = 0.9999; validation/test_one_parameter_zones.cpp, docs/robustness.md) fails its checks at
-//    the default n = 128: at the default settings it is answered at n = 256, checks holding, and its
+//    the default n = 128: at a tolerance of 1e-3 it is answered at n = 256, checks holding, and its
 //    estimates bound the error against n = 1000 (a finer, independent solve: no value of the rung's
-//    enters it).
+//    enters it); at the default tolerance its stick start's estimate takes it to n = 1000.
 //  - An explicit n = 128 is today's flagged point; a point that meets the tolerance at the first rung
 //    is today's point at the default n, digit for digit (its JSON but for the seconds).
 //  - A tolerance no rung reaches is refused with one line naming the best estimate and its n.
@@ -58,22 +58,31 @@ TEST(LevelLadder, Rungs) {
     EXPECT_EQ(ladder_rungs(method::paper), (std::vector<int>{200, 400, 800, 1000}));
 }
 
+// At the default tolerance the point climbs to n = 1000: its stick start (a leading slip zone of 0.021 of the half-width)
+// is estimated since session 26 (docs/formulation.md 7(e) "The start's estimate"), at 1.8e-5 on rung 256 and 4.5e-6 on
+// rung 512, above the tolerance's 1e-4 (1 + s) = 2.1e-6 (before, rung 256 answered with the start 5.6e-6 from n = 1000's,
+// unestimated; the ladder must not accept a rung where a printed number misses the tolerance). At a tolerance of 1e-3
+// it answers at n = 256, each printed estimate bounding the distance from the n = 1000 answer.
 TEST(LevelLadder, NearSlidingOneParameterClimbsToAnHonestAnswer) {
     const scene_point flagged = solve_point(with_solver(near_sliding, "n = 128\n"), std::nullopt);
     ASSERT_FALSE(flagged.solution.checks.hold());  // why it climbs
-    const scene_point p = solve_point(parse_scene(near_sliding, "ladder.toml"), std::nullopt);
+    const scene_point fine = solve_point(parse_scene(near_sliding, "ladder.toml"), std::nullopt);
+    ASSERT_TRUE(fine.solution.checks.hold());
+    ASSERT_TRUE(fine.estimate.has_value());
+    EXPECT_EQ(fine.solved.normal().rule.n, 1000);
+    EXPECT_EQ(to_json(fine.report())["n"].get<int>(), 1000);
+    EXPECT_LE(check_estimate(fine.solution, fine.solved.normal().lambda, *fine.estimate, default_tolerance).ratio, 1.0);
+    const scene_point p = solve_point(with_solver(near_sliding, "tolerance = 1e-3\n"), std::nullopt);
     ASSERT_TRUE(p.solution.checks.hold());
     ASSERT_TRUE(p.estimate.has_value());
     EXPECT_EQ(p.solved.normal().rule.n, 256);
-    EXPECT_EQ(to_json(p.report())["n"].get<int>(), 256);
-    const scene_point fine = solve_point(with_solver(near_sliding, "n = 1000\n"), std::nullopt);
-    ASSERT_TRUE(fine.solution.checks.hold());
     const error_estimate& e = *p.estimate;
     EXPECT_LE(std::fabs(p.solution.xi - fine.solution.xi), e.xi);
     EXPECT_LE(std::fabs(p.solution.c0() - fine.solution.c0()), e.c0);
+    EXPECT_LE(std::fabs(p.solution.start() - fine.solution.start()), e.start);
     EXPECT_LE(std::fabs(p.solved.normal().lambda - fine.solved.normal().lambda), e.lambda);
     // and within the tolerance it was chosen for
-    EXPECT_LE(check_estimate(p.solution, p.solved.normal().lambda, e, default_tolerance).ratio, 1.0);
+    EXPECT_LE(check_estimate(p.solution, p.solved.normal().lambda, e, 1e-3).ratio, 1.0);
 }
 
 TEST(LevelLadder, ExplicitNIsTodaysPoint) {
@@ -101,7 +110,9 @@ TEST(LevelLadder, ExplicitNIsTodaysPoint) {
 // that asks for it (levels 64 and 128, made by rung 128, solved again at the point by rung 256, call rung 256's
 // only), and the rung released from the ladder answers after the ladder has ended (its store kept by it).
 TEST(LevelLadder, RungsShareTheirLevels) {
-    const scene s = parse_scene(near_sliding, "ladder.toml");
+    // At a tolerance of 1e-3 rung 256 answers (at the default 1e-4 its stick start's estimate climbs on to n = 1000:
+    // NearSlidingOneParameterClimbsToAnHonestAnswer).
+    const scene s = with_solver(near_sliding, "tolerance = 1e-3\n");
     std::map<int, int> hooks;      // each rung's hook calls
     int rung_128_before_256 = -1;  // rung 128's when rung 256 is built (rung 128's work done)
     std::optional<level_ladder::answer> a;
@@ -229,8 +240,11 @@ TEST(LevelLadder, RefusedWhenNoRungMeetsTheTolerance) {
 }
 
 TEST(LevelLadder, TheRefusalsAdviceAnswers) {
-    // The refusal names the n of its best estimate and the least tolerance that accepts it (two digits, rounded up:
-    // level_ladder.cpp, base/text.hpp rounded_up); each, given, answers the point (session 17 review L3).
+    // The refusal names the least tolerance that accepts its best estimate (two digits, rounded up: level_ladder.cpp,
+    // base/text.hpp rounded_up) and the n it answers at, or below; given, it answers the point (session 17 review L3).
+    // It advises no n: an n given is not the ladder's route everywhere (free rolling takes the edge layers neglected
+    // there, docs/formulation.md 8(n); session 25 audit F2), so "--n" is not advised (it was, "n = 1000 answers with
+    // it: solver.n or --n 1000").
     const std::string text = "friction = 0.3\nQ = 0.15\n[cylinder1.tangential]\nT = 0.05\nA = 1\n"
                              "[cylinder1.normal]\nT = 0.15\nA = 1\n[solver]\nmethod = \"one-parameter\"\n";
     std::string what;
@@ -240,17 +254,18 @@ TEST(LevelLadder, TheRefusalsAdviceAnswers) {
     } catch (const resolution_error& e) {
         what = e.what();
     }
-    const std::regex advice("n = ([0-9]+) answers with it: solver\\.n or --n \\1, or a tolerance of ([0-9.e+-]+)\\)");
+    const std::regex advice(
+        "raise the tolerance \\(solver\\.tolerance, --tolerance; a tolerance of ([0-9.e+-]+) answers at n = ([0-9]+) "
+        "or below\\), or try another method$");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(what, m, advice)) << what;
-    const std::string n = m[1], tolerance = m[2];
+    EXPECT_EQ(what.find("--n"), std::string::npos) << what;
+    EXPECT_EQ(what.find("solver.n"), std::string::npos) << what;
+    const std::string tolerance = m[1], n = m[2];
     const scene_point at_tolerance = solve_point(with_solver(text, "tolerance = " + tolerance + "\n"), std::nullopt);
     EXPECT_TRUE(at_tolerance.solution.checks.hold());
     EXPECT_TRUE(at_tolerance.estimate.has_value());
     EXPECT_LE(at_tolerance.solved.normal().rule.n, std::stoi(n));
-    const scene_point at_n = solve_point(with_solver(text, "n = " + n + "\n"), std::nullopt);
-    EXPECT_TRUE(at_n.solution.checks.hold());
-    EXPECT_EQ(at_n.solved.normal().rule.n, std::stoi(n));
 }
 
 TEST(LevelLadder, BadToleranceIsRefused) {

@@ -121,8 +121,8 @@ TEST(LevelReuse, RoughDefaultToleranceAnswersAsBefore) {
 
 // At --tolerance 1e-6 no rung answers. The best estimate the refusal names is rung 256's stick start, 7.5e-6, which its
 // rung met as a lower bound (not confirmed): the ladder confirms it before naming it, so the refusal is the one of the
-// rungs that confirm at once, word for word (rung 256's confirmed estimate, "n = 256 answers with it", the tolerance
-// 1.7e-05 that accepts it). About 17 s CPU (large_n).
+// rungs that confirm at once, word for word (rung 256's confirmed estimate, and "a tolerance of 1.7e-05 answers at n =
+// 256 or below", the tolerance that accepts it). About 17 s CPU (large_n).
 TEST(LevelReuse, RoughRefusalNamesTheConfirmedBestEstimate) {
     std::string shared_line, separate_line;
     try {

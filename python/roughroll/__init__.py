@@ -403,7 +403,7 @@ class Scene:
         refused at ``coupling = "full"``).
         Keys: the CSV's columns Q, Q_over_f, c0, xi, xi_over_f, xi_carter, c0_carter (Carter's
         closed form), checks_hold, c0/xi/Q_error_estimate (NaN where the CSV is empty), zones (how many stick and
-        slip zones), stick_start (formulation section 7) and zone_path ("single", "general", or
+        slip zones), stick_start (formulation section 7) with stick_start_error_estimate, and zone_path ("single", "general", or
         "no-slip" where the edge layers were neglected, formulation 8(n); "" for a refused row,
         an array of str), n (the row's nodes: the ladder's
         choice without an explicit n; 0 for a refused row), for a

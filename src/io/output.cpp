@@ -88,7 +88,7 @@ std::string zones_text(const tangential_solution& s) {
     std::string text;
     for (const zone& z : s.layout.zones) {
         if (!text.empty()) text += ", ";
-        text += (z.stick ? "stick [" : std::string(z.direction > 0 ? "slip+ [" : "slip- [")) + shortest(z.from) + ", " +
+        text += zone_kind(z) + std::string(" [") + shortest(z.from) + ", " +
                 shortest(z.to) + "]";
     }
     return text;
@@ -262,9 +262,17 @@ void write_summary(std::ostream& out, const point_report& r) {
                "is the trailing layer (slip, stick, reversed slip, not resolved: its slip velocity not available, "
                "'-' in the traction table) (docs/formulation.md 8(n))\n";
     }
+    // Five zones: c0's and the start's estimates are each the larger of the two stick zones' (zone_ends_table), so
+    // they bound the second zone's ends printed among the zones too, and say so.
+    const bool two = s.layout.stick_zones() == 2;
     if (r.estimate)
-        out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda) << ", c0 " << shortest(r.estimate->c0)
-            << (r.estimate->start != 0.0 ? ", stick start " + shortest(r.estimate->start) : std::string()) << ", xi "
+        out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda)
+            << (two ? ", c0 and the second stick zone's end " : ", c0 ") << shortest(r.estimate->c0)
+            << (r.estimate->start != 0.0
+                    ? (two ? ", stick start and the second stick zone's start " : ", stick start ") +
+                          shortest(r.estimate->start)
+                    : std::string())
+            << ", xi "
             << shortest(r.estimate->xi)
             << (r.estimate->peak ? ", peak p " + shortest(r.estimate->peak->p) + ", peak r " + shortest(r.estimate->peak->r)
                                  : std::string())
@@ -315,7 +323,8 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
            "# checks_hold: 1 when p >= 0, (3.3) and (3.4) hold on the solver's grids; c0_error_estimate, "
            "xi_error_estimate, Q_error_estimate: the estimates of their errors (empty: none)\n"
            "# zones: the number of stick and slip zones; stick_start: r where the stick zone starts (-1: at the "
-           "leading edge); zone_path: how the zones were found, single (the paper's zone), general (the search of "
+           "leading edge); stick_start_error_estimate: the estimate of its error (0: the paper's zone, starting at the "
+           "edge exactly; five zones: the larger of the two stick zones' starts'; empty: none); zone_path: how the zones were found, single (the paper's zone), general (the search of "
            "section 7, every dissimilar structure) or no-slip (the edge layers neglected, docs/formulation.md 8(n)); n: the Gauss-Chebyshev nodes of the row; status: ok, or refused (only the given Q or c0 "
            "and Carter's columns filled)\n";
     if (h.physical)
@@ -326,7 +335,7 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si,
                      const std::vector<int>& nodes) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
-           "Q_error_estimate,zones,stick_start,zone_path"
+           "Q_error_estimate,zones,stick_start,stick_start_error_estimate,zone_path"
         << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",n,status\n";
     if (!nodes.empty() && nodes.size() != curve.size())
         throw std::invalid_argument("write_curve_csv: " + std::to_string(nodes.size()) + " n for " +
@@ -346,7 +355,7 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             const bool at_Q = !std::isnan(s.Q);
             const auto cell = [](bool given, double x) { return given ? shortest(x) : std::string(); };
             out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0()) << ",,,"
-                << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,,";
+                << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,,,";
             if (si) {
                 // xi1 is the refused creep; P1 depends on the given load alone, Carter's xi1 on
                 // Carter's load at what was given (Q, or Carter's Q at the same c0).
@@ -364,7 +373,8 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << shortest(row.estimate->c0) << ',' << shortest(row.estimate->xi) << ',' << shortest(row.estimate->Q);
         else
             out << ",,";
-        out << ',' << s.layout.zones.size() << ',' << shortest(s.start()) << ',' << zone_path(s);
+        out << ',' << s.layout.zones.size() << ',' << shortest(s.start()) << ','
+            << (row.estimate ? shortest(row.estimate->start) : std::string()) << ',' << zone_path(s);
         if (si) {
             const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0(), s.xi);
             out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);

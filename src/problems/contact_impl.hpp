@@ -45,6 +45,9 @@ struct contact::impl {
     error_estimate estimate_from(const tangential_solution& s, const tangential_solution& own,
                                  const std::array<tangential_solution, 3>& at_levels, bool swept);
     pressure_peak peak_of_level(const point_model& level);  // its pressure's peak, once per n where uncoupled
+    // Refuses (resolution_error) where `level`, the estimate's level of m nodes, has other zones than s (the general
+    // search's structure at another n): their ends are not compared.
+    void require_same_zones(const tangential_solution& level, int m, const tangential_solution& s) const;
 
     roughness surfaces_;
     solver_options options_;

@@ -63,15 +63,21 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
         // A point of the general path is level n itself, not extrapolated: the difference from
         // n/2 (on the same path), with the rounding floor of every estimate.
         const tangential_solution coarse = companion_->like(s, options_.how, nodes());
+        require_same_zones(coarse, nodes() / 2, s);
         // The floors of every estimate; c0's near gross sliding, where the zone shrinks to a
         // point, is the one validation/test_honest_estimates.cpp needs (5e-12 at Q/f = 1 - 1e-15).
         const rounding_floors floor = floors_at(nodes(), s, s, normal().lambda, f_, kernel_strength());
+        // The zone's ends, the start beside c0 (7(e) "The start's estimate"), each within Newton's resolution and the
+        // entry's rounding at both levels (zone_ends_floor, as the levels' rule below).
+        const double ends = zone_ends_floor(nodes(), floor.c0, s, normal().lambda, f_, kernel_strength()) +
+                            newton_floor_excess({&s, &coarse});
         e = error_estimate{std::fabs(reported_->lambda - model_->normal().lambda) + floor.lambda,
-                           std::fabs(s.c0() - coarse.c0()) + floor.c0,
+                           std::fabs(s.c0() - coarse.c0()) + ends,
                            std::fabs(s.xi - coarse.xi) + floor.xi,
                            0.0,
                            "n/2 (general zone search: level n, not extrapolated)",
-                           false};
+                           false,
+                           std::fabs(s.start() - coarse.start()) + ends};
         e->peak = peak_from_difference(peak_of_level(*model_), peak_of_level(*companion_), nodes());
     } else if (build_levels()) {
         // Three levels of the level method on the structure of s (for dissimilar rollers the reported
@@ -79,10 +85,35 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
         const tangential_solution own = distribution(s);
         std::array<tangential_solution, 3> at{};
         for (int i = 0; i < 3; ++i) at[i] = levels_[i] ? levels_[i]->like(s, options_.how, nodes()) : own;
+        if (s.layout.general() && model_->structure() == estimate_structure::paper)
+            for (int i = 0; i < 3; ++i)
+                if (levels_[i]) require_same_zones(at[i], (*levels_[i]).nodes(), s);
         e = estimate_from(s, own, at, false);
     }
     if (!s.checks.hold()) return std::nullopt;
     return e;
+}
+
+void contact::impl::require_same_zones(const tangential_solution& level, int m, const tangential_solution& s) const {
+    // docs/formulation.md 7(e) "Unlike zones are not compared": the general search of another level may find another
+    // structure (a leading slip zone at one n, none at another); the difference of their ends is then no discretisation
+    // error, and no estimate is made from it. A larger n may find the same zones at its levels (the ladder tries it).
+    if (same_zones(level.layout, s.layout)) return;
+    std::string msg = no_honest_estimate(options_.how, nodes(), model_->structure()) + "level " + std::to_string(m) +
+                      " finds the zones " + zones_kinds(level.layout) + " where level n finds " +
+                      zones_kinds(s.layout) + " at Q = " + shortest(s.Q) +
+                      ", and unlike zones are not compared (docs/formulation.md 7(e))";
+    const bool n_given = store_ == nullptr;  // a ladder's rung: the ladder goes on to the larger n itself
+    if (nodes() >= max_nodes)
+        msg += n_given ? "; n is at its largest: a smaller n may find the same zones (leave n out and the ladder of "
+                         "levels tries n up to " + std::to_string(max_nodes) + ")"
+                       : "; n is at its largest, so the load is beyond the method's reach";
+    else
+        msg += n_given ? "; another n may find the same zones: a larger n (solver.n, --n; at most " +
+                             std::to_string(max_nodes) + "), or leave n out and the ladder of levels tries n up to " +
+                             std::to_string(max_nodes)
+                       : "; a larger n (at most " + std::to_string(max_nodes) + ") may find the same zones";
+    throw resolution_error(msg);
 }
 
 pressure_peak contact::impl::peak_of_level(const point_model& level) {
@@ -159,6 +190,17 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
                  {"xi", value_xi, floor.xi, floor.xi, x, true, &est::xi},
                  swept ? q{"Q", value_Q, floor.Q, floor.Q, x, true, &est::Q}
                        : q{"c0", value_c0, floor.c0, floor.c0, x, true, &est::c0}};
+        // The general search's stick zone inside the contact (7; its route is general exactly where it starts inside):
+        // both ends are Newton's in the load and entry conditions (7(d)), so each level's ends lie within Newton's
+        // resolution and the entry's rounding, as dissimilar rollers' (zone_ends_floor, newton_end); the start is
+        // estimated by c0's rule beside it (docs/formulation.md 7(e) "The start's estimate"). The paper's zone starts
+        // at r = -1 exactly: no row. The levels have s's zones (require_same_zones).
+        if (!swept && s.layout.general()) {
+            const double ends = zone_ends_floor(finest_n, floor.c0, s, lambda, f_, strength);
+            const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
+            table.back() = {"c0", value_c0, ends, finer_ends, x, true, &est::c0, true};
+            table.push_back({"the stick zone's start", value_start, ends, finer_ends, x, true, &est::start, true});
+        }
     } else {
         const double ends = zone_ends_floor(finest_n, floor.c0, s, lambda, f_, strength);
         const double finer_ends = zone_ends_floor(2 * nodes(), floor.c0, s, lambda, f_, strength);
@@ -175,13 +217,14 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     const auto finer = [&]() -> std::optional<estimate_level> {
         const int m = 2 * nodes();
         if (levels_[2] || m > max_nodes) return std::nullopt;
+        std::optional<estimate_level> l;
         try {
             // At own's c0 on a curve swept in c0, else on the structure of s (its point first: at full
             // coupling it sets the pressure).
             const held finer_level = level(m);
-            return estimate_level{swept ? finer_level->at_stick_end(own.c0(), false, sweeping_near_)
-                                        : finer_level->like(s, options_.how, nodes()),
-                                  (*finer_level).normal().lambda};
+            l = estimate_level{swept ? finer_level->at_stick_end(own.c0(), false, sweeping_near_)
+                                     : finer_level->like(s, options_.how, nodes()),
+                               (*finer_level).normal().lambda};
         } catch (const resolution_error&) {
             return std::nullopt;
         } catch (const numerical_error&) {
@@ -191,6 +234,9 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
             if (paper) throw;
             return std::nullopt;
         }
+        // Level 2n confirms on s's zones only: another structure there is refused, not compared (require_same_zones).
+        if (paper && s.layout.general()) require_same_zones(l->solution, m, s);
+        return l;
     };
     estimate_point point{
         options_.how,       nodes(),           self, structure, reported_ != nullptr && paper, own.checks.hold(),

@@ -432,10 +432,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             (std::isfinite(relative) ? " (" + bound_text(relative) + " relative)" : std::string(" (of a zero value)")) +
             " at n = " + std::to_string(best->n) + (beyond_all.empty() ? skipped + not_solved : ", and " + beyond_all) +
             (rounding_limit ? ", and at n = " + std::to_string(last_n) + " " + last_reason : std::string()) +
-            "; raise the tolerance (solver.tolerance, --tolerance), give n to accept a larger estimate (n = " +
-            std::to_string(best->n) + " answers with it: solver.n or --n " + std::to_string(best->n) +
-            (accepted > 0.0 && accepted < 1.0 ? ", or a tolerance of " + significant(accepted, 2)
-                                              : std::string()) +
+            // The tolerance only: n given is not the ladder's route (free rolling at a given n takes the edge layers
+            // neglected where the ladder solved the five zones, docs/formulation.md 8(n)), so "--n N" would not give
+            // the answer named here (session 25 audit F2).
+            "; raise the tolerance (solver.tolerance, --tolerance" +
+            (accepted > 0.0 && accepted < 1.0
+                 ? "; a tolerance of " + significant(accepted, 2) + " answers at n = " + std::to_string(best->n) +
+                       " or below"
+                 : std::string()) +
             "), or try another method" +
             (skipped.empty() && beyond_all.empty() && not_solved.empty() ? "" : " or coupling = \"johnson\"");
     } else {

@@ -53,6 +53,21 @@ bool zone_layout::opposite() const {
     return up && down;
 }
 
+bool same_zones(const zone_layout& a, const zone_layout& b) {
+    if (a.zones.size() != b.zones.size()) return false;
+    for (std::size_t i = 0; i < a.zones.size(); ++i)
+        if (a.zones[i].stick != b.zones[i].stick || a.zones[i].direction != b.zones[i].direction) return false;
+    return true;
+}
+
+const char* zone_kind(const zone& z) { return z.stick ? "stick" : z.direction > 0 ? "slip+" : "slip-"; }
+
+std::string zones_kinds(const zone_layout& layout) {
+    std::string text;
+    for (const zone& z : layout.zones) text += (text.empty() ? "" : ", ") + std::string(zone_kind(z));
+    return text;
+}
+
 namespace {
 zone_layout three(double start, double c0, zone_route route, int leading, int trailing) {
     zone_layout l;

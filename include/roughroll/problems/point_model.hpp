@@ -164,7 +164,11 @@ public:
     M& at(int m, normal_cache* cache = nullptr) {
         for (M* level : levels_)
             if (level->nodes() == m) return *level;
-        const solver_options options{m, level_of(holder_.options_.how), holder_.options_.zones};
+        // The holder's tolerance too: a rung's level m is the rung m's model on a ladder (level_store's key holds the
+        // tolerance, which dissimilar rollers' routes read), so that a ladder at a tolerance of its own shares them as at
+        // the default (the near-sliding climb at 1e-3 made levels 128 and 256 twice: LevelLadder.RungsShareTheirLevels).
+        const solver_options options{m, level_of(holder_.options_.how), holder_.options_.zones,
+                                     holder_.options_.tolerance};
         const auto make = [&] {
             return std::make_unique<M>(model_input{holder_.surfaces_, holder_.f_, options, holder_.materials_, cache});
         };

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace roughroll {
@@ -61,6 +62,14 @@ zone_layout opposite_zones(double start, double c0, int direction = 1);
 zone_layout five_zones_layout(double s1, double c1, double s2, double c2, int d);
 // No slip on [-1, 1], the edge layers neglected (8(n)).
 zone_layout layers_neglected_layout();
+// Whether a and b have the same zones in the same order, each stick or slip in the same direction (their ends may
+// differ): the levels of an estimate compare their zone ends only where this holds (docs/formulation.md 7(e), "Unlike
+// zones are not compared").
+bool same_zones(const zone_layout& a, const zone_layout& b);
+// A zone's kind as the outputs name it: "stick", "slip+" or "slip-" (the slip direction).
+const char* zone_kind(const zone& z);
+// The zones' kinds from r = -1, e.g. "slip+, stick, slip+" (a refusal's words for a structure).
+std::string zones_kinds(const zone_layout& layout);
 // The mirror of a load Q < 0 (docs/formulation.md 2, 8(h)): every slip direction changes sign.
 zone_layout mirrored(zone_layout layout);
 
