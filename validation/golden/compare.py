@@ -27,9 +27,10 @@ ESTIMATED = {"c0": "c0", "xi": "xi", "hertz_load_ratio": "hertz_load_ratio", "st
 # pressure_peak.r times the half-width, near zero where the peak sits at the centre).
 SCALED = {"si.x_peak_m": "pressure_peak.r", "si.p_peak_Pa": "pressure_peak.p"}
 # How the solver got there (iteration counts, the alternation's contraction): listed when they change, never a
-# moved result.
+# moved result; pressure_peak.r_resolution, the band of a flat maximum within which the pressures agree to
+# rounding (docs/cli.md), is such a measure with no estimate of its own (session 26 review R16).
 DIAGNOSTIC = {"brent_iterations", "coupling.iterations", "coupling.newton_residuals", "coupling.contraction",
-              "si.width_iterations"}
+              "si.width_iterations", "pressure_peak.r_resolution"}
 
 
 def flatten(value, prefix=""):
