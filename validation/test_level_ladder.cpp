@@ -310,21 +310,24 @@ TEST(LevelLadder, FigureTwoStaysAtTheDefaultN) {
 
 // A curve: each row its own rung, reported in the CSV's column n. At 3e-4 (P_H/P2 of this scene is
 // estimated at 1.8e-4 relative at n = 128) the row Q/f = 0.5 is answered at 128, the row near gross
-// sliding (checks failing at 128) at 256, as the point alone.
+// sliding (checks failing at 128) at 512, as the point alone: its stick start, estimated since session
+// 26 (+- 1.8e-5 at 256, 4.5e-6 at 512, each a bound against n = 1000), is held to the tolerance on
+// its slip zone's scale 1 + s = 0.021 (6.4e-6), which 256 misses (it answered at 256 before, the start
+// unestimated).
 TEST(LevelLadder, CurveRowsClimbOnTheirOwn) {
     scene s = parse_scene(near_sliding, "ladder.toml");
     s.solver.tolerance = 3e-4;
     const scene_curve c = curve_of(s, std::vector<double>{0.15, 0.29997}, 0, false);
     ASSERT_EQ(c.nodes.size(), 2u);
     EXPECT_EQ(c.nodes[0], 128);
-    EXPECT_EQ(c.nodes[1], 256);
+    EXPECT_EQ(c.nodes[1], 512);
     EXPECT_TRUE(c.rows[1].solution.checks.hold());
     const scene_point p = solve_point(s, std::nullopt);
-    EXPECT_EQ(p.solved.normal().rule.n, 256);
+    EXPECT_EQ(p.solved.normal().rule.n, 512);
     EXPECT_EQ(c.rows[1].solution.xi, p.solution.xi);
     std::ostringstream csv;
     write_curve_csv(csv, c.rows, std::nullopt, c.nodes);
     EXPECT_NE(csv.str().find(",n,status\n"), std::string::npos);
     EXPECT_NE(csv.str().find(",128,ok\n"), std::string::npos);
-    EXPECT_NE(csv.str().find(",256,ok\n"), std::string::npos);
+    EXPECT_NE(csv.str().find(",512,ok\n"), std::string::npos);
 }
