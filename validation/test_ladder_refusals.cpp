@@ -22,6 +22,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/level_ladder.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 using namespace roughroll;
 
@@ -292,7 +293,9 @@ TEST(LadderRefusals, RoundingLimitStopsTheClimb) {
 // consecutive rungs of one structure whose margin stays below zero by more than the full-coupling rule's bound of its
 // changes settle; two rungs, a margin that tends to zero, changes that stall, or two structures do not.
 namespace {
-failed_rung failing(int n, double stick, std::size_t stick_zones = 1, double pressure = 0.1) {
+// The braked three zones (slip, stick, slip, one direction), the structure of the rungs below unless one is given.
+zone_layout braked() { return one_stick_zone(-0.9, 0.5, zone_route::general); }
+failed_rung failing(int n, double stick, const zone_layout& layout = braked(), double pressure = 0.1) {
     traction_checks c{};
     c.pressure_margin = pressure;
     c.stick_margin = stick;
@@ -301,10 +304,10 @@ failed_rung failing(int n, double stick, std::size_t stick_zones = 1, double pre
     c.pressure_holds = pressure >= 0.0;
     c.stick_holds = stick >= 0.0;
     c.slip_holds = true;
-    return {n, c, stick_zones, false};
+    return {n, c, layout};
 }
-std::optional<std::string> settles(double a, double b, double c, std::size_t zones_of_last = 1) {
-    return settled_failure({failing(128, a), failing(256, b), failing(512, c, zones_of_last)}, -0.0038, 0.05);
+std::optional<std::string> settles(double a, double b, double c, const zone_layout& last = braked()) {
+    return settled_failure({failing(128, a), failing(256, b), failing(512, c, last)}, -0.0038, 0.05);
 }
 }  // namespace
 
@@ -322,11 +325,21 @@ TEST(LadderRefusals, SettledFailureNeedsThreeRungsOfOneStructure) {
     // of one size stall (no bound), or the last rung holds.
     EXPECT_FALSE(settles(-8.0e-7, -6.8e-7, -5.6e-7).has_value());
     EXPECT_FALSE(settles(-8.0e-7, -6.8e-7, 9.0e-7).has_value());
-    // Three rungs of two structures: their margins' differences are no convergence.
-    EXPECT_FALSE(settles(-9.21e-4, -9.21e-4, -9.21e-4, 2).has_value());
+    // Three rungs of two structures: their margins' differences are no convergence. Judged by the zones themselves
+    // (same_zones): one stick zone from the edge (stick, slip) is not the three zones, though both have one stick zone
+    // and one slip direction (which the rule compared before, and settled).
+    EXPECT_FALSE(settles(-9.21e-4, -9.21e-4, -9.21e-4, five_zones_layout(-0.99, 0.2, 0.4, 0.98, 1)).has_value());
+    EXPECT_FALSE(settles(-9.21e-4, -9.21e-4, -9.21e-4, one_stick_zone(-1.0, 0.5, zone_route::general)).has_value());
+    EXPECT_FALSE(settles(-9.21e-4, -9.21e-4, -9.21e-4, mirrored(braked())).has_value());
+    // The same zones with other ends: one structure.
+    EXPECT_TRUE(settles(-9.21e-4, -9.21e-4, -9.21e-4, one_stick_zone(-0.8, 0.6, zone_route::general)).has_value());
     // The pressure's margin has no rounding floor; the same rule.
     const std::optional<std::string> open = settled_failure(
-        {failing(128, 1e-3, 1, -0.2), failing(256, 1e-3, 1, -0.2), failing(512, 1e-3, 1, -0.2)}, -0.0038, 0.05);
+        {failing(128, 1e-3, braked(), -0.2), failing(256, 1e-3, braked(), -0.2), failing(512, 1e-3, braked(), -0.2)},
+        -0.0038, 0.05);
     ASSERT_TRUE(open.has_value());
     EXPECT_NE(open->find("pressure turns negative"), std::string::npos) << *open;
+    // One text with a rung's own refusal (coupled_failure_cause and _advice): the contact would open.
+    EXPECT_NE(open->find("the contact would open"), std::string::npos) << *open;
+    EXPECT_NE(open->find("coupling = \"johnson\" answers it without that term"), std::string::npos) << *open;
 }

@@ -116,6 +116,23 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
     return t;
 }
 
+}  // namespace
+
+std::string coupled_failure_cause(bool pressure) {
+    return pressure ? "the coupling term beta_d p1 of the normal problem, of order beta_d f, outweighs the pressure at "
+                      "this friction, so the contact would open: the load is beyond the coupled model "
+                      "(docs/formulation.md 8(e))"
+                    : "the zone structure changes under the coupling at this load, which the alternation from "
+                      "Johnson's zones does not follow (docs/formulation.md 8(e))";
+}
+
+std::string coupled_failure_advice(bool pressure) {
+    return pressure ? "coupling = \"johnson\" answers it without that term, an approximation of order beta_d f here"
+                    : "coupling = \"johnson\" answers the load, and loads further from that change may answer at "
+                      "full coupling";
+}
+
+namespace {
 // The refusal of a reported point whose coupled zones fail the checks (3.3)-(3.4): either the zone structure changes
 // under the coupling (8(e)), or the discrete solution at this n misses them next to a zone end, where the exact
 // slip velocity vanishes like (s - r)^(3/2) and the discrete one keeps a square-root residual of the entry condition
@@ -125,21 +142,16 @@ failed_checks_error failed_checks(const tangential_solution& t, double Q, double
     // The coupled pressure below zero: the term beta_D p1 of (D1), of order beta_D f, outweighs the load's
     // pressure (aluminium on steel at f = 1e6, gross sliding: margin -3.9e4), so the contact would open.
     if (!t.checks.pressure_holds)
-        return failed_checks_error(
-            coupling_at_load(Q, f) + "the coupled pressure turns negative (margin p " +
-                shortest(t.checks.pressure_margin) +
-                "): the coupling term beta_d p1 of the normal problem, of order beta_d f, outweighs "
-                "the pressure at this friction, so the contact would open: the load is beyond the "
-                "coupled model (docs/formulation.md 8(e)); coupling = \"johnson\" answers it without "
-                "that term, an approximation of order beta_d f here",
-            t);
-    return failed_checks_error(
-        coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: " + margins_text(t.checks) +
-            "): the zone structure changes under the coupling (docs/formulation.md 8(e)), which "
-            "the alternation does not follow, or the discrete zones at this n miss the checks next "
-            "to a zone end (8(r)); a larger n (--n, or none: the ladder's) may answer it, "
-            "coupling = \"johnson\" answers the load",
-        t);
+        return failed_checks_error(coupling_at_load(Q, f) + "the coupled pressure turns negative (margin p " +
+                                       shortest(t.checks.pressure_margin) + "): " + coupled_failure_cause(true) +
+                                       "; " + coupled_failure_advice(true),
+                                   t);
+    return failed_checks_error(coupling_at_load(Q, f) + "the coupled zones fail the checks (3.3)-(3.4) (margins: " +
+                                   margins_text(t.checks) + "): " + coupled_failure_cause(false) +
+                                   ", or the discrete zones at this n miss the checks next to a zone end (8(r)); a "
+                                   "larger n (--n, or none: the ladder's) may answer it; " +
+                                   coupled_failure_advice(false),
+                               t);
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).

@@ -153,9 +153,10 @@ error_estimate scaled_changes(const level_changes& c, double factor) {
 std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& r, double Q, double f) {
     // The margins' convergence is the zone ends' (the checks fail next to them, 8(r)): erratic at order 1, so one change
     // bounds nothing (8(q) "A fall faster than the ends' order"); three rungs take the estimates' own rule at full
-    // coupling, of the three-levels kind (no contraction read), on the same structure only.
+    // coupling, of the three-levels kind (no contraction read), on the same zones only (same_zones: each stick or slip
+    // in the same direction, as the levels of an estimate are compared, 7(e)).
     for (const failed_rung& x : r)
-        if (x.stick_zones != r[0].stick_zones || x.opposite != r[0].opposite) return std::nullopt;
+        if (!same_zones(x.layout, r[0].layout)) return std::nullopt;
     struct margin {
         const char* name;
         double traction_checks::*value;
@@ -181,14 +182,8 @@ std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& r, 
                " at n = " + std::to_string(r[0].n) + ", " + std::to_string(r[1].n) + " and " + std::to_string(r[2].n) +
                " alike (" + m.name + " margin " + significant(r[0].checks.*m.value, 3) + ", " +
                significant(r[1].checks.*m.value, 3) + ", " + significant(r[2].checks.*m.value, 3) +
-               ": below zero by more than their changes' bound, docs/formulation.md 8(q)), so no larger n answers "
-               "it: " +
-               (pressure ? std::string("the coupling term beta_d p1 outweighs the pressure at this friction (8(e)); "
-                                       "coupling = \"johnson\" answers the load without that term")
-                         : std::string("the zone structure changes under the coupling at this load, which the "
-                                       "alternation from Johnson's zones does not follow (8(e)); coupling = "
-                                       "\"johnson\" answers the load, and loads further from that change may answer "
-                                       "at full coupling"));
+               ": below zero by more than their changes' bound, docs/formulation.md 8(q)), so no larger n answers it: " +
+               coupled_failure_cause(pressure) + "; " + coupled_failure_advice(pressure);
     }
     return std::nullopt;
 }
@@ -380,7 +375,7 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
         } catch (const failed_checks_error& e) {  // as resolution_error, unless three rungs settle it (8(q))
             last_reason = one_line(e.what());
             advised_last = true;
-            failed_before.push_back({n, e.checks(), e.stick_zones(), e.opposite()});
+            failed_before.push_back({n, e.checks(), e.layout()});
             const std::size_t k = failed_before.size();
             if (Q && k >= 3 && i + 1 < rungs_.size())
                 if (std::optional<std::string> why = settled_failure(

@@ -35,6 +35,7 @@
 #include "roughroll/problems/normal_problem.hpp"
 #include "roughroll/problems/tangential_solution.hpp"
 #include "roughroll/problems/tangential_solver.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -57,24 +58,25 @@ constexpr int coupling_max_iterations = 40;
 double coupling_value_floor(double lambda, double offset, double xi, double f, double normal_rcond,
                             double tangential_rcond);
 
+// Where a coupled point's failed checks (3.3)-(3.4) are the structure's, not the discrete zones' at one n
+// (docs/formulation.md 8(e)): why (`pressure`: the coupled pressure below zero; else the zones), and what answers the
+// load instead. One text for a rung's refusal (full_coupling.cpp) and the ladder's settled one (settled_failure).
+std::string coupled_failure_cause(bool pressure);
+std::string coupled_failure_advice(bool pressure);
+
 // A reported point whose coupled zones fail the checks (3.3)-(3.4) (full_coupling::solve): the refusal, with the
 // margins and the structure they are of, which the ladder of levels compares over three rungs (docs/formulation.md
 // 8(q), "A failure the levels settle").
 class failed_checks_error : public resolution_error {
 public:
     failed_checks_error(const std::string& what, const tangential_solution& t)
-        : resolution_error(what),
-          checks_(t.checks),
-          stick_zones_(t.layout.stick_zones()),
-          opposite_(t.layout.opposite()) {}
+        : resolution_error(what), checks_(t.checks), layout_(t.layout) {}
     const traction_checks& checks() const { return checks_; }
-    std::size_t stick_zones() const { return stick_zones_; }
-    bool opposite() const { return opposite_; }
+    const zone_layout& layout() const { return layout_; }
 
 private:
     traction_checks checks_;
-    std::size_t stick_zones_;
-    bool opposite_;
+    zone_layout layout_;
 };
 
 // The alternation's stop for one group of its numbers (lambda, e, xi; or the zone ends), docs/formulation.md 8(e),

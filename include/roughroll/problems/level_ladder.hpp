@@ -33,6 +33,7 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/creep_curve.hpp"
 #include "roughroll/problems/level_store.hpp"
+#include "roughroll/problems/zone_layout.hpp"
 
 namespace roughroll {
 
@@ -43,16 +44,15 @@ std::vector<int> ladder_rungs(method how);
 // (level_ladder::point; docs/formulation.md 8(q), "Rungs below the first"): default_nodes(how)/4, /2, in order.
 std::vector<int> spectral_rungs(method how);
 
-// A rung whose reported point at full coupling failed the checks (3.3)-(3.4): its n, the margins and the structure
-// they are of (full_coupling.hpp, failed_checks_error).
+// A rung whose reported point at full coupling failed the checks (3.3)-(3.4): its n, the margins and the zones they
+// are of (full_coupling.hpp, failed_checks_error).
 struct failed_rung {
     int n;
     traction_checks checks;
-    std::size_t stick_zones;
-    bool opposite;
+    zone_layout layout;
 };
-// docs/formulation.md 8(q), "A failure the levels settle": three consecutive rungs (coarsest first) whose points of one
-// structure fail the checks: a margin below zero at all three whose finest value plus the full-coupling rule's bound of
+// docs/formulation.md 8(q), "A failure the levels settle": three consecutive rungs (coarsest first) whose points have
+// the same zones (same_zones) and fail the checks: a margin below zero at all three whose finest value plus the full-coupling rule's bound of
 // the three (coupled_change_bound: twice the larger change, unresolved where they stall) and its rounding floor is still
 // below zero. The refusal's line (no n answers, what does), or none.
 std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& rungs, double Q, double f);
