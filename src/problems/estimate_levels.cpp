@@ -287,10 +287,11 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         std::array<pressure_peak, 3> peaks;
         for (int i = 0; i < 3; ++i) peaks[i] = peak_of_level(levels_[i] ? *levels_[i] : *model_);
         // Level 2n not solved for the table (a lower bound): nor for the peak. Nor for the peak alone where the table's
-        // estimate already fails the ladder's tolerance: a lower bound as well. Right only while the peak is not read
-        // by the tolerance (check_estimate): e.peak is not set yet when the test is asked.
-        if (!e.lower_bound && !above && point.fails_tolerance && peak_asks_level_two_n(peaks, point) &&
-            point.fails_tolerance(e))
+        // estimate already fails the ladder's tolerance: a lower bound as well (full coupling's level 2n, a point's
+        // solve; off full coupling the peak's level 2n is a normal problem alone, solved). Right only while the peak is
+        // not read by the tolerance (check_estimate): e.peak is not set yet when the test is asked.
+        if (structure == estimate_structure::full_coupling && !e.lower_bound && !above && point.fails_tolerance &&
+            peak_asks_level_two_n(peaks, point) && point.fails_tolerance(e))
             e.lower_bound = true;
         point.lower_bound = e.lower_bound;
         // At full coupling the position also from the slopes of level n's pressure and its neighbour's (n/2, or 2n
@@ -305,13 +306,22 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
             slopes_r = peak_position_from_slopes(own_level.normal(), own_level.nodes(), next_level.normal(),
                                                  next_level.nodes(), peaks[self].r, ends, std::max(e.c0, e.start));
         }
-        e.peak = peak_from_levels(
-            peaks, point,
-            [&]() -> std::optional<pressure_peak> {
+        // Level 2n's peak: at full coupling its point's pressure (the table's level 2n); every other structure's
+        // pressure does not depend on the load, so only its normal problem is solved (once per contact, peak_of_level;
+        // docs/formulation.md 8(e) "The peak confirmed on level 2n"), and none where it cannot be.
+        const auto finer_peak = [&]() -> std::optional<pressure_peak> {
+            if (structure == estimate_structure::full_coupling) {
                 finer_once();
                 return above_peak;
-            },
-            slopes_r);
+            }
+            if (levels_[2] || 2 * nodes() > max_nodes) return std::nullopt;
+            try {
+                return peak_of_level(*level(2 * nodes()));
+            } catch (const error&) {
+                return std::nullopt;
+            }
+        };
+        e.peak = peak_from_levels(peaks, point, finer_peak, slopes_r);
     }
     return e;
 }

@@ -291,11 +291,16 @@ peak_error peak_floors(std::initializer_list<pressure_peak> peaks, int finest_n)
 error_bound coupled_change_bound(const three_levels& v, double floor) { return coupled_bound(v, floor, false, 1); }
 
 namespace {
-// Whether the peak's r or p over the three levels v (floor: their floor) is confirmed on level 2n: full coupling on
-// rough rollers, level n the finest, 2n within max_nodes, changes of opposite sign with the last above the floor.
+// Whether the peak's r or p over the three levels v (floor: their floor) is confirmed on level 2n: level n the finest,
+// 2n within max_nodes, changes of opposite sign with the last above the floor; every structure but full coupling on
+// smooth rollers (whose changes of opposite sign were measured bounded by twice the larger, 8(q)). Off full coupling
+// error_bound's rule takes alternating changes contracting 4 times or more as 2 |d2|, which a last change small by
+// chance makes no bound (session 26 audit F5, docs/formulation.md 8(e) "The peak confirmed on level 2n": product
+// integration's peak value of data/fig2a-T1.toml at n = 192, changes +2.9e-8, -2.9e-11 over 48, 96, 192, lay 6.9e-11
+// from n = 1000 against 5.9e-11), as the paper's c0, xi and P_H/P2 are confirmed there (estimate_from_levels).
 bool peak_confirms(const three_levels& v, double floor, const estimate_point& p) {
     const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
-    return p.structure == estimate_structure::full_coupling && p.rough && p.self == 2 && 2 * p.n <= max_nodes &&
+    return (p.structure != estimate_structure::full_coupling || p.rough) && p.self == 2 && 2 * p.n <= max_nodes &&
            d1 * d2 < 0.0 && std::fabs(d2) > floor;
 }
 }  // namespace
@@ -347,23 +352,35 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
     const auto bound = [&](double pressure_peak::*x, double floor) {
         const three_levels v{peaks[0].*x, peaks[1].*x, peaks[2].*x};
         const char* const name = x == &pressure_peak::r ? "the peak pressure's position" : "the peak pressure";
-        // Changes of opposite sign at full coupling on rough rollers (estimate_from_levels): level 2n's rule on n/2, n,
-        // 2n bounds level 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two estimates.
-        // As the table's quantities, refused where level 2n cannot be solved or n/2, n, 2n give no estimate (a ladder's
-        // rung climbs): the three levels' rule is no bound there (8(q) "Changes of opposite sign"). Not confirmed where
-        // the estimate is a lower bound already (p.lower_bound: level 2n not solved, the rung cannot answer).
+        // Changes of opposite sign (peak_confirms). At full coupling on rough rollers (estimate_from_levels): level 2n's
+        // rule on n/2, n, 2n bounds level 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two
+        // estimates. As the table's quantities, refused where level 2n cannot be solved or n/2, n, 2n give no estimate
+        // (a ladder's rung climbs): the three levels' rule is no bound there (8(q) "Changes of opposite sign"). Not
+        // confirmed where the estimate is a lower bound already (p.lower_bound: level 2n not solved, the rung cannot
+        // answer).
         const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+        // Off full coupling (8(e) "The peak confirmed on level 2n") the peak is never refused: where level 2n cannot be
+        // solved, the rule of levels without a visible order (below), twice the larger change; on n/2, n, 2n the
+        // paper's confirmation (confirm_error, as estimate_from_levels' for the table), bounding level n, their
+        // middle, and where that shows no order either, the same rule on them.
         const double fine_bound = [&]() {
             if (p.lower_bound || !peak_confirms(v, floor, p)) return 0.0;
             if (!above_tried) above_peak = finer();
             above_tried = true;
+            if (!above_peak && !coupled) return 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + floor;
             if (!above_peak) refuse(p, name, v, p.n >> p.self);
             const three_levels fine{v.middle, v.finest, (*above_peak).*x};
             const peak_error fine_floor = peak_floors({peaks[1], peaks[2], *above_peak}, 2 * p.n);
             const double f = x == &pressure_peak::r ? fine_floor.r : fine_floor.p;
+            const double up = std::fabs(fine.finest - fine.middle);
+            if (!coupled) {
+                const error_bound fb = confirm_error(fine, order, false, f);
+                return fb.resolved ? fb.value
+                                   : 2.0 * std::max(std::fabs(fine.middle - fine.coarsest), up) + up + f;
+            }
             const error_bound fb = coupled_bound(fine, f, false, order);
             if (!fb.resolved) refuse(p, name, fine, p.n >> (p.self - 1));
-            return fb.value + std::fabs(fine.finest - fine.middle);
+            return fb.value + up;
         }();
         // Level n is levels[self]; the coupled rule bounds the finest level: level n is farther by its changes above.
         const double own = p.self == 0 ? v.coarsest : p.self == 1 ? v.middle : v.finest;

@@ -180,10 +180,13 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
 // with its geometric tail, 8(e), not 8(q)'s three-level rule), with floors: for r twice the largest resolution of a level's position (the golden section's band, pressure_peak),
 // for p the pressure's rounding at the finest level. Where the levels show no order, twice the larger of the two
 // changes, plus the changes from level n up to the finest (docs/performance.md "The peak pressure's estimate"): no
-// refusal. At full coupling on rough rollers, where the changes change sign, level 2n's peak (`finer`, solved on demand)
-// confirms as the other quantities' (8(q) "Changes of opposite sign"), and as theirs, the peak is refused
-// (resolution_error) where level 2n cannot be solved or n/2, n, 2n show no estimate: a ladder's rung then climbs. Not
-// confirmed where point.lower_bound (the estimate is a lower bound already) or 2n > max_nodes (8(q)'s limit).
+// refusal. Where the changes change sign with the last above the floor, level 2n's peak (`finer`, solved on demand)
+// confirms (8(e) "The peak confirmed on level 2n"), on every structure but full coupling of smooth rollers: off full
+// coupling by the paper's confirmation on n/2, n, 2n, without refusal (where level 2n is not at hand or shows no order,
+// twice the larger change as above); at full coupling on rough rollers as the other quantities' (8(q) "Changes of
+// opposite sign"), and as theirs, the peak is refused (resolution_error) where level 2n cannot be solved or n/2, n, 2n
+// show no estimate: a ladder's rung then climbs. Not confirmed where point.lower_bound (the estimate is a lower bound
+// already) or 2n > max_nodes (8(q)'s limit).
 // `slopes_r`: at full coupling the position's bound from two levels' pressures (peak_position_from_slopes), the
 // estimate of r where it is the larger (with r's floor); 0 elsewhere.
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point,
