@@ -216,3 +216,31 @@ TEST(GivenLoad, EstimateCarriesTheWidthsError) {
         EXPECT_GE(p.estimate->c0, std::fabs(p.solution.c0() - at.c0_at_1000)) << at.Q_over_f;
     }
 }
+
+// The width's error on a curve swept in c0 (session 26 review R17; docs/formulation.md 2(j) "The width's error"): each
+// row's Q(c0) and xi(c0) are solved at level n's width, which carries lambda_n's error; the row is moved at its c0 (the
+// input, exact). data/steel-rollers.toml by the one-parameter method, `roughroll curve --sweep --points 7 --method
+// one-parameter --n N`, against the same rows at `--n 1000` (each at its own width; stored below). Without the width's
+// term Q's least ratio of estimate to distance was 0.47, 0.94, 0.89, 0.89 at n = 32, 64, 128, 256 (c0 = 2/3: 1.45e-6
+// against 3.08e-6 at n = 32); with it 2.41, 2.85, 2.98, 3.17.
+TEST(GivenLoad, SweptRowsCarryTheWidthsError) {
+    const double c0_at[] = {2.0 / 3.0, 1.0 / 3.0, 0.0, -1.0 / 3.0, -2.0 / 3.0, -1.0};
+    const double Q_at_1000[] = {0.11909477921258055, 0.2000052301447185, 0.2531296847559555, 0.2839552792043436,
+                                0.29749731678391433, 0.3};
+    const double xi_at_1000[] = {0.10724378061764638, 0.20846841932601626, 0.3098838258466356,
+                                 0.4154855526825807,  0.5317971640978141,  0.6889048441664071};
+    for (const int n : {32, 64, 128, 256}) {
+        scene s = read_scene(std::string(ROUGHROLL_DATA) + "/steel-rollers.toml");
+        override_solver(s, n, std::string("one-parameter"));
+        const scene_curve curve = curve_of(s, std::nullopt, 7, true);
+        ASSERT_EQ(curve.rows.size(), 7u);
+        for (int i = 0; i < 6; ++i) {
+            const curve_point& row = curve.rows[i + 1];  // row 0: full stick, Q = 0 exactly
+            SCOPED_TRACE("n = " + std::to_string(n) + ", c0 = " + std::to_string(c0_at[i]));
+            ASSERT_TRUE(row.estimate);
+            ASSERT_NEAR(row.solution.c0(), c0_at[i], 1e-15);
+            EXPECT_GE(row.estimate->Q, std::fabs(row.solution.Q - Q_at_1000[i]));
+            EXPECT_GE(row.estimate->xi, std::fabs(row.solution.xi - xi_at_1000[i]));
+        }
+    }
+}

@@ -85,8 +85,8 @@ contact::estimate_term width_error(const scene& s, const contact_width& w, const
     // The contact at the moved width, built once: a curve's rows share its normal problem (and a ladder's repeated
     // estimates of one rung their point).
     auto held = std::make_shared<std::unique_ptr<contact>>();
-    return [s, w, checkpoint, held](const tangential_solution& t, const normal_solution& p, error_estimate& e) {
-        if (e.Q != 0.0) return;  // a point swept in c0 is not given here (contact::at_stick_end)
+    return [s, w, checkpoint, held](const tangential_solution& t, const normal_solution& p, error_estimate& e,
+                                    bool swept) {
         const double x = w.a / w.a_hertz, step = width_step * x;
         if (!*held) {
             *held = std::make_unique<contact>(roughness_at(*s.physical, (x + step) * w.a_hertz), s.friction, s.solver,
@@ -94,12 +94,19 @@ contact::estimate_term width_error(const scene& s, const contact_width& w, const
             (*held)->set_checkpoint(checkpoint);
         }
         contact& moved = **held;
-        const tangential_solution m = moved.point(t.Q);
+        // A point swept in c0 (contact::at_stick_end) is moved at its c0, which is given, not solved: its Q and xi
+        // follow the width there (reported as the sweep reports them, Richardson's where the method extrapolates).
+        const tangential_solution m =
+            swept ? contact_internals::reported_at_stick_end(moved, t.c0()) : moved.point(t.Q);
         const double slope = (moved.normal().lambda - p.lambda) / step - 2.0 * x;  // F'(x), F = lambda_n(x) - x^2
         const double dx = e.lambda / std::fabs(slope);
         const double k = dx / step;  // per unit change over the step
         e.lambda = std::max(e.lambda, 2.0 * x * dx);
         e.xi += k * std::fabs(m.xi - t.xi);
+        if (swept) {
+            e.Q += k * std::fabs(m.Q - t.Q);
+            return;  // c0 exact, the paper's zone from r = -1, and no peak printed (estimate_from)
+        }
         e.c0 += k * std::max(std::fabs(m.c0() - t.c0()), std::fabs(m.end2() - t.end2()));
         if (e.start != 0.0) e.start += k * std::max(std::fabs(m.start() - t.start()), std::fabs(m.start2() - t.start2()));
         if (e.peak) {

@@ -110,13 +110,26 @@ tangential_solution contact::distribution(const tangential_solution& s) { return
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     std::optional<error_estimate> e = impl_->estimate(s);
-    if (e && impl_->term_) impl_->term_(s, normal(), *e);
+    if (e && impl_->term_) impl_->term_(s, normal(), *e, false);
     return e;
 }
 
 void contact::set_estimate_term(estimate_term term) { impl_->term_ = std::move(term); }
 
-contact::swept_point contact::at_stick_end(double c0) { return impl_->at_stick_end(c0); }
+contact::swept_point contact::at_stick_end(double c0) {
+    swept_point p = impl_->at_stick_end(c0);
+    if (p.estimate && impl_->term_) {
+        impl_->term_(p.solution, normal(), *p.estimate, true);
+        impl_->refuse_load_outside(p.solution, p.estimate->Q);  // Q's interval with the term, as without it
+    }
+    return p;
+}
+
+tangential_solution contact_internals::reported_at_stick_end(contact& c, double c0) {
+    tangential_solution own;
+    std::optional<tangential_solution> coarse;
+    return c.impl_->reported_at(c0, own, coarse);
+}
 
 std::optional<std::string> contact::beyond_every_n(double Q, int top, double tolerance) const {
     return impl_->model_->beyond_every_n(Q, top, tolerance);

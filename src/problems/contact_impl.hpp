@@ -32,6 +32,9 @@ struct contact::impl {
     // refines on its last factorisation while sweeping_near_ (dense_system::solve_near, docs/formulation.md
     // "Swept points refined on the previous factorisation"), the same solution to rounding.
     swept_point swept_at(double c0);  // at_stick_end's point, by the route sweeping_near_ picks
+    // That point as reported, without its estimate: level n's at c0 (`own`), with Richardson's Q and xi where the
+    // method extrapolates (from the companion's point at c0, `coarse`); no load checked.
+    tangential_solution reported_at(double c0, tangential_solution& own, std::optional<tangential_solution>& coarse);
     // at_stick_end's refusal (resolution_error) of a load Q(c0) (with `error`: its interval
     // Q +- error) outside [0, f] at an inner c0.
     void refuse_load_outside(const tangential_solution& s, std::optional<double> error) const;

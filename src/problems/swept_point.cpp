@@ -47,18 +47,9 @@ contact::swept_point contact::impl::at_stick_end(double c0) {
 }
 
 contact::swept_point contact::impl::swept_at(double c0) {
-    tangential_solution s = model_->at_stick_end(c0, true, sweeping_near_);
-    const tangential_solution own = s;
     std::optional<tangential_solution> coarse;  // level n/2 at c0: the companion, often an estimate level too
-    if (reported_) {
-        // Richardson's rule on Q(c0) and xi(c0) at the same c0.
-        coarse = companion_->at_stick_end(c0, false, sweeping_near_);
-        // Q = 0 and f at c0 = 1 and -1 are exact on every level: kept exact (Carter's columns).
-        if (c0 != 1.0 && c0 != -1.0) s.Q = richardson(s.Q, coarse->Q);
-        s.xi = richardson(s.xi, coarse->xi);
-        if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
-            throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
-    }
+    tangential_solution own;
+    tangential_solution s = reported_at(c0, own, coarse);
     // A load outside [0, f] is no point of this curve (docs/robustness.md, "Curves with refused
     // points"): the sweep's slip zone carries q = +f p (sign +1), so |q| <= f p of (3.3) gives
     // |Q| <= f int p = f, and Q(c0) rises from 0 at full stick (c0 = 1) to f (c0 = -1); a negative
@@ -78,6 +69,22 @@ contact::swept_point contact::impl::swept_at(double c0) {
     refuse_load_outside(s, e.Q);
     if (!s.checks.hold()) return {s, std::nullopt};  // as estimate(): no bound for such a point
     return {s, e};
+}
+
+tangential_solution contact::impl::reported_at(double c0, tangential_solution& own,
+                                               std::optional<tangential_solution>& coarse) {
+    tangential_solution s = model_->at_stick_end(c0, true, sweeping_near_);
+    own = s;
+    if (reported_) {
+        // Richardson's rule on Q(c0) and xi(c0) at the same c0.
+        coarse = companion_->at_stick_end(c0, false, sweeping_near_);
+        // Q = 0 and f at c0 = 1 and -1 are exact on every level: kept exact (Carter's columns).
+        if (c0 != 1.0 && c0 != -1.0) s.Q = richardson(s.Q, coarse->Q);
+        s.xi = richardson(s.xi, coarse->xi);
+        if (!(std::isfinite(s.Q) && std::isfinite(s.xi)))
+            throw numerical_error("extrapolation: Q(c0) or the creep is not finite (roughness parameters too large?)");
+    }
+    return s;
 }
 
 void contact::impl::refuse_load_outside(const tangential_solution& s, std::optional<double> error) const {

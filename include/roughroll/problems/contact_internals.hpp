@@ -28,6 +28,9 @@ struct contact_internals {
     // The levels of c's estimate at Q solved before c's point, kept for c.point(Q) (point_model::levels_before; the
     // ladder's rule (a'), docs/formulation.md 8(q)); empty where c's model solves none first.
     static std::vector<estimate_level> levels_before(contact& c, double Q);
+    // c's point at the stick zone's end c0 as contact::at_stick_end reports it (Richardson's Q and xi where the method
+    // extrapolates), without its estimate or the load's check: the swept point's width error (io/scene_point.cpp).
+    static tangential_solution reported_at_stick_end(contact& c, double c0);
     // Johnson's zones workspace of c's level (dissimilar rollers, either coupling level); null for any other model.
     static const dissimilar_zones* johnson_zones(contact& c);
 };
