@@ -5,7 +5,8 @@
 //     2n give no estimate (the program before kept the three levels' rule there, silently);
 //   - a ladder's rung whose estimate from n/4, n/2, n already fails the ladder's tolerance does not solve level 2n: its
 //     estimate is a lower bound (a confirmation only raises an estimate, so the rung cannot answer either way), and
-//     rung 2n solves that level as its own point.
+//     rung 2n solves that level as its own point;
+//   - off full coupling the peak confirms on level 2n too, never refused (8(e) "The peak confirmed on level 2n").
 #include <array>
 #include <optional>
 #include <string>
@@ -150,4 +151,20 @@ TEST(LevelReuse, RungThatCannotAnswerDoesNotSolveLevelTwoN) {
     EXPECT_FALSE(one_sign.lower_bound);
     EXPECT_TRUE(asked.empty());
     EXPECT_EQ(solved, 2);
+}
+
+// Off full coupling (docs/formulation.md 8(e) "The peak confirmed on level 2n", session 26 audit F5): the paper's
+// problem and dissimilar rollers at Johnson's level by product, the same positions +2, -0.5 over n/4, n/2, n.
+// error_bound's rule takes the ratio -4 as twice the last change, 1 (what the program printed before). Level 2n at 5.5:
+// n/2, n, 2n show no order (-0.5, +3), so twice their larger change plus the change above n, 9. Level 2n not at hand:
+// twice the larger change of the three levels, 4. Never refused off full coupling.
+TEST(LevelReuse, PeakConfirmedOffFullCoupling) {
+    const std::array<pressure_peak, 3> peaks{peak_at(1.0), peak_at(3.0), peak_at(2.5)};
+    for (const estimate_structure s : {estimate_structure::paper, estimate_structure::dissimilar}) {
+        const estimate_point p{method::product, 64, 2, s, false, true, "Q", 0.0};
+        EXPECT_TRUE(peak_asks_level_two_n(peaks, p));
+        EXPECT_EQ(peak_from_levels(peaks, p, [] { return std::optional<pressure_peak>(peak_at(5.5)); }).r, 9.0);
+        EXPECT_EQ(peak_from_levels(peaks, p, [] { return std::optional<pressure_peak>(); }).r, 4.0);
+        EXPECT_FALSE(peak_asks_level_two_n({peak_at(1.0), peak_at(3.0), peak_at(3.5)}, p)) << "one sign: not asked";
+    }
 }
