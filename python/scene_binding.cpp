@@ -5,7 +5,8 @@
 //             the normal problem (3.19)-(3.20), c0 for the load by Brent on Q(c0) of (4.5),
 //             the tangential problem (3.21)-(3.22), its error estimate; to_json (io/output.hpp).
 //   curve:    creep_curve at given loads, or swept_curve in c0 (contact.hpp), with Carter's
-//             curve and for a physical scene xi1 of to_si (physical_scene.hpp).
+//             curve and for a physical scene xi1 of to_si (physical_scene.hpp) with the estimates of
+//             estimate_si (io/si_estimate.hpp), as the CSV's.
 //   traction: p(r) of (4.1), p1(r) of (3.15) and the slip velocity v(r) of (3.6) on a grid.
 // Every solve runs with the GIL released; nothing here touches a Python object meanwhile.
 #include <cmath>
@@ -24,6 +25,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/io/si_estimate.hpp"
 #include "roughroll/io/traction_table.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/problems/creep_curve.hpp"
@@ -128,6 +130,7 @@ struct curve_columns {
     std::vector<double> stick_start_error;    // its estimate (the CSV's stick_start_error_estimate)
     std::vector<std::string> zone_path;       // single, general or no-slip (the layout's route); "" when refused
     std::vector<double> P1, xi1, xi1_carter;  // physical scenes only
+    std::vector<double> P1_error, xi1_error;  // their estimates (estimate_si, io/si_estimate.hpp; NaN: none)
     std::vector<int> n;                       // each row's n (the ladder's rung; 0 for a refused row)
     std::vector<std::string> status;          // "ok" or "refused"
     std::vector<std::string> refused;         // one line per refused row
@@ -183,11 +186,19 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
                 out.P1.push_back(at_Q ? si->P1 : nan);
                 out.xi1.push_back(nan);
                 out.xi1_carter.push_back(si->xi1_carter);
+                // As the CSV: a given load's P1 = Q P2 exactly; else none.
+                out.P1_error.push_back(at_Q && si->width == width_rule::given_load ? 0.0 : nan);
+                out.xi1_error.push_back(nan);
             }
         } else if (const std::optional<si_point> si = si_of(c.settled, width, t)) {
             out.P1.push_back(si->P1);
             out.xi1.push_back(si->xi1);
             out.xi1_carter.push_back(si->xi1_carter);
+            const std::optional<si_estimate> e =
+                row.estimate ? std::optional<si_estimate>(estimate_si(*si, *row.estimate, t.Q, t.c0(), t.xi))
+                             : std::nullopt;
+            out.P1_error.push_back(e ? e->P1 : nan);
+            out.xi1_error.push_back(e ? e->xi1 : nan);
         }
     }
     return out;
@@ -331,6 +342,8 @@ void bind_scene(py::module_& m) {
                     d["P1_N_per_m"] = array_of(c.P1);
                     d["xi1"] = array_of(c.xi1);
                     d["xi1_carter"] = array_of(c.xi1_carter);
+                    d["P1_N_per_m_error_estimate"] = array_of(c.P1_error);
+                    d["xi1_error_estimate"] = array_of(c.xi1_error);
                 }
                 return d;
             },

@@ -302,21 +302,27 @@ TEST(Curve, CsvPhysicalColumnsOfRefusedRows) {
     std::string line;
     std::getline(in, line);
     const std::vector<std::string> header = split(line);
-    ASSERT_EQ(header.size(), 20u);
+    ASSERT_EQ(header.size(), 22u);
     ASSERT_EQ(header[13], "stick_start_error_estimate");  // after stick_start (session 26)
     ASSERT_EQ(header[15], "P1_N_per_m");
     ASSERT_EQ(header[18], "n");  // each row's n (empty: not given to write_curve_csv)
+    ASSERT_EQ(header[19], "status");
+    ASSERT_EQ(header[20], "P1_N_per_m_error_estimate");  // after status (session 27: no column moves)
+    ASSERT_EQ(header[21], "xi1_error_estimate");
     int refused = 0;
     for (std::size_t i = 0; std::getline(in, line); ++i) {
         const std::vector<std::string> r = split(line);
         ASSERT_EQ(r.size(), header.size()) << line;
         EXPECT_EQ(std::stod(r[15]), loads[i] * 1.0e5);
         EXPECT_NE(r[17], "");  // Carter's xi1 of the given load
-        if (r.back() == "refused") {
+        if (r[19] == "refused") {
             ++refused;
             EXPECT_EQ(r[16], "") << "xi1 of a refused row";
             EXPECT_EQ(r[13], "") << "the start's estimate of a refused row";
+            EXPECT_EQ(r[20], "0") << "the given load's P1 = Q P2, exact";
+            EXPECT_EQ(r[21], "") << "xi1's estimate of a refused row";
         } else {
+            EXPECT_EQ(r[19], "ok");
             EXPECT_EQ(
                 r[16],
                 shortest(to_si(*s.physical, *width, loads[i], f, curve[i].solution.c0(), curve[i].solution.xi).xi1));

@@ -14,6 +14,7 @@
 //                                        error_estimate.hpp, coupling_summary.hpp)
 //   creep_curve, swept_curve, curve_loads  a contact's creep curve, row by row (problems/creep_curve.hpp)
 //   si_point, contact_width              a physical scene's results in SI units (model/physical_scene.hpp)
+//   si_estimate, estimate_si             their error estimates, from the dimensionless ones (io/si_estimate.hpp)
 //   carter, carter_at_stick_end          Carter's closed form for smooth cylinders (model/carter.hpp)
 //   roughness, dissimilar                the rollers' roughness T, A (3.26) and Dundurs' pair (model/)
 //   solver_options, method               the method, n, zone search and tolerance (numerics/method.hpp)
@@ -33,6 +34,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/io/si_estimate.hpp"
 #include "roughroll/model/carter.hpp"
 #include "roughroll/model/dissimilar.hpp"
 #include "roughroll/model/physical_scene.hpp"

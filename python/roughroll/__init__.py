@@ -407,8 +407,9 @@ class Scene:
         "no-slip" where the edge layers were neglected, formulation 8(n); "" for a refused row,
         an array of str), n (the row's nodes: the ladder's
         choice without an explicit n; 0 for a refused row), for a
-        physical scene P1_N_per_m, xi1, xi1_carter, and status ("ok" or "refused", an array of
-        str).  The normal problem is solved once.
+        physical scene P1_N_per_m, xi1, xi1_carter with P1_N_per_m_error_estimate and
+        xi1_error_estimate (the row's estimates scaled, docs/formulation.md 2(j); NaN where the
+        CSV is empty), and status ("ok" or "refused", an array of str).  The normal problem is solved once.
 
         A point the method cannot answer honestly at this n (the program's ``roughroll:
         refused:`` line and exit status 3) does not stop the curve: its row has status

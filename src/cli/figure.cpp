@@ -177,10 +177,16 @@ int run_figure(const figure_options& o) {
     std::ostream& out = files.csv_file.stream();
     out << "# roughroll " << version() << "\n";
     out << "# Fig. " << o.which << ", method " << to_string(options.how) << ", n = " << options.nodes()
-        << "; curves swept in c0, each with its own Q(c0)\n";
+        << "; curves swept in c0, each with its own Q(c0); *_error_estimate: the estimates of Q_over_f_i and "
+           "xi_over_f_i (empty: none); Carter's columns a closed form\n";
     out << "c0";
     for (std::size_t i = 0; i < curves.size(); ++i) out << ",Q_over_f_" << i + 1 << ",xi_over_f_" << i + 1;
-    out << ",Q_over_f_carter,xi_carter_over_f,checks_hold\n";
+    // Each curve's estimates after the columns the gnuplot script reads by number: Q(c0)'s and xi's divided by f
+    // (contact::at_stick_end, three levels; c0 is given). Carter's columns are his closed form.
+    out << ",Q_over_f_carter,xi_carter_over_f,checks_hold";
+    for (std::size_t i = 0; i < curves.size(); ++i)
+        out << ",Q_over_f_" << i + 1 << "_error_estimate,xi_over_f_" << i + 1 << "_error_estimate";
+    out << "\n";
     for (std::size_t p = 0; p < results[0].size(); ++p) {
         const double c0 = results[0][p].solution.c0(), rho = 0.5 * (1.0 + c0);
         out << shortest(c0);
@@ -191,8 +197,13 @@ int run_figure(const figure_options& o) {
             hold = hold && sol.checks.hold();
         }
         // Carter at the same c0: Q/f = 1 - rho^2, xi/f = (2/pi)(1 - rho).
-        out << ',' << shortest(1.0 - rho * rho) << ',' << shortest(M_2_PI * (1.0 - rho)) << ',' << (hold ? 1 : 0)
-            << '\n';
+        out << ',' << shortest(1.0 - rho * rho) << ',' << shortest(M_2_PI * (1.0 - rho)) << ',' << (hold ? 1 : 0);
+        for (const auto& curve : results) {
+            const std::optional<error_estimate>& e = curve[p].estimate;
+            out << ',' << (e ? shortest(e->Q / figure_friction) : std::string()) << ','
+                << (e ? shortest(e->xi / figure_friction) : std::string());
+        }
+        out << '\n';
     }
     files.csv_file.commit();
 

@@ -25,6 +25,8 @@
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/zone_layout.hpp"
 #include "roughroll/io/output.hpp"
+#include "roughroll/io/scene_point.hpp"
+#include "roughroll/io/si_estimate.hpp"
 #include "roughroll/io/traction_table.hpp"
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
@@ -225,12 +227,11 @@ int run_traction(const traction_options& o) {
     progress("traction " + name + ": solving the point at Q = " + shortest(Q) +
              (s.physical ? " (its contact width first)" : ""));
     const auto start = std::chrono::steady_clock::now();
-    // Without n, the ladder chooses it as for `point` (problems/level_ladder.hpp; refused as there),
-    // and the tractions are those of that n: the point at its n, exactly as with --n.
-    if (s.solver.n == 0) s.solver.n = solve_point(s, Q).solved.normal().rule.n;
-    const std::optional<contact_width> width = settle_width(s, nullptr, Q);
-    contact c(s.surfaces, s.friction, s.solver, s.materials);
-    const tangential_solution solution = c.point(Q);
+    // The point as `point` solves it (without n the ladder chooses n: problems/level_ladder.hpp; refused as there), with
+    // its estimate and width, as Python's Scene.traction: the header's numbers carry the point's estimates.
+    scene_point sp = solve_point(s, Q);
+    contact& c = sp.solved;
+    const tangential_solution& solution = sp.solution;
     const tangential_solution level = c.distribution(solution);  // the distributions' own c0 and xi
     {
         std::ostringstream line;
@@ -245,7 +246,8 @@ int run_traction(const traction_options& o) {
     std::vector<double> grid(static_cast<std::size_t>(o.points));
     for (int i = 0; i < o.points; ++i)
         grid[i] = static_cast<double>(2 * i - (o.points - 1)) / (o.points - 1);  // -1 and 1 exactly
-    const std::optional<si_point> si = si_of(s, width, solution);
+    const point_report report = sp.report();
+    const std::optional<si_point>& si = report.si;
     const std::vector<traction_row> rows = traction_table(c, level, grid, Q, f, si);
     double p_max = 0.0;
     double v_low = 0.0, v_high = 0.0;
@@ -275,6 +277,19 @@ int run_traction(const traction_options& o) {
         out << "# SI: a = " << shortest(si->a) << " m (Hertz " << shortest(si->a_hertz)
             << " m), P2 = " << shortest(si->P2) << " N/m, xi1 = " << shortest(si->xi1)
             << "; x1_m = r a, p2_Pa = p P2/a, p1_Pa = p1 P2/a\n";
+    // The point's estimates (the rows' distributions have none of their own: docs/cli.md), the SI ones scaled
+    // (docs/formulation.md 2(j), "The SI values' estimates").
+    if (sp.estimate) {
+        out << "# error estimate: c0 " << shortest(sp.estimate->c0) << ", xi " << shortest(sp.estimate->xi)
+            << ", P_H/P2 " << shortest(sp.estimate->lambda);
+        if (si) {
+            const si_estimate e = estimate_si(*si, *sp.estimate, solution.Q, solution.c0(), solution.xi);
+            out << "; SI: a " << shortest(e.a) << " m, P2 " << shortest(e.P2) << " N/m, xi1 " << shortest(e.xi1);
+        }
+        out << "\n";
+    } else {
+        out << "# error estimate: none (as `roughroll point` says why)\n";
+    }
     out << "r,p,p1,f_p,minus_f_p,zone,slip_velocity,p_hertz,p1_carter" << (si ? ",x1_m,p2_Pa,p1_Pa" : "") << "\n";
     for (const auto& row : rows) {
         out << shortest(row.r) << ',' << shortest(row.p) << ',' << shortest(row.p1) << ',' << shortest(f * row.p) << ','

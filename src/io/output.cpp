@@ -10,6 +10,7 @@
 
 #include <gsl/gsl_math.h>
 
+#include "roughroll/io/si_estimate.hpp"
 #include "roughroll/model/carter.hpp"
 #include "roughroll/problems/edge_layers.hpp"
 #include "roughroll/problems/creep_curve.hpp"
@@ -77,6 +78,22 @@ nlohmann::json layers_json(const tangential_solution& s, bool full) {
                              {"trailing", l.trailing}};
     if (full) layers["hertz_load_ratio_bound"] = l.lambda_bound;  // 8(t): the pressure moves with the layers
     return layers;
+}
+
+// The SI values' estimates under the keys of the values they bound (si_point's JSON); p_centre_Pa has none (the
+// dimensionless pressure at the centre has no estimate of its own), a_hertz_m and xi1_carter are closed forms.
+nlohmann::json si_estimate_json(const si_estimate& e) {
+    const auto optional = [](const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); };
+    return {{"a_m", e.a},
+            {"a_over_a_hertz", e.a_over_a_hertz},
+            {"c_m", e.c},
+            {"P_H_N_per_m", e.P_H},
+            {"P2_N_per_m", e.P2},
+            {"P1_N_per_m", e.P1},
+            {"xi1", e.xi1},
+            {"p_peak_Pa", optional(e.p_peak)},
+            {"x_peak_m", optional(e.x_peak)},
+            {"roughness_at_a_relative", e.surfaces_relative}};
 }
 
 std::string term_text(const roughness_term& t) {
@@ -148,7 +165,7 @@ nlohmann::json to_json(const point_report& r) {
         estimate["zone_ends"] = ends;
     }
     nlohmann::json si = nullptr;
-    if (r.si)
+    if (r.si) {
         si = {{"a_m", r.si->a},
               {"a_hertz_m", r.si->a_hertz},
               {"a_over_a_hertz", r.si->a / r.si->a_hertz},
@@ -165,6 +182,11 @@ nlohmann::json to_json(const point_report& r) {
               {"roughness_at_a",
                {{"cylinder1", cylinder_json(r.si->surfaces.cylinder1)},
                 {"cylinder2", cylinder_json(r.si->surfaces.cylinder2)}}}};
+        // Each SI value's estimate from the dimensionless ones by its scaling (docs/formulation.md 2(j), "The SI
+        // values' estimates"); none where the point has none (error_estimate_absent says why).
+        si["error_estimate"] = r.estimate ? si_estimate_json(estimate_si(*r.si, *r.estimate, s.Q, s.c0(), s.xi, peak))
+                                          : nlohmann::json(nullptr);
+    }
     nlohmann::json coupling = nullptr;  // docs/formulation.md 8(e): the level, and what full coupling measured
     if (s.forcing != 0.0) coupling = {{"level", r.coupling ? "full" : "johnson"}};
     if (r.coupling)
@@ -301,6 +323,18 @@ void write_summary(std::ostream& out, const point_report& r) {
     };
     cylinder("cylinder 1", p.surfaces.cylinder1);
     cylinder("cylinder 2", p.surfaces.cylinder2);
+    // The SI values' estimates (docs/formulation.md 2(j), "The SI values' estimates"), as the dimensionless line above.
+    if (!r.estimate) {
+        out << "  error estimate      " << no_estimate_reason(r) << "\n";
+        return;
+    }
+    const si_estimate e = estimate_si(p, *r.estimate, s.Q, s.c0(), s.xi, peak);
+    out << "  error estimate      a " << shortest(e.a) << " m (a/a_H " << shortest(e.a_over_a_hertz) << "), c " << shortest(e.c) << " m, P2 " << shortest(e.P2)
+        << " N/m, P1 " << shortest(e.P1) << " N/m, P_H " << shortest(e.P_H) << " N/m, xi1 " << shortest(e.xi1);
+    if (e.p_peak && e.x_peak)
+        out << ", peak pressure " << shortest(*e.p_peak) << " Pa, its x1 " << shortest(*e.x_peak) << " m";
+    out << ", T and A at a " << shortest(e.surfaces_relative)
+        << " relative   (the dimensionless estimates scaled; pressure at centre: none)\n";
 }
 
 void write_curve_header(std::ostream& out, const curve_header& h) {
@@ -329,14 +363,17 @@ void write_curve_header(std::ostream& out, const curve_header& h) {
            "and Carter's columns filled)\n";
     if (h.physical)
         out << "# SI: P1_N_per_m = Q P2, the tangential load in N/m; xi1 = C P2 xi/a, the creep ratio (dimensionless); "
-               "xi1_carter: Carter's creep ratio for the same loads on smooth cylinders\n";
+               "xi1_carter: Carter's creep ratio for the same loads on smooth cylinders (a closed form); "
+               "P1_N_per_m_error_estimate, xi1_error_estimate (after status): their estimates, the row's scaled "
+               "(docs/formulation.md 2(j); empty: none)\n";
 }
 
 void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, const std::optional<si_context>& si,
                      const std::vector<int>& nodes) {
     out << "Q,Q_over_f,c0,xi,xi_over_f,xi_carter,c0_carter,checks_hold,c0_error_estimate,xi_error_estimate,"
            "Q_error_estimate,zones,stick_start,stick_start_error_estimate,zone_path"
-        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",n,status\n";
+        << (si ? ",P1_N_per_m,xi1,xi1_carter" : "") << ",n,status"
+        << (si ? ",P1_N_per_m_error_estimate,xi1_error_estimate" : "") << "\n";
     if (!nodes.empty() && nodes.size() != curve.size())
         throw std::invalid_argument("write_curve_csv: " + std::to_string(nodes.size()) + " n for " +
                                     std::to_string(curve.size()) + " rows");
@@ -363,7 +400,10 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
                 const si_point p = to_si(si->scene, si->widths[i], smooth_Q, s.f, 0.0, 0.0);
                 out << ',' << cell(at_Q, p.P1) << ",," << shortest(p.xi1_carter);
             }
-            out << ',' << n_cell(i) << ",refused\n";
+            out << ',' << n_cell(i) << ",refused";
+            // P1 = Q P2 of a given load and Q is exact; the load the paper's width carries has no estimate here.
+            if (si) out << ',' << cell(at_Q && si->scene.width == width_rule::given_load, 0.0) << ',';
+            out << '\n';
             continue;
         }
         out << shortest(s.Q) << ',' << shortest(s.Q / s.f) << ',' << shortest(s.c0()) << ',' << shortest(s.xi) << ','
@@ -375,11 +415,20 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << ",,";
         out << ',' << s.layout.zones.size() << ',' << shortest(s.start()) << ','
             << (row.estimate ? shortest(row.estimate->start) : std::string()) << ',' << zone_path(s);
+        std::optional<si_point> p;
         if (si) {
-            const si_point p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0(), s.xi);
-            out << ',' << shortest(p.P1) << ',' << shortest(p.xi1) << ',' << shortest(p.xi1_carter);
+            p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0(), s.xi);
+            out << ',' << shortest(p->P1) << ',' << shortest(p->xi1) << ',' << shortest(p->xi1_carter);
         }
-        out << ',' << n_cell(i) << ",ok\n";
+        out << ',' << n_cell(i) << ",ok";
+        if (p && row.estimate) {
+            // docs/formulation.md 2(j), "The SI values' estimates": the row's estimates scaled (Carter's xi1 a closed form).
+            const si_estimate e = estimate_si(*p, *row.estimate, s.Q, s.c0(), s.xi);
+            out << ',' << shortest(e.P1) << ',' << shortest(e.xi1);
+        } else if (p) {
+            out << ",,";
+        }
+        out << '\n';
     }
 }
 

@@ -146,10 +146,12 @@ si_point to_si(const physical_scene& s, const contact_width& w, double Q, double
     p.P2 = load;
     p.P1 = Q * load;
     p.xi1 = C * load * xi / w.a;  // xi = a xi1/(C P2), docs/formulation.md 8(a)
+    p.creep_scale = C * load / w.a;
     p.xi1_carter = C * load * smooth_point.xi / a_load;
     p.p_scale = load / w.a;
     p.width_iterations = w.iterations;
     p.surfaces = roughness_at(s, w.a);
+    p.width = s.width;
     // hertz_half_width checked the scales at a_H; a >= a_H/6.5e5 and a <= R/10 keep them finite
     // in practice, and this check keeps that promise for every value reported.
     const std::string inputs = materials(s) + ", a = " + shortest(w.a) + " m, P2 = " + shortest(load) + " N/m";

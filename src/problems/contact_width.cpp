@@ -18,7 +18,7 @@ constexpr double width_step = 1.25;  // bracket expansion factor of the width se
 constexpr int max_width_steps = 60;  // 1.25^60 = 6.5e5 a_H: far beyond any physical width
 constexpr int max_width_iterations = 100;
 constexpr double max_width_over_radius = 0.1;  // a/R above which (3.7)'s half-spaces are refused
-constexpr double width_tolerance = 1e-12;      // relative, in a: Brent's interval, the polish's last step
+constexpr double width_tolerance = width_search_tolerance;  // contact_width.hpp
 constexpr int max_polish_steps = 8;            // secant steps from the cheap level's root
 
 // "contact width search at a = ... m (a/a_H = ...)": where a failure of the normal problem

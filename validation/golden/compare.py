@@ -5,10 +5,11 @@
     validation/golden/compare.py REFERENCE NEW
 
 Every number must be identical, or have moved by no more than its error estimate: a JSON point's
-c0, xi, hertz_load_ratio, stick_start and pressure_peak's p and r against their error_estimate entries
-(the peak's SI values against those scaled), a curve row's c0, xi and Q against its *_error_estimate
-columns; another derived number (xi_over_f, the other SI values) against the largest relative estimate
-of its point or row. Estimates and iteration counts may change (listed). Timings and the
+c0, xi, hertz_load_ratio, stick_start and pressure_peak's p and r against their error_estimate entries,
+its SI values against si.error_estimate's (T and A at a by its roughness_at_a_relative; where neither
+folder has them, the peak's SI values against the dimensionless ones scaled), a curve's or figure's
+column X against its column X_error_estimate; another derived number (xi_over_f, p_centre_Pa) against
+the largest relative estimate of its point or row. Estimates and iteration counts may change (listed). Timings and the
 version are ignored; a JSON key or CSV column only in NEW is listed as added, and changed
 header lines of a CSV as header. Exit 0 when nothing moved outside its estimate, 1 otherwise; one line per change.
 """
@@ -42,6 +43,17 @@ def flatten(value, prefix=""):
             yield from flatten(v, f"{prefix}[{i}]")
     else:
         yield prefix, value
+
+
+def si_allowance(key, old, old_flat, new_flat):
+    """The SI value's own estimate (si.error_estimate, the larger of the two folders'), or None where neither has one."""
+    if key.startswith("si.roughness_at_a."):
+        est_key, factor = "si.error_estimate.roughness_at_a_relative", abs(old)
+    else:
+        est_key, factor = "si.error_estimate." + key[len("si."):], 1.0
+    ests = [f.get(est_key) for f in (old_flat, new_flat)]
+    ests = [e for e in ests if isinstance(e, (int, float)) and not isinstance(e, bool)]
+    return max(ests) * factor if ests else None
 
 
 def relative_scale(values, estimates):
@@ -93,13 +105,16 @@ def compare_json(report, name, old, new):
         o, n = old_flat[key], new_flat[key]
         if o == n:
             continue
-        if key.startswith("error_estimate"):
+        if key.startswith("error_estimate") or key.startswith("si.error_estimate"):
             report.note("estimate", name, f"{key}: {o!r} -> {n!r}")
             continue
         if key in DIAGNOSTIC:
             report.note("diagnostic", name, f"{key}: {o!r} -> {n!r}")
             continue
-        allowance = None
+        allowance = si_allowance(key, o, old_flat, new_flat) if key.startswith("si.") else None
+        if allowance is not None:
+            compare_numbers(report, name, key, o, n, allowance)
+            continue
         base = SCALED.get(key)
         est_key = ESTIMATED.get(base or key)
         if est_key is not None and isinstance(old_est.get(est_key), (int, float)):

@@ -55,7 +55,9 @@ void write_summary(std::ostream& out, const point_report& r);
 // curve swept in c0, the Q estimate 0 on a curve at given loads),zones (the number of stick and
 // slip zones),stick_start (-1 in the paper's structure); shortest round-trip digits.
 // For a physical scene (`si` given: its scene and each row's contact width, one width for all
-// rows but where the width follows the tangential load) the columns P1_N_per_m,xi1,xi1_carter follow. The last column, status, is `ok` or `refused`: a refused
+// rows but where the width follows the tangential load) the columns P1_N_per_m,xi1,xi1_carter follow, and after status
+// P1_N_per_m_error_estimate,xi1_error_estimate (estimate_si, io/si_estimate.hpp: the row's estimates scaled; empty
+// without; a refused row's given P1 = Q P2 an exact 0 at a given load). The column status is `ok` or `refused`: a refused
 // row (curve_point, contact.hpp) has only its given load Q with Q_over_f and Carter's columns
 // (P1_N_per_m and xi1_carter too), or its given c0 on a swept curve; every other field is empty.
 struct si_context {

@@ -103,6 +103,8 @@ struct si_point {
     double p_scale;        // Pa per unit of the dimensionless p, p1: P2/a
     int width_iterations;  // of the width search
     roughness surfaces;    // T, A of (3.26) at the half-width a
+    double creep_scale;    // C P2/a: xi1 = creep_scale xi (the SI estimates scale by it, io/si_estimate.hpp)
+    width_rule width;      // how a was chosen: given_load (a follows lambda) or hertz (a = a_H, the load follows)
 };
 
 si_point to_si(const physical_scene& s, const contact_width& w, double Q, double f, double c0, double xi);

@@ -11,6 +11,10 @@
 
 namespace roughroll {
 
+// The width search's relative tolerance in a (Brent's interval, the polish's last step): the width found is within it
+// of its lambda's root (docs/formulation.md 2(j)); the SI values' estimates add it (io/si_estimate.hpp).
+inline constexpr double width_search_tolerance = 1e-12;
+
 // The half-width by the scene's width rule. `load_ratio` gives lambda = P_H/P2 for the
 // roughness at a trial width (the normal problem (3.19)-(3.20) as a contact solves it).
 // given_load: gsl_root_fsolver_brent on F(a) = lambda(a) - (a/a_H)^2, bracketed from a_H
