@@ -4,6 +4,7 @@
 // reference); a far matrix falls back to a fresh factorisation (the same solution bit for bit);
 // a singular one is refused as a fresh factorisation refuses it. solve() alone keeps no
 // factorisation to refine on: the first solve_near() factorises.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -33,6 +34,15 @@ void assemble(dense_system& s, double t) {
         }
     }
 }
+
+// The quadruple-precision reference: GCC's __float128 where the target has it (x86-64), else long double (quad on
+// aarch64; on a target where it is neither, the reference is weaker than the bound it checks).
+#if defined(__SIZEOF_FLOAT128__)
+using quad = __float128;
+#else
+using quad = long double;
+#endif
+quad magnitude(quad v) { return v < 0 ? -v : v; }
 
 std::vector<double> copy(const gsl_vector* x) {
     std::vector<double> v(x->size);
@@ -146,4 +156,113 @@ TEST(DenseSystem, FactorisedSolveIsTheFreshSolve) {
     assemble(kept, 0.3);
     kept.solve_near("near");
     EXPECT_FALSE(kept.holds_factors());
+}
+
+// The a posteriori rounding bound (docs/formulation.md 8(w), "The solve's rounding, a posteriori") on the Pascal matrix
+// of order 10, P_ij = binomial(i + j, i) (kappa about 1e10), with integer x* and b = P x* exact in doubles: the
+// computed solution's error is known exactly. Each component's bound holds and lies within 10 times the error of the
+// worst component (the bound is the refinement's dx, to first order the error itself).
+TEST(DenseSystem, RoundingBoundHoldsOnThePascalMatrix) {
+    constexpr std::size_t m = 10;
+    dense_system s(m);
+    s.keep_matrix();
+    std::vector<double> exact(m);
+    for (std::size_t j = 0; j < m; ++j) exact[j] = static_cast<double>(j % 3) - 1.0 + static_cast<double>(j);
+    for (std::size_t i = 0; i < m; ++i) {
+        double b = 0.0;
+        for (std::size_t j = 0; j < m; ++j) {
+            double c = 1.0;  // binomial(i + j, i)
+            for (std::size_t k = 1; k <= i; ++k) c = c * static_cast<double>(j + k) / static_cast<double>(k);
+            gsl_matrix_set(s.matrix(), i, j, std::round(c));
+            b += std::round(c) * exact[j];
+        }
+        gsl_vector_set(s.rhs(), i, b);
+    }
+    const std::vector<double> x = copy(s.solve("pascal"));
+    double worst = 0.0;
+    for (std::size_t i = 0; i < m; ++i) worst = std::max(worst, std::fabs(x[i] - exact[i]));
+    ASSERT_GT(worst, 1e-9);  // an ill-conditioned solve: the error is there to bound
+    for (std::size_t i = 0; i < m; ++i) {
+        SCOPED_TRACE(i);
+        const double bound = s.rounding_bound(i, 0.0);
+        EXPECT_GE(bound, std::fabs(x[i] - exact[i]));
+        EXPECT_LE(bound, 10.0 * worst);
+    }
+    dense_system plain(m);  // no kept matrix: no bound
+    gsl_matrix_set_identity(plain.matrix());
+    plain.solve("identity");
+    EXPECT_THROW(plain.rounding_bound(0, 0.0), numerical_error);
+}
+
+// Ill-conditioned by its columns' scales only, as the exact weight's collocation (8(z): columns W_j/(t_j - x_m), the
+// weights W_j falling towards the ends): A(0.3) above times D = diag(2^-(j mod 40)), kappa about 1e12 while each x_i
+// is determined to a few eps of itself. The reference is the solve in quadruple precision (`quad` above, Gaussian
+// elimination with partial pivoting, its error about 1e-32 relative; x86's long double, 5e-20, missed the bound's
+// tightness). Each bound holds, and lies below 1e-3 of the a priori
+// 2 eps |x_i| / rcond that the floors read before this bound (docs/formulation.md 8(w)).
+TEST(DenseSystem, RoundingBoundOfGradedColumnsIsFarBelowTheAPrioriFloor) {
+    dense_system s(order);
+    s.keep_matrix();
+    assemble(s, 0.3);
+    std::vector<quad> a(order * order), b(order);
+    for (std::size_t i = 0; i < order; ++i) {
+        b[i] = gsl_vector_get(s.rhs(), i);
+        for (std::size_t j = 0; j < order; ++j) {
+            const double v = std::ldexp(gsl_matrix_get(s.matrix(), i, j), -static_cast<int>(j % 40));
+            gsl_matrix_set(s.matrix(), i, j, v);
+            a[i * order + j] = v;
+        }
+    }
+    for (std::size_t k = 0; k < order; ++k) {  // quadruple-precision elimination, partial pivoting
+        std::size_t p = k;
+        for (std::size_t i = k + 1; i < order; ++i)
+            if (magnitude(a[i * order + k]) > magnitude(a[p * order + k])) p = i;
+        for (std::size_t j = 0; j < order; ++j) std::swap(a[k * order + j], a[p * order + j]);
+        std::swap(b[k], b[p]);
+        for (std::size_t i = k + 1; i < order; ++i) {
+            const quad l = a[i * order + k] / a[k * order + k];
+            for (std::size_t j = k; j < order; ++j) a[i * order + j] -= l * a[k * order + j];
+            b[i] -= l * b[k];
+        }
+    }
+    std::vector<quad> reference(order);
+    for (std::size_t i = order; i-- > 0;) {
+        quad t = b[i];
+        for (std::size_t j = i + 1; j < order; ++j) t -= a[i * order + j] * reference[j];
+        reference[i] = t / a[i * order + i];
+    }
+    const std::vector<double> x = copy(s.solve("graded columns"));
+    ASSERT_LT(s.rcond(), 1e-10);
+    for (std::size_t i = 0; i < order; ++i) {
+        SCOPED_TRACE(i);
+        const double bound = s.rounding_bound(i, 0.0);
+        EXPECT_GE(bound, static_cast<double>(magnitude(x[i] - reference[i])));
+        EXPECT_LT(bound, 1e-3 * 2.0 * GSL_DBL_EPSILON * std::fabs(x[i]) / s.rcond());
+    }
+}
+
+// The same graded system with its rows reversed: partial pivoting picks the same pivots, so the factors, x and dx are the
+// same and so must each bound be (to the rounding of its sum's order). The factors' backward error is of P A, in the
+// factors' row order, and pairs with P y (y = A^{-T} e_i): paired with y itself (A's order) the bound changed under
+// the permutation (session 27 review R1).
+TEST(DenseSystem, RoundingBoundDoesNotDependOnTheRowOrder) {
+    dense_system s(order), reversed(order);
+    s.keep_matrix();
+    reversed.keep_matrix();
+    assemble(s, 0.3);
+    for (std::size_t i = 0; i < order; ++i) {
+        gsl_vector_set(reversed.rhs(), order - 1 - i, gsl_vector_get(s.rhs(), i));
+        for (std::size_t j = 0; j < order; ++j) {
+            const double v = std::ldexp(gsl_matrix_get(s.matrix(), i, j), -static_cast<int>(j % 40));
+            gsl_matrix_set(s.matrix(), i, j, v);
+            gsl_matrix_set(reversed.matrix(), order - 1 - i, j, v);
+        }
+    }
+    const std::vector<double> x = copy(s.solve("graded columns")), xr = copy(reversed.solve("reversed rows"));
+    for (std::size_t i = 0; i < order; ++i) {
+        SCOPED_TRACE(i);
+        ASSERT_EQ(x[i], xr[i]);
+        const double a = s.rounding_bound(i, 0.0), b = reversed.rounding_bound(i, 0.0);
+        EXPECT_NEAR(a, b, 4.0 * GSL_DBL_EPSILON * a);
+    }
 }

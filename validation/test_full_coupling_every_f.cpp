@@ -280,20 +280,20 @@ TEST(FullCouplingEveryF, NearCompleteSlipEstimatesBoundTheDistanceFromFiveTwelve
                     std::fabs(a.out["xi"].get<double>() - s.xi), e["xi"].get<double>(),
                     std::fabs(a.out["hertz_load_ratio"].get<double>() - c.normal().lambda),
                     e["hertz_load_ratio"].get<double>());
-        // n = 512's own estimates (the same solve by the program): where one is not below half the answer's, n = 512
-        // cannot tell that quantity's error (xi at f = 1e-5 on the exact weight, session 25: +- 3.5e-15 at n = 64
-        // against n = 512's rounding floor 1.6e-14; levels 64, 256, 512 agree to 2e-15), and the distance need only
-        // fit in the two bounds.
+        // Every estimate bounds the distance from n = 512 (the strict form), except xi where n = 512 cannot tell: at
+        // f = 1e-5 the answer's xi is +- 3.55e-15 (its floor 64 eps (|xi| + f size)), while two solves at n = 512
+        // (this library's and the program's) differ by 4.3e-15 (session 27: the library's levels 64, 128, 256 and the
+        // program's 64 and 512 agree to 1.5e-15, the library's 512 lies 2.7e-15 .. 4.3e-15 off all of them), so the
+        // distance there carries n = 512's own rounding and need only fit in the two bounds (n = 512's own estimate
+        // 1.55e-14). P_H/P2's estimates fell from 1.25e-11 to 1.2e-13 .. 1.4e-13 with the a posteriori
+        // rounding of the weighted solve (docs/formulation.md 8(w)), against distances 6e-15 .. 2.8e-14.
         const answered r = point_of(full, f, "--n 512 --method product");
         ASSERT_EQ(r.status, 0) << r.text;
-        const auto& er = r.out["error_estimate"];
-        const auto within = [&](const char* q, double distance) {
-            const double own = e[q].get<double>(), ref = er[q].get<double>();
-            EXPECT_LE(distance, ref <= 0.5 * own ? own : own + ref) << q;
-        };
+        const double own_xi = e["xi"].get<double>(), ref_xi = r.out["error_estimate"]["xi"].get<double>();
+        EXPECT_LE(std::fabs(a.out["xi"].get<double>() - s.xi), ref_xi <= 0.5 * own_xi ? own_xi : own_xi + ref_xi);
+        const auto within = [&](const char* q, double distance) { EXPECT_LE(distance, e[q].get<double>()) << q; };
         within("c0", std::fabs(a.out["c0"].get<double>() - s.c0()));
         within("stick_start", std::fabs(a.out["stick_start"].get<double>() - s.start()));
-        within("xi", std::fabs(a.out["xi"].get<double>() - s.xi));
         within("hertz_load_ratio", std::fabs(a.out["hertz_load_ratio"].get<double>() - c.normal().lambda));
     }
     std::remove(full.c_str());

@@ -95,10 +95,13 @@ nlohmann::json point_of(const std::string& scene, const std::string& options) {
 }  // namespace
 
 // The driven Q/f = +0.75 at f = 0.05, full coupling (review F3 of session 16): since the plateau is carried at its
-// trailing stick zone the ladder answers it at n = 256 (was 512); on the exact weight (8(z), session 25) at n = 64. Its every estimate bounds the distance from n = 512
-// plus n = 512's own estimate (a bound of n = 512's error): measured c0 5.4e-8 + 1.9e-7 against 6.6e-7, the stick start
-// 6.0e-7 + 5.4e-6 against 6.9e-6, xi 3.0e-10 + 2.3e-9 against 6.2e-8; the second stick zone's ends (zone 3 of 5) within
-// the start's and c0's estimates, which fold them in.
+// trailing stick zone the ladder answers it at n = 256 (was 512); on the exact weight (8(z), session 25) at n = 64. Its
+// every estimate bounds the distance from n = 512 plus n = 512's own estimate (a bound of n = 512's error): measured
+// (session 27) c0 7.8e-8 + 3.2e-8 against 1.7e-6, the stick start 4.7e-7 + 1.8e-7 against 1.0e-5, xi 2.2e-12 + 2.8e-13
+// against 8.8e-10, P_H/P2 4.1e-14 + 7.1e-13 against 4.4e-12; the second stick zone's ends (zone 3 of 5) within the
+// start's and c0's estimates, which fold them in. P_H/P2 is the one that needs the a posteriori rounding of the
+// weighted solve (docs/formulation.md 8(w), "The solve's rounding, a posteriori"): with the a priori eps |lambda| /
+// rcond n = 512's estimate was 2.3e-9, above the answer's 1.7e-11 (session 25 review R5), and this test failed.
 TEST(Integrals, DrivenFullCouplingAnsweredBelowFiveTwelveWithinItsEstimates) {
     const std::string scene = full_scene();
     ASSERT_FALSE(scene.empty());
@@ -114,14 +117,7 @@ TEST(Integrals, DrivenFullCouplingAnsweredBelowFiveTwelveWithinItsEstimates) {
     const auto& ef = fine["error_estimate"];
     for (const char* q : {"c0", "stick_start", "xi", "hertz_load_ratio"}) {
         const double distance = std::fabs(coarse[q].get<double>() - fine[q].get<double>());
-        // Where n = 512's own bound is below the answer's, the distance plus it bounds the answer's error and must fit
-        // in its estimate. Where it is not (P_H/P2 since the driven five zones are on the exact weight, session 25:
-        // the answer at n = 64 +- 1.7e-11, n = 512's rounding floor 2.3e-9; the levels 64, 500, 512, 1000 agree to
-        // 4e-14), n = 512 cannot tell, and only the two bounds' consistency is checked.
-        if (ef[q].get<double>() < e[q].get<double>())
-            EXPECT_LE(distance + ef[q].get<double>(), e[q].get<double>()) << q;
-        else
-            EXPECT_LE(distance, e[q].get<double>() + ef[q].get<double>()) << q;
+        EXPECT_LE(distance + ef[q].get<double>(), e[q].get<double>()) << q;
     }
     for (const auto& [q, key] : {std::pair{"p", "pressure_peak_p"}, std::pair{"r", "pressure_peak_r"}})
         EXPECT_LE(std::fabs(coarse["pressure_peak"][q].get<double>() - fine["pressure_peak"][q].get<double>()),

@@ -8,6 +8,7 @@
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_permute_vector.h>
 
 #include "roughroll/base/error.hpp"
 
@@ -73,6 +74,10 @@ const gsl_vector* dense_system::solve(const std::string& context) {
     factorised_ = false;
     in_place_ = false;
     int signum = 0;
+    if (keep_) {
+        if (!kept_) kept_ = make_matrix(size_, size_);
+        gsl_matrix_memcpy(kept_.get(), a_.get());
+    }
     gsl_check(gsl_linalg_LU_decomp(a_.get(), perm_.get(), &signum), context + ": LU decomposition");
     // Refining: the factorisation kept as near_->lu, the next matrix assembled in the other buffer.
     if (near_) std::swap(a_, near_->lu);
@@ -97,6 +102,103 @@ const gsl_vector* dense_system::solve_factorised(const std::string& context) {
     gsl_check(gsl_linalg_LU_solve(a_.get(), perm_.get(), b_.get(), x_.get()), context + ": LU solve");
     check_finite(x_.get(), context);
     return x_.get();
+}
+
+double dense_system::rounding_bound(std::size_t i, double entry_rounding) {
+    // docs/formulation.md 8(w), "The solve's rounding, a posteriori". x the computed solution, r = b - A x exactly,
+    // so x - x* = -A^{-1} r. r^ is r by compensated dot products (Dot2 of Ogita, Rump and Oishi 2005: each product
+    // split exactly by Dekker's TwoProduct, the sums' errors gathered by TwoSum), |r^ - r| <= u |r| + gamma_m^2 (|A||x|
+    // + |b|), m = size + 1 terms (2 u |r^| below covers u |r|). dx solves (A + dA) dx = r^ through the LU, |dA| <=
+    // gamma_3n |L||U| (Higham, Accuracy and Stability, Thm 9.4), so A^{-1} r^ = dx + A^{-1} dA dx: one step of
+    // refinement, whose correction dx is the error of x to first order (Higham ch. 12). With y = A^{-T} e_i (row i
+    // of A^{-1}), exactly:
+    //   |x_i - x*_i| <= |dx_i| + |y|^T (gamma_3n |L||U||dx| + 2 u |r^| + gamma_m^2 (|A||x| + |b|)),
+    // and the assembly's rounding (each entry of A and b within entry_rounding relative) moves x* by at most
+    // |y|^T entry_rounding (|A||x| + |b|) to first order. y is computed by the same LU, relative error about
+    // gamma_3n kappa, under 1/4 where used (else the a priori 2 u |x_i| / rcond is returned): the sum over |y| is
+    // doubled for it and the second-order terms.
+    if (!keep_ || !kept_ || !in_place_)
+        throw numerical_error("dense system: a rounding bound without the kept matrix and its factors");
+    const std::size_t n = size_;
+    const double u = 0.5 * GSL_DBL_EPSILON;
+    const double gamma_3n = 3.0 * n * u / (1.0 - 3.0 * n * u), gamma_m = (n + 1) * u / (1.0 - (n + 1) * u);
+    const double x_i = gsl_vector_get(x_.get(), i);
+    const double a_priori = 2.0 * GSL_DBL_EPSILON * std::fabs(x_i) / rcond_;
+    if (!(gamma_3n / rcond_ < 0.25)) return a_priori;
+    const gsl_matrix* a = kept_.get();
+    const gsl_matrix* lu = a_.get();
+    const vector_ptr r = make_vector(n), dx = make_vector(n), y = make_vector(n);
+    // TwoProduct, p + pe = a_kj x_j exactly: by an fma where the target has one (there the compiler may contract
+    // Dekker's splitting into fmas, which breaks its exactness), else by Dekker's splitting with x_j split once into
+    // halves of 26 bits (Veltkamp), without the fma's library call (ten times the cost).
+    constexpr double splitter = 134217729.0;  // 2^27 + 1
+    const auto split = [](double v, double& hi, double& lo) {
+        const double c = splitter * v;
+        hi = c - (c - v);
+        lo = v - hi;
+    };
+#if defined(FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    const auto two_product = [](double a, double b, double, double, double& p) {
+        p = a * b;
+        return std::fma(a, b, -p);
+    };
+#else
+    const auto two_product = [&split](double a, double b, double bh, double bl, double& p) {
+        double ah, al;
+        split(a, ah, al);
+        p = a * b;
+        return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    };
+#endif
+    std::vector<double> x(n), xh(n), xl(n), size_of(n);  // size_of: |A||x| + |b|
+    for (std::size_t j = 0; j < n; ++j) {
+        x[j] = gsl_vector_get(x_.get(), j);
+        split(x[j], xh[j], xl[j]);  // once per x_j (used by the splitting's TwoProduct only)
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const double* row = a->data + k * a->tda;
+        double s = gsl_vector_get(b_.get(), k), c = 0.0, g = std::fabs(s);
+        for (std::size_t j = 0; j < n; ++j) {
+            double p;
+            const double pe = two_product(-row[j], x[j], xh[j], xl[j], p);
+            const double t = s + p, z = t - s, se = (s - (t - z)) + (p - z);  // TwoSum: t + se = s + p
+            s = t;
+            c += se + pe;
+            g += std::fabs(p);
+        }
+        gsl_vector_set(r.get(), k, s + c);
+        size_of[k] = g * (1.0 + gamma_m);  // |A||x| + |b| from rounded terms: at most that factor below
+    }
+    gsl_check(gsl_linalg_LU_solve(lu, perm_.get(), r.get(), dx.get()), "rounding bound: refinement step");
+    // y = A^{-T} e_i: P A = L U, so A^T = U^T L^T P: U^T z = e_i, L^T v = z, y = P^T v.
+    // The factors' backward error dA' is of P A (row k of L U is row perm[k] of A): A^{-1} P^T dA' dx, so its term pairs
+    // with |P y| = |v| in the factors' row order; the residual's terms with |y| in A's.
+    gsl_vector_set_basis(y.get(), i);
+    gsl_check(gsl_blas_dtrsv(CblasUpper, CblasTrans, CblasNonUnit, lu, y.get()), "rounding bound: row of the inverse");
+    gsl_check(gsl_blas_dtrsv(CblasLower, CblasTrans, CblasUnit, lu, y.get()), "rounding bound: row of the inverse");
+    std::vector<double> v(y->data, y->data + n);  // y is contiguous (make_vector)
+    gsl_check(gsl_permute_vector_inverse(perm_.get(), y.get()), "rounding bound: row of the inverse");
+    // |L||U||dx|: |U||dx| first (upper, its diagonal), then |L| (unit lower) on it.
+    std::vector<double> t(n), lut(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double* row = lu->data + k * lu->tda;
+        double s = 0.0;
+        for (std::size_t j = k; j < n; ++j) s += std::fabs(row[j] * dx->data[j * dx->stride]);
+        t[k] = s;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const double* row = lu->data + k * lu->tda;
+        double s = t[k];
+        for (std::size_t j = 0; j < k; ++j) s += std::fabs(row[j]) * t[j];
+        lut[k] = s;
+    }
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k)
+        sum += std::fabs(v[k]) * gamma_3n * lut[k] +
+               std::fabs(gsl_vector_get(y.get(), k)) * (2.0 * u * std::fabs(gsl_vector_get(r.get(), k)) +
+                                                        (gamma_m * gamma_m + entry_rounding) * size_of[k]);
+    const double bound = std::fabs(gsl_vector_get(dx.get(), i)) + 2.0 * sum;
+    return std::isfinite(bound) ? bound : a_priori;
 }
 
 void dense_system::remember(const gsl_vector* x) {

@@ -747,7 +747,10 @@ variable_k_collocation::solution variable_k_collocation::solve_loaded(const std:
     if (static_cast<int>(g.size()) != n_ + 1 || static_cast<int>(h.size()) != n_ + 1)
         throw numerical_error("variable-k collocation: the right side needs one value per collocation point");
     const char* context = "variable-k collocation with its load";
-    if (!loaded_) loaded_ = std::make_unique<dense_system>(n_ + 2);
+    if (!loaded_) {
+        loaded_ = std::make_unique<dense_system>(n_ + 2);
+        loaded_->keep_matrix();  // for lambda's rounding bound (below)
+    }
     const bool fresh = !loaded_->holds_factors() || h != loaded_h_;
     if (fresh) {
         gsl_matrix* m = loaded_->matrix();
@@ -768,6 +771,10 @@ variable_k_collocation::solution variable_k_collocation::solve_loaded(const std:
     s.psi.assign(x->data, x->data + n_);
     s.xi = gsl_vector_get(x, n_);
     s.lambda = gsl_vector_get(x, n_ + 1);
+    // The entries (1/pi) W_j/(t_j - x_m) carry four roundings from the stored nodes, weights and points (1/pi's, the
+    // difference, the quotient, the product), the load one; the rest are exact (8(w), "The solve's rounding, a
+    // posteriori").
+    s.lambda_rounding = loaded_->rounding_bound(static_cast<std::size_t>(n_) + 1, 2.0 * GSL_DBL_EPSILON);
     return s;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
@@ -12,6 +13,7 @@
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "roughroll/problems/edge_layers.hpp"
+#include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/point_estimate.hpp"
 #include "roughroll/problems/pressure_kinks.hpp"
 
@@ -171,13 +173,27 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     const int finest_n = levels_[2] ? (*levels_[2]).nodes() : nodes();
     rounding_floors floor = floors_at(finest_n, s, own, lambda, f_, strength);
     // Full coupling's weighted pressure (docs/formulation.md 8(w)) is spectral: its levels agree to the dense solve's
-    // rounding, eps |lambda| / rcond (rcond of the factor U, about 1/kappa; the peak's p_rounding, normal_solution.hpp),
-    // which the difference of two levels carries twice (the pair at Q/f = -0.75: P_H/P2's levels 64..512 within 1e-13,
-    // n eps lambda 2.8e-14 at 128 below them; this floor 7e-11).
+    // rounding, which the difference of two levels carries twice. On the exact weight of 8(z) that rounding is bounded
+    // a posteriori (8(w), "The solve's rounding, a posteriori"): the solve's bound, and the alternation's distance from
+    // its fixed point (8(w), "The alternation's share"; changes within n eps of the values are rounding, no ratio read
+    // from them); the driven pair at Q/f = 0.75: 4.4e-15 .. 5.8e-15 at n = 16 .. 512, where the a priori
+    // eps |lambda| / rcond (rcond of the factor U, about 1/kappa) was 4.2e-13 .. 2.3e-9. Elsewhere (w_N of 8(x)), and
+    // where the alternation's contraction reads 1 or more, the a priori floor.
+    const double n_eps_lambda = floor.lambda;
     for (int i = 0; i < 3; ++i) {
-        const normal_solution& p = (levels_[i] ? *levels_[i] : *model_).normal();
-        if (p.kinks && p.kinks->weighted() && p.rcond > 0.0)
-            floor.lambda = std::max(floor.lambda, 2.0 * DBL_EPSILON * std::fabs(p.lambda) / p.rcond);
+        const point_model& level = levels_[i] ? *levels_[i] : *model_;
+        const normal_solution& p = level.normal();
+        if (!(p.kinks && p.kinks->weighted() && p.rcond > 0.0)) continue;
+        const coupling_summary* alternation = level.coupling();
+        const double band = rounding_floor(level.nodes(), std::max({1.0, std::fabs(p.lambda), std::fabs(p.offset),
+                                                                    std::fabs(own.xi) + f_ * std::fabs(p.lambda)}));
+        const double distance = p.lambda_rounding > 0.0 && alternation
+                                    ? coupling_fixed_point_distance(*alternation, band, p.lambda_rounding)
+                                    : std::numeric_limits<double>::infinity();
+        // The a posteriori share adds to n eps |lambda| (floors_at: the sums that assemble the load, 8(w)).
+        floor.lambda = std::isfinite(distance)
+                           ? std::max(floor.lambda, n_eps_lambda + 2.0 * distance)
+                           : std::max(floor.lambda, 2.0 * DBL_EPSILON * std::fabs(p.lambda) / p.rcond);
     }
     // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
     // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <functional>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -50,6 +51,26 @@ struct full_coupling::iterate {
 double coupled_layers_crossing(double beta_d, double f) {
     const double epsilon = std::log((1.0 - beta_d) / (1.0 + beta_d)) / (2.0 * M_PI);  // 8(p), "The fundamental function"
     return 2.0 / (1.0 + std::exp(std::atan(f) / std::fabs(epsilon)));
+}
+
+double coupling_fixed_point_distance(const coupling_summary& summary, double band, double step_rounding) {
+    const std::vector<double>& d = summary.changes;
+    if (d.empty()) return std::numeric_limits<double>::infinity();
+    // From a coarser level's start the first change is the levels' difference, no step of this map (coupling_settled).
+    const std::size_t own_from = summary.start_level > 0 ? 1 : 0;
+    double kappa = 0.5;
+    bool read = false;
+    for (std::size_t j = own_from + 1; j < d.size(); ++j)
+        if (d[j] > band && d[j - 1] > band) {
+            kappa = read ? std::max(kappa, d[j] / d[j - 1]) : d[j] / d[j - 1];
+            read = true;
+        }
+    if (!(kappa < 1.0)) return std::numeric_limits<double>::infinity();
+    // One step's rounding in all of (lambda, e, xi): the normal solve's bound, but a step is also G's assembly and the
+    // tangential solve, whose rounding the changes within the band show (the driven pair at n = 256: 1.2e-14 then
+    // 2.7e-14 under kappa <= 1/2 needs rho >= 1.05e-14, twice lambda's solve bound): at least the band.
+    const double rho = std::max(step_rounding, band);
+    return (kappa * d.back() + rho) / (1.0 - kappa);
 }
 
 bool coupling_settled(const std::vector<double>& changes, std::size_t own_from, double tolerance) {

@@ -200,7 +200,9 @@ normal_solution normal_solver::solve_weighted(const std::function<double(double)
         // No projection is kept, so 8(u)'s G_H reads G's formula (dissimilar_zones::blended_G): -H[p] of this discrete
         // p differs from it by beta_D sign (q - q_n) only, which moved the ends by at most 1.6e-9 at n = 128 (8(z)).
         const pressure_kinks::variable_result v = weighted->solve_variable();
-        return on_weight(v.psi, v.lambda, v.gamma, v.rcond);
+        normal_solution s = on_weight(v.psi, v.lambda, v.gamma, v.rcond);
+        s.lambda_rounding = v.lambda_rounding;
+        return s;
     }
     const double a = weighted->weight_a(), k_e = weighted->weight_k();
     if (!weighted_ || weighted_->a != a) weighted_ = std::make_shared<weighted_system>(n, a);

@@ -236,7 +236,7 @@ pressure_kinks::variable_result pressure_kinks::solve_variable() {
     st.psi = s.psi;
     st.c = st.colloc->coefficients(s.psi);
     st.pressure.clear();
-    return {s.psi, -M_PI_2 * s.lambda, -(s.xi + constant_), st.colloc->rcond()};
+    return {s.psi, -M_PI_2 * s.lambda, -(s.xi + constant_), st.colloc->rcond(), M_PI_2 * s.lambda_rounding};
 }
 
 double pressure_kinks::k_at(double r) const { return variable_ ? -variable_->weight->k_at(r) : k_e_; }

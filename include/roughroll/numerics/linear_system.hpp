@@ -52,6 +52,16 @@ public:
     const gsl_vector* solve_factorised(const std::string& context);
     bool holds_factors() const { return in_place_; }  // solve_factorised() may be called
 
+    // The a posteriori bound on the rounding of x_i of the last solve() or solve_factorised() (docs/formulation.md
+    // 8(w), "The solve's rounding, a posteriori"): |x_i - x*_i| for x* the exact solution of the assembled system
+    // with each entry of A and b perturbed by up to `entry_rounding` relative (the assembly's rounding), from the
+    // residual in compensated arithmetic, one step of refinement through the same LU (dx) and the row i of A^{-1}
+    // (a transposed solve): O(size^2), against the factorisation's O(size^3). Needs keep_matrix() before the
+    // solve() and the factors held (holds_factors()); else numerical_error.
+    double rounding_bound(std::size_t i, double entry_rounding);
+    // From the next solve() on, a copy of the assembled matrix is kept for rounding_bound (size^2 doubles).
+    void keep_matrix() { keep_ = true; }
+
     double rcond() const { return rcond_; }    // of the last solve (above)
     bool refined() const { return refined_; }  // whether the last solve was refined
 
@@ -84,6 +94,8 @@ private:
     double factor_rcond_ = 0.0;  // of near_->lu's U
     bool factorised_ = false, refined_ = false;
     bool in_place_ = false;  // a_ holds the factors of the last solve() (for solve_factorised)
+    bool keep_ = false;      // keep_matrix(): kept_ holds the matrix the factors in a_ are of
+    matrix_ptr kept_;
 };
 
 }  // namespace roughroll

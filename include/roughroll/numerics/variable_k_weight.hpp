@@ -195,6 +195,9 @@ public:
     struct solution {
         std::vector<double> psi;  // at the nodes
         double xi = 0.0, lambda = 0.0;
+        // solve_loaded: the a posteriori bound on lambda's rounding (dense_system::rounding_bound; 8(w), "The solve's
+        // rounding, a posteriori"); 0 from solve.
+        double lambda_rounding = 0.0;
     };
     solution solve(const std::vector<double>& g_at_points);
     solution solve_loaded(const std::vector<double>& g_at_points, const std::vector<double>& h_at_points, double load);

@@ -64,6 +64,14 @@ double coupling_value_floor(double lambda, double offset, double xi, double f, d
 std::string coupled_failure_cause(bool pressure);
 std::string coupled_failure_advice(bool pressure);
 
+// The distance of the alternation's last iterate from its fixed point in lambda, e and xi (docs/formulation.md 8(w),
+// "The alternation's share"): (kappa d + rho)/(1 - kappa), d the last change, rho = max(step_rounding, band) one step's
+// rounding (step_rounding the normal solve's a posteriori bound; `band` the changes' rounding, which the tangential
+// solve shares), kappa the largest ratio of the level's own successive changes that both exceed `band` (below it a
+// ratio is noise); 1/2 (the stop's trusted limit) where no ratio is readable. Infinity where kappa >= 1 or no step was
+// taken: no bound.
+double coupling_fixed_point_distance(const coupling_summary& summary, double band, double step_rounding);
+
 // A reported point whose coupled zones fail the checks (3.3)-(3.4) (full_coupling::solve): the refusal, with the
 // margins and the structure they are of, which the ladder of levels compares over three rungs (docs/formulation.md
 // 8(q), "A failure the levels settle").

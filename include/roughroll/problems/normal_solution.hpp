@@ -42,6 +42,9 @@ struct normal_solution {
     // With them -H[p] of this discrete p is known at any r (projected_minus_hilbert). Empty otherwise (K2* present:
     // the collocation holds (D1) at its points only).
     std::vector<double> projected = {};
+    // On the exact weight of 8(z): the a posteriori bound on lambda's rounding by this solve (docs/formulation.md 8(w),
+    // "The solve's rounding, a posteriori"); 0 elsewhere (no bound computed: the a priori eps |lambda| / rcond).
+    double lambda_rounding = 0.0;
 
     double pressure(double r) const;  // p(r) = phi(r) sqrt(1 - r^2) (4.1), + p_q^0(r) with `kinks`
     // The same at each r[i], bit for bit, the U-series summed for all points at once (the batched Clenshaw of

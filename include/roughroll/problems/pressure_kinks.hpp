@@ -80,6 +80,7 @@ public:
     struct variable_result {
         std::vector<double> psi;  // at the nodes of w_k's rule
         double lambda, gamma, rcond;  // P_H/P2, gamma = (2/pi) lambda e of (H + k) p + gamma + (2/pi) lambda r = -beta_D sign q
+        double lambda_rounding;       // the bound on lambda's rounding (variable_k_collocation::solution)
     };
     variable_result solve_variable();  // after set_variable; stores psi
     bool weighted() const { return weighted_; }
