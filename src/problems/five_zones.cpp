@@ -3,8 +3,8 @@
 // slip +1, stick, slip -1 (beta_D > 0), the structure of free rolling, of a driven roller 1
 // below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two
 // stick zones, each with its own collocation system (tangential_solver::solve_on_zone) whose right
-// side carries the other zone's L1[q] (block Gauss-Seidel), and the zone search's Newton in the four
-// ends (ends_newton, zone_newton.hpp) from the starts of zone_start.hpp, tried in turn by one loop.
+// side carries the other zone's L1[q] (block Gauss-Seidel): the zone search's operator on two zones, with
+// its Newton in the four ends (zone_newton, zone_solver.hpp) from the starts of zone_start.hpp, tried in turn by one loop.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -98,6 +98,24 @@ tangential_solution dissimilar_zones::five_zone_system(double s1, double c1, dou
     return s;
 }
 
+stick_zone_operator dissimilar_zones::zone_operator(double beta) {
+    // The zone search's Newton in the blend's stick zones (zone_newton, k = 2): the load's gap, both entry conditions
+    // psi_k(-1) = 0 and xi1 = xi2, absolute, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
+    stick_zone_operator op;
+    op.f = f_;
+    op.systems = [this, beta](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
+        try {
+            return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, beta);
+        } catch (const numerical_error&) {
+            return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
+        }
+    };
+    op.newton_entry = zone_solver::entry_coefficient;
+    op.method.relative_load = false;
+    op.method.newton_tolerance = zone_end_resolution;
+    return op;
+}
+
 std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, const std::vector<double>& ends,
                                                                std::optional<double> beta, rounding_limits* met,
                                                                newton_jacobian* kept, bool checked) {
@@ -105,18 +123,7 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, const 
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     const double forcing = beta.value_or(std::fabs(beta_d_));
     rounding_limits own;  // where the caller keeps none
-    // The zone search's Newton in the blend's stick zones (ends_newton, k = 2): the load's gap, both entry
-    // conditions psi_k(-1) = 0 and xi1 = xi2, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
-    auto s = ends_newton<tangential_solution>(
-        [&](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
-            try {
-                return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, forcing);
-            } catch (const numerical_error&) {
-                return std::nullopt;  // ends where the coupling or W fails: off the family, the step is halved
-            }
-        },
-        zone_solver::entry_coefficient, Q, f_, {{ends[0], ends[1], 0.0}, {ends[2], ends[3], 0.0}}, false,
-        zone_newton_iterations, zone_end_resolution, met ? *met : own, kept);
+    std::optional<tangential_solution> s = zone_newton(zone_operator(forcing), Q, ends, met ? *met : own, kept);
     // Not made: NaN margins, nothing holding (a caller that reads them makes them: check).
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (s) s->checks = checked ? check(*s) : traction_checks{nan, nan, nan, nan, nan, false, false, false};

@@ -106,19 +106,10 @@ tangential_solution searched_point(tangential_solution s, double Q, const char* 
     return s;
 }
 
-// Newton in the zone ends at |Q| (ends_newton, zone_newton.hpp), its stops at the rounding limit noted in `met`.
+// Newton in the zone ends at |Q| (zone_newton), its stops at the rounding limit noted in `met`: empty where it does
+// not converge, or stops at the rounding limit; the caller falls back to Brent, or to its next start.
 zone_newton_from newton_at(const stick_zone_operator& op, double magnitude, rounding_limits& met) {
-    return [&op, magnitude, &met](double start, double end) {
-        // The operator's residuals (ends_newton): relative for the zones of one slip direction (7(e), 7(g)),
-        // absolute for the blended zones of 8(g). Empty when it does not converge, or stops at the rounding limit:
-        // the caller falls back to Brent, or to its next start.
-        return ends_newton<tangential_solution>(
-            [&op](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
-                return op.solve(z[0].start, z[0].end);
-            },
-            op.newton_entry, magnitude, op.f, {{start, end, 0.0}}, op.method.relative_load, zone_newton_iterations,
-            op.method.newton_tolerance, met);
-    };
+    return [&op, magnitude, &met](double start, double end) { return zone_newton(op, magnitude, {start, end}, met); };
 }
 
 // The zone of the first of `trials`' brackets that answers: each bracket a start of the search, its zone offered to
@@ -261,6 +252,21 @@ std::optional<tangential_solution> general_search(const stick_zone_operator& op,
     return std::move(roots).result();
 }
 }  // namespace
+
+std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, double Q, const std::vector<double>& ends,
+                                               rounding_limits& met, newton_jacobian* kept) {
+    std::vector<stick_span> from;
+    for (std::size_t k = 0; k + 1 < ends.size(); k += 2) from.push_back({ends[k], ends[k + 1], 0.0});
+    using systems_of = std::function<std::optional<tangential_solution>(const std::vector<stick_span>&)>;
+    const systems_of one = [&op](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
+        return op.solve(z[0].start, z[0].end);
+    };
+    // The operator's residuals (ends_newton): relative for the zones of one slip direction (7(e), 7(g)), absolute for
+    // the blended zones of 8(g) and the five zones (8(j) item 3).
+    return ends_newton<tangential_solution>(op.systems ? op.systems : one, op.newton_entry, Q, op.f, from,
+                                            op.method.relative_load, zone_newton_iterations, op.method.newton_tolerance,
+                                            met, kept);
+}
 
 zone_solver::zone_solver(stick_zone_operator op) : op_(std::move(op)) {}
 

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "roughroll/numerics/interval_newton.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
@@ -68,6 +69,10 @@ struct stick_zone_operator {
     // gross sliding when eps2 > eps1); always for dissimilar rollers.
     std::function<std::optional<tangential_solution>(double Q, bool searching)> paper_zone;
     std::function<tangential_solution(double start, double end)> solve;  // the system on [start, end], unchecked
+    // The systems on k stick zones at their ends (in order from r = -1), unchecked, empty where they fail (off the
+    // family: Newton halves its step), for Newton in the ends (zone_newton, zone_solver.hpp): the five zones' two
+    // (8(j), dissimilar_zones::five_zone_system); unset: `solve` on the one zone (a fault there is the search's).
+    std::function<std::optional<tangential_solution>(const std::vector<stick_span>& zones)> systems;
     // Q(s, c) - |Q| of a solution (7(c): falling as the zone grows), in the form that keeps its digits.
     std::function<double(const tangential_solution&, double magnitude)> excess;
     std::function<double(double start)> empty_load;                    // Q(s, s): no stick zone, the slip zones' load

@@ -22,13 +22,22 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
 
 namespace roughroll {
 
-class rounding_limits;  // zone_newton.hpp
+class rounding_limits;         // zone_newton.hpp
+struct newton_jacobian;        // damped_newton.hpp
+
+// Newton in the ends of the operator's stick zones at the load Q (in the operator's frame) from `ends` (s_1, c_1, ...,
+// s_k, c_k), for every zone search (ends_newton, zone_newton.hpp: the operator's systems, entry condition, residuals
+// and tolerance); empty where it does not converge, its stop at the ends' rounding limit noted in `met`. `kept`: a
+// Jacobian carried from the last solve of a sequence (full coupling's alternation).
+std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, double Q, const std::vector<double>& ends,
+                                               rounding_limits& met, newton_jacobian* kept = nullptr);
 
 // A zone near the one sought (the coarse level's, when extrapolating).
 struct zone_guess {
