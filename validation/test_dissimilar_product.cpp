@@ -368,7 +368,7 @@ TEST(DissimilarProduct, DrivenAtThreeQuartersHasATrailingLayer) {
     const normal_solution hertz = hertz_solution(32, method::product);
     tangential_solver t(hertz, kernel{}, kernel{}, f, false);
     dissimilar_zones d(t, kernel{}, beta_al_st);
-    const tangential_solution s = d.solve(0.75 * f, std::nullopt, true);
+    const tangential_solution s = d.solve(0.75 * f, {}, true);
     ASSERT_TRUE(s.layout.opposite());
     EXPECT_TRUE(s.checks.stick_holds);
     EXPECT_FALSE(s.checks.slip_holds);

@@ -87,13 +87,13 @@ TEST(RoundingLimit, TheBracketsBrentAnswersWhereNewtonStopsThere) {
     EXPECT_NO_THROW(expect_the_answer(zone_solver(made_up(1e-9, answer_start, 32, false)).solve(Q)));
     // The same from a guess: Newton from it first (the limit), then the scan and Brent.
     EXPECT_NO_THROW(expect_the_answer(zone_solver(made_up(1e-9, answer_start, 32, false))
-                                          .solve(Q, false, zone_guess{-0.45, -0.45 + 1.0 - Q / f})));
+                                          .solve(Q, false, {-0.45, -0.45 + 1.0 - Q / f})));
     // Every bracket (dissimilar rollers' scan), which went on after a numerical fault only: the same answer.
     EXPECT_NO_THROW(expect_the_answer(zone_solver(made_up(1e-9, answer_start, 32, true)).solve(Q)));
     // The search as one route of a larger one: the answer, the limit met on the way noted.
     rounding_limits met;
     const std::optional<tangential_solution> s =
-        zone_solver(made_up(1e-9, answer_start, 32, false)).find(Q, false, std::nullopt, met);
+        zone_solver(made_up(1e-9, answer_start, 32, false)).find(Q, false, {}, met);
     ASSERT_TRUE(s);
     expect_the_answer(*s);
     EXPECT_TRUE(met.met());
@@ -102,7 +102,7 @@ TEST(RoundingLimit, TheBracketsBrentAnswersWhereNewtonStopsThere) {
 TEST(RoundingLimit, RefusedWithTheLimitOnlyWhereEveryRouteFails) {
     // Two trial starts (0 and 1, the latter outside): the scan brackets nothing, so Newton from the guess is the only
     // route that could answer. At the limit, nothing is found: the refusal names the limit and what lowers it.
-    const zone_guess guess{-0.45, -0.45 + 1.0 - Q / f};
+    const std::vector<double> guess{-0.45, -0.45 + 1.0 - Q / f};
     try {
         zone_solver(made_up(1e-9, answer_start, 2, false)).solve(Q, false, guess);
         ADD_FAILURE() << "no refusal";
@@ -154,7 +154,7 @@ TEST(RoundingLimit, BrentsFaultAfterTheLimitKeepsTheLimitsLine) {
     }
     // As a route of a larger search: empty, the limit noted.
     rounding_limits met;
-    EXPECT_FALSE(zone_solver(faulting(1e-9)).find(Q, false, std::nullopt, met));
+    EXPECT_FALSE(zone_solver(faulting(1e-9)).find(Q, false, {}, met));
     EXPECT_TRUE(met.met());
     EXPECT_THROW(zone_solver(faulting(1e-3)).solve(Q), numerical_error);
 }

@@ -108,7 +108,7 @@ public:
 
     // Johnson's point of this level from the zone ends of s (Newton).
     tangential_solution like(const tangential_solution& s, method how, int n) override {
-        if (s.layout.stick_zones() != 2) return three(s.Q, zone_guess{s.start(), s.c0()}, s.layout.opposite());
+        if (s.layout.stick_zones() != 2) return three(s.Q, s.layout.stick_ends(), s.layout.opposite());
         // Five zones (8(j)): the level from the point's ends (Newton), else its own search.
         const std::vector<double> ends = s.layout.stick_ends();
         rounding_limits met;
@@ -238,9 +238,9 @@ protected:
 
 private:
     // Three zones at Q on this level (dissimilar_zones::solve), cached per Q.
-    const tangential_solution& three(double Q, std::optional<zone_guess> guess, bool opposite) {
+    const tangential_solution& three(double Q, const std::vector<double>& ends, bool opposite) {
         checkpoint();
-        if (!last_three_ || !(last_three_->Q == Q)) last_three_ = zones_.solve(Q, guess, opposite);
+        if (!last_three_ || !(last_three_->Q == Q)) last_three_ = zones_.solve(Q, ends, opposite);
         return *last_three_;
     }
     // Five zones (docs/formulation.md 8(j)) at Q on this level, from `ends` (s1, c1, s2, c2: the coarser level's)
@@ -296,7 +296,7 @@ private:
 
 tangential_solution johnson_model::johnson_point(double Q, const std::vector<johnson_model*>& below,
                                                  const tangential_solution* previous) {
-    std::optional<zone_guess> guess;
+    std::vector<double> guess;  // the ends of a zone near the one sought, Newton's start (empty: none)
     bool opposite = false;
     // The ends' rounding limit met by a route below (zone_newton.hpp): the refusal where no route answers.
     rounding_limits met;
@@ -309,7 +309,7 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
             if (std::optional<tangential_solution> s = five_continued(Q, below, previous->layout.stick_ends(), met))
                 return *s;
         } else if (previous->layout.stick_zones() == 1 && previous->start() > -1.0) {
-            guess = zone_guess{previous->start(), previous->c0()};
+            guess = previous->layout.stick_ends();
             opposite = previous->layout.opposite();
         }
     }
@@ -330,12 +330,12 @@ tangential_solution johnson_model::johnson_point(double Q, const std::vector<joh
     for (johnson_model* level : below) {
         try {
             const tangential_solution& t = level->three(Q, guess, opposite);
-            guess = zone_guess{t.start(), t.c0()};
+            guess = t.layout.stick_ends();
             opposite = t.layout.opposite();
         } catch (const resolution_error&) {  // no three zones on this level: the next searches without a guess
-            guess.reset();
+            guess.clear();
         } catch (const numerical_error&) {
-            guess.reset();
+            guess.clear();
         }
     }
     // Free rolling, no three zones, or three zones that fail (3.3)-(3.4) (resolution_error), or a

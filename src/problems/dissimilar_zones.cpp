@@ -494,7 +494,7 @@ tangential_solution dissimilar_zones::gross_sliding(double b) {
         "dissimilar rollers at gross sliding");
 }
 
-tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> guess, bool opposite, bool only_this_kind) {
+tangential_solution dissimilar_zones::solve(double Q, const std::vector<double>& ends, bool opposite, bool only_this_kind) {
     ++three_zone_searches_;
     const double magnitude = load_magnitude(Q, f_);
     if (magnitude == 0.0)
@@ -517,7 +517,7 @@ tangential_solution dissimilar_zones::solve(double Q, std::optional<zone_guess> 
     std::optional<tangential_solution> found = search_from<tangential_solution>(structures, [&](bool blend) {
         start_verdict<tangential_solution> verdict;
         try {
-            verdict.root = zone_solver(zone_operator(blend, b, magnitude)).find(magnitude, false, guess, met);
+            verdict.root = zone_solver(zone_operator(blend, b, magnitude)).find(magnitude, false, ends, met);
         } catch (const resolution_error&) {
         } catch (const numerical_error& e) {
             if (!fault) fault = e;

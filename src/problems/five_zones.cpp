@@ -193,7 +193,7 @@ std::optional<tangential_solution> dissimilar_zones::from_three_zones(double loa
     const double frame = (beta_d_ > 0.0 ? 1.0 : -1.0) * load;
     try {
         const std::optional<tangential_solution> found =
-            zone_solver(zone_operator(true, forcing, frame)).find(frame, false, std::nullopt, met);
+            zone_solver(zone_operator(true, forcing, frame)).find(frame, false, {}, met);
         if (!found) return std::nullopt;  // no three zones carry this load: no start from here
         const tangential_solution& three = *found;
         constexpr int samples = 400;

@@ -131,7 +131,7 @@ tangential_solution step(dissimilar_zones& z, const tangential_solution& previou
         // switches the zone to its Jacobi weight lags by the square-root weight's error and fails the checks by
         // 1e-8..1e-6, which the search took as a reason to try every bracket and the blended zone (18-58 s of the
         // strong point at n = 64..256, 8(w) "Cost"); the checks are acted on at the converged iterate (solve).
-        t = z.solve(Q, zone_guess{previous.start(), previous.c0()}, previous.layout.opposite(),
+        t = z.solve(Q, previous.layout.stick_ends(), previous.layout.opposite(),
                     one_kind && !previous.layout.opposite());
     }
     return t;

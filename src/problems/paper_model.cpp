@@ -58,25 +58,25 @@ public:
         enum { asked, checks_failed, paper_faulted, zones_searched } kind;
         const traction_checks* checks = nullptr;  // checks_failed: the paper's zone's
     };
-    // zone_solver's general search at Q (section 7), from `guess` (the coarse level's zone) when given. A numerical
+    // zone_solver's general search at Q (section 7), from `ends` (the coarse level's zone) when given. A numerical
     // fault on the way (a GSL status, a singular system, a root search without convergence) is a numerical_error in
     // the user's terms (general_search_fault, `why`), the search's own line nested in it: every caller's.
-    tangential_solution general(double Q, std::optional<zone_guess> guess, search_cause why) {
+    tangential_solution general(double Q, const std::vector<double>& ends, search_cause why) {
         return worded(Q, why, [&] {
             checkpoint();
-            return search(Q).solve(Q, true, guided_ ? guess : std::nullopt);
+            return search(Q).solve(Q, true, guided_ ? ends : std::vector<double>{});
         });
     }
     // The same search, empty where no zone of its structure carries Q (zone_solver::find).
-    std::optional<tangential_solution> find_general(double Q, std::optional<zone_guess> guess, search_cause why) {
+    std::optional<tangential_solution> find_general(double Q, const std::vector<double>& ends, search_cause why) {
         return worded(Q, why, [&] {
             checkpoint();
-            return search(Q).find(Q, true, guided_ ? guess : std::nullopt);
+            return search(Q).find(Q, true, guided_ ? ends : std::vector<double>{});
         });
     }
     // The general search at s's load from s's zone (a level of s's estimate, the coarse level of its extrapolation).
     tangential_solution general_like(const tangential_solution& s) {
-        return general(s.Q, zone_guess{s.start(), s.c0()}, {search_cause::zones_searched});
+        return general(s.Q, s.layout.stick_ends(), {search_cause::zones_searched});
     }
     tangential_solution like(const tangential_solution& s, method, int) override {
         return s.layout.general() ? general_like(s) : single(s.Q, false);
@@ -101,16 +101,16 @@ protected:
     virtual zone_solver& search(double) { return *zones_; }
     // The paper's single zone s where it holds (or options.zones says "single"); else the general
     // search's answer where it holds its checks (or options.zones says "general"); else s, its checks
-    // failed. `guess`: the coarse level's zone.
-    tangential_solution zones_for(double Q, tangential_solution s, std::optional<zone_guess> guess) {
-        if (options_.zones == zone_search::general) return general(Q, guess, {search_cause::asked});
+    // failed. `ends`: the coarse level's zone.
+    tangential_solution zones_for(double Q, tangential_solution s, const std::vector<double>& ends) {
+        if (options_.zones == zone_search::general) return general(Q, ends, {search_cause::asked});
         if (options_.zones == zone_search::single || s.checks.hold()) return s;
         // A structure the general search does not cover (no zone of it carries Q: an empty find, or a load the
         // search refuses; or its answer fails the checks too): the single zone, its checks failed. A numerical fault
         // of the search is not that statement: general's numerical_error.
         std::optional<tangential_solution> g;
         try {
-            g = find_general(Q, guess, {search_cause::checks_failed, &s.checks});
+            g = find_general(Q, ends, {search_cause::checks_failed, &s.checks});
         } catch (const resolution_error&) {
         }
         return g && g->checks.hold() ? *g : s;
@@ -118,7 +118,7 @@ protected:
 
     std::unique_ptr<zone_solver> zones_;  // on the derived model's solver
     bool checks_always_ = false;          // the solver checks every point it solves
-    bool guided_ = true;                  // a coarse level's zone starts the search (general's `guess`)
+    bool guided_ = true;                  // a coarse level's zone starts the search (general's `ends`)
 
 private:
     // `search`'s numerical_error as general_search_fault's line, the search's own nested in it.
@@ -228,10 +228,10 @@ tangential_solution collocation_model::point(double Q, const std::function<std::
             start = slope = std::nullopt;
         }
     }
-    if (!companion_) return zones_for(Q, single(Q, true, start, slope), std::nullopt);
+    if (!companion_) return zones_for(Q, single(Q, true, start, slope), {});
     tangential_solution coarse = companion_->single(Q, false, start, slope);
     tangential_solution s = zones_for(Q, tangential_.solve(Q, predicted(coarse.c0()), true, coarse.load_slope),
-                                      zone_guess{coarse.start(), coarse.c0()});
+                                      coarse.layout.stick_ends());
     // Both levels on the same path: the coarse level's zones by the general search too.
     last_fine_ = s;
     // The general path is not extrapolated: its zone ends do not yet converge at a clean n^-4 at the default n
@@ -279,7 +279,7 @@ public:
         } else if (options_.zones != zone_search::single) {
             // Empty where no zone of the structure carries Q: its refusal is the one below. A numerical fault of
             // the search is not that statement: find_general's numerical_error.
-            searched = find_general(Q, std::nullopt, {search_cause::checks_failed, &s.checks});
+            searched = find_general(Q, {}, {search_cause::checks_failed, &s.checks});
         }
         refuse_dissimilar(searched.value_or(s));
     }
@@ -287,7 +287,7 @@ public:
 private:
     zone_solver& search(double Q) override { return *(Q < 0.0 && braked_ ? braked_ : zones_); }  // sgn(Q) beta_D
     tangential_solution limit_point(double Q) {
-        if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), std::nullopt);
+        if (options_.zones == zone_search::single) return zones_for(Q, single(Q, true), {});
         // The one-parameter paper's zone can be singular where the general zone is not (its
         // c0 tends to -1 near gross sliding when eps2 > eps1, docs/formulation.md 7(g)). A fault of the general
         // search is worded for the user, by general here and by zones_for (the same search again would meet it again).
@@ -295,9 +295,9 @@ private:
         try {
             paper = single(Q, true);
         } catch (const numerical_error&) {
-            return general(Q, std::nullopt, {search_cause::paper_faulted});
+            return general(Q, {}, {search_cause::paper_faulted});
         }
-        return zones_for(Q, *std::move(paper), std::nullopt);
+        return zones_for(Q, *std::move(paper), {});
     }
     // A point of dissimilar rollers whose checks fail (8(s)): a zone between slips with Q whose stick margin alone
     // fails, by less than entry_floor, is the entry's discretisation (7(h): -6.9e-8, -5.7e-9, +1.2e-9 at n = 64, 128,

@@ -147,7 +147,7 @@ bool bracketed(const stick_zone_operator& op, const zone_end& end_of,
 // leading edge, the near-sliding model, the coarser level's zone, the brackets of the scan and below it) gives a root
 // with its checks made, judged by one rule (first_holding, zone_start.hpp, docs/formulation.md 7(k)): the first whose
 // checks hold answers, else the first found (the caller refuses it or reports it with its failed checks).
-std::optional<tangential_solution> general_search(const stick_zone_operator& op, double magnitude, std::optional<zone_guess> guess,
+std::optional<tangential_solution> general_search(const stick_zone_operator& op, double magnitude, const std::vector<double>& ends,
                                     std::optional<double> single_end, rounding_limits& met) {
     const double f = op.f;
     const zone_search_method& method = op.method;
@@ -199,8 +199,8 @@ std::optional<tangential_solution> general_search(const stick_zone_operator& op,
             return std::move(roots).result();
     // Newton from the coarse level's zone when extrapolating. It may find another zone that solves both conditions but
     // not the inequalities (seen near s = 0.97 while it wandered): then the scan goes on.
-    if (guess && guess->start > -1.0)
-        if (auto s = newton_at(op, magnitude, met)(guess->start, guess->c0); s && answers(*s))
+    if (ends.size() == 2 && ends[0] > -1.0)
+        if (auto s = zone_newton(op, magnitude, ends, met); s && answers(*s))
             return std::move(roots).result();
     // Else bracket the entry condition along the family of zones [s, c(s)] that carry |Q|
     // (7(e), zone_end above), the zone from the leading edge (where the structure has one) first.
@@ -275,14 +275,14 @@ double zone_solver::entry_coefficient(const tangential_solution& s) {
     return s.psi_b.empty() ? 0.0 : u_series(s.psi_b, -1.0);  // psi(-1) = sum_j b_j U_j(-1)
 }
 
-std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, std::optional<zone_guess> guess) {
+std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, const std::vector<double>& ends) {
     rounding_limits met;
-    std::optional<tangential_solution> s = find(Q, force_general, guess, met);
+    std::optional<tangential_solution> s = find(Q, force_general, ends, met);
     if (!s && met.met()) throw rounding_limit_error(met.refusal());
     return s;
 }
 
-std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, std::optional<zone_guess> guess,
+std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, const std::vector<double>& ends,
                                                      rounding_limits& met) {
     const double magnitude = load_magnitude(Q, op_.f);
     const std::optional<tangential_solution> single = op_.paper_zone(Q, force_general && magnitude != 0.0);
@@ -294,13 +294,13 @@ std::optional<tangential_solution> zone_solver::find(double Q, bool force_genera
         s.checks = op_.check(s);
         return s;
     }
-    std::optional<tangential_solution> s = general_search(op_, magnitude, guess, single_end, met);
+    std::optional<tangential_solution> s = general_search(op_, magnitude, ends, single_end, met);
     if (s) s = searched_point(*std::move(s), Q, op_.method.name);
     return s;
 }
 
-tangential_solution zone_solver::solve(double Q, bool force_general, std::optional<zone_guess> guess) {
-    if (std::optional<tangential_solution> s = find(Q, force_general, guess)) return *std::move(s);
+tangential_solution zone_solver::solve(double Q, bool force_general, const std::vector<double>& ends) {
+    if (std::optional<tangential_solution> s = find(Q, force_general, ends)) return *std::move(s);
     throw resolution_error(op_.method.refusal);
 }
 

@@ -148,11 +148,11 @@ public:
     // The point at load Q, |Q| <= f, with its checks (3.3)-(3.4) on every zone (made, not acted
     // on: a reported point goes through require_checks, a level of an estimate need not);
     // resolution_error for free rolling and where no three zones carry Q (numerical_error only for a
-    // numerical fault of the searches: a GSL status, a singular system). `guess`: a zone near the one sought (the coarser
-    // level's), the start of Newton's method; without it the starts of the stick zone are scanned.
+    // numerical fault of the searches: a GSL status, a singular system). `ends`: the ends (s, c) of a zone near the one sought
+    // (the coarser level's layout), the start of Newton's method; empty: the starts of the stick zone are scanned.
     // `opposite`: try the leading slip against Q first (the coarser level's structure).
     // only_this_kind: the structure `opposite` names, not the other one after it (full coupling's weighted steps, 8(w)).
-    tangential_solution solve(double Q, std::optional<zone_guess> guess = std::nullopt, bool opposite = false,
+    tangential_solution solve(double Q, const std::vector<double>& ends = {}, bool opposite = false,
                               bool only_this_kind = false);
     // How many times solve was asked here (each a three-zone search, both structures where the first fails): a
     // count of work, for tests that pin where a search is not made (Johnson's point from coarser five zones).

@@ -39,11 +39,6 @@ struct newton_jacobian;        // damped_newton.hpp
 std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, double Q, const std::vector<double>& ends,
                                                rounding_limits& met, newton_jacobian* kept = nullptr);
 
-// A zone near the one sought (the coarse level's, when extrapolating).
-struct zone_guess {
-    double start, c0;
-};
-
 class zone_solver {
 public:
     // The operator's functions refer to its solver, which must outlive this workspace.
@@ -52,19 +47,20 @@ public:
     // The solution of the complementarity problem for the load Q, |Q| <= f: the single zone
     // when its checks hold, else the general search. `force_general` runs the search in any
     // case (where the paper's structure holds it ends at start = -1, the single zone).
-    // `guess`: a zone near the one sought, the start of a Newton iteration (7(e)).
+    // `ends`: the ends (s, c) of a zone near the one sought (the coarser level's layout, stick_ends), the start of a
+    // Newton iteration (7(e)), as the five zones' (zone_start::at_ends); empty: none.
     // Where no zone of the search's structure carries the load (the scan of starts ends on no bracket of the
     // entry condition): a resolution_error with the operator's refusal (find's rounding_limit_error where a Newton of
     // the search stopped at the ends' rounding limit).
-    tangential_solution solve(double Q, bool force_general = false, std::optional<zone_guess> guess = std::nullopt);
+    tangential_solution solve(double Q, bool force_general = false, const std::vector<double>& ends = {});
     // The same search, "no zone of the structure" an empty result (a physical outcome the caller words); a
     // numerical fault on the way (a GSL status, a singular system) stays a numerical_error with its own line. Where
     // nothing is found and a Newton of the search stopped at the ends' rounding limit: a rounding_limit_error.
     std::optional<tangential_solution> find(double Q, bool force_general = false,
-                                            std::optional<zone_guess> guess = std::nullopt);
+                                            const std::vector<double>& ends = {});
     // The same search as one route of a caller's larger one: where nothing is found, empty, the rounding limits its
     // Newton met noted in `met` (the caller tries its other routes, and refuses with them where none answers).
-    std::optional<tangential_solution> find(double Q, bool force_general, std::optional<zone_guess> guess,
+    std::optional<tangential_solution> find(double Q, bool force_general, const std::vector<double>& ends,
                                             rounding_limits& met);
 
     // psi(t = -1) of a collocation solution's stick zone: the coefficient of sqrt(1 + t) in q at its
