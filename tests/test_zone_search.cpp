@@ -13,6 +13,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_newton.hpp"
 #include "roughroll/problems/zone_solver.hpp"
 
 namespace roughroll {
@@ -51,6 +52,19 @@ TEST(ZoneSearch, NoStartsIsNoZoneOfTheStructure) {
     } catch (const resolution_error& e) {
         EXPECT_EQ(std::string(e.what()), "no made-up zone carries the load");
     }
+}
+
+TEST(ZoneSearch, NewtonStartsFromTheCoarserLayoutsEndsAndRefusesAnotherCount) {
+    // The made-up family's root: E = s + 0.5 = 0 and f (1 - (c - s)) = Q, the zone [-0.5, -1/6]. With no start of its
+    // own the search finds it only from the ends given (a layout's stick_ends(), docs/formulation.md 7(k)); ends of
+    // another count than one zone's (s, c) are refused, not dropped in silence (session 27 review R17).
+    const std::optional<tangential_solution> s = zone_solver(without_starts()).find(Q, false, {-0.45, -0.2});
+    ASSERT_TRUE(s);
+    EXPECT_NEAR(s->start(), -0.5, 1e-12);
+    EXPECT_NEAR(s->c0(), -0.5 + (1.0 - Q / f), 1e-12);
+    EXPECT_THROW(zone_solver(without_starts()).find(Q, false, {-0.45, -0.2, 0.1, 0.3}), input_error);
+    rounding_limits met;
+    EXPECT_THROW(zone_newton(without_starts(), Q, {-0.45, -0.2, 0.1}, met), input_error);
 }
 
 TEST(ZoneSearch, AScanWithoutClusteredStartsDoesNotEnterThePassWhereNoStartCarries) {

@@ -98,7 +98,7 @@ tangential_solution dissimilar_zones::five_zone_system(double s1, double c1, dou
     return s;
 }
 
-stick_zone_operator dissimilar_zones::zone_operator(double beta) {
+stick_zone_operator dissimilar_zones::five_zone_newton_operator(double beta) {
     // The zone search's Newton in the blend's stick zones (zone_newton, k = 2): the load's gap, both entry conditions
     // psi_k(-1) = 0 and xi1 = xi2, absolute, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
     stick_zone_operator op;
@@ -123,7 +123,7 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, const 
     if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     const double forcing = beta.value_or(std::fabs(beta_d_));
     rounding_limits own;  // where the caller keeps none
-    std::optional<tangential_solution> s = zone_newton(zone_operator(forcing), Q, ends, met ? *met : own, kept);
+    std::optional<tangential_solution> s = zone_newton(five_zone_newton_operator(forcing), Q, ends, met ? *met : own, kept);
     // Not made: NaN margins, nothing holding (a caller that reads them makes them: check).
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (s) s->checks = checked ? check(*s) : traction_checks{nan, nan, nan, nan, nan, false, false, false};

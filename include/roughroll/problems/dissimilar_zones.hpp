@@ -196,8 +196,9 @@ private:
     // The three zones at |Q| = magnitude with the forcing b as the one zone search's operator: both slip
     // zones in the direction of Q (`opposite` false), or the leading one against it (8(g)).
     stick_zone_operator zone_operator(bool opposite, double b, double magnitude);
-    // The five zones with the forcing `beta` as the operator of the zone search's Newton (its k = 2 systems).
-    stick_zone_operator zone_operator(double beta);
+    // The five zones with the forcing `beta` as an operator of zone_newton only (its k = 2 systems): the members of the
+    // one zone's search (solve, excess, scan...) are unset, so it is no operator for zone_solver.
+    stick_zone_operator five_zone_newton_operator(double beta);
     tangential_solution blended(double start, double c0, double b);  // the system with S of 8(g)
     tangential_solution gross_sliding(double b);
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
