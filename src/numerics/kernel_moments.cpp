@@ -83,6 +83,23 @@ namespace {
 // started far above both count and the orders where e^{-A} I_m(A) is not negligible (about
 // sqrt(A) beyond A's own scale), and normalised by e^{-A} (I_0 + 2 sum_{m>=1} I_m) = 1.
 std::vector<double> scaled_bessel_i(int count, double A) {
+    // A < 1e-4: the power series e^{-A} sum_k (A/2)^{2k+m}/(k!(k+m)!) (A&S 9.6.10), each term
+    // at most (A/2)^2 = 2.5e-9 of the one before, so six terms are exact to rounding; below about
+    // 1e-40 the recurrence's step 2m/A overflows its rescaling (tiny decay rates are valid input).
+    if (A < 1e-4) {
+        std::vector<double> out(count, 0.0);
+        double lead = std::exp(-A);  // e^{-A} (A/2)^m / m!, underflowing to 0 gracefully
+        for (int m = 0; m < count; ++m) {
+            double term = lead, sum = 0.0;
+            for (int k = 1; k <= 6 && term != 0.0; ++k) {
+                sum += term;
+                term *= (A / 2) * (A / 2) / (k * static_cast<double>(k + m));
+            }
+            out[m] = sum;
+            lead *= (A / 2) / (m + 1);
+        }
+        return out;
+    }
     const double scale = std::max(static_cast<double>(count), std::min(A, 1e6));
     const int start = count + 40 + static_cast<int>(std::ceil(std::sqrt(60.0 * scale)));
     std::vector<double> out(count, 0.0);
