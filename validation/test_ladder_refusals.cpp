@@ -131,15 +131,16 @@ struct full_run {
     int stopped_at = 0;       // the rung whose checkpoint stopped the climb (0: none)
 };
 
-// The ladder at Q/f, tolerance `tol`; a rung in `stop` throws at its first level's solve.
-full_run run_full(double Q_over_f, std::optional<double> tol, const std::vector<int>& stop) {
+// The ladder at Q/f, tolerance `tol`; a rung in `stop` throws at its first level's solve. The pair's beta_D and f
+// unless given.
+full_run run_full(double Q_over_f, std::optional<double> tol, const std::vector<int>& stop, double f = 0.05,
+                  double beta_d = beta_al_st) {
     full_run r;
     solver_options options;
     options.tolerance = tol;
-    const double f = 0.05;
     level_ladder ladder(options, roughness{}, [&](int n) {
         auto c = std::make_unique<contact>(roughness{}, f, solver_options{n, options.how, options.zones, tol},
-                                           dissimilar{beta_al_st, coupling_level::full});
+                                           dissimilar{beta_d, coupling_level::full});
         const bool stops = std::find(stop.begin(), stop.end(), n) != stop.end();
         c->set_checkpoint([&r, n, stops] {  // (copied to the rung's levels)
             if (r.solved.empty() || r.solved.back() != n) r.solved.push_back(n);
@@ -342,4 +343,33 @@ TEST(LadderRefusals, SettledFailureNeedsThreeRungsOfOneStructure) {
     // One text with a rung's own refusal (coupled_failure_cause and _advice): the contact would open.
     EXPECT_NE(open->find("the contact would open"), std::string::npos) << *open;
     EXPECT_NE(open->find("coupling = \"johnson\" answers it without that term"), std::string::npos) << *open;
+}
+
+// docs/formulation.md 8(q), "An alternation that converges at no level" (issue 24; session 27 slowref item 2): beta_d =
+// 0.7, f = 0.3, Q/f = -0.5 at full coupling. The alternation converges at no level (8 .. 1000 measured: 40 steps, or
+// changes that grow), and a reported point's refusal named the first failed check of a non-converged iterate ("the
+// coupled zones fail the checks"), after every rung (65 s CPU). Now a rung's line names the alternation, and once rungs
+// 128 and 256 show it at their points and levels the ladder stops (rungs 512, 1000 throw here if started: the old
+// program stops on 512's first solve, with no refusal).
+TEST(LadderRefusals, AlternationConvergingAtNoLevelRefusedAfterTwoRungs) {
+    contact rung(roughness{}, 0.3, solver_options{128}, dissimilar{0.7, coupling_level::full});
+    try {
+        rung.point(-0.15);
+        ADD_FAILURE() << "answered at n = 128";
+    } catch (const resolution_error& e) {
+        const std::string line = e.what();
+        EXPECT_NE(line.find("the alternation does not"), std::string::npos) << line;
+        EXPECT_NE(line.find("failing the checks (3.3)-(3.4) on the way"), std::string::npos) << line;
+        EXPECT_EQ(line.find("the coupled zones fail the checks"), std::string::npos) << line;
+        EXPECT_NE(line.find("coupling = \"johnson\""), std::string::npos) << line;
+    }
+    const full_run r = run_full(-0.5, std::nullopt, {512, 1000}, 0.3, 0.7);
+    EXPECT_EQ(r.stopped_at, 0);
+    EXPECT_FALSE(r.answer.has_value());
+    EXPECT_NE(r.refusal.find("converges at none of n = 32, 64, 128 and 256"), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("coupling = \"johnson\" answers the load"), std::string::npos) << r.refusal;
+    EXPECT_NE(r.refusal.find("--n 512"), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.refusal.find("fail the checks"), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.refusal.find('\n'), std::string::npos) << r.refusal;
+    EXPECT_EQ(r.refusal.find("::"), std::string::npos) << r.refusal;
 }

@@ -148,3 +148,44 @@ TEST(LadderTopRung, AGivenNsUnconvergedLevelsAdviseLeavingNOut) {
     const scene_point answered = solve_point(ladder, Q);  // the advice holds: the ladder answers
     EXPECT_GT(to_json(answered.report())["n"].get<int>(), 32);
 }
+
+// docs/formulation.md 8(q), "The top rung's levels from the finest coupled rung" (issue 24; session 28). Free rolling of
+// the pair at f = 0.3, full coupling: rung 1000's levels 250, 500 double no rung, and from their own Johnson's five zones
+// their alternations lost them ("not found again from the previous step"), so rule (a') was silent and rung 1000's point,
+// from its own Johnson's point, failed the same way: refused with rung 256's best estimate after 97 s CPU. Level 250 now
+// starts from rung 256's coupled point: at the default tolerance (a') refuses rung 1000 from its levels (11 s), and at
+// 1e-3 rung 1000 answers, its estimate at least (a')'s certain part and its numbers within the estimates of rung 256's
+// answer (at the tolerance 0.08). The old program refuses all three.
+TEST(LadderTopRung, LevelsFromTheFinestCoupledRung) {
+    const std::string text = "friction = 0.3\nQ = 0.0\nbeta_d = 0.1438337435056057\ncoupling = \"full\"\n";
+    const scene free_rolling = parse_scene(text, "free.toml");
+    const std::string said = "n = 1000 was not solved: its estimate of stick start is at least ";
+    double at_least = std::nan("");
+    try {
+        solve_point(free_rolling, std::nullopt);
+        ADD_FAILURE() << "answered at the default tolerance";
+    } catch (const resolution_error& e) {
+        const std::string line = e.what();
+        EXPECT_NE(line.find(said), std::string::npos) << line;
+        EXPECT_NE(line.find("from its levels n = 250, 500"), std::string::npos) << line;
+        at_least = number_after(line, said);
+    }
+    const auto answered = [&](double tolerance) {
+        scene s = free_rolling;
+        override_solver(s, std::nullopt, std::nullopt, std::nullopt, tolerance);
+        return solve_point(s, std::nullopt);
+    };
+    const scene_point fine = answered(1e-3);
+    EXPECT_EQ(to_json(fine.report())["n"].get<int>(), 1000);
+    ASSERT_TRUE(fine.solution.checks.hold());
+    ASSERT_TRUE(fine.estimate.has_value());
+    ASSERT_EQ(fine.solution.layout.stick_zones(), 2u);
+    EXPECT_GE(fine.estimate->start / (1.0 + fine.solution.start()), at_least);
+    const scene_point coarse = answered(0.08);
+    EXPECT_EQ(to_json(coarse.report())["n"].get<int>(), 256);
+    ASSERT_TRUE(coarse.estimate.has_value());
+    const tangential_solution &a = coarse.solution, &b = fine.solution;
+    EXPECT_GE(coarse.estimate->start, std::fabs(a.start() - b.start()));
+    EXPECT_GE(coarse.estimate->c0, std::fabs(a.c0() - b.c0()));
+    EXPECT_GE(coarse.estimate->xi, std::fabs(a.xi - b.xi));
+}

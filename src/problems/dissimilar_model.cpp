@@ -493,7 +493,13 @@ public:
         if (before_ && before_->Q == Q) solved = std::move(before_);
         before_.reset();
         if (!solved) solved = solve_levels(Q, below);
-        return coupled(Q, solved->johnson, true, solved->start);
+        try {
+            return coupled(Q, solved->johnson, true, solved->start);
+        } catch (const alternation_error& e) {
+            // The estimate's levels' alternations did not converge either: the ladder reads it over two rungs (8(q),
+            // "An alternation that converges at no level").
+            throw alternation_error(e.what(), solved->none_converged);
+        }
     }
     std::vector<estimate_level> levels_before(double Q, const std::function<std::vector<int>()>& below) override {
         no_slip_.reset();
@@ -585,23 +591,49 @@ private:
         double Q;
         tangential_solution johnson;
         const full_coupling* start;
+        bool none_converged;  // every level's alternation stopped without converging (full_coupling::did_not_converge)
     };
     levels_solved solve_levels(double Q, const std::function<std::vector<int>()>& below) {
         check_edge_zones(Q, nodes());
         const std::vector<int> ms = below();
         tangential_solution johnson = johnson_point(Q, levels_.at<johnson_model>(ms));
-        const full_coupling* start = nullptr;
-        for (coupled_model* level : levels_.at(ms)) {
+        const std::vector<coupled_model*> levels = levels_.at(ms);
+        const full_coupling* start = levels.empty() ? nullptr : finest_solved_below(Q, levels.front()->nodes());
+        bool none_converged = !levels.empty();
+        for (coupled_model* level : levels) {
+            bool alternated = false;  // the failure, if any, is the level's alternation's (not Johnson's point's)
             try {
-                level->coupled(Q, level->johnson_model::like(johnson, options_.how, nodes()), false, start);
+                const tangential_solution& from = level->johnson_model::like(johnson, options_.how, nodes());
+                alternated = true;
+                level->coupled(Q, from, false, start);
                 start = &level->coupling_;
+                none_converged = false;
             } catch (const numerical_error&) {
                 start = nullptr;
+                none_converged = none_converged && alternated && level->coupling_.did_not_converge();
             } catch (const resolution_error&) {
                 start = nullptr;
+                none_converged = none_converged && alternated && level->coupling_.did_not_converge();
             }
         }
-        return {Q, std::move(johnson), start};
+        return {Q, std::move(johnson), start, none_converged};
+    }
+
+    // The start of this chain's coarsest level `coarsest` where it is not solved at Q yet: the converged alternation at
+    // Q of the finest other level of the ladder below this one (docs/formulation.md 8(q), "The top rung's levels from the
+    // finest coupled rung"; its p1 is a function of r, read at any n, 8(e) "The start from the coarser level"), else
+    // none (Johnson's point). Rung 1000's levels 250, 500 double no rung: from their own Johnson's five zones the
+    // alternation loses them where the chain 32 .. 256 follows them (free rolling of the pair at f = 0.3).
+    const full_coupling* finest_solved_below(double Q, int coarsest) {
+        if (levels_.at(coarsest).load_ == std::optional<double>(Q)) return nullptr;  // solved: kept, as before
+        const coupled_model* finest = nullptr;
+        for (point_model* m : stored_alike()) {
+            const auto* c = dynamic_cast<const coupled_model*>(m);
+            if (c && c->nodes() < nodes() && c->load_ == std::optional<double>(Q) && !c->no_slip_ &&
+                (!finest || c->nodes() > finest->nodes()))
+                finest = c;
+        }
+        return finest ? &finest->coupling_ : nullptr;
     }
 
     // Free rolling of smooth rollers whose edge layers the tolerance neglects at full coupling (8(t)): every

@@ -153,6 +153,10 @@ std::string coupled_failure_advice(bool pressure) {
                       "full coupling";
 }
 
+std::string alternation_failure_advice() {
+    return "coupling = \"johnson\" answers the load with the pressure uncoupled, an approximation of order beta_d f";
+}
+
 namespace {
 // The refusal of a reported point whose coupled zones fail the checks (3.3)-(3.4): either the zone structure changes
 // under the coupling (8(e)), or the discrete solution at this n misses them next to a zone end, where the exact
@@ -173,6 +177,21 @@ failed_checks_error failed_checks(const tangential_solution& t, double Q, double
                                    "larger n (--n, or none: the ladder's) may answer it; " +
                                    coupled_failure_advice(false),
                                t);
+}
+
+[[noreturn]] void not_converged(std::ostringstream& msg, const std::optional<failed_checks_error>& lagging) {
+    // Without a failed check on the way a fault of this n, as always (numerical_error: no rung is tried after it).
+    // With one, the cause is still the alternation: the margins are of an iterate that is no solution, so they are no
+    // reason and settle nothing over the rungs (8(q) "A failure the levels settle" reads converged points' margins
+    // only); the refusal says so, and a rung above is tried (8(q), "An alternation that converges at no level").
+    if (!lagging) {
+        msg << "; docs/formulation.md 8(e))";
+        throw numerical_error(msg.str());
+    }
+    msg << ", its iterates failing the checks (3.3)-(3.4) on the way, margins: " << margins_text(lagging->checks())
+        << "; docs/formulation.md 8(e), 8(q)); " << alternation_failure_advice()
+        << ", and another n (--n, or none: the ladder's) may converge";
+    throw alternation_error(msg.str());
 }
 
 // The zone ends of a point (the second zone's are 2 outside five zones).
@@ -295,6 +314,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     previous_.reset();
     summary_ = coupling_summary{};
     summary_.lambda_johnson = johnson.lambda;
+    did_not_converge_ = false;
     // The source of beta_D p1^(k) for normal solve k + 1: at k = 0 Johnson's point (its zones workspace
     // outlives this solve: the contact's) or the coarser level's converged iterate (8(e), "The start from
     // the coarser level": the same load, its p1 a function of r evaluated at this level's points), then the
@@ -311,7 +331,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     jacobian_ = newton_jacobian{};
     if (start) jacobian_.J = coarser->jacobian_.J;
     double previous_change = 0.0;
-    std::optional<resolution_error> lagging;  // a step's failed checks while its kinks lag (below), margins dropped
+    std::optional<failed_checks_error> lagging;  // a step's failed checks while its kinks lag (below)
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
     int switched_at = 0;                      // the step that switched it on (0: none)
     // The Gauss-Jacobi rules of this solve (n and 4 n nodes, 8(v) and 8(w)): built once, read by every step's weighted
@@ -368,7 +388,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         try {
             next = solve_step(weighted ? nullptr : kinks_of(from, johnson.rule, k1_, k2_));
         } catch (const std::exception&) {
-            if (lagging) throw *lagging;  // the first failure seen, as the old program refused
+            if (lagging) throw resolution_error(lagging->what());  // the first failure seen, as the old program refused
             throw;
         }
         // The checks of a reported point. With p_q^0 the step's pressure has its kinks at the source's zone
@@ -393,7 +413,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             const std::vector<double> a = ends_of(next->s), b = ends_of(source);
             for (std::size_t i = 0; i < a.size(); ++i) end_change = std::max(end_change, std::fabs(a[i] - b[i]));
         }
-        if (!(std::isfinite(value_change) && std::isfinite(end_change)) && lagging) throw *lagging;
+        if (!(std::isfinite(value_change) && std::isfinite(end_change)) && lagging)
+            throw resolution_error(lagging->what());
         if (!(std::isfinite(value_change) && std::isfinite(end_change)))
             throw numerical_error(coupling_at_load(Q, f_) + "the alternation gives a non-finite value at step " +
                                   std::to_string(k));
@@ -456,21 +477,21 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         if (k > 3 && (switched_at == 0 || k > switched_at + 2) &&
             value_change > std::max(coupling_value_tolerance, value_floor) && value_change > previous_change &&
             previous_change > summary_.changes[k - 3]) {
-            if (lagging) throw *lagging;
+            did_not_converge_ = true;
             std::ostringstream msg;
             msg.precision(3);
             msg << coupling_at_load(Q, f_) << "the alternation does not contract (changes " << summary_.changes[k - 3] << ", "
-                << previous_change << ", " << value_change << "; docs/formulation.md 8(e))";
-            throw numerical_error(msg.str());
+                << previous_change << ", " << value_change;
+            not_converged(msg, lagging);
         }
         previous_change = value_change;
     }
-    if (lagging) throw *lagging;
+    did_not_converge_ = true;
     std::ostringstream msg;
     msg.precision(3);
     msg << coupling_at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations
-        << " steps (last change " << previous_change << "; docs/formulation.md 8(e))";
-    throw numerical_error(msg.str());
+        << " steps (last change " << previous_change;
+    not_converged(msg, lagging);
 }
 
 }  // namespace roughroll

@@ -188,6 +188,17 @@ std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& r, 
     return std::nullopt;
 }
 
+std::string unconverged_everywhere(int first, int second, double Q, double f) {
+    // docs/formulation.md 8(q), "An alternation that converges at no level": two rungs n, 2n whose points and levels
+    // n/4 .. 2n all stop without converging (measured: beta_d = 0.7, f = 0.3, Q/f = -0.5 at every level from 8 to 1000),
+    // so the climb stops there; no claim on a larger n, which the user may still give.
+    return "full coupling at Q/f = " + shortest(Q / f) + ": the alternation between the normal and tangential problems "
+           "converges at none of n = " + std::to_string(first / 4) + ", " + std::to_string(first / 2) + ", " +
+           std::to_string(first) + " and " + std::to_string(second) +
+           " (docs/formulation.md 8(e), 8(q)), so no larger n was tried: " + alternation_failure_advice() +
+           ", and --n " + std::to_string(2 * second) + " or more tries a larger n at full coupling";
+}
+
 level_ladder::outlook level_ladder::beyond(const answer& a, const contact& c, std::size_t i) const {
     // Full coupling (docs/formulation.md 8(q)): each later rung's estimate from rung i's level changes.
     // (a) The next rung, when it doubles n (levels n/2, n, 2n), has an estimate of at least twice
@@ -290,10 +301,12 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
     int last_n = rungs_.back();   // the last rung tried
     std::vector<bool> skip(rungs_.size(), false);
     std::vector<failed_rung> failed;  // the rungs before, each in turn, whose points failed the checks at full coupling
+    std::vector<int> unconverged;     // the rung before, where its point's and levels' alternations did not converge
     for (std::size_t i = from; i < rungs_.size() && beyond_all.empty() && !rounding_limit; ++i) {
         const int n = rungs_[i];
         if (skip[i]) continue;
         std::vector<failed_rung> failed_before = std::exchange(failed, {});
+        const std::vector<int> unconverged_before = std::exchange(unconverged, {});
         advised_last = false;
         last_n = n;
         try {
@@ -372,6 +385,14 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             }
         } catch (const beyond_method_error&) {  // no rung can: its own line says what to change
             throw;
+        } catch (const alternation_error& e) {  // as resolution_error, unless two rungs show it at every level (8(q))
+            last_reason = one_line(e.what());
+            advised_last = true;
+            if (e.levels_too() && !unconverged_before.empty() && unconverged_before.back() * 2 == n) {
+                if (Q && i + 1 < rungs_.size())
+                    throw resolution_error(unconverged_everywhere(unconverged_before.back(), n, *Q, at(n).friction()));
+            }
+            if (e.levels_too()) unconverged = {n};
         } catch (const failed_checks_error& e) {  // as resolution_error, unless three rungs settle it (8(q))
             last_reason = one_line(e.what());
             advised_last = true;

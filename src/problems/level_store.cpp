@@ -28,4 +28,14 @@ point_model& level_store::model(const key& k, const std::function<std::unique_pt
     return *shared_.emplace_back(k, std::move(own)).second;
 }
 
+std::vector<point_model*> level_store::alike(const key& k) const {
+    std::vector<point_model*> found;
+    for (const auto& [at, m] : shared_) {
+        key other = k;
+        other.options.n = at.options.nodes();
+        if (at.options.nodes() != k.options.nodes() && other == at) found.push_back(m.get());
+    }
+    return found;
+}
+
 }  // namespace roughroll

@@ -87,6 +87,25 @@ private:
     zone_layout layout_;
 };
 
+// A reported point whose alternation stops without converging (40 steps, or changes that grow) after a step whose
+// checks (3.3)-(3.4) failed on the way (full_coupling::solve): the cause is the alternation, not those checks of an
+// iterate that is no solution (docs/formulation.md 8(q), "An alternation that converges at no level").
+// `levels_too`: the estimate's levels of the same point did not converge either (coupled_model::point), which the
+// ladder of levels reads over two rungs.
+class alternation_error : public resolution_error {
+public:
+    explicit alternation_error(const std::string& what, bool levels_too = false)
+        : resolution_error(what), levels_too_(levels_too) {}
+    bool levels_too() const { return levels_too_; }
+
+private:
+    bool levels_too_;
+};
+
+// What answers a load whose alternation converges at no level: one text for a rung's refusal (full_coupling.cpp) and
+// the ladder's (level_ladder.cpp).
+std::string alternation_failure_advice();
+
 // The alternation's stop for one group of its numbers (lambda, e, xi; or the zone ends), docs/formulation.md 8(e),
 // "The stop from the contraction": `changes` the group's largest change per step, from the first step; `own_from` the
 // index of the first change that is the level's own map's (1 from a coarser level's start, whose first change is the
@@ -122,9 +141,10 @@ public:
     // `checked`: each step's checks (3.3)-(3.4) must hold (a point reported), else resolution_error;
     // without, five zones' are not made (a level of an estimate reads none; s.checks not made: NaN margins: docs/formulation.md
     // 8(q), "The checks where they are read"), three zones' made, not acted on.
-    // `coarser`: a coarser level's alternation converged at the same load; its last iterate (beta_D p1, its
-    // zone ends and kinks, evaluated at this level's points) replaces Johnson's point as the start, which
-    // the alternation then leaves for this level's own fixed point (docs/formulation.md 8(e), "The start
+    // `coarser`: a coarser level's alternation converged at the same load (or, for a top rung's coarsest level, the
+    // finest coupled rung's below it: 8(q), "The top rung's levels from the finest coupled rung"); its last iterate
+    // (beta_D p1, its zone ends and kinks, evaluated at this level's points) replaces Johnson's point as the start,
+    // which the alternation then leaves for this level's own fixed point (docs/formulation.md 8(e), "The start
     // from the coarser level"); it must outlive this call only.
     const tangential_solution& solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
                                      const tangential_solution& johnson_point, bool checked,
@@ -136,6 +156,9 @@ public:
     tangential_solver& tangential();
     dissimilar_zones& zones();
     const coupling_summary& summary() const { return summary_; }
+    // Whether the last solve stopped because its alternation did not converge (40 steps, or changes that grow; not a
+    // step that failed), docs/formulation.md 8(e).
+    bool did_not_converge() const { return did_not_converge_; }
 
 private:
     struct iterate;
@@ -150,6 +173,7 @@ private:
     coupling_summary summary_;
     std::function<void()> checkpoint_;
     coupling_stop stop_ = coupling_stop::contraction;
+    bool did_not_converge_ = false;
 };
 
 }  // namespace roughroll

@@ -57,6 +57,11 @@ struct failed_rung {
 // below zero. The refusal's line (no n answers, what does), or none.
 std::optional<std::string> settled_failure(const std::array<failed_rung, 3>& rungs, double Q, double f);
 
+// The refusal where the alternation of full coupling converged at no level of two rungs `first`, `second` = 2 first
+// (their points and levels first/4 .. second), at load Q with friction f (docs/formulation.md 8(q), "An alternation
+// that converges at no level").
+std::string unconverged_everywhere(int first, int second, double Q, double f);
+
 // How an estimate compares with the tolerance tol, quantity by quantity (docs/performance.md "The
 // ladder chooses n"): a quantity v with estimate e and scale s is within it when
 // e <= max(tol s, r), r its rounding floor at n = max_nodes (error_bound.hpp and contact's floors:

@@ -86,6 +86,10 @@ public:
     // make()'s, handed over in `own` to the caller, who owns it. Counted at k's n when made.
     point_model& model(const key& k, const std::function<std::unique_ptr<point_model>()>& make,
                        std::unique_ptr<point_model>& own);
+    // The shared models of k's scene at every other n (each field of k but n equal), for a model that starts from another
+    // level's solution: full coupling's rung 1000, whose levels 250, 500 double no rung (docs/formulation.md 8(q),
+    // "The top rung's levels from the finest coupled rung"). Made nothing, counted nothing.
+    std::vector<point_model*> alike(const key& k) const;
     // How many models at n were made: a level solved by two rungs on models of their own counts 2.
     int made(int n) const {
         const auto it = made_.find(n);

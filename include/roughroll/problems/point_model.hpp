@@ -132,6 +132,13 @@ public:
     void share_levels_in(level_store* store) { store_ = store; }
 
 protected:
+    // The ladder's models of this scene at the other n, computed by the level method (level_store::alike); none without a
+    // store.
+    std::vector<point_model*> stored_alike() const {
+        if (!store_) return {};
+        return store_->alike({surfaces_, f_, materials_,
+                              solver_options{nodes(), level_of(options_.how), options_.zones, options_.tolerance}});
+    }
     template <class M>
     friend class model_levels;
     void checkpoint() const {
