@@ -6,6 +6,7 @@
 // for a scan without `clustered` too, where the start list can be empty (starts from -1 up to r*, and r* = -1), and
 // read past an empty vector. Checked on a made-up stick-zone operator, in closed form, with no start at all.
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -57,14 +58,15 @@ TEST(ZoneSearch, NoStartsIsNoZoneOfTheStructure) {
 TEST(ZoneSearch, NewtonStartsFromTheCoarserLayoutsEndsAndRefusesAnotherCount) {
     // The made-up family's root: E = s + 0.5 = 0 and f (1 - (c - s)) = Q, the zone [-0.5, -1/6]. With no start of its
     // own the search finds it only from the ends given (a layout's stick_ends(), docs/formulation.md 7(k)); ends of
-    // another count than one zone's (s, c) are refused, not dropped in silence (session 27 review R17).
+    // another count than one zone's (s, c) are refused, not dropped in silence (session 27 review R17), as the
+    // programming error they are (std::invalid_argument, the CLI's "internal error"; review R23).
     const std::optional<tangential_solution> s = zone_solver(without_starts()).find(Q, false, {-0.45, -0.2});
     ASSERT_TRUE(s);
     EXPECT_NEAR(s->start(), -0.5, 1e-12);
     EXPECT_NEAR(s->c0(), -0.5 + (1.0 - Q / f), 1e-12);
-    EXPECT_THROW(zone_solver(without_starts()).find(Q, false, {-0.45, -0.2, 0.1, 0.3}), input_error);
+    EXPECT_THROW(zone_solver(without_starts()).find(Q, false, {-0.45, -0.2, 0.1, 0.3}), std::invalid_argument);
     rounding_limits met;
-    EXPECT_THROW(zone_newton(without_starts(), Q, {-0.45, -0.2, 0.1}, met), input_error);
+    EXPECT_THROW(zone_newton(without_starts(), Q, {-0.45, -0.2, 0.1}, met), std::invalid_argument);
 }
 
 TEST(ZoneSearch, AScanWithoutClusteredStartsDoesNotEnterThePassWhereNoStartCarries) {

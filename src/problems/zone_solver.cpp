@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -255,7 +256,9 @@ std::optional<tangential_solution> general_search(const stick_zone_operator& op,
 
 std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, double Q, const std::vector<double>& ends,
                                                rounding_limits& met, newton_jacobian* kept) {
-    if (ends.size() % 2 != 0) throw input_error("zone search: Newton's start needs a start and an end per stick zone");
+    // No input reaches this: every caller passes a layout's ends (review R23 of session 27: a programming error).
+    if (ends.size() % 2 != 0)
+        throw std::invalid_argument("zone search: Newton's start needs a start and an end per stick zone");
     std::vector<stick_span> from;
     for (std::size_t k = 0; k + 1 < ends.size(); k += 2) from.push_back({ends[k], ends[k + 1], 0.0});
     using systems_of = std::function<std::optional<tangential_solution>(const std::vector<stick_span>&)>;
@@ -285,8 +288,8 @@ std::optional<tangential_solution> zone_solver::find(double Q, bool force_genera
 
 std::optional<tangential_solution> zone_solver::find(double Q, bool force_general, const std::vector<double>& ends,
                                                      rounding_limits& met) {
-    if (!ends.empty() && ends.size() != 2)
-        throw input_error("zone search: Newton's start needs the stick zone's two ends");
+    if (!ends.empty() && ends.size() != 2)  // a layout of another structure: a programming error (R23)
+        throw std::invalid_argument("zone search: Newton's start needs the stick zone's two ends");
     const double magnitude = load_magnitude(Q, op_.f);
     const std::optional<tangential_solution> single = op_.paper_zone(Q, force_general && magnitude != 0.0);
     if (single && (magnitude == 0.0 || (!force_general && single->checks.hold()))) return *single;

@@ -33,7 +33,7 @@ class rounding_limits;         // zone_newton.hpp
 struct newton_jacobian;        // damped_newton.hpp
 
 // Newton in the ends of the operator's stick zones at the load Q (in the operator's frame) from `ends` (s_1, c_1, ...,
-// s_k, c_k; an odd count is an input_error), for every zone search (ends_newton, zone_newton.hpp: the operator's systems, entry condition, residuals
+// s_k, c_k; an odd count is std::invalid_argument), for every zone search (ends_newton, zone_newton.hpp: the operator's systems, entry condition, residuals
 // and tolerance); empty where it does not converge, its stop at the ends' rounding limit noted in `met`. `kept`: a
 // Jacobian carried from the last solve of a sequence (full coupling's alternation).
 std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, double Q, const std::vector<double>& ends,
@@ -48,7 +48,7 @@ public:
     // when its checks hold, else the general search. `force_general` runs the search in any
     // case (where the paper's structure holds it ends at start = -1, the single zone).
     // `ends`: the ends (s, c) of a zone near the one sought (the coarser level's layout, stick_ends), the start of a
-    // Newton iteration (7(e)), as the five zones' (zone_start::at_ends); empty: none; another count: input_error.
+    // Newton iteration (7(e)), as the five zones' (zone_start::at_ends); empty: none; another count: std::invalid_argument.
     // Where no zone of the search's structure carries the load (the scan of starts ends on no bracket of the
     // entry condition): a resolution_error with the operator's refusal (find's rounding_limit_error where a Newton of
     // the search stopped at the ends' rounding limit).
