@@ -4,11 +4,12 @@
 // below Q/f ~ 0.9 and of a braked one near free rolling (8(j) 4a). The blend of 8(g) with two
 // stick zones, each with its own collocation system (tangential_solver::solve_on_zone) whose right
 // side carries the other zone's L1[q] (block Gauss-Seidel): the zone search's operator on two zones, with
-// its Newton in the four ends (zone_newton, zone_solver.hpp) from the starts of zone_start.hpp, tried in turn by one loop.
+// its Newton in the four ends (zone_newton) from the starts of zone_start.hpp, tried by find_zones (zone_solver.hpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -27,10 +28,6 @@ constexpr int max_sweeps = 200;  // block Gauss-Seidel sweeps of one system
 // gave up: the failures "from f = 0.05's ends at f = 0.049" and from nearby loads (8(j) 4a).
 constexpr double sweep_tolerance = 1e-15;
 constexpr double sweep_rounding = 4.0 * std::numeric_limits<double>::epsilon();
-// The continuations' steps (8(j) 4a): in the load f/8, halved down to f/1024 (the slip+ zone closing near the
-// braked transition); in the forcing factors 2^(1/4), halved in the exponent down to 2^(1/64).
-constexpr double load_step = 1.0 / 8.0, smallest_load_step = 1.0 / 1024.0;  // times f
-constexpr double forcing_step = 0.25, smallest_forcing_step = 1.0 / 64.0;   // in log2 of the forcing
 // The scan's loads Q/f = k/8, 1/4 first: it gave starts at f = 0.05 and 0.1 (each try costs about a continuation).
 // Then 1/16, 1/32, 1/64, after them so that every start that answered before answers first: where the five zones
 // close in the load near free rolling, the driven three zones hold at every k/8 and give no start (the rough pair of
@@ -100,10 +97,13 @@ tangential_solution dissimilar_zones::five_zone_system(double s1, double c1, dou
 
 stick_zone_operator dissimilar_zones::five_zone_newton_operator(double beta) {
     // The zone search's Newton in the blend's stick zones (zone_newton, k = 2): the load's gap, both entry conditions
-    // psi_k(-1) = 0 and xi1 = xi2, absolute, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1.
+    // psi_k(-1) = 0 and xi1 = xi2, absolute, in (m1, rho1, m2, rho2) with -1 < s1 < c1 < s2 < c2 <= 1; their checks,
+    // and their seed from the driven three zones (find_zones' starts).
     stick_zone_operator op;
     op.f = f_;
     op.systems = [this, beta](const std::vector<stick_span>& z) -> std::optional<tangential_solution> {
+        // Ends of another structure: a programming error (every caller passes a layout's, review R23 of session 27).
+        if (z.size() != 2) throw std::invalid_argument("five zones: Newton's start needs four ends s1, c1, s2, c2");
         try {
             return five_zone_system(z[0].start, z[0].end, z[1].start, z[1].end, beta);
         } catch (const numerical_error&) {
@@ -111,6 +111,10 @@ stick_zone_operator dissimilar_zones::five_zone_newton_operator(double beta) {
         }
     };
     op.newton_entry = zone_solver::entry_coefficient;
+    op.check = [this](const tangential_solution& s) { return check(s); };
+    op.seed = [this, beta](double load, bool& holds, rounding_limits& met) {
+        return from_three_zones(load, beta, holds, met);
+    };
     op.method.relative_load = false;
     op.method.newton_tolerance = zone_end_resolution;
     return op;
@@ -120,7 +124,6 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, const 
                                                                std::optional<double> beta, rounding_limits* met,
                                                                newton_jacobian* kept, bool checked) {
     if (!(std::fabs(Q) < f_)) throw input_error("five zones: |Q| < f");
-    if (ends.size() != 4) throw input_error("five zones: the guess needs four ends s1, c1, s2, c2");
     const double forcing = beta.value_or(std::fabs(beta_d_));
     rounding_limits own;  // where the caller keeps none
     std::optional<tangential_solution> s = zone_newton(five_zone_newton_operator(forcing), Q, ends, met ? *met : own, kept);
@@ -201,7 +204,8 @@ std::optional<tangential_solution> dissimilar_zones::from_three_zones(double loa
             const double r = i == samples ? 1.0 : three.c0() + (1.0 - three.c0()) * i / samples;
             if (!(slip_velocity(three, r) < 0.0)) continue;
             const double turn = three.c0() + (1.0 - three.c0()) * (i - 0.5) / samples;
-            return five_zones(load, {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, forcing, &met);
+            return zone_newton(five_zone_newton_operator(forcing), load,
+                               {three.start(), three.c0(), turn, turn + 0.5 * (1.0 - turn)}, met);
         }
         holds = true;  // v > 0 up to the edge: the three zones are the answer
     } catch (const error&) {
@@ -222,41 +226,8 @@ std::optional<tangential_solution> dissimilar_zones::five_zones(double Q, std::v
     // led Newton to a slip+ zone closed to 2.6e-5 (stick margin -0.091) and every finer level followed it from the
     // coarser ends, while the scan's start (Q/f = 1/4 continued in Q) reaches the physical root, n = 64's (8(j) 4a,
     // "Which root"). Where no start reaches one whose checks hold, the first root stands, as before (first_holding).
-    return search_from<tangential_solution>(starts, [&](const five_zone_start& start) {
-        start_verdict<tangential_solution> verdict;
-        double load = Q, forcing = std::fabs(beta_d_);  // where s is, nominally (Newton's load differs by its residual)
-        std::optional<tangential_solution>& s = verdict.root;
-        if (start.from == five_zone_start::base::ends) {
-            s = five_zones(Q, start.ends, forcing, &limits);
-        } else if (start.from == five_zone_start::base::solved) {
-            s = start.solved;
-            load = s->Q;
-            forcing = s->forcing;
-        } else {
-            bool holds = false;
-            load = start.load;
-            forcing = start.forcing;
-            s = from_three_zones(load, forcing, holds, limits);
-            // Not five zones: dissimilar_zones::solve answers Q.
-            if (holds && load == Q) return start_verdict<tangential_solution>{std::nullopt, true};
-        }
-        std::vector<zone_leg> path = start.path;
-        path.push_back({zone_parameter::load, Q});
-        for (std::size_t leg = 0; s && leg < path.size(); ++leg) {
-            const bool in_load = path[leg].parameter == zone_parameter::load;
-            double& at = in_load ? load : forcing;
-            s = continued(
-                *s, at, path[leg].target, in_load ? load_step * f_ : forcing_step,
-                in_load ? smallest_load_step * f_ : smallest_forcing_step, !in_load,
-                [&](double next, const tangential_solution& p) {
-                    return five_zones(in_load ? next : load, p.layout.stick_ends(), in_load ? p.forcing : next,
-                                      &limits);
-                });
-            if (!s && leg >= start.shared_after) verdict.ends_search = true;  // the path every later start shares
-            at = path[leg].target;
-        }
-        return verdict;
-    });
+    return find_zones([this](double beta) { return five_zone_newton_operator(beta); }, Q, std::fabs(beta_d_), starts,
+                      limits);
 }
 
 }  // namespace roughroll

@@ -27,6 +27,10 @@ namespace {
 constexpr double near_sliding = 1e-4;
 constexpr double end_tolerance = 1e-15;  // zone ends by Brent, absolute in r
 constexpr int brent_iterations = 200;
+// find_zones' continuations (8(j) 4a): in the load f/8, halved down to f/1024 (the slip+ zone closing near the
+// braked transition); in the forcing factors 2^(1/4), halved in the exponent down to 2^(1/64).
+constexpr double load_step = 1.0 / 8.0, smallest_load_step = 1.0 / 1024.0;  // times f
+constexpr double forcing_step = 0.25, smallest_forcing_step = 1.0 / 64.0;   // in log2 of the forcing
 
 // The stick zones [s, c(s)] that carry a load |Q| < f (7(e) step 3; 7(g); 8(g)). For a start s the end c(s) is
 // the root of the load's excess
@@ -272,6 +276,57 @@ std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, do
                                             met, kept);
 }
 
+std::optional<tangential_solution> find_zones(const zone_operator_at& op_of, double Q, double forcing,
+                                              const std::vector<zone_start<tangential_solution>>& starts,
+                                              rounding_limits& met) {
+    using base = zone_start<tangential_solution>::base;
+    return search_from<tangential_solution>(starts, [&](const zone_start<tangential_solution>& start) {
+        start_verdict<tangential_solution> verdict;
+        std::optional<tangential_solution>& s = verdict.root;
+        if (start.from == base::search) {
+            // Its own starts judged by the same rule inside it: its result is the search's.
+            s = general_search(op_of(forcing), Q, start.ends, start.edge_end, met);
+            verdict.ends_search = true;
+            return verdict;
+        }
+        double load = Q, at_forcing = forcing;  // where s is, nominally (Newton's load differs by its residual)
+        bool newton = start.from != base::solved;  // s is a Newton root here, unchecked
+        if (start.from == base::ends) {
+            s = zone_newton(op_of(forcing), Q, start.ends, met);
+        } else if (start.from == base::solved) {
+            s = start.solved;
+            load = s->Q;
+            at_forcing = s->forcing;
+        } else {
+            bool holds = false;
+            load = start.load;
+            at_forcing = start.forcing;
+            s = op_of(at_forcing).seed(load, holds, met);
+            // Not these zones: the other structure answers Q.
+            if (holds && load == Q) return start_verdict<tangential_solution>{std::nullopt, true};
+        }
+        std::vector<zone_leg> path = start.path;
+        path.push_back({zone_parameter::load, Q});
+        const double f = op_of(at_forcing).f;
+        for (std::size_t leg = 0; s && leg < path.size(); ++leg) {
+            const bool in_load = path[leg].parameter == zone_parameter::load;
+            double& at = in_load ? load : at_forcing;
+            s = continued(*s, at, path[leg].target, in_load ? load_step * f : forcing_step,
+                          in_load ? smallest_load_step * f : smallest_forcing_step, !in_load,
+                          [&](double next, const tangential_solution& p) {
+                              newton = true;
+                              return zone_newton(op_of(in_load ? p.forcing : next), in_load ? next : load,
+                                                 p.layout.stick_ends(), met);
+                          });
+            if (!s && leg >= start.shared_after) verdict.ends_search = true;  // the path every later start shares
+            at = path[leg].target;
+        }
+        // The checks of the root only: a continuation's steps read none (before session 28 each step made them).
+        if (s && newton) s->checks = op_of(at_forcing).check(*s);
+        return verdict;
+    });
+}
+
 zone_solver::zone_solver(stick_zone_operator op) : op_(std::move(op)) {}
 
 double zone_solver::entry_coefficient(const tangential_solution& s) {
@@ -300,7 +355,8 @@ std::optional<tangential_solution> zone_solver::find(double Q, bool force_genera
         s.checks = op_.check(s);
         return s;
     }
-    std::optional<tangential_solution> s = general_search(op_, magnitude, ends, single_end, met);
+    std::optional<tangential_solution> s = find_zones([this](double) { return op_; }, magnitude, 0.0,
+                                                      {zone_start<tangential_solution>::searching(ends, single_end)}, met);
     if (s) s = searched_point(*std::move(s), Q, op_.method.name);
     return s;
 }

@@ -28,6 +28,8 @@
 
 namespace roughroll {
 
+class rounding_limits;  // zone_newton.hpp
+
 // The zone from r = -1 (the paper's, 7(b)): `needed` (the search refuses a load no such zone carries),
 // `tried` (its trial opens the scan, its end unknown where the paper's system is singular), `absent`
 // (not of this structure: dissimilar rollers, 8(g)).
@@ -85,6 +87,10 @@ struct stick_zone_operator {
     std::function<std::optional<tangential_solution>(double magnitude, double least_point,
                                                      const zone_newton_from& newton)>
         near_sliding;
+    // A root of these zones from another structure at `load` (find_zones' `three_zones` start, zone_start.hpp): the
+    // five zones' from the driven three zones (8(j) 4a, dissimilar_zones::from_three_zones), unchecked; `holds` where
+    // that structure is the answer at `load`. Unset but for the five zones.
+    std::function<std::optional<tangential_solution>(double load, bool& holds, rounding_limits& met)> seed;
     zone_search_method method;
 };
 

@@ -21,11 +21,13 @@
 // checks (zone_checks.hpp); zones = "auto" then keeps the single zone.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
 #include "roughroll/problems/stick_zone_operator.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
+#include "roughroll/problems/zone_start.hpp"
 
 namespace roughroll {
 
@@ -33,11 +35,25 @@ class rounding_limits;         // zone_newton.hpp
 struct newton_jacobian;        // damped_newton.hpp
 
 // Newton in the ends of the operator's stick zones at the load Q (in the operator's frame) from `ends` (s_1, c_1, ...,
-// s_k, c_k; an odd count is std::invalid_argument), for every zone search (ends_newton, zone_newton.hpp: the operator's systems, entry condition, residuals
-// and tolerance); empty where it does not converge, its stop at the ends' rounding limit noted in `met`. `kept`: a
-// Jacobian carried from the last solve of a sequence (full coupling's alternation).
+// s_k, c_k; an odd count is std::invalid_argument), for every zone search (ends_newton, zone_newton.hpp: the
+// operator's systems, entry condition, residuals and tolerance); empty where it does not converge, its stop at the
+// ends' rounding limit noted in `met`. `kept`: a Jacobian carried from the last solve of a sequence (full coupling's
+// alternation).
 std::optional<tangential_solution> zone_newton(const stick_zone_operator& op, double Q, const std::vector<double>& ends,
                                                rounding_limits& met, newton_jacobian* kept = nullptr);
+
+// The stick-zone operator at a forcing (|beta_D|, or another on a continuation in beta_D/f; the one zone's ignores it).
+using zone_operator_at = std::function<stick_zone_operator(double forcing)>;
+
+// The zone search of every structure (docs/formulation.md 7(k)): `starts` tried in order (search_from), each in its
+// operator's frame, at Q and `forcing` where a start names none. `ends`: Newton from them; `solved`: that root;
+// `three_zones`: the operator's seed (a `holds` at Q ends the search, no root); each then continued along its path
+// and in the load to Q, a failure past `shared_after` legs ending the search, its checks made at the end; `search`:
+// the one stick zone's general search (zone_solver.cpp), its roots judged inside it. The first root whose checks
+// hold answers, else the first found (first_holding); empty where none; rounding stops noted in `met`.
+std::optional<tangential_solution> find_zones(const zone_operator_at& op_of, double Q, double forcing,
+                                              const std::vector<zone_start<tangential_solution>>& starts,
+                                              rounding_limits& met);
 
 class zone_solver {
 public:

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The starts of a zone search as data (issue 24, item 3): each start a base layout and a path of continuations
-// from it to the load asked, tried in order by one loop (search_from, below: dissimilar_zones::five_zones), each
+// from it to the load asked, tried in order by one loop (search_from, below; find_zones, zone_solver.hpp), each
 // giving a verdict (its root, whether the search ends there), the first root whose checks hold the answer
 // (first_holding, the acceptance every zone search shares). The strategies, and the docs/formulation.md section each
 // comes from:
@@ -18,9 +18,11 @@
 //     depend on beta_D/f alone): the scan's three zones give starts for beta_D/f in [1, 6]; outside, free rolling
 //     there (2.875 or 1.5) continued in beta_D/f, then in Q (factors 2^(1/4): 2^(1/2) met, at f = 0.2, another
 //     root whose checks fail).
-// The one-stick-zone search's own starts (zone_solver: the paper's zone, the near-sliding asymptote of 7(d)-(e), the
-// coarser level's zone, the scan of stick-zone starts and its brackets, zone_solver.cpp) stay its own: five zones
-// never reach gross sliding (three zones take over, 8(j) 4, 4a) and their scan is one of loads, not of starts.
+//   - the one stick zone's own search (zone_solver.cpp's general search: the zone from the leading edge, the
+//     near-sliding asymptote of 7(d)-(e), Newton from the coarser level's zone, the scan of stick-zone starts and its
+//     brackets), its roots judged by the same rule inside it: five zones never reach gross sliding (three zones take
+//     over, 8(j) 4, 4a) and their scan is one of loads, not of starts.
+// Every list is tried by one driver, find_zones (zone_solver.hpp), each start in its operator's frame.
 #pragma once
 
 #include <algorithm>
@@ -43,12 +45,13 @@ struct zone_leg {
 
 template <class S>
 struct zone_start {
-    enum class base { ends, solved, three_zones };
+    enum class base { ends, solved, three_zones, search };
     base from;
-    std::vector<double> ends{};  // `ends`: Newton's start at the load asked (the coarser level's layout)
+    std::vector<double> ends{};  // `ends`, `search`: Newton's start at the load asked (the coarser level's layout)
     std::optional<S> solved{};   // `solved`: a layout at its own load (a curve's previous row)
     double load = 0.0;           // `three_zones`: their load, and
     double forcing = 0.0;        // their forcing (|beta_D|, or another on a continuation in beta_D/f)
+    std::optional<double> edge_end{};  // `search`: the end of the paper's zone at the load, where it was solved
     // The legs after the base; every path then ends with a leg in the load to the load asked.
     std::vector<zone_leg> path{};
     // Legs after which the path is every later start's too (free rolling): a failure past them ends the search.
@@ -57,6 +60,9 @@ struct zone_start {
     static zone_start at_ends(std::vector<double> e) { return {base::ends, std::move(e)}; }
     static zone_start continuing(S s) { return {base::solved, {}, std::move(s)}; }
     static zone_start three_zones_at(double load, double forcing) { return {base::three_zones, {}, {}, load, forcing}; }
+    static zone_start searching(std::vector<double> e, std::optional<double> edge_end) {
+        return {base::search, std::move(e), {}, 0.0, 0.0, edge_end};
+    }
 };
 
 // What one start of a zone search gave (docs/formulation.md 7(k)): its root (empty: none from here; the next start is
