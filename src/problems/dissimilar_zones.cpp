@@ -225,15 +225,7 @@ const kinks_blend* dissimilar_zones::kinks_blend_of(double start, double c0) {
 }
 
 double dissimilar_zones::W(double r, double start, double c0) {
-    // The batched form's closed forms at one point (blended_cauchy, kinks_blend: bit for bit the same sums).
-    const blended_cauchy* blend = blend_of(start, c0);
-    std::optional<double> cauchy = blend ? (*blend)(r) : std::nullopt;
-    if (pressure_kinks_ && cauchy) {
-        const kinks_blend* kinks = kinks_blend_of(start, c0);
-        const std::optional<double> part = kinks ? (*kinks)(r, H(r, start, c0)) : std::nullopt;
-        cauchy = part ? std::optional<double>(*cauchy + *part) : std::nullopt;
-    }
-    return completed_W(r, cauchy, start, c0);
+    return W(std::vector<double>{r}, start, c0).front();  // the batched sums are bit for bit the pointwise ones
 }
 
 std::vector<double> dissimilar_zones::W(const std::vector<double>& r, double start, double c0) {
