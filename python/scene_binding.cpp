@@ -137,16 +137,6 @@ struct curve_columns {
     bool physical = false;
 };
 
-// A refused row's solution with a finite creep, for to_si's P1 and Carter's xi1 (which do not
-// depend on it): to_si refuses a non-finite xi1. On a swept curve (no load found) the load is
-// Carter's at the same c0, for Carter's xi1 only (as write_curve_csv).
-tangential_solution with_creep(tangential_solution t, double xi) {
-    if (std::isnan(t.Q)) t.Q = carter_at_stick_end(t.c0(), t.f).Q;
-    t.xi = xi;
-    t.layout = one_stick_zone(t.start(), 0.0);  // c0 = 0
-    return t;
-}
-
 curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loads, int points, bool sweep) {
     // Ctrl-C between rows and between the levels of a row.
     const scene_curve c = curve_of(std::move(s), loads, points, sweep, check_signals, check_signals);
@@ -176,29 +166,15 @@ curve_columns solve_curve(scene s, const std::optional<std::vector<double>>& loa
         out.zone_path.push_back(row.is_refused() ? "" : to_string(t.layout.route));
         out.status.push_back(row.is_refused() ? "refused" : "ok");
         out.n.push_back(c.nodes[i]);
-        if (row.is_refused()) {
-            out.refused.push_back(row.refused);
-            if (width) {
-                // As write_curve_csv: P1 of the given load (NaN on a swept curve), Carter's xi1 at
-                // what was given, xi1 (the refused creep) NaN.
-                const bool at_Q = !std::isnan(t.Q);
-                const std::optional<si_point> si = si_of(c.settled, width, with_creep(t, 0.0));
-                out.P1.push_back(at_Q ? si->P1 : nan);
-                out.xi1.push_back(nan);
-                out.xi1_carter.push_back(si->xi1_carter);
-                // As the CSV: a given load's P1 = Q P2 exactly; else none.
-                out.P1_error.push_back(at_Q && si->width == width_rule::given_load ? 0.0 : nan);
-                out.xi1_error.push_back(nan);
-            }
-        } else if (const std::optional<si_point> si = si_of(c.settled, width, t)) {
-            out.P1.push_back(si->P1);
-            out.xi1.push_back(si->xi1);
-            out.xi1_carter.push_back(si->xi1_carter);
-            const std::optional<si_estimate> e =
-                row.estimate ? std::optional<si_estimate>(estimate_si(*si, *row.estimate, t.Q, t.c0(), t.xi))
-                             : std::nullopt;
-            out.P1_error.push_back(e ? e->P1 : nan);
-            out.xi1_error.push_back(e ? e->xi1 : nan);
+        if (row.is_refused()) out.refused.push_back(row.refused);
+        if (width) {
+            // As write_curve_csv, by its rule (si_curve_row): NaN where the CSV's cell is empty.
+            const si_curve_cells si = si_curve_row(*c.settled.physical, *width, row);
+            out.P1.push_back(si.P1);
+            out.xi1.push_back(si.xi1);
+            out.xi1_carter.push_back(si.xi1_carter);
+            out.P1_error.push_back(si.P1_error);
+            out.xi1_error.push_back(si.xi1_error);
         }
     }
     return out;

@@ -56,6 +56,9 @@ void expect_bounded(const roughness& surfaces, double f, const dissimilar& mater
         ASSERT_TRUE(at.estimate.has_value());
         EXPECT_LE(std::fabs(at.peak.r - reference.r), at.estimate->r) << at.peak.r << " against " << reference.r;
         EXPECT_LE(std::fabs(at.peak.p - reference.p), at.estimate->p) << at.peak.p << " against " << reference.p;
+        // The pressure at the centre, by the same rule from the same levels (docs/formulation.md 2(j)).
+        EXPECT_LE(std::fabs(at.peak.centre - reference.centre), at.estimate->centre)
+            << at.peak.centre << " against " << reference.centre;
     }
 }
 
@@ -132,7 +135,8 @@ TEST(PressurePeakEstimate, RoughLayerUnderEachMethod) {
         SCOPED_TRACE(to_string(how));
         // The paper's method (order 2) carries its own error at n = 1000, about 1/64 of n = 128's: within the bound.
         expect_bounded(s.surfaces, s.friction, {}, how, Q, {32, 128}, reference);
-        expect_bounded(s.surfaces, s.friction, {}, how, Q, {128}, pressure_peak{0.0, reference.p, 0.0});
+        expect_bounded(s.surfaces, s.friction, {}, how, Q, {128},
+                       pressure_peak{0.0, reference.p, 0.0, 0.0, reference.centre});
     }
     // The one-parameter limit against its own n = 1000.
     const pressure_peak limit = peak_at(s.surfaces, s.friction, {}, 1000, method::one_parameter, Q, false).peak;
@@ -164,6 +168,8 @@ TEST(PressurePeakEstimate, HertzClosedForm) {
         ASSERT_TRUE(at.estimate.has_value());
         EXPECT_LE(std::fabs(at.peak.r), at.estimate->r);
         EXPECT_LE(std::fabs(at.peak.p - M_2_PI), at.estimate->p);
+        EXPECT_LE(std::fabs(at.peak.centre - M_2_PI), at.estimate->centre);
+        EXPECT_LT(at.estimate->centre, 1e-12);
         EXPECT_LT(at.estimate->r, 1e-6);  // the floors alone
         EXPECT_LT(at.estimate->p, 1e-12);
     }
@@ -247,6 +253,8 @@ TEST(PressurePeakEstimate, AlternatingChangesConfirmedOnLevelTwoN) {
         const pressure_peak peak = peak_of(c.normal());
         EXPECT_LE(std::fabs(peak.p - reference.p), e->peak->p) << peak.p << " against " << reference.p;
         EXPECT_LE(std::fabs(peak.r - reference.r), e->peak->r) << peak.r << " against " << reference.r;
+        EXPECT_LE(std::fabs(peak.centre - reference.centre), e->peak->centre)
+            << peak.centre << " against " << reference.centre;
         EXPECT_GT(std::fabs(peak.p - reference.p), 1e-11);  // a distance above every floor: the case still tests
     }
 }

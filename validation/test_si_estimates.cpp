@@ -55,6 +55,11 @@ TEST(SiEstimates, AreTheDimensionlessEstimatesScaled) {
     EXPECT_DOUBLE_EQ(est.at("p_peak_Pa").get<double>(),
                      P2 / a * (e.peak->p + ra / (1.0 - ra) * (std::fabs(peak_p) + e.peak->p)));
     EXPECT_DOUBLE_EQ(est.at("x_peak_m").get<double>(), a * (e.peak->r + ra * (std::fabs(peak_r) + e.peak->r)));
+    // The pressure at the centre: p(0)'s estimate from the peak's levels (peak_error::centre), scaled as the peak's.
+    const double centre = si.at("p_centre_Pa").get<double>() * a / P2;
+    EXPECT_GT(e.peak->centre, 0.0);
+    EXPECT_DOUBLE_EQ(est.at("p_centre_Pa").get<double>(),
+                     P2 / a * (e.peak->centre + ra / (1.0 - ra) * (std::fabs(centre) + e.peak->centre)));
     EXPECT_DOUBLE_EQ(est.at("P_H_N_per_m").get<double>(), si.at("P_H_N_per_m").get<double>() * ra * (2.0 + ra));
     EXPECT_EQ(est.at("P2_N_per_m").get<double>(), 0.0);  // the given load
     EXPECT_EQ(est.at("P1_N_per_m").get<double>(), 0.0);  // Q P2, both given
@@ -62,7 +67,7 @@ TEST(SiEstimates, AreTheDimensionlessEstimatesScaled) {
     // The text's line has the JSON's numbers.
     std::ostringstream text;
     write_summary(text, p.report());
-    for (const char* key : {"a_m", "c_m", "xi1", "p_peak_Pa", "x_peak_m", "P_H_N_per_m"})
+    for (const char* key : {"a_m", "c_m", "xi1", "p_peak_Pa", "x_peak_m", "P_H_N_per_m", "p_centre_Pa"})
         EXPECT_NE(text.str().find(shortest(est.at(key).get<double>())), std::string::npos) << key << "\n" << text.str();
 }
 
@@ -118,7 +123,8 @@ TEST(SiEstimates, BoundTheDistanceFromNodes1000) {
     ASSERT_TRUE(at.estimate);
     const nlohmann::json si = to_json(at.report()).at("si"), ref = to_json(reference.report()).at("si");
     const nlohmann::json& est = si.at("error_estimate");
-    for (const char* key : {"a_m", "a_over_a_hertz", "c_m", "P_H_N_per_m", "P1_N_per_m", "xi1", "p_peak_Pa", "x_peak_m"}) {
+    for (const char* key :
+         {"a_m", "a_over_a_hertz", "c_m", "P_H_N_per_m", "P1_N_per_m", "xi1", "p_peak_Pa", "x_peak_m", "p_centre_Pa"}) {
         const double distance = std::fabs(si.at(key).get<double>() - ref.at(key).get<double>());
         EXPECT_GE(est.at(key).get<double>(), distance) << key;
     }

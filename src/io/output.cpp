@@ -80,8 +80,8 @@ nlohmann::json layers_json(const tangential_solution& s, bool full) {
     return layers;
 }
 
-// The SI values' estimates under the keys of the values they bound (si_point's JSON); p_centre_Pa has none (the
-// dimensionless pressure at the centre has no estimate of its own), a_hertz_m and xi1_carter are closed forms.
+// The SI values' estimates under the keys of the values they bound (si_point's JSON); a_hertz_m and xi1_carter are
+// closed forms.
 nlohmann::json si_estimate_json(const si_estimate& e) {
     const auto optional = [](const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); };
     return {{"a_m", e.a},
@@ -91,10 +91,25 @@ nlohmann::json si_estimate_json(const si_estimate& e) {
             {"P2_N_per_m", e.P2},
             {"P1_N_per_m", e.P1},
             {"xi1", e.xi1},
+            {"p_centre_Pa", optional(e.p_centre)},
             {"p_peak_Pa", optional(e.p_peak)},
             {"x_peak_m", optional(e.x_peak)},
             {"roughness_at_a_relative", e.surfaces_relative}};
 }
+
+// gamma_0n's estimate: at full coupling its levels' (error_estimate::coupling; none on the edge layers' closed form);
+// elsewhere the model's gamma is 0 exactly ((4.8): the normal problem's solvability, docs/formulation.md section 3), so
+// |gamma_0n| is its distance, not an estimate of it.
+std::optional<double> gamma_estimate(const point_report& r) {
+    if (!r.coupling) return std::fabs(r.normal.gamma);
+    if (r.estimate && r.estimate->coupling && !std::isnan(r.estimate->coupling->gamma))
+        return r.estimate->coupling->gamma;
+    return std::nullopt;
+}
+
+// A printed-only estimate (error_estimate::coupling's, peak_error::centre): NaN where it has none.
+nlohmann::json estimate_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
+std::string estimate_text(double x) { return std::isnan(x) ? std::string("none") : shortest(x); }
 
 std::string term_text(const roughness_term& t) {
     return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
@@ -147,6 +162,10 @@ nlohmann::json to_json(const point_report& r) {
         estimate["pressure_peak_r"] = r.estimate->peak->r;
         estimate["pressure_peak_p"] = r.estimate->peak->p;
     }
+    if (r.estimate) {
+        const std::optional<double> gamma = gamma_estimate(r);
+        estimate["gamma"] = gamma ? nlohmann::json(*gamma) : nlohmann::json(nullptr);
+    }
     if (r.estimate && r.estimate->zone_ends) {
         // Full coupling's zone ends each with its own estimate, by one Richardson level where clean (docs/formulation.md
         // 8(q)): beside level n's (c0, stick_start, zones). Only there: other points' keys unchanged.
@@ -175,7 +194,7 @@ nlohmann::json to_json(const point_report& r) {
               {"P1_N_per_m", r.si->P1},
               {"xi1", r.si->xi1},
               {"xi1_carter", r.si->xi1_carter},
-              {"p_centre_Pa", r.si->p_scale * r.normal.pressure(0.0)},
+              {"p_centre_Pa", r.si->p_scale * peak.centre},
               {"p_peak_Pa", r.si->p_scale * peak.p},
               {"x_peak_m", r.si->a * peak.r},
               {"width_iterations", r.si->width_iterations},
@@ -198,6 +217,16 @@ nlohmann::json to_json(const point_report& r) {
                          {"contraction", r.coupling->contraction},
                          {"newton_residuals", r.coupling->newton_residuals},
                          {"newton_jacobians", r.coupling->newton_jacobians}});
+    // The measured values' estimates from the point's levels (docs/formulation.md 8(e), "The measured values'
+    // estimates"); none on the edge layers' closed form or where the point has no estimate. contraction, iterations and
+    // the Newton counts describe the alternation, not the model: no estimate.
+    if (r.coupling) {
+        const std::optional<coupling_error> e = r.estimate ? r.estimate->coupling : std::nullopt;
+        coupling["error_estimate"] = e ? nlohmann::json{{"offset_e", estimate_or_null(e->offset)},
+                                                         {"hertz_load_ratio_johnson", estimate_or_null(e->lambda_johnson)},
+                                                         {"peak_pressure_change", estimate_or_null(e->peak_change)}}
+                                       : nlohmann::json(nullptr);
+    }
     nlohmann::json point = {
         {"label", r.label},
         {"coupling", coupling},
@@ -287,6 +316,7 @@ void write_summary(std::ostream& out, const point_report& r) {
     // Five zones: c0's and the start's estimates are each the larger of the two stick zones' (zone_ends_table), so
     // they bound the second zone's ends printed among the zones too, and say so.
     const bool two = s.layout.stick_zones() == 2;
+    const std::optional<double> gamma = gamma_estimate(r);
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda)
             << (two ? ", c0 and the second stick zone's end " : ", c0 ") << shortest(r.estimate->c0)
@@ -298,6 +328,15 @@ void write_summary(std::ostream& out, const point_report& r) {
             << shortest(r.estimate->xi)
             << (r.estimate->peak ? ", peak p " + shortest(r.estimate->peak->p) + ", peak r " + shortest(r.estimate->peak->r)
                                  : std::string())
+            << (gamma ? ", gamma_0n " + shortest(*gamma) : std::string(", gamma_0n none"))
+            << (r.estimate->coupling ? ", offset e " + estimate_text(r.estimate->coupling->offset) +
+                                           ", P_H/P2 at Johnson's level " +
+                                           estimate_text(r.estimate->coupling->lambda_johnson) +
+                                           ", peak pressure change " +
+                                           (std::isnan(r.estimate->coupling->peak_change)
+                                                ? std::string("none")
+                                                : shortest(100.0 * r.estimate->coupling->peak_change) + " %")
+                                     : std::string())
             << "   (difference from " << r.estimate->against << ")\n";
     else
         out << "  error estimate      " << no_estimate_reason(r) << "\n";
@@ -313,7 +352,7 @@ void write_summary(std::ostream& out, const point_report& r) {
         << "  stick zone end c    " << shortest(p.c) << " m\n"
         << "  loads P2, P1        " << shortest(p.P2) << " N/m, " << shortest(p.P1) << " N/m\n"
         << "  P_H (Hertz, width a) " << shortest(p.P_H) << " N/m\n"
-        << "  pressure at centre  " << shortest(p.p_scale * r.normal.pressure(0.0)) << " Pa\n"
+        << "  pressure at centre  " << shortest(p.p_scale * peak.centre) << " Pa\n"
         << "  peak pressure       " << shortest(p.p_scale * peak.p) << " Pa at x1 = " << shortest(p.a * peak.r)
         << " m\n"
         << "  creep xi1           " << shortest(p.xi1) << "   (Carter, smooth: " << shortest(p.xi1_carter) << ")\n";
@@ -333,8 +372,9 @@ void write_summary(std::ostream& out, const point_report& r) {
         << " N/m, P1 " << shortest(e.P1) << " N/m, P_H " << shortest(e.P_H) << " N/m, xi1 " << shortest(e.xi1);
     if (e.p_peak && e.x_peak)
         out << ", peak pressure " << shortest(*e.p_peak) << " Pa, its x1 " << shortest(*e.x_peak) << " m";
+    if (e.p_centre) out << ", pressure at centre " << shortest(*e.p_centre) << " Pa";
     out << ", T and A at a " << shortest(e.surfaces_relative)
-        << " relative   (the dimensionless estimates scaled; pressure at centre: none)\n";
+        << " relative   (the dimensionless estimates scaled)\n";
 }
 
 void write_curve_header(std::ostream& out, const curve_header& h) {
@@ -386,6 +426,9 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
     for (std::size_t i = 0; i < curve.size(); ++i) {
         const curve_point& row = curve[i];
         const auto& s = row.solution;
+        // A physical row's SI cells (si_curve_row: the rule the Python module shares), empty where NaN.
+        const si_curve_cells cells = si ? si_curve_row(si->scene, si->widths[i], row) : si_curve_cells{};
+        const auto si_cell = [](double x) { return std::isnan(x) ? std::string() : shortest(x); };
         if (row.is_refused()) {
             // Only what was given: the load Q (creep_curve), or the stick end c0 (swept_curve),
             // with Carter's values at it; every computed field is empty (curve_point, contact.hpp).
@@ -393,16 +436,9 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             const auto cell = [](bool given, double x) { return given ? shortest(x) : std::string(); };
             out << cell(at_Q, s.Q) << ',' << cell(at_Q, s.Q / s.f) << ',' << cell(!at_Q, s.c0()) << ",,,"
                 << shortest(row.smooth.xi) << ',' << shortest(row.smooth.c0) << ",,,,,,,,";
-            if (si) {
-                // xi1 is the refused creep; P1 depends on the given load alone, Carter's xi1 on
-                // Carter's load at what was given (Q, or Carter's Q at the same c0).
-                const double smooth_Q = at_Q ? s.Q : carter_at_stick_end(s.c0(), s.f).Q;
-                const si_point p = to_si(si->scene, si->widths[i], smooth_Q, s.f, 0.0, 0.0);
-                out << ',' << cell(at_Q, p.P1) << ",," << shortest(p.xi1_carter);
-            }
+            if (si) out << ',' << si_cell(cells.P1) << ",," << shortest(cells.xi1_carter);
             out << ',' << n_cell(i) << ",refused";
-            // P1 = Q P2 of a given load and Q is exact; the load the paper's width carries has no estimate here.
-            if (si) out << ',' << cell(at_Q && si->scene.width == width_rule::given_load, 0.0) << ',';
+            if (si) out << ',' << si_cell(cells.P1_error) << ',';
             out << '\n';
             continue;
         }
@@ -415,19 +451,9 @@ void write_curve_csv(std::ostream& out, const std::vector<curve_point>& curve, c
             out << ",,";
         out << ',' << s.layout.zones.size() << ',' << shortest(s.start()) << ','
             << (row.estimate ? shortest(row.estimate->start) : std::string()) << ',' << zone_path(s);
-        std::optional<si_point> p;
-        if (si) {
-            p = to_si(si->scene, si->widths[i], s.Q, s.f, s.c0(), s.xi);
-            out << ',' << shortest(p->P1) << ',' << shortest(p->xi1) << ',' << shortest(p->xi1_carter);
-        }
+        if (si) out << ',' << shortest(cells.P1) << ',' << shortest(cells.xi1) << ',' << shortest(cells.xi1_carter);
         out << ',' << n_cell(i) << ",ok";
-        if (p && row.estimate) {
-            // docs/formulation.md 2(j), "The SI values' estimates": the row's estimates scaled (Carter's xi1 a closed form).
-            const si_estimate e = estimate_si(*p, *row.estimate, s.Q, s.c0(), s.xi);
-            out << ',' << shortest(e.P1) << ',' << shortest(e.xi1);
-        } else if (p) {
-            out << ",,";
-        }
+        if (si) out << ',' << si_cell(cells.P1_error) << ',' << si_cell(cells.xi1_error);
         out << '\n';
     }
 }

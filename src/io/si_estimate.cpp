@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "roughroll/model/carter.hpp"
 #include "roughroll/problems/contact_width.hpp"
 
 namespace roughroll {
@@ -47,9 +48,29 @@ si_estimate estimate_si(const si_point& p, const error_estimate& e, double Q, do
     if (peak && e.peak) {
         s.p_peak = scaled(p.p_scale, pressure_relative, peak->p, e.peak->p);
         s.x_peak = scaled(p.a, a_relative, peak->r, e.peak->r);
+        // None where level 2n would be needed and the point's estimate did not solve it (peak_from_levels: NaN).
+        if (!std::isnan(e.peak->centre)) s.p_centre = scaled(p.p_scale, pressure_relative, peak->centre, e.peak->centre);
     }
     s.surfaces_relative = a_relative;  // T = a/(4 C t), A = a alpha (3.26): each proportional to a
     return s;
+}
+
+si_curve_cells si_curve_row(const physical_scene& scene, const contact_width& w, const curve_point& row) {
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    const tangential_solution& s = row.solution;
+    if (row.is_refused()) {
+        // Only what was given: the load Q (creep_curve), or the stick end c0 (swept_curve, Carter's load at it).
+        const bool at_Q = !std::isnan(s.Q);
+        const double given_Q = at_Q ? s.Q : carter_at_stick_end(s.c0(), s.f).Q;
+        const si_point p = to_si(scene, w, given_Q, s.f, 0.0, 0.0);
+        return {at_Q ? p.P1 : none, none, p.xi1_carter, at_Q && scene.width == width_rule::given_load ? 0.0 : none,
+                none};
+    }
+    const si_point p = to_si(scene, w, s.Q, s.f, s.c0(), s.xi);
+    if (!row.estimate) return {p.P1, p.xi1, p.xi1_carter, none, none};
+    // docs/formulation.md 2(j), "The SI values' estimates": the row's estimates scaled.
+    const si_estimate e = estimate_si(p, *row.estimate, s.Q, s.c0(), s.xi);
+    return {p.P1, p.xi1, p.xi1_carter, e.P1, e.xi1};
 }
 
 }  // namespace roughroll

@@ -52,8 +52,13 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
         const pressure_peak reported = peak_of(normal());
         const double eps = full ? bufler_epsilon(materials_.beta_d) : 0.0;
         const double exact = M_2_PI * lambda * std::cosh(M_PI * eps);
+        // The centre: the closed form's p(0) is its peak, `exact`, and the model's p(0) lies within the layers' bound
+        // of it (8(t): D(0) <= the peak's bound, which is D(r) at the peak's bound r >= 0, or the bound U of |p - p_ns|
+        // anywhere; 0 at Johnson's level).
         e.peak = peak_error{std::fabs(reported.r) + layers.peak_r_bound,
                             std::fabs(reported.p - exact) + layers.peak_p_bound + rounding_floor(nodes(), exact) +
+                                32.0 * DBL_EPSILON * exact,
+                            std::fabs(reported.centre - exact) + layers.peak_p_bound + rounding_floor(nodes(), exact) +
                                 32.0 * DBL_EPSILON * exact};
         return e;
     }
@@ -180,6 +185,9 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     // eps |lambda| / rcond (rcond of the factor U, about 1/kappa) was 4.2e-13 .. 2.3e-9. Elsewhere (w_N of 8(x)), and
     // where the alternation's contraction reads 1 or more, the a priori floor.
     const double n_eps_lambda = floor.lambda;
+    // The same share for full coupling's offset e, of the stop's group (lambda, e, xi): its measured value's estimate
+    // (docs/formulation.md 8(e), "The measured values' estimates"), added below.
+    double offset_share = 0.0;
     for (int i = 0; i < 3; ++i) {
         const point_model& level = levels_[i] ? *levels_[i] : *model_;
         const normal_solution& p = level.normal();
@@ -194,6 +202,9 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         floor.lambda = std::isfinite(distance)
                            ? std::max(floor.lambda, n_eps_lambda + 2.0 * distance)
                            : std::max(floor.lambda, 2.0 * DBL_EPSILON * std::fabs(p.lambda) / p.rcond);
+        offset_share = std::max(offset_share, std::isfinite(distance)
+                                                  ? 2.0 * distance
+                                                  : 2.0 * DBL_EPSILON * std::max(1.0, std::fabs(p.offset)) / p.rcond);
     }
     // The structure's table: P_H/P2, xi, then the paper's c0 (or Q on a curve swept in c0), or the
     // ends of dissimilar rollers' stick zones, which carry Newton's resolution too (dissimilar_zones.hpp).
@@ -288,10 +299,15 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     // Level 2n solved once, for the table and the peak alike (its pressure read before another level is solved).
     std::optional<std::optional<estimate_level>> above;
     std::optional<pressure_peak> above_peak;
+    std::optional<coupling_reading> above_reading;  // full coupling's measured values on level 2n
     const auto finer_once = [&]() -> std::optional<estimate_level> {
         if (!above) {
             above = finer();
             if (*above) above_peak = peak_of_level(*level(2 * nodes()));
+            if (*above && structure == estimate_structure::full_coupling) {
+                const held two_n = level(2 * nodes());
+                if (const coupling_summary* c = (*two_n).coupling()) above_reading = reading_of((*two_n).normal(), *c);
+            }
         }
         return *above;
     };
@@ -338,6 +354,34 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
             }
         };
         e.peak = peak_from_levels(peaks, point, finer_peak, slopes_r);
+        // Full coupling's measured values (offset e, gamma_0n, Johnson's P_H/P2, the peak's change) from the same
+        // levels' points, by the peak value's rule (docs/formulation.md 8(e), "The measured values' estimates").
+        if (structure == estimate_structure::full_coupling) {
+            std::array<coupling_reading, 3> readings{};
+            bool read = true;
+            for (int i = 0; i < 3; ++i) {
+                const point_model& l = levels_[i] ? *levels_[i] : *model_;
+                const coupling_summary* c = l.coupling();
+                read = read && c != nullptr;
+                if (c) readings[i] = reading_of(l.normal(), *c);
+            }
+            // Level 2n only where the table or the peak solved it: a printed value solves nothing (value_from_levels).
+            if (read)
+                e.coupling = coupling_from_levels(readings, point, [&]() -> std::optional<coupling_reading> {
+                    return above && *above ? above_reading : std::nullopt;
+                });
+            // The alternation's share, as P_H/P2's floor above (8(w), "The alternation's share"): e is of the stop's
+            // group (lambda, e, xi), so each level on the weight adds twice its distance from its fixed point
+            // (coupling_fixed_point_distance), or the a priori 2 eps max(1, |e|)/rcond (offset_share). gamma_0n =
+            // (2/pi) lambda e + C and the peak's change move with C and the peak too, whose distances the alternation
+            // does not bound: no estimate (NaN, null). Johnson's P_H/P2 is no iterate of it (its own normal solve): its
+            // levels' rule alone.
+            if (e.coupling) {
+                e.coupling->offset += offset_share;
+                e.coupling->gamma = std::numeric_limits<double>::quiet_NaN();
+                e.coupling->peak_change = std::numeric_limits<double>::quiet_NaN();
+            }
+        }
     }
     return e;
 }

@@ -69,7 +69,7 @@ pressure_peak peak_of(const normal_solution& s) {
     const double rounding = 16.0 * GSL_DBL_EPSILON * p;
     const bool weighted = s.kinks && s.kinks->weighted() && s.rcond > 0.0;
     return {r, p, fall > 0.0 ? h * std::sqrt(rounding / fall) : h,
-            weighted ? GSL_DBL_EPSILON * std::fabs(p) / s.rcond : 0.0};
+            weighted ? GSL_DBL_EPSILON * std::fabs(p) / s.rcond : 0.0, s.pressure(0.0)};
 }
 
 peak_slopes slopes_near(const normal_solution& a, const normal_solution& b, double r, double w, double step) {

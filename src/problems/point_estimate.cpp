@@ -277,14 +277,18 @@ bool takes_three_level(const std::array<estimate_level, 3>& levels, const estima
 // its resolution of its pressure's maximum (the golden section cannot choose among pressures equal to rounding,
 // pressure_peak), so a difference of two levels carries twice the largest; the value is the pressure at the position,
 // a sum of n U-terms (n eps p), and the golden section's 16 eps p (pressure_peak) on each of two levels.
+// The centre's p(0) is a sum of the same n U-terms, with the same solve's rounding (its eps |p|/rcond at the peak's
+// |p| >= |p(0)|); its golden-section term (none: r = 0 is given) kept, 32 eps, so that one floor serves both values.
 peak_error peak_floors(std::initializer_list<pressure_peak> peaks, int finest_n) {
-    double resolution = 0.0, scale = 0.0, solve = 0.0;
+    double resolution = 0.0, scale = 0.0, solve = 0.0, centre = 0.0;
     for (const pressure_peak& k : peaks) {
         resolution = std::max(resolution, k.r_resolution);
         scale = std::max(scale, std::fabs(k.p));
+        centre = std::max(centre, std::fabs(k.centre));
         solve = std::max(solve, k.p_rounding);  // the weighted pressure's solve (normal_solution.hpp, 8(w))
     }
-    return {2.0 * resolution, rounding_floor(finest_n, scale) + 32.0 * DBL_EPSILON * scale + 2.0 * solve};
+    return {2.0 * resolution, rounding_floor(finest_n, scale) + 32.0 * DBL_EPSILON * scale + 2.0 * solve,
+            rounding_floor(finest_n, centre) + 32.0 * DBL_EPSILON * centre + 2.0 * solve};
 }
 }  // namespace
 
@@ -342,67 +346,134 @@ double peak_position_from_slopes(const normal_solution& level, int level_n, cons
     }
 }
 
-peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& p,
-                            const std::function<std::optional<pressure_peak>()>& finer, double slopes_r) {
+namespace {
+// Level 2n's value of a quantity, with the floor of n/2, n, 2n (value_from_levels).
+struct finer_value {
+    double value, floor;
+};
+
+// The peak value's rule (docs/formulation.md 8(e), 8(q)) for one value over the levels v with floor `floor` (its
+// `name` for a refusal), level 2n's value from `finer` where the changes alternate (peak_confirms); peak_from_levels'
+// three values and full coupling's measured values (coupling_from_levels) alike. A value only printed
+// (`printed_only`: the pressure at the centre, full coupling's measured values) neither solves a level nor refuses the
+// point: `finer` gives level 2n only where the point's estimate solved it already, and where the rule would need level
+// 2n without it, or refuse, the value has no estimate (NaN, printed null).
+double value_from_levels(const three_levels& v, double floor, const estimate_point& p, const char* name,
+                         const std::function<std::optional<finer_value>()>& finer, bool printed_only = false) {
+    const double none = std::numeric_limits<double>::quiet_NaN();
     const int order = order_of(p.how);
     const bool coupled = p.structure == estimate_structure::full_coupling;
+    // Changes of opposite sign (peak_confirms). At full coupling on rough rollers (estimate_from_levels): level 2n's
+    // rule on n/2, n, 2n bounds level 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two
+    // estimates. As the table's quantities, refused where level 2n cannot be solved or n/2, n, 2n give no estimate
+    // (a ladder's rung climbs): the three levels' rule is no bound there (8(q) "Changes of opposite sign"). Not
+    // confirmed where the estimate is a lower bound already (p.lower_bound: level 2n not solved, the rung cannot
+    // answer).
+    const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
+    // Off full coupling (8(e) "The peak confirmed on level 2n") the peak is never refused: where level 2n cannot be
+    // solved, the rule of levels without a visible order (below), twice the larger change; on n/2, n, 2n the
+    // paper's confirmation (confirm_error, as estimate_from_levels' for the table), bounding level n, their
+    // middle, and where that shows no order either, the same rule on them.
+    const double fine_bound = [&]() {
+        if (p.lower_bound || !peak_confirms(v, floor, p)) return 0.0;
+        const std::optional<finer_value> above = finer();
+        if (!above && printed_only) return none;
+        if (!above && !coupled) return 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + floor;
+        if (!above) refuse(p, name, v, p.n >> p.self);
+        const three_levels fine{v.middle, v.finest, above->value};
+        const double f = above->floor;
+        const double up = std::fabs(fine.finest - fine.middle);
+        if (!coupled) {
+            const error_bound fb = confirm_error(fine, order, false, f);
+            return fb.resolved ? fb.value : 2.0 * std::max(std::fabs(fine.middle - fine.coarsest), up) + up + f;
+        }
+        const error_bound fb = coupled_bound(fine, f, false, order);
+        if (!fb.resolved && printed_only) return none;
+        if (!fb.resolved) refuse(p, name, fine, p.n >> (p.self - 1));
+        return fb.value + up;
+    }();
+    if (std::isnan(fine_bound)) return none;
+    // Level n is levels[self]; the coupled rule bounds the finest level: level n is farther by its changes above.
+    const double own = p.self == 0 ? v.coarsest : p.self == 1 ? v.middle : v.finest;
+    const double above = std::fabs(v.finest - own);
+    // At full coupling twice the larger change, with the geometric tail (coupled_bound without 8(q)'s three-level
+    // rule): the peak value of Q/f = -0.75 (data/aluminium-on-steel.toml, coupling = "full") at n = 128 changes
+    // -2.5e-7, +1.4e-8 over 32, 64, 128, whose three times 1.6e-8 (4.7e-8) fell short of its distance 5.7e-8 from
+    // n = 1000 (validation/test_pressure_peak_estimate.cpp).
+    const error_bound b = coupled ? coupled_bound(v, floor, false, order)
+                                  : bound_error(v, order, reported_value{p.self, false}, floor);
+    if (b.resolved) return std::max(b.value + (coupled ? above : 0.0), fine_bound);
+    // No visible order (the peak is not refused): twice the larger change, plus the changes above level n.
+    return std::max(2.0 * std::max(std::fabs(d1), std::fabs(d2)) + above + floor, fine_bound);
+}
+}  // namespace
+
+peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& p,
+                            const std::function<std::optional<pressure_peak>()>& finer, double slopes_r) {
     const peak_error floor = peak_floors({peaks[0], peaks[1], peaks[2]}, p.n << (2 - p.self));
     std::optional<pressure_peak> above_peak;
     bool above_tried = false;
-    const auto bound = [&](double pressure_peak::*x, double floor) {
+    const auto bound = [&](double pressure_peak::*x, double peak_error::*member, const char* name, bool printed_only) {
         const three_levels v{peaks[0].*x, peaks[1].*x, peaks[2].*x};
-        const char* const name = x == &pressure_peak::r ? "the peak pressure's position" : "the peak pressure";
-        // Changes of opposite sign (peak_confirms). At full coupling on rough rollers (estimate_from_levels): level 2n's
-        // rule on n/2, n, 2n bounds level 2n, and level n (its middle) is farther by |x_2n - x_n|; the larger of the two
-        // estimates. As the table's quantities, refused where level 2n cannot be solved or n/2, n, 2n give no estimate
-        // (a ladder's rung climbs): the three levels' rule is no bound there (8(q) "Changes of opposite sign"). Not
-        // confirmed where the estimate is a lower bound already (p.lower_bound: level 2n not solved, the rung cannot
-        // answer).
-        const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
-        // Off full coupling (8(e) "The peak confirmed on level 2n") the peak is never refused: where level 2n cannot be
-        // solved, the rule of levels without a visible order (below), twice the larger change; on n/2, n, 2n the
-        // paper's confirmation (confirm_error, as estimate_from_levels' for the table), bounding level n, their
-        // middle, and where that shows no order either, the same rule on them.
-        const double fine_bound = [&]() {
-            if (p.lower_bound || !peak_confirms(v, floor, p)) return 0.0;
-            if (!above_tried) above_peak = finer();
-            above_tried = true;
-            if (!above_peak && !coupled) return 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + floor;
-            if (!above_peak) refuse(p, name, v, p.n >> p.self);
-            const three_levels fine{v.middle, v.finest, (*above_peak).*x};
-            const peak_error fine_floor = peak_floors({peaks[1], peaks[2], *above_peak}, 2 * p.n);
-            const double f = x == &pressure_peak::r ? fine_floor.r : fine_floor.p;
-            const double up = std::fabs(fine.finest - fine.middle);
-            if (!coupled) {
-                const error_bound fb = confirm_error(fine, order, false, f);
-                return fb.resolved ? fb.value
-                                   : 2.0 * std::max(std::fabs(fine.middle - fine.coarsest), up) + up + f;
-            }
-            const error_bound fb = coupled_bound(fine, f, false, order);
-            if (!fb.resolved) refuse(p, name, fine, p.n >> (p.self - 1));
-            return fb.value + up;
-        }();
-        // Level n is levels[self]; the coupled rule bounds the finest level: level n is farther by its changes above.
-        const double own = p.self == 0 ? v.coarsest : p.self == 1 ? v.middle : v.finest;
-        const double above = std::fabs(v.finest - own);
-        // At full coupling twice the larger change, with the geometric tail (coupled_bound without 8(q)'s three-level
-        // rule): the peak value of Q/f = -0.75 (data/aluminium-on-steel.toml, coupling = "full") at n = 128 changes
-        // -2.5e-7, +1.4e-8 over 32, 64, 128, whose three times 1.6e-8 (4.7e-8) fell short of its distance 5.7e-8 from
-        // n = 1000 (validation/test_pressure_peak_estimate.cpp).
-        const error_bound b = coupled ? coupled_bound(v, floor, false, order)
-                                      : bound_error(v, order, reported_value{p.self, false}, floor);
-        if (b.resolved) return std::max(b.value + (coupled ? above : 0.0), fine_bound);
-        // No visible order (the peak is not refused): twice the larger change, plus the changes above level n.
-        return std::max(2.0 * std::max(std::fabs(d1), std::fabs(d2)) + above + floor, fine_bound);
+        return value_from_levels(
+            v, floor.*member, p, name,
+            [&]() -> std::optional<finer_value> {
+                // A printed-only value reads level 2n where the peak's r or p asked it (evaluated before it), no more.
+                if (!above_tried && !printed_only) above_peak = finer();
+                above_tried = above_tried || !printed_only;
+                if (!above_peak) return std::nullopt;
+                return finer_value{(*above_peak).*x, peak_floors({peaks[1], peaks[2], *above_peak}, 2 * p.n).*member};
+            },
+            printed_only);
     };
     // The position's bound from the slopes (peak_position_from_slopes, full coupling), where larger.
-    return {std::max(bound(&pressure_peak::r, floor.r), slopes_r > 0.0 ? slopes_r + floor.r : 0.0),
-            bound(&pressure_peak::p, floor.p)};
+    // The pressure at the centre by the value's rule on the levels' p(0) (docs/formulation.md 2(j), "The SI values'
+    // estimates"): the same levels, floors and confirmation, at no solve of its own.
+    // (Braced: r, p, then the centre, in that order.)
+    return {std::max(bound(&pressure_peak::r, &peak_error::r, "the peak pressure's position", false),
+                     slopes_r > 0.0 ? slopes_r + floor.r : 0.0),
+            bound(&pressure_peak::p, &peak_error::p, "the peak pressure", false),
+            bound(&pressure_peak::centre, &peak_error::centre, "the pressure at the centre", true)};
+}
+
+coupling_reading reading_of(const normal_solution& pressure, const coupling_summary& alternation) {
+    return {pressure.offset, pressure.gamma, alternation.lambda_johnson, alternation.peak_pressure_change};
+}
+
+coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& levels, const estimate_point& p,
+                                    const std::function<std::optional<coupling_reading>()>& finer) {
+    // The levels' rounding, sums of n terms of their size, on each of two levels (docs/formulation.md 8(e), "The
+    // measured values' estimates"); the alternation's share is added by the caller where it is bounded
+    // (estimate_levels.cpp, as P_H/P2's).
+    const auto floor_of = [](std::initializer_list<double> values, int n) {
+        double scale = 1.0;
+        for (const double x : values) scale = std::max(scale, std::fabs(x));
+        return 2.0 * rounding_floor(n, scale);
+    };
+    std::optional<coupling_reading> above;
+    bool above_tried = false;
+    const auto bound = [&](double coupling_reading::*x, const char* name) {
+        const three_levels v{levels[0].*x, levels[1].*x, levels[2].*x};
+        const double floor = floor_of({v.coarsest, v.middle, v.finest}, p.n << (2 - p.self));
+        return value_from_levels(
+            v, floor, p, name,
+            [&]() -> std::optional<finer_value> {
+                if (!above_tried) above = finer();  // level 2n where the point's estimate solved it; else empty
+                above_tried = true;
+                if (!above) return std::nullopt;
+                return finer_value{(*above).*x, floor_of({v.middle, v.finest, (*above).*x}, 2 * p.n)};
+            },
+            true);
+    };
+    return {bound(&coupling_reading::offset, "the offset e"), bound(&coupling_reading::gamma, "gamma_0n"),
+            bound(&coupling_reading::lambda_johnson, "P_H/P2 at Johnson's level"),
+            bound(&coupling_reading::peak_change, "the peak pressure's change")};
 }
 
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n) {
     const peak_error floor = peak_floors({level, coarse}, n);
-    return {std::fabs(level.r - coarse.r) + floor.r, std::fabs(level.p - coarse.p) + floor.p};
+    return {std::fabs(level.r - coarse.r) + floor.r, std::fabs(level.p - coarse.p) + floor.p,
+            std::fabs(level.centre - coarse.centre) + floor.centre};
 }
 
 level_changes changes_before_point(const estimate_level& quarter, const estimate_level& half, int m, double f,

@@ -27,8 +27,18 @@ struct coupled_changes {
 // The peak pressure's estimates (pressure_peak of normal_solution.hpp, at level n): its position r and its value p in
 // units of P2/a, from the normal solutions of the levels the point's estimate already solved (point_estimate.hpp,
 // peak_from_levels; docs/performance.md "The peak pressure's estimate").
+// `centre`: the pressure at the centre, p(0) in units of P2/a, by the same rule from the same levels' p(0)
+// (docs/formulation.md 2(j), "The SI values' estimates").
 struct peak_error {
     double r, p;
+    double centre;
+};
+
+// Full coupling's measured values (coupling_summary, and normal_solution's gamma_0n) from the same levels as the point's
+// estimate (point_estimate.hpp, coupling_from_levels; docs/formulation.md 8(e), "The measured values' estimates"): the
+// offset e = x_c/a, gamma_0n, Johnson's P_H/P2 and the peak pressure's relative change at the same P2.
+struct coupling_error {
+    double offset, gamma, lambda_johnson, peak_change;
 };
 
 // Full coupling's zone ends by one Richardson level of order 2 (docs/formulation.md 8(q), "One Richardson level for the
@@ -83,6 +93,8 @@ struct error_estimate {
     // clean order 2, else level n's with its own estimate (zone_end_values); empty for every other rule. Not read by the
     // ladder's tolerance (level_ladder's check_estimate reads c0 and start, level n's): an answer's n is chosen as before.
     std::optional<zone_end_values> zone_ends = std::nullopt;
+    // Full coupling on levels (not the edge layers' closed form): its measured values' estimates (coupling_error).
+    std::optional<coupling_error> coupling = std::nullopt;
 };
 
 }  // namespace roughroll

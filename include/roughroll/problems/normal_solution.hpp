@@ -66,10 +66,13 @@ struct normal_solution {
 // error eps |p| / rcond (rcond of the factor U, about 1/kappa): the levels' own rounding, which grows with kappa
 // (measured on the pair at Q/f = -0.75: p's changes 64..512 within 1e-13, 512 -> 1000 5.6e-13 as rcond falls
 // 3.5e-5 .. 3.5e-8; the bound is 2.3e-11 at 128, 4e-9 at 1000). 0 elsewhere, where the levels' changes carry it.
+// `centre`: p(0), the pressure at the centre, read with the peak so that its estimate comes from the same levels
+// (peak_error::centre; docs/formulation.md 2(j), "The SI values' estimates").
 struct pressure_peak {
     double r, p;
     double r_resolution;
     double p_rounding = 0.0;
+    double centre = 0.0;
 };
 pressure_peak peak_of(const normal_solution& s);
 

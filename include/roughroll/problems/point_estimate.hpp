@@ -16,6 +16,7 @@
 
 #include "roughroll/numerics/error_bound.hpp"
 #include "roughroll/numerics/method.hpp"
+#include "roughroll/problems/coupling_summary.hpp"
 #include "roughroll/problems/error_estimate.hpp"
 #include "roughroll/problems/normal_solution.hpp"
 #include "roughroll/problems/tangential_problem.hpp"
@@ -201,6 +202,19 @@ double peak_position_from_slopes(const normal_solution& level, int level_n, cons
                                  double r, const std::vector<double>& ends, double ends_estimate);
 // Whether peak_from_levels asks `finer` (level 2n) of these peaks at this point, point.lower_bound aside.
 bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const estimate_point& point);
+// Full coupling's measured values at one level's point (docs/formulation.md 8(e), "The measured values' estimates"): the
+// offset e = x_c/a and gamma_0n of its pressure (normal_solution), Johnson's P_H/P2 and the peak pressure's change at
+// the same P2 of its alternation (coupling_summary).
+struct coupling_reading {
+    double offset, gamma, lambda_johnson, peak_change;
+};
+coupling_reading reading_of(const normal_solution& pressure, const coupling_summary& alternation);
+// Their estimates from the levels' readings by the peak value's rule (peak_from_levels: at full coupling twice the
+// larger change with the geometric tail, plus the changes above level n; on rough rollers changes of opposite sign
+// confirmed on level 2n, `finer`, solved on demand as the peak's, and refused where it cannot be), each with the floor of
+// its levels' rounding and the alternation's stop (4 coupling_value_tolerance).
+coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& levels, const estimate_point& point,
+                                    const std::function<std::optional<coupling_reading>()>& finer);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
 // the peak's difference from `coarse`'s, with the floors above at n nodes.
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
