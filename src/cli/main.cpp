@@ -123,7 +123,8 @@ void add_scene_overrides(CLI::App* cmd, scene_options& o) {
                     "auto, single or general: how the stick and slip zones are found "
                     "(overrides solver.zones)");
     add_number(cmd, "--tolerance", o.tolerance,
-               "relative accuracy of every estimate: n chosen from the method's default up to 1000 (overrides "
+               "relative accuracy of the estimates that choose n (P_H/P2, c0, xi, the zone ends; docs/cli.md): n chosen "
+               "from the method's default up to 1000 (overrides "
                "solver.tolerance and solver.n; default " +
                    shortest(default_tolerance) + " where no n is given)");
     add_number(cmd, "--friction", o.friction, "friction coefficient f (overrides the scene's friction)");
