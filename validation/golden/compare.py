@@ -5,7 +5,8 @@
     validation/golden/compare.py REFERENCE NEW
 
 Every number must be identical, or have moved by no more than its error estimate: a JSON point's
-c0, xi, hertz_load_ratio, stick_start and pressure_peak's p and r against their error_estimate entries,
+c0, xi, hertz_load_ratio, stick_start, gamma and pressure_peak's p and r against their error_estimate entries, full
+coupling's offset_e, hertz_load_ratio_johnson and peak_pressure_change against coupling.error_estimate's (where bounded),
 its SI values against si.error_estimate's (T and A at a by its roughness_at_a_relative; where neither
 folder has them, the peak's SI values against the dimensionless ones scaled), a curve's or figure's
 column X against its column X_error_estimate; another derived number (xi_over_f, p_centre_Pa) against
@@ -23,7 +24,10 @@ IGNORED = {"seconds", "version"}
 # A JSON key and the error_estimate entry that bounds it (the peak pressure's value and position by their own
 # estimates, not by the point's largest relative estimate).
 ESTIMATED = {"c0": "c0", "xi": "xi", "hertz_load_ratio": "hertz_load_ratio", "stick_start": "stick_start",
-             "pressure_peak.p": "pressure_peak_p", "pressure_peak.r": "pressure_peak_r"}
+             "pressure_peak.p": "pressure_peak_p", "pressure_peak.r": "pressure_peak_r", "gamma": "gamma"}
+# Full coupling's measured values and their estimates (coupling.error_estimate, session 28; null where none is bounded).
+COUPLING_ESTIMATED = {"coupling.offset_e": "offset_e", "coupling.hertz_load_ratio_johnson": "hertz_load_ratio_johnson",
+                      "coupling.peak_pressure_change": "peak_pressure_change"}
 # An SI value and the dimensionless one it scales: judged by that one's estimate times the scale (x_peak_m is
 # pressure_peak.r times the half-width, near zero where the peak sits at the centre).
 SCALED = {"si.x_peak_m": "pressure_peak.r", "si.p_peak_Pa": "pressure_peak.p"}
@@ -105,7 +109,7 @@ def compare_json(report, name, old, new):
         o, n = old_flat[key], new_flat[key]
         if o == n:
             continue
-        if key.startswith("error_estimate") or key.startswith("si.error_estimate"):
+        if key.startswith(("error_estimate", "si.error_estimate", "coupling.error_estimate")):
             report.note("estimate", name, f"{key}: {o!r} -> {n!r}")
             continue
         if key in DIAGNOSTIC:
@@ -115,6 +119,13 @@ def compare_json(report, name, old, new):
         if allowance is not None:
             compare_numbers(report, name, key, o, n, allowance)
             continue
+        if key in COUPLING_ESTIMATED:
+            est = COUPLING_ESTIMATED[key]
+            bounds = [e.get(est) for e in ((old.get("coupling") or {}).get("error_estimate") or {},
+                                           (new.get("coupling") or {}).get("error_estimate") or {})]
+            if isinstance(bounds[0], (int, float)):
+                compare_numbers(report, name, key, o, n, max(b for b in bounds if isinstance(b, (int, float))))
+                continue
         base = SCALED.get(key)
         est_key = ESTIMATED.get(base or key)
         if est_key is not None and isinstance(old_est.get(est_key), (int, float)):
