@@ -133,7 +133,8 @@ std::string no_estimate_reason(const point_report& r) {
     if (!r.solution.checks.hold())
         return "none: the checks (3.3)-(3.4) fail, so this answer is not the model's solution and no difference "
                "between levels bounds its error";
-    return "unavailable (n/2 too coarse for the kernels, 2n above the largest n)";
+    return "unavailable (the estimate's levels do not fit: one below n is too coarse for the kernels, or one above "
+           "n (2n, or 4n for the paper's method) beyond the largest n)";
 }
 }  // namespace
 
