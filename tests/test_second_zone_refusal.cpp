@@ -68,6 +68,7 @@ TEST(SecondZoneRefusal, TheCheckNamesItAndTheToleranceThatAcceptsIt) {
     // Its scale is the start's (1 + s1): the least accepting tolerance 2.1e-4/(1 + s1) = 0.0138, and every other
     // quantity within it.
     EXPECT_NEAR(t.answering, 2.1e-4 / (1.0 + s1), 1e-15);
+    EXPECT_EQ(t.answering_quantity, "the second stick zone's start");
     EXPECT_LE(check_estimate(s, 0.99203859, e, t.answering * (1.0 + 1e-12)).ratio, 1.0);
     EXPECT_GT(check_estimate(s, 0.99203859, e, 0.99 * t.answering).ratio, 1.0);
     // Without the flag: the member's old name.
@@ -76,6 +77,19 @@ TEST(SecondZoneRefusal, TheCheckNamesItAndTheToleranceThatAcceptsIt) {
     e.c0_second_zone = true;
     e.c0 = 1e-3;
     EXPECT_EQ(check_estimate(s, 0.99203859, e, 1e-4).quantity, "the second stick zone's end");
+}
+
+TEST(SecondZoneRefusal, TheAcceptingToleranceNamesItsOwnQuantity) {
+    // Below every floor's tolerance the largest ratio e / floor and the largest relative estimate e / s may be of two
+    // quantities: the advised tolerance is the second's, and the refusal names it (session 28 audit F4: fig2a-T1 at
+    // --tolerance 1e-300 named P_H/P2 for the tolerance xi sets).
+    tangential_solution s = five(0.0, 0.0).solution;
+    s.f = 0.2;  // xi's floor is of |xi| + f (the problem's scale), P_H/P2's of lambda: e/floor and e/s order them apart
+    const error_estimate e{1e-9, 0.0, 1e-10, 0.0, "", false, 0.0};
+    const tolerance_check t = check_estimate(s, 0.99203859, e, 1e-300);
+    EXPECT_EQ(t.quantity, "P_H/P2");
+    EXPECT_EQ(t.answering_quantity, "xi");
+    EXPECT_EQ(t.answering, 1e-10 / std::fabs(s.xi));
 }
 
 TEST(SecondZoneRefusal, NoToleranceAcceptsAnEstimateOfAZeroValueAboveItsFloor) {

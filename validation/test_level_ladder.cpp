@@ -255,13 +255,13 @@ TEST(LevelLadder, TheRefusalsAdviceAnswers) {
         what = e.what();
     }
     const std::regex advice(
-        "raise the tolerance \\(solver\\.tolerance, --tolerance; a tolerance of ([0-9.e+-]+) answers at n = ([0-9]+) "
-        "or below\\), or try another method$");
+        "raise the tolerance \\(solver\\.tolerance, --tolerance; a tolerance of ([0-9.e+-]+) \\(([^()]+)'s relative "
+        "estimate\\) answers at n = ([0-9]+) or below\\), or try another method$");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(what, m, advice)) << what;
     EXPECT_EQ(what.find("--n"), std::string::npos) << what;
     EXPECT_EQ(what.find("solver.n"), std::string::npos) << what;
-    const std::string tolerance = m[1], n = m[2];
+    const std::string tolerance = m[1], n = m[3];
     const scene_point at_tolerance = solve_point(with_solver(text, "tolerance = " + tolerance + "\n"), std::nullopt);
     EXPECT_TRUE(at_tolerance.solution.checks.hold());
     EXPECT_TRUE(at_tolerance.estimate.has_value());

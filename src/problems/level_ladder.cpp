@@ -59,6 +59,7 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     const double inf = std::numeric_limits<double>::infinity();
     tolerance_check worst{0.0, "P_H/P2", e.lambda, 0.0};
     double answering = 0.0;
+    std::string answering_quantity;
     for (const quantity& q : quantities) {
         const double allowed = std::max(tol * std::fabs(q.scale), q.floor);
         const double ratio = q.estimate == 0.0     ? 0.0
@@ -67,9 +68,14 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
                                                    : inf;
         const double relative = q.scale != 0.0 ? q.estimate / std::fabs(q.scale) : inf;
         if (ratio > worst.ratio) worst = {ratio, q.name, q.estimate, relative};
-        if (!(q.estimate <= q.floor)) answering = std::max(answering, q.estimate > 0.0 ? relative : inf);
+        const double needs = q.estimate > 0.0 ? relative : inf;
+        if (!(q.estimate <= q.floor) && (needs > answering || answering_quantity.empty())) {
+            answering = std::max(answering, needs);
+            answering_quantity = q.name;
+        }
     }
     worst.answering = answering;
+    worst.answering_quantity = answering_quantity;
     return worst;
 }
 
@@ -453,8 +459,8 @@ level_ladder::answer level_ladder::climb(const solve_rung& solve, std::size_t fr
             // the answer named here (session 25 audit F2).
             "; raise the tolerance (solver.tolerance, --tolerance" +
             (accepted > 0.0 && accepted < 1.0
-                 ? "; a tolerance of " + significant(accepted, 2) + " answers at n = " + std::to_string(best->n) +
-                       " or below"
+                 ? "; a tolerance of " + significant(accepted, 2) + " (" + best->check.answering_quantity +
+                       "'s relative estimate) answers at n = " + std::to_string(best->n) + " or below"
                  : std::string()) +
             "), or try another method" +
             (skipped.empty() && beyond_all.empty() && not_solved.empty() ? "" : " or coupling = \"johnson\"");

@@ -78,6 +78,7 @@ struct tolerance_check {
     // The least tolerance within which every quantity is (e <= max(tol s, r) for each): the largest e/s of those above
     // their floor r; 0 where all are, infinite where one above its floor has s = 0 (or a NaN estimate).
     double answering = 0.0;
+    std::string answering_quantity;  // the quantity whose e/s that is (empty where answering is 0)
 };
 tolerance_check check_estimate(const tangential_solution& s, double lambda, const error_estimate& e, double tol,
                                double strength = 0.0);
