@@ -12,7 +12,6 @@
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
-#include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/load_ratio.hpp"
 #include "../tests/tolerance.hpp"
 
@@ -244,34 +243,4 @@ TEST(GivenLoad, SweptRowsCarryTheWidthsError) {
             EXPECT_GE(row.estimate->xi, std::fabs(row.solution.xi - xi_at_1000[i]));
         }
     }
-}
-
-// The coupled width on a ladder (docs/formulation.md 2(j) "The coupled width on a ladder"; session 27 audit A1): the
-// rough pair at full coupling, braked at Q/f = -0.5, climbs to n = 512, each rung settling its own width. A rung above the
-// first starts its width search from the rung below's coupling (the coupled P_H/P2 less Johnson's), so that its first
-// coupled point is within the polish's residual and is the rung's point: fewer width iterations than the same search
-// at that n alone (a given n, no rung below; before session 28 every rung searched so, the same count). Both stop at a
-// residual, each estimate carrying its own (width_error), so the two answers are within the sum of their estimates (the
-// width within the bounds the SI values take from P_H/P2's estimates, E/(2x) of a_H).
-TEST(GivenLoad, CoupledWidthOnALadderStartsFromTheRungBelow) {
-    scene s = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel-rough.toml");
-    s.materials.coupling = coupling_level::full;
-    const load_given load(load_kind::Q_over_f, -0.5);
-    const scene_point climbed = solve_point(s, load);
-    const int n = climbed.settled.solver.nodes();
-    ASSERT_GT(n, ladder_rungs(s.solver.how).front());  // a rung above the first answers
-    scene given = s;
-    override_solver(given, n, std::nullopt);
-    const scene_point alone = solve_point(given, load);
-    ASSERT_TRUE(climbed.width && alone.width && climbed.estimate && alone.estimate);
-    EXPECT_LT(climbed.width->iterations, alone.width->iterations);
-    const error_estimate &e = *climbed.estimate, &f = *alone.estimate;
-    const auto a_bound = [](const scene_point& p) {
-        return p.width->a_hertz * p.estimate->lambda / (2.0 * p.width->a / p.width->a_hertz);
-    };
-    EXPECT_LE(std::fabs(climbed.width->a - alone.width->a), a_bound(climbed) + a_bound(alone));
-    EXPECT_LE(std::fabs(climbed.solved.normal().lambda - alone.solved.normal().lambda), e.lambda + f.lambda);
-    EXPECT_LE(std::fabs(climbed.solution.c0() - alone.solution.c0()), e.c0 + f.c0);
-    EXPECT_LE(std::fabs(climbed.solution.start() - alone.solution.start()), e.start + f.start);
-    EXPECT_LE(std::fabs(climbed.solution.xi - alone.solution.xi), e.xi + f.xi);
 }

@@ -109,13 +109,12 @@ root bracketed_width(const physical_scene& s, const std::function<double(double)
 // iterate leaves (0, x_max], F or a slope is not finite or zero, or the steps do not converge
 // within max_polish_steps: the caller then searches by bracket and Brent instead.
 std::optional<root> secant_width(const std::function<double(double)>& F, double x0, double F0, double s0,
-                                 double x_max, double residual = 0.0) {
+                                 double x_max) {
     double x_prev = x0;
     double F_prev = F0;
     double slope = s0;
     for (int step = 0; step < max_polish_steps; ++step) {
-        // `residual` (find_width's): an iterate whose F is that small relative to lambda = x^2 is the root returned.
-        if (F_prev == 0.0 || std::fabs(F_prev) <= residual * x_prev * x_prev) return root{x_prev, step, slope};
+        if (F_prev == 0.0) return root{x_prev, step, slope};
         if (!(std::isfinite(slope) && slope != 0.0)) return std::nullopt;
         const double x = x_prev - F_prev / slope;
         if (!(x > 0.0 && x <= x_max)) return std::nullopt;
@@ -131,7 +130,7 @@ std::optional<root> secant_width(const std::function<double(double)>& F, double 
 
 contact_width search_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
                            const std::function<double(const roughness&)>& cheap_load_ratio,
-                           bool lambda_has_traction_term, double residual) {
+                           bool lambda_has_traction_term) {
     const double a_H = hertz_half_width(s, s.P2);
     // Widths beyond R/10 are refused whatever the kernels: checked before any solve, so that
     // a wide contact is told so rather than sent to a discretisation that cannot resolve it.
@@ -170,7 +169,7 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
             const double G1 = G(1.0);
             const std::optional<root> c = secant_width(G, 1.0, G1, -2.0, x_max);
             if (c && (c->x > 1.0) == (G1 > 0.0))
-                if (const std::optional<root> x = secant_width(F, c->x, F(c->x), c->slope, x_max, residual))
+                if (const std::optional<root> x = secant_width(F, c->x, F(c->x), c->slope, x_max))
                     return {x->x * a_H, a_H, x->x * x->x, s.P2, c->iterations + x->iterations};
         } catch (const error&) {
         }
@@ -184,8 +183,8 @@ contact_width search_width(const physical_scene& s, const std::function<double(c
 
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
                          const std::function<double(const roughness&)>& cheap_load_ratio,
-                         bool lambda_has_traction_term, double residual) {
-    return small_against_radius(s, search_width(s, load_ratio, cheap_load_ratio, lambda_has_traction_term, residual));
+                         bool lambda_has_traction_term) {
+    return small_against_radius(s, search_width(s, load_ratio, cheap_load_ratio, lambda_has_traction_term));
 }
 
 }  // namespace roughroll

@@ -34,12 +34,8 @@ inline constexpr double width_search_tolerance = 1e-12;
 // (docs/formulation.md 8(c)), so that a smooth pair is not at Hertz's width: lambda then does not
 // vary with a (no layer), and a = a_H sqrt(lambda(a_H)), one solve; else a smooth pair is Hertz's
 // exactly (lambda = 1), with no solve.
-// `residual`: the polish from the cheap root also stops at the first width x it evaluates whose
-// |lambda(x) - x^2| <= residual x^2, and returns it (0: the step rule alone). The width is then off its
-// lambda's root by about that residual over |2x - lambda'(x)|, which the caller carries into its error
-// estimates (io/scene_point.cpp, width_error: a rough pair at full coupling; docs/formulation.md 2(j)).
 contact_width find_width(const physical_scene& s, const std::function<double(const roughness&)>& load_ratio,
                          const std::function<double(const roughness&)>& cheap_load_ratio = {},
-                         bool lambda_has_traction_term = false, double residual = 0.0);
+                         bool lambda_has_traction_term = false);
 
 }  // namespace roughroll
