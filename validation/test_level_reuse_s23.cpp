@@ -7,6 +7,8 @@
 // kernels, so that the rungs' store could share levels; on the physical scene each rung settles its own width).
 // The independent route is the same ladder with rungs that share no store, whose estimates confirm at every rung as the
 // program before did (level_ladder's factory of n alone): the answer and the refusal must be the same, bit for bit.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -75,22 +77,39 @@ void expect_same(const std::optional<error_estimate>& a, const std::optional<err
     EXPECT_EQ(a->peak->p, b->peak->p);
 }
 
-// The answer of the rungs sharing a store and of the rungs on their own at `tolerance`: the same, bit for bit.
+// The answer of the rungs sharing a store and of the rungs on their own at `tolerance`: the same, bit for bit, below
+// rung 1000. Rung 1000's levels 250, 500 double no rung: sharing the store they start their alternation from the finest
+// coupled rung's point (docs/formulation.md 8(q), "The top rung's levels from the finest coupled rung", session 28),
+// on their own from Johnson's, so the two answers are two converged alternations from two starts, each within the
+// other's estimates (measured: 1e-9 relative apart, estimates about 1e-6), not the same bits.
 // Returns the shared ladder's answer's n and how often it made levels n, 2n, 256 and 512.
 struct climbed {
     int n, made_n, made_2n, made_256, made_512;
 };
+void expect_within(double a, double b, double ea, double eb, const char* what) {
+    EXPECT_LE(std::fabs(a - b), std::min(ea, eb)) << what << ": " << a << " vs " << b;
+}
 climbed same_answer_both_ways(double tolerance) {
     level_ladder shared = shared_ladder(tolerance);
     const level_ladder::answer a = shared.point(Q);
     level_ladder separate = separate_ladder(tolerance);
     const level_ladder::answer b = separate.point(Q);
     EXPECT_EQ(b.n, a.n);
-    EXPECT_EQ(a.solution.start(), b.solution.start());
-    EXPECT_EQ(a.solution.c0(), b.solution.c0());
-    EXPECT_EQ(a.solution.xi, b.solution.xi);
-    EXPECT_EQ(shared.at(a.n).normal().lambda, separate.at(b.n).normal().lambda);
-    expect_same(a.estimate, b.estimate);
+    if (a.n == 1000) {
+        EXPECT_TRUE(a.estimate && b.estimate);
+        if (!a.estimate || !b.estimate) return {a.n, 0, 0, 0, 0};
+        expect_within(a.solution.start(), b.solution.start(), a.estimate->start, b.estimate->start, "stick start");
+        expect_within(a.solution.c0(), b.solution.c0(), a.estimate->c0, b.estimate->c0, "c0");
+        expect_within(a.solution.xi, b.solution.xi, a.estimate->xi, b.estimate->xi, "xi");
+        expect_within(shared.at(a.n).normal().lambda, separate.at(b.n).normal().lambda, a.estimate->lambda,
+                      b.estimate->lambda, "P_H/P2");
+    } else {
+        EXPECT_EQ(a.solution.start(), b.solution.start());
+        EXPECT_EQ(a.solution.c0(), b.solution.c0());
+        EXPECT_EQ(a.solution.xi, b.solution.xi);
+        EXPECT_EQ(shared.at(a.n).normal().lambda, separate.at(b.n).normal().lambda);
+        expect_same(a.estimate, b.estimate);
+    }
     return {a.n, shared.levels().made(a.n), shared.levels().made(2 * a.n), shared.levels().made(256),
             shared.levels().made(512)};
 }
