@@ -57,7 +57,7 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
     };
     // A zero estimate (the quantity given, not computed) is within any tolerance; a NaN one is not.
     const double inf = std::numeric_limits<double>::infinity();
-    tolerance_check worst{0.0, "P_H/P2", e.lambda, 0.0};
+    tolerance_check worst{0.0, "P_H/P2", e.lambda, 0.0, 0.0, {}};
     double answering = 0.0;
     std::string answering_quantity;
     for (const quantity& q : quantities) {
@@ -67,7 +67,7 @@ tolerance_check check_estimate(const tangential_solution& s, double lambda, cons
                              : allowed > 0.0       ? q.estimate / allowed
                                                    : inf;
         const double relative = q.scale != 0.0 ? q.estimate / std::fabs(q.scale) : inf;
-        if (ratio > worst.ratio) worst = {ratio, q.name, q.estimate, relative};
+        if (ratio > worst.ratio) worst = {ratio, q.name, q.estimate, relative, 0.0, {}};
         const double needs = q.estimate > 0.0 ? relative : inf;
         if (!(q.estimate <= q.floor) && (needs > answering || answering_quantity.empty())) {
             answering = std::max(answering, needs);
