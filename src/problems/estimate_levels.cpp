@@ -372,15 +372,10 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
                 });
             // The alternation's share, as P_H/P2's floor above (8(w), "The alternation's share"): e is of the stop's
             // group (lambda, e, xi), so each level on the weight adds twice its distance from its fixed point
-            // (coupling_fixed_point_distance), or the a priori 2 eps max(1, |e|)/rcond (offset_share). gamma_0n =
-            // (2/pi) lambda e + C and the peak's change move with C and the peak too, whose distances the alternation
-            // does not bound: no estimate (NaN, null). Johnson's P_H/P2 is no iterate of it (its own normal solve): its
-            // levels' rule alone.
-            if (e.coupling) {
-                e.coupling->offset += offset_share;
-                e.coupling->gamma = std::numeric_limits<double>::quiet_NaN();
-                e.coupling->peak_change = std::numeric_limits<double>::quiet_NaN();
-            }
+            // (coupling_fixed_point_distance), or the a priori 2 eps max(1, |e|)/rcond (offset_share). gamma_0n and the
+            // peak's change have none (coupling_from_levels). Johnson's P_H/P2 is no iterate of it (its own normal
+            // solve): its levels' rule alone.
+            if (e.coupling) e.coupling->offset += offset_share;
         }
     }
     return e;

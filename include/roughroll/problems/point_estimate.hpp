@@ -210,9 +210,10 @@ struct coupling_reading {
 };
 coupling_reading reading_of(const normal_solution& pressure, const coupling_summary& alternation);
 // Their estimates from the levels' readings by the peak value's rule (peak_from_levels: at full coupling twice the
-// larger change with the geometric tail, plus the changes above level n; on rough rollers changes of opposite sign
-// confirmed on level 2n, `finer`, solved on demand as the peak's, and refused where it cannot be), each with the floor of
-// its levels' rounding and the alternation's stop (4 coupling_value_tolerance).
+// larger change with the geometric tail, plus the changes above level n; changes of opposite sign confirmed on level
+// 2n, `finer`, only where the point's estimate solved it: a printed value solves no level and refuses nothing, NaN
+// instead), each with the floor of its levels' rounding; offset e's alternation share is the caller's
+// (estimate_levels.cpp). gamma_0n and the peak's change: NaN (their alternation share is not bounded, 8(e)).
 coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& levels, const estimate_point& point,
                                     const std::function<std::optional<coupling_reading>()>& finer);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
