@@ -267,7 +267,12 @@ int run_traction(const traction_options& o) {
         << ", xi = " << shortest(solution.xi) << ", P_H/P2 = " << shortest(normal.lambda)
         << ", method = " << to_string(normal.how) << ", n = " << normal.rule.n
         << ", checks = " << (solution.checks.hold() ? "hold" : "VIOLATED") << "\n"
-        << "# zones (r = x1/a): " << zones_text(level) << "\n"
+        // The rows are level n's distributions; with Richardson's c0 (method extrapolated) the header's c0 is not their
+        // zone end (they differ within c0's estimate): the line says so where they differ (docs/cli.md, `traction`).
+        << "# zones (r = x1/a" << (level.c0() == solution.c0() ? std::string()
+                                   : "; the rows' own, at n = " + std::to_string(normal.rule.n) +
+                                         ", where the header's c0 is extrapolated")
+        << "): " << zones_text(level) << "\n"
         << "# r = x1/a; p = a p2/P2; p1 = a p1/P2 (3.15); zone: stick or slip, the zones above;"
            " slip_velocity: v of (3.6), scaled as xi; p_hertz, p1_carter: smooth cylinders, same Q and f\n";
     if (unresolved)
