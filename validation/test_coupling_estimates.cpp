@@ -47,7 +47,7 @@ TEST(CouplingEstimates, BoundTheDistanceFromAFinerN) {
             SCOPED_TRACE("Q/f = " + std::to_string(q) + ", n = " + std::to_string(n));
             const measured m = at(n, q);
             ASSERT_TRUE(m.estimate && m.estimate->coupling);
-            const coupling_error& e = *m.estimate->coupling;
+            const coupling_values& e = *m.estimate->coupling;
             EXPECT_LE(std::fabs(m.summary.offset - reference.summary.offset), e.offset);
             EXPECT_LE(std::fabs(m.summary.lambda_johnson - reference.summary.lambda_johnson), e.lambda_johnson);
             EXPECT_TRUE(std::isnan(e.gamma));  // no estimate: C's and the peak's alternation share are not bounded
@@ -65,7 +65,7 @@ TEST(CouplingEstimates, Printed) {
     s.solver.n = 64;
     const scene_point full = solve_point(s, -0.75 * s.friction);
     ASSERT_TRUE(full.estimate && full.estimate->coupling);
-    const coupling_error& e = *full.estimate->coupling;
+    const coupling_values& e = *full.estimate->coupling;
     const nlohmann::json j = to_json(full.report());
     const nlohmann::json& printed = j.at("coupling").at("error_estimate");
     EXPECT_EQ(printed.at("offset_e").get<double>(), e.offset);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -100,16 +101,18 @@ nlohmann::json si_estimate_json(const si_estimate& e) {
 // gamma_0n's estimate: at full coupling its levels' (error_estimate::coupling; none on the edge layers' closed form);
 // elsewhere the model's gamma is 0 exactly ((4.8): the normal problem's solvability, docs/formulation.md section 3), so
 // |gamma_0n| is its distance, not an estimate of it.
-std::optional<double> gamma_estimate(const point_report& r) {
+// NaN where it has none (a printed-only estimate, below).
+double gamma_estimate(const point_report& r) {
     if (!r.coupling) return std::fabs(r.normal.gamma);
-    if (r.estimate && r.estimate->coupling && !std::isnan(r.estimate->coupling->gamma))
-        return r.estimate->coupling->gamma;
-    return std::nullopt;
+    return r.estimate && r.estimate->coupling ? r.estimate->coupling->gamma : std::numeric_limits<double>::quiet_NaN();
 }
 
-// A printed-only estimate (error_estimate::coupling's, peak_error::centre): NaN where it has none.
+// A printed-only estimate (error_estimate::coupling's, peak_error::centre): NaN where it has none. In the text, "none"
+// there, else the estimate times `scale` followed by `unit` (the peak's relative change in %).
 nlohmann::json estimate_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
-std::string estimate_text(double x) { return std::isnan(x) ? std::string("none") : shortest(x); }
+std::string estimate_text(double x, double scale = 1.0, const std::string& unit = "") {
+    return std::isnan(x) ? std::string("none") : shortest(scale * x) + unit;
+}
 
 std::string term_text(const roughness_term& t) {
     return t.present() ? "T " + shortest(t.T) + ", A " + shortest(t.A) : std::string("smooth");
@@ -163,10 +166,7 @@ nlohmann::json to_json(const point_report& r) {
         estimate["pressure_peak_r"] = r.estimate->peak->r;
         estimate["pressure_peak_p"] = r.estimate->peak->p;
     }
-    if (r.estimate) {
-        const std::optional<double> gamma = gamma_estimate(r);
-        estimate["gamma"] = gamma ? nlohmann::json(*gamma) : nlohmann::json(nullptr);
-    }
+    if (r.estimate) estimate["gamma"] = estimate_or_null(gamma_estimate(r));
     if (r.estimate && r.estimate->zone_ends) {
         // Full coupling's zone ends each with its own estimate, by one Richardson level where clean (docs/formulation.md
         // 8(q)): beside level n's (c0, stick_start, zones). Only there: other points' keys unchanged.
@@ -222,7 +222,7 @@ nlohmann::json to_json(const point_report& r) {
     // estimates"); none on the edge layers' closed form or where the point has no estimate. contraction, iterations and
     // the Newton counts describe the alternation, not the model: no estimate.
     if (r.coupling) {
-        const std::optional<coupling_error> e = r.estimate ? r.estimate->coupling : std::nullopt;
+        const std::optional<coupling_values> e = r.estimate ? r.estimate->coupling : std::nullopt;
         coupling["error_estimate"] = e ? nlohmann::json{{"offset_e", estimate_or_null(e->offset)},
                                                          {"hertz_load_ratio_johnson", estimate_or_null(e->lambda_johnson)},
                                                          {"peak_pressure_change", estimate_or_null(e->peak_change)}}
@@ -317,7 +317,6 @@ void write_summary(std::ostream& out, const point_report& r) {
     // Five zones: c0's and the start's estimates are each the larger of the two stick zones' (zone_ends_table), so
     // they bound the second zone's ends printed among the zones too, and say so.
     const bool two = s.layout.stick_zones() == 2;
-    const std::optional<double> gamma = gamma_estimate(r);
     if (r.estimate)
         out << "  error estimate      P_H/P2 " << shortest(r.estimate->lambda)
             << (two ? ", c0 and the second stick zone's end " : ", c0 ") << shortest(r.estimate->c0)
@@ -325,19 +324,16 @@ void write_summary(std::ostream& out, const point_report& r) {
                     ? (two ? ", stick start and the second stick zone's start " : ", stick start ") +
                           shortest(r.estimate->start)
                     : std::string())
-            << ", xi "
-            << shortest(r.estimate->xi)
-            << (r.estimate->peak ? ", peak p " + shortest(r.estimate->peak->p) + ", peak r " + shortest(r.estimate->peak->r)
-                                 : std::string())
-            << (gamma ? ", gamma_0n " + shortest(*gamma) : std::string(", gamma_0n none"))
-            << (r.estimate->coupling ? ", offset e " + estimate_text(r.estimate->coupling->offset) +
-                                           ", P_H/P2 at Johnson's level " +
-                                           estimate_text(r.estimate->coupling->lambda_johnson) +
-                                           ", peak pressure change " +
-                                           (std::isnan(r.estimate->coupling->peak_change)
-                                                ? std::string("none")
-                                                : shortest(100.0 * r.estimate->coupling->peak_change) + " %")
-                                     : std::string())
+            << ", xi " << shortest(r.estimate->xi)
+            << (r.estimate->peak
+                    ? ", peak p " + shortest(r.estimate->peak->p) + ", peak r " + shortest(r.estimate->peak->r)
+                    : std::string())
+            << ", gamma_0n " << estimate_text(gamma_estimate(r))
+            << (r.estimate->coupling
+                    ? ", offset e " + estimate_text(r.estimate->coupling->offset) + ", P_H/P2 at Johnson's level " +
+                          estimate_text(r.estimate->coupling->lambda_johnson) + ", peak pressure change " +
+                          estimate_text(r.estimate->coupling->peak_change, 100.0, " %")
+                    : std::string())
             << "   (difference from " << r.estimate->against << ")\n";
     else
         out << "  error estimate      " << no_estimate_reason(r) << "\n";

@@ -186,13 +186,18 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     // where the alternation's contraction reads 1 or more, the a priori floor.
     const double n_eps_lambda = floor.lambda;
     // The same share for full coupling's offset e, of the stop's group (lambda, e, xi): its measured value's estimate
-    // (docs/formulation.md 8(e), "The measured values' estimates"), added below.
+    // (docs/formulation.md 8(e), "The measured values' estimates"), added below. The same walk reads each level's
+    // measured values (reading_of; all three or none).
     double offset_share = 0.0;
+    std::array<coupling_values, 3> readings{};
+    bool read = structure == estimate_structure::full_coupling;
     for (int i = 0; i < 3; ++i) {
         const point_model& level = levels_[i] ? *levels_[i] : *model_;
         const normal_solution& p = level.normal();
-        if (!(p.kinks && p.kinks->weighted() && p.rcond > 0.0)) continue;
         const coupling_summary* alternation = level.coupling();
+        read = read && alternation != nullptr;
+        if (alternation) readings[i] = reading_of(p, *alternation);
+        if (!(p.kinks && p.kinks->weighted() && p.rcond > 0.0)) continue;
         const double band = rounding_floor(level.nodes(), std::max({1.0, std::fabs(p.lambda), std::fabs(p.offset),
                                                                     std::fabs(own.xi) + f_ * std::fabs(p.lambda)}));
         const double distance = p.lambda_rounding > 0.0 && alternation
@@ -299,7 +304,7 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
     // Level 2n solved once, for the table and the peak alike (its pressure read before another level is solved).
     std::optional<std::optional<estimate_level>> above;
     std::optional<pressure_peak> above_peak;
-    std::optional<coupling_reading> above_reading;  // full coupling's measured values on level 2n
+    std::optional<coupling_values> above_reading;  // full coupling's measured values on level 2n
     const auto finer_once = [&]() -> std::optional<estimate_level> {
         if (!above) {
             above = finer();
@@ -356,26 +361,17 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         e.peak = peak_from_levels(peaks, point, finer_peak, slopes_r);
         // Full coupling's measured values (offset e, gamma_0n, Johnson's P_H/P2, the peak's change) from the same
         // levels' points, by the peak value's rule (docs/formulation.md 8(e), "The measured values' estimates").
-        if (structure == estimate_structure::full_coupling) {
-            std::array<coupling_reading, 3> readings{};
-            bool read = true;
-            for (int i = 0; i < 3; ++i) {
-                const point_model& l = levels_[i] ? *levels_[i] : *model_;
-                const coupling_summary* c = l.coupling();
-                read = read && c != nullptr;
-                if (c) readings[i] = reading_of(l.normal(), *c);
-            }
+        if (read) {
             // Level 2n only where the table or the peak solved it: a printed value solves nothing (value_from_levels).
-            if (read)
-                e.coupling = coupling_from_levels(readings, point, [&]() -> std::optional<coupling_reading> {
-                    return above && *above ? above_reading : std::nullopt;
-                });
+            e.coupling = coupling_from_levels(readings, point, [&]() -> std::optional<coupling_values> {
+                return above && *above ? above_reading : std::nullopt;
+            });
             // The alternation's share, as P_H/P2's floor above (8(w), "The alternation's share"): e is of the stop's
             // group (lambda, e, xi), so each level on the weight adds twice its distance from its fixed point
             // (coupling_fixed_point_distance), or the a priori 2 eps max(1, |e|)/rcond (offset_share). gamma_0n and the
             // peak's change have none (coupling_from_levels). Johnson's P_H/P2 is no iterate of it (its own normal
             // solve): its levels' rule alone.
-            if (e.coupling) e.coupling->offset += offset_share;
+            e.coupling->offset += offset_share;
         }
     }
     return e;

@@ -436,12 +436,12 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
             bound(&pressure_peak::centre, &peak_error::centre, "the pressure at the centre", true)};
 }
 
-coupling_reading reading_of(const normal_solution& pressure, const coupling_summary& alternation) {
+coupling_values reading_of(const normal_solution& pressure, const coupling_summary& alternation) {
     return {pressure.offset, pressure.gamma, alternation.lambda_johnson, alternation.peak_pressure_change};
 }
 
-coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& levels, const estimate_point& p,
-                                    const std::function<std::optional<coupling_reading>()>& finer) {
+coupling_values coupling_from_levels(const std::array<coupling_values, 3>& levels, const estimate_point& p,
+                                     const std::function<std::optional<coupling_values>()>& finer) {
     // The levels' rounding, sums of n terms of their size, on each of two levels (docs/formulation.md 8(e), "The
     // measured values' estimates"); the alternation's share is added by the caller where it is bounded
     // (estimate_levels.cpp, as P_H/P2's).
@@ -450,9 +450,9 @@ coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& level
         for (const double x : values) scale = std::max(scale, std::fabs(x));
         return 2.0 * rounding_floor(n, scale);
     };
-    std::optional<coupling_reading> above;
+    std::optional<coupling_values> above;
     bool above_tried = false;
-    const auto bound = [&](double coupling_reading::*x, const char* name) {
+    const auto bound = [&](double coupling_values::*x, const char* name) {
         const three_levels v{levels[0].*x, levels[1].*x, levels[2].*x};
         const double floor = floor_of({v.coarsest, v.middle, v.finest}, p.n << (2 - p.self));
         return value_from_levels(
@@ -468,8 +468,8 @@ coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& level
     // gamma_0n = (2/pi) lambda e + C and the peak's change move with C and the peak too, whose distances from the
     // alternation's fixed point it does not bound (8(e)): no estimate (NaN, printed null), none computed.
     const double none = std::numeric_limits<double>::quiet_NaN();
-    return {bound(&coupling_reading::offset, "the offset e"), none,
-            bound(&coupling_reading::lambda_johnson, "P_H/P2 at Johnson's level"), none};
+    return {bound(&coupling_values::offset, "the offset e"), none,
+            bound(&coupling_values::lambda_johnson, "P_H/P2 at Johnson's level"), none};
 }
 
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n) {

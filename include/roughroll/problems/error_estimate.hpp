@@ -34,10 +34,11 @@ struct peak_error {
     double centre;
 };
 
-// Full coupling's measured values (coupling_summary, and normal_solution's gamma_0n) from the same levels as the point's
-// estimate (point_estimate.hpp, coupling_from_levels; docs/formulation.md 8(e), "The measured values' estimates"): the
-// offset e = x_c/a, gamma_0n, Johnson's P_H/P2 and the peak pressure's relative change at the same P2.
-struct coupling_error {
+// Full coupling's four measured values (coupling_summary, and normal_solution's gamma_0n; docs/formulation.md 8(e), "The
+// measured values' estimates"): the offset e = x_c/a, gamma_0n, Johnson's P_H/P2 and the peak pressure's relative change
+// at the same P2. Both what one level measured (point_estimate.hpp, reading_of) and their estimates from the point's
+// levels (error_estimate::coupling, coupling_from_levels; NaN where a value has none).
+struct coupling_values {
     double offset, gamma, lambda_johnson, peak_change;
 };
 
@@ -93,8 +94,8 @@ struct error_estimate {
     // clean order 2, else level n's with its own estimate (zone_end_values); empty for every other rule. Not read by the
     // ladder's tolerance (level_ladder's check_estimate reads c0 and start, level n's): an answer's n is chosen as before.
     std::optional<zone_end_values> zone_ends = std::nullopt;
-    // Full coupling on levels (not the edge layers' closed form): its measured values' estimates (coupling_error).
-    std::optional<coupling_error> coupling = std::nullopt;
+    // Full coupling on levels (not the edge layers' closed form): its measured values' estimates (coupling_values).
+    std::optional<coupling_values> coupling = std::nullopt;
 };
 
 }  // namespace roughroll

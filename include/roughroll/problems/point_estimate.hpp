@@ -205,17 +205,14 @@ bool peak_asks_level_two_n(const std::array<pressure_peak, 3>& peaks, const esti
 // Full coupling's measured values at one level's point (docs/formulation.md 8(e), "The measured values' estimates"): the
 // offset e = x_c/a and gamma_0n of its pressure (normal_solution), Johnson's P_H/P2 and the peak pressure's change at
 // the same P2 of its alternation (coupling_summary).
-struct coupling_reading {
-    double offset, gamma, lambda_johnson, peak_change;
-};
-coupling_reading reading_of(const normal_solution& pressure, const coupling_summary& alternation);
+coupling_values reading_of(const normal_solution& pressure, const coupling_summary& alternation);
 // Their estimates from the levels' readings by the peak value's rule (peak_from_levels: at full coupling twice the
 // larger change with the geometric tail, plus the changes above level n; changes of opposite sign confirmed on level
 // 2n, `finer`, only where the point's estimate solved it: a printed value solves no level and refuses nothing, NaN
 // instead), each with the floor of its levels' rounding; offset e's alternation share is the caller's
 // (estimate_levels.cpp). gamma_0n and the peak's change: NaN (their alternation share is not bounded, 8(e)).
-coupling_error coupling_from_levels(const std::array<coupling_reading, 3>& levels, const estimate_point& point,
-                                    const std::function<std::optional<coupling_reading>()>& finer);
+coupling_values coupling_from_levels(const std::array<coupling_values, 3>& levels, const estimate_point& point,
+                                     const std::function<std::optional<coupling_values>()>& finer);
 // The same for a point of the general zone search whose estimate is the difference from level n/2 (contact::estimate):
 // the peak's difference from `coarse`'s, with the floors above at n nodes.
 peak_error peak_from_difference(const pressure_peak& level, const pressure_peak& coarse, int n);
