@@ -3,7 +3,8 @@
 // coupling_from_levels; docs/formulation.md 8(e), "The measured values' estimates"; session 27 audit A4): the offset
 // e = x_c/a and Johnson's P_H/P2 each bound their distance from a finer n's; gamma_0n's and the peak change's are none
 // at full coupling (the alternation does not bound their share), printed null; off full coupling gamma_0n's estimate
-// is |gamma_0n|, the model's gamma being 0.
+// is |gamma_0n|, the model's gamma being 0. On a rough physical scene the coupled width's own error adds its term to
+// offset e's, Johnson's P_H/P2's and p(0)'s estimates (docs/formulation.md 2(j) "The width's error").
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -14,6 +15,7 @@
 #include "roughroll/io/output.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/model/physical_scene.hpp"
 #include "roughroll/problems/contact.hpp"
 #include "aluminium_on_steel.hpp"
 
@@ -86,4 +88,50 @@ TEST(CouplingEstimates, Printed) {
     const nlohmann::json jj = to_json(johnson.report());
     EXPECT_EQ(jj.at("error_estimate").at("gamma").get<double>(), std::fabs(jj.at("gamma").get<double>()));
     EXPECT_FALSE(jj.at("coupling").contains("error_estimate"));
+}
+
+// The rough pair at full coupling (data/aluminium-on-steel-rough.toml, coupling full; its width carries the load): the
+// levels are all solved at level n's width x, itself off by dx = E_lambda/|F'(x)| (docs/formulation.md 2(j) "The width's
+// error"), so offset e's, Johnson's P_H/P2's and p(0)'s estimates gain |dq/dx| dx as xi's does, the slope a forward
+// difference at x (1 + 1e-6) (scene_point.cpp's width_step). Here the term is recomputed from a contact at the same
+// width, which has no width term: the scene's estimate must exceed that contact's by at least it. Fails without the
+// term (before session 29 the two estimates were equal: offset 3.2991e-7 both, the term 2.0e-8; Johnson's P_H/P2
+// 1.3494e-4, the term 1.06e-5).
+TEST(CouplingEstimates, RoughWidthErrorInTheMeasuredValues) {
+    scene s = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel-rough.toml");
+    s.materials.coupling = coupling_level::full;
+    s.solver.n = 32;
+    const scene_point sp = solve_point(s, -0.75 * s.friction);
+    ASSERT_TRUE(sp.width && sp.estimate && sp.estimate->coupling && sp.estimate->peak);
+    const physical_scene& ph = *s.physical;
+    const double x = sp.width->a / sp.width->a_hertz, step = 1e-6 * x;
+    const auto at_width = [&](double width) {
+        return contact(roughness_at(ph, width * sp.width->a_hertz), s.friction, s.solver, s.materials);
+    };
+    contact plain = at_width(x), moved = at_width(x + step);
+    const tangential_solution t = plain.point(sp.solution.Q);
+    ASSERT_EQ(t.xi, sp.solution.xi);  // the same point as the scene's
+    const std::optional<error_estimate> levels = plain.estimate(t);
+    ASSERT_TRUE(levels && levels->coupling && levels->peak);
+    const coupling_summary at = *plain.coupling();
+    const double p0 = plain.normal().pressure(0.0), offset = plain.normal().offset;
+    const double lambda = plain.normal().lambda;
+    moved.point(sp.solution.Q);
+    const double slope = (moved.normal().lambda - lambda) / step - 2.0 * x;  // F'(x), F = lambda_n(x) - x^2
+    const double k = levels->lambda / std::fabs(slope) / step;               // dx per unit change over the step
+    const struct {
+        const char* name;
+        double scene, levels, term;
+    } values[] = {
+        {"offset e", sp.estimate->coupling->offset, levels->coupling->offset,
+         k * std::fabs(moved.normal().offset - offset)},
+        {"Johnson's P_H/P2", sp.estimate->coupling->lambda_johnson, levels->coupling->lambda_johnson,
+         k * std::fabs(moved.coupling()->lambda_johnson - at.lambda_johnson)},
+        {"p(0)", sp.estimate->peak->centre, levels->peak->centre, k * std::fabs(moved.normal().pressure(0.0) - p0)},
+    };
+    for (const auto& v : values) {
+        SCOPED_TRACE(v.name);
+        EXPECT_GT(v.term, 1e-3 * v.levels);  // the term is not rounding beside the levels' estimate
+        EXPECT_GE(v.scene, v.levels + v.term * (1.0 - 1e-6));
+    }
 }

@@ -79,14 +79,15 @@ constexpr double width_step = 1e-6;
 // the root of lambda_n(x) = x^2 and carries lambda_n's error e_lambda as dx = e_lambda / |2x - lambda'(x)|. Each
 // quantity's sensitivity to x is a forward difference at level n, one point at x (1 + width_step), and each
 // estimate gains |dq/dx| dx; P_H/P2 = x^2 itself is off by 2x dx. None where T, A do not depend on the width
-// (smooth rollers, the paper's Hertz width).
+// (smooth rollers, the paper's Hertz width). At full coupling the printed p(0) and measured values (offset e, Johnson's
+// P_H/P2: error_estimate::coupling, 8(e)) gain the same term, read at the moved point.
 contact::estimate_term width_error(const scene& s, const contact_width& w, const std::function<void()>& checkpoint) {
     if (!s.physical || smooth(*s.physical) || s.physical->width == width_rule::hertz) return {};
     // The contact at the moved width, built once: a curve's rows share its normal problem (and a ladder's repeated
     // estimates of one rung their point).
     auto held = std::make_shared<std::unique_ptr<contact>>();
-    return [s, w, checkpoint, held](const tangential_solution& t, const normal_solution& p, error_estimate& e,
-                                    bool swept) {
+    return [s, w, checkpoint, held](const tangential_solution& t, const normal_solution& p,
+                                    const coupling_summary* alternation, error_estimate& e, bool swept) {
         const double x = w.a / w.a_hertz, step = width_step * x;
         if (!*held) {
             *held = std::make_unique<contact>(roughness_at(*s.physical, (x + step) * w.a_hertz), s.friction, s.solver,
@@ -113,6 +114,12 @@ contact::estimate_term width_error(const scene& s, const contact_width& w, const
             const pressure_peak at = peak_of(p), near = peak_of(moved.normal());
             e.peak->r += k * std::fabs(near.r - at.r);
             e.peak->p += k * std::fabs(near.p - at.p);
+            e.peak->centre += k * std::fabs(near.centre - at.centre);
+        }
+        // NaN (no estimate: gamma_0n, the peak's change at full coupling) stays NaN.
+        if (e.coupling && alternation && moved.coupling()) {
+            e.coupling->offset += k * std::fabs(moved.normal().offset - p.offset);
+            e.coupling->lambda_johnson += k * std::fabs(moved.coupling()->lambda_johnson - alternation->lambda_johnson);
         }
     };
 }

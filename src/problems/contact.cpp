@@ -110,7 +110,7 @@ tangential_solution contact::distribution(const tangential_solution& s) { return
 
 std::optional<error_estimate> contact::estimate(const tangential_solution& s) {
     std::optional<error_estimate> e = impl_->estimate(s);
-    if (e && impl_->term_) impl_->term_(s, normal(), *e, false);
+    if (e && impl_->term_) impl_->term_(s, normal(), coupling(), *e, false);
     return e;
 }
 
@@ -119,7 +119,7 @@ void contact::set_estimate_term(estimate_term term) { impl_->term_ = std::move(t
 contact::swept_point contact::at_stick_end(double c0) {
     swept_point p = impl_->at_stick_end(c0);
     if (p.estimate && impl_->term_) {
-        impl_->term_(p.solution, normal(), *p.estimate, true);
+        impl_->term_(p.solution, normal(), coupling(), *p.estimate, true);
         impl_->refuse_load_outside(p.solution, p.estimate->Q);  // Q's interval with the term, as without it
     }
     return p;

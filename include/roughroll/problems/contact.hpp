@@ -113,12 +113,13 @@ public:
     // where they do not converge) or when no three levels fit in [min_nodes, max_nodes] (never
     // for n >= 8).
     std::optional<error_estimate> estimate(const tangential_solution& s);
-    // A term estimate() and at_stick_end() add to every estimate they return, given the point, its pressure, the
-    // estimate and whether the point is swept (at_stick_end's: its c0 given, its Q estimated): a physical scene's width
-    // error, which the levels (all at this contact's width) cannot see (docs/formulation.md 2(j) "The width's error";
-    // io/scene_point.cpp). None by default.
-    using estimate_term =
-        std::function<void(const tangential_solution&, const normal_solution&, error_estimate&, bool swept)>;
+    // A term estimate() and at_stick_end() add to every estimate they return, given the point, its pressure, what full
+    // coupling's alternation measured there (coupling(): null off full coupling), the estimate and whether the point is
+    // swept (at_stick_end's: its c0 given, its Q estimated): a physical scene's width error, which the levels (all at
+    // this contact's width) cannot see (docs/formulation.md 2(j) "The width's error"; io/scene_point.cpp). None by
+    // default.
+    using estimate_term = std::function<void(const tangential_solution&, const normal_solution&,
+                                             const coupling_summary*, error_estimate&, bool swept)>;
     void set_estimate_term(estimate_term term);
 
     // Why no n up to `top` can answer the point at Q within the relative `tolerance` (the ladder's,
