@@ -4,7 +4,8 @@
 // e = x_c/a and Johnson's P_H/P2 each bound their distance from a finer n's; gamma_0n's and the peak change's are none
 // at full coupling (the alternation does not bound their share), printed null; off full coupling gamma_0n's estimate
 // is |gamma_0n|, the model's gamma being 0. On a rough physical scene the coupled width's own error adds its term to
-// offset e's, Johnson's P_H/P2's and p(0)'s estimates (docs/formulation.md 2(j) "The width's error").
+// offset e's, Johnson's P_H/P2's and p(0)'s estimates (docs/formulation.md 2(j) "The width's error"); on the edge layers'
+// closed form (8(t)) Johnson's P_H/P2 and the peak change have estimates, the offset none.
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -134,4 +135,30 @@ TEST(CouplingEstimates, RoughWidthErrorInTheMeasuredValues) {
         EXPECT_GT(v.term, 1e-3 * v.levels);  // the term is not rounding beside the levels' estimate
         EXPECT_GE(v.scene, v.levels + v.term * (1.0 - 1e-6));
     }
+}
+
+// Free rolling of the smooth pair at f = 1 answers on the edge layers' closed form (8(t), no levels): Johnson's P_H/P2
+// is Hertz's 1 exactly for smooth rollers, so its estimate is its distance from 1; the peak change (pi/2) p_max /
+// sqrt(lambda) - 1 has the larger distance of its values at the ends of p_max's and lambda's intervals (their printed
+// estimates, 8(t)'s bounds); the offset e and gamma_0n none (docs/formulation.md 8(e) "The measured values' estimates").
+// Fails on the code before session 29, where the route printed no coupling estimate at all.
+TEST(CouplingEstimates, ClosedFormRoute) {
+    scene s = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel.toml");
+    s.materials.coupling = coupling_level::full;
+    s.friction = 1.0;
+    const scene_point sp = solve_point(s, 0.0);
+    const nlohmann::json j = to_json(sp.report());
+    ASSERT_EQ(j.at("zone_path"), "no-slip");  // the closed form's route
+    ASSERT_TRUE(j.at("coupling").at("error_estimate").is_object());
+    const nlohmann::json& e = j.at("coupling").at("error_estimate");
+    EXPECT_TRUE(e.at("offset_e").is_null());
+    EXPECT_TRUE(j.at("error_estimate").at("gamma").is_null());
+    EXPECT_EQ(e.at("hertz_load_ratio_johnson").get<double>(),
+              std::fabs(j.at("coupling").at("hertz_load_ratio_johnson").get<double>() - 1.0));
+    const double p = j.at("pressure_peak").at("p"), lambda = j.at("hertz_load_ratio");
+    const double ep = j.at("error_estimate").at("pressure_peak_p"), el = j.at("error_estimate").at("hertz_load_ratio");
+    const double change = j.at("coupling").at("peak_pressure_change"), bound = e.at("peak_pressure_change");
+    EXPECT_GE(bound, std::fabs(M_PI_2 * (p + ep) / std::sqrt(lambda - el) - 1.0 - change));
+    EXPECT_GE(bound, std::fabs(M_PI_2 * (p - ep) / std::sqrt(lambda + el) - 1.0 - change));
+    EXPECT_LT(bound, 1e-5);  // 8(t)'s bounds at f = 1 are ~1e-6: the estimate is theirs, not a loose margin
 }

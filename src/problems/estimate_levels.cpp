@@ -25,6 +25,27 @@ double contact::impl::kernel_strength() const {
     return std::max(kernel::tangential(surfaces_).strength(), kernel::normal(surfaces_).strength());
 }
 
+namespace {
+// Full coupling's measured values on the edge layers' closed form (8(t), smooth rollers' free rolling; docs/formulation.md
+// 8(e) "The measured values' estimates"), given the point's estimate `e` of its P_H/P2 `lambda` and peak. Johnson's
+// P_H/P2 of smooth rollers is Hertz's 1 exactly (2(c): J = 0), so |lambda_J - 1| is its distance (as gamma_0n's off full
+// coupling). The model's peak change (pi/2) p_max / sqrt(lambda) - 1 (coupling_summary.hpp with p_max,J = 2/pi,
+// lambda_J = 1) rises with p_max and falls with lambda, so it lies between its values at the ends of their intervals (the
+// reported peak `peak` within e.peak->p, lambda within e.lambda): the larger distance of those from the printed change,
+// plus its rounding. The offset e and gamma_0n: none (8(t) bounds the pressure; e is an integral of the traction, (c)).
+coupling_values closed_form_coupling(const coupling_summary& c, double lambda, double peak, const error_estimate& e) {
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    double change = none;
+    if (e.peak && e.lambda < lambda) {
+        const double low = M_PI_2 * (peak - e.peak->p) / std::sqrt(lambda + e.lambda) - 1.0;
+        const double high = M_PI_2 * (peak + e.peak->p) / std::sqrt(lambda - e.lambda) - 1.0;
+        change = std::max(std::fabs(high - c.peak_pressure_change), std::fabs(c.peak_pressure_change - low)) +
+                 8.0 * DBL_EPSILON * (1.0 + std::fabs(c.peak_pressure_change));
+    }
+    return {none, none, std::fabs(c.lambda_johnson - 1.0), change};  // exact: Sterbenz, lambda_J near 1
+}
+}  // namespace
+
 std::optional<error_estimate> contact::impl::estimate(const tangential_solution& s) {
     // The edge layers neglected (8(n); at full coupling 8(t)): no levels, the layers' bound (the closed form has no n).
     if (s.layout.layers_neglected()) {
@@ -60,6 +81,8 @@ std::optional<error_estimate> contact::impl::estimate(const tangential_solution&
                                 32.0 * DBL_EPSILON * exact,
                             std::fabs(reported.centre - exact) + layers.peak_p_bound + rounding_floor(nodes(), exact) +
                                 32.0 * DBL_EPSILON * exact};
+        if (full && surfaces_.smooth())
+            if (const coupling_summary* c = model_->coupling()) e.coupling = closed_form_coupling(*c, lambda, reported.p, e);
         return e;
     }
     // The levels' differences measure how a solution of the discrete equations moves with n; where
