@@ -226,15 +226,17 @@ std::optional<tangential_solution> general_search(const stick_zone_operator& op,
     std::vector<zone_trial> trials = scan_starts(op, end_of, opening, starts, !method.every_bracket);
     if (bracketed(op, end_of, trials, magnitude, roots, met)) return std::move(roots).result();
     // No start carrying |Q| opens the pass for the clustered scan alone (its first start 4.8e-3 off the edge, the
-    // blended zones' 8(g)), as before e51a784: a scan up to r* = -1 has no first start to read.
-    const bool none_carries =
-        method.clustered && !starts.empty() && trials.empty() && !(op.empty_load(starts.front()) > magnitude);
+    // blended zones' 8(g)), as before e51a784: a scan up to r* = -1 has no first start to read. Whatever the reason
+    // no start carries |Q|: its empty zone carrying less (near gross sliding, below), or its zone to the edge [s, 1]
+    // still carrying more (three zones slipping one way at large f and small |Q/f|, whose leading slip zone is
+    // 0.54 t(kappa) thick, 8(n) "Beyond every n" item 7: 1.7e-4 at f = 0.4, inside the first start's 4.8e-3).
+    const bool none_carries = method.clustered && !starts.empty() && trials.empty();
     if (method.every_bracket && !roots.any() && (!trials.empty() || none_carries)) {
         // The stick zone of dissimilar rollers can start closer to the leading edge than the scan's first start,
         // 1 - cos(pi/32) = 4.8e-3 off it: near gross sliding it closes on the edge as 7(d)'s does, 1 + s ~
         // (1 - |Q|/f)^(2/3), and a leading slip zone can be thin (8(j) item 11). Where no bracket answered: starts
         // halving their distance to the edge, down to 1e-12, below `top`, the scan's first trial (the last trial of
-        // these brackets) or, where no start carries |Q| because its empty zone carries less, its first start; each
+        // these brackets) or, where no start carries |Q|, its first start; each
         // bracket solved as it is found, from the top down. With the leading slip against Q (8(g)) the empty zone at
         // s carries f (1 - 2 int_-1^s p), below |Q| from 1 + s ~ (1 - |Q|/f)^(2/3) on, so that near gross sliding no
         // start of the scan carries |Q| (from Q/f = 0.99960 on Hertz's pressure; docs/robustness.md); the answer's
