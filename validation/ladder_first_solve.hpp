@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The ladder of levels for free rolling of aluminium on steel with every rung's contact stopped at its first level's
-// solve (the contacts' checkpoint, called before every level's solve): the refusals the ladder decides before any solve
-// (docs/formulation.md 8(n) "Beyond every n" and "Rough rollers: beyond every n") are asserted by the levels solved, not
-// by time. Shared by validation/test_ladder_refusals.cpp and validation/test_rough_free_rolling_s24.cpp. Header-only.
+// The ladder of levels for a point (free rolling by default) of aluminium on steel with every rung's contact stopped
+// at its first level's solve (the contacts' checkpoint, called before every level's solve): the refusals the ladder
+// decides before any solve (docs/formulation.md 8(n) "Beyond every n", "Rough rollers: beyond every n" and item 7)
+// are asserted by the levels solved, not by time. Shared by validation/test_ladder_refusals.cpp,
+// test_rough_free_rolling_s24.cpp and test_loaded_leading_zone_s29.cpp. Header-only.
 #pragma once
 
 #include <memory>
@@ -30,9 +31,10 @@ struct ladder_run {
     bool solved = false;  // a level's solve was started
 };
 
-// Free rolling (Q = 0) at friction f on rollers with `layers`, at coupling `level`, tolerance `tol` (empty: the default).
+// The point at load Q (free rolling by default) at friction f on rollers with `layers`, at coupling `level`, tolerance
+// `tol` (empty: the default).
 inline ladder_run run(double f, const roughroll::roughness& layers, roughroll::coupling_level level,
-                      std::optional<double> tol = std::nullopt) {
+                      std::optional<double> tol = std::nullopt, double Q = 0.0) {
     using namespace roughroll;
     ladder_run r;
     solver_options options;
@@ -45,7 +47,7 @@ inline ladder_run run(double f, const roughroll::roughness& layers, roughroll::c
         return c;
     });
     try {
-        ladder.point(0.0);
+        ladder.point(Q);
         ADD_FAILURE() << "f = " << f << ": answered without a solve";
     } catch (const resolution_error& e) {
         r.refusal = e.what();

@@ -68,19 +68,27 @@ double unresolved_crossing(int top, double tolerance) {
     return std::min(root_x * root_x, layer_change_measured_to) / (static_cast<double>(top) * top);
 }
 
+// " (below about F at this tolerance)", F the friction `reach` below which the rule refuses no longer, rounded down to
+// two digits so that the advice never names an f the rule refuses; empty where it is not known.
+std::string reach_advice(std::optional<double> reach, const char* at) {
+    if (!(reach && *reach > 0.0)) return {};
+    const double unit = std::pow(10.0, std::floor(std::log10(*reach)) - 1.0);
+    return std::string(" (below about ") + significant(std::floor(*reach / unit) * unit, 2) + " at " + at + ")";
+}
+
 // The advice of the quick refusal of rough rollers' free rolling (docs/formulation.md 8(n), "Rough rollers: beyond
 // every n"): no route neglects their layers, so only a smaller f answers; `reach` the f below which the rule refuses
 // no longer (the five zones resolved enough at the top rung, by the measured law), empty where it is not known.
 std::string rough_layers_advice(std::optional<double> reach) {
-    std::string advice = "the edge layers of these rough rollers are resolved, and their free rolling may be answered "
-                         "by its five zones, only at a smaller friction f";
-    if (reach && *reach > 0.0) {
-        // Rounded down to two digits: the advice never names an f the rule refuses.
-        const double unit = std::pow(10.0, std::floor(std::log10(*reach)) - 1.0);
-        advice += " (below about " + significant(std::floor(*reach / unit) * unit, 2) + " at this tolerance)";
-    }
-    return advice + "; no route neglects the layers of rough rollers (smooth rollers have one, 8(n))";
+    return "the edge layers of these rough rollers are resolved, and their free rolling may be answered by its five "
+           "zones, only at a smaller friction f" +
+           reach_advice(reach, "this tolerance") +
+           "; no route neglects the layers of rough rollers (smooth rollers have one, 8(n))";
 }
+
+// The largest |Q/f| at which the law's tenth was compared with the leading slip zone's changes (8(n), "Beyond every
+// n", item 7): the rule is asked at 0 < |Q/f| <= this only.
+constexpr double loaded_law_measured_to = 0.5;
 
 // Johnson's zones (dissimilar_zones) on the uncoupled pressure of a level: Johnson's level itself
 // (uncoupled_model) and the start of full coupling's alternation (coupled_model).
@@ -150,19 +158,36 @@ protected:
         if (!(change > tolerance)) return std::nullopt;
         std::ostringstream msg;
         msg.precision(2);
-        msg << "no n up to " << top << " meets the tolerance " << shortest(tolerance)
-            << " (relative) for free rolling of these rollers at f = " << shortest(f_) << ": its edge layers, ";
+        const bool loaded = Q != 0.0;  // item 7: the leading slip zone of three zones (or five) at a load
+        msg << "no n up to " << top << " meets the tolerance " << shortest(tolerance) << " (relative) for "
+            << (loaded ? "Q/f = " + shortest(Q / f_) + " on" : std::string("free rolling of")) << " these rollers at f = "
+            << shortest(f_) << ": " << (loaded ? "its slip zone at the leading edge, " : "its edge layers, ");
         if (*crossing > 0.0)
             msg << "about " << *crossing << " of the half-width,";
         else
             msg << "below the smallest double,";
-        msg << " are too thin (at n = " << top << " the five zones' leading layer still changes by more than "
-            << change << " of itself from n = " << top / 2 << ", docs/formulation.md 8(n))";
+        msg << (loaded ? " is" : " are") << " too thin (at n = " << top << " the "
+            << (loaded ? "leading slip zone" : "five zones' leading layer") << " still changes by more than " << change
+            << " of itself from n = " << top / 2 << ", docs/formulation.md 8(n))";
         const std::string advice =
             kernel::layered(surfaces_) ? rough_layers_advice(rough_reach(unresolved_crossing(top, tolerance)))
-                             : edge_zones_advice(Q);
+            : loaded                   ? loaded_advice(*crossing, unresolved_crossing(top, tolerance), change)
+                                       : edge_zones_advice(Q);
         if (!advice.empty()) msg << "; " << advice;
         return msg.str();
+    }
+    // The advice of the rule's refusal at 0 < |Q/f| <= 1/2 (8(n) item 7): the leading slip zone estimated `zone` thick,
+    // `edge` the thickness from which the top rung resolves it by the law; `change` the law's tenth there. No route
+    // neglects that zone (8(n), "Not covered"), so a smaller f at the same Q/f (t(kappa) = 2 exp(-pi f kappa/|beta_D|),
+    // kappa fixed by Q/f: the zone reaches `edge` at f log(2/edge)/log(2/zone)), a tolerance above the law's tenth (where
+    // the ladder tries, and may answer), or free rolling (its layers neglected, 8(n)).
+    std::string loaded_advice(double zone, double edge, double change) const {
+        std::optional<double> reach;
+        if (zone > 0.0 && edge > 0.0 && edge < 2.0) reach = f_ * std::log(2.0 / edge) / std::log(2.0 / zone);
+        return "a smaller friction f resolves that zone" + reach_advice(reach, "this Q/f and tolerance") +
+               "; at a tolerance above " + tolerance_up(change) +
+               " (solver.tolerance, --tolerance) the ladder tries this point; free rolling (Q = 0) is answered with its "
+               "edge layers neglected, a load at this f by no route that neglects the leading zone";
     }
     // Rough rollers: the friction at which the crossing falls to `crossing` (the rule's edge), where known.
     virtual std::optional<double> rough_reach(double crossing) const {
@@ -203,6 +228,15 @@ protected:
     virtual std::optional<double> unresolved_layers(double Q, double tolerance) const {
         // Rough rollers: no layers-neglected route, so always resolved, at their own crossing (8(n), "Rough rollers").
         if (Q == 0.0 && kernel::layered(surfaces_)) return rough_crossing().crossing;
+        // A load on smooth rollers at Johnson's level: the leading slip zone, about 0.54 t(kappa) (8(j) item 11) thick,
+        // has no route that neglects it, and its changes obey the law on the scale t(kappa) (8(n) item 7, measured at
+        // 0 < |Q/f| <= 1/2).
+        if (Q != 0.0) {
+            if (materials_.beta_d == 0.0 || materials_.coupling == coupling_level::full || kernel::layered(surfaces_) ||
+                !(std::fabs(Q) <= loaded_law_measured_to * f_))
+                return std::nullopt;
+            return leading_zone_estimate(materials_.beta_d, f_, Q);
+        }
         const std::optional<double> bound = layers_bound(Q);
         if (!bound || *bound <= tolerance) return std::nullopt;
         return no_slip_layers(materials_.beta_d, f_).crossing;
