@@ -6,6 +6,7 @@
 // test_rough_free_rolling_s24.cpp and test_loaded_leading_zone_s29.cpp. Header-only.
 #pragma once
 
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -55,6 +56,14 @@ inline ladder_run run(double f, const roughroll::roughness& layers, roughroll::c
         r.solved = true;
     }
     return r;
+}
+
+// The friction a refusal names, "below about X" (the rule's edge, 8(n)), where it names one.
+inline std::optional<double> named_friction(const std::string& refusal) {
+    const std::string key = "below about ";
+    const std::size_t at = refusal.find(key);
+    if (at == std::string::npos) return std::nullopt;
+    return std::strtod(refusal.c_str() + at + key.size(), nullptr);
 }
 
 }  // namespace ladder_first_solve

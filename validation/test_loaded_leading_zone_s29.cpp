@@ -25,6 +25,7 @@ using namespace roughroll;
 
 namespace {
 using ladder_first_solve::ladder_run;
+using ladder_first_solve::named_friction;
 
 // The ladder for the smooth pair at friction f and load Q/f = q, Johnson's level, tolerance `tol` (empty: the default),
 // every rung's contact stopping at its first level's solve.
@@ -37,14 +38,6 @@ tangential_solution three_zones(double f, double q, int n) {
     contact c(roughness{}, f, solver_options{n, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     dissimilar_zones d(tangential_of(c), kernel{}, beta_al_st);
     return d.solve(q * f);
-}
-
-// The friction the refusal names, "below about X".
-std::optional<double> named_friction(const std::string& refusal) {
-    const std::string key = "below about ";
-    const std::size_t at = refusal.find(key);
-    if (at == std::string::npos) return std::nullopt;
-    return std::strtod(refusal.c_str() + at + key.size(), nullptr);
 }
 }  // namespace
 

@@ -31,18 +31,11 @@ using namespace roughroll;
 
 namespace {
 using ladder_first_solve::ladder_run;
+using ladder_first_solve::named_friction;
 
 // The ladder for the rough pair's free rolling at friction f and the default tolerance, every rung's contact stopping
 // at its first level's solve.
 ladder_run run(double f, coupling_level level) { return ladder_first_solve::run(f, rough_pair_at_a(), level); }
-
-// The friction the refusal names, "below about X".
-std::optional<double> named_friction(const std::string& refusal) {
-    const std::string key = "below about ";
-    const std::size_t at = refusal.find(key);
-    if (at == std::string::npos) return std::nullopt;
-    return std::strtod(refusal.c_str() + at + key.size(), nullptr);
-}
 }  // namespace
 
 // Smooth rollers: the no-slip solution is 8(n)'s closed form and t_c = 2/(1 + exp(pi f/|beta_D|)); the crossing found on
