@@ -12,6 +12,7 @@
 #include "roughroll/model/physical_scene.hpp"
 #include "roughroll/io/scene.hpp"
 #include "roughroll/io/scene_point.hpp"
+#include "roughroll/problems/level_ladder.hpp"
 #include "roughroll/problems/load_ratio.hpp"
 #include "../tests/tolerance.hpp"
 
@@ -243,4 +244,39 @@ TEST(GivenLoad, SweptRowsCarryTheWidthsError) {
             EXPECT_GE(row.estimate->xi, std::fabs(row.solution.xi - xi_at_1000[i]));
         }
     }
+}
+
+// The coupled width on a ladder (docs/formulation.md 2(j) "The coupled width on a ladder"; session 27 audit A1): the
+// rough pair at full coupling, braked at Q/f = -0.5, climbs to n = 512, each rung settling its own width. A rung above the
+// first starts its width search from the rung below's coupling (the coupled P_H/P2 less Johnson's), within the coupling's
+// level change of the root: fewer width iterations than the same search at that n alone (a given n, no rung below; before
+// session 29 every rung searched so, the same count: 9 and 9). Both polish to the same step rule (1e-12 in the width), so
+// the two answers are within the sum of their estimates (the width within the bounds the SI values take from P_H/P2's
+// estimates, E/(2x) of a_H), and each width's coupled point carries its P_H/P2 = x^2 as before (RollersExchangedKeepTheWidth).
+TEST(GivenLoad, CoupledWidthOnALadderStartsFromTheRungBelow) {
+    scene s = read_scene(std::string(ROUGHROLL_DATA) + "/aluminium-on-steel-rough.toml");
+    s.materials.coupling = coupling_level::full;
+    const load_given load(load_kind::Q_over_f, -0.5);
+    const scene_point climbed = solve_point(s, load);
+    const int n = climbed.settled.solver.nodes();
+    ASSERT_GT(n, ladder_rungs(s.solver.how).front());  // a rung above the first answers
+    scene given = s;
+    override_solver(given, n, std::nullopt);
+    const scene_point alone = solve_point(given, load);
+    ASSERT_TRUE(climbed.width && alone.width && climbed.estimate && alone.estimate);
+    EXPECT_LT(climbed.width->iterations, alone.width->iterations);
+    // The step rule, not a residual: lambda_n(x) = x^2 to the polish's 1e-12 in x (|F'| ~ 2.4), at the top rung as alone.
+    for (const scene_point* p : {&climbed, &alone}) {
+        const double x = p->width->a / p->width->a_hertz;
+        EXPECT_NEAR(p->solved.normal().lambda, x * x, 1e-11) << p->settled.solver.nodes();
+    }
+    const error_estimate &e = *climbed.estimate, &f = *alone.estimate;
+    const auto a_bound = [](const scene_point& p) {
+        return p.width->a_hertz * p.estimate->lambda / (2.0 * p.width->a / p.width->a_hertz);
+    };
+    EXPECT_LE(std::fabs(climbed.width->a - alone.width->a), a_bound(climbed) + a_bound(alone));
+    EXPECT_LE(std::fabs(climbed.solved.normal().lambda - alone.solved.normal().lambda), e.lambda + f.lambda);
+    EXPECT_LE(std::fabs(climbed.solution.c0() - alone.solution.c0()), e.c0 + f.c0);
+    EXPECT_LE(std::fabs(climbed.solution.start() - alone.solution.start()), e.start + f.start);
+    EXPECT_LE(std::fabs(climbed.solution.xi - alone.solution.xi), e.xi + f.xi);
 }

@@ -40,6 +40,51 @@ bool width_follows_tangential_load(const scene& s) {
            s.materials.coupling == coupling_level::full;
 }
 
+namespace {
+bool same_roughness(const roughness& x, const roughness& y) {
+    const auto term = [](const roughness_term& u, const roughness_term& v) { return u.T == v.T && u.A == v.A; };
+    const auto cylinder = [&term](const cylinder_roughness& u, const cylinder_roughness& v) {
+        return term(u.tangential, v.tangential) && term(u.normal, v.normal);
+    };
+    return cylinder(x.cylinder1, y.cylinder1) && cylinder(x.cylinder2, y.cylinder2);
+}
+
+// The width of a physical scene at full coupling, which follows the load Q (docs/formulation.md 8(e); 2(j) "The coupled
+// width on a ladder"): the root of lambda_n(x) = x^2 with lambda_n the coupled point's P_H/P2 at Q, polished by secant
+// steps from the root of the cheap level, Johnson's P_H/P2 (the pressure alone, normal problems only) plus `shift`, to
+// find_width's step rule (1e-12 in x, as from Johnson's root: the same root, the start alone is better).
+// The coupled points are solved through `levels` (a ladder's store, or one of their own), so that the contact built at
+// the width found takes the last one's levels and point (the root the polish returns is the last width it solved at):
+// none solved again. `shift`: the coupled P_H/P2 less Johnson's at the rung below's width (0: none known), which moves
+// the cheap root from Johnson's (1e-3 away at beta_D f ~ 1e-2) to within the coupling's own level change of the coupled
+// root (4e-9 relative at n = 256 on the rough pair), so that the polish needs fewer coupled points.
+// `shift_found`: the same difference at the width found (nothing where it is not a width the search solved at).
+contact_width coupled_width(scene& s, normal_cache* cache, double Q, const std::function<void()>& checkpoint,
+                            const std::shared_ptr<level_store>& levels, double shift,
+                            std::optional<double>* shift_found = nullptr) {
+    const auto pressure_alone = [&s, cache](const roughness& r) { return load_ratio(r, s.solver, cache); };
+    std::optional<std::pair<roughness, double>> last;  // the last coupled point's roughness and P_H/P2
+    const contact_width w = find_width(
+        *s.physical,
+        [&](const roughness& r) {
+            last.reset();
+            contact c = contact_internals::with_levels(r, s.friction, s.solver, s.materials, cache, levels);
+            c.set_checkpoint(checkpoint);
+            c.point(Q);
+            last = std::make_pair(r, c.normal().lambda);
+            return last->second;
+        },
+        [&pressure_alone, shift](const roughness& r) { return pressure_alone(r) + shift; }, true);
+    s.surfaces = roughness_at(*s.physical, w.a);
+    if (shift_found) {
+        shift_found->reset();
+        if (last && same_roughness(last->first, s.surfaces))
+            *shift_found = last->second - pressure_alone(s.surfaces);
+    }
+    return w;
+}
+}  // namespace
+
 std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::optional<double> Q,
                                           const std::function<void()>& checkpoint) {
     if (!s.physical) return std::nullopt;
@@ -54,6 +99,7 @@ std::optional<contact_width> settle_width(scene& s, normal_cache* cache, std::op
         if (!Q) throw input_error("the width of a physical scene at full coupling follows the tangential load: give Q");
         // Full coupling: lambda of the coupled point at Q (docs/formulation.md 8(e)); Johnson's
         // level (the pressure alone) is the cheap level whose root starts the secant polish.
+        if (!smooth(*s.physical)) return coupled_width(s, shared, *Q, checkpoint, std::make_shared<level_store>(), 0.0);
         const double load = *Q;
         w = find_width(
             *s.physical,
@@ -180,8 +226,10 @@ void check_hertz_width(const scene& s) {
 }
 
 // The contact of a scene whose width is settled first, at the load Q (the scene is modified in place).
+// `shift`, `shift_found`: a rough pair's at full coupling (coupled_width), from and for the rung below and above.
 contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
-                        const std::function<void()>& checkpoint, const std::shared_ptr<level_store>& levels = nullptr) {
+                        const std::function<void()>& checkpoint, std::shared_ptr<level_store> levels = nullptr,
+                        double shift = 0.0, std::optional<double>* shift_found = nullptr) {
     normal_cache cache;
     if (width_follows_tangential_load(s) && smooth(*s.physical)) {
         // Full coupling of a smooth pair: the dimensionless contact does not depend on the width
@@ -199,7 +247,13 @@ contact settled_contact(scene& s, std::optional<contact_width>& width, double Q,
         s.surfaces = roughness_at(*s.physical, width->a);
         return c;
     }
-    width = settle_width(s, &cache, Q, checkpoint);
+    if (width_follows_tangential_load(s)) {
+        // A rough pair: the contact at the width found takes the search's last coupled point, through the same store.
+        if (!levels) levels = std::make_shared<level_store>();
+        width = coupled_width(s, &cache, Q, checkpoint, levels, shift, shift_found);
+    } else {
+        width = settle_width(s, &cache, Q, checkpoint);
+    }
     contact c = contact_internals::with_levels(s.surfaces, s.friction, s.solver, s.materials, &cache, levels);
     c.set_checkpoint(checkpoint);
     watch_width(c, s, width, checkpoint);
@@ -222,6 +276,8 @@ struct scene_rungs {
     std::function<void()> checkpoint;
     std::map<int, std::pair<scene, std::optional<contact_width>>> settled;
     bool after_point = false;
+    // A rough pair at full coupling: the coupled P_H/P2 less Johnson's at the last rung's width (coupled_width).
+    std::optional<double> coupling_shift{};
 
     std::unique_ptr<contact> operator()(int n, const std::shared_ptr<level_store>& levels) {
         scene at = given;
@@ -234,7 +290,11 @@ struct scene_rungs {
                 contact_internals::with_levels(at.surfaces, at.friction, at.solver, at.materials, nullptr, levels));
             c->set_checkpoint(checkpoint);
         } else if (Q) {
-            c = std::make_unique<contact>(settled_contact(at, width, *Q, checkpoint, levels));
+            // A rough pair at full coupling: each rung's width search starts from the rung below's coupling shift.
+            std::optional<double> shift_found;
+            c = std::make_unique<contact>(
+                settled_contact(at, width, *Q, checkpoint, levels, coupling_shift.value_or(0.0), &shift_found));
+            if (shift_found) coupling_shift = shift_found;
         } else {
             width = settle_width(at);
             c = std::make_unique<contact>(
