@@ -77,6 +77,14 @@ run example 401 traction-example.toml
 run example-Qf0.9 201 traction-example.toml --Q 0.27
 run unequal 301 unequal-kernels.toml
 run fig2b-A0 101 fig2b-A0.toml
+# The '# zones' line lists the rows' zones, level n's: with Richardson's c0 in the header (method extrapolated) it says
+# so, and only there (docs/cli.md, `traction`).
+run example-extrapolated 101 traction-example.toml --method extrapolated
+zones_note="^# zones (r = x1/a; the rows' own, at n = [0-9]*, where the header's c0 is extrapolated): stick "
+grep -q "$zones_note" "$dir/traction-example-extrapolated.csv" ||
+    fail "example-extrapolated: the '# zones' line does not say the rows' ends are level n's"
+grep -q "^# zones (r = x1/a): stick " "$dir/traction-example.csv" ||
+    fail "example: the '# zones' line is not the plain one"
 
 # Each check must be able to fail: corrupt the valid CSV one way at a time.
 good="$dir/traction-example.csv"
