@@ -185,7 +185,7 @@ failed_checks_error failed_checks(const tangential_solution& t, double Q, double
     // reason and settle nothing over the rungs (8(q) "A failure the levels settle" reads converged points' margins
     // only); the refusal says so, and a rung above is tried (8(q), "An alternation that converges at no level").
     if (!lagging) {
-        msg << "; docs/formulation.md 8(e)); another n (--n, or none: the ladder's) may converge";
+        msg << "; docs/formulation.md 8(e))";
         throw numerical_error(msg.str());
     }
     msg << ", its iterates failing the checks (3.3)-(3.4) on the way, margins: " << margins_text(lagging->checks())
@@ -331,7 +331,6 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     jacobian_ = newton_jacobian{};
     if (start) jacobian_.J = coarser->jacobian_.J;
     double previous_change = 0.0;
-    double previous_end_change = 0.0, previous_end_tolerance = coupling_end_tolerance;
     std::optional<failed_checks_error> lagging;  // a step's failed checks while its kinks lag (below)
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
     int switched_at = 0;                      // the step that switched it on (0: none)
@@ -422,12 +421,6 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // The values' rounding floor over this step (coupling_value_floor): changes within it need not fall (below).
         const double value_floor = coupling_value_floor(next->normal.lambda, next->normal.offset, next->s.xi, f_,
                                                         next->normal.rcond, next->s.rcond);
-        // The ends' own floor: each iterate's ends are its Newton's root within the resolution it reports (at its
-        // rounding where that lies above zone_end_resolution: 8(e) "The root before the last step"), so two iterates'
-        // ends differ by up to the sum as noise; below it a change need not fall. The plain rule alone takes it: the
-        // contraction's ratios are not read from changes within that noise (8(e), "The ends' rounding floor").
-        const double end_tolerance =
-            std::max(coupling_end_tolerance, next->s.ends_resolution + source.ends_resolution);
         summary_.changes.push_back(value_change);
         summary_.end_changes.push_back(end_change);
         summary_.newton_residuals = jacobian_.residuals;
@@ -460,7 +453,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // A reported point stopped by the bound whose checks fail goes on: with p_q^0 its kinks lag its ends by the
         // last change (up to (1 - kappa)/kappa tolerances), and the plain rule's smaller lag is what the checks were
         // measured at (8(o)); so the bound never refuses where the plain rule would answer.
-        const bool plain = value_change <= coupling_value_tolerance && end_change <= end_tolerance;
+        const bool plain = value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance;
         const bool settled =
             plain || (stop_ == coupling_stop::contraction &&
                       coupling_settled(summary_.changes, own_from, coupling_value_tolerance) &&
@@ -476,15 +469,6 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             summary_.peak_pressure_change =
                 peak_of(current_->normal).p / peak_of(johnson).p * std::sqrt(johnson.lambda / current_->normal.lambda) -
                 1.0;
-            // Stopped within the ends' noise, above coupling_end_tolerance: the level's ends lie within their Newton
-            // resolution plus kappa/(1 - kappa) times the last change of the fixed point (kappa the largest ratio of
-            // the values' changes; the change itself below 1/2, 9 times it at most), which the estimates read as the
-            // ends' resolution (newton_floor_excess; 8(e), "The ends' rounding floor").
-            // (A finer level started from this iterate reads the larger resolution in its first tolerance: wider noise.)
-            if (plain && end_change > coupling_end_tolerance) {
-                const double kappa = std::min(summary_.contraction, 0.9);
-                current_->s.ends_resolution += end_tolerance * std::max(1.0, kappa / (1.0 - kappa));
-            }
             return current_->s;
         }
         // Growing changes after the first steps: the alternation does not contract here (changes
@@ -501,15 +485,12 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
             not_converged(msg, lagging);
         }
         previous_change = value_change;
-        previous_end_change = end_change;
-        previous_end_tolerance = end_tolerance;
     }
     did_not_converge_ = true;
     std::ostringstream msg;
     msg.precision(3);
     msg << coupling_at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations
-        << " steps (last changes " << previous_change << " in lambda, e, xi against " << coupling_value_tolerance
-        << ", " << previous_end_change << " in the zone ends against " << previous_end_tolerance;
+        << " steps (last change " << previous_change;
     not_converged(msg, lagging);
 }
 

@@ -42,8 +42,7 @@ namespace roughroll {
 // The alternation's stopping rule (iterate-then-test). lambda, e and xi: absolute changes below
 // 1e-12 (their size is O(1) or less; the rounding of a normal solve is a few 1e-15/rcond); the zone
 // ends: below 10 times Newton's resolution zone_end_resolution (each tangential solve fixes them
-// only to that, so smaller changes are that solve's jitter, not the alternation's); in the plain rule at
-// least the two iterates' own Newton resolutions summed (docs/formulation.md 8(e), "The ends' rounding floor").
+// only to that, so smaller changes are that solve's jitter, not the alternation's).
 constexpr double coupling_value_tolerance = 1e-12;
 constexpr double coupling_end_tolerance = 10.0 * zone_end_resolution;
 constexpr int coupling_max_iterations = 40;

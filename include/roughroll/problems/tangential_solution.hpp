@@ -41,9 +41,7 @@ struct tangential_solution {
     int iterations;             // root-search iterations (secant or Brent; 0 without a search)
     double rcond;               // of the last tangential system (1 without a solve)
     double load_slope = 0.0;    // dQ/dc0 at c0 from the root search's last secant (0: unknown)
-    // The zone ends' resolution: Newton's (newton_root::resolution; 0 without Newton), at full coupling plus the
-    // alternation's stop where it stopped within the ends' rounding noise (docs/formulation.md 8(e)).
-    double ends_resolution = 0.0;
+    double ends_resolution = 0.0;  // the zone ends' Newton resolution (newton_root::resolution); 0 without Newton
     traction_checks checks;
     // Dundurs' forcing of the |Q| problem (docs/formulation.md 8(e)): sigma beta_D, with sigma the
     // slip direction of both slip zones; the stick equation's right side and the slip velocity
