@@ -41,10 +41,8 @@ constexpr double breakpoint_apart = 1e-9;
 // Why no three zones answer a load (an unadvised_refusal: no zone of that structure at this n, which a
 // point answers by five zones or refuses; never a numerical fault, docs/robustness.md).
 std::string no_three_zones(double Q, double f, const std::string& why) {
-    std::ostringstream msg;
-    msg.precision(6);
-    msg << "dissimilar rollers at Q/f = " << Q / f << ": " << why << " (docs/formulation.md 8(g), 8(j))";
-    return msg.str();
+    // Q/f in full (shortest): one ulp below sliding must not read as Q/f = 1, which gross sliding answers (session 29 audit).
+    return "dissimilar rollers at Q/f = " + shortest(Q / f) + ": " + why + " (docs/formulation.md 8(g), 8(j))";
 }
 }  // namespace
 
