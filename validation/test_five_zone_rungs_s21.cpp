@@ -125,7 +125,9 @@ void ends_within_their_estimates_of(const std::vector<estimate_level>& below, co
                         std::fabs(level_n[i] - limit[i]));
             EXPECT_LE(distance + limit_error[i], r.error) << n << " " << names[i];
             EXPECT_LE(r.error, i % 2 == 0 ? e->c0 : e->start) << "never above the member it is folded into";
-            if (n == 512) EXPECT_LT(r.error, 1e-8) << names[i];
+            if (n == 512) {
+                EXPECT_LT(r.error, 1e-8) << names[i];
+            }
             if (!r.extrapolated) {
                 EXPECT_EQ(r.value, level_n[i]) << n << " " << names[i];
                 continue;

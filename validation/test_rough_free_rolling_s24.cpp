@@ -130,7 +130,9 @@ TEST(RoughFreeRollingS24, BeyondEveryNRefusedBeforeAnySolve) {
             EXPECT_NE(r.refusal.find("smaller friction f"), std::string::npos) << r.refusal;
             const std::optional<double> named = named_friction(r.refusal);
             ASSERT_TRUE(named) << r.refusal;
-            if (reach) EXPECT_EQ(*named, *reach) << name << " f = " << f;  // the rule's edge, whatever f asked
+            if (reach) {
+                EXPECT_EQ(*named, *reach) << name << " f = " << f;  // the rule's edge, whatever f asked
+            }
             reach = named;
         }
         std::printf("%s: refused above f = %.2f\n", name, *reach);
