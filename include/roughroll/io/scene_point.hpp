@@ -38,8 +38,9 @@ bool width_follows_tangential_load(const scene& s);
 // Nothing for a dimensionless scene.
 // `cache`: the search's product-integration workspaces, for a contact built at the width found.
 // `Q`: the tangential load P1/P2, required when width_follows_tangential_load (lambda of the fully
-// coupled point at Q, coupled_load_ratio, searched from the width of Johnson's level, which the
-// pressure alone fixes); ignored otherwise.
+// coupled point at Q, searched from the width of Johnson's level, which the pressure alone fixes:
+// smooth rollers by the coupled load ratio alone, rough ones through a store of levels whose last
+// point the contact at the width found takes; docs/formulation.md 2(j)); ignored otherwise.
 // `checkpoint`: contact::set_checkpoint's hook for the coupled points of the search.
 std::optional<contact_width> settle_width(scene& s, normal_cache* cache = nullptr,
                                           std::optional<double> Q = std::nullopt,
