@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gsl/gsl_errno.h>
@@ -97,6 +98,51 @@ TEST(FullCouplingEveryF, CompleteSlipSideAnsweredWithTheStepCarried) {
         EXPECT_TRUE(j.out["checks_hold"].get<bool>()) << j.text;
     }
     std::remove(full.c_str());
+}
+
+// docs/formulation.md 8(e), "The ends' rounding floor" (session 29 audit M1, issue 24): free rolling at f = 1e-4 with
+// --n 1000. Each iterate's zone ends are its Newton root only within its rounding there (3.97e-9), so the alternation's
+// changes of the ends ran at 1.1e-10 .. 7.3e-10 for all 40 steps, never below the fixed 1e-10, and the point was
+// refused ("does not converge in 40 steps", 85-92 s CPU) with a line that named nothing to change. At the step limit,
+// and only there, the ends now stop at their rounding floor and carry it in their estimates: the point answers, n = 512's
+// answer (stopped within the steps, as before) within both points' estimates. Large: 40 alternation steps at n = 1000.
+TEST(FullCouplingEveryF, LargestNStopsAtTheEndsRoundingFloorAtTheStepLimit) {
+    const std::string full = scene_with("full");
+    ASSERT_FALSE(full.empty());
+    const answered a = point_of(full, 1e-4, "--n 1000"), r = point_of(full, 1e-4, "--n 512");
+    std::remove(full.c_str());
+    ASSERT_EQ(a.status, 0) << a.text;
+    ASSERT_EQ(r.status, 0) << r.text;
+    EXPECT_EQ(a.out["coupling"]["iterations"].get<int>(), roughroll::coupling_max_iterations) << a.text;
+    EXPECT_LT(r.out["coupling"]["iterations"].get<int>(), roughroll::coupling_max_iterations) << r.text;
+    for (const answered* p : {&a, &r}) {
+        expect_full(p->out);
+        EXPECT_TRUE(p->out["checks_hold"].get<bool>()) << p->text;
+    }
+    for (const char* q : {"c0", "stick_start", "xi", "hertz_load_ratio"}) {
+        const double distance = std::fabs(a.out[q].get<double>() - r.out[q].get<double>());
+        std::printf("%s: n = 1000 - 512 %.3g, estimates %.3g, %.3g\n", q, distance,
+                    a.out["error_estimate"][q].get<double>(), r.out["error_estimate"][q].get<double>());
+        EXPECT_LE(distance, a.out["error_estimate"][q].get<double>()) << q;
+        EXPECT_LE(distance, r.out["error_estimate"][q].get<double>()) << q;
+    }
+}
+
+// A refusal at the alternation's step limit names what the user can change (session 29 audit M1): one ulp inside
+// gross sliding at n = 8 the ends of the thin stick zone cycle by 6e-7 (the entry condition's rounding near gross
+// sliding, 8(m): no Newton floor), so the point is refused after 40 steps; the line named only the values' last change.
+TEST(FullCouplingAlternation, RefusalAtTheStepLimitNamesWhatToChange) {
+    const std::string full = scene_with("full");
+    ASSERT_FALSE(full.empty());
+    const command_output o = run_command(std::string(ROUGHROLL_CLI) + " point " + full +
+                                         " --Q-over-f -0.9999999999999999 --n 8 2>&1");
+    std::remove(full.c_str());
+    EXPECT_EQ(WEXITSTATUS(o.status), 2) << o.text;
+    EXPECT_NE(o.text.find("does not converge in 40 steps"), std::string::npos) << o.text;
+    EXPECT_NE(o.text.find("in the zone ends"), std::string::npos) << o.text;
+    EXPECT_NE(o.text.find("another n (--n"), std::string::npos) << o.text;
+    EXPECT_NE(o.text.find("coupling = \"johnson\""), std::string::npos) << o.text;
+    EXPECT_EQ(std::count(o.text.begin(), o.text.end(), '\n'), 1) << o.text;
 }
 
 // The drift itself, and the answer against a finer n (8(p), "The step carried across thin stick zones"): free rolling at

@@ -54,10 +54,13 @@ double coupled_layers_crossing(double beta_d, double f) {
 }
 
 double coupling_fixed_point_distance(const coupling_summary& summary, double band, double step_rounding) {
-    const std::vector<double>& d = summary.changes;
-    if (d.empty()) return std::numeric_limits<double>::infinity();
     // From a coarser level's start the first change is the levels' difference, no step of this map (coupling_settled).
-    const std::size_t own_from = summary.start_level > 0 ? 1 : 0;
+    return coupling_fixed_point_distance(summary.changes, summary.start_level > 0 ? 1 : 0, band, step_rounding);
+}
+
+double coupling_fixed_point_distance(const std::vector<double>& d, std::size_t own_from, double band,
+                                     double step_rounding) {
+    if (d.empty()) return std::numeric_limits<double>::infinity();
     double kappa = 0.5;
     bool read = false;
     for (std::size_t j = own_from + 1; j < d.size(); ++j)
@@ -185,7 +188,8 @@ failed_checks_error failed_checks(const tangential_solution& t, double Q, double
     // reason and settle nothing over the rungs (8(q) "A failure the levels settle" reads converged points' margins
     // only); the refusal says so, and a rung above is tried (8(q), "An alternation that converges at no level").
     if (!lagging) {
-        msg << "; docs/formulation.md 8(e))";
+        msg << "; docs/formulation.md 8(e)); another n (--n, or none: the ladder's) may converge, and "
+            << alternation_failure_advice();
         throw numerical_error(msg.str());
     }
     msg << ", its iterates failing the checks (3.3)-(3.4) on the way, margins: " << margins_text(lagging->checks())
@@ -304,6 +308,19 @@ std::shared_ptr<pressure_kinks> weighted_kinks_of(const step_source& from, int n
 }
 }  // namespace
 
+namespace {
+// 8(e), "The ends' rounding floor": the steps whose ends' changes must all lie within their floor at the step limit, so
+// that the stop reads noise that persists, not a slow contraction passing through the floor.
+constexpr std::size_t ends_floor_run = 5;
+
+bool ends_within_floor(const std::vector<double>& changes, const std::vector<double>& floors, std::size_t own_from) {
+    if (changes.size() < own_from + ends_floor_run) return false;
+    for (std::size_t j = changes.size() - ends_floor_run; j < changes.size(); ++j)
+        if (!(changes[j] <= floors[j])) return false;
+    return true;
+}
+}  // namespace
+
 // No fallback to another path where the alternation on the weight fails (8(x), "The fallback"): a level on another path
 // than its rung's other levels would make their estimate compare two discretisations.
 const tangential_solution& full_coupling::solve(const normal_solution& johnson, dissimilar_zones& johnson_zones,
@@ -331,6 +348,8 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     jacobian_ = newton_jacobian{};
     if (start) jacobian_.J = coarser->jacobian_.J;
     double previous_change = 0.0;
+    // Per step, the ends' rounding floor: the two iterates' Newton resolutions summed (8(e), "The ends' rounding floor").
+    std::vector<double> end_floors;
     std::optional<failed_checks_error> lagging;  // a step's failed checks while its kinks lag (below)
     bool jacobi_on = false;                   // 8(v): once on, for the rest of the alternation
     int switched_at = 0;                      // the step that switched it on (0: none)
@@ -421,6 +440,10 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // The values' rounding floor over this step (coupling_value_floor): changes within it need not fall (below).
         const double value_floor = coupling_value_floor(next->normal.lambda, next->normal.offset, next->s.xi, f_,
                                                         next->normal.rcond, next->s.rcond);
+        // The ends' rounding floor over this step: each iterate's ends are its Newton root within the resolution it
+        // reports (its rounding where that lies above zone_end_resolution: 8(e), "The root before the last step"),
+        // so two iterates' ends differ by up to the sum as noise. Read only at the step limit (below).
+        end_floors.push_back(next->s.ends_resolution + source.ends_resolution);
         summary_.changes.push_back(value_change);
         summary_.end_changes.push_back(end_change);
         summary_.newton_residuals = jacobian_.residuals;
@@ -453,23 +476,46 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // A reported point stopped by the bound whose checks fail goes on: with p_q^0 its kinks lag its ends by the
         // last change (up to (1 - kappa)/kappa tolerances), and the plain rule's smaller lag is what the checks were
         // measured at (8(o)); so the bound never refuses where the plain rule would answer.
-        const bool plain = value_change <= coupling_value_tolerance && end_change <= coupling_end_tolerance;
+        const bool values_plain = value_change <= coupling_value_tolerance;
+        const bool plain = values_plain && end_change <= coupling_end_tolerance;
+        const bool contraction_stop = stop_ == coupling_stop::contraction && !(checked && !current_->s.checks.hold());
+        const bool values_settled =
+            values_plain || (contraction_stop && coupling_settled(summary_.changes, own_from, coupling_value_tolerance));
         const bool settled =
-            plain || (stop_ == coupling_stop::contraction &&
-                      coupling_settled(summary_.changes, own_from, coupling_value_tolerance) &&
-                      coupling_settled(summary_.end_changes, own_from, coupling_end_tolerance) &&
-                      !(checked && !current_->s.checks.hold()));
+            plain || (values_settled && contraction_stop &&
+                      coupling_settled(summary_.end_changes, own_from, coupling_end_tolerance));
         // From a coarser level, the first change is the two levels' difference, not the alternation's: at
         // least two steps, so that the point's G never refers to the coarser level's iterate.
         // Nor does a braked zone still on the square-root weight stop: its fixed point is not the Jacobi weight's, and
         // the next step switches (its ends moved by less than settled_for_jacobi).
-        if (settled && !(start && k == 1) && !(braked && !jacobi_on)) {
+        const bool may_stop = !(start && k == 1) && !(braked && !jacobi_on);
+        const auto stop_here = [&]() -> const tangential_solution& {
             if (checked && !current_->s.checks.hold()) throw failed_checks(current_->s, Q, f_);
             summary_.offset = offset;
             summary_.peak_pressure_change =
                 peak_of(current_->normal).p / peak_of(johnson).p * std::sqrt(johnson.lambda / current_->normal.lambda) -
                 1.0;
             return current_->s;
+        };
+        if (settled && may_stop) return stop_here();
+        // 8(e), "The ends' rounding floor": at the step limit, where the alternation would otherwise refuse, the values
+        // settled and the ends' last changes all within their rounding floor (the iterates' Newton noise, which need
+        // not fall below 1e-10: free rolling of the pair at f = 1e-4, n = 1000, changes 1.1e-10 .. 7.3e-10 over 40
+        // steps against a floor of 7.9e-9) stop at the floor. Only there: every point that stops within the steps
+        // stops where and as it did. The level's ends then lie within (kappa d + rho)/(1 - kappa) of the fixed point
+        // (8(e), "The stop from the contraction", with one step's noise rho = the floor; kappa 1/2 where the changes
+        // within the floor give no ratio: coupling_fixed_point_distance), which replaces their Newton resolution
+        // where larger: the estimates read it (newton_floor_excess, 8(q) "The estimates' floor of the zone ends").
+        // Ratios of 1 or more read above the floor give no bound: refused, as before.
+        if (k == coupling_max_iterations && may_stop && values_settled && !(checked && !current_->s.checks.hold()) &&
+            ends_within_floor(summary_.end_changes, end_floors, own_from)) {
+            const double band = *std::max_element(end_floors.end() - ends_floor_run, end_floors.end());
+            const double distance =
+                coupling_fixed_point_distance(summary_.end_changes, own_from, band, current_->s.ends_resolution);
+            if (std::isfinite(distance)) {
+                current_->s.ends_resolution = std::max(current_->s.ends_resolution, distance);
+                return stop_here();
+            }
         }
         // Growing changes after the first steps: the alternation does not contract here (changes
         // below the tolerance or the rounding floor are rounding, which need not fall; only the ends are then
@@ -490,7 +536,10 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
     std::ostringstream msg;
     msg.precision(3);
     msg << coupling_at_load(Q, f_) << "the alternation does not converge in " << coupling_max_iterations
-        << " steps (last change " << previous_change;
+        << " steps (last changes " << previous_change << " in lambda, e, xi against " << coupling_value_tolerance
+        << ", " << summary_.end_changes.back() << " in the zone ends against " << coupling_end_tolerance;
+    // Their Newton rounding where it lies above the tolerance (8(e), "The ends' rounding floor"): not the stop's reason.
+    if (end_floors.back() > coupling_end_tolerance) msg << " and their rounding " << end_floors.back();
     not_converged(msg, lagging);
 }
 

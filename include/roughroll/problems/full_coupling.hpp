@@ -42,7 +42,9 @@ namespace roughroll {
 // The alternation's stopping rule (iterate-then-test). lambda, e and xi: absolute changes below
 // 1e-12 (their size is O(1) or less; the rounding of a normal solve is a few 1e-15/rcond); the zone
 // ends: below 10 times Newton's resolution zone_end_resolution (each tangential solve fixes them
-// only to that, so smaller changes are that solve's jitter, not the alternation's).
+// only to that, so smaller changes are that solve's jitter, not the alternation's). At the last of the
+// max_iterations steps, and there only, ends whose changes run within the two iterates' own Newton resolutions summed
+// stop at that floor, which their resolution then carries (docs/formulation.md 8(e), "The ends' rounding floor").
 constexpr double coupling_value_tolerance = 1e-12;
 constexpr double coupling_end_tolerance = 10.0 * zone_end_resolution;
 constexpr int coupling_max_iterations = 40;
@@ -71,6 +73,10 @@ std::string coupled_failure_advice(bool pressure);
 // ratio is noise); 1/2 (the stop's trusted limit) where no ratio is readable. Infinity where kappa >= 1 or no step was
 // taken: no bound.
 double coupling_fixed_point_distance(const coupling_summary& summary, double band, double step_rounding);
+// The same for one group's changes `d` from index `own_from` (the first of the level's own map): the zone ends at the
+// step limit's rounding floor (docs/formulation.md 8(e), "The ends' rounding floor"), `band` their floor.
+double coupling_fixed_point_distance(const std::vector<double>& d, std::size_t own_from, double band,
+                                     double step_rounding);
 
 // A reported point whose coupled zones fail the checks (3.3)-(3.4) (full_coupling::solve): the refusal, with the
 // margins and the structure they are of, which the ladder of levels compares over three rungs (docs/formulation.md
