@@ -107,6 +107,13 @@ error_bound bound_error(const three_levels& v, int order, reported_value which, 
     } else {
         b.value = level_error[which.index];
     }
+    // Level n the coarsest of n, 2n, 4n (small n, or a coarser level outside the asymptotic range): its error is
+    // |e_n| <= |x_2n - x_n| + |e_2n|, and e1 bounds e_2n only as far as the fall from 2n to 4n goes on, which a change
+    // that falls much faster than the order there need not (docs/formulation.md 8(e), "Level n the coarsest": at
+    // --n 3 the errors of Johnson's level fell so fast that the estimate was 1.0001 times the error). Levels that
+    // converge visibly (the ratio 1.5 and more above) halve the error per doubling at least, |e_2n| <= |e_n|/2, and
+    // then |e_n| <= 2 |x_2n - x_n|: twice the larger change, as full coupling's rule (change_bound), never less.
+    if (which.index == 0 && !which.extrapolated) b.value = std::max(b.value, 2.0 * std::max(a1, a2));
     b.value += floor;
     return b;
 }

@@ -17,6 +17,8 @@
 //     visibly): no honest estimate from these levels. contact gives a second chance one level
 //     finer (n/2, n, 2n) where the solution's inequalities hold, accepted only where that ratio
 //     shows at least order p - 1; else it refuses the point.
+// Level v_0 reported (the levels n, 2n, 4n) is never estimated below twice the larger difference: |e_0| <= |d1| + |e_1|
+// with |e_1| <= |e_0|/2 where the levels converge visibly (docs/formulation.md 8(e), "Level n the coarsest").
 // In the first case Richardson's value is also bounded by its change from the pair below,
 // |2^p d2 - d1|/(2^p - 1) = |d2| |2^p - rho|/(2^p - 1): where the coarsest level is itself
 // pre-asymptotic and rho only happens to lie near 2^p, that change is large.
