@@ -61,6 +61,15 @@ rounding_floors floors_at(int n, const tangential_solution& s, const tangential_
             xi_floor += DBL_EPSILON * (own.layout.opposite() ? 5.0 : 1.0) * f / (M_PI * own.rho());
         }
     }
+    if (own.layout.stick_zones() > 1 && own.zone_systems) {
+        // Five zones (docs/formulation.md 8(j)): each stick zone has its own system (zone_system(k)), and xi is read
+        // off (4.4) of each as off the general search's one zone above (7(d), 7(e)), cancelling terms of size
+        // |xi| + f K: the same floor (stick_system_floor), which the point's empty psi_b had left out. Their ends are
+        // Newton's, whose recorded resolution is their floor (zone_ends_floor, newton_floor_excess). Free rolling of
+        // data/aluminium-on-steel.toml at f = 1e-6, n = 1000 had been refused on xi's level changes 6.7e-16, -2.8e-14
+        // (1.5 times n eps |xi|, 0.19 times this floor; formulation 8(q) "Five zones' xi at its rounding").
+        xi_floor = std::max(xi_floor, stick_system_floor(n, std::fabs(own.xi) + f * size));
+    }
     return {rounding_floor(n, lambda), c0_floor, xi_floor, f * n_eps};
 }
 
