@@ -51,3 +51,26 @@ TEST(FiveZoneXiFloor, FreeRollingAtAMillionthAnsweredAtNThousand) {
     EXPECT_LE(std::fabs(p.solution.xi - reference.solution.xi), p.estimate->xi + reference.estimate->xi);
     EXPECT_LE(p.estimate->xi, 1e-11 * std::fabs(p.solution.xi));  // rounding: 2.1e-12 relative
 }
+
+// A raised floor never lowers an estimate where the changes show a visible ratio (error_bound.cpp, the both-rounding
+// branch; session 30 review): changes 6, 4 (ratio 1.5) give 16 + 1 at the floor 1; at the floor 8 both are within it, and
+// the rounding rule alone gave 8 + 4 = 12.
+TEST(FiveZoneXiFloor, RaisedFloorNeverLowersTheEstimate) {
+    const three_levels v{0.0, 6.0, 10.0};
+    const error_bound low = bound_error(v, 4, reported_value{2, false}, 1.0);
+    ASSERT_TRUE(low.resolved);
+    EXPECT_DOUBLE_EQ(low.value, 17.0);
+    for (const double floor : {4.0, 6.0, 8.0, 100.0}) {
+        const error_bound high = bound_error(v, 4, reported_value{2, false}, floor);
+        ASSERT_TRUE(high.resolved);
+        EXPECT_GE(high.value, low.value) << "floor " << floor;
+        EXPECT_GE(high.value, 16.0 + floor) << "floor " << floor;
+    }
+    // Changes within the floor that show no visible ratio (4.4, 4.04, 4.0004 then 4: below 1.5) keep the rounding rule,
+    // floor + |d2|: their geometric tail 2/(r - 1) would have made 88, 808, 80008 of them at the floor 8.
+    for (const double d1 : {4.4, 4.04, 4.0004}) {
+        const error_bound b = bound_error({0.0, d1, d1 + 4.0}, 4, reported_value{2, false}, 8.0);
+        ASSERT_TRUE(b.resolved);
+        EXPECT_DOUBLE_EQ(b.value, 12.0) << "d1 " << d1;
+    }
+}
