@@ -16,6 +16,7 @@
 #include "roughroll/problems/full_coupling.hpp"
 #include "roughroll/problems/no_slip_coupled.hpp"
 #include "roughroll/problems/point_model.hpp"
+#include "roughroll/problems/unresolvable_zones.hpp"
 #include "roughroll/problems/zone_checks.hpp"
 #include "roughroll/problems/zone_newton.hpp"
 
@@ -129,6 +130,9 @@ public:
     }
 
     std::optional<std::string> beyond_every_n(double Q, int top, double tolerance) const override {
+        // Stick zones below the rounding (near complete slip) or at the leading edge (driven, next to sliding): no n
+        // resolves them (8(f) "Below the rounding", 8(m) "Driven, next to sliding").
+        if (std::optional<std::string> why = unresolvable(Q)) return why;
         // Free rolling of rough rollers: their own crossing decides (8(n), "Rough rollers: beyond every n"), before
         // item 11's estimate, which is the smooth pair's and 4.5 times too thick for them.
         if (Q == 0.0 && kernel::layered(surfaces_))
@@ -217,8 +221,13 @@ protected:
             throw resolution_error(std::string(why.what()) + "; " + advice);
         }
     }
-    // check_edge_zones_resolvable at n, advised.
+    // Stick zones no n resolves at this load (unresolvable_zones.hpp), or its refusal's line.
+    std::optional<std::string> unresolvable(double Q) const {
+        return unresolvable_zones(materials_, kernel::layered(surfaces_), f_, Q);
+    }
+    // unresolvable (at every n), then check_edge_zones_resolvable at n, advised: before any solve of a point.
     void check_edge_zones(double Q, int n) const {
+        if (std::optional<std::string> why = unresolvable(Q)) throw resolution_error(*why);
         advised(Q, [&] {
             check_edge_zones_resolvable(materials_.beta_d, f_, Q, n, options_.tolerance.value_or(default_tolerance));
         });

@@ -35,8 +35,6 @@ constexpr const char* w_context =
 // limit on each whole integral (W's Cauchy part, each of K1*'s terms, int p Theta), not on each of the pieces it is
 // summed from (within_accepted).
 constexpr double quadrature_accepted = 1e-10;
-// Breakpoints of W's quadrature closer than this are not cut (r next to an end, the kinks' ends at the zone's).
-constexpr double breakpoint_apart = 1e-9;
 
 // Why no three zones answer a load (an unadvised_refusal: no zone of that structure at this n, which a
 // point answers by five zones or refuses; never a numerical fault, docs/robustness.md).

@@ -87,6 +87,10 @@ void check_edge_zones_resolvable(double beta_d, double f, double Q, int n, doubl
 // U_j(r) sqrt(1 - r^2) dr = -sin((j + 1) theta) sin(theta) d theta).
 double load_between(const normal_solution& normal, double lo, double hi);
 
+// Breakpoints of W's quadrature closer than this are not cut (r next to an end, the kinks' ends at the zone's); the
+// zones thinner than a few of it are refused before any solve (unresolvable_zones.hpp).
+constexpr double breakpoint_apart = 1e-9;
+
 // How well Newton's method fixes the zone ends (as zone_solver's, docs/formulation.md 7(e)): the
 // entry condition psi(-1) carries rounding of about 1e-13, which moves the ends by a few 1e-12;
 // the estimates of the ends include it as a floor.
