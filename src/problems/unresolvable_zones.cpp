@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "roughroll/base/text.hpp"
+#include "roughroll/numerics/root_search.hpp"
 #include "roughroll/problems/dissimilar_zones.hpp"
 
 namespace roughroll {
@@ -29,12 +30,10 @@ constexpr double driven_sliding_gap = 1e-13 - 4.0 * 0x1p-52;
 // edge r* = sin(phi) of the central band, 2 phi + sin(2 phi) = pi/2 (8(f)): 4 f cos^2(phi)/(pi |beta_D| sin(phi)),
 // 18.34 f for the pair (measured: 18.34 f at f = 1e-5 .. 1e-9).
 double complete_slip_zone_width(double beta_d, double f) {
-    double lo = 0.0, hi = 0.5 * M_PI;
-    for (int i = 0; i < 100; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (2.0 * mid + std::sin(2.0 * mid) < 0.5 * M_PI ? lo : hi) = mid;
-    }
-    const double phi = 0.5 * (lo + hi), c = std::cos(phi);
+    const double phi = brent_root([](double t) { return 2.0 * t + std::sin(2.0 * t) - 0.5 * M_PI; }, 0.0, 0.5 * M_PI,
+                                  1e-15, 0.0, 200, "complete slip on Hertz's pressure: the edge of the central band")
+                           .x;
+    const double c = std::cos(phi);
     return 4.0 * f * c * c / (M_PI * std::fabs(beta_d) * std::sin(phi));
 }
 
