@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gsl/gsl_math.h>
@@ -68,6 +69,38 @@ const pressure_peak& full_reference() {
                                                    1000, method::product, -0.75 * f_pair, false)
                                                .peak;
     return reference;
+}
+
+// The peak of a scene's surfaces by product integration at n = 1000 (its own error below 1e-12), solved once per
+// surfaces for the tests below.
+pressure_peak scene_reference(const scene& s) {
+    static std::vector<std::pair<std::string, pressure_peak>> solved;
+    for (const auto& [label, peak] : solved)
+        if (label == s.label) return peak;
+    solver_options o = s.solver;
+    o.how = method::product;
+    o.n = 1000;
+    solved.emplace_back(s.label, peak_of(contact(s.surfaces, s.friction, o).normal()));
+    return solved.back().second;
+}
+
+// The peak's p, r and p(0) of a scene's point at its load by product integration at n nodes, each within its estimate
+// of `reference`; the peak returned.
+pressure_peak expect_scene_peak_within(const scene& s, int n, const pressure_peak& reference) {
+    SCOPED_TRACE("n = " + std::to_string(n));
+    solver_options o = s.solver;
+    o.how = method::product;
+    o.n = n;
+    contact c(s.surfaces, s.friction, o);
+    const std::optional<error_estimate> e = c.estimate(c.point(*s.Q));
+    const pressure_peak peak = peak_of(c.normal());
+    EXPECT_TRUE(e && e->peak);
+    if (!(e && e->peak)) return peak;
+    EXPECT_LE(std::fabs(peak.p - reference.p), e->peak->p) << peak.p << " against " << reference.p;
+    EXPECT_LE(std::fabs(peak.r - reference.r), e->peak->r) << peak.r << " against " << reference.r;
+    EXPECT_LE(std::fabs(peak.centre - reference.centre), e->peak->centre)
+        << peak.centre << " against " << reference.centre;
+    return peak;
 }
 
 roughness settled_surfaces(const std::string& file) {
@@ -242,19 +275,23 @@ TEST(PressurePeakEstimate, AlternatingChangesConfirmedOnLevelTwoN) {
     for (const auto& at : cases) {
         SCOPED_TRACE(at.file);
         const scene s = read_scene(data + "/" + at.file);
-        solver_options o = s.solver;
-        o.how = method::product;
-        o.n = 1000;
-        const pressure_peak reference = peak_of(contact(s.surfaces, s.friction, o).normal());
-        o.n = at.n;
-        contact c(s.surfaces, s.friction, o);
-        const std::optional<error_estimate> e = c.estimate(c.point(*s.Q));
-        ASSERT_TRUE(e && e->peak);
-        const pressure_peak peak = peak_of(c.normal());
-        EXPECT_LE(std::fabs(peak.p - reference.p), e->peak->p) << peak.p << " against " << reference.p;
-        EXPECT_LE(std::fabs(peak.r - reference.r), e->peak->r) << peak.r << " against " << reference.r;
-        EXPECT_LE(std::fabs(peak.centre - reference.centre), e->peak->centre)
-            << peak.centre << " against " << reference.centre;
-        EXPECT_GT(std::fabs(peak.p - reference.p), 1e-11);  // a distance above every floor: the case still tests
+        const pressure_peak peak = expect_scene_peak_within(s, at.n, scene_reference(s));
+        EXPECT_GT(std::fabs(peak.p - scene_reference(s).p), 1e-11);  // a distance above every floor: the case still tests
+    }
+}
+
+// Session 31 (docs/formulation.md 8(e) "The peak on levels that are not doublings"): off full coupling, levels that are
+// not doublings (n not a multiple of 4: n = 14 takes 3, 7, 14; n = 7 the same with level n their middle) or whose
+// changes fall faster than 2^p show no order for the peak, whose value at r = 0 converges as separate sequences of odd
+// and even n (r = 0 a node, or between two). fig2a-T1 (the normal problem of data/traction-example.toml too) at n = 14
+// over 3, 7, 14 fell 36 times ("order 4 observed"), and its estimate |d2| = 2.44e-5 lay below the distance 2.77e-5 from
+// n = 1000; at n = 7 4.87e-5 below 5.2e-5. Confirmed on the level above the three (2n; 4n where level n is their
+// middle): 8.5e-5 and 1.09e-4. Every n from 4 to 32 of it and of the two scenes that came closest (fig2b-A0 at n = 7:
+// 1.08, n = 5: 1.10; fig2a-T0.5 at n = 7: 1.08).
+TEST(PressurePeakEstimate, LevelsNotDoublingsEverySmallNWithinItsEstimate) {
+    for (const char* file : {"fig2a-T1.toml", "fig2b-A0.toml", "fig2a-T0.5.toml"}) {
+        SCOPED_TRACE(file);
+        const scene s = read_scene(data + "/" + file);
+        for (int n = 4; n <= 32; ++n) expect_scene_peak_within(s, n, scene_reference(s));
     }
 }

@@ -368,15 +368,16 @@ error_estimate contact::impl::estimate_from(const tangential_solution& s, const 
         }
         // Level 2n's peak: at full coupling its point's pressure (the table's level 2n); every other structure's
         // pressure does not depend on the load, so only its normal problem is solved (once per contact, peak_of_level;
-        // docs/formulation.md 8(e) "The peak confirmed on level 2n"), and none where it cannot be.
+        // docs/formulation.md 8(e) "The peak confirmed on level 2n"), and none where it cannot be. There the level above
+        // the three: 2n, or 4n where level n is their middle (8(e) "The peak on levels that are not doublings").
         const auto finer_peak = [&]() -> std::optional<pressure_peak> {
             if (structure == estimate_structure::full_coupling) {
                 finer_once();
                 return above_peak;
             }
-            if (levels_[2] || 2 * nodes() > max_nodes) return std::nullopt;
+            if (2 * finest_n > max_nodes) return std::nullopt;
             try {
-                return peak_of_level(*level(2 * nodes()));
+                return peak_of_level(*level(2 * finest_n));
             } catch (const error&) {
                 return std::nullopt;
             }

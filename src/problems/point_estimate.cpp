@@ -311,10 +311,22 @@ namespace {
 // chance makes no bound (session 26 audit F5, docs/formulation.md 8(e) "The peak confirmed on level 2n": product
 // integration's peak value of data/fig2a-T1.toml at n = 192, changes +2.9e-8, -2.9e-11 over 48, 96, 192, lay 6.9e-11
 // from n = 1000 against 5.9e-11), as the paper's c0, xi and P_H/P2 are confirmed there (estimate_from_levels).
+// Off full coupling also on the level above the three (2n, or 4n where level n is their middle) where their ratio is
+// no order: the levels are not doublings (n/4 -> n/2 of odd n/2, or odd n; the ratio of an order-p error is then above
+// 2^p), or the changes fall faster than 2^p per level (docs/formulation.md 8(e) "The peak on levels that are not
+// doublings": the peak value of data/fig2a-T1.toml at n = 14 over 3, 7, 14, ratio 36, lay 2.77e-5 from n = 1000
+// against 2.44e-5).
 bool peak_confirms(const three_levels& v, double floor, const estimate_point& p) {
     const double d1 = v.middle - v.coarsest, d2 = v.finest - v.middle;
-    return (p.structure != estimate_structure::full_coupling || p.rough) && p.self == 2 && 2 * p.n <= max_nodes &&
-           d1 * d2 < 0.0 && std::fabs(d2) > floor;
+    if (p.structure == estimate_structure::full_coupling && !p.rough) return false;
+    if (!(std::fabs(d2) > floor)) return false;
+    const bool alternating = p.self == 2 && d1 * d2 < 0.0;
+    if (p.structure == estimate_structure::full_coupling) return alternating && 2 * p.n <= max_nodes;
+    const int finest = p.n << (2 - p.self);
+    if (p.self == 0 || 2 * finest > max_nodes) return false;
+    const bool doublings = (p.n >> p.self) << 2 == finest;
+    const bool too_fast = std::fabs(d1) > std::ldexp(1.0, order_of(p.how)) * std::fabs(d2);
+    return alternating || !doublings || too_fast;
 }
 }  // namespace
 
@@ -387,14 +399,20 @@ double value_from_levels(const three_levels& v, double floor, const estimate_poi
         if (p.lower_bound || !peak_confirms(v, floor, p)) return 0.0;
         const std::optional<finer_value> above = finer();
         if (!above && printed_only) return none;
-        if (!above && !coupled) return 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + floor;
+        // Level n's value: the middle of n/2, n, 2n; at p.self == 1 (n/2, n, 2n the three, 4n above) their coarsest,
+        // |x_2n - x_n| from the middle that confirm_error bounds.
+        const double level_n = p.self == 2 ? v.finest : v.middle;
+        if (!above && !coupled)
+            return 2.0 * std::max(std::fabs(d1), std::fabs(d2)) + std::fabs(v.finest - level_n) + floor;
         if (!above) refuse(p, name, v, p.n >> p.self);
         const three_levels fine{v.middle, v.finest, above->value};
         const double f = above->floor;
         const double up = std::fabs(fine.finest - fine.middle);
         if (!coupled) {
             const error_bound fb = confirm_error(fine, order, false, f);
-            return fb.resolved ? fb.value : 2.0 * std::max(std::fabs(fine.middle - fine.coarsest), up) + up + f;
+            return fb.resolved ? fb.value + std::fabs(fine.middle - level_n)
+                               : 2.0 * std::max(std::fabs(fine.middle - fine.coarsest), up) +
+                                     std::fabs(fine.finest - level_n) + f;
         }
         const error_bound fb = coupled_bound(fine, f, false, order);
         if (!fb.resolved && printed_only) return none;
@@ -431,7 +449,8 @@ peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const est
                 if (!above_tried && !printed_only) above_peak = finer();
                 above_tried = above_tried || !printed_only;
                 if (!above_peak) return std::nullopt;
-                return finer_value{(*above_peak).*x, peak_floors({peaks[1], peaks[2], *above_peak}, 2 * p.n).*member};
+                return finer_value{(*above_peak).*x,
+                                   peak_floors({peaks[1], peaks[2], *above_peak}, p.n << (3 - p.self)).*member};
             },
             printed_only);
     };

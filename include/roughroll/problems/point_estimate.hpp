@@ -187,7 +187,9 @@ error_estimate estimate_from_levels(const std::vector<estimated_quantity>& table
 // twice the larger change as above); at full coupling on rough rollers as the other quantities' (8(q) "Changes of
 // opposite sign"), and as theirs, the peak is refused (resolution_error) where level 2n cannot be solved or n/2, n, 2n
 // show no estimate: a ladder's rung then climbs. Not confirmed where point.lower_bound (the estimate is a lower bound
-// already) or 2n > max_nodes (8(q)'s limit).
+// already) or 2n > max_nodes (8(q)'s limit). Off full coupling also where the three levels are not doublings (n not a
+// multiple of 4) or their changes fall faster than 2^p: confirmed there on the level above them (`finer`: 2n, or 4n
+// where level n is their middle; 8(e) "The peak on levels that are not doublings").
 // `slopes_r`: at full coupling the position's bound from two levels' pressures (peak_position_from_slopes), the
 // estimate of r where it is the larger (with r's floor); 0 elsewhere.
 peak_error peak_from_levels(const std::array<pressure_peak, 3>& peaks, const estimate_point& point,
