@@ -20,6 +20,7 @@
 #include "roughroll/base/error.hpp"
 #include "roughroll/base/text.hpp"
 #include "roughroll/problems/contact.hpp"
+#include "roughroll/problems/full_coupling.hpp"
 
 using namespace roughroll;
 
@@ -110,4 +111,49 @@ TEST(UnresolvableZonesS30, DrivenNextToSlidingRefusedBeforeAnySolve) {
     EXPECT_TRUE(run(f, -one_ulp_below).solved);
     contact c(roughness{}, f, solver_options{128, method::product}, dissimilar{beta_al_st, coupling_level::johnson});
     EXPECT_NO_THROW(c.point(f));
+}
+
+// Session 31 (closing note of session 30, item 4; 8(m), "Full coupling next to sliding"). Driven below 1 - 1.1e-9 at full
+// coupling the alternation's lambda, e, xi change by more than its 1e-12 at every step: refused before any solve, naming
+// gross sliding and Johnson's level (old code: 1 - 1e-12 and 1 - 1e-13 ran 14-19 s CPU to the quadrature's own text,
+// 1 - 1e-9 6.9 s). Searched as before: 1 - 1e-8 (n = 64 and 128 answer at f = 0.05 and 0.1) and Johnson's level.
+TEST(UnresolvableZonesS31, DrivenFullCouplingNextToSlidingRefusedBeforeAnySolve) {
+    for (const double f : {0.05, 0.1}) {
+        for (const double q : {1.0 - 1e-9, 1.0 - 1e-10, 1.0 - 1e-12, 0.9999999999999}) {
+            const ladder_run r = run(f, q, coupling_level::full);
+            EXPECT_FALSE(r.solved) << f << " " << q;
+            EXPECT_TRUE(names(r.refusal, "driven next to sliding")) << r.refusal;
+            EXPECT_TRUE(names(r.refusal, "Q/f = 1 (gross sliding) answers")) << r.refusal;
+            EXPECT_TRUE(names(r.refusal, "coupling = \"johnson\" may answer it")) << r.refusal;
+            EXPECT_TRUE(names(r.refusal, "8(m)")) << r.refusal;
+            EXPECT_EQ(at_given_n(f, q, coupling_level::full), r.refusal) << f << " " << q;
+            EXPECT_TRUE(run(f, q).solved) << "Johnson's level, f = " << f << ", Q/f = " << q;
+        }
+        EXPECT_TRUE(run(f, 1.0 - 1e-8, coupling_level::full).solved) << f;
+        EXPECT_TRUE(at_given_n(f, 1.0 - 1e-8, coupling_level::full).empty()) << f;
+    }
+    // Within 1e-13 of sliding both levels keep the line of session 30 (the stick zone at the leading edge).
+    EXPECT_TRUE(names(run(0.05, one_ulp_below, coupling_level::full).refusal, "next to sliding on the driven side"));
+}
+
+// Braked within 2 eps of sliding the load's rounding moves the thin stick zone's ends by a quarter of its width or more:
+// at f = 0.05 one ulp cycled by 6e-7 with period three for 40 steps at every level (60 s CPU to the refusal). Refused at
+// the alternation's first cycle (the ends' largest change over three steps no smaller than over the three before), by
+// its steps counted (the contact's checkpoint, once per step), not by time, naming Johnson's level, which answers it. At
+// f = 0.3 one ulp (1 - |Q|/f = eps) settles and is answered as before.
+TEST(UnresolvableZonesS31, BrakedFullCouplingWithinRoundingRefusedAtTheFirstCycle) {
+    int steps = 0;
+    contact c(roughness{}, 0.05, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::full});
+    c.set_checkpoint([&steps] { ++steps; });
+    try {
+        c.point(-one_ulp_below * 0.05);
+        ADD_FAILURE() << "answered";
+    } catch (const resolution_error& e) {
+        EXPECT_TRUE(names(e.what(), "braked within rounding of sliding")) << e.what();
+        EXPECT_TRUE(names(e.what(), "coupling = \"johnson\" answers the load")) << e.what();
+        EXPECT_TRUE(names(e.what(), "8(m)")) << e.what();
+    }
+    EXPECT_LT(steps, coupling_max_iterations);
+    contact settles(roughness{}, 0.3, solver_options{32, method::product}, dissimilar{beta_al_st, coupling_level::full});
+    EXPECT_TRUE(settles.point(-one_ulp_below * 0.3).checks.hold());
 }

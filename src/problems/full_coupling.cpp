@@ -313,6 +313,18 @@ namespace {
 // that the stop reads noise that persists, not a slow contraction passing through the floor.
 constexpr std::size_t ends_floor_run = 5;
 
+// 8(m), "Full coupling next to sliding": the gap below which the load's rounding eps f moves a braked stick zone's
+// ends by a quarter of its half-width or more (eps rho/(2 (1 - |Q|/f)) against rho/4).
+constexpr double braked_rounding_gap = 2.0 * DBL_EPSILON;
+
+// The zone ends' largest change over the last three of the level's own steps is no smaller than over the three before:
+// no contraction over two of the cycles seen near sliding (period three).
+bool ends_cycle(const std::vector<double>& changes, std::size_t own_from) {
+    if (changes.size() < own_from + 6) return false;
+    const auto last = changes.end();
+    return *std::max_element(last - 3, last) >= *std::max_element(last - 6, last - 3);
+}
+
 bool ends_within_floor(const std::vector<double>& changes, const std::vector<double>& floors, std::size_t own_from) {
     if (changes.size() < own_from + ends_floor_run) return false;
     for (std::size_t j = changes.size() - ends_floor_run; j < changes.size(); ++j)
@@ -478,7 +490,10 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // measured at (8(o)); so the bound never refuses where the plain rule would answer.
         const bool values_plain = value_change <= coupling_value_tolerance;
         const bool plain = values_plain && end_change <= coupling_end_tolerance;
-        const bool contraction_stop = stop_ == coupling_stop::contraction && !(checked && !current_->s.checks.hold());
+        // A reported point (checked) whose iterate fails the checks (3.3)-(3.4): no stop but the plain rule's, and a
+        // refusal where it stops.
+        const bool fails_checks = checked && !current_->s.checks.hold();
+        const bool contraction_stop = stop_ == coupling_stop::contraction && !fails_checks;
         const bool values_settled =
             values_plain || (contraction_stop && coupling_settled(summary_.changes, own_from, coupling_value_tolerance));
         const bool settled =
@@ -490,7 +505,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // the next step switches (its ends moved by less than settled_for_jacobi).
         const bool may_stop = !(start && k == 1) && !(braked && !jacobi_on);
         const auto stop_here = [&]() -> const tangential_solution& {
-            if (checked && !current_->s.checks.hold()) throw failed_checks(current_->s, Q, f_);
+            if (fails_checks) throw failed_checks(current_->s, Q, f_);
             summary_.offset = offset;
             summary_.peak_pressure_change =
                 peak_of(current_->normal).p / peak_of(johnson).p * std::sqrt(johnson.lambda / current_->normal.lambda) -
@@ -507,7 +522,7 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
         // within the floor give no ratio: coupling_fixed_point_distance), which replaces their Newton resolution
         // where larger: the estimates read it (newton_floor_excess, 8(q) "The estimates' floor of the zone ends").
         // Ratios of 1 or more read above the floor give no bound: refused, as before.
-        if (k == coupling_max_iterations && may_stop && values_settled && !(checked && !current_->s.checks.hold()) &&
+        if (k == coupling_max_iterations && may_stop && values_settled && !fails_checks &&
             ends_within_floor(summary_.end_changes, end_floors, own_from)) {
             const double band = *std::max_element(end_floors.end() - ends_floor_run, end_floors.end());
             const double distance =
@@ -516,6 +531,25 @@ const tangential_solution& full_coupling::solve(const normal_solution& johnson, 
                 current_->s.ends_resolution = std::max(current_->s.ends_resolution, distance);
                 return stop_here();
             }
+        }
+        // 8(m), "Full coupling next to sliding": braked within 2 eps of sliding the load's rounding (eps f) moves the
+        // thin stick zone's ends by up to eps rho/(2 (1 - |Q|/f)), a quarter of its half-width or more, drawn anew at every
+        // step. Where the ends' changes over the last three steps are no smaller than over the three before (one ulp at
+        // f = 0.05: c0 cycling by 6e-7 with period three, at every level, 40 steps each: 60 s CPU to the refusal below),
+        // the alternation cannot settle them: refused at once. Only in that band, where points that settle (one ulp at
+        // f = 0.3: changes falling from the first steps) stop as before.
+        const double gap = 1.0 - std::fabs(Q) / f_;
+        if (Q * beta_d_ < 0.0 && gap > 0.0 && gap < braked_rounding_gap && end_change > coupling_end_tolerance &&
+            ends_cycle(summary_.end_changes, own_from)) {
+            did_not_converge_ = true;
+            std::ostringstream msg;
+            msg.precision(2);
+            msg << coupling_at_load(Q, f_) << "braked within rounding of sliding (1 - |Q|/f = " << gap
+                << "), the zone ends change by " << end_change << " at step " << k
+                << " and no less than three steps before: the load's rounding moves the thin stick zone's ends by up "
+                   "to a quarter of its width, which the alternation cannot settle (docs/formulation.md 8(m)); "
+                << alternation_failure_advice();
+            throw beyond_method_error(msg.str());
         }
         // Growing changes after the first steps: the alternation does not contract here (changes
         // below the tolerance or the rounding floor are rounding, which need not fall; only the ends are then

@@ -26,6 +26,16 @@ constexpr double free_rolling_answered = 1e-9;
 // f = 1e-3) is not refused.
 constexpr double driven_sliding_gap = 1e-13 - 4.0 * 0x1p-52;
 
+// 8(m), "Full coupling next to sliding": the least 1 - |Q|/f on the driven side (Q beta_D > 0) that the alternation
+// is asked (the braked side is refused at the alternation's first sign, full_coupling.cpp: one ulp answers at f = 0.3).
+// Measured, not derived: the alternation's lambda, e, xi change per step by 1e-11 .. 7e-11 at
+// 1 - |Q|/f = 1e-9 and 6e-11 .. 2.6e-10 at 1e-10 (n = 64, 128; f = 0.02, 0.05, 0.1), growing as the gap falls, against
+// its 1e-12, and no n measured answered from 1e-9 down to 1e-13 (the ladder: 6.9 s CPU at 1e-9, 19 s and 14 s at
+// 1e-12 and 1e-13 ending in the quadrature's own text); 1e-8 answers at n = 64 and 128 (f = 0.05, 0.1): the edge is
+// put a tenth above 1e-9, so that --Q-over-f 0.999999999 is refused whatever Q = (Q/f) f rounds to (9.999999717e-10
+// at f = 0.05, 9.99999861e-10 at f = 0.3).
+constexpr double driven_full_gap = 1.1e-9;
+
 // The width of each stick zone of free rolling near complete slip on Hertz's pressure, 4 f p/(pi |beta_D p'|) at the
 // edge r* = sin(phi) of the central band, 2 phi + sin(2 phi) = pi/2 (8(f)): 4 f cos^2(phi)/(pi |beta_D| sin(phi)),
 // 18.34 f for the pair (measured: 18.34 f at f = 1e-5 .. 1e-9).
@@ -63,12 +73,27 @@ std::optional<std::string> driven_next_to_sliding(const dissimilar& materials, d
            "lies within about " + significant(edge, 2) + " of the leading edge, too close for the integrals of its " +
            "zones (docs/formulation.md 8(m)); Q/f = " + shortest(Q > 0.0 ? 1.0 : -1.0) + " (gross sliding) answers";
 }
+
+// Full coupling, driven next to sliding (8(m), "Full coupling next to sliding"): the alternation's values do not settle
+// below driven_full_gap, where Johnson's level may still answer (it does at f = 0.05, without the alternation).
+std::optional<std::string> driven_full_next_to_sliding(const dissimilar& materials, double f, double Q) {
+    const double gap = 1.0 - std::fabs(Q) / f;
+    if (!(materials.coupling == coupling_level::full && Q * materials.beta_d > 0.0 && gap < driven_full_gap))
+        return std::nullopt;
+    return "full coupling at Q/f = " + shortest(Q / f) + " (1 - |Q|/f = " + significant(gap, 2) +
+           "): driven next to sliding, where the alternation's lambda, e and xi change by more than its "
+           "1e-12 at every step, the more the nearer sliding (docs/formulation.md 8(m), 8(e)); coupling = "
+           "\"johnson\" may answer it (it does at f = 0.05 down to 1 - |Q|/f = 1e-13), 1 - |Q|/f of at "
+           "least 1e-8 may answer at full coupling, and Q/f = " +
+           shortest(Q > 0.0 ? 1.0 : -1.0) + " (gross sliding) answers";
+}
 }  // namespace
 
 std::optional<std::string> unresolvable_zones(const dissimilar& materials, bool rough, double f, double Q) {
     if (materials.beta_d == 0.0 || !(std::fabs(Q) < f)) return std::nullopt;
     if (std::optional<std::string> why = below_the_breakpoints(materials, rough, f, Q)) return why;
-    return driven_next_to_sliding(materials, f, Q);
+    if (std::optional<std::string> why = driven_next_to_sliding(materials, f, Q)) return why;
+    return driven_full_next_to_sliding(materials, f, Q);
 }
 
 }  // namespace roughroll
