@@ -465,9 +465,20 @@ traction_checks dissimilar_zones::check(const tangential_solution& s) {
     // full coupling's previous iterate while its step's answer is checked).
     const bool five = s.layout.stick_zones() == 2;
     return check_zones(
-        s.layout.zones, blended_checks(), [&](double r) { return five ? pressure(r) : solver_.normal().pressure(r); },
+        s.layout.zones, opposite_checks(s), [&](double r) { return five ? pressure(r) : solver_.normal().pressure(r); },
         [&](double r) { return five ? stick_zones_traction(s, r) : traction(s, r); },
         [&](double r) { return slip_velocity(s, r); });
+}
+
+zone_check_terms dissimilar_zones::opposite_checks(const tangential_solution& s) {
+    // The stick zones' systems cancel the right side xi + b p - f G - 2 f W (8(g)) to q = O(f): its terms are of size
+    // S = |xi| + |beta_D| max(1, P_H/P2) + f K, so the margins (3.3)-(3.4), relative to f, carry a rounding of
+    // 8 n eps S / f, as the single zone's of 7(d) with the forcing's term (8(m)'s S). Near complete slip (f << |beta_D|)
+    // that exceeds the true stick margin: held to 0 there, a root failed by rounding alone (docs/formulation.md 8(f),
+    // "Below the rounding", "The floor of the opposite zones"). rounding(x) is the floor of terms |x| + f K.
+    const double forcing = std::fabs(beta_d_) * std::max(1.0, std::fabs(solver_.normal().lambda));
+    const double floor = solver_.rounding(std::fabs(s.xi) + forcing);
+    return {f_, solver_.pressure_margin(), floor, true, nullptr, nullptr};
 }
 
 zone_check_terms dissimilar_zones::blended_checks() {

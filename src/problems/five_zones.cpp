@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -186,7 +187,34 @@ std::vector<five_zone_start> dissimilar_zones::search_starts(double Q) const {
         if (inside && from < 0.0) s.shared_after = 0;
         starts.push_back(std::move(s));
     }
+    // Near complete slip, last: the scan's continuation in the load moves the stick zones by about 1/32 of the
+    // contact per step of f/8 (their centres follow the central band's edge), thousands of their widths O(f/|beta_D|)
+    // at f = 1e-9, and Newton from there wanders (at Q/f = 0.5, f = 1e-9: 40 iterations without a root at every
+    // step down to f/1024, at every level of every rung). The limit f -> 0 places them (8(f), "The complete-slip
+    // start"): centred on the band's edges +-r_c, each of the width derived there.
+    if (ratio > 6.0)
+        if (std::optional<std::vector<double>> ends = complete_slip_ends(Q))
+            starts.push_back(five_zone_start::at_ends(*ends));
     return starts;
+}
+
+std::optional<std::vector<double>> dissimilar_zones::complete_slip_ends(double Q) const {
+    complete_slip c{};
+    try {
+        c = complete_slip_creep(solver_.normal(), beta_d_, Q / f_);
+    } catch (const input_error&) {
+        return std::nullopt;  // a pressure not even and decreasing in |r|: the band is not derived, no start
+    }
+    if (!(c.r_c > 0.0 && c.r_c < 1.0)) return std::nullopt;  // no band, or the band is the contact: no stick zones
+    // Each zone carries the traction from -f p to f p where v_0 = xi_0 + beta_D p changes sign: width
+    // 4 f p/(pi |beta_D p'|) at r_c (8(f)), p' by central differences; kept inside its half of the contact.
+    constexpr double h = 1e-6;
+    const normal_solution& normal = solver_.normal();
+    const double slope = (normal.pressure(c.r_c + h) - normal.pressure(c.r_c - h)) / (2.0 * h);
+    const double rho = std::min({2.0 * f_ * normal.pressure(c.r_c) / (M_PI * std::fabs(beta_d_ * slope)),
+                                 0.5 * c.r_c, 0.5 * (1.0 - c.r_c)});
+    if (!(rho > 0.0)) return std::nullopt;
+    return std::vector<double>{-c.r_c - rho, -c.r_c + rho, c.r_c - rho, c.r_c + rho};
 }
 
 std::optional<tangential_solution> dissimilar_zones::from_three_zones(double load, double forcing, bool& holds,

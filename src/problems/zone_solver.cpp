@@ -282,9 +282,14 @@ std::optional<tangential_solution> find_zones(const zone_operator_at& op_of, dou
                                               const std::vector<zone_start<tangential_solution>>& starts,
                                               rounding_limits& met) {
     using base = zone_start<tangential_solution>::base;
+    // A path that the later starts declaring one share (shared_after) stopped: those are skipped, a start of its own
+    // (five zones' complete-slip start, 8(f)) is still tried.
+    bool shared_failed = false;
+    constexpr std::size_t own_path = std::numeric_limits<std::size_t>::max();
     return search_from<tangential_solution>(starts, [&](const zone_start<tangential_solution>& start) {
         start_verdict<tangential_solution> verdict;
         std::optional<tangential_solution>& s = verdict.root;
+        if (shared_failed && start.shared_after != own_path) return verdict;
         if (start.from == base::search) {
             // Its own starts judged by the same rule inside it: its result is the search's.
             s = general_search(op_of(forcing), Q, start.ends, start.edge_end, met);
@@ -320,7 +325,7 @@ std::optional<tangential_solution> find_zones(const zone_operator_at& op_of, dou
                               return zone_newton(op_of(in_load ? p.forcing : next), in_load ? next : load,
                                                  p.layout.stick_ends(), met);
                           });
-            if (!s && leg >= start.shared_after) verdict.ends_search = true;  // the path every later start shares
+            if (!s && leg >= start.shared_after) shared_failed = true;
             at = path[leg].target;
         }
         // The checks of the root only: a continuation's steps read none (before session 28 each step made them).

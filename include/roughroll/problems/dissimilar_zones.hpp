@@ -193,6 +193,8 @@ public:
 
 private:
     std::vector<five_zone_start> search_starts(double Q) const;  // five_zones(Q)'s own starts
+    // The five zones' ends of the complete-slip limit at Q (8(f)): empty where the pressure has no central band.
+    std::optional<std::vector<double>> complete_slip_ends(double Q) const;
     // Newton from the driven three zones at `load` with `forcing`; `holds` where their v stays positive up to the
     // edge (they are the answer: no five zones).
     std::optional<tangential_solution> from_three_zones(double load, double forcing, bool& holds, rounding_limits& met);
@@ -206,6 +208,8 @@ private:
     tangential_solution blended(double start, double c0, double b);  // the system with S of 8(g)
     tangential_solution gross_sliding(double b);
     zone_check_terms blended_checks();  // what check_zones needs for the blended zones
+    // The same for a solution of zones slipping both ways (three blended or five), with their rounding floor (8(f)).
+    zone_check_terms opposite_checks(const tangential_solution& s);
     // p1(r) and v(r) of five zones (8(j)) from their point's layout and stick zones' systems (zone_system).
     double stick_zones_traction(const tangential_solution& s, double r);
     double stick_zones_slip_velocity(const tangential_solution& s, double r);

@@ -54,7 +54,8 @@ struct zone_start {
     std::optional<double> edge_end{};  // `search`: the end of the paper's zone at the load, where it was solved
     // The legs after the base; every path then ends with a leg in the load to the load asked.
     std::vector<zone_leg> path{};
-    // Legs after which the path is every later start's too (free rolling): a failure past them ends the search.
+    // Legs after which the path is every later start's too (free rolling): a failure past them skips every later start
+    // that declares it (find_zones); a start without a path of its own (the default) is still tried.
     std::size_t shared_after = std::numeric_limits<std::size_t>::max();
 
     static zone_start at_ends(std::vector<double> e) { return {base::ends, std::move(e)}; }
